@@ -1,0 +1,42 @@
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "ecs/sparse_set.h"
+
+namespace sg::ecs {
+
+// Dense storage of one component type: `components_[slot]` belongs to `entities()[slot]`.
+template <typename T>
+class ComponentPool final : public SparseSet {
+public:
+  // Adds the component, or replaces it if the entity already has one; marks it changed.
+  template <typename... Args>
+  T& emplace(Entity entity, Tick now, Args&&... args) {
+    if (const std::uint32_t slot = slot_of(entity); slot != npos) {
+      components_[slot] = T{std::forward<Args>(args)...};
+      mark_changed(slot, begin_changes(now));
+      return components_[slot];
+    }
+    insert(entity, now);
+    return components_.emplace_back(T{std::forward<Args>(args)...});
+  }
+
+  bool remove(Entity entity, Tick now) override {
+    const std::uint32_t slot = slot_of(entity);
+    if (slot == npos) return false;
+    if (slot + std::size_t{1} != components_.size()) components_[slot] = std::move(components_.back());
+    components_.pop_back();
+    erase(slot, now);
+    return true;
+  }
+
+  T& at(std::uint32_t slot) { return components_[slot]; }
+  const T& at(std::uint32_t slot) const { return components_[slot]; }
+
+private:
+  std::vector<T> components_;
+};
+
+}  // namespace sg::ecs

@@ -1,0 +1,38 @@
+#include "ecs/entity_registry.h"
+
+namespace sg::ecs {
+
+namespace {
+// The last generation is never handed out: null_entity uses it.
+constexpr std::uint32_t retired_generation = UINT32_MAX;
+}  // namespace
+
+Entity EntityRegistry::create() {
+  ++alive_count_;
+  if (!free_slots_.empty()) {
+    const std::uint32_t index = free_slots_.back();
+    free_slots_.pop_back();
+    slots_[index].alive = true;
+    return Entity{index, slots_[index].generation};
+  }
+  const auto index = static_cast<std::uint32_t>(slots_.size());
+  slots_.push_back(Slot{0, true});
+  return Entity{index, 0};
+}
+
+bool EntityRegistry::destroy(Entity entity) {
+  if (!alive(entity)) return false;
+  --alive_count_;
+  Slot& slot = slots_[entity.index];
+  slot.alive = false;
+  // Bumping now is what makes every old handle stale.
+  if (++slot.generation != retired_generation) free_slots_.push_back(entity.index);
+  return true;
+}
+
+bool EntityRegistry::alive(Entity entity) const {
+  return entity.index < slots_.size() && slots_[entity.index].alive &&
+         slots_[entity.index].generation == entity.generation;
+}
+
+}  // namespace sg::ecs

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "ecs/entity.h"
+
+namespace sg::ecs {
+
+// Hands out entity handles and knows which ones are alive. Slots of destroyed entities are
+// reused with a new generation; a slot whose generation would wrap around is retired for good,
+// so a stale handle can never match a live entity.
+class EntityRegistry {
+public:
+  Entity create();
+  // Returns false (and does nothing) for a stale or null handle.
+  bool destroy(Entity entity);
+  bool alive(Entity entity) const;
+  std::size_t alive_count() const { return alive_count_; }
+
+private:
+  struct Slot {
+    std::uint32_t generation = 0;  // of the live entity, or of the next one while free
+    bool alive = false;
+  };
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> free_slots_;
+  std::size_t alive_count_ = 0;
+};
+
+}  // namespace sg::ecs

@@ -1,0 +1,144 @@
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "ecs/world.h"
+
+namespace sg::ecs {
+
+// Iterates the entities that have all of `Components`, e.g.
+//
+//   world.query<Position, const Velocity>().for_each([](Position& p, const Velocity& v) {...});
+//
+// A `const` component is read-only; every other listed component is marked changed for each
+// entity visited. The callback takes the components in the listed order, optionally preceded
+// by the Entity. Iteration walks the dense array of the smallest pool and looks the entity up in
+// the others (a sequential hit when pools share order), so the loop is fully inlined: no
+// virtual call per entity.
+//
+// Do not add or remove components or entities inside the callback (use a CommandBuffer);
+// get_mut on any entity is fine.
+template <typename... Components>
+class Query {
+  static_assert(sizeof...(Components) > 0, "a query needs at least one component");
+
+public:
+  explicit Query(World& world)
+      : world_(&world), pools_{&world.pool<std::remove_const_t<Components>>()...} {}
+
+  // Skips entities that have any of `Excluded`.
+  template <typename... Excluded>
+  Query& without() {
+    (excluded_.push_back(&world_->pool<Excluded>()), ...);
+    return *this;
+  }
+
+  // Visits only entities whose `Watched` component (one of `Components`) was written after
+  // `since`. Costs the number of such writes, not the number of entities.
+  template <typename Watched>
+  Query& changed_since(Tick since) {
+    constexpr std::size_t position = index_of<std::remove_const_t<Watched>>();
+    static_assert(position < sizeof...(Components), "the watched component must be queried");
+    watched_ = std::get<position>(pools_);
+    since_ = since;
+    return *this;
+  }
+
+  template <typename Fn>
+  void for_each(Fn&& fn) {
+    // Opening this tick's change segments once here keeps mark_changed to one compare.
+    std::array<std::uint32_t, sizeof...(Components)> segment_begins{};
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((segment_begins[I] =
+            is_mutable<Components> ? std::get<I>(pools_)->begin_changes(world_->tick()) : 0),
+       ...);
+    }(std::index_sequence_for<Components...>{});
+    if (watched_ != nullptr) {
+      // Collected first because writes inside the callback append to the log being read.
+      std::vector<Entity> changed;
+      watched_->collect_changed_since(since_, changed);
+      for (const Entity entity : changed) visit(entity, SparseSet::npos, segment_begins, fn);
+      return;
+    }
+    const SparseSet* driver = smallest_pool();
+    const std::span<const Entity> entities = driver->entities();
+    for (std::uint32_t slot = 0; slot < entities.size(); ++slot) {
+      visit(entities[slot], slot, segment_begins, fn);
+    }
+  }
+
+  // Number of entities for_each would visit (does not mark anything changed).
+  std::size_t count() {
+    std::size_t visited = 0;
+    Query<const Components...> reader(*world_);
+    reader.excluded_ = excluded_;
+    reader.watched_ = watched_;
+    reader.since_ = since_;
+    reader.for_each([&](const auto&...) { ++visited; });
+    return visited;
+  }
+
+private:
+  template <typename... Others>
+  friend class Query;
+
+  using Pools = std::tuple<ComponentPool<std::remove_const_t<Components>>*...>;
+
+  template <typename T>
+  static constexpr std::size_t index_of() {
+    constexpr std::array matches{std::is_same_v<T, std::remove_const_t<Components>>...};
+    return static_cast<std::size_t>(std::find(matches.begin(), matches.end(), true) -
+                                    matches.begin());
+  }
+
+  template <typename T>
+  static constexpr bool is_mutable = !std::is_const_v<T>;
+
+  const SparseSet* smallest_pool() const {
+    const SparseSet* smallest = std::get<0>(pools_);
+    std::apply(
+        [&](const auto*... pools) {
+          ((smallest = pools->size() < smallest->size() ? pools : smallest), ...);
+        },
+        pools_);
+    return smallest;
+  }
+
+  template <typename Fn>
+  void visit(Entity entity, std::uint32_t hint,
+             const std::array<std::uint32_t, sizeof...(Components)>& segment_begins, Fn& fn) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      std::array<std::uint32_t, sizeof...(Components)> slots{};
+      const bool has_all =
+          (((slots[I] = std::get<I>(pools_)->slot_of(entity, hint)) != SparseSet::npos) && ...);
+      if (!has_all) return;
+      for (const SparseSet* excluded : excluded_) {
+        if (excluded->contains(entity)) return;
+      }
+      ((is_mutable<Components> ? std::get<I>(pools_)->mark_changed(slots[I], segment_begins[I])
+                               : void()),
+       ...);
+      if constexpr (std::is_invocable_v<Fn&, Entity, Components&...>) {
+        fn(entity, std::get<I>(pools_)->at(slots[I])...);
+      } else {
+        fn(std::get<I>(pools_)->at(slots[I])...);
+      }
+    }(std::index_sequence_for<Components...>{});
+  }
+
+  World* world_;
+  Pools pools_;
+  std::vector<const SparseSet*> excluded_;
+  const SparseSet* watched_ = nullptr;
+  Tick since_ = 0;
+};
+
+}  // namespace sg::ecs

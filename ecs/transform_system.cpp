@@ -1,0 +1,74 @@
+#include "ecs/transform_system.h"
+
+#include <algorithm>
+#include <unordered_set>
+#include <vector>
+
+#include "ecs/hierarchy.h"
+#include "ecs/transform.h"
+
+namespace sg::ecs {
+
+namespace {
+
+struct DirtyRoot {
+  std::uint32_t depth;
+  Entity entity;
+};
+
+// Entities whose own world matrix is out of date: their local transform changed, or their place
+// in the hierarchy did (new parent, new depth, or no parent any more).
+std::vector<DirtyRoot> find_dirty(World& world, Tick since) {
+  std::vector<Entity> changed;
+  world.query<const LocalTransform>().changed_since<LocalTransform>(since).for_each(
+      [&](Entity entity, const LocalTransform&) { changed.push_back(entity); });
+  world.query<const Parent>().changed_since<Parent>(since).for_each(
+      [&](Entity entity, const Parent&) { changed.push_back(entity); });
+  for (const Removal& removal : world.removed_since<Parent>(since)) {
+    if (world.alive(removal.entity)) changed.push_back(removal.entity);
+  }
+  std::vector<DirtyRoot> dirty;
+  dirty.reserve(changed.size());
+  for (const Entity entity : changed) {
+    const Parent* parent = world.try_get<Parent>(entity);
+    dirty.push_back(DirtyRoot{parent == nullptr ? 0 : parent->depth, entity});
+  }
+  std::sort(dirty.begin(), dirty.end(),
+            [](const DirtyRoot& a, const DirtyRoot& b) { return a.depth < b.depth; });
+  return dirty;
+}
+
+glm::mat4 parent_matrix(const World& world, Entity entity) {
+  const WorldTransform* parent_world = world.try_get<WorldTransform>(parent_of(world, entity));
+  return parent_world == nullptr ? glm::mat4{1.0f} : parent_world->matrix;
+}
+
+// Recomputes `root` and everything below it, recording what it visited in `updated`.
+void update_subtree(World& world, Entity root, std::unordered_set<Entity>& updated) {
+  std::vector<Entity> pending{root};
+  while (!pending.empty()) {
+    const Entity entity = pending.back();
+    pending.pop_back();
+    updated.insert(entity);
+    const LocalTransform* local = world.try_get<LocalTransform>(entity);
+    if (local != nullptr && world.has<WorldTransform>(entity)) {
+      world.get_mut<WorldTransform>(entity).matrix =
+          parent_matrix(world, entity) * to_matrix(*local);
+    }
+    const std::span<const Entity> children = children_of(world, entity);
+    pending.insert(pending.end(), children.begin(), children.end());
+  }
+}
+
+}  // namespace
+
+void update_world_transforms(World& world, Tick since) {
+  std::unordered_set<Entity> updated;
+  // Shallowest first: by the time a dirty entity comes up, either an ancestor's subtree pass
+  // already recomputed it, or none of its ancestors changed and its parent's matrix is current.
+  for (const DirtyRoot& dirty : find_dirty(world, since)) {
+    if (!updated.contains(dirty.entity)) update_subtree(world, dirty.entity, updated);
+  }
+}
+
+}  // namespace sg::ecs

@@ -1,0 +1,151 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "ecs/component_id.h"
+#include "ecs/component_pool.h"
+#include "ecs/entity.h"
+#include "ecs/entity_registry.h"
+
+namespace sg::ecs {
+
+template <typename... Components>
+class Query;
+
+// Entities and their components. Any copyable or movable struct is a component; nothing needs
+// registering.
+//
+// Contract:
+// - Handles of destroyed entities are stale: `alive` and `has` return false for them, `destroy`
+//   and `remove` do nothing and return false, `add`, `get` and `get_mut` throw.
+// - Every write access (`add`, `get_mut`, a query's non-const component) stamps the component
+//   with `tick()`. `advance_tick()` starts the next tick, typically once per frame.
+// - Component references and queries stay valid until the next structural change (create,
+//   destroy, add, remove). During iteration, make structural changes through a CommandBuffer.
+class World {
+public:
+  Entity create() { return entities_.create(); }
+  // Removes all of the entity's components (each removal is recorded) and makes its handle
+  // stale. Returns false for a stale handle.
+  bool destroy(Entity entity);
+  bool alive(Entity entity) const { return entities_.alive(entity); }
+  std::size_t entity_count() const { return entities_.alive_count(); }
+
+  Tick tick() const { return tick_; }
+  Tick advance_tick() { return ++tick_; }
+
+  // Adds the component (or replaces the existing one) and marks it changed.
+  template <typename T, typename... Args>
+  T& add(Entity entity, Args&&... args) {
+    if (!alive(entity)) throw std::invalid_argument("sg::ecs::World::add: stale entity handle");
+    return pool<T>().emplace(entity, tick_, std::forward<Args>(args)...);
+  }
+
+  // Returns false if the entity has no such component (or the handle is stale).
+  template <typename T>
+  bool remove(Entity entity) {
+    SparseSet* set = find_pool<T>();
+    return set != nullptr && set->remove(entity, tick_);
+  }
+
+  template <typename T>
+  bool has(Entity entity) const {
+    const SparseSet* set = find_pool<T>();
+    return set != nullptr && set->contains(entity);
+  }
+
+  // Read access; does not mark the component changed. Returns nullptr if absent.
+  template <typename T>
+  const T* try_get(Entity entity) const {
+    const ComponentPool<T>* components = find_pool<T>();
+    if (components == nullptr) return nullptr;
+    const std::uint32_t slot = components->slot_of(entity);
+    return slot == SparseSet::npos ? nullptr : &components->at(slot);
+  }
+
+  // Read access; throws std::out_of_range if absent.
+  template <typename T>
+  const T& get(Entity entity) const {
+    const T* component = try_get<T>(entity);
+    if (component == nullptr) throw std::out_of_range("sg::ecs::World::get: no such component");
+    return *component;
+  }
+
+  // Write access; marks the component changed. Throws std::out_of_range if absent.
+  template <typename T>
+  T& get_mut(Entity entity) {
+    ComponentPool<T>* components = find_pool<T>();
+    const std::uint32_t slot =
+        components == nullptr ? SparseSet::npos : components->slot_of(entity);
+    if (slot == SparseSet::npos) {
+      throw std::out_of_range("sg::ecs::World::get_mut: no such component");
+    }
+    components->mark_changed(slot, components->begin_changes(tick_));
+    return components->at(slot);
+  }
+
+  // Tick of the newest write to the entity's component; throws std::out_of_range if absent.
+  template <typename T>
+  Tick change_tick(Entity entity) const {
+    const SparseSet* set = find_pool<T>();
+    const std::uint32_t slot = set == nullptr ? SparseSet::npos : set->slot_of(entity);
+    if (slot == SparseSet::npos) {
+      throw std::out_of_range("sg::ecs::World::change_tick: no such component");
+    }
+    return set->change_tick(slot);
+  }
+
+  // Entities that lost the component after `since` (removed, or destroyed), oldest first. An
+  // entity may appear more than once and may have the component again by now.
+  template <typename T>
+  std::span<const Removal> removed_since(Tick since) const {
+    const SparseSet* set = find_pool<T>();
+    return set == nullptr ? std::span<const Removal>{} : set->removed_since(since);
+  }
+
+  // Removal history is kept until dropped: call this with the oldest tick any reader will still
+  // ask about.
+  void forget_removals_before(Tick tick);
+
+  // Iterates the entities that have every listed component; see ecs/query.h.
+  template <typename... Components>
+  Query<Components...> query() {
+    return Query<Components...>(*this);
+  }
+
+private:
+  template <typename... Components>
+  friend class Query;
+
+  template <typename T>
+  ComponentPool<T>& pool() {
+    static_assert(std::is_same_v<T, std::remove_cvref_t<T>>, "component types are plain types");
+    const std::uint32_t id = component_id<T>();
+    if (id >= pools_.size()) pools_.resize(id + std::size_t{1});
+    if (pools_[id] == nullptr) pools_[id] = std::make_unique<ComponentPool<T>>();
+    return static_cast<ComponentPool<T>&>(*pools_[id]);
+  }
+
+  template <typename T>
+  ComponentPool<T>* find_pool() const {
+    const std::uint32_t id = component_id<T>();
+    return id < pools_.size() ? static_cast<ComponentPool<T>*>(pools_[id].get()) : nullptr;
+  }
+
+  EntityRegistry entities_;
+  std::vector<std::unique_ptr<SparseSet>> pools_;  // by component_id; null if never used
+  Tick tick_ = 1;  // 0 is "before anything happened", so changed_since(0) means "ever"
+};
+
+}  // namespace sg::ecs
+
+// World::query returns a Query, so including the world gives you queries too. query.h includes
+// this header first; the include guard makes the cycle harmless.
+#include "ecs/query.h"

@@ -1,0 +1,193 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "ecs/world.h"
+#include "test_components.h"
+
+namespace sg::ecs {
+namespace {
+
+using test::Position;
+using test::Velocity;
+
+std::vector<Entity> changed_positions(World& world, Tick since) {
+  std::vector<Entity> changed;
+  world.query<const Position>().changed_since<Position>(since).for_each(
+      [&](Entity entity, const Position&) { changed.push_back(entity); });
+  return changed;
+}
+
+std::vector<Entity> sorted(std::vector<Entity> entities) {
+  std::sort(entities.begin(), entities.end(),
+            [](Entity a, Entity b) { return a.index < b.index; });
+  return entities;
+}
+
+TEST(ChangeDetection, AddMarksChangedAtCurrentTick) {
+  World world;
+  world.advance_tick();
+  const Entity entity = world.create();
+  world.add<Position>(entity);
+  EXPECT_EQ(world.change_tick<Position>(entity), world.tick());
+  EXPECT_EQ(changed_positions(world, world.tick() - 1), std::vector<Entity>{entity});
+  EXPECT_TRUE(changed_positions(world, world.tick()).empty());
+}
+
+TEST(ChangeDetection, TicksAcrossFrames) {
+  World world;
+  const Entity a = world.create();
+  const Entity b = world.create();
+  const Entity c = world.create();
+  for (const Entity entity : {a, b, c}) world.add<Position>(entity);
+  const Tick frame1 = world.tick();
+
+  world.advance_tick();
+  world.get_mut<Position>(b).x = 1.0f;
+  const Tick frame2 = world.tick();
+
+  world.advance_tick();
+  world.get_mut<Position>(c).x = 1.0f;
+  world.get_mut<Position>(c).y = 1.0f;  // a second write in a tick is reported once
+
+  EXPECT_EQ(sorted(changed_positions(world, 0)), (std::vector<Entity>{a, b, c}));
+  EXPECT_EQ(sorted(changed_positions(world, frame1)), (std::vector<Entity>{b, c}));
+  EXPECT_EQ(changed_positions(world, frame2), std::vector<Entity>{c});
+  EXPECT_TRUE(changed_positions(world, world.tick()).empty());
+  EXPECT_EQ(world.change_tick<Position>(a), frame1);
+  EXPECT_EQ(world.change_tick<Position>(b), frame2);
+}
+
+TEST(ChangeDetection, RewrittenEntityIsReportedOnceAtItsNewestTick) {
+  World world;
+  const Entity entity = world.create();
+  world.add<Position>(entity);
+  const Tick added = world.tick();
+  world.advance_tick();
+  world.get_mut<Position>(entity);
+  EXPECT_EQ(changed_positions(world, 0), std::vector<Entity>{entity});
+  EXPECT_EQ(changed_positions(world, added), std::vector<Entity>{entity});
+  EXPECT_EQ(world.change_tick<Position>(entity), added + 1);
+}
+
+TEST(ChangeDetection, MutableQueryMarksEveryVisitedEntity) {
+  World world;
+  const Entity moving = world.create();
+  world.add<Position>(moving);
+  world.add<Velocity>(moving);
+  const Entity still = world.create();
+  world.add<Position>(still);
+  const Tick before = world.tick();
+  world.advance_tick();
+  world.query<Position, const Velocity>().for_each([](Position&, const Velocity&) {});
+  EXPECT_EQ(changed_positions(world, before), std::vector<Entity>{moving});
+}
+
+TEST(ChangeDetection, ChangedQueryCombinesWithOtherComponents) {
+  World world;
+  const Entity with_velocity = world.create();
+  world.add<Position>(with_velocity);
+  world.add<Velocity>(with_velocity, 3.0f, 0.0f);
+  const Entity without_velocity = world.create();
+  world.add<Position>(without_velocity);
+  const Tick before = world.tick();
+  world.advance_tick();
+  world.get_mut<Position>(with_velocity);
+  world.get_mut<Position>(without_velocity);
+
+  std::vector<float> velocities;
+  world.query<const Position, const Velocity>().changed_since<Position>(before).for_each(
+      [&](const Position&, const Velocity& velocity) { velocities.push_back(velocity.x); });
+  EXPECT_EQ(velocities, std::vector<float>{3.0f});
+}
+
+TEST(ChangeDetection, RemovedComponentIsNotReportedChanged) {
+  World world;
+  const Entity entity = world.create();
+  world.add<Position>(entity);
+  world.remove<Position>(entity);
+  EXPECT_TRUE(changed_positions(world, 0).empty());
+}
+
+TEST(ChangeDetection, ReAddedInSameTickIsReportedOnce) {
+  World world;
+  const Entity entity = world.create();
+  world.add<Position>(entity);
+  world.remove<Position>(entity);
+  world.add<Position>(entity);
+  EXPECT_EQ(changed_positions(world, 0), std::vector<Entity>{entity});
+}
+
+TEST(ChangeDetection, RemovalsAndDestructionAreRecordedPerComponentType) {
+  World world;
+  const Entity removed = world.create();
+  const Entity destroyed = world.create();
+  const Entity kept = world.create();
+  for (const Entity entity : {removed, destroyed, kept}) {
+    world.add<Position>(entity);
+    world.add<Velocity>(entity);
+  }
+  const Tick before = world.tick();
+  world.advance_tick();
+  world.remove<Position>(removed);
+  world.destroy(destroyed);
+
+  const auto position_removals = world.removed_since<Position>(before);
+  ASSERT_EQ(position_removals.size(), 2u);
+  EXPECT_EQ(position_removals[0].entity, removed);
+  EXPECT_EQ(position_removals[1].entity, destroyed);
+  EXPECT_EQ(position_removals[1].tick, world.tick());
+  const auto velocity_removals = world.removed_since<Velocity>(before);
+  ASSERT_EQ(velocity_removals.size(), 1u);
+  EXPECT_EQ(velocity_removals[0].entity, destroyed);
+  EXPECT_TRUE(world.removed_since<Position>(world.tick()).empty());
+
+  world.forget_removals_before(world.tick() + 1);
+  EXPECT_TRUE(world.removed_since<Position>(0).empty());
+}
+
+TEST(ChangeDetection, HistoryStaysCorrectAcrossManyFramesOfFullRewrites) {
+  // Enough frames for the change log to compact several times.
+  World world;
+  std::vector<Entity> entities;
+  for (int i = 0; i < 3000; ++i) {
+    entities.push_back(world.create());
+    world.add<Position>(entities.back());
+  }
+  Tick before_last_frame = 0;
+  for (int frame = 0; frame < 10; ++frame) {
+    before_last_frame = world.tick();
+    world.advance_tick();
+    world.query<Position>().for_each([](Position& position) { position.x += 1.0f; });
+  }
+  world.advance_tick();
+  world.get_mut<Position>(entities[42]);
+  EXPECT_EQ(changed_positions(world, before_last_frame).size(), entities.size());
+  EXPECT_EQ(changed_positions(world, world.tick() - 1), std::vector<Entity>{entities[42]});
+  EXPECT_EQ(world.change_tick<Position>(entities[7]), world.tick() - 1);
+}
+
+TEST(ChangeDetection, WritesInsideChangedQueryDoNotRepeatOrHideEntities) {
+  World world;
+  const Entity a = world.create();
+  const Entity b = world.create();
+  world.add<Position>(a);
+  world.add<Position>(b);
+  const Tick before = world.tick();
+  world.advance_tick();
+  world.get_mut<Position>(a);
+  world.get_mut<Position>(b);
+  world.advance_tick();
+
+  int visits = 0;
+  world.query<Position>().changed_since<Position>(before).for_each([&](Position& position) {
+    ++visits;
+    position.x += 1.0f;
+    world.get_mut<Position>(b);
+  });
+  EXPECT_EQ(visits, 2);
+}
+
+}  // namespace
+}  // namespace sg::ecs

@@ -1,0 +1,84 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "ecs/world.h"
+#include "test_components.h"
+
+namespace sg::ecs {
+namespace {
+
+using test::Frozen;
+using test::Position;
+using test::Velocity;
+
+TEST(Query, VisitsOnlyEntitiesWithAllComponents) {
+  World world;
+  const Entity moving = world.create();
+  world.add<Position>(moving);
+  world.add<Velocity>(moving, 1.0f, 2.0f);
+  const Entity still = world.create();
+  world.add<Position>(still);
+  const Entity ghost = world.create();
+  world.add<Velocity>(ghost);
+
+  std::vector<Entity> visited;
+  world.query<Position, const Velocity>().for_each(
+      [&](Entity entity, Position& position, const Velocity& velocity) {
+        visited.push_back(entity);
+        position.x += velocity.x;
+        position.y += velocity.y;
+      });
+  EXPECT_EQ(visited, std::vector<Entity>{moving});
+  EXPECT_EQ(world.get<Position>(moving).y, 2.0f);
+  EXPECT_EQ(world.get<Position>(still).y, 0.0f);
+}
+
+TEST(Query, WorksWhenPoolsHaveDifferentOrders) {
+  World world;
+  std::vector<Entity> entities;
+  for (int i = 0; i < 6; ++i) entities.push_back(world.create());
+  // Velocity added in reverse order, so slot hints miss and lookups must go through sparse.
+  for (int i = 0; i < 6; ++i) world.add<Position>(entities[i], static_cast<float>(i), 0.0f);
+  for (int i = 5; i >= 0; --i) world.add<Velocity>(entities[i], 10.0f, 0.0f);
+  world.query<Position, const Velocity>().for_each(
+      [](Position& position, const Velocity& velocity) { position.x += velocity.x; });
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_EQ(world.get<Position>(entities[i]).x, 10.0f + static_cast<float>(i));
+  }
+}
+
+TEST(Query, ExcludesEntitiesWithExcludedComponent) {
+  World world;
+  const Entity frozen = world.create();
+  world.add<Position>(frozen);
+  world.add<Frozen>(frozen);
+  const Entity free = world.create();
+  world.add<Position>(free);
+
+  std::vector<Entity> visited;
+  world.query<const Position>().without<Frozen>().for_each(
+      [&](Entity entity, const Position&) { visited.push_back(entity); });
+  EXPECT_EQ(visited, std::vector<Entity>{free});
+}
+
+TEST(Query, CountOfEmptyWorldIsZero) {
+  World world;
+  EXPECT_EQ((world.query<const Position, const Velocity>().count()), 0u);
+}
+
+TEST(Query, ReadOnlyAccessDoesNotMarkChanged) {
+  World world;
+  const Entity entity = world.create();
+  world.add<Position>(entity);
+  world.add<Velocity>(entity);
+  const Tick added = world.tick();
+  world.advance_tick();
+  world.query<Position, const Velocity>().for_each([](Position&, const Velocity&) {});
+  EXPECT_EQ(world.change_tick<Velocity>(entity), added);
+  EXPECT_EQ(world.change_tick<Position>(entity), world.tick());
+}
+
+}  // namespace
+}  // namespace sg::ecs
