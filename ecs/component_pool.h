@@ -32,6 +32,7 @@ public:
     return true;
   }
 
+  T* data() { return components_.data(); }
   T& at(std::uint32_t slot) { return components_[slot]; }
   const T& at(std::uint32_t slot) const { return components_[slot]; }
 

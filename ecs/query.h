@@ -54,8 +54,12 @@ public:
 
   template <typename Fn>
   void for_each(Fn&& fn) {
+    if (watched_ == nullptr && visits_every_slot()) {
+      for_each_slot(fn);
+      return;
+    }
     // Opening this tick's change segments once here keeps mark_changed to one compare.
-    std::array<std::uint32_t, sizeof...(Components)> segment_begins{};
+    std::array<std::uint64_t, sizeof...(Components)> segment_begins{};
     [&]<std::size_t... I>(std::index_sequence<I...>) {
       ((segment_begins[I] =
             is_mutable<Components> ? std::get<I>(pools_)->begin_changes(world_->tick()) : 0),
@@ -102,6 +106,35 @@ private:
   template <typename T>
   static constexpr bool is_mutable = !std::is_const_v<T>;
 
+  // True when slot i of every pool is the same entity and nothing is excluded, so the query is
+  // a plain loop over parallel arrays.
+  bool visits_every_slot() const {
+    const SparseSet& first = *std::get<0>(pools_);
+    const bool aligned = std::apply(
+        [&](const auto*... pools) { return (first.has_same_layout(*pools) && ...); }, pools_);
+    return aligned && std::all_of(excluded_.begin(), excluded_.end(),
+                                  [](const SparseSet* excluded) { return excluded->size() == 0; });
+  }
+
+  // Every component is visited, so mutable pools take one bulk mark instead of one per slot;
+  // with no lookups left, the compiler can vectorise the loop like a hand-written one.
+  template <typename Fn>
+  void for_each_slot(Fn& fn) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((is_mutable<Components> ? std::get<I>(pools_)->mark_all_changed(world_->tick()) : void()),
+       ...);
+      const std::tuple data{std::get<I>(pools_)->data()...};
+      const std::span<const Entity> entities = std::get<0>(pools_)->entities();
+      for (std::size_t slot = 0; slot < entities.size(); ++slot) {
+        if constexpr (std::is_invocable_v<Fn&, Entity, Components&...>) {
+          fn(entities[slot], std::get<I>(data)[slot]...);
+        } else {
+          fn(std::get<I>(data)[slot]...);
+        }
+      }
+    }(std::index_sequence_for<Components...>{});
+  }
+
   const SparseSet* smallest_pool() const {
     const SparseSet* smallest = std::get<0>(pools_);
     std::apply(
@@ -114,7 +147,7 @@ private:
 
   template <typename Fn>
   void visit(Entity entity, std::uint32_t hint,
-             const std::array<std::uint32_t, sizeof...(Components)>& segment_begins, Fn& fn) {
+             const std::array<std::uint64_t, sizeof...(Components)>& segment_begins, Fn& fn) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
       std::array<std::uint32_t, sizeof...(Components)> slots{};
       const bool has_all =

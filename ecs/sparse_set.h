@@ -30,6 +30,11 @@ struct Removal {
 // it costs the number of changes, not the number of components. The log is compacted (stale
 // entries dropped) whenever it grows past twice the pool size, which keeps memory bounded with
 // amortised O(1) cost per write.
+//
+// A query that writes every component of the pool records that as one bulk mark instead of a
+// log entry per component: every component present then changed at `bulk_tick_`, so the whole
+// log before it is dropped (log positions are global counters; those before `log_base_` mean
+// "changed at bulk_tick_"). This keeps a full per-frame update as cheap as a plain loop.
 class SparseSet {
 public:
   static constexpr std::uint32_t npos = UINT32_MAX;
@@ -59,17 +64,25 @@ public:
     return slot_of(entity);
   }
 
+  // True if `other` holds exactly the same entities in the same slots, so slot i of one pool
+  // and slot i of the other belong to the same entity. The answer is cached until either pool
+  // changes structurally, so asking every frame is O(1).
+  bool has_same_layout(const SparseSet& other) const;
+
   // Opens the change segment of tick `now` if needed and returns the log position where it
   // starts. A component whose newest entry is before that position has not been written yet in
   // this tick. Call once before a batch of mark_changed calls with the same `now`.
-  std::uint32_t begin_changes(Tick now);
+  std::uint64_t begin_changes(Tick now);
 
   // Records a write at the tick `segment_begin` was opened for.
-  void mark_changed(std::uint32_t slot, std::uint32_t segment_begin) {
+  void mark_changed(std::uint32_t slot, std::uint64_t segment_begin) {
     if (log_position_[slot] >= segment_begin) return;
-    log_position_[slot] = static_cast<std::uint32_t>(change_log_.size());
+    log_position_[slot] = log_base_ + change_log_.size();
     change_log_.push_back(dense_[slot]);
   }
+
+  // Records a write at `now` to every component in the pool, in O(1).
+  void mark_all_changed(Tick now);
 
   // Tick of the newest write to the component of the entity in `slot`.
   Tick change_tick(std::uint32_t slot) const;
@@ -96,18 +109,29 @@ protected:
 private:
   struct Segment {
     Tick tick;
-    std::uint32_t begin;  // first log position of this tick's writes
+    std::uint64_t begin;  // global log position of this tick's first write
+  };
+  struct LayoutComparison {
+    const SparseSet* other;
+    std::uint64_t version;
+    std::uint64_t other_version;
+    bool same;
   };
 
-  bool is_newest_entry(std::uint32_t position) const;
+  std::uint64_t end_of_log() const { return log_base_ + change_log_.size(); }
+  bool is_newest_entry(std::uint64_t position) const;
   void compact_change_log();
 
   std::vector<std::uint32_t> sparse_;        // entity index -> dense slot (may be stale)
   std::vector<Entity> dense_;                // dense slot -> entity
-  std::vector<std::uint32_t> log_position_;  // dense slot -> its newest change_log_ entry
-  std::vector<Entity> change_log_;
-  std::vector<Segment> segments_;            // ascending ticks
+  std::vector<std::uint64_t> log_position_;  // dense slot -> global position of newest entry
+  std::vector<Entity> change_log_;           // change_log_[0] is at global position log_base_
+  std::uint64_t log_base_ = 0;
+  Tick bulk_tick_ = 0;                       // last mark_all_changed; 0 if never
+  std::vector<Segment> segments_;            // ascending ticks, all after bulk_tick_
   std::vector<Removal> removals_;            // ascending ticks
+  std::uint64_t layout_version_ = 0;         // bumped by every insert and erase
+  mutable std::vector<LayoutComparison> layout_comparisons_;
 };
 
 }  // namespace sg::ecs

@@ -168,6 +168,30 @@ TEST(ChangeDetection, HistoryStaysCorrectAcrossManyFramesOfFullRewrites) {
   EXPECT_EQ(world.change_tick<Position>(entities[7]), world.tick() - 1);
 }
 
+TEST(ChangeDetection, FullUpdateFollowedBySparseWritesAndAdds) {
+  World world;
+  std::vector<Entity> entities;
+  for (int i = 0; i < 5; ++i) {
+    entities.push_back(world.create());
+    world.add<Position>(entities.back());
+  }
+  const Tick before_full = world.tick();
+  world.advance_tick();
+  world.query<Position>().for_each([](Position& position) { position.x = 1.0f; });
+  const Tick full = world.tick();
+  world.get_mut<Position>(entities[1]);  // also written individually in the same tick
+  world.advance_tick();
+  world.get_mut<Position>(entities[3]);
+  const Entity added = world.create();
+  world.add<Position>(added);
+
+  EXPECT_EQ(changed_positions(world, before_full).size(), 6u);
+  EXPECT_EQ(sorted(changed_positions(world, full)), (std::vector<Entity>{entities[3], added}));
+  EXPECT_EQ(world.change_tick<Position>(entities[0]), full);
+  EXPECT_EQ(world.change_tick<Position>(entities[1]), full);
+  EXPECT_EQ(world.change_tick<Position>(entities[3]), world.tick());
+}
+
 TEST(ChangeDetection, WritesInsideChangedQueryDoNotRepeatOrHideEntities) {
   World world;
   const Entity a = world.create();

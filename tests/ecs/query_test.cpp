@@ -80,5 +80,35 @@ TEST(Query, ReadOnlyAccessDoesNotMarkChanged) {
   EXPECT_EQ(world.change_tick<Position>(entity), world.tick());
 }
 
+TEST(Query, StaysCorrectWhenAlignedPoolsLoseTheirAlignment) {
+  World world;
+  std::vector<Entity> entities;
+  for (int i = 0; i < 4; ++i) {
+    entities.push_back(world.create());
+    world.add<Position>(entities.back(), static_cast<float>(i), 0.0f);
+    world.add<Velocity>(entities.back(), 1.0f, 0.0f);
+  }
+  const auto step = [&] {
+    world.query<Position, const Velocity>().for_each(
+        [](Position& position, const Velocity& velocity) { position.x += velocity.x; });
+  };
+  step();  // aligned: same entities in the same slots
+  world.remove<Velocity>(entities[0]);
+  world.add<Velocity>(entities[0], 100.0f, 0.0f);  // same sizes, different order
+  step();
+  EXPECT_EQ(world.get<Position>(entities[0]).x, 101.0f);
+  EXPECT_EQ(world.get<Position>(entities[3]).x, 5.0f);
+}
+
+TEST(Query, ExclusionAppliesToAlignedPools) {
+  World world;
+  const Entity a = world.create();
+  const Entity b = world.create();
+  world.add<Position>(a);
+  world.add<Position>(b);
+  world.add<Frozen>(b);
+  EXPECT_EQ(world.query<const Position>().without<Frozen>().count(), 1u);
+}
+
 }  // namespace
 }  // namespace sg::ecs

@@ -1,1 +1,347 @@
-int main(){}
+// ECS against plain std::vector structure-of-arrays doing the same work, over a million
+// entities. Each case comes in pairs (…/ecs and …/raw) so the output reads as a ratio.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "ecs/world.h"
+
+namespace {
+
+using sg::ecs::Entity;
+using sg::ecs::Tick;
+using sg::ecs::World;
+
+constexpr std::uint32_t entity_count = 1'000'000;
+constexpr float dt = 1.0f / 60.0f;
+
+struct Position {
+  float x, y, z;
+};
+struct Velocity {
+  float x, y, z;
+};
+struct Acceleration {
+  float x, y, z;
+};
+struct Health {
+  float value;
+};
+
+Velocity velocity_of(std::uint32_t i) { return {1.0f, static_cast<float>(i % 7), -1.0f}; }
+
+// The raw baseline: one vector per component, entity i at index i.
+struct RawArrays {
+  std::vector<Position> positions;
+  std::vector<Velocity> velocities;
+  std::vector<Acceleration> accelerations;
+};
+
+RawArrays make_raw_arrays() {
+  RawArrays raw;
+  for (std::uint32_t i = 0; i < entity_count; ++i) {
+    raw.positions.push_back({0.0f, 0.0f, 0.0f});
+    raw.velocities.push_back(velocity_of(i));
+    raw.accelerations.push_back({0.0f, -9.8f, 0.0f});
+  }
+  return raw;
+}
+
+std::unique_ptr<World> make_world(std::vector<Entity>* entities = nullptr) {
+  auto world = std::make_unique<World>();
+  for (std::uint32_t i = 0; i < entity_count; ++i) {
+    const Entity entity = world->create();
+    world->add<Position>(entity, 0.0f, 0.0f, 0.0f);
+    world->add<Velocity>(entity, velocity_of(i));
+    world->add<Acceleration>(entity, 0.0f, -9.8f, 0.0f);
+    if (entities != nullptr) entities->push_back(entity);
+  }
+  return world;
+}
+
+void integrate(Position& position, const Velocity& velocity) {
+  position.x += velocity.x * dt;
+  position.y += velocity.y * dt;
+  position.z += velocity.z * dt;
+}
+
+void integrate(Position& position, const Velocity& velocity, const Acceleration& acceleration) {
+  position.x += (velocity.x + acceleration.x * dt) * dt;
+  position.y += (velocity.y + acceleration.y * dt) * dt;
+  position.z += (velocity.z + acceleration.z * dt) * dt;
+}
+
+// Each iteration is one frame: a new tick, so every write is a first write and is logged.
+void iterate2_ecs(benchmark::State& state) {
+  const std::unique_ptr<World> world = make_world();
+  for (auto _ : state) {
+    world->advance_tick();
+    world->query<Position, const Velocity>().for_each(
+        [](Position& position, const Velocity& velocity) { integrate(position, velocity); });
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+void iterate2_raw(benchmark::State& state) {
+  RawArrays raw = make_raw_arrays();
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < raw.positions.size(); ++i) {
+      integrate(raw.positions[i], raw.velocities[i]);
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+void iterate3_ecs(benchmark::State& state) {
+  const std::unique_ptr<World> world = make_world();
+  for (auto _ : state) {
+    world->advance_tick();
+    world->query<Position, const Velocity, const Acceleration>().for_each(
+        [](Position& position, const Velocity& velocity, const Acceleration& acceleration) {
+          integrate(position, velocity, acceleration);
+        });
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+void iterate3_raw(benchmark::State& state) {
+  RawArrays raw = make_raw_arrays();
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < raw.positions.size(); ++i) {
+      integrate(raw.positions[i], raw.velocities[i], raw.accelerations[i]);
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+void create2_ecs(benchmark::State& state) {
+  for (auto _ : state) {
+    auto world = std::make_unique<World>();
+    for (std::uint32_t i = 0; i < entity_count; ++i) {
+      const Entity entity = world->create();
+      world->add<Position>(entity, 0.0f, 0.0f, 0.0f);
+      world->add<Velocity>(entity, velocity_of(i));
+    }
+    benchmark::DoNotOptimize(world->entity_count());
+    state.PauseTiming();  // freeing memory is not part of creating
+    world.reset();
+    state.ResumeTiming();
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+void create2_raw(benchmark::State& state) {
+  for (auto _ : state) {
+    auto ids = std::make_unique<std::vector<std::uint32_t>>();
+    auto raw = std::make_unique<RawArrays>();
+    for (std::uint32_t i = 0; i < entity_count; ++i) {
+      ids->push_back(i);
+      raw->positions.push_back({0.0f, 0.0f, 0.0f});
+      raw->velocities.push_back(velocity_of(i));
+    }
+    benchmark::DoNotOptimize(ids->data());
+    state.PauseTiming();
+    ids.reset();
+    raw.reset();
+    state.ResumeTiming();
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+void destroy_ecs(benchmark::State& state) {
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::vector<Entity> entities;
+    std::unique_ptr<World> world = make_world(&entities);
+    state.ResumeTiming();
+    for (const Entity entity : entities) world->destroy(entity);
+    benchmark::DoNotOptimize(world->entity_count());
+    state.PauseTiming();  // freeing memory is not part of destroying
+    world.reset();
+    state.ResumeTiming();
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+// Destroying entity i from raw arrays that must stay dense: swap-remove each array through an
+// id -> index map, the least a packed layout needs.
+void destroy_raw(benchmark::State& state) {
+  for (auto _ : state) {
+    state.PauseTiming();
+    auto raw_owner = std::make_unique<RawArrays>(make_raw_arrays());
+    RawArrays& raw = *raw_owner;
+    std::vector<std::uint32_t> index_of_id(entity_count);
+    std::iota(index_of_id.begin(), index_of_id.end(), 0u);
+    std::vector<std::uint32_t> id_at(index_of_id);
+    state.ResumeTiming();
+    for (std::uint32_t id = 0; id < entity_count; ++id) {
+      const std::uint32_t index = index_of_id[id];
+      const std::uint32_t last_id = id_at.back();
+      raw.positions[index] = raw.positions.back();
+      raw.velocities[index] = raw.velocities.back();
+      raw.accelerations[index] = raw.accelerations.back();
+      raw.positions.pop_back();
+      raw.velocities.pop_back();
+      raw.accelerations.pop_back();
+      id_at[index] = last_id;
+      id_at.pop_back();
+      index_of_id[last_id] = index;
+    }
+    benchmark::DoNotOptimize(raw.positions.size());
+    state.PauseTiming();
+    raw_owner.reset();
+    state.ResumeTiming();
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+void add_remove_ecs(benchmark::State& state) {
+  std::vector<Entity> entities;
+  const std::unique_ptr<World> world = make_world(&entities);
+  for (auto _ : state) {
+    for (const Entity entity : entities) world->add<Health>(entity, 1.0f);
+    for (const Entity entity : entities) world->remove<Health>(entity);
+    world->forget_removals_before(world->tick() + 1);
+    world->advance_tick();
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+// Adding then removing a component kept in its own dense array with an id -> index map.
+void add_remove_raw(benchmark::State& state) {
+  std::vector<float> health;
+  std::vector<std::uint32_t> id_at;
+  std::vector<std::uint32_t> index_of_id(entity_count);
+  for (auto _ : state) {
+    for (std::uint32_t id = 0; id < entity_count; ++id) {
+      index_of_id[id] = static_cast<std::uint32_t>(health.size());
+      health.push_back(1.0f);
+      id_at.push_back(id);
+    }
+    for (std::uint32_t id = 0; id < entity_count; ++id) {
+      const std::uint32_t index = index_of_id[id];
+      health[index] = health.back();
+      id_at[index] = id_at.back();
+      index_of_id[id_at[index]] = index;
+      health.pop_back();
+      id_at.pop_back();
+    }
+    benchmark::DoNotOptimize(health.data());
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+// What the same add+remove costs in an archetype layout: each structural change moves the
+// entity's whole row (Position, Velocity, Acceleration) to the table of its new component set
+// and swap-removes it from the old one. Only the data movement is modelled, not the archetype
+// lookup, so this is a lower bound.
+void add_remove_archetype_model(benchmark::State& state) {
+  RawArrays without_health = make_raw_arrays();
+  RawArrays with_health;
+  std::vector<float> health;
+  const auto move_row = [](RawArrays& from, std::size_t index, RawArrays& to) {
+    to.positions.push_back(from.positions[index]);
+    to.velocities.push_back(from.velocities[index]);
+    to.accelerations.push_back(from.accelerations[index]);
+    from.positions[index] = from.positions.back();
+    from.velocities[index] = from.velocities.back();
+    from.accelerations[index] = from.accelerations.back();
+    from.positions.pop_back();
+    from.velocities.pop_back();
+    from.accelerations.pop_back();
+  };
+  for (auto _ : state) {
+    // Moving from the back keeps the benchmark free of an id map; real tables need one more.
+    while (!without_health.positions.empty()) {
+      move_row(without_health, without_health.positions.size() - 1, with_health);
+      health.push_back(1.0f);
+    }
+    while (!with_health.positions.empty()) {
+      move_row(with_health, with_health.positions.size() - 1, without_health);
+      health.pop_back();
+    }
+    benchmark::DoNotOptimize(without_health.positions.data());
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+std::vector<std::uint32_t> random_indices(std::uint32_t count) {
+  std::vector<std::uint32_t> indices(entity_count);
+  std::iota(indices.begin(), indices.end(), 0u);
+  std::shuffle(indices.begin(), indices.end(), std::mt19937{42});
+  indices.resize(count);
+  return indices;
+}
+
+// Arg: percent of entities written each frame. Times only the read of the changes.
+void changed_since_ecs(benchmark::State& state) {
+  std::vector<Entity> entities;
+  const std::unique_ptr<World> world = make_world(&entities);
+  const std::vector<std::uint32_t> written =
+      random_indices(entity_count / 100 * static_cast<std::uint32_t>(state.range(0)));
+  for (auto _ : state) {
+    state.PauseTiming();
+    const Tick last_frame = world->tick();
+    world->advance_tick();
+    for (const std::uint32_t index : written) world->get_mut<Position>(entities[index]).x += 1.0f;
+    state.ResumeTiming();
+    float sum = 0.0f;
+    world->query<const Position>().changed_since<Position>(last_frame).for_each(
+        [&](const Position& position) { sum += position.x; });
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(state.iterations() * written.size());
+}
+
+// Without a change log, plain arrays with a tick per element must scan every element.
+void changed_since_raw(benchmark::State& state) {
+  RawArrays raw = make_raw_arrays();
+  std::vector<Tick> ticks(entity_count, 1);
+  Tick tick = 1;
+  const std::vector<std::uint32_t> written =
+      random_indices(entity_count / 100 * static_cast<std::uint32_t>(state.range(0)));
+  for (auto _ : state) {
+    state.PauseTiming();
+    const Tick last_frame = tick++;
+    for (const std::uint32_t index : written) {
+      raw.positions[index].x += 1.0f;
+      ticks[index] = tick;
+    }
+    state.ResumeTiming();
+    float sum = 0.0f;
+    for (std::size_t i = 0; i < ticks.size(); ++i) {
+      if (ticks[i] > last_frame) sum += raw.positions[i].x;
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(state.iterations() * written.size());
+}
+
+}  // namespace
+
+BENCHMARK(iterate2_ecs)->Name("iterate2/ecs")->Unit(benchmark::kMillisecond);
+BENCHMARK(iterate2_raw)->Name("iterate2/raw")->Unit(benchmark::kMillisecond);
+BENCHMARK(iterate3_ecs)->Name("iterate3/ecs")->Unit(benchmark::kMillisecond);
+BENCHMARK(iterate3_raw)->Name("iterate3/raw")->Unit(benchmark::kMillisecond);
+BENCHMARK(create2_ecs)->Name("create2/ecs")->Unit(benchmark::kMillisecond);
+BENCHMARK(create2_raw)->Name("create2/raw")->Unit(benchmark::kMillisecond);
+BENCHMARK(destroy_ecs)->Name("destroy/ecs")->Unit(benchmark::kMillisecond);
+BENCHMARK(destroy_raw)->Name("destroy/raw")->Unit(benchmark::kMillisecond);
+BENCHMARK(add_remove_ecs)->Name("add_remove/ecs")->Unit(benchmark::kMillisecond);
+BENCHMARK(add_remove_raw)->Name("add_remove/raw")->Unit(benchmark::kMillisecond);
+BENCHMARK(add_remove_archetype_model)
+    ->Name("add_remove/archetype_model")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(changed_since_ecs)->Name("changed_since/ecs")->Arg(1)->Arg(10)->Unit(benchmark::kMicrosecond);
+BENCHMARK(changed_since_raw)->Name("changed_since/raw")->Arg(1)->Arg(10)->Unit(benchmark::kMicrosecond);
+
+BENCHMARK_MAIN();
