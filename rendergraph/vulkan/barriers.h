@@ -1,0 +1,23 @@
+#pragma once
+// A single image layout transition as a synchronization2 barrier. The render graph computes
+// and batches the frame's barriers itself; this is for the few transitions outside it
+// (presentation blits, readbacks).
+#include <vulkan/vulkan.h>
+
+namespace sg::vk {
+
+struct ImageTransition {
+  VkImage image = VK_NULL_HANDLE;
+  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+  VkImageLayout old_layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkImageLayout new_layout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkPipelineStageFlags2 src_stages = VK_PIPELINE_STAGE_2_NONE;
+  VkAccessFlags2 src_access = VK_ACCESS_2_NONE;
+  VkPipelineStageFlags2 dst_stages = VK_PIPELINE_STAGE_2_NONE;
+  VkAccessFlags2 dst_access = VK_ACCESS_2_NONE;
+};
+
+// Records the transition over all mips and layers of the image.
+void transition(VkCommandBuffer cmd, const ImageTransition& t);
+
+}  // namespace sg::vk

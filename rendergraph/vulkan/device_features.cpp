@@ -1,0 +1,51 @@
+#include "rendergraph/vulkan/device_features.h"
+
+namespace sg::vk {
+namespace {
+
+struct RequiredFeature {
+  const char* name;
+  const char* why;
+  VkBool32& (*field)(DeviceFeatures&);
+};
+
+constexpr RequiredFeature required_features[] = {
+    {"dynamicRendering (Vulkan 1.3)", "raster passes begin rendering from declared attachments",
+     [](DeviceFeatures& f) -> VkBool32& { return f.v13.dynamicRendering; }},
+    {"synchronization2 (Vulkan 1.3)", "the render graph emits vkCmdPipelineBarrier2",
+     [](DeviceFeatures& f) -> VkBool32& { return f.v13.synchronization2; }},
+    {"imageCubeArray", "point-light shadows live in cube-map arrays",
+     [](DeviceFeatures& f) -> VkBool32& { return f.core.features.imageCubeArray; }},
+    {"multiDrawIndirect", "casters are drawn with one indirect call per light view",
+     [](DeviceFeatures& f) -> VkBool32& { return f.core.features.multiDrawIndirect; }},
+    {"drawIndirectFirstInstance", "indirect draws index per-instance data",
+     [](DeviceFeatures& f) -> VkBool32& { return f.core.features.drawIndirectFirstInstance; }},
+    {"shaderDrawParameters (Vulkan 1.1)", "shaders read gl_DrawID and gl_BaseInstance",
+     [](DeviceFeatures& f) -> VkBool32& { return f.v11.shaderDrawParameters; }},
+};
+
+}  // namespace
+
+DeviceFeatures::DeviceFeatures() {
+  core.pNext = &v11;
+  v11.pNext = &v12;
+  v12.pNext = &v13;
+}
+
+void query_features(VkPhysicalDevice device, DeviceFeatures& out) {
+  vkGetPhysicalDeviceFeatures2(device, &out.core);
+}
+
+std::vector<std::string> missing_required_features(DeviceFeatures& supported) {
+  std::vector<std::string> missing;
+  for (const RequiredFeature& r : required_features) {
+    if (!r.field(supported)) missing.push_back(std::string(r.name) + ", needed because " + r.why);
+  }
+  return missing;
+}
+
+void enable_required_features(DeviceFeatures& out) {
+  for (const RequiredFeature& r : required_features) r.field(out) = VK_TRUE;
+}
+
+}  // namespace sg::vk

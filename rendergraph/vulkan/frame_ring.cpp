@@ -1,0 +1,97 @@
+#include "rendergraph/vulkan/frame_ring.h"
+
+#include "rendergraph/vulkan/context.h"
+#include "rendergraph/vulkan/vulkan_error.h"
+
+namespace sg::vk {
+
+FrameRing::FrameRing(VulkanContext& context, uint32_t frames_in_flight) : context_(context) {
+  const VkDevice device = context.device();
+  slots_.resize(frames_in_flight);
+  for (Slot& slot : slots_) {
+    VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    pool_info.queueFamilyIndex = context.queue_family();
+    VkCommandPool pool;
+    check(vkCreateCommandPool(device, &pool_info, nullptr, &pool), "vkCreateCommandPool");
+    slot.pool = UniqueCommandPool(device, pool);
+
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = pool;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    check(vkAllocateCommandBuffers(device, &alloc, &slot.frame.cmd), "vkAllocateCommandBuffers");
+
+    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    fence_info.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+    VkFence fence;
+    check(vkCreateFence(device, &fence_info, nullptr, &fence), "vkCreateFence");
+    slot.done = UniqueFence(device, fence);
+
+    VkSemaphoreCreateInfo sem_info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore semaphore;
+    check(vkCreateSemaphore(device, &sem_info, nullptr, &semaphore), "vkCreateSemaphore");
+    slot.image_acquired = UniqueSemaphore(device, semaphore);
+    slot.frame.image_acquired = semaphore;
+  }
+}
+
+FrameRing::~FrameRing() { wait_idle(); }
+
+FrameSlot& FrameRing::begin_frame() {
+  Slot& slot = slots_[frame_number_ % slots_.size()];
+  const VkFence fence = slot.done.get();
+  check(vkWaitForFences(context_.device(), 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  // The fence is reset at submit, so a frame abandoned before submission (an out-of-date
+  // swapchain) leaves the slot reusable instead of waiting forever on an unsignalled fence.
+  check(vkResetCommandPool(context_.device(), slot.pool.get(), 0), "vkResetCommandPool");
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(vkBeginCommandBuffer(slot.frame.cmd, &begin), "vkBeginCommandBuffer");
+  slot.frame.frame_number = frame_number_++;
+  current_ = &slot;
+  return slot.frame;
+}
+
+void FrameRing::submit(std::span<const SemaphoreWait> waits, std::span<const VkSemaphore> signals) {
+  Slot& slot = *current_;
+  check(vkEndCommandBuffer(slot.frame.cmd), "vkEndCommandBuffer");
+  std::vector<VkSemaphoreSubmitInfo> wait_infos;
+  for (const SemaphoreWait& w : waits) {
+    VkSemaphoreSubmitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    info.semaphore = w.semaphore;
+    info.stageMask = w.stages;
+    wait_infos.push_back(info);
+  }
+  std::vector<VkSemaphoreSubmitInfo> signal_infos;
+  for (VkSemaphore s : signals) {
+    VkSemaphoreSubmitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    info.semaphore = s;
+    info.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    signal_infos.push_back(info);
+  }
+  VkCommandBufferSubmitInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+  cmd_info.commandBuffer = slot.frame.cmd;
+  VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+  submit.waitSemaphoreInfoCount = static_cast<uint32_t>(wait_infos.size());
+  submit.pWaitSemaphoreInfos = wait_infos.data();
+  submit.commandBufferInfoCount = 1;
+  submit.pCommandBufferInfos = &cmd_info;
+  submit.signalSemaphoreInfoCount = static_cast<uint32_t>(signal_infos.size());
+  submit.pSignalSemaphoreInfos = signal_infos.data();
+  const VkFence fence = slot.done.get();
+  check(vkResetFences(context_.device(), 1, &fence), "vkResetFences");
+  check(vkQueueSubmit2(context_.queue(), 1, &submit, fence), "vkQueueSubmit2");
+  current_ = nullptr;
+}
+
+void FrameRing::wait_idle() {
+  std::vector<VkFence> fences;
+  for (const Slot& slot : slots_) fences.push_back(slot.done.get());
+  if (!fences.empty()) {
+    vkWaitForFences(context_.device(), static_cast<uint32_t>(fences.size()), fences.data(), VK_TRUE,
+                    UINT64_MAX);
+  }
+}
+
+}  // namespace sg::vk

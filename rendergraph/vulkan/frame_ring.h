@@ -1,0 +1,58 @@
+#pragma once
+// Per-frame command recording with a fixed number of frames in flight: the CPU records
+// frame N+1 while the GPU still runs frame N, and waits only when it would overwrite the
+// command buffer of a frame the GPU has not finished.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/vulkan/unique_handle.h"
+
+namespace sg::vk {
+
+class VulkanContext;
+
+struct FrameSlot {
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  VkSemaphore image_acquired = VK_NULL_HANDLE;  // for swapchain acquisition into this frame
+  uint64_t frame_number = 0;
+};
+
+struct SemaphoreWait {
+  VkSemaphore semaphore;
+  VkPipelineStageFlags2 stages;
+};
+
+class FrameRing {
+ public:
+  explicit FrameRing(VulkanContext& context, uint32_t frames_in_flight = 2);
+  ~FrameRing();
+  FrameRing(const FrameRing&) = delete;
+  FrameRing& operator=(const FrameRing&) = delete;
+
+  // Waits until the slot's previous use finished on the GPU, then begins its command buffer.
+  // A frame begun and never submitted is simply dropped by the next begin_frame.
+  FrameSlot& begin_frame();
+  // Ends and submits the current frame's commands.
+  void submit(std::span<const SemaphoreWait> waits = {}, std::span<const VkSemaphore> signals = {});
+  // Waits for every submitted frame.
+  void wait_idle();
+
+  uint32_t frames_in_flight() const { return static_cast<uint32_t>(slots_.size()); }
+
+ private:
+  struct Slot {
+    UniqueCommandPool pool;
+    FrameSlot frame;
+    UniqueFence done;
+    UniqueSemaphore image_acquired;
+  };
+  VulkanContext& context_;
+  std::vector<Slot> slots_;
+  uint64_t frame_number_ = 0;
+  Slot* current_ = nullptr;
+};
+
+}  // namespace sg::vk

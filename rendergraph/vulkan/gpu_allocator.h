@@ -1,0 +1,76 @@
+#pragma once
+// Device memory suballocator: resources take ranges of large VkDeviceMemory blocks instead of
+// one vkAllocateMemory each (drivers cap the number of allocations, e.g. 4096, and each one is
+// slow). Linear resources (buffers) and optimal-tiling images live in separate blocks, so
+// bufferImageGranularity never needs padding. Host-visible blocks stay persistently mapped.
+// Not thread-safe: the engine allocates from one thread.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/vulkan/range_allocator.h"
+
+namespace sg::vk {
+
+enum class MemoryUsage {
+  gpu_only,  // device-local, never mapped
+  upload,    // host-visible and coherent, written by the CPU (staging, per-frame constants)
+  readback,  // host-visible and coherent, preferably cached, read by the CPU
+};
+
+enum class ResourceTiling { linear, optimal };
+
+struct Allocation {
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkDeviceSize offset = 0;
+  VkDeviceSize size = 0;
+  void* mapped = nullptr;  // at `offset`, for host-visible usages
+  uint32_t block = UINT32_MAX;
+};
+
+struct MemoryStats {
+  VkDeviceSize reserved_bytes = 0;  // in all blocks
+  VkDeviceSize used_bytes = 0;      // handed out to resources
+  uint32_t block_count = 0;
+  uint32_t allocation_count = 0;
+};
+
+class GpuAllocator {
+ public:
+  static constexpr VkDeviceSize default_block_size = VkDeviceSize{64} << 20;
+
+  GpuAllocator(VkPhysicalDevice physical_device, VkDevice device,
+               VkDeviceSize block_size = default_block_size);
+  ~GpuAllocator();
+  GpuAllocator(const GpuAllocator&) = delete;
+  GpuAllocator& operator=(const GpuAllocator&) = delete;
+
+  // Throws VulkanError when no memory type fits or the device is out of memory.
+  Allocation allocate(const VkMemoryRequirements& requirements, MemoryUsage usage,
+                      ResourceTiling tiling);
+  void free(const Allocation& allocation);
+
+  MemoryStats stats() const;
+
+ private:
+  struct Block {
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    void* mapped = nullptr;
+    uint32_t memory_type = 0;
+    ResourceTiling tiling = ResourceTiling::linear;
+    RangeAllocator ranges{0};
+    uint32_t allocation_count = 0;
+  };
+
+  uint32_t find_memory_type(uint32_t type_bits, MemoryUsage usage) const;
+  uint32_t create_block(uint32_t memory_type, ResourceTiling tiling, VkDeviceSize size);
+
+  VkDevice device_;
+  VkDeviceSize block_size_;
+  VkPhysicalDeviceMemoryProperties memory_properties_{};
+  std::vector<Block> blocks_;  // a freed block keeps its slot (memory null) so indices stay valid
+};
+
+}  // namespace sg::vk

@@ -1,0 +1,36 @@
+#pragma once
+// Graphics pipelines for dynamic rendering (no render pass objects), built from a plain
+// description. Viewport and scissor are dynamic so pipelines survive window resizes.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/vulkan/unique_handle.h"
+
+namespace sg::vk {
+
+class VulkanContext;
+
+UniqueShaderModule create_shader_module(VulkanContext& context, std::span<const uint32_t> spirv);
+
+struct GraphicsPipelineDesc {
+  std::span<const uint32_t> vertex_spirv;
+  std::span<const uint32_t> fragment_spirv;  // empty for depth-only pipelines
+  std::vector<VkVertexInputBindingDescription> vertex_bindings;
+  std::vector<VkVertexInputAttributeDescription> vertex_attributes;
+  std::vector<VkFormat> color_formats;
+  VkFormat depth_format = VK_FORMAT_UNDEFINED;
+  VkCompareOp depth_compare = VK_COMPARE_OP_LESS;
+  bool depth_write = true;
+  VkCullModeFlags cull_mode = VK_CULL_MODE_BACK_BIT;
+  VkFrontFace front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  std::string name;
+};
+
+UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPipelineDesc& desc);
+
+}  // namespace sg::vk

@@ -1,0 +1,57 @@
+#include "rendergraph/vulkan/readback.h"
+
+#include <cstring>
+#include <utility>
+
+#include "rendergraph/vulkan/context.h"
+#include "rendergraph/vulkan/resources.h"
+#include "rendergraph/vulkan/vulkan_error.h"
+
+namespace sg::vk {
+namespace {
+
+bool is_bgra(VkFormat format) {
+  return format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB;
+}
+bool is_rgba(VkFormat format) {
+  return format == VK_FORMAT_R8G8B8A8_UNORM || format == VK_FORMAT_R8G8B8A8_SRGB;
+}
+
+}  // namespace
+
+Rgba8Image read_rgba8(VulkanContext& context, const Image& image) {
+  if (!is_rgba(image.format()) && !is_bgra(image.format())) {
+    throw VulkanError("read_rgba8 supports 8-bit RGBA/BGRA images only (format " +
+                      std::to_string(image.format()) + ")");
+  }
+  const VkExtent2D extent = image.extent();
+  const VkDeviceSize size = VkDeviceSize{extent.width} * extent.height * 4;
+  Buffer staging(context, {size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback,
+                           "readback staging"});
+  context.submit_and_wait([&](VkCommandBuffer cmd) {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {extent.width, extent.height, 1};
+    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           staging.handle(), 1, &region);
+    // Make the copy visible to the host read below.
+    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+    barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    barrier.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+    barrier.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+  });
+
+  Rgba8Image out{extent.width, extent.height, std::vector<uint8_t>(size)};
+  std::memcpy(out.pixels.data(), staging.mapped(), size);
+  if (is_bgra(image.format())) {
+    for (size_t i = 0; i < out.pixels.size(); i += 4) std::swap(out.pixels[i], out.pixels[i + 2]);
+  }
+  return out;
+}
+
+}  // namespace sg::vk

@@ -1,0 +1,27 @@
+#pragma once
+// Copies a colour image back to the CPU (screenshots, tests).
+#include <cstdint>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace sg::vk {
+
+class Image;
+class VulkanContext;
+
+// Tightly packed 8-bit RGBA, rows top to bottom.
+struct Rgba8Image {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<uint8_t> pixels;
+
+  const uint8_t* at(uint32_t x, uint32_t y) const { return &pixels[(size_t{y} * width + x) * 4]; }
+};
+
+// Reads mip 0, layer 0 of an 8-bit RGBA or BGRA image (UNORM or SRGB: the stored bytes are
+// returned as they are). The image must be in TRANSFER_SRC_OPTIMAL with its writes made
+// available to transfer reads by an earlier barrier on the same queue. Waits for the copy.
+Rgba8Image read_rgba8(VulkanContext& context, const Image& image);
+
+}  // namespace sg::vk

@@ -1,0 +1,82 @@
+#pragma once
+// Buffers and images that own their Vulkan handle and their slice of suballocated memory.
+// Move-only; destroyed with their owner, which must not outlive the VulkanContext.
+#include <cstdint>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/vulkan/gpu_allocator.h"
+
+namespace sg::vk {
+
+class VulkanContext;
+
+struct BufferDesc {
+  VkDeviceSize size = 0;
+  VkBufferUsageFlags usage = 0;
+  MemoryUsage memory = MemoryUsage::gpu_only;
+  std::string name;  // debug name, shown by validation messages and capture tools
+};
+
+class Buffer {
+ public:
+  Buffer() = default;
+  Buffer(VulkanContext& context, const BufferDesc& desc);
+  ~Buffer();
+  Buffer(Buffer&& other) noexcept;
+  Buffer& operator=(Buffer&& other) noexcept;
+
+  VkBuffer handle() const { return buffer_; }
+  VkDeviceSize size() const { return size_; }
+  // Host address of the buffer's first byte; null for gpu_only memory.
+  void* mapped() const { return allocation_.mapped; }
+
+ private:
+  void reset();
+
+  VulkanContext* context_ = nullptr;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  Allocation allocation_;
+  VkDeviceSize size_ = 0;
+};
+
+struct ImageDesc {
+  VkExtent2D extent{};
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  VkImageUsageFlags usage = 0;
+  uint32_t mip_levels = 1;
+  uint32_t array_layers = 1;
+  VkImageViewType view_type = VK_IMAGE_VIEW_TYPE_2D;  // of the view over all subresources
+  std::string name;
+};
+
+class Image {
+ public:
+  Image() = default;
+  Image(VulkanContext& context, const ImageDesc& desc);
+  ~Image();
+  Image(Image&& other) noexcept;
+  Image& operator=(Image&& other) noexcept;
+
+  VkImage handle() const { return image_; }
+  VkImageView view() const { return view_; }  // all mips and layers
+  VkFormat format() const { return format_; }
+  VkExtent2D extent() const { return extent_; }
+  VkImageAspectFlags aspect() const;
+
+ private:
+  void reset();
+
+  VulkanContext* context_ = nullptr;
+  VkImage image_ = VK_NULL_HANDLE;
+  VkImageView view_ = VK_NULL_HANDLE;
+  Allocation allocation_;
+  VkFormat format_ = VK_FORMAT_UNDEFINED;
+  VkExtent2D extent_{};
+};
+
+// Depth, stencil or colour aspect of a format.
+VkImageAspectFlags aspect_of(VkFormat format);
+
+}  // namespace sg::vk

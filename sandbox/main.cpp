@@ -1,0 +1,44 @@
+// shadowgraph-sandbox: renders the built-in scene in a window, or headless to a PNG.
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+
+#include <GLFW/glfw3.h>
+
+#include "sandbox/options.h"
+#include "sandbox/run.h"
+
+namespace {
+
+bool display_available() {
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x11 && *x11) || (wayland && *wayland);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  sg::sandbox::ParseResult parsed = sg::sandbox::parse_options(argc, argv);
+  if (!parsed.options) return parsed.exit_code;
+  sg::sandbox::Options options = *parsed.options;
+
+  try {
+    if (!options.headless && !display_available()) {
+      std::printf("shadowgraph: no display found (DISPLAY and WAYLAND_DISPLAY unset): rendering headless\n");
+      options.headless = true;
+    }
+    if (!options.headless && !glfwInit()) {
+      std::printf("shadowgraph: cannot open the display: rendering headless\n");
+      options.headless = true;
+    }
+    if (options.headless && options.screenshot.empty()) options.screenshot = "shadowgraph.png";
+    const int code = options.headless ? sg::sandbox::run_headless(options)
+                                      : sg::sandbox::run_windowed(options);
+    if (!options.headless) glfwTerminate();
+    return code;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadowgraph: error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,11 @@
+#pragma once
+#include <string>
+
+#include "rendergraph/vulkan/readback.h"
+
+namespace sg::sandbox {
+
+// Writes `image` as an 8-bit RGBA PNG. Throws std::runtime_error naming the path on failure.
+void write_png(const std::string& path, const vk::Rgba8Image& image);
+
+}  // namespace sg::sandbox

@@ -1,0 +1,21 @@
+#include <cstdio>
+
+#include <GLFW/glfw3.h>
+
+#include "rendergraph/vulkan/context.h"
+#include "rendergraph/vulkan/frame_ring.h"
+#include "sandbox/run.h"
+#include "sandbox/window_session.h"
+
+namespace sg::sandbox {
+
+int run_windowed(const Options& options) {
+  WindowSession session(options);
+  std::printf("shadowgraph: window on %s (Esc closes)\n", session.context().device_name().c_str());
+  const size_t frame_limit = options.frames.value_or(UINT32_MAX);
+  while (session.frame_ms().size() < frame_limit && session.frame() != FrameResult::closed) {
+  }
+  return finish_run(options, session.context(), session.renderer(), session.frame_ms());
+}
+
+}  // namespace sg::sandbox

@@ -1,0 +1,109 @@
+#include "sandbox/window_session.h"
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include "rendergraph/vulkan/context.h"
+#include "rendergraph/vulkan/frame_ring.h"
+#include "rendergraph/vulkan/swapchain.h"
+#include "rendergraph/vulkan/vulkan_error.h"
+#include "systems/scene_renderer.h"
+
+namespace sg::sandbox {
+namespace {
+
+VkExtent2D framebuffer_extent(GLFWwindow* window) {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window, &w, &h);
+  return {static_cast<uint32_t>(w), static_cast<uint32_t>(h)};
+}
+
+}  // namespace
+
+WindowSession::WindowSession(const Options& options) : scene_(make_builtin_scene()) {
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+  window_ = glfwCreateWindow(int(options.width), int(options.height), "Shadowgraph", nullptr, nullptr);
+  if (!window_) throw std::runtime_error("cannot create a GLFW window");
+  glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
+    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+  });
+
+  vk::ContextOptions context_options;
+  context_options.validation = options.validation;
+  context_options.device_name = options.device;
+  context_options.presentation = true;
+  uint32_t extension_count = 0;
+  const char** extensions = glfwGetRequiredInstanceExtensions(&extension_count);
+  if (!extensions) throw std::runtime_error("GLFW found no Vulkan window support on this system");
+  context_options.instance_extensions.assign(extensions, extensions + extension_count);
+  context_ = std::make_unique<vk::VulkanContext>(context_options);
+
+  VkSurfaceKHR surface = VK_NULL_HANDLE;
+  vk::check(glfwCreateWindowSurface(context_->instance(), window_, nullptr, &surface),
+            "glfwCreateWindowSurface");
+  swapchain_ = std::make_unique<vk::Swapchain>(
+      *context_, surface, options.vsync ? vk::PresentMode::vsync : vk::PresentMode::no_vsync);
+  renderer_ = std::make_unique<SceneRenderer>(*context_, scene_);
+  frames_ = std::make_unique<vk::FrameRing>(*context_);
+  ready_ = fit_to_window();
+}
+
+WindowSession::~WindowSession() {
+  if (frames_) frames_->wait_idle();
+  frames_.reset();
+  renderer_.reset();
+  swapchain_.reset();
+  context_.reset();
+  if (window_) glfwDestroyWindow(window_);
+}
+
+VkExtent2D WindowSession::swapchain_extent() const {
+  return swapchain_->valid() ? swapchain_->extent() : VkExtent2D{0, 0};
+}
+
+bool WindowSession::fit_to_window() {
+  frames_->wait_idle();  // the old targets may still be in use by frames in flight
+  if (!swapchain_->recreate(framebuffer_extent(window_))) return false;
+  renderer_->resize(swapchain_->extent());
+  return true;
+}
+
+FrameResult WindowSession::frame() {
+  glfwPollEvents();
+  if (glfwWindowShouldClose(window_)) return FrameResult::closed;
+  const VkExtent2D extent = framebuffer_extent(window_);
+  if (extent.width == 0 || extent.height == 0) {
+    ready_ = false;
+    glfwWaitEventsTimeout(0.1);  // minimized: sleep until something happens
+    return FrameResult::minimized;
+  }
+  const VkExtent2D current = swapchain_extent();
+  if (!ready_ || extent.width != current.width || extent.height != current.height) {
+    ready_ = fit_to_window();
+    return ready_ ? FrameResult::swapchain_recreated : FrameResult::minimized;
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  vk::FrameSlot& frame = frames_->begin_frame();
+  const std::optional<uint32_t> image = swapchain_->acquire(frame.image_acquired);
+  if (!image) {
+    ready_ = false;
+    return FrameResult::swapchain_recreated;
+  }
+  renderer_->record(frame.cmd, scene_.camera);
+  vk::record_blit_to_swapchain(frame.cmd, renderer_->color_target(), swapchain_->image(*image),
+                               swapchain_->extent());
+  const vk::SemaphoreWait wait{frame.image_acquired, VK_PIPELINE_STAGE_2_BLIT_BIT};
+  const VkSemaphore signal = swapchain_->render_finished(*image);
+  frames_->submit({&wait, 1}, {&signal, 1});
+  if (!swapchain_->present(*image)) ready_ = false;
+  frame_ms_.push_back(
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  return FrameResult::rendered;
+}
+
+}  // namespace sg::sandbox

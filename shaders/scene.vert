@@ -1,0 +1,19 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "scene_interface.glsl"
+
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
+
+layout(location = 0) out vec3 out_world_position;
+layout(location = 1) out vec3 out_normal;
+layout(location = 2) flat out uint out_instance;
+
+void main() {
+  Instance inst = instances[gl_InstanceIndex];
+  vec4 world = inst.model * vec4(in_position, 1.0);
+  out_world_position = world.xyz;
+  out_normal = mat3(inst.normal_matrix) * in_normal;
+  out_instance = gl_InstanceIndex;
+  gl_Position = frame.view_projection * world;
+}

@@ -1,0 +1,17 @@
+// Data the scene pass reads; must match systems/scene_gpu_types.h (the C++ side).
+
+struct Instance {
+  mat4 model;
+  mat4 normal_matrix;       // inverse transpose of the model matrix
+  vec4 base_color_specular; // rgb: base colour, a: specular strength kS
+  vec4 material;            // x: Blinn shininess s
+};
+
+layout(std430, set = 0, binding = 0) readonly buffer Instances { Instance instances[]; };
+
+layout(push_constant) uniform FrameConstants {
+  mat4 view_projection;
+  vec4 camera_position;  // xyz
+  vec4 sun_direction;    // xyz: the way the light travels, w: intensity
+  vec4 sun_color;        // rgb: colour, a: ambient term kA * IA
+} frame;

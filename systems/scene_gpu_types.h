@@ -1,0 +1,24 @@
+#pragma once
+// C++ mirrors of shaders/scene_interface.glsl. std430/push-constant layout: vec4-aligned
+// members only, so the C++ layout matches without padding rules to remember.
+#include <glm/glm.hpp>
+
+namespace sg {
+
+struct GpuInstance {
+  glm::mat4 model;
+  glm::mat4 normal_matrix;
+  glm::vec4 base_color_specular;
+  glm::vec4 material;  // x: shininess
+};
+static_assert(sizeof(GpuInstance) == 160);
+
+struct FrameConstants {
+  glm::mat4 view_projection;
+  glm::vec4 camera_position;
+  glm::vec4 sun_direction;  // w: intensity
+  glm::vec4 sun_color;      // a: ambient
+};
+static_assert(sizeof(FrameConstants) <= 128, "Vulkan guarantees only 128 bytes of push constants");
+
+}  // namespace sg
