@@ -28,8 +28,7 @@ std::vector<Entity> sorted(std::vector<Entity> entities) {
 TEST(ChangeDetection, AddMarksChangedAtCurrentTick) {
   World world;
   world.advance_tick();
-  const Entity entity = world.create();
-  world.add<Position>(entity);
+  const Entity entity = test::spawn_still(world);
   EXPECT_EQ(world.change_tick<Position>(entity), world.tick());
   EXPECT_EQ(changed_positions(world, world.tick() - 1), std::vector<Entity>{entity});
   EXPECT_TRUE(changed_positions(world, world.tick()).empty());
@@ -37,10 +36,9 @@ TEST(ChangeDetection, AddMarksChangedAtCurrentTick) {
 
 TEST(ChangeDetection, TicksAcrossFrames) {
   World world;
-  const Entity a = world.create();
-  const Entity b = world.create();
-  const Entity c = world.create();
-  for (const Entity entity : {a, b, c}) world.add<Position>(entity);
+  const Entity a = test::spawn_still(world);
+  const Entity b = test::spawn_still(world);
+  const Entity c = test::spawn_still(world);
   const Tick frame1 = world.tick();
 
   world.advance_tick();
@@ -61,8 +59,7 @@ TEST(ChangeDetection, TicksAcrossFrames) {
 
 TEST(ChangeDetection, RewrittenEntityIsReportedOnceAtItsNewestTick) {
   World world;
-  const Entity entity = world.create();
-  world.add<Position>(entity);
+  const Entity entity = test::spawn_still(world);
   const Tick added = world.tick();
   world.advance_tick();
   world.get_mut<Position>(entity);
@@ -73,11 +70,8 @@ TEST(ChangeDetection, RewrittenEntityIsReportedOnceAtItsNewestTick) {
 
 TEST(ChangeDetection, MutableQueryMarksEveryVisitedEntity) {
   World world;
-  const Entity moving = world.create();
-  world.add<Position>(moving);
-  world.add<Velocity>(moving);
-  const Entity still = world.create();
-  world.add<Position>(still);
+  const Entity moving = test::spawn_moving(world);
+  test::spawn_still(world);
   const Tick before = world.tick();
   world.advance_tick();
   world.query<Position, const Velocity>().for_each([](Position&, const Velocity&) {});
@@ -86,11 +80,8 @@ TEST(ChangeDetection, MutableQueryMarksEveryVisitedEntity) {
 
 TEST(ChangeDetection, ChangedQueryCombinesWithOtherComponents) {
   World world;
-  const Entity with_velocity = world.create();
-  world.add<Position>(with_velocity);
-  world.add<Velocity>(with_velocity, 3.0f, 0.0f);
-  const Entity without_velocity = world.create();
-  world.add<Position>(without_velocity);
+  const Entity with_velocity = test::spawn_moving(world, {3.0f, 0.0f});
+  const Entity without_velocity = test::spawn_still(world);
   const Tick before = world.tick();
   world.advance_tick();
   world.get_mut<Position>(with_velocity);
@@ -104,16 +95,14 @@ TEST(ChangeDetection, ChangedQueryCombinesWithOtherComponents) {
 
 TEST(ChangeDetection, RemovedComponentIsNotReportedChanged) {
   World world;
-  const Entity entity = world.create();
-  world.add<Position>(entity);
+  const Entity entity = test::spawn_still(world);
   world.remove<Position>(entity);
   EXPECT_TRUE(changed_positions(world, 0).empty());
 }
 
 TEST(ChangeDetection, ReAddedInSameTickIsReportedOnce) {
   World world;
-  const Entity entity = world.create();
-  world.add<Position>(entity);
+  const Entity entity = test::spawn_still(world);
   world.remove<Position>(entity);
   world.add<Position>(entity);
   EXPECT_EQ(changed_positions(world, 0), std::vector<Entity>{entity});
@@ -121,13 +110,9 @@ TEST(ChangeDetection, ReAddedInSameTickIsReportedOnce) {
 
 TEST(ChangeDetection, RemovalsAndDestructionAreRecordedPerComponentType) {
   World world;
-  const Entity removed = world.create();
-  const Entity destroyed = world.create();
-  const Entity kept = world.create();
-  for (const Entity entity : {removed, destroyed, kept}) {
-    world.add<Position>(entity);
-    world.add<Velocity>(entity);
-  }
+  const Entity removed = test::spawn_moving(world);
+  const Entity destroyed = test::spawn_moving(world);
+  test::spawn_moving(world);
   const Tick before = world.tick();
   world.advance_tick();
   world.remove<Position>(removed);
@@ -152,8 +137,7 @@ TEST(ChangeDetection, HistoryStaysCorrectAcrossManyFramesOfFullRewrites) {
   World world;
   std::vector<Entity> entities;
   for (int i = 0; i < 3000; ++i) {
-    entities.push_back(world.create());
-    world.add<Position>(entities.back());
+    entities.push_back(test::spawn_still(world));
   }
   Tick before_last_frame = 0;
   for (int frame = 0; frame < 10; ++frame) {
@@ -172,8 +156,7 @@ TEST(ChangeDetection, FullUpdateFollowedBySparseWritesAndAdds) {
   World world;
   std::vector<Entity> entities;
   for (int i = 0; i < 5; ++i) {
-    entities.push_back(world.create());
-    world.add<Position>(entities.back());
+    entities.push_back(test::spawn_still(world));
   }
   const Tick before_full = world.tick();
   world.advance_tick();
@@ -182,8 +165,7 @@ TEST(ChangeDetection, FullUpdateFollowedBySparseWritesAndAdds) {
   world.get_mut<Position>(entities[1]);  // also written individually in the same tick
   world.advance_tick();
   world.get_mut<Position>(entities[3]);
-  const Entity added = world.create();
-  world.add<Position>(added);
+  const Entity added = test::spawn_still(world);
 
   EXPECT_EQ(changed_positions(world, before_full).size(), 6u);
   EXPECT_EQ(sorted(changed_positions(world, full)), (std::vector<Entity>{entities[3], added}));
@@ -194,10 +176,8 @@ TEST(ChangeDetection, FullUpdateFollowedBySparseWritesAndAdds) {
 
 TEST(ChangeDetection, WritesInsideChangedQueryDoNotRepeatOrHideEntities) {
   World world;
-  const Entity a = world.create();
-  const Entity b = world.create();
-  world.add<Position>(a);
-  world.add<Position>(b);
+  const Entity a = test::spawn_still(world);
+  const Entity b = test::spawn_still(world);
   const Tick before = world.tick();
   world.advance_tick();
   world.get_mut<Position>(a);

@@ -15,11 +15,8 @@ using test::Velocity;
 
 TEST(Query, VisitsOnlyEntitiesWithAllComponents) {
   World world;
-  const Entity moving = world.create();
-  world.add<Position>(moving);
-  world.add<Velocity>(moving, 1.0f, 2.0f);
-  const Entity still = world.create();
-  world.add<Position>(still);
+  const Entity moving = test::spawn_moving(world, {1.0f, 2.0f});
+  const Entity still = test::spawn_still(world);
   const Entity ghost = world.create();
   world.add<Velocity>(ghost);
 
@@ -51,11 +48,9 @@ TEST(Query, WorksWhenPoolsHaveDifferentOrders) {
 
 TEST(Query, ExcludesEntitiesWithExcludedComponent) {
   World world;
-  const Entity frozen = world.create();
-  world.add<Position>(frozen);
+  const Entity frozen = test::spawn_still(world);
   world.add<Frozen>(frozen);
-  const Entity free = world.create();
-  world.add<Position>(free);
+  const Entity free = test::spawn_still(world);
 
   std::vector<Entity> visited;
   world.query<const Position>().without<Frozen>().for_each(
@@ -70,9 +65,7 @@ TEST(Query, CountOfEmptyWorldIsZero) {
 
 TEST(Query, ReadOnlyAccessDoesNotMarkChanged) {
   World world;
-  const Entity entity = world.create();
-  world.add<Position>(entity);
-  world.add<Velocity>(entity);
+  const Entity entity = test::spawn_moving(world);
   const Tick added = world.tick();
   world.advance_tick();
   world.query<Position, const Velocity>().for_each([](Position&, const Velocity&) {});
@@ -102,11 +95,8 @@ TEST(Query, StaysCorrectWhenAlignedPoolsLoseTheirAlignment) {
 
 TEST(Query, ExclusionAppliesToAlignedPools) {
   World world;
-  const Entity a = world.create();
-  const Entity b = world.create();
-  world.add<Position>(a);
-  world.add<Position>(b);
-  world.add<Frozen>(b);
+  test::spawn_still(world);
+  world.add<Frozen>(test::spawn_still(world));
   EXPECT_EQ(world.query<const Position>().without<Frozen>().count(), 1u);
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 
-// Small components shared by the ECS tests.
+#include "ecs/world.h"
+
+// Small components and spawners shared by the ECS tests.
 namespace sg::ecs::test {
 
 struct Position {
@@ -14,5 +16,17 @@ struct Velocity {
 };
 
 struct Frozen {};
+
+inline Entity spawn_still(World& world) {
+  const Entity entity = world.create();
+  world.add<Position>(entity);
+  return entity;
+}
+
+inline Entity spawn_moving(World& world, Velocity velocity = {}) {
+  const Entity entity = spawn_still(world);
+  world.add<Velocity>(entity, velocity);
+  return entity;
+}
 
 }  // namespace sg::ecs::test

@@ -76,10 +76,7 @@ TEST(World, StaleHandleIsDetected) {
 
 TEST(World, DestroyRemovesEveryComponent) {
   World world;
-  const Entity entity = world.create();
-  world.add<Position>(entity);
-  world.add<Velocity>(entity);
-  world.destroy(entity);
+  world.destroy(test::spawn_moving(world));
   EXPECT_EQ(world.entity_count(), 0u);
   EXPECT_EQ(world.query<const Position>().count(), 0u);
   EXPECT_EQ(world.query<const Velocity>().count(), 0u);
@@ -87,8 +84,7 @@ TEST(World, DestroyRemovesEveryComponent) {
 
 TEST(World, GetMutWritesThrough) {
   World world;
-  const Entity entity = world.create();
-  world.add<Position>(entity);
+  const Entity entity = test::spawn_still(world);
   world.get_mut<Position>(entity).x = 5.0f;
   EXPECT_EQ(world.get<Position>(entity).x, 5.0f);
 }
