@@ -7,6 +7,10 @@
 #include <cstring>
 #include <string_view>
 
+#ifdef SHADOWGRAPH_SANITIZE
+#include <dlfcn.h>
+#endif
+
 #include "rendergraph/vulkan/device_features.h"
 #include "rendergraph/vulkan/vulkan_error.h"
 
@@ -108,6 +112,20 @@ std::vector<std::string> disqualifications(VkPhysicalDevice device, bool present
   return reasons;
 }
 
+// The loader unloads the driver and layers at vkDestroyInstance; LeakSanitizer then cannot
+// name the library behind their one-time allocations, so tests/lsan.supp cannot silence them.
+// Pinning lavapipe and the validation layer keeps them named. Sanitizer builds only.
+void keep_cpu_driver_and_layer_loaded() {
+#ifdef SHADOWGRAPH_SANITIZE
+  static const bool pinned = [] {
+    dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NODELETE);
+    dlopen("libVkLayer_khronos_validation.so", RTLD_NOW | RTLD_NODELETE);
+    return true;
+  }();
+  (void)pinned;
+#endif
+}
+
 }  // namespace
 
 bool validation_requested_by_environment() {
@@ -130,6 +148,7 @@ std::vector<PhysicalDeviceInfo> list_physical_devices(VkInstance instance) {
 }
 
 VulkanContext::VulkanContext(const ContextOptions& options) {
+  keep_cpu_driver_and_layer_loaded();
   try {
     create_instance(options);
     create_device(options);
