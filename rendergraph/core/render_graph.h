@@ -1,0 +1,146 @@
+#pragma once
+
+// Building a frame graph: import the resources that outlive the frame, then add passes. Each pass
+// declares what it reads and writes in a setup function that runs immediately, and records its
+// commands later in an execute function:
+//
+//   ImageHandle depth{};
+//   graph.add_pass("depth prepass", QueueType::graphics,
+//       [&](PassBuilder& b) {
+//         depth = b.create_image("depth", {1920, 1080, Format::d32_sfloat});
+//         depth = b.write(depth, Usage::depth_attachment);
+//       },
+//       [=](PassContext& ctx) { draw_depth(ctx.get<VulkanRecorder>()); });
+//
+// Mistakes (stale versions, conflicting usages, bad ranges...) are recorded where they are made
+// and reported together by compile(); a graph with errors does not compile.
+
+#include <concepts>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rendergraph/core/graph_error.h"
+#include "rendergraph/core/pass_context.h"
+#include "rendergraph/core/resource_types.h"
+#include "rendergraph/core/usage.h"
+
+namespace sg::rg {
+
+using ExecuteFn = std::function<void(PassContext&)>;
+
+// One declared use of a resource by a pass. `version` is the version read, or for a write the
+// version it produces (the write consumes version - 1). `range` is resolved (no `remaining`).
+struct ResourceAccess {
+  std::uint32_t resource = invalid_index;
+  std::uint32_t version = 0;
+  Usage usage = Usage::sampled_fragment;
+  Direction direction = Direction::read;
+  SubresourceRange range;
+  ResourceState state;
+};
+
+struct PassDeclaration {
+  std::string name;
+  QueueType queue = QueueType::graphics;
+  bool side_effects = false;
+  std::vector<ResourceAccess> accesses;
+  ExecuteFn execute;
+};
+
+struct ResourceDeclaration {
+  std::string name;
+  ResourceKind kind = ResourceKind::image;
+  ImageDesc image;    // images only
+  BufferDesc buffer;  // buffers only
+  bool imported = false;
+  std::vector<RangeState> initial_states;    // imported only; resolved ranges
+  std::optional<ResourceState> final_state;  // imported only
+  // producers[v] is the pass that wrote version v; version 0 has none (invalid_index).
+  std::vector<std::uint32_t> producers{invalid_index};
+
+  std::uint32_t mip_count() const { return kind == ResourceKind::image ? image.mips : 1; }
+  std::uint32_t layer_count() const { return kind == ResourceKind::image ? image.layers : 1; }
+  SubresourceRange whole() const { return {0, mip_count(), 0, layer_count()}; }
+};
+
+class RenderGraph;
+
+// The setup function's view of its pass: every call adds one declaration to that pass.
+class PassBuilder {
+ public:
+  // A transient resource, owned by the graph for this frame; its first write creates it.
+  [[nodiscard]] ImageHandle create_image(std::string name, const ImageDesc& desc);
+  [[nodiscard]] BufferHandle create_buffer(std::string name, const BufferDesc& desc);
+
+  void read(ImageHandle image, Usage usage, SubresourceRange range = SubresourceRange::all());
+  void read(BufferHandle buffer, Usage usage);
+  // Returns the version this pass produces; later passes must use it instead of `image`.
+  [[nodiscard]] ImageHandle write(ImageHandle image, Usage usage,
+                                  SubresourceRange range = SubresourceRange::all());
+  [[nodiscard]] BufferHandle write(BufferHandle buffer, Usage usage);
+
+  // The pass is kept even if nothing reads what it writes (readbacks, debug output).
+  void mark_side_effects();
+
+ private:
+  friend class RenderGraph;
+  PassBuilder(RenderGraph& graph, std::uint32_t pass) : graph_(graph), pass_(pass) {}
+
+  // Validates and records one access; returns the version read or produced, or nullopt when the
+  // declaration was rejected (the error is recorded on the graph).
+  std::optional<std::uint32_t> declare(std::uint32_t resource, std::uint32_t version,
+                                       ResourceKind kind, Usage usage, Direction direction,
+                                       const SubresourceRange& range);
+
+  RenderGraph& graph_;
+  std::uint32_t pass_;
+};
+
+class RenderGraph {
+ public:
+  // An image that outlives the frame (swapchain image, shadow atlas, cube-map array, history).
+  // `initial_states` says how each range was last used (ranges not listed start undefined); a
+  // graph that writes the image must give `final_state`, the state every subresource is left in.
+  ImageHandle import_image(std::string name, const ImageDesc& desc,
+                           std::vector<RangeState> initial_states,
+                           std::optional<ResourceState> final_state = std::nullopt);
+  ImageHandle import_image(std::string name, const ImageDesc& desc, ResourceState initial_state,
+                           std::optional<ResourceState> final_state = std::nullopt);
+  BufferHandle import_buffer(std::string name, const BufferDesc& desc, ResourceState initial_state,
+                             std::optional<ResourceState> final_state = std::nullopt);
+
+  // Runs `setup` now to collect the pass's declarations; `execute` runs when the executor records
+  // the pass. Returns the pass's declaration index.
+  template <std::invocable<PassBuilder&> Setup>
+  std::uint32_t add_pass(std::string name, QueueType queue, Setup&& setup, ExecuteFn execute = {}) {
+    PassBuilder builder = begin_pass(std::move(name), queue, std::move(execute));
+    std::forward<Setup>(setup)(builder);
+    return builder.pass_;
+  }
+
+  std::span<const PassDeclaration> passes() const { return passes_; }
+  std::span<const ResourceDeclaration> resources() const { return resources_; }
+  std::span<const GraphError> errors() const { return errors_; }
+
+ private:
+  friend class PassBuilder;
+
+  PassBuilder begin_pass(std::string name, QueueType queue, ExecuteFn execute);
+  std::uint32_t add_resource(std::string name, ResourceKind kind);
+  void report(ErrorKind kind, std::string message);
+
+  std::vector<PassDeclaration> passes_;
+  std::vector<ResourceDeclaration> resources_;
+  std::vector<GraphError> errors_;
+};
+
+// `range` with `remaining` counts replaced, or nullopt when it does not fit in the resource.
+std::optional<SubresourceRange> resolve(const SubresourceRange& range,
+                                        const ResourceDeclaration& resource);
+
+}  // namespace sg::rg
