@@ -12,6 +12,17 @@ std::string span_text(std::string_view one, std::string_view many, std::uint32_t
 
 }  // namespace
 
+std::string_view queue_name(QueueType queue) {
+  switch (queue) {
+    case QueueType::graphics: return "graphics";
+    case QueueType::compute: return "compute";
+    case QueueType::transfer: return "transfer";
+  }
+  return "unknown";
+}
+
+std::string_view kind_name(ResourceKind kind) { return kind == ResourceKind::image ? "image" : "buffer"; }
+
 std::string to_string(const SubresourceRange& range) {
   return span_text("mip", "mips", range.base_mip, range.mip_count) + ", " +
          span_text("layer", "layers", range.base_layer, range.layer_count);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <string_view>
 
 #include "rendergraph/core/flags.h"
 #include "rendergraph/core/format.h"
@@ -17,6 +18,9 @@ enum class ResourceKind : std::uint8_t { image, buffer };
 // The queue family a pass is recorded for. The plan orders all passes on one timeline; the
 // executor adds semaphores where consecutive passes change queue.
 enum class QueueType : std::uint8_t { graphics, compute, transfer };
+
+std::string_view queue_name(QueueType queue);
+std::string_view kind_name(ResourceKind kind);
 
 // "Up to the last one", like VK_REMAINING_MIP_LEVELS / VK_REMAINING_ARRAY_LAYERS.
 inline constexpr std::uint32_t remaining = std::numeric_limits<std::uint32_t>::max();
