@@ -115,7 +115,7 @@ class RenderGraph {
                              std::optional<ResourceState> final_state = std::nullopt);
 
   // Runs `setup` now to collect the pass's declarations; `execute` runs when the executor records
-  // the pass. Returns the pass's declaration index.
+  // the pass (an empty one records nothing). Returns the pass's declaration index.
   template <std::invocable<PassBuilder&> Setup>
   std::uint32_t add_pass(std::string name, QueueType queue, Setup&& setup, ExecuteFn execute = {}) {
     PassBuilder builder = begin_pass(std::move(name), queue, std::move(execute));
