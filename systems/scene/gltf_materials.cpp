@@ -1,0 +1,54 @@
+#include "systems/scene/gltf_materials.h"
+
+#include <string>
+
+#include "systems/scene/gltf_json.h"
+
+namespace sg::scene {
+
+void import_textures(const tinygltf::Model& model, Scene& scene) {
+  for (std::size_t i = 0; i < model.images.size(); ++i) {
+    const tinygltf::Image& image = model.images[i];
+    Texture texture;
+    texture.name = image.name.empty() ? image.uri : image.name;
+    // decode_rgba8 (gltf_model.cpp) produced every decoded image; an empty one was not decoded.
+    if (!image.image.empty()) {
+      texture.width = static_cast<std::uint32_t>(image.width);
+      texture.height = static_cast<std::uint32_t>(image.height);
+      texture.pixels = image.image;
+    }
+    scene.textures.textures.push_back(std::move(texture));
+  }
+}
+
+std::vector<Material> import_materials(const tinygltf::Model& model, Scene& scene) {
+  std::vector<Material> materials;
+  materials.reserve(model.materials.size());
+  for (std::size_t m = 0; m < model.materials.size(); ++m) {
+    const auto& pbr = model.materials[m].pbrMetallicRoughness;
+    const std::string object = indexed("materials", m);
+    Material material;
+    if (pbr.baseColorFactor.size() == 4) {
+      const glm::vec4 factor{pbr.baseColorFactor[0], pbr.baseColorFactor[1],
+                             pbr.baseColorFactor[2], pbr.baseColorFactor[3]};
+      material.base_color = glm::clamp(factor, 0.0f, 1.0f);
+      if (material.base_color != factor) warn(scene, object + ": baseColorFactor outside [0, 1]; clamped");
+    }
+    if (pbr.baseColorTexture.index >= 0) {
+      const int image = model.textures[static_cast<std::size_t>(pbr.baseColorTexture.index)].source;
+      if (image >= 0 && !scene.textures.textures[static_cast<std::size_t>(image)].pixels.empty()) {
+        material.base_color_texture = static_cast<std::uint32_t>(image);
+      } else {
+        warn(scene, object + ": base colour texture has no decoded image; ignored");
+      }
+      if (pbr.baseColorTexture.texCoord != 0) {
+        warn(scene, object + ": base colour texture uses TEXCOORD_" +
+                        std::to_string(pbr.baseColorTexture.texCoord) + "; TEXCOORD_0 used instead");
+      }
+    }
+    materials.push_back(material);
+  }
+  return materials;
+}
+
+}  // namespace sg::scene

@@ -1,0 +1,94 @@
+#include "systems/scene/gltf_shadow_extras.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace sg::scene {
+namespace {
+
+struct ExtrasReader {
+  const nlohmann::json& extras;
+  std::string object;
+  Scene& scene;
+
+  void report(const char* key, const std::string& problem) {
+    warn(scene, object + ": extras." + key + " " + problem);
+  }
+
+  // The number under `key` clamped to [low, high]; nullopt (default kept) when absent or not a
+  // finite number.
+  std::optional<float> number(const char* key, float low, float high) {
+    const auto found = extras.find(key);
+    if (found == extras.end()) return std::nullopt;
+    if (!found->is_number() || !std::isfinite(found->get<double>())) {
+      report(key, "is not a finite number; using the default");
+      return std::nullopt;
+    }
+    const double value = found->get<double>();
+    const double clamped = std::clamp(value, double{low}, double{high});
+    if (clamped != value) {
+      report(key, std::to_string(value) + " is outside [" + std::to_string(low) + ", " +
+                      std::to_string(high) + "]; clamped");
+    }
+    return static_cast<float>(clamped);
+  }
+
+  void read(const char* key, float& target, float low, float high) {
+    if (const auto value = number(key, low, high)) target = *value;
+  }
+};
+
+}  // namespace
+
+ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object,
+                                  Scene& scene) {
+  ShadowSettings settings;
+  if (!extras.is_object()) return settings;
+  ExtrasReader reader{extras, object, scene};
+  constexpr float unbounded = 1e30f;
+  reader.read("bias", settings.constant_bias, 0.0f, unbounded);
+  reader.read("slope_bias", settings.slope_bias, 0.0f, unbounded);
+  reader.read("pcf_radius", settings.pcf_radius, 0.0f, 32.0f);
+  reader.read("light_size", settings.light_size, 0.0f, unbounded);
+  reader.read("density", settings.density, 0.0f, 1.0f);
+  if (const auto resolution = reader.number("resolution", 16.0f, 16384.0f)) {
+    settings.resolution = static_cast<std::uint32_t>(std::lround(*resolution));
+  }
+  if (const auto found = extras.find("algorithm"); found != extras.end()) {
+    const auto parsed = found->is_string() ? parse_shadow_algorithm(found->get<std::string>())
+                                           : std::nullopt;
+    if (parsed) {
+      settings.algorithm = *parsed;
+    } else {
+      reader.report("algorithm", found->dump() +
+                                     " is not one of hard, pcf, noise, pcss, pcss_noise; using " +
+                                     std::string(to_string(settings.algorithm)));
+    }
+  }
+  if (const auto found = extras.find("casts_shadow"); found != extras.end()) {
+    if (found->is_boolean()) {
+      settings.casts_shadow = found->get<bool>();
+    } else {
+      reader.report("casts_shadow", "is not true or false; using true");
+    }
+  }
+  if (const auto found = extras.find("shadow_color"); found != extras.end()) {
+    const bool valid = found->is_array() && found->size() == 3 &&
+                       std::all_of(found->begin(), found->end(), [](const nlohmann::json& c) {
+                         return c.is_number() && std::isfinite(c.get<double>());
+                       });
+    if (!valid) {
+      reader.report("shadow_color", "is not an array of 3 finite numbers; using black");
+    } else {
+      for (int c = 0; c < 3; ++c) {
+        const float value = (*found)[c].get<float>();
+        settings.shadow_color[c] = std::clamp(value, 0.0f, 1.0f);
+        if (settings.shadow_color[c] != value) reader.report("shadow_color", "component outside [0, 1]; clamped");
+      }
+    }
+  }
+  return settings;
+}
+
+}  // namespace sg::scene

@@ -1,0 +1,14 @@
+#pragma once
+// One drawable: a mesh of the scene's MeshLibrary placed by the entity's WorldTransform. The
+// entity also carries a Material. Imported glTF primitives become one such entity each, a child
+// of their node's entity.
+#include <cstdint>
+
+namespace sg::scene {
+
+struct MeshInstance {
+  std::uint32_t mesh = 0;    // index into MeshLibrary::meshes
+  bool casts_shadow = true;  // false: drawn in the lighting pass only, never into shadow maps
+};
+
+}  // namespace sg::scene
