@@ -109,9 +109,11 @@ GltfSource read_gltf_source(const std::string& path) {
   } else {
     source.json_text = source.bytes;
   }
-  source.document = nlohmann::json::parse(source.json_text.begin(), source.json_text.end(),
-                                          nullptr, /*allow_exceptions=*/false);
-  if (source.document.is_discarded()) throw SceneError(path, "JSON", "does not parse");
+  try {
+    source.document = nlohmann::json::parse(source.json_text.begin(), source.json_text.end());
+  } catch (const nlohmann::json::exception& error) {
+    throw SceneError(path, "JSON", std::string("does not parse: ") + error.what());
+  }
   if (!source.document.is_object()) throw SceneError(path, "JSON", "the root is not an object");
   return source;
 }

@@ -23,7 +23,8 @@ struct GltfSource {
 };
 
 // Reads and frames the file. Throws SceneError for a missing, unreadable or oversized file, a
-// truncated or malformed .glb header or chunk, or JSON that does not parse to an object.
+// truncated or malformed .glb header or chunk, or JSON that does not parse to an object
+// (including numbers that overflow to infinity).
 GltfSource read_gltf_source(const std::string& path);
 
 // The size of a regular file, or throws SceneError(`where`, `object`, ...) when it is missing,

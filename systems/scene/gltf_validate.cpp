@@ -1,6 +1,5 @@
 #include "systems/scene/gltf_validate.h"
 
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -15,13 +14,6 @@ bool is_unsigned_index_type(int component_type) {
   return component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
          component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
          component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-}
-
-bool all_finite(const std::vector<double>& values) {
-  for (const double value : values) {
-    if (!std::isfinite(value)) return false;
-  }
-  return true;
 }
 
 struct Validator {
@@ -137,10 +129,6 @@ struct Validator {
   }
 
   void node_transform(const tinygltf::Node& node, const std::string& object) const {
-    if (!all_finite(node.matrix) || !all_finite(node.translation) || !all_finite(node.rotation) ||
-        !all_finite(node.scale)) {
-      fail(object, "transform has a non-finite number");
-    }
     if ((!node.matrix.empty() && node.matrix.size() != 16) ||
         (!node.translation.empty() && node.translation.size() != 3) ||
         (!node.rotation.empty() && node.rotation.size() != 4) ||
@@ -185,7 +173,6 @@ struct Validator {
     if (camera.type != "perspective") return;  // orthographic: skipped with a warning on import
     const tinygltf::PerspectiveCamera& p = camera.perspective;
     const std::string object = indexed("cameras", index);
-    if (!all_finite({p.yfov, p.znear, p.zfar, p.aspectRatio})) fail(object, "non-finite number");
     if (p.yfov <= 0.0 || p.znear <= 0.0 || p.aspectRatio < 0.0 || (p.zfar != 0.0 && p.zfar <= p.znear)) {
       fail(object, "needs yfov > 0, znear > 0, zfar > znear (or absent) and aspectRatio > 0 "
                    "(or absent)");
@@ -209,9 +196,6 @@ struct Validator {
       const int texture = model.materials[m].pbrMetallicRoughness.baseColorTexture.index;
       if (texture >= 0) {
         require_index(texture, model.textures, indexed("materials", m), "baseColorTexture", "textures");
-      }
-      if (!all_finite(model.materials[m].pbrMetallicRoughness.baseColorFactor)) {
-        fail(indexed("materials", m), "baseColorFactor has a non-finite number");
       }
     }
     for (std::size_t t = 0; t < model.textures.size(); ++t) {

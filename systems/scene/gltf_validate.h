@@ -8,9 +8,11 @@
 // - meshes: attribute and index accessors exist, attributes of a primitive agree in count,
 //   POSITION/NORMAL are VEC3 and TEXCOORD_0 VEC2, indices are scalar unsigned integers;
 // - nodes: mesh, camera, skin and children exist; each node has at most one parent; no cycles;
-//   no deeper than gltf_limits::max_node_depth; finite transforms;
+//   no deeper than gltf_limits::max_node_depth; transform arrays of the right length;
 // - scenes reference existing nodes; materials existing textures; textures existing images;
-// - perspective cameras: yfov > 0, znear > 0, zfar > znear when given, all finite.
+// - perspective cameras: yfov > 0, znear > 0, zfar > znear when given.
+// Numbers in the JSON are finite by construction: JSON has no NaN or infinity, and an
+// overflowing literal such as 1e999 is a parse error (gltf_source.h).
 // Index values against vertex counts and finite vertex data are checked while reading
 // (gltf_meshes.h), since that needs the data itself.
 #include <string>

@@ -1,0 +1,76 @@
+// Real files made by others (../shared/assets), when present; skipped cleanly when absent.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "systems/scene/gltf_import.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/material.h"
+#include "systems/scene/scene_queries.h"
+
+namespace sg::scene {
+namespace {
+
+// The asset's path, or empty when the shared folder is not there.
+std::string shared_asset(const std::string& relative) {
+  const std::filesystem::path path = std::filesystem::path(SHADOWGRAPH_SHARED_ASSETS) / relative;
+  return std::filesystem::exists(path) ? path.string() : std::string();
+}
+
+#define LOAD_SHARED_OR_SKIP(variable, relative)                                  \
+  const std::string variable##_path = shared_asset(relative);                    \
+  if (variable##_path.empty()) GTEST_SKIP() << "shared asset absent: " << relative; \
+  Scene variable = load_gltf(variable##_path)
+
+TEST(SharedAssets, ShadowsSpotHasOneSpotLightWithTheFilesRangeAndCones) {
+  LOAD_SHARED_OR_SKIP(scene, "ShadowsSpot/shadows-spot.gltf");
+  const SceneStats stats = scene_stats(scene);
+  EXPECT_EQ(stats.spot_lights, 1u);
+  EXPECT_EQ(stats.point_lights + stats.directional_lights, 0u);
+  EXPECT_GT(stats.triangles, 1000u);
+  scene.world.query<const SpotLight, const ecs::WorldTransform>().for_each(
+      [](const SpotLight& spot, const ecs::WorldTransform& world) {
+        EXPECT_FLOAT_EQ(spot.range, 25.0f);
+        EXPECT_NEAR(spot.inner_cone, 0.353f, 1e-3f);
+        EXPECT_NEAR(spot.outer_cone, 0.393f, 1e-3f);
+        EXPECT_EQ(spot.falloff, FalloffMode::gltf_punctual);
+        EXPECT_LT(light_direction(world).y, -0.5f);  // the file's light looks down
+      });
+}
+
+TEST(SharedAssets, ShadowsDirectionalHasOneDirectionalLight) {
+  LOAD_SHARED_OR_SKIP(scene, "ShadowsDirectional/shadows-directional.gltf");
+  const SceneStats stats = scene_stats(scene);
+  EXPECT_EQ(stats.directional_lights, 1u);
+  EXPECT_EQ(stats.point_lights + stats.spot_lights, 0u);
+  EXPECT_EQ(stats.shadow_casting_lights, 1u);
+  EXPECT_GT(stats.triangles, 1000u);
+}
+
+TEST(SharedAssets, FoxLoadsNonIndexedSkinnedInBindPose) {
+  LOAD_SHARED_OR_SKIP(scene, "Fox/Fox.glb");
+  EXPECT_EQ(scene_stats(scene).triangles, 576u);
+  EXPECT_FALSE(scene_bounds(scene).empty());
+  bool bind_pose_warning = false;
+  for (const std::string& warning : scene.warnings) {
+    bind_pose_warning = bind_pose_warning || warning.find("bind pose") != std::string::npos;
+  }
+  EXPECT_TRUE(bind_pose_warning);
+}
+
+TEST(SharedAssets, BoxTexturedLoadsItsExternalBufferAndPng) {
+  LOAD_SHARED_OR_SKIP(scene, "BoxTextured/BoxTextured.gltf");
+  EXPECT_EQ(scene_stats(scene).triangles, 12u);
+  ASSERT_EQ(scene.textures.textures.size(), 1u);
+  const Texture& texture = scene.textures.textures[0];
+  EXPECT_GT(texture.width, 0u);
+  EXPECT_EQ(texture.pixels.size(), std::size_t{texture.width} * texture.height * 4);
+  bool textured = false;
+  scene.world.query<const Material>().for_each(
+      [&](const Material& material) { textured = textured || material.base_color_texture == 0; });
+  EXPECT_TRUE(textured);
+}
+
+}  // namespace
+}  // namespace sg::scene
