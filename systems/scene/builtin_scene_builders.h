@@ -1,0 +1,10 @@
+#pragma once
+// The builders behind build_scene (builtin_scenes.h), one file each.
+#include "systems/scene/builtin_scenes.h"
+
+namespace sg::scene {
+
+Scene build_default_scene();
+Scene build_stress_scene(const BuiltinSceneParams& params);
+
+}  // namespace sg::scene

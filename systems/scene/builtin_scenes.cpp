@@ -1,0 +1,32 @@
+#include "systems/scene/builtin_scenes.h"
+
+#include <algorithm>
+#include <string>
+
+#include "ecs/transform_system.h"
+#include "systems/scene/builtin_scene_builders.h"
+#include "systems/scene/gltf_import.h"
+#include "systems/scene/scene_error.h"
+
+namespace sg::scene {
+
+Scene build_scene(std::string_view name, const BuiltinSceneParams& params) {
+  if (!(params.moving_fraction >= 0.0f && params.moving_fraction <= 1.0f)) {
+    throw SceneError("built-in scene", "moving_fraction",
+                     std::to_string(params.moving_fraction) + " is outside [0, 1]");
+  }
+  Scene scene = name == "default"  ? build_default_scene()
+                : name == "stress" ? build_stress_scene(params)
+                                   : throw SceneError("built-in scene", "\"" + std::string(name) + "\"",
+                                                      "unknown (known: default, stress)");
+  ecs::update_world_transforms(scene.world, 0);
+  return scene;
+}
+
+Scene load_scene(std::string_view name_or_path, const BuiltinSceneParams& params) {
+  const bool builtin = std::find(builtin_scene_names.begin(), builtin_scene_names.end(),
+                                 name_or_path) != builtin_scene_names.end();
+  return builtin ? build_scene(name_or_path, params) : load_gltf(std::string(name_or_path));
+}
+
+}  // namespace sg::scene

@@ -1,0 +1,56 @@
+#pragma once
+// Scenes that need no files, selected by name, and the one entry point for the sandbox's
+// --scene default|stress|PATH.
+//
+// "default": a 20 x 20 m room (floor top at y = 0, four walls 4 m high, no ceiling), four
+//   pillars and eight boxes, lit by a directional sun, two point lights, two spot lights and a
+//   cylinder light; every light casts a shadow and each of the five algorithms is used by at
+//   least one light. Fixed content (the seed is not used). Has a camera.
+// "stress": a hall of columns and furniture on a grid of 4 m cells, filled until the triangle
+//   count reaches `triangles`, with the requested point and spot lights (algorithms assigned in
+//   turn, so all five appear once there are five lights), a sun, and a camera framing the hall.
+//   `moving_fraction` of the lights and of the crates get an OrbitMotion (animate_stress_scene).
+//   Everything follows from `seed`: equal parameters give identical scenes.
+// Built-in lights use FalloffMode::linear_window.
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+#include <glm/glm.hpp>
+
+#include "ecs/world.h"
+#include "systems/scene/scene.h"
+
+namespace sg::scene {
+
+struct BuiltinSceneParams {
+  std::uint64_t triangles = 250'000;  // stress: target, met within one cell's furniture (~200)
+  std::uint32_t point_lights = 32;
+  std::uint32_t spot_lights = 32;
+  float moving_fraction = 0.1f;       // [0, 1] of lights and of crates
+  std::uint64_t seed = 1;
+};
+
+inline constexpr std::array<std::string_view, 2> builtin_scene_names = {"default", "stress"};
+
+// Throws SceneError for an unknown name (the message lists the known ones) or a
+// moving_fraction outside [0, 1]. World transforms are up to date on return.
+Scene build_scene(std::string_view name, const BuiltinSceneParams& params = {});
+
+// A built-in scene when `name_or_path` is one of builtin_scene_names, otherwise load_gltf.
+Scene load_scene(std::string_view name_or_path, const BuiltinSceneParams& params = {});
+
+// Stress-scene motion: the entity circles `center` in the horizontal plane.
+struct OrbitMotion {
+  glm::vec3 center{0.0f};
+  float radius = 1.0f;
+  float angular_speed = 1.0f;  // radians per second
+  float phase = 0.0f;          // radians at time 0
+};
+
+// Per-frame system: sets each OrbitMotion entity's LocalTransform translation for `time`
+// seconds (rotation untouched), marking LocalTransform changed so shadow caches see the move.
+// Run ecs::update_world_transforms afterwards.
+void animate_stress_scene(ecs::World& world, float time);
+
+}  // namespace sg::scene

@@ -1,0 +1,148 @@
+// Built-in scenes: content, parameters, determinism, animation.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <vector>
+
+#include "ecs/transform.h"
+#include "systems/scene/builtin_scenes.h"
+#include "systems/scene/camera.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/scene_error.h"
+#include "systems/scene/scene_queries.h"
+#include "systems/scene/shadow_settings.h"
+
+namespace sg::scene {
+namespace {
+
+BuiltinSceneParams small_stress(std::uint64_t seed = 7) {
+  BuiltinSceneParams params;
+  params.triangles = 6000;
+  params.point_lights = 6;
+  params.spot_lights = 4;
+  params.moving_fraction = 0.5f;
+  params.seed = seed;
+  return params;
+}
+
+std::vector<glm::mat4> world_matrices(Scene& scene) {
+  std::vector<glm::mat4> matrices;
+  scene.world.query<const ecs::WorldTransform>().for_each(
+      [&](const ecs::WorldTransform& world) { matrices.push_back(world.matrix); });
+  return matrices;
+}
+
+TEST(BuiltinScenes, DefaultRoomHasEveryLightKindEveryAlgorithmAndACamera) {
+  Scene scene = build_scene("default");
+  const SceneStats stats = scene_stats(scene);
+  EXPECT_GE(stats.point_lights, 2u);
+  EXPECT_GE(stats.spot_lights, 2u);
+  EXPECT_GE(stats.directional_lights, 1u);
+  EXPECT_EQ(stats.cylinder_lights, 1u);
+  const std::uint32_t lights =
+      stats.point_lights + stats.spot_lights + stats.directional_lights + stats.cylinder_lights;
+  EXPECT_EQ(stats.shadow_casting_lights, lights);
+  std::set<ShadowAlgorithm> used;
+  scene.world.query<const ShadowSettings>().for_each(
+      [&](const ShadowSettings& shadow) { used.insert(shadow.algorithm); });
+  EXPECT_EQ(used.size(), std::size(all_shadow_algorithms));
+  EXPECT_TRUE(first_camera(scene).has_value());
+  // The room: floor top at y = 0, walls 4 m high, about 20 m across.
+  const Aabb bounds = scene_bounds(scene);
+  EXPECT_NEAR(bounds.max.y, 4.0f, 1e-4f);
+  EXPECT_NEAR(bounds.min.y, -0.2f, 1e-4f);
+  EXPECT_GT(bounds.extent().x, 20.0f);
+  // Primitive meshes are shared: one box and one cylinder for the whole room.
+  EXPECT_EQ(scene.meshes.meshes.size(), 2u);
+  EXPECT_GT(stats.mesh_instances, 15u);
+}
+
+TEST(BuiltinScenes, StressMeetsTheTriangleTargetAndLightCounts) {
+  Scene scene = build_scene("stress", small_stress());
+  const SceneStats stats = scene_stats(scene);
+  EXPECT_GE(stats.triangles, 6000u);
+  EXPECT_LT(stats.triangles, 6000u + 300u);  // within one cell's furniture
+  EXPECT_EQ(stats.point_lights, 6u);
+  EXPECT_EQ(stats.spot_lights, 4u);
+  EXPECT_EQ(stats.directional_lights, 1u);
+  std::set<ShadowAlgorithm> used;
+  scene.world.query<const ShadowSettings>().for_each(
+      [&](const ShadowSettings& shadow) { used.insert(shadow.algorithm); });
+  EXPECT_EQ(used.size(), std::size(all_shadow_algorithms));
+  EXPECT_TRUE(first_camera(scene).has_value());
+}
+
+TEST(BuiltinScenes, StressScalesWithTheTarget) {
+  BuiltinSceneParams large = small_stress();
+  large.triangles = 60000;
+  Scene scene = build_scene("stress", large);
+  const std::uint64_t triangles = scene_stats(scene).triangles;
+  EXPECT_GE(triangles, 60000u);
+  EXPECT_LT(triangles, 60300u);
+}
+
+TEST(BuiltinScenes, StressIsDeterministicFromTheSeed) {
+  Scene first = build_scene("stress", small_stress(7));
+  Scene again = build_scene("stress", small_stress(7));
+  Scene other = build_scene("stress", small_stress(8));
+  EXPECT_EQ(world_matrices(first), world_matrices(again));
+  EXPECT_NE(world_matrices(first), world_matrices(other));
+}
+
+TEST(BuiltinScenes, MovingFractionSelectsLightsAndCrates) {
+  Scene scene = build_scene("stress", small_stress());
+  std::uint32_t moving_lights = 0;
+  scene.world.query<const OrbitMotion, const ShadowSettings>().for_each(
+      [&](const OrbitMotion&, const ShadowSettings&) { ++moving_lights; });
+  EXPECT_EQ(moving_lights, 5u);  // half of 10
+  BuiltinSceneParams still = small_stress();
+  still.moving_fraction = 0.0f;
+  Scene static_scene = build_scene("stress", still);
+  std::uint32_t moving = 0;
+  static_scene.world.query<const OrbitMotion>().for_each([&](const OrbitMotion&) { ++moving; });
+  EXPECT_EQ(moving, 0u);
+}
+
+TEST(BuiltinScenes, AnimationMovesOnlyOrbitingEntitiesAndMarksThemChanged) {
+  Scene scene = build_scene("stress", small_stress());
+  const ecs::Tick before = scene.world.tick();
+  scene.world.advance_tick();
+  animate_stress_scene(scene.world, 1.5f);
+  std::uint32_t changed = 0;
+  std::uint32_t orbiting = 0;
+  scene.world.query<const ecs::LocalTransform>().changed_since<const ecs::LocalTransform>(before).for_each(
+      [&](ecs::Entity entity, const ecs::LocalTransform& local) {
+        ++changed;
+        const OrbitMotion* orbit = scene.world.try_get<OrbitMotion>(entity);
+        ASSERT_NE(orbit, nullptr);
+        ++orbiting;
+        const glm::vec3 offset = local.translation - orbit->center;
+        EXPECT_NEAR(glm::length(offset), orbit->radius, 1e-4f);
+        const float angle = orbit->phase + orbit->angular_speed * 1.5f;
+        EXPECT_NEAR(offset.x, orbit->radius * std::cos(angle), 1e-4f);
+      });
+  EXPECT_GT(changed, 5u);  // moving lights and crates
+  EXPECT_EQ(changed, orbiting);
+}
+
+TEST(BuiltinScenes, UnknownNameAndBadFractionAreRefused) {
+  try {
+    build_scene("cathedral");
+    ADD_FAILURE() << "an unknown scene name was accepted";
+  } catch (const SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("\"cathedral\": unknown (known: default, stress)"),
+              std::string::npos)
+        << error.what();
+  }
+  BuiltinSceneParams bad;
+  bad.moving_fraction = 1.5f;
+  EXPECT_THROW(build_scene("stress", bad), SceneError);
+}
+
+TEST(BuiltinScenes, LoadSceneTakesNamesOrPaths) {
+  EXPECT_EQ(load_scene("default").name, "default");
+  EXPECT_THROW(load_scene("/nonexistent/scene.gltf"), SceneError);
+}
+
+}  // namespace
+}  // namespace sg::scene
