@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include "systems/scene/gltf_json.h"
 #include "systems/scene/scene_error.h"
@@ -17,28 +18,20 @@ T load(const unsigned char* bytes) {
   return value;
 }
 
+// Normalized integers map to [0, 1] (unsigned) or [-1, 1] (signed), as the glTF spec says.
+template <typename T>
+double read_integer(const unsigned char* bytes, bool normalized) {
+  const double value = load<T>(bytes);
+  return normalized ? std::max(value / std::numeric_limits<T>::max(), -1.0) : value;
+}
+
 double read_component(const unsigned char* bytes, int component_type, bool normalized) {
   switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: {
-      const double value = load<std::int8_t>(bytes);
-      return normalized ? std::max(value / 127.0, -1.0) : value;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-      const double value = load<std::uint8_t>(bytes);
-      return normalized ? value / 255.0 : value;
-    }
-    case TINYGLTF_COMPONENT_TYPE_SHORT: {
-      const double value = load<std::int16_t>(bytes);
-      return normalized ? std::max(value / 32767.0, -1.0) : value;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-      const double value = load<std::uint16_t>(bytes);
-      return normalized ? value / 65535.0 : value;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-      const double value = load<std::uint32_t>(bytes);
-      return normalized ? value / 4294967295.0 : value;
-    }
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return read_integer<std::int8_t>(bytes, normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return read_integer<std::uint8_t>(bytes, normalized);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return read_integer<std::int16_t>(bytes, normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return read_integer<std::uint16_t>(bytes, normalized);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return read_integer<std::uint32_t>(bytes, normalized);
     case TINYGLTF_COMPONENT_TYPE_FLOAT: return load<float>(bytes);
     case TINYGLTF_COMPONENT_TYPE_DOUBLE: return load<double>(bytes);
     default: return 0.0;  // rejected by validation

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -78,30 +79,6 @@ TEST(GltfErrors, IndexCountNotAMultipleOfThree) {
   expect_refused(file.write_gltf(dir, "count"), {"meshes[0].primitives[0]", "4 is not a multiple of 3"});
 }
 
-TEST(GltfErrors, AccessorLongerThanItsBufferView) {
-  TempDir dir;
-  GltfWriter file = triangle_file();
-  file.document["accessors"][0]["count"] = 4;
-  expect_refused(file.write_gltf(dir, "long"), {"accessors[0]", "exceed bufferViews[0].byteLength 36"});
-  file.document["accessors"][0]["count"] = 3;
-  file.document["accessors"][0]["byteOffset"] = 4;
-  expect_refused(file.write_gltf(dir, "offset"), {"accessors[0]", "byteOffset 4"});
-}
-
-TEST(GltfErrors, StrideSmallerThanTheElement) {
-  TempDir dir;
-  GltfWriter file = triangle_file();
-  file.document["bufferViews"][0]["byteStride"] = 8;
-  expect_refused(file.write_gltf(dir, "stride"), {"accessors[0]", "byteStride 8 is smaller than the element size 12"});
-}
-
-TEST(GltfErrors, BufferViewOutsideItsBuffer) {
-  TempDir dir;
-  GltfWriter file = triangle_file();
-  file.document["bufferViews"][0]["byteLength"] = 40;
-  expect_refused(file.write_gltf(dir, "view"), {"bufferViews[0]", "exceeds buffers[0].byteLength 36"});
-}
-
 TEST(GltfErrors, MissingBufferFile) {
   TempDir dir;
   GltfWriter file = triangle_file();
@@ -130,13 +107,6 @@ TEST(GltfErrors, DeclaredOneTebibyteBufferIsRefusedBeforeAllocating) {
   expect_refused(binary.write_glb(dir, "huge"), {"buffers[0]", "BIN chunk holds 36 bytes"});
 }
 
-TEST(GltfErrors, HugeAccessorWithoutBufferView) {
-  TempDir dir;
-  GltfWriter file = triangle_file();
-  file.add_accessor(-1, f32, std::size_t{1} << 40, "VEC3");
-  expect_refused(file.write_gltf(dir, "implicit"), {"accessors[1]", "without a bufferView is over the limit"});
-}
-
 TEST(GltfErrors, NonFinitePosition) {
   TempDir dir;
   GltfWriter file;
@@ -162,28 +132,6 @@ TEST(GltfErrors, NodeCycle) {
   file.add_node({{"children", {1}}});
   file.document["nodes"].push_back({{"children", {0}}});
   expect_refused(file.write_gltf(dir, "cycle"), {"nodes[", "cycle"});
-}
-
-TEST(GltfErrors, UnsupportedRequiredExtension) {
-  TempDir dir;
-  GltfWriter file = triangle_file();
-  file.document["extensionsRequired"] = {"KHR_lights_punctual", "KHR_draco_mesh_compression"};
-  expect_refused(file.write_gltf(dir, "draco"),
-                 {"extensionsRequired[1]", "unsupported required extension \"KHR_draco_mesh_compression\""});
-}
-
-TEST(GltfErrors, MissingImageFile) {
-  TempDir dir;
-  GltfWriter file = triangle_file();
-  file.document["images"] = {{{"uri", "nowhere.png"}}};
-  expect_refused(file.write_gltf(dir, "image"), {"images[0]", "missing image file", "nowhere.png"});
-}
-
-TEST(GltfErrors, UndecodableImage) {
-  TempDir dir;
-  GltfWriter file = triangle_file();
-  file.document["images"] = {{{"uri", "data:image/png;base64," + test::base64({1, 2, 3, 4, 5, 6})}}};
-  expect_refused(file.write_gltf(dir, "garbage"), {"images[0]", "cannot decode"});
 }
 
 TEST(GltfErrors, NotAGltfFile) {
@@ -237,11 +185,45 @@ TEST(GltfErrors, NodeReferencingAMissingLight) {
   expect_refused(file.write_gltf(dir, "dangling"), {"nodes[0]", "references light 3", "does not exist (1 lights)"});
 }
 
-TEST(GltfErrors, DanglingMeshReference) {
-  TempDir dir;
-  GltfWriter file = triangle_file();
-  file.document["nodes"][0]["mesh"] = 7;
-  expect_refused(file.write_gltf(dir, "mesh"), {"nodes[0]", "mesh 7 is not an index into meshes"});
+// Structural damage to a valid one-triangle file, one class per case.
+struct Damage {
+  const char* name;
+  std::function<void(GltfWriter&)> apply;
+  std::vector<std::string> fragments;
+};
+
+TEST(GltfErrors, EachStructuralDamage) {
+  const std::vector<Damage> cases = {
+      {"accessor_longer_than_view", [](GltfWriter& f) { f.document["accessors"][0]["count"] = 4; },
+       {"accessors[0]", "exceed bufferViews[0].byteLength 36"}},
+      {"accessor_offset_past_view", [](GltfWriter& f) { f.document["accessors"][0]["byteOffset"] = 4; },
+       {"accessors[0]", "byteOffset 4"}},
+      {"stride_below_element", [](GltfWriter& f) { f.document["bufferViews"][0]["byteStride"] = 8; },
+       {"accessors[0]", "byteStride 8 is smaller than the element size 12"}},
+      {"view_outside_buffer", [](GltfWriter& f) { f.document["bufferViews"][0]["byteLength"] = 40; },
+       {"bufferViews[0]", "exceeds buffers[0].byteLength 36"}},
+      {"huge_implicit_accessor", [](GltfWriter& f) { f.add_accessor(-1, f32, std::size_t{1} << 40, "VEC3"); },
+       {"accessors[1]", "without a bufferView is over the limit"}},
+      {"dangling_mesh", [](GltfWriter& f) { f.document["nodes"][0]["mesh"] = 7; },
+       {"nodes[0]", "mesh 7 is not an index into meshes"}},
+      {"unsupported_required_extension",
+       [](GltfWriter& f) { f.document["extensionsRequired"] = {"KHR_lights_punctual", "KHR_draco_mesh_compression"}; },
+       {"extensionsRequired[1]", "unsupported required extension \"KHR_draco_mesh_compression\""}},
+      {"missing_image_file", [](GltfWriter& f) { f.document["images"] = {{{"uri", "nowhere.png"}}}; },
+       {"images[0]", "missing image file", "nowhere.png"}},
+      {"undecodable_image",
+       [](GltfWriter& f) {
+         f.document["images"] = {{{"uri", "data:image/png;base64," + test::base64({1, 2, 3, 4, 5, 6})}}};
+       },
+       {"images[0]", "cannot decode"}},
+  };
+  for (const Damage& damage : cases) {
+    SCOPED_TRACE(damage.name);
+    TempDir dir;
+    GltfWriter file = triangle_file();
+    damage.apply(file);
+    expect_refused(file.write_gltf(dir, damage.name), damage.fragments);
+  }
 }
 
 }  // namespace

@@ -23,12 +23,18 @@ std::string shared_asset(const std::string& relative) {
   if (variable##_path.empty()) GTEST_SKIP() << "shared asset absent: " << relative; \
   Scene variable = load_gltf(variable##_path)
 
+// The shadow test scenes: one shadow-casting light of the given kind over ~1,000 triangles.
+void expect_one_light_of_kind(Scene& scene, std::uint32_t SceneStats::*kind) {
+  const SceneStats stats = scene_stats(scene);
+  EXPECT_EQ(stats.*kind, 1u);
+  EXPECT_EQ(stats.point_lights + stats.spot_lights + stats.directional_lights + stats.cylinder_lights, 1u);
+  EXPECT_EQ(stats.shadow_casting_lights, 1u);
+  EXPECT_GT(stats.triangles, 1000u);
+}
+
 TEST(SharedAssets, ShadowsSpotHasOneSpotLightWithTheFilesRangeAndCones) {
   LOAD_SHARED_OR_SKIP(scene, "ShadowsSpot/shadows-spot.gltf");
-  const SceneStats stats = scene_stats(scene);
-  EXPECT_EQ(stats.spot_lights, 1u);
-  EXPECT_EQ(stats.point_lights + stats.directional_lights, 0u);
-  EXPECT_GT(stats.triangles, 1000u);
+  expect_one_light_of_kind(scene, &SceneStats::spot_lights);
   scene.world.query<const SpotLight, const ecs::WorldTransform>().for_each(
       [](const SpotLight& spot, const ecs::WorldTransform& world) {
         EXPECT_FLOAT_EQ(spot.range, 25.0f);
@@ -41,11 +47,7 @@ TEST(SharedAssets, ShadowsSpotHasOneSpotLightWithTheFilesRangeAndCones) {
 
 TEST(SharedAssets, ShadowsDirectionalHasOneDirectionalLight) {
   LOAD_SHARED_OR_SKIP(scene, "ShadowsDirectional/shadows-directional.gltf");
-  const SceneStats stats = scene_stats(scene);
-  EXPECT_EQ(stats.directional_lights, 1u);
-  EXPECT_EQ(stats.point_lights + stats.spot_lights, 0u);
-  EXPECT_EQ(stats.shadow_casting_lights, 1u);
-  EXPECT_GT(stats.triangles, 1000u);
+  expect_one_light_of_kind(scene, &SceneStats::directional_lights);
 }
 
 TEST(SharedAssets, FoxLoadsNonIndexedSkinnedInBindPose) {
