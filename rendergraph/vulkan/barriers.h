@@ -1,5 +1,5 @@
 #pragma once
-// A single image layout transition as a synchronization2 barrier. The render graph computes
+// Single synchronization2 barriers. The render graph computes
 // and batches the frame's barriers itself; this is for the few transitions outside it
 // (presentation blits, readbacks).
 #include <vulkan/vulkan.h>
@@ -19,5 +19,9 @@ struct ImageTransition {
 
 // Records the transition over all mips and layers of the image.
 void transition(VkCommandBuffer cmd, const ImageTransition& t);
+
+// Records a global memory dependency (all resources), e.g. copies before host reads.
+void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stages, VkAccessFlags2 src_access,
+                    VkPipelineStageFlags2 dst_stages, VkAccessFlags2 dst_access);
 
 }  // namespace sg::vk

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <utility>
 
+#include "rendergraph/vulkan/barriers.h"
 #include "rendergraph/vulkan/context.h"
 #include "rendergraph/vulkan/resources.h"
 #include "rendergraph/vulkan/vulkan_error.h"
@@ -35,15 +36,8 @@ Rgba8Image read_rgba8(VulkanContext& context, const Image& image) {
     vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            staging.handle(), 1, &region);
     // Make the copy visible to the host read below.
-    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-    barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    barrier.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-    barrier.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.memoryBarrierCount = 1;
-    dependency.pMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
   });
 
   Rgba8Image out{extent.width, extent.height, std::vector<uint8_t>(size)};

@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "rendergraph/vulkan/barriers.h"
 #include "rendergraph/vulkan/context.h"
 #include "rendergraph/vulkan/resources.h"
 #include "rendergraph/vulkan/vulkan_error.h"
@@ -32,15 +33,8 @@ void UploadBatch::submit() {
       const VkBufferCopy region{p.staging_offset, p.dst_offset, p.size};
       vkCmdCopyBuffer(cmd, staging.handle(), p.dst, 1, &region);
     }
-    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-    barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-    barrier.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT;
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.memoryBarrierCount = 1;
-    dependency.pMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
   });
   staged_.clear();
   pending_.clear();

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "rendergraph/vulkan/barriers.h"
 #include "rendergraph/vulkan/resources.h"
 #include "rendergraph/vulkan/upload.h"
 #include "rendergraph/vulkan/vulkan_error.h"
@@ -86,15 +87,8 @@ TEST_F(ContextTest, StagedUploadReachesDeviceLocalBuffer) {
   context.submit_and_wait([&](VkCommandBuffer cmd) {
     const VkBufferCopy region{0, 0, bytes};
     vkCmdCopyBuffer(cmd, device_buffer.handle(), host_buffer.handle(), 1, &region);
-    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-    barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    barrier.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-    barrier.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.memoryBarrierCount = 1;
-    dependency.pMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    vk::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
   });
   EXPECT_EQ(std::memcmp(host_buffer.mapped(), data.data(), bytes), 0);
 }
