@@ -26,7 +26,7 @@ int run_headless(const Options& options) {
   for (uint32_t i = 0; i < frame_count; ++i) {
     const auto start = std::chrono::steady_clock::now();
     vk::FrameSlot& frame = frames.begin_frame();
-    renderer.record(frame.cmd, scene.camera);
+    renderer.record(frame.cmd, scene.camera, scene.lens);
     frames.submit();
     frame_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }

@@ -94,7 +94,7 @@ FrameResult WindowSession::frame() {
     ready_ = false;
     return FrameResult::swapchain_recreated;
   }
-  renderer_->record(frame.cmd, scene_.camera);
+  renderer_->record(frame.cmd, scene_.camera, scene_.lens);
   vk::record_blit_to_swapchain(frame.cmd, renderer_->color_target(), swapchain_->image(*image),
                                swapchain_->extent());
   const vk::SemaphoreWait wait{frame.image_acquired, VK_PIPELINE_STAGE_2_BLIT_BIT};

@@ -43,7 +43,7 @@ BuiltinScene make_builtin_scene() {
 glm::mat4 model_matrix(const BoxInstance& box) {
   glm::mat4 m = glm::translate(glm::mat4(1.0f), box.center);
   m = glm::rotate(m, box.yaw, glm::vec3(0.0f, 1.0f, 0.0f));
-  return glm::scale(m, box.half_extent);
+  return glm::scale(m, 2.0f * box.half_extent);  // the shared box mesh is 1 unit wide
 }
 
 }  // namespace sg

@@ -15,7 +15,7 @@ struct Material {
   float shininess = 32.0f;     // Blinn exponent s
 };
 
-// An oriented box: the unit box scaled by half_extent, turned by yaw about +Y, moved to center.
+// An oriented box: extends half_extent from its center, turned by yaw about +Y.
 struct BoxInstance {
   glm::vec3 center{0.0f};
   glm::vec3 half_extent{0.5f};
@@ -33,7 +33,8 @@ struct BuiltinScene {
   std::vector<BoxInstance> boxes;  // boxes[0] is the floor; its top face lies in the plane y = 0
   DirectionalLight sun;
   float ambient = 0.15f;  // kA * IA, ALGORITHMS.md's default
-  Camera camera;
+  scene::CameraPose camera;
+  scene::Camera lens;
 };
 
 BuiltinScene make_builtin_scene();

@@ -4,10 +4,13 @@
 
 namespace sg {
 
-glm::mat4 view_matrix(const Camera& camera) { return glm::lookAtRH(camera.eye, camera.target, camera.up); }
+glm::mat4 view_matrix(const scene::CameraPose& pose) {
+  return glm::lookAtRH(pose.eye, pose.target, glm::vec3(0.0f, 1.0f, 0.0f));
+}
 
-glm::mat4 projection_matrix(const Camera& camera, float aspect) {
-  glm::mat4 proj = glm::perspectiveRH_ZO(camera.fov_y, aspect, camera.near_plane, camera.far_plane);
+glm::mat4 projection_matrix(const scene::Camera& lens, float aspect) {
+  const float a = lens.aspect > 0.0f ? lens.aspect : aspect;
+  glm::mat4 proj = glm::perspectiveRH_ZO(lens.yfov, a, lens.znear, lens.zfar);
   proj[1][1] = -proj[1][1];  // Vulkan's NDC y points down
   return proj;
 }

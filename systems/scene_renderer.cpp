@@ -13,7 +13,7 @@
 #include "rendergraph/vulkan/vulkan_error.h"
 #include "shaders/scene.frag.spv.h"
 #include "shaders/scene.vert.spv.h"
-#include "systems/box_mesh.h"
+#include "systems/scene/primitive_meshes.h"
 #include "systems/scene_gpu_types.h"
 
 namespace sg {
@@ -21,7 +21,8 @@ namespace sg {
 SceneRenderer::SceneRenderer(vk::VulkanContext& context, const BuiltinScene& scene)
     : context_(context), sun_(scene.sun), ambient_(scene.ambient) {
   const VkDevice device = context.device();
-  const BoxMesh box = make_unit_box();
+  scene::MeshLibrary meshes;
+  box_ = meshes.meshes[scene::add_box_mesh(meshes)];
   std::vector<GpuInstance> instances;
   for (const BoxInstance& b : scene.boxes) {
     const glm::mat4 model = model_matrix(b);
@@ -29,20 +30,19 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const BuiltinScene& sce
                          glm::vec4(b.material.base_color, b.material.specular),
                          glm::vec4(b.material.shininess, 0.0f, 0.0f, 0.0f)});
   }
-  index_count_ = static_cast<uint32_t>(box.indices.size());
   instance_count_ = static_cast<uint32_t>(instances.size());
 
   constexpr VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-  vertices_ = vk::Buffer(context, {sizeof(box.vertices), dst | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+  vertices_ = vk::Buffer(context, {meshes.vertices.size() * sizeof(scene::Vertex), dst | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
                                    vk::MemoryUsage::gpu_only, "box vertices"});
-  indices_ = vk::Buffer(context, {sizeof(box.indices), dst | VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+  indices_ = vk::Buffer(context, {meshes.indices.size() * sizeof(uint32_t), dst | VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
                                   vk::MemoryUsage::gpu_only, "box indices"});
   instances_ = vk::Buffer(context, {instances.size() * sizeof(GpuInstance),
                                     dst | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                     vk::MemoryUsage::gpu_only, "scene instances"});
   vk::UploadBatch upload(context);
-  upload.copy(vertices_, std::span(box.vertices));
-  upload.copy(indices_, std::span(box.indices));
+  upload.copy(vertices_, std::span<const scene::Vertex>(meshes.vertices));
+  upload.copy(indices_, std::span<const uint32_t>(meshes.indices));
   upload.copy(instances_, std::span<const GpuInstance>(instances));
   upload.submit();
 
@@ -93,10 +93,10 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const BuiltinScene& sce
   vk::GraphicsPipelineDesc desc;
   desc.vertex_spirv = scene_vert;
   desc.fragment_spirv = scene_frag;
-  desc.vertex_bindings = {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+  desc.vertex_bindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
   desc.vertex_attributes = {
-      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(MeshVertex, position))},
-      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(MeshVertex, normal))}};
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, position))},
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, normal))}};
   desc.color_formats = {color_format};
   desc.depth_format = depth_format;
   desc.layout = layout;
@@ -112,7 +112,8 @@ void SceneRenderer::resize(VkExtent2D extent) {
                                 1, VK_IMAGE_VIEW_TYPE_2D, "scene depth"});
 }
 
-void SceneRenderer::record(VkCommandBuffer cmd, const Camera& camera) const {
+void SceneRenderer::record(VkCommandBuffer cmd, const scene::CameraPose& pose,
+                           const scene::Camera& lens) const {
   const VkExtent2D extent = color_.extent();
   context_.begin_label(cmd, "scene");
 
@@ -158,8 +159,8 @@ void SceneRenderer::record(VkCommandBuffer cmd, const Camera& camera) const {
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_.get(), 0, 1,
                           &descriptor_set_, 0, nullptr);
   const float aspect = float(extent.width) / float(extent.height);
-  const FrameConstants constants{projection_matrix(camera, aspect) * view_matrix(camera),
-                                 glm::vec4(camera.eye, 1.0f),
+  const FrameConstants constants{projection_matrix(lens, aspect) * view_matrix(pose),
+                                 glm::vec4(pose.eye, 1.0f),
                                  glm::vec4(sun_.direction, sun_.intensity),
                                  glm::vec4(sun_.color, ambient_)};
   vkCmdPushConstants(cmd, pipeline_layout_.get(),
@@ -168,8 +169,9 @@ void SceneRenderer::record(VkCommandBuffer cmd, const Camera& camera) const {
   const VkBuffer vertex_buffer = vertices_.handle();
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
-  vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT16);
-  vkCmdDrawIndexed(cmd, index_count_, instance_count_, 0, 0, 0);
+  vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+  vkCmdDrawIndexed(cmd, box_.index_count, instance_count_, box_.first_index,
+                   static_cast<int32_t>(box_.vertex_offset), 0);
   vkCmdEndRendering(cmd);
 
   vk::transition(cmd, {color_.handle(), VK_IMAGE_ASPECT_COLOR_BIT,

@@ -7,6 +7,7 @@
 #include "rendergraph/vulkan/resources.h"
 #include "rendergraph/vulkan/unique_handle.h"
 #include "systems/builtin_scene.h"
+#include "systems/scene/mesh_library.h"
 
 namespace sg::vk {
 class VulkanContext;
@@ -27,7 +28,7 @@ class SceneRenderer {
   // Records one frame. Afterwards the colour target is in TRANSFER_SRC_OPTIMAL with its
   // writes available to copies and blits later on the queue. Earlier transfer reads of the
   // target (last frame's blit) are waited for.
-  void record(VkCommandBuffer cmd, const Camera& camera) const;
+  void record(VkCommandBuffer cmd, const scene::CameraPose& pose, const scene::Camera& lens) const;
 
   const vk::Image& color_target() const { return color_; }
 
@@ -38,7 +39,7 @@ class SceneRenderer {
   vk::Buffer vertices_;
   vk::Buffer indices_;
   vk::Buffer instances_;
-  uint32_t index_count_ = 0;
+  scene::MeshRange box_;
   uint32_t instance_count_ = 0;
   vk::UniqueDescriptorSetLayout set_layout_;
   vk::UniqueDescriptorPool descriptor_pool_;

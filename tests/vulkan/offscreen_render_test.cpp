@@ -31,13 +31,14 @@ std::optional<float> hit_box(const BoxInstance& box, glm::vec3 origin, glm::vec3
   const glm::mat4 to_local = glm::inverse(model_matrix(grown));
   const glm::vec3 o = glm::vec3(to_local * glm::vec4(origin, 1.0f));
   const glm::vec3 d = glm::vec3(to_local * glm::vec4(dir, 0.0f));
+  constexpr float h = 0.5f;  // model_matrix maps the cube [-h, h]^3 onto the box
   float t_near = -INFINITY, t_far = INFINITY;
   for (int axis = 0; axis < 3; ++axis) {
     if (std::abs(d[axis]) < 1e-8f) {
-      if (std::abs(o[axis]) > 1.0f) return std::nullopt;
+      if (std::abs(o[axis]) > h) return std::nullopt;
       continue;
     }
-    float t0 = (-1.0f - o[axis]) / d[axis], t1 = (1.0f - o[axis]) / d[axis];
+    float t0 = (-h - o[axis]) / d[axis], t1 = (h - o[axis]) / d[axis];
     if (t0 > t1) std::swap(t0, t1);
     t_near = std::max(t_near, t0);
     t_far = std::min(t_far, t1);
@@ -68,7 +69,7 @@ TEST_F(OffscreenRender, FloorMatchesLightingFormula) {
     vk::FrameRing frames(context);
     for (int i = 0; i < 2; ++i) {  // a second frame exercises the between-frame barriers
       vk::FrameSlot& frame = frames.begin_frame();
-      renderer.record(frame.cmd, scene.camera);
+      renderer.record(frame.cmd, scene.camera, scene.lens);
       frames.submit();
     }
   }
@@ -76,7 +77,7 @@ TEST_F(OffscreenRender, FloorMatchesLightingFormula) {
   ASSERT_EQ(image.width, width);
 
   const glm::mat4 inverse_view_proj =
-      glm::inverse(projection_matrix(scene.camera, float(width) / float(height)) * view_matrix(scene.camera));
+      glm::inverse(projection_matrix(scene.lens, float(width) / float(height)) * view_matrix(scene.camera));
   int checked = 0, mismatched = 0;
   for (uint32_t y = 0; y < height; y += 3) {
     for (uint32_t x = 0; x < width; x += 3) {
