@@ -2,8 +2,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include "rendergraph/vulkan/context.h"
-
 namespace sg::sandbox {
 
 ParseResult parse_options(int argc, char** argv) {
@@ -25,6 +23,13 @@ ParseResult parse_options(int argc, char** argv) {
   }
   o.validation = o.validation || vk::validation_requested_by_environment();
   return {o, 0};
+}
+
+vk::ContextOptions context_options(const Options& options) {
+  vk::ContextOptions context;
+  context.validation = options.validation;
+  context.device_name = options.device;
+  return context;
 }
 
 }  // namespace sg::sandbox

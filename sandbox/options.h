@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 
+#include "rendergraph/vulkan/context.h"
+
 namespace sg::sandbox {
 
 struct Options {
@@ -24,5 +26,8 @@ struct ParseResult {
   int exit_code = 0;
 };
 ParseResult parse_options(int argc, char** argv);
+
+// The Vulkan context the options ask for (device, validation); presentation off.
+vk::ContextOptions context_options(const Options& options);
 
 }  // namespace sg::sandbox

@@ -9,10 +9,7 @@
 namespace sg::sandbox {
 
 int run_headless(const Options& options) {
-  vk::ContextOptions context_options;
-  context_options.validation = options.validation;
-  context_options.device_name = options.device;
-  vk::VulkanContext context(context_options);
+  vk::VulkanContext context(context_options(options));
   std::printf("shadowgraph: headless on %s, %ux%u\n", context.device_name().c_str(), options.width,
               options.height);
 

@@ -1,9 +1,6 @@
 #include <cstdio>
 
-#include <GLFW/glfw3.h>
-
 #include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/frame_ring.h"
 #include "sandbox/run.h"
 #include "sandbox/window_session.h"
 

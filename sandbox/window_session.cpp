@@ -32,15 +32,13 @@ WindowSession::WindowSession(const Options& options) : scene_(make_builtin_scene
     if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
   });
 
-  vk::ContextOptions context_options;
-  context_options.validation = options.validation;
-  context_options.device_name = options.device;
-  context_options.presentation = true;
+  vk::ContextOptions vulkan_options = context_options(options);
+  vulkan_options.presentation = true;
   uint32_t extension_count = 0;
   const char** extensions = glfwGetRequiredInstanceExtensions(&extension_count);
   if (!extensions) throw std::runtime_error("GLFW found no Vulkan window support on this system");
-  context_options.instance_extensions.assign(extensions, extensions + extension_count);
-  context_ = std::make_unique<vk::VulkanContext>(context_options);
+  vulkan_options.instance_extensions.assign(extensions, extensions + extension_count);
+  context_ = std::make_unique<vk::VulkanContext>(vulkan_options);
 
   VkSurfaceKHR surface = VK_NULL_HANDLE;
   vk::check(glfwCreateWindowSurface(context_->instance(), window_, nullptr, &surface),
@@ -66,7 +64,7 @@ VkExtent2D WindowSession::swapchain_extent() const {
 }
 
 bool WindowSession::fit_to_window() {
-  frames_->wait_idle();  // the old targets may still be in use by frames in flight
+  // recreate() waits for the device to go idle, so the renderer's old targets are free too.
   if (!swapchain_->recreate(framebuffer_extent(window_))) return false;
   renderer_->resize(swapchain_->extent());
   return true;

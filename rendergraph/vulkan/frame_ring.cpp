@@ -56,29 +56,27 @@ FrameSlot& FrameRing::begin_frame() {
 void FrameRing::submit(std::span<const SemaphoreWait> waits, std::span<const VkSemaphore> signals) {
   Slot& slot = *current_;
   check(vkEndCommandBuffer(slot.frame.cmd), "vkEndCommandBuffer");
-  std::vector<VkSemaphoreSubmitInfo> wait_infos;
-  for (const SemaphoreWait& w : waits) {
+  auto semaphore_info = [](VkSemaphore semaphore, VkPipelineStageFlags2 stages) {
     VkSemaphoreSubmitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
-    info.semaphore = w.semaphore;
-    info.stageMask = w.stages;
-    wait_infos.push_back(info);
-  }
-  std::vector<VkSemaphoreSubmitInfo> signal_infos;
+    info.semaphore = semaphore;
+    info.stageMask = stages;
+    return info;
+  };
+  wait_infos_.clear();
+  for (const SemaphoreWait& w : waits) wait_infos_.push_back(semaphore_info(w.semaphore, w.stages));
+  signal_infos_.clear();
   for (VkSemaphore s : signals) {
-    VkSemaphoreSubmitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
-    info.semaphore = s;
-    info.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-    signal_infos.push_back(info);
+    signal_infos_.push_back(semaphore_info(s, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT));
   }
   VkCommandBufferSubmitInfo cmd_info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
   cmd_info.commandBuffer = slot.frame.cmd;
   VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-  submit.waitSemaphoreInfoCount = static_cast<uint32_t>(wait_infos.size());
-  submit.pWaitSemaphoreInfos = wait_infos.data();
+  submit.waitSemaphoreInfoCount = static_cast<uint32_t>(wait_infos_.size());
+  submit.pWaitSemaphoreInfos = wait_infos_.data();
   submit.commandBufferInfoCount = 1;
   submit.pCommandBufferInfos = &cmd_info;
-  submit.signalSemaphoreInfoCount = static_cast<uint32_t>(signal_infos.size());
-  submit.pSignalSemaphoreInfos = signal_infos.data();
+  submit.signalSemaphoreInfoCount = static_cast<uint32_t>(signal_infos_.size());
+  submit.pSignalSemaphoreInfos = signal_infos_.data();
   const VkFence fence = slot.done.get();
   check(vkResetFences(context_.device(), 1, &fence), "vkResetFences");
   check(vkQueueSubmit2(context_.queue(), 1, &submit, fence), "vkQueueSubmit2");

@@ -53,6 +53,9 @@ class FrameRing {
   std::vector<Slot> slots_;
   uint64_t frame_number_ = 0;
   Slot* current_ = nullptr;
+  // Reused by submit() so a frame allocates nothing.
+  std::vector<VkSemaphoreSubmitInfo> wait_infos_;
+  std::vector<VkSemaphoreSubmitInfo> signal_infos_;
 };
 
 }  // namespace sg::vk

@@ -55,13 +55,13 @@ Swapchain::Swapchain(VulkanContext& context, VkSurfaceKHR surface, PresentMode m
 }
 
 Swapchain::~Swapchain() {
+  vkDeviceWaitIdle(context_.device());
   destroy_swapchain();
   vkDestroySurfaceKHR(context_.instance(), surface_, nullptr);
 }
 
 void Swapchain::destroy_swapchain() {
   if (swapchain_ == VK_NULL_HANDLE) return;
-  vkDeviceWaitIdle(context_.device());
   vkDestroySwapchainKHR(context_.device(), swapchain_, nullptr);
   swapchain_ = VK_NULL_HANDLE;
   images_.clear();
@@ -69,6 +69,8 @@ void Swapchain::destroy_swapchain() {
 }
 
 bool Swapchain::recreate(VkExtent2D wanted) {
+  // Resizes are rare; waiting for idle is simpler than tracking which frame holds which image.
+  vkDeviceWaitIdle(context_.device());
   VkSurfaceCapabilitiesKHR caps;
   check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_.physical_device(), surface_, &caps),
         "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
@@ -86,8 +88,6 @@ bool Swapchain::recreate(VkExtent2D wanted) {
     throw VulkanError("the window surface does not allow transfer-destination colour images");
   }
 
-  // The old swapchain may still be presenting; wait before handing it over.
-  vkDeviceWaitIdle(context_.device());
   VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
   info.surface = surface_;
   info.minImageCount = caps.minImageCount + 1;

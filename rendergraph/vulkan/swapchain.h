@@ -26,7 +26,8 @@ class Swapchain {
   Swapchain& operator=(const Swapchain&) = delete;
 
   // (Re)creates the images for a framebuffer of `extent`, clamped to what the surface allows.
-  // Returns false for a zero extent (minimized window): there is nothing to render to.
+  // Waits for the device to go idle first, so no frame still uses the old images (or anything
+  // sized to them). Returns false for a zero extent (minimized window): nothing to render to.
   bool recreate(VkExtent2D extent);
 
   // Index of the next image, signalling `image_acquired` when it may be written; nothing when
