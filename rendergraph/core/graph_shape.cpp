@@ -77,6 +77,7 @@ GraphShape graph_shape(const RenderGraph& graph) {
       shape.add(static_cast<std::uint64_t>(access.usage));
       shape.add(static_cast<std::uint64_t>(access.direction));
       shape.add(access.range);
+      shape.add(access.clear.has_value());  // the load op; the clear value itself is not shape
     }
   }
   return std::move(shape).finish();

@@ -37,6 +37,12 @@ ImageHandle PassBuilder::write(ImageHandle image, Usage usage, SubresourceRange 
   return version ? ImageHandle{image.index, *version} : image;
 }
 
+ImageHandle PassBuilder::write(ImageHandle image, Usage usage, ClearValue clear, SubresourceRange range) {
+  const auto version =
+      declare(image.index, image.version, ResourceKind::image, usage, Direction::write, range, clear);
+  return version ? ImageHandle{image.index, *version} : image;
+}
+
 BufferHandle PassBuilder::write(BufferHandle buffer, Usage usage) {
   const auto version = declare(buffer.index, buffer.version, ResourceKind::buffer, usage,
                                Direction::write, SubresourceRange::all());
@@ -47,7 +53,8 @@ void PassBuilder::mark_side_effects() { graph_.passes_[pass_].side_effects = tru
 
 std::optional<std::uint32_t> PassBuilder::declare(std::uint32_t resource_index, std::uint32_t version,
                                                   ResourceKind kind, Usage usage, Direction direction,
-                                                  const SubresourceRange& range) {
+                                                  const SubresourceRange& range,
+                                                  std::optional<ClearValue> clear) {
   PassDeclaration& pass = graph_.passes_[pass_];
   const std::string pass_text = "pass " + quoted(pass.name);
   const auto fail = [&](ErrorKind error, const std::string& message) -> std::optional<std::uint32_t> {
@@ -64,6 +71,11 @@ std::optional<std::uint32_t> PassBuilder::declare(std::uint32_t resource_index, 
   if (!state) {
     return fail(ErrorKind::invalid_usage, "cannot " + std::string(direction_name(direction)) + " " +
                                               quoted(resource.name) + " as " + std::string(usage_name(usage)));
+  }
+  if (clear && usage != Usage::colour_attachment && usage != Usage::depth_attachment) {
+    return fail(ErrorKind::invalid_usage, "clears " + quoted(resource.name) + " used as " +
+                                              std::string(usage_name(usage)) +
+                                              "; only attachment writes can clear");
   }
   const auto resolved = resolve(range, resource);
   if (!resolved) {
@@ -119,7 +131,7 @@ std::optional<std::uint32_t> PassBuilder::declare(std::uint32_t resource_index, 
     resource.producers.push_back(pass_);
     version = latest + 1;
   }
-  pass.accesses.push_back({resource_index, version, usage, direction, *resolved, *state});
+  pass.accesses.push_back({resource_index, version, usage, direction, *resolved, *state, clear});
   return version;
 }
 

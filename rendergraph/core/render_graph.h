@@ -42,6 +42,7 @@ struct ResourceAccess {
   Direction direction = Direction::read;
   SubresourceRange range;
   ResourceState state;
+  std::optional<ClearValue> clear;  // attachment writes only; none: keep the earlier contents
 };
 
 struct PassDeclaration {
@@ -82,6 +83,9 @@ class PassBuilder {
   // Returns the version this pass produces; later passes must use it instead of `image`.
   [[nodiscard]] ImageHandle write(ImageHandle image, Usage usage,
                                   SubresourceRange range = SubresourceRange::all());
+  // An attachment write that first clears the range to `clear` (colour or depth attachments).
+  [[nodiscard]] ImageHandle write(ImageHandle image, Usage usage, ClearValue clear,
+                                  SubresourceRange range = SubresourceRange::all());
   [[nodiscard]] BufferHandle write(BufferHandle buffer, Usage usage);
 
   // The pass is kept even if nothing reads what it writes (readbacks, debug output).
@@ -95,7 +99,8 @@ class PassBuilder {
   // declaration was rejected (the error is recorded on the graph).
   std::optional<std::uint32_t> declare(std::uint32_t resource, std::uint32_t version,
                                        ResourceKind kind, Usage usage, Direction direction,
-                                       const SubresourceRange& range);
+                                       const SubresourceRange& range,
+                                       std::optional<ClearValue> clear = std::nullopt);
 
   RenderGraph& graph_;
   std::uint32_t pass_;

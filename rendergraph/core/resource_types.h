@@ -2,6 +2,7 @@
 
 // Descriptions of the resources a graph uses, and the handles passes name them by.
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -101,6 +102,21 @@ enum class BufferUsage : std::uint32_t {
 };
 template <>
 inline constexpr bool is_flag_enum<BufferUsage> = true;
+
+// What an attachment write starts from instead of the attachment's earlier contents: the
+// executor turns it into VK_ATTACHMENT_LOAD_OP_CLEAR. Colour attachments use `colour`, depth
+// attachments `depth`.
+struct ClearValue {
+  std::array<float, 4> colour{0.0f, 0.0f, 0.0f, 0.0f};
+  float depth = 1.0f;
+
+  static constexpr ClearValue colour_of(float r, float g, float b, float a = 1.0f) {
+    return {{r, g, b, a}, 1.0f};
+  }
+  static constexpr ClearValue depth_of(float depth) { return {{}, depth}; }
+
+  friend bool operator==(const ClearValue&, const ClearValue&) = default;
+};
 
 inline constexpr std::uint32_t invalid_index = std::numeric_limits<std::uint32_t>::max();
 
