@@ -48,6 +48,7 @@ FrameSlot& FrameRing::begin_frame() {
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   check(vkBeginCommandBuffer(slot.frame.cmd, &begin), "vkBeginCommandBuffer");
+  slot.frame.slot = static_cast<uint32_t>(frame_number_ % slots_.size());
   slot.frame.frame_number = frame_number_++;
   current_ = &slot;
   return slot.frame;

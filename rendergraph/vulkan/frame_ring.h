@@ -18,6 +18,7 @@ struct FrameSlot {
   VkCommandBuffer cmd = VK_NULL_HANDLE;
   VkSemaphore image_acquired = VK_NULL_HANDLE;  // for swapchain acquisition into this frame
   uint64_t frame_number = 0;
+  uint32_t slot = 0;  // which of the frames in flight: per-slot resources are indexed by it
 };
 
 struct SemaphoreWait {

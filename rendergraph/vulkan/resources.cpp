@@ -101,6 +101,7 @@ Image::Image(VulkanContext& context, const ImageDesc& desc)
     view_info.subresourceRange = {aspect_of(desc.format), 0, desc.mip_levels, 0, desc.array_layers};
     check(vkCreateImageView(context.device(), &view_info, nullptr, &view_),
           "vkCreateImageView " + desc.name);
+    views_ = std::make_unique<ImageViewCache>(context.device(), image_, desc.format);
   } catch (...) {
     reset();
     throw;
@@ -116,6 +117,7 @@ Image::Image(Image&& other) noexcept
     : context_(std::exchange(other.context_, nullptr)),
       image_(std::exchange(other.image_, VK_NULL_HANDLE)),
       view_(std::exchange(other.view_, VK_NULL_HANDLE)),
+      views_(std::move(other.views_)),
       allocation_(std::exchange(other.allocation_, {})),
       format_(other.format_),
       extent_(other.extent_) {}
@@ -126,6 +128,7 @@ Image& Image::operator=(Image&& other) noexcept {
     context_ = std::exchange(other.context_, nullptr);
     image_ = std::exchange(other.image_, VK_NULL_HANDLE);
     view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+    views_ = std::move(other.views_);
     allocation_ = std::exchange(other.allocation_, {});
     format_ = other.format_;
     extent_ = other.extent_;
@@ -137,6 +140,7 @@ VkImageAspectFlags Image::aspect() const { return aspect_of(format_); }
 
 void Image::reset() {
   if (image_ == VK_NULL_HANDLE) return;
+  views_.reset();
   if (view_ != VK_NULL_HANDLE) vkDestroyImageView(context_->device(), view_, nullptr);
   vkDestroyImage(context_->device(), image_, nullptr);
   context_->allocator().free(allocation_);  // no-op for an allocation never made

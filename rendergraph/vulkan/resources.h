@@ -2,11 +2,13 @@
 // Buffers and images that own their Vulkan handle and their slice of suballocated memory.
 // Move-only; destroyed with their owner, which must not outlive the VulkanContext.
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include <vulkan/vulkan.h>
 
 #include "rendergraph/vulkan/gpu_allocator.h"
+#include "rendergraph/vulkan/image_views.h"
 
 namespace sg::vk {
 
@@ -61,6 +63,8 @@ class Image {
 
   VkImage handle() const { return image_; }
   VkImageView view() const { return view_; }  // all mips and layers
+  // Views of parts of the image (one layer, one cube, one mip), kept until the image dies.
+  ImageViewCache& views() const { return *views_; }
   VkFormat format() const { return format_; }
   VkExtent2D extent() const { return extent_; }
   VkImageAspectFlags aspect() const;
@@ -71,6 +75,7 @@ class Image {
   VulkanContext* context_ = nullptr;
   VkImage image_ = VK_NULL_HANDLE;
   VkImageView view_ = VK_NULL_HANDLE;
+  std::unique_ptr<ImageViewCache> views_;
   Allocation allocation_;
   VkFormat format_ = VK_FORMAT_UNDEFINED;
   VkExtent2D extent_{};
