@@ -1,8 +1,54 @@
 #include "sandbox/options.h"
 
+#include <charconv>
+#include <cmath>
+#include <limits>
+
 #include <CLI/CLI.hpp>
 
+#include "systems/scene/scene_error.h"
+
 namespace sg::sandbox {
+namespace {
+
+// CLI11 reads unsigned integers with strtoull in base 0, so "-3" wraps around to 2^64 - 3 and
+// "010" is octal. Checking the text first gives plain decimal numbers and a message that says
+// what is allowed; the text is rewritten in canonical form so CLI11's conversion agrees.
+CLI::Validator whole_number(std::uint64_t min, std::uint64_t max) {
+  const std::string allowed =
+      "a whole number in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  return CLI::Validator(
+      [min, max, allowed](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const char* end = text.data() + text.size();
+        const auto [stop, error] = std::from_chars(text.data(), end, value);
+        if (text.empty() || error != std::errc{} || stop != end || value < min || value > max) {
+          return "\"" + text + "\" is not " + allowed;
+        }
+        text = std::to_string(value);
+        return {};
+      },
+      // The same --help wording as CLI::Range ("UINT:UINT in [1 - 16384]").
+      "UINT in [" + std::to_string(min) + " - " + std::to_string(max) + "]");
+}
+
+// CLI::Range lets "nan" through (every comparison with NaN is false).
+CLI::Validator fraction() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        float value = 0.0f;
+        const char* end = text.data() + text.size();
+        const auto [stop, error] = std::from_chars(text.data(), end, value);
+        if (text.empty() || error != std::errc{} || stop != end || !std::isfinite(value) ||
+            value < 0.0f || value > 1.0f) {
+          return "\"" + text + "\" is not a number in [0, 1]";
+        }
+        return {};
+      },
+      "FLOAT in [0 - 1]");
+}
+
+}  // namespace
 
 ParseResult parse_options(int argc, char** argv) {
   Options o;
@@ -16,10 +62,45 @@ ParseResult parse_options(int argc, char** argv) {
   app.add_flag("--validation", o.validation,
                "Enable the Khronos validation layer (also SHADOWGRAPH_VALIDATION=1)");
   app.add_flag("!--no-vsync", o.vsync, "Present without waiting for vertical blank");
+
+  app.add_option("--scene", o.scene, "Scene: default, stress, or a .gltf/.glb file")
+      ->capture_default_str();
+  app.add_option_function<std::string>(
+         "--camera",
+         [&o](const std::string& text) {
+           try {
+             o.camera = scene::parse_camera(text);
+           } catch (const scene::SceneError& error) {
+             // SceneError's message already names --camera and the text.
+             throw CLI::ValidationError(error.what());
+           }
+         },
+         "Camera eye and target, overriding the scene's camera")
+      ->type_name("EX,EY,EZ,TX,TY,TZ");
+  scene::BuiltinSceneParams& params = o.scene_params;
+  app.add_option("--scene-triangles", params.triangles, "Stress scene: triangles to reach")
+      ->transform(whole_number(1, max_scene_triangles))
+      ->capture_default_str();
+  app.add_option("--point-lights", params.point_lights, "Stress scene: point lights")
+      ->transform(whole_number(0, max_lights_per_type))
+      ->capture_default_str();
+  app.add_option("--spot-lights", params.spot_lights, "Stress scene: spot lights")
+      ->transform(whole_number(0, max_lights_per_type))
+      ->capture_default_str();
+  app.add_option("--moving-lights", params.moving_fraction,
+                 "Stress scene: fraction of lights and crates that move each frame")
+      ->check(fraction())
+      ->capture_default_str();
+  app.add_option("--seed", params.seed, "Stress scene: random seed (equal seeds, equal scenes)")
+      ->transform(whole_number(0, std::numeric_limits<std::uint64_t>::max()))
+      ->capture_default_str();
+  app.add_option("--stats", o.stats_path, "Write facts about the run to this JSON file");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return {std::nullopt, app.exit(e)};
+    // CLI11 has an exit code per kind of error; the sandbox promises 2 for every usage error.
+    const bool usage_error = app.exit(e) != static_cast<int>(CLI::ExitCodes::Success);
+    return {std::nullopt, usage_error ? 2 : 0};
   }
   o.validation = o.validation || vk::validation_requested_by_environment();
   return {o, 0};

@@ -5,6 +5,8 @@
 #include <string>
 
 #include "rendergraph/vulkan/context.h"
+#include "systems/scene/builtin_scenes.h"
+#include "systems/scene/camera.h"
 
 namespace sg::sandbox {
 
@@ -17,10 +19,21 @@ struct Options {
   std::string device;              // substring of the Vulkan device name
   bool validation = false;         // also on with SHADOWGRAPH_VALIDATION=1
   bool vsync = true;
+  std::string scene = "default";           // a built-in scene name or a .gltf/.glb path
+  std::optional<scene::CameraPose> camera;  // --camera; unset: the scene's camera or framing
+  scene::BuiltinSceneParams scene_params;   // the stress scene's size, lights and seed
+  std::string stats_path;                   // --stats: JSON facts about the run; empty: none
 };
 
+// Upper bounds on the stress scene's parameters: values above them would exhaust memory
+// while building the scene, so they are refused on the command line instead.
+inline constexpr std::uint64_t max_scene_triangles = 100'000'000;
+inline constexpr std::uint32_t max_lights_per_type = 100'000;
+
 // Parses argv. On --help or a usage error, prints the message and returns the exit code the
-// program should end with.
+// program should end with: 0 for --help, 2 for any usage error (unknown option, a value out
+// of range, a malformed --camera, ...). Nothing is loaded here: --scene is checked when the
+// scene is loaded.
 struct ParseResult {
   std::optional<Options> options;
   int exit_code = 0;

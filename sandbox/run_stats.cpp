@@ -1,0 +1,78 @@
+#include "sandbox/run_stats.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace sg::sandbox {
+namespace {
+
+// Ordered, so the file reads in the order run_stats.h documents.
+using Json = nlohmann::ordered_json;
+
+Json summary_json(const std::optional<TimeSummary>& summary) {
+  if (!summary) return nullptr;
+  return {{"median", summary->median}, {"min", summary->min}, {"max", summary->max}};
+}
+
+Json stats_json(const RunStats& stats) {
+  const scene::SceneStats& scene = stats.scene;
+  Json passes = Json::array();
+  for (const PassTime& pass : stats.passes) {
+    passes.push_back({{"name", pass.name}, {"gpu_ms", summary_json(pass.gpu_ms)}});
+  }
+  return {
+      {"device", stats.device},
+      {"resolution", {{"width", stats.width}, {"height", stats.height}}},
+      {"frames", stats.frames},
+      {"scene",
+       {{"name", stats.scene_name},
+        {"triangles", scene.triangles},
+        {"entities", scene.entities},
+        {"mesh_instances", scene.mesh_instances},
+        {"lights",
+         {{"point", scene.point_lights},
+          {"spot", scene.spot_lights},
+          {"directional", scene.directional_lights},
+          {"cylinder", scene.cylinder_lights},
+          {"shadow_casting", scene.shadow_casting_lights}}}}},
+      {"cpu_frame_ms", summary_json(stats.cpu_frame_ms)},
+      {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},
+      {"passes", passes},
+      {"validation_errors",
+       stats.validation_errors ? Json(*stats.validation_errors) : Json()},
+      {"shadow_map_bytes", stats.shadow_map_bytes}};
+}
+
+}  // namespace
+
+std::optional<TimeSummary> summarize(std::span<const double> samples) {
+  if (samples.empty()) return std::nullopt;
+  std::vector<double> sorted(samples.begin(), samples.end());
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t middle = sorted.size() / 2;
+  const double median =
+      sorted.size() % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2.0;
+  return TimeSummary{median, sorted.front(), sorted.back()};
+}
+
+void write_stats_json(const std::string& path, const RunStats& stats) {
+  const std::string text = stats_json(stats).dump(2) + "\n";
+  std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  if (!file) {
+    throw std::runtime_error("cannot write stats to \"" + path + "\": " + std::strerror(errno));
+  }
+  file << text;
+  file.close();
+  // A full disk shows only when the buffered text is flushed.
+  if (!file) {
+    throw std::runtime_error("cannot write stats to \"" + path + "\": writing failed (" +
+                             std::strerror(errno) + ")");
+  }
+}
+
+}  // namespace sg::sandbox

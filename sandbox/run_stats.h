@@ -1,0 +1,66 @@
+#pragma once
+// Machine-readable facts about one sandbox run, written by --stats as JSON.
+//
+// The JSON keys are a contract for scripts and benchmarks: later versions add keys but never
+// rename or remove these. Times are milliseconds; sizes are bytes.
+//
+// {
+//   "device": "NVIDIA H100 ...",                 // the Vulkan device's name
+//   "resolution": {"width": 1280, "height": 720},
+//   "frames": 3,                                 // frames rendered
+//   "scene": {
+//     "name": "default",                         // built-in name or the file path
+//     "triangles": 1234, "entities": 56, "mesh_instances": 20,
+//     "lights": {"point": 2, "spot": 2, "directional": 1, "cylinder": 1, "shadow_casting": 6}
+//   },
+//   "cpu_frame_ms": {"median": 1.5, "min": 1.2, "max": 3.0},  // null when no frame ran
+//   "gpu_frame_ms": {"median": ..., "min": ..., "max": ...},  // null without GPU timestamps
+//   "passes": [{"name": "lighting", "gpu_ms": {"median": ..., "min": ..., "max": ...}}],
+//   "validation_errors": 0,                      // null when the validation layer was off
+//   "shadow_map_bytes": 0                        // GPU memory holding shadow maps
+// }
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "systems/scene/scene_queries.h"
+
+namespace sg::sandbox {
+
+struct TimeSummary {
+  double median = 0.0;  // the mean of the two middle samples when their count is even
+  double min = 0.0;
+  double max = 0.0;
+};
+
+// std::nullopt for no samples: there is nothing to summarize, and zeros would read as a
+// measurement.
+std::optional<TimeSummary> summarize(std::span<const double> samples);
+
+struct PassTime {
+  std::string name;
+  TimeSummary gpu_ms;
+};
+
+struct RunStats {
+  std::string device;
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::uint64_t frames = 0;
+  std::string scene_name;
+  scene::SceneStats scene;  // scene::scene_stats of the rendered scene
+  std::optional<TimeSummary> cpu_frame_ms;
+  std::optional<TimeSummary> gpu_frame_ms;  // unset when the device has no timestamps
+  std::vector<PassTime> passes;             // in execution order
+  // Unset when the validation layer was off: 0 would claim a check that never ran.
+  std::optional<std::uint32_t> validation_errors;
+  std::uint64_t shadow_map_bytes = 0;
+};
+
+// Writes `stats` as the JSON above (indented, one trailing newline), replacing the file.
+// Throws std::runtime_error naming the path and the reason when it cannot be written.
+void write_stats_json(const std::string& path, const RunStats& stats);
+
+}  // namespace sg::sandbox

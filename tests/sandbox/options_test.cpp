@@ -1,0 +1,152 @@
+// The sandbox's command line: defaults, each option, and each refusal (exit code 2).
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sandbox/options.h"
+
+namespace sg::sandbox {
+namespace {
+
+ParseResult parse(std::vector<std::string> args) {
+  args.insert(args.begin(), "shadowgraph-sandbox");
+  std::vector<char*> argv;
+  for (std::string& arg : args) argv.push_back(arg.data());
+  return parse_options(static_cast<int>(argv.size()), argv.data());
+}
+
+Options parse_ok(const std::vector<std::string>& args) {
+  const ParseResult result = parse(args);
+  EXPECT_EQ(result.exit_code, 0);
+  if (!result.options) throw std::runtime_error("refused a valid command line");
+  return *result.options;
+}
+
+TEST(SandboxOptions, DefaultsComeFromTheSceneLibrary) {
+  const Options options = parse_ok({});
+  const scene::BuiltinSceneParams defaults;
+  EXPECT_EQ(options.scene, "default");
+  EXPECT_FALSE(options.camera.has_value());
+  EXPECT_EQ(options.scene_params.triangles, defaults.triangles);
+  EXPECT_EQ(options.scene_params.point_lights, defaults.point_lights);
+  EXPECT_EQ(options.scene_params.spot_lights, defaults.spot_lights);
+  EXPECT_EQ(options.scene_params.moving_fraction, defaults.moving_fraction);
+  EXPECT_EQ(options.scene_params.seed, defaults.seed);
+  EXPECT_TRUE(options.stats_path.empty());
+  EXPECT_EQ(options.width, 1280u);
+  EXPECT_EQ(options.height, 720u);
+  EXPECT_FALSE(options.frames.has_value());
+  EXPECT_TRUE(options.vsync);
+}
+
+TEST(SandboxOptions, ExistingOptionsStillWork) {
+  const Options options =
+      parse_ok({"--headless", "--width", "320", "--height", "200", "--frames", "5", "--screenshot",
+                "a.png", "--device", "llvmpipe", "--validation", "--no-vsync"});
+  EXPECT_TRUE(options.headless);
+  EXPECT_EQ(options.width, 320u);
+  EXPECT_EQ(options.height, 200u);
+  EXPECT_EQ(options.frames, 5u);
+  EXPECT_EQ(options.screenshot, "a.png");
+  EXPECT_EQ(options.device, "llvmpipe");
+  EXPECT_TRUE(options.validation);
+  EXPECT_FALSE(options.vsync);
+}
+
+TEST(SandboxOptions, SceneOptions) {
+  const Options options =
+      parse_ok({"--scene", "stress", "--scene-triangles", "5000", "--point-lights", "4",
+                "--spot-lights", "0", "--moving-lights", "0.5", "--seed", "42", "--stats",
+                "out.json"});
+  EXPECT_EQ(options.scene, "stress");
+  EXPECT_EQ(options.scene_params.triangles, 5000u);
+  EXPECT_EQ(options.scene_params.point_lights, 4u);
+  EXPECT_EQ(options.scene_params.spot_lights, 0u);
+  EXPECT_EQ(options.scene_params.moving_fraction, 0.5f);
+  EXPECT_EQ(options.scene_params.seed, 42u);
+  EXPECT_EQ(options.stats_path, "out.json");
+  EXPECT_EQ(parse_ok({"--scene", "models/room.gltf"}).scene, "models/room.gltf");
+}
+
+TEST(SandboxOptions, BoundaryValuesAreAccepted) {
+  const Options options = parse_ok({"--scene-triangles", std::to_string(max_scene_triangles),
+                                    "--point-lights", std::to_string(max_lights_per_type),
+                                    "--moving-lights", "1", "--seed", "18446744073709551615"});
+  EXPECT_EQ(options.scene_params.triangles, max_scene_triangles);
+  EXPECT_EQ(options.scene_params.point_lights, max_lights_per_type);
+  EXPECT_EQ(options.scene_params.moving_fraction, 1.0f);
+  EXPECT_EQ(options.scene_params.seed, 18446744073709551615u);
+  EXPECT_EQ(parse_ok({"--moving-lights", "0"}).scene_params.moving_fraction, 0.0f);
+}
+
+TEST(SandboxOptions, NumbersAreDecimal) {
+  // CLI11 alone would read a leading zero as octal (010 -> 8).
+  EXPECT_EQ(parse_ok({"--seed", "010"}).scene_params.seed, 10u);
+  EXPECT_EQ(parse_ok({"--point-lights", "07"}).scene_params.point_lights, 7u);
+}
+
+TEST(SandboxOptions, CameraIsParsed) {
+  const Options options = parse_ok({"--camera", "1,2.5,-3,0,0,10"});
+  ASSERT_TRUE(options.camera.has_value());
+  EXPECT_EQ(options.camera->eye, glm::vec3(1, 2.5f, -3));
+  EXPECT_EQ(options.camera->target, glm::vec3(0, 0, 10));
+  // A leading minus sign is not taken for an option.
+  const Options negative = parse_ok({"--camera", "-4,1,0,0,0,0"});
+  ASSERT_TRUE(negative.camera.has_value());
+  EXPECT_EQ(negative.camera->eye, glm::vec3(-4, 1, 0));
+}
+
+struct Refusal {
+  std::vector<std::string> args;
+  std::string message;  // a fragment of what the user is told
+};
+
+TEST(SandboxOptions, ImpossibleValuesAreUsageErrors) {
+  const std::vector<Refusal> refusals = {
+      {{"--scene-triangles", "0"}, "\"0\" is not a whole number in [1, 100000000]"},
+      {{"--scene-triangles", "-5"}, "\"-5\" is not a whole number in [1, 100000000]"},
+      {{"--scene-triangles", "100000001"}, "is not a whole number in [1, 100000000]"},
+      {{"--point-lights", "-1"}, "\"-1\" is not a whole number in [0, 100000]"},
+      {{"--point-lights", "many"}, "\"many\" is not a whole number"},
+      {{"--spot-lights", "1.5"}, "\"1.5\" is not a whole number in [0, 100000]"},
+      {{"--spot-lights", "100001"}, "\"100001\" is not a whole number in [0, 100000]"},
+      {{"--moving-lights", "1.5"}, "\"1.5\" is not a number in [0, 1]"},
+      {{"--moving-lights", "-0.1"}, "\"-0.1\" is not a number in [0, 1]"},
+      {{"--moving-lights", "nan"}, "\"nan\" is not a number in [0, 1]"},
+      {{"--seed", "-1"}, "\"-1\" is not a whole number"},
+      {{"--seed", "18446744073709551616"}, "is not a whole number"},
+      {{"--camera", "1,2,3"}, "--camera \"1,2,3\": value list: expected 6 numbers"},
+      {{"--camera", "1,2,x,4,5,6"}, "value 3: \"x\" is not a finite number"},
+      {{"--camera", "1,2,3,1,2,3"}, "eye and target are the same point"},
+      {{"--width", "0"}, "--width"},
+      {{"--no-such-option"}, "--no-such-option"},
+      {{"--scene"}, "--scene"},
+  };
+  for (const Refusal& refusal : refusals) {
+    testing::internal::CaptureStderr();
+    const ParseResult result = parse(refusal.args);
+    const std::string printed = testing::internal::GetCapturedStderr();
+    const std::string command_line = refusal.args[0] + (refusal.args.size() > 1 ? " " + refusal.args[1] : "");
+    EXPECT_FALSE(result.options.has_value()) << command_line;
+    EXPECT_EQ(result.exit_code, 2) << command_line;
+    EXPECT_NE(printed.find(refusal.message), std::string::npos)
+        << command_line << " printed: " << printed;
+  }
+}
+
+TEST(SandboxOptions, HelpExitsWithZero) {
+  testing::internal::CaptureStdout();
+  const ParseResult result = parse({"--help"});
+  const std::string printed = testing::internal::GetCapturedStdout();
+  EXPECT_FALSE(result.options.has_value());
+  EXPECT_EQ(result.exit_code, 0);
+  for (const char* option : {"--scene", "--camera", "--scene-triangles", "--point-lights",
+                             "--spot-lights", "--moving-lights", "--seed", "--stats"}) {
+    EXPECT_NE(printed.find(option), std::string::npos) << option;
+  }
+}
+
+}  // namespace
+}  // namespace sg::sandbox

@@ -1,0 +1,151 @@
+// summarize() and the --stats JSON file.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sandbox/run_stats.h"
+#include "tests/scene/gltf_writer.h"
+
+namespace sg::sandbox {
+namespace {
+
+using scene::test::TempDir;
+
+TEST(Summarize, OddCountTakesTheMiddleSample) {
+  const std::vector<double> samples = {5.0, 1.0, 3.0, 9.0, 2.0};
+  const std::optional<TimeSummary> summary = summarize(samples);
+  ASSERT_TRUE(summary.has_value());
+  EXPECT_EQ(summary->median, 3.0);
+  EXPECT_EQ(summary->min, 1.0);
+  EXPECT_EQ(summary->max, 9.0);
+}
+
+TEST(Summarize, EvenCountAveragesTheMiddlePair) {
+  const std::vector<double> samples = {4.0, 1.0, 3.0, 2.0};
+  const std::optional<TimeSummary> summary = summarize(samples);
+  ASSERT_TRUE(summary.has_value());
+  EXPECT_EQ(summary->median, 2.5);
+  EXPECT_EQ(summary->min, 1.0);
+  EXPECT_EQ(summary->max, 4.0);
+}
+
+TEST(Summarize, OneSampleAndNone) {
+  const std::vector<double> one = {7.5};
+  const std::optional<TimeSummary> summary = summarize(one);
+  ASSERT_TRUE(summary.has_value());
+  EXPECT_EQ(summary->median, 7.5);
+  EXPECT_EQ(summary->min, 7.5);
+  EXPECT_EQ(summary->max, 7.5);
+  EXPECT_FALSE(summarize({}).has_value());
+}
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream file(path);
+  return nlohmann::json::parse(file);
+}
+
+void expect_summary(const nlohmann::json& json, const TimeSummary& expected) {
+  ASSERT_TRUE(json.is_object()) << json.dump();
+  EXPECT_EQ(json.size(), 3u) << json.dump();
+  EXPECT_EQ(json.at("median").get<double>(), expected.median);
+  EXPECT_EQ(json.at("min").get<double>(), expected.min);
+  EXPECT_EQ(json.at("max").get<double>(), expected.max);
+}
+
+TEST(StatsJson, EveryFieldRoundTrips) {
+  RunStats stats;
+  stats.device = "llvmpipe (LLVM 15.0.6, 256 bits)";
+  stats.width = 640;
+  stats.height = 360;
+  stats.frames = 12;
+  stats.scene_name = "stress";
+  stats.scene.triangles = 250'123;
+  stats.scene.entities = 4'321;
+  stats.scene.mesh_instances = 1'234;
+  stats.scene.point_lights = 32;
+  stats.scene.spot_lights = 31;
+  stats.scene.directional_lights = 1;
+  stats.scene.cylinder_lights = 2;
+  stats.scene.shadow_casting_lights = 60;
+  stats.cpu_frame_ms = TimeSummary{1.5, 1.25, 3.75};
+  stats.gpu_frame_ms = TimeSummary{0.5, 0.25, 0.875};
+  stats.passes = {{"shadow_atlas", {0.125, 0.0625, 0.25}}, {"lighting", {0.375, 0.25, 0.5}}};
+  stats.validation_errors = 4;
+  stats.shadow_map_bytes = 67'108'864;
+
+  TempDir dir;
+  const std::string path = dir.path("stats.json").string();
+  write_stats_json(path, stats);
+  const nlohmann::json json = read_json(path);
+
+  EXPECT_EQ(json.size(), 9u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.at("device"), stats.device);
+  EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
+  EXPECT_EQ(json.at("frames"), 12);
+  const nlohmann::json& scene = json.at("scene");
+  EXPECT_EQ(scene.size(), 5u) << scene.dump(2);
+  EXPECT_EQ(scene.at("name"), "stress");
+  EXPECT_EQ(scene.at("triangles"), 250'123);
+  EXPECT_EQ(scene.at("entities"), 4'321);
+  EXPECT_EQ(scene.at("mesh_instances"), 1'234);
+  EXPECT_EQ(scene.at("lights"), nlohmann::json({{"point", 32},
+                                                {"spot", 31},
+                                                {"directional", 1},
+                                                {"cylinder", 2},
+                                                {"shadow_casting", 60}}));
+  expect_summary(json.at("cpu_frame_ms"), *stats.cpu_frame_ms);
+  expect_summary(json.at("gpu_frame_ms"), *stats.gpu_frame_ms);
+  const nlohmann::json& passes = json.at("passes");
+  ASSERT_EQ(passes.size(), 2u);
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    EXPECT_EQ(passes[i].size(), 2u) << passes[i].dump();
+    EXPECT_EQ(passes[i].at("name"), stats.passes[i].name);
+    expect_summary(passes[i].at("gpu_ms"), stats.passes[i].gpu_ms);
+  }
+  EXPECT_EQ(json.at("validation_errors"), 4);
+  EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
+}
+
+TEST(StatsJson, MissingMeasurementsAreNull) {
+  RunStats stats;  // no frames, no timestamps, validation off, no passes
+  TempDir dir;
+  const std::string path = dir.path("empty.json").string();
+  write_stats_json(path, stats);
+  const nlohmann::json json = read_json(path);
+  EXPECT_TRUE(json.at("cpu_frame_ms").is_null());
+  EXPECT_TRUE(json.at("gpu_frame_ms").is_null());
+  EXPECT_TRUE(json.at("validation_errors").is_null());
+  EXPECT_TRUE(json.at("passes").is_array());
+  EXPECT_TRUE(json.at("passes").empty());
+  EXPECT_EQ(json.at("frames"), 0);
+}
+
+TEST(StatsJson, ReplacesAnExistingFile) {
+  TempDir dir;
+  const std::string path = dir.path("stats.json").string();
+  scene::test::write_file(path, std::string(4096, 'x'));  // longer than the JSON
+  RunStats stats;
+  stats.frames = 3;
+  write_stats_json(path, stats);
+  EXPECT_EQ(read_json(path).at("frames"), 3);
+}
+
+TEST(StatsJson, UnwritablePathNamesThePathAndTheReason) {
+  TempDir dir;
+  const std::string path = dir.path("no-such-dir").string() + "/stats.json";
+  try {
+    write_stats_json(path, RunStats{});
+    ADD_FAILURE() << "wrote into a missing directory";
+  } catch (const std::runtime_error& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find("No such file or directory"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace sg::sandbox
