@@ -1,35 +1,65 @@
-#include <algorithm>
 #include <cstdio>
 
 #include "rendergraph/vulkan/context.h"
 #include "rendergraph/vulkan/readback.h"
+#include "sandbox/gpu_time_log.h"
 #include "sandbox/png.h"
 #include "sandbox/run.h"
-#include "systems/scene_renderer.h"
+#include "sandbox/run_stats.h"
+#include "sandbox/sandbox_frame.h"
+#include "sandbox/scene_setup.h"
+#include "systems/scene/scene_queries.h"
 
 namespace sg::sandbox {
 
-int finish_run(const Options& options, vk::VulkanContext& context, const SceneRenderer& renderer,
-               const std::vector<double>& frame_ms) {
-  if (!options.screenshot.empty() && frame_ms.empty()) {
+int finish_run(const Options& options, vk::VulkanContext& context, SandboxScene& scene,
+               const SandboxFrame& frame, const RunRecord& record) {
+  const bool rendered = !record.cpu_frame_ms.empty();
+  if (!options.screenshot.empty() && !rendered) {
     std::printf("shadowgraph: no frame was rendered, so no screenshot was written\n");
   } else if (!options.screenshot.empty()) {
-    write_png(options.screenshot, vk::read_rgba8(context, renderer.color_target()));
+    write_png(options.screenshot, vk::read_rgba8(context, frame.image()));
     std::printf("shadowgraph: wrote %s\n", options.screenshot.c_str());
   }
-  if (!frame_ms.empty()) {
-    std::vector<double> sorted = frame_ms;
-    std::sort(sorted.begin(), sorted.end());
-    std::printf("shadowgraph: %zu frames, CPU frame time median %.2f ms (min %.2f, max %.2f)\n",
-                sorted.size(), sorted[sorted.size() / 2], sorted.front(), sorted.back());
+
+  RunStats stats;
+  stats.device = context.device_name();
+  stats.width = frame.image().extent().width;
+  stats.height = frame.image().extent().height;
+  stats.frames = record.cpu_frame_ms.size();
+  stats.scene_name = scene.scene.name;
+  stats.scene = scene::scene_stats(scene.scene);
+  stats.cpu_frame_ms = summarize(record.cpu_frame_ms);
+  if (record.gpu_times) {
+    stats.gpu_frame_ms = summarize(record.gpu_times->frame_ms());
+    stats.passes = record.gpu_times->pass_summaries();
+  }
+  if (context.validation_enabled()) stats.validation_errors = context.validation_errors();
+
+  if (stats.cpu_frame_ms) {
+    std::printf("shadowgraph: %llu frames, CPU frame time median %.2f ms (min %.2f, max %.2f)\n",
+                static_cast<unsigned long long>(stats.frames), stats.cpu_frame_ms->median,
+                stats.cpu_frame_ms->min, stats.cpu_frame_ms->max);
+  }
+  if (stats.gpu_frame_ms) {
+    std::printf("shadowgraph: GPU frame time median %.3f ms over %zu timed frames; per pass:",
+                stats.gpu_frame_ms->median, record.gpu_times->frame_ms().size());
+    for (const PassTime& pass : stats.passes) {
+      std::printf(" %s %.3f", pass.name.c_str(), pass.gpu_ms.median);
+    }
+    std::printf("\n");
   }
   const vk::MemoryStats memory = context.allocator().stats();
   std::printf("shadowgraph: GPU memory %.1f MiB used in %u blocks (%.1f MiB reserved)\n",
               double(memory.used_bytes) / (1 << 20), memory.block_count,
               double(memory.reserved_bytes) / (1 << 20));
-  if (context.validation_enabled()) {
-    std::printf("shadowgraph: validation errors: %u\n", context.validation_errors());
-    if (context.validation_errors() > 0) return 3;
+  if (!options.stats_path.empty()) {
+    write_stats_json(options.stats_path, stats);
+    std::printf("shadowgraph: wrote %s\n", options.stats_path.c_str());
+  }
+  if (stats.validation_errors) {
+    std::printf("shadowgraph: validation errors: %u\n", *stats.validation_errors);
+    if (*stats.validation_errors > 0) return 3;
   }
   return 0;
 }

@@ -62,6 +62,8 @@ ParseResult parse_options(int argc, char** argv) {
   app.add_flag("--validation", o.validation,
                "Enable the Khronos validation layer (also SHADOWGRAPH_VALIDATION=1)");
   app.add_flag("!--no-vsync", o.vsync, "Present without waiting for vertical blank");
+  app.add_flag("--depth-overlay", o.depth_overlay,
+               "Show the depth buffer in the bottom-right quarter (the render graph's extension example)");
 
   app.add_option("--scene", o.scene, "Scene: default, stress, or a .gltf/.glb file")
       ->capture_default_str();

@@ -23,6 +23,7 @@ struct Options {
   std::optional<scene::CameraPose> camera;  // --camera; unset: the scene's camera or framing
   scene::BuiltinSceneParams scene_params;   // the stress scene's size, lights and seed
   std::string stats_path;                   // --stats: JSON facts about the run; empty: none
+  bool depth_overlay = false;               // --depth-overlay: the render-graph extension example
 };
 
 // Upper bounds on the stress scene's parameters: values above them would exhaust memory

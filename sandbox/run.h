@@ -4,22 +4,29 @@
 
 #include "sandbox/options.h"
 
-namespace sg {
-class SceneRenderer;
-namespace vk {
+namespace sg::vk {
 class VulkanContext;
 }
-}  // namespace sg
 
 namespace sg::sandbox {
+
+class GpuTimeLog;
+class SandboxFrame;
+struct SandboxScene;
 
 // Both return the process exit code; errors are thrown as exceptions.
 int run_headless(const Options& options);
 int run_windowed(const Options& options);
 
-// Shared ending: writes the screenshot if one was asked for, prints a summary of the run,
-// and returns 0, or 3 when the validation layer reported errors.
-int finish_run(const Options& options, vk::VulkanContext& context, const SceneRenderer& renderer,
-               const std::vector<double>& frame_ms);
+// What a run measured, for the summary and --stats.
+struct RunRecord {
+  std::vector<double> cpu_frame_ms;  // record + submit, per rendered frame
+  const GpuTimeLog* gpu_times = nullptr;
+};
+
+// Shared ending: writes the screenshot and the --stats file if asked for, prints a summary of
+// the run, and returns 0, or 3 when the validation layer reported errors.
+int finish_run(const Options& options, vk::VulkanContext& context, SandboxScene& scene,
+               const SandboxFrame& frame, const RunRecord& record);
 
 }  // namespace sg::sandbox

@@ -3,32 +3,49 @@
 
 #include "rendergraph/vulkan/context.h"
 #include "rendergraph/vulkan/frame_ring.h"
+#include "sandbox/gpu_time_log.h"
 #include "sandbox/run.h"
-#include "systems/scene_renderer.h"
+#include "sandbox/sandbox_frame.h"
+#include "sandbox/scene_setup.h"
 
 namespace sg::sandbox {
 
 int run_headless(const Options& options) {
+  SandboxScene scene = load_sandbox_scene(options, float(options.width) / float(options.height));
   vk::VulkanContext context(context_options(options));
-  std::printf("shadowgraph: headless on %s, %ux%u\n", context.device_name().c_str(), options.width,
-              options.height);
+  std::printf("shadowgraph: headless on %s, %ux%u, scene %s, camera from %s\n",
+              context.device_name().c_str(), options.width, options.height,
+              scene.scene.name.c_str(), scene.camera_source.c_str());
 
-  const BuiltinScene scene = make_builtin_scene();
-  SceneRenderer renderer(context, scene);
-  renderer.resize({options.width, options.height});
   vk::FrameRing frames(context);
+  SandboxFrame frame(context, scene, options, frames.frames_in_flight());
+  frame.resize({options.width, options.height});
 
+  // Animation advances a fixed 1/60 s per frame, so headless runs are reproducible.
+  constexpr double frame_seconds = 1.0 / 60.0;
   const uint32_t frame_count = options.frames.value_or(3);
-  std::vector<double> frame_ms;
+  GpuTimeLog gpu_times;
+  RunRecord record{{}, &gpu_times};
   for (uint32_t i = 0; i < frame_count; ++i) {
     const auto start = std::chrono::steady_clock::now();
-    vk::FrameSlot& frame = frames.begin_frame();
-    renderer.record(frame.cmd, scene.camera, scene.lens);
+    vk::FrameSlot& slot = frames.begin_frame();
+    frame.record(slot, i * frame_seconds);
     frames.submit();
-    frame_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    gpu_times.add(frame.executor().latest_timings());
+    record.cpu_frame_ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    if (frame_count >= 100 && (i + 1) % (frame_count / 10) == 0) {
+      std::printf("shadowgraph: %u/%u frames\n", i + 1, frame_count);
+    }
   }
   frames.wait_idle();
-  return finish_run(options, context, renderer, frame_ms);
+  // The last frames' timings become readable once the GPU is idle, oldest first.
+  const uint32_t in_flight = frames.frames_in_flight();
+  for (uint32_t i = frame_count > in_flight ? frame_count - in_flight : 0; i < frame_count; ++i) {
+    frame.executor().collect_timings(i % in_flight);
+    gpu_times.add(frame.executor().latest_timings());
+  }
+  return finish_run(options, context, scene, frame, record);
 }
 
 }  // namespace sg::sandbox

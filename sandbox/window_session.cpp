@@ -11,7 +11,7 @@
 #include "rendergraph/vulkan/frame_ring.h"
 #include "rendergraph/vulkan/swapchain.h"
 #include "rendergraph/vulkan/vulkan_error.h"
-#include "systems/scene_renderer.h"
+#include "sandbox/sandbox_frame.h"
 
 namespace sg::sandbox {
 namespace {
@@ -24,7 +24,8 @@ VkExtent2D framebuffer_extent(GLFWwindow* window) {
 
 }  // namespace
 
-WindowSession::WindowSession(const Options& options) : scene_(make_builtin_scene()) {
+WindowSession::WindowSession(const Options& options)
+    : scene_(load_sandbox_scene(options, float(options.width) / float(options.height))) {
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   window_ = glfwCreateWindow(int(options.width), int(options.height), "Shadowgraph", nullptr, nullptr);
   if (!window_) throw std::runtime_error("cannot create a GLFW window");
@@ -45,15 +46,16 @@ WindowSession::WindowSession(const Options& options) : scene_(make_builtin_scene
             "glfwCreateWindowSurface");
   swapchain_ = std::make_unique<vk::Swapchain>(
       *context_, surface, options.vsync ? vk::PresentMode::vsync : vk::PresentMode::no_vsync);
-  renderer_ = std::make_unique<SceneRenderer>(*context_, scene_);
   frames_ = std::make_unique<vk::FrameRing>(*context_);
+  frame_ = std::make_unique<SandboxFrame>(*context_, scene_, options, frames_->frames_in_flight());
   ready_ = fit_to_window();
+  start_seconds_ = glfwGetTime();
 }
 
 WindowSession::~WindowSession() {
   if (frames_) frames_->wait_idle();
+  frame_.reset();
   frames_.reset();
-  renderer_.reset();
   swapchain_.reset();
   context_.reset();
   if (window_) glfwDestroyWindow(window_);
@@ -64,9 +66,9 @@ VkExtent2D WindowSession::swapchain_extent() const {
 }
 
 bool WindowSession::fit_to_window() {
-  // recreate() waits for the device to go idle, so the renderer's old targets are free too.
+  // recreate() waits for the device to go idle, so the old frame image is free too.
   if (!swapchain_->recreate(framebuffer_extent(window_))) return false;
-  renderer_->resize(swapchain_->extent());
+  frame_->resize(swapchain_->extent());
   return true;
 }
 
@@ -92,13 +94,13 @@ FrameResult WindowSession::frame() {
     ready_ = false;
     return FrameResult::swapchain_recreated;
   }
-  renderer_->record(frame.cmd, scene_.camera, scene_.lens);
-  vk::record_blit_to_swapchain(frame.cmd, renderer_->color_target(), swapchain_->image(*image),
-                               swapchain_->extent());
-  const vk::SemaphoreWait wait{frame.image_acquired, VK_PIPELINE_STAGE_2_BLIT_BIT};
+  frame_->record(frame, glfwGetTime() - start_seconds_,
+                 PresentTarget{swapchain_->image(*image), swapchain_->format(), swapchain_->extent()});
+  const vk::SemaphoreWait wait{frame.image_acquired, acquire_wait_stage};
   const VkSemaphore signal = swapchain_->render_finished(*image);
   frames_->submit({&wait, 1}, {&signal, 1});
   if (!swapchain_->present(*image)) ready_ = false;
+  gpu_times_.add(frame_->executor().latest_timings());
   frame_ms_.push_back(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   return FrameResult::rendered;

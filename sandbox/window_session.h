@@ -1,27 +1,27 @@
 #pragma once
-// A window showing the scene: GLFW window, Vulkan context with presentation, swapchain,
-// renderer. The swapchain follows the window's framebuffer size; while the window is
+// A window showing the scene: GLFW window, Vulkan context with presentation, swapchain, the
+// sandbox's frame graph. The swapchain follows the window's framebuffer size; while the window is
 // minimized (zero-sized framebuffer) frames are skipped rather than rendered.
 #include <memory>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
+#include "sandbox/gpu_time_log.h"
 #include "sandbox/options.h"
-#include "systems/builtin_scene.h"
+#include "sandbox/scene_setup.h"
 
 struct GLFWwindow;
 
-namespace sg {
-class SceneRenderer;
-namespace vk {
+namespace sg::vk {
 class FrameRing;
 class Swapchain;
 class VulkanContext;
-}  // namespace vk
-}  // namespace sg
+}  // namespace sg::vk
 
 namespace sg::sandbox {
+
+class SandboxFrame;
 
 enum class FrameResult { rendered, minimized, swapchain_recreated, closed };
 
@@ -36,21 +36,25 @@ class WindowSession {
 
   GLFWwindow* window() const { return window_; }
   vk::VulkanContext& context() { return *context_; }
-  const SceneRenderer& renderer() const { return *renderer_; }
+  SandboxScene& scene() { return scene_; }
+  const SandboxFrame& sandbox_frame() const { return *frame_; }
   VkExtent2D swapchain_extent() const;
   const std::vector<double>& frame_ms() const { return frame_ms_; }
+  const GpuTimeLog& gpu_times() const { return gpu_times_; }
 
  private:
   bool fit_to_window();
 
   GLFWwindow* window_ = nullptr;
-  BuiltinScene scene_;
+  SandboxScene scene_;
   std::unique_ptr<vk::VulkanContext> context_;
   std::unique_ptr<vk::Swapchain> swapchain_;
-  std::unique_ptr<SceneRenderer> renderer_;
   std::unique_ptr<vk::FrameRing> frames_;
+  std::unique_ptr<SandboxFrame> frame_;
   bool ready_ = false;
+  double start_seconds_ = 0.0;
   std::vector<double> frame_ms_;
+  GpuTimeLog gpu_times_;
 };
 
 }  // namespace sg::sandbox

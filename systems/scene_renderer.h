@@ -1,13 +1,18 @@
 #pragma once
-// Draws the built-in scene into an offscreen colour target: one instanced draw of the unit
-// box, per-instance transforms and materials in a storage buffer. Both output paths (window,
-// PNG) start from this target, so they show the same pixels.
-#include <vulkan/vulkan.h>
+// Renders an ECS scene through the render graph. Each frame:
+//
+//   renderer.update(slot);                         // CPU: world -> this slot's GPU buffers
+//   ForwardTargets t = renderer.add_passes(graph, colour, slot, pose, lens);
+//
+// `colour` is any colour image of ForwardPass::colour_format (imported or transient); the
+// returned handles let later passes (overlays, copies, presentation) read the results.
+#include <cstdint>
 
-#include "rendergraph/vulkan/resources.h"
-#include "rendergraph/vulkan/unique_handle.h"
-#include "systems/builtin_scene.h"
-#include "systems/scene/mesh_library.h"
+#include "rendergraph/core/render_graph.h"
+#include "systems/forward_pass.h"
+#include "systems/gpu_scene.h"
+#include "systems/scene/camera.h"
+#include "systems/scene/scene.h"
 
 namespace sg::vk {
 class VulkanContext;
@@ -17,37 +22,25 @@ namespace sg {
 
 class SceneRenderer {
  public:
-  static constexpr VkFormat color_format = VK_FORMAT_R8G8B8A8_SRGB;
-  static constexpr VkFormat depth_format = VK_FORMAT_D32_SFLOAT;
+  // ALGORITHMS.md section 2's default ambient term kA * IA.
+  static constexpr float ambient = 0.15f;
 
-  SceneRenderer(vk::VulkanContext& context, const BuiltinScene& scene);
+  // `scene` must outlive the renderer; its mesh library is uploaded now.
+  SceneRenderer(vk::VulkanContext& context, scene::Scene& scene, uint32_t frames_in_flight);
 
-  // (Re)creates the colour and depth targets; call before the first frame and on resize.
-  void resize(VkExtent2D extent);
+  // Gathers the world's drawables into the slot's buffers. Call after FrameRing::begin_frame
+  // returned `slot` and after the frame's transform update.
+  void update(uint32_t slot);
 
-  // Records one frame. Afterwards the colour target is in TRANSFER_SRC_OPTIMAL with its
-  // writes available to copies and blits later on the queue. Earlier transfer reads of the
-  // target (last frame's blit) are waited for.
-  void record(VkCommandBuffer cmd, const scene::CameraPose& pose, const scene::Camera& lens) const;
+  ForwardTargets add_passes(rg::RenderGraph& graph, rg::ImageHandle colour, uint32_t slot,
+                            const scene::CameraPose& pose, const scene::Camera& lens) const;
 
-  const vk::Image& color_target() const { return color_; }
+  const GpuScene& gpu_scene() const { return gpu_scene_; }
 
  private:
-  vk::VulkanContext& context_;
-  DirectionalLight sun_;
-  float ambient_;
-  vk::Buffer vertices_;
-  vk::Buffer indices_;
-  vk::Buffer instances_;
-  scene::MeshRange box_;
-  uint32_t instance_count_ = 0;
-  vk::UniqueDescriptorSetLayout set_layout_;
-  vk::UniqueDescriptorPool descriptor_pool_;
-  VkDescriptorSet descriptor_set_ = VK_NULL_HANDLE;
-  vk::UniquePipelineLayout pipeline_layout_;
-  vk::UniquePipeline pipeline_;
-  vk::Image color_;
-  vk::Image depth_;
+  scene::Scene& scene_;
+  GpuScene gpu_scene_;
+  ForwardPass forward_;
 };
 
 }  // namespace sg

@@ -125,12 +125,8 @@ void GraphExecutor::execute(VkCommandBuffer cmd, uint32_t slot_index, uint64_t f
                             const ImportedResources& imports) {
   Slot& slot = slots_[slot_index];
   const auto pass_count = static_cast<uint32_t>(plan->passes.size());
-  if (timer_.begin_frame(cmd, slot_index, pass_count, pass_ms_) && slot.plan) {
-    if (!latest_timings_) latest_timings_.emplace();
-    latest_timings_->frame_number = slot.frame_number;
-    latest_timings_->plan = slot.plan;
-    latest_timings_->pass_ms.assign(pass_ms_.begin(), pass_ms_.end());
-  }
+  collect_timings(slot_index);
+  timer_.begin_frame(cmd, slot_index, pass_count);
   slot.plan = plan;
   slot.frame_number = frame_number;
   check(vkResetDescriptorPool(context_.device(), slot.descriptors.get(), 0), "vkResetDescriptorPool");
@@ -169,6 +165,15 @@ void GraphExecutor::execute(VkCommandBuffer cmd, uint32_t slot_index, uint64_t f
     context_.end_label(cmd);
   }
   record_barriers(cmd, plan->final_barriers, physical_, barrier_scratch_);
+}
+
+void GraphExecutor::collect_timings(uint32_t slot_index) {
+  const Slot& slot = slots_[slot_index];
+  if (!timer_.collect(slot_index, pass_ms_) || !slot.plan) return;
+  if (!latest_timings_) latest_timings_.emplace();
+  latest_timings_->frame_number = slot.frame_number;
+  latest_timings_->plan = slot.plan;
+  latest_timings_->pass_ms.assign(pass_ms_.begin(), pass_ms_.end());
 }
 
 void GraphExecutor::record_pass(VkCommandBuffer cmd, const rg::CompiledPass& pass,

@@ -76,6 +76,11 @@ class GraphExecutor {
                const rg::RenderGraph& graph, const std::shared_ptr<const rg::CompiledPlan>& plan,
                const ImportedResources& imports);
 
+  // Reads the timestamps of the slot's previous frame, if not read yet, into latest_timings().
+  // execute() does this itself; call it after the last frames to see their timings too. The GPU
+  // must have finished the slot's frame (FrameRing::begin_frame or wait_idle).
+  void collect_timings(uint32_t slot);
+
   // The most recent frame whose timestamps have been read (frames_in_flight frames behind);
   // nullopt before the first one or when the device has no timestamps.
   const std::optional<FrameTimings>& latest_timings() const { return latest_timings_; }

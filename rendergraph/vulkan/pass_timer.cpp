@@ -26,12 +26,10 @@ PassTimer::~PassTimer() {
   }
 }
 
-bool PassTimer::begin_frame(VkCommandBuffer cmd, uint32_t slot_index, uint32_t pass_count,
-                            std::vector<double>& pass_ms) {
+bool PassTimer::collect(uint32_t slot_index, std::vector<double>& pass_ms) {
   pass_ms.clear();
   if (!supported()) return false;
   Slot& slot = slots_[slot_index];
-
   bool read = false;
   if (slot.pass_count > 0) {
     ticks_.resize(2 * size_t{slot.pass_count});
@@ -51,7 +49,13 @@ bool PassTimer::begin_frame(VkCommandBuffer cmd, uint32_t slot_index, uint32_t p
       check(result, "vkGetQueryPoolResults");
     }
   }
+  slot.pass_count = 0;
+  return read;
+}
 
+void PassTimer::begin_frame(VkCommandBuffer cmd, uint32_t slot_index, uint32_t pass_count) {
+  if (!supported()) return;
+  Slot& slot = slots_[slot_index];
   if (pass_count > slot.capacity) {
     if (slot.pool != VK_NULL_HANDLE) vkDestroyQueryPool(device_, slot.pool, nullptr);
     slot.pool = VK_NULL_HANDLE;
@@ -63,7 +67,6 @@ bool PassTimer::begin_frame(VkCommandBuffer cmd, uint32_t slot_index, uint32_t p
   }
   slot.pass_count = pass_count;
   if (pass_count > 0) vkCmdResetQueryPool(cmd, slot.pool, 0, 2 * pass_count);
-  return read;
 }
 
 void PassTimer::begin_pass(VkCommandBuffer cmd, uint32_t slot, uint32_t pass) const {

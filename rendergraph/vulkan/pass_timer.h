@@ -26,11 +26,13 @@ class PassTimer {
 
   bool supported() const { return period_ns_ > 0.0; }
 
-  // Reads the milliseconds of the slot's previous frame into `pass_ms` (one per pass, cleared
-  // when there are none) and returns whether there were any. Then prepares the slot for a frame
-  // of `pass_count` passes and records the pool reset into `cmd`.
-  bool begin_frame(VkCommandBuffer cmd, uint32_t slot, uint32_t pass_count,
-                   std::vector<double>& pass_ms);
+  // Reads the milliseconds of the slot's previous frame into `pass_ms` (one per pass) and
+  // returns whether there were any; each frame's results are read once. The GPU must have
+  // finished that frame.
+  bool collect(uint32_t slot, std::vector<double>& pass_ms);
+  // Prepares the slot for a frame of `pass_count` passes (collect first: this discards the
+  // previous results) and records the pool reset into `cmd`.
+  void begin_frame(VkCommandBuffer cmd, uint32_t slot, uint32_t pass_count);
   void begin_pass(VkCommandBuffer cmd, uint32_t slot, uint32_t pass) const;
   void end_pass(VkCommandBuffer cmd, uint32_t slot, uint32_t pass) const;
 

@@ -2,9 +2,7 @@
 
 #include <algorithm>
 
-#include "rendergraph/vulkan/barriers.h"
 #include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/resources.h"
 #include "rendergraph/vulkan/vulkan_error.h"
 
 namespace sg::vk {
@@ -147,27 +145,6 @@ bool Swapchain::present(uint32_t index) {
   if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) return false;
   check(result, "vkQueuePresentKHR");
   return true;
-}
-
-void record_blit_to_swapchain(VkCommandBuffer cmd, const Image& source, VkImage target,
-                              VkExtent2D target_extent) {
-  // The source stage chains with the acquire semaphore's wait, so the layout change happens
-  // after the presentation engine has released the image.
-  transition(cmd, {target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_NONE,
-                   VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT});
-  const VkExtent2D src = source.extent();
-  VkImageBlit region{};
-  region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.srcOffsets[1] = {int32_t(src.width), int32_t(src.height), 1};
-  region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.dstOffsets[1] = {int32_t(target_extent.width), int32_t(target_extent.height), 1};
-  vkCmdBlitImage(cmd, source.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
-                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_LINEAR);
-  // Presentation waits on the submission's semaphore, which covers every earlier stage.
-  transition(cmd, {target, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                   VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_BLIT_BIT,
-                   VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE});
 }
 
 }  // namespace sg::vk

@@ -12,7 +12,6 @@
 
 namespace sg::vk {
 
-class Image;
 class VulkanContext;
 
 enum class PresentMode { vsync, no_vsync };
@@ -57,11 +56,5 @@ class Swapchain {
   std::vector<VkImage> images_;
   std::vector<UniqueSemaphore> render_finished_;
 };
-
-// Copies `source` (TRANSFER_SRC_OPTIMAL, writes already available to transfers) onto
-// swapchain image `target`, scaling if the sizes differ, and leaves `target` ready to present.
-// The submission must wait for the image's acquire semaphore at VK_PIPELINE_STAGE_2_BLIT_BIT.
-void record_blit_to_swapchain(VkCommandBuffer cmd, const Image& source, VkImage target,
-                              VkExtent2D target_extent);
 
 }  // namespace sg::vk

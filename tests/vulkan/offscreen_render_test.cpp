@@ -1,14 +1,22 @@
-// Renders the built-in scene offscreen and checks floor pixels against the lighting formula
-// of ALGORITHMS.md section 2, evaluated here on the CPU from the scene's parameters.
+// Renders an ECS scene through the sandbox's frame graph offscreen and checks floor pixels
+// against the lighting formula of ALGORITHMS.md section 2, evaluated here on the CPU from the
+// scene's parameters. Validation and synchronization validation are on (GpuTest).
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 
+#include "ecs/transform_system.h"
 #include "rendergraph/vulkan/frame_ring.h"
 #include "rendergraph/vulkan/readback.h"
-#include "systems/scene_renderer.h"
+#include "sandbox/sandbox_frame.h"
+#include "systems/camera.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/primitive_meshes.h"
+#include "systems/scene/scene_builder.h"
 #include "vulkan_test_context.h"
 
 namespace sg::test {
@@ -24,14 +32,25 @@ float srgb_encode(float linear) {
   return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
 }
 
-// Distance along the ray to an oriented box grown by `margin`, if hit.
-std::optional<float> hit_box(const BoxInstance& box, glm::vec3 origin, glm::vec3 dir, float margin) {
-  BoxInstance grown = box;
+// An oriented box: extends half_extent from its center, turned by yaw about +Y.
+struct Box {
+  glm::vec3 center;
+  glm::vec3 half_extent;
+  float yaw = 0.0f;
+};
+
+ecs::LocalTransform placement(const Box& box) {
+  return {box.center, glm::angleAxis(box.yaw, glm::vec3(0, 1, 0)), 2.0f * box.half_extent};
+}
+
+// Distance along the ray to the box grown by `margin`, if hit.
+std::optional<float> hit_box(const Box& box, glm::vec3 origin, glm::vec3 dir, float margin) {
+  Box grown = box;
   grown.half_extent += glm::vec3(margin);
-  const glm::mat4 to_local = glm::inverse(model_matrix(grown));
+  const glm::mat4 to_local = glm::inverse(ecs::to_matrix(placement(grown)));
   const glm::vec3 o = glm::vec3(to_local * glm::vec4(origin, 1.0f));
   const glm::vec3 d = glm::vec3(to_local * glm::vec4(dir, 0.0f));
-  constexpr float h = 0.5f;  // model_matrix maps the cube [-h, h]^3 onto the box
+  constexpr float h = 0.5f;  // the box mesh is the cube [-h, h]^3
   float t_near = -INFINITY, t_far = INFINITY;
   for (int axis = 0; axis < 3; ++axis) {
     if (std::abs(d[axis]) < 1e-8f) {
@@ -47,72 +66,114 @@ std::optional<float> hit_box(const BoxInstance& box, glm::vec3 origin, glm::vec3
   return t_near;
 }
 
-glm::vec3 expected_floor_color(const BuiltinScene& scene, glm::vec3 point) {
-  const Material& m = scene.boxes[0].material;
+// A 20 x 20 m floor (top at y = 0), three boxes, and a sun with no shadow: every unoccluded
+// floor pixel follows the formula exactly.
+struct FloorScene {
+  sandbox::SandboxScene sandbox;
+  std::vector<Box> boxes;
+  scene::Material floor_material;
+  scene::DirectionalLight sun;
+  glm::vec3 sun_direction;
+};
+
+FloorScene make_floor_scene() {
+  FloorScene s;
+  s.sandbox.scene.name = "floor test";
+  const uint32_t box_mesh = scene::add_box_mesh(s.sandbox.scene.meshes);
+  s.floor_material.base_color = {0.6f, 0.55f, 0.5f, 1.0f};
+  scene::add_instance(s.sandbox.scene, box_mesh, placement({{0, -0.1f, 0}, {10, 0.1f, 10}}),
+                      s.floor_material);
+  s.boxes = {{{-2, 0.5f, -1}, {0.5f, 0.5f, 0.5f}, 0.3f},
+             {{2.5f, 1.0f, 1}, {0.7f, 1.0f, 0.4f}, -0.6f},
+             {{0, 0.3f, 3}, {1.0f, 0.3f, 0.6f}, 1.1f}};
+  scene::Material box_material;
+  box_material.base_color = {0.8f, 0.3f, 0.2f, 1.0f};
+  for (const Box& box : s.boxes) scene::add_instance(s.sandbox.scene, box_mesh, placement(box), box_material);
+
+  s.sun.color = {1.0f, 0.95f, 0.9f};
+  s.sun.intensity = 0.9f;
+  s.sun_direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
+  scene::ShadowSettings no_shadow;
+  no_shadow.casts_shadow = false;
+  // Lights shine down their local -Z, as cameras look: aim it like a camera.
+  const glm::quat aim = scene::look_rotation(glm::vec3(0, 10, 0), glm::vec3(0, 10, 0) + s.sun_direction);
+  scene::add_light(s.sandbox.scene, s.sun, {glm::vec3(0, 10, 0), aim, glm::vec3(1)}, no_shadow, "sun");
+  ecs::update_world_transforms(s.sandbox.scene.world, 0);
+
+  s.sandbox.pose = {{0.0f, 6.0f, 12.0f}, {0.0f, 0.0f, 0.0f}};
+  s.sandbox.lens = scene::Camera{};
+  s.sandbox.camera_source = "test";
+  return s;
+}
+
+glm::vec3 expected_floor_color(const FloorScene& s, glm::vec3 point) {
+  const scene::Material& m = s.floor_material;
+  const glm::vec3 base = glm::vec3(m.base_color);
   const glm::vec3 n(0.0f, 1.0f, 0.0f);
-  const glm::vec3 l = -scene.sun.direction;
-  const glm::vec3 v = glm::normalize(scene.camera.eye - point);
+  const glm::vec3 l = -s.sun_direction;
+  const glm::vec3 v = glm::normalize(s.sandbox.pose.eye - point);
   const glm::vec3 h = glm::normalize(l + v);
-  const glm::vec3 radiance = scene.sun.color * scene.sun.intensity;
+  const glm::vec3 radiance = s.sun.color * s.sun.intensity;
   const float n_dot_l = std::max(glm::dot(n, l), 0.0f);
   const float spec = n_dot_l > 0.0f ? std::pow(std::max(glm::dot(n, h), 0.0f), m.shininess) : 0.0f;
-  return scene.ambient * m.base_color + m.base_color * radiance * n_dot_l + m.specular * radiance * spec;
+  return SceneRenderer::ambient * base + base * radiance * n_dot_l + m.specular * radiance * spec;
 }
 
 using OffscreenRender = GpuTest;
 
 TEST_F(OffscreenRender, FloorMatchesLightingFormula) {
-  const BuiltinScene scene = make_builtin_scene();
-  SceneRenderer renderer(context, scene);
-  renderer.resize({width, height});
+  FloorScene s = make_floor_scene();
   {
     vk::FrameRing frames(context);
-    for (int i = 0; i < 2; ++i) {  // a second frame exercises the between-frame barriers
-      vk::FrameSlot& frame = frames.begin_frame();
-      renderer.record(frame.cmd, scene.camera, scene.lens);
+    sandbox::SandboxFrame frame(context, s.sandbox, sandbox::Options{}, frames.frames_in_flight());
+    frame.resize({width, height});
+    for (int i = 0; i < 3; ++i) {  // later frames exercise the between-frame barriers
+      vk::FrameSlot& slot = frames.begin_frame();
+      frame.record(slot, 0.0);
       frames.submit();
     }
-  }
-  const vk::Rgba8Image image = vk::read_rgba8(context, renderer.color_target());
-  ASSERT_EQ(image.width, width);
+    frames.wait_idle();
+    const vk::Rgba8Image image = vk::read_rgba8(context, frame.image());
+    ASSERT_EQ(image.width, width);
 
-  const glm::mat4 inverse_view_proj =
-      glm::inverse(projection_matrix(scene.lens, float(width) / float(height)) * view_matrix(scene.camera));
-  int checked = 0, mismatched = 0;
-  for (uint32_t y = 0; y < height; y += 3) {
-    for (uint32_t x = 0; x < width; x += 3) {
-      const glm::vec2 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f);
-      const glm::vec4 near_h = inverse_view_proj * glm::vec4(ndc, 0.0f, 1.0f);
-      const glm::vec4 far_h = inverse_view_proj * glm::vec4(ndc, 1.0f, 1.0f);
-      const glm::vec3 origin = glm::vec3(near_h) / near_h.w;
-      const glm::vec3 dir = glm::normalize(glm::vec3(far_h) / far_h.w - origin);
-      if (dir.y >= -1e-4f) continue;
-      const float t_floor = -origin.y / dir.y;
-      const glm::vec3 point = origin + t_floor * dir;
-      if (std::abs(point.x) > 9.5f || std::abs(point.z) > 9.5f) continue;
-      bool occluded = false;  // by a box, or too close to one's silhouette to be sure
-      for (size_t b = 1; b < scene.boxes.size(); ++b) {
-        const auto t = hit_box(scene.boxes[b], origin, dir, 0.05f);
-        occluded = occluded || (t && *t < t_floor);
-      }
-      if (occluded) continue;
+    const glm::mat4 inverse_view_proj = glm::inverse(
+        projection_matrix(s.sandbox.lens, float(width) / float(height)) * view_matrix(s.sandbox.pose));
+    int checked = 0, mismatched = 0;
+    for (uint32_t y = 0; y < height; y += 3) {
+      for (uint32_t x = 0; x < width; x += 3) {
+        const glm::vec2 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f);
+        const glm::vec4 near_h = inverse_view_proj * glm::vec4(ndc, 0.0f, 1.0f);
+        const glm::vec4 far_h = inverse_view_proj * glm::vec4(ndc, 1.0f, 1.0f);
+        const glm::vec3 origin = glm::vec3(near_h) / near_h.w;
+        const glm::vec3 dir = glm::normalize(glm::vec3(far_h) / far_h.w - origin);
+        if (dir.y >= -1e-4f) continue;
+        const float t_floor = -origin.y / dir.y;
+        const glm::vec3 point = origin + t_floor * dir;
+        if (std::abs(point.x) > 9.5f || std::abs(point.z) > 9.5f) continue;
+        bool occluded = false;  // by a box, or too close to one's silhouette to be sure
+        for (const Box& box : s.boxes) {
+          const auto t = hit_box(box, origin, dir, 0.05f);
+          occluded = occluded || (t && *t < t_floor);
+        }
+        if (occluded) continue;
 
-      const glm::vec3 expected = expected_floor_color(scene, point);
-      const uint8_t* pixel = image.at(x, y);
-      ++checked;
-      for (int c = 0; c < 3; ++c) {
-        const int want = static_cast<int>(std::lround(srgb_encode(expected[c]) * 255.0f));
-        if (std::abs(int(pixel[c]) - want) > tolerance) {
-          ++mismatched;
-          ADD_FAILURE() << "pixel (" << x << ", " << y << ") channel " << c << ": got "
-                        << int(pixel[c]) << ", formula gives " << want;
-          break;
+        const glm::vec3 expected = expected_floor_color(s, point);
+        const uint8_t* pixel = image.at(x, y);
+        ++checked;
+        for (int c = 0; c < 3; ++c) {
+          const int want = static_cast<int>(std::lround(srgb_encode(expected[c]) * 255.0f));
+          if (std::abs(int(pixel[c]) - want) > tolerance) {
+            ++mismatched;
+            ADD_FAILURE() << "pixel (" << x << ", " << y << ") channel " << c << ": got "
+                          << int(pixel[c]) << ", formula gives " << want;
+            break;
+          }
         }
       }
     }
+    EXPECT_GT(checked, 300) << "too few unoccluded floor pixels were checked to mean anything";
+    EXPECT_EQ(mismatched, 0);
   }
-  EXPECT_GT(checked, 300) << "too few unoccluded floor pixels were checked to mean anything";
-  EXPECT_EQ(mismatched, 0);
 }
 
 }  // namespace

@@ -1,0 +1,45 @@
+#pragma once
+// One host-visible buffer per frame in flight, for data the CPU rewrites every frame (instance
+// transforms, indirect draws, light records). The CPU writes slot s while the GPU may still read
+// the other slots, so no frame waits for another.
+//
+// Contract: write slot s only after FrameRing::begin_frame returned slot s (the GPU has finished
+// with it); that also makes growing (recreating) the buffer safe.
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/vulkan/resources.h"
+
+namespace sg::vk {
+
+class FrameBuffers {
+ public:
+  FrameBuffers(VulkanContext& context, VkBufferUsageFlags usage, uint32_t frames_in_flight,
+               std::string name);
+
+  // Copies `items` to the start of the slot's buffer, growing it when needed. An empty span
+  // leaves a small buffer, so descriptors always have something valid to point at.
+  template <class T>
+  const Buffer& write(uint32_t slot, std::span<const T> items) {
+    const Buffer& buffer = reserve(slot, items.size_bytes());
+    if (!items.empty()) std::memcpy(buffer.mapped(), items.data(), items.size_bytes());
+    return buffer;
+  }
+
+  const Buffer& buffer(uint32_t slot) const { return buffers_[slot]; }
+
+ private:
+  const Buffer& reserve(uint32_t slot, VkDeviceSize bytes);
+
+  VulkanContext& context_;
+  VkBufferUsageFlags usage_;
+  std::string name_;
+  std::vector<Buffer> buffers_;
+};
+
+}  // namespace sg::vk

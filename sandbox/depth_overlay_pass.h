@@ -1,0 +1,33 @@
+#pragma once
+// The render graph's extension example: a pass written outside the engine (no file in
+// rendergraph/ or systems/ knows it) that draws the camera's depth buffer, as grey, into the
+// bottom-right quarter of the frame. rendergraph/README.md walks through it.
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/vulkan/unique_handle.h"
+#include "systems/scene/camera.h"
+
+namespace sg::vk {
+class VulkanContext;
+}
+
+namespace sg::sandbox {
+
+class DepthOverlayPass {
+ public:
+  DepthOverlayPass(vk::VulkanContext& context, rg::Format colour_format);
+
+  // Reads `depth` (a D32 depth buffer rendered with `lens`), draws over `colour`, and returns
+  // `colour`'s new version.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle depth, rg::ImageHandle colour,
+                         const scene::Camera& lens) const;
+
+ private:
+  vk::UniqueSampler sampler_;
+  vk::UniqueDescriptorSetLayout set_layout_;
+  vk::UniquePipelineLayout pipeline_layout_;
+  vk::UniquePipeline pipeline_;
+};
+
+}  // namespace sg::sandbox

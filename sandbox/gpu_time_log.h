@@ -1,0 +1,34 @@
+#pragma once
+// Collects the executor's per-pass GPU timings over a run, for the summary and --stats.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rendergraph/vulkan/graph_executor.h"
+#include "sandbox/run_stats.h"
+
+namespace sg::sandbox {
+
+class GpuTimeLog {
+ public:
+  // Takes the timings of a completed frame; the same frame offered twice counts once.
+  void add(const std::optional<vk::FrameTimings>& timings);
+
+  // Sum of a frame's passes, per logged frame.
+  const std::vector<double>& frame_ms() const { return frame_ms_; }
+  // One entry per pass name, in the order passes first appeared; passes that share a name (one
+  // per light) are summed per frame.
+  std::vector<PassTime> pass_summaries() const;
+
+ private:
+  struct PassSamples {
+    std::string name;
+    std::vector<double> ms;
+  };
+  std::optional<uint64_t> last_frame_;
+  std::vector<double> frame_ms_;
+  std::vector<PassSamples> passes_;
+};
+
+}  // namespace sg::sandbox

@@ -1,0 +1,71 @@
+#pragma once
+// The sandbox's frame, built as a render graph every frame:
+//
+//   forward (scene renderer) -> [depth overlay, --depth-overlay] -> [present, in a window]
+//
+// The picture lands in the persistent "frame" image (imported into each graph, left in
+// TRANSFER_SRC), which screenshots read and the present pass blits to the swapchain image.
+// Graph shapes repeat from frame to frame, so compiled plans come from a PlanCache.
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/core/imported_states.h"
+#include "rendergraph/core/plan_cache.h"
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/vulkan/frame_ring.h"
+#include "rendergraph/vulkan/graph_executor.h"
+#include "rendergraph/vulkan/resources.h"
+#include "sandbox/depth_overlay_pass.h"
+#include "sandbox/options.h"
+#include "sandbox/scene_setup.h"
+#include "systems/scene_renderer.h"
+
+namespace sg::sandbox {
+
+// A swapchain image to present this frame on. The submission must wait for its acquire
+// semaphore at `acquire_wait_stage`.
+struct PresentTarget {
+  VkImage image = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  VkExtent2D extent{};
+};
+inline constexpr VkPipelineStageFlags2 acquire_wait_stage = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+
+class SandboxFrame {
+ public:
+  SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, const Options& options,
+               uint32_t frames_in_flight);
+
+  // (Re)creates the frame image. The GPU must not be using the old one (wait idle first).
+  void resize(VkExtent2D extent);
+
+  // Animates the scene to `time_seconds`, updates transforms and GPU buffers, builds and
+  // compiles the graph, and records it into `frame.cmd`.
+  void record(const vk::FrameSlot& frame, double time_seconds,
+              const std::optional<PresentTarget>& present = std::nullopt);
+
+  const vk::Image& image() const { return image_; }
+  const rg::RenderGraph& graph() const { return graph_; }
+  const std::shared_ptr<const rg::CompiledPlan>& plan() const { return plan_; }
+  vk::GraphExecutor& executor() { return executor_; }
+  const vk::GraphExecutor& executor() const { return executor_; }
+
+ private:
+  vk::VulkanContext& context_;
+  SandboxScene& scene_;
+  bool depth_overlay_enabled_;
+  SceneRenderer renderer_;
+  DepthOverlayPass depth_overlay_;
+  vk::GraphExecutor executor_;
+  rg::PlanCache plans_;
+  rg::ImportedStates imported_states_;
+  vk::Image image_;
+  ecs::Tick transforms_updated_ = 0;
+  rg::RenderGraph graph_;
+  std::shared_ptr<const rg::CompiledPlan> plan_;
+};
+
+}  // namespace sg::sandbox

@@ -1,0 +1,20 @@
+#version 460
+// The camera's depth buffer as grey: white at the near plane, black at `shown_distance`.
+layout(set = 0, binding = 0) uniform sampler2D depth_buffer;
+
+layout(push_constant) uniform Lens {
+  float znear;
+  float zfar;
+  float shown_distance;
+} lens;
+
+layout(location = 0) in vec2 in_uv;
+layout(location = 0) out vec4 out_color;
+
+void main() {
+  float d = texture(depth_buffer, in_uv).r;
+  // Inverse of the Vulkan [0, 1] perspective depth: view distance along the axis.
+  float view_z = lens.znear * lens.zfar / (lens.zfar - d * (lens.zfar - lens.znear));
+  float grey = 1.0 - clamp(view_z / lens.shown_distance, 0.0, 1.0);
+  out_color = vec4(vec3(grey), 1.0);
+}

@@ -1,0 +1,101 @@
+#include "systems/gpu_scene.h"
+
+#include <algorithm>
+#include <span>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "ecs/transform.h"
+#include "rendergraph/vulkan/upload.h"
+#include "systems/scene/material.h"
+#include "systems/scene/mesh_instance.h"
+
+namespace sg {
+
+GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes,
+                   uint32_t frames_in_flight)
+    : meshes_(meshes.meshes),
+      instances_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "instances"),
+      draws_(context, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, frames_in_flight, "indirect draws") {
+  if (meshes.indices.empty()) return;  // nothing to draw, and Vulkan refuses empty buffers
+  constexpr VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  vertices_ = vk::Buffer(context, {meshes.vertices.size() * sizeof(scene::Vertex),
+                                   dst | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUsage::gpu_only,
+                                   "scene vertices"});
+  indices_ = vk::Buffer(context, {meshes.indices.size() * sizeof(uint32_t),
+                                  dst | VK_BUFFER_USAGE_INDEX_BUFFER_BIT, vk::MemoryUsage::gpu_only,
+                                  "scene indices"});
+  vk::UploadBatch upload(context);
+  upload.copy(vertices_, std::span<const scene::Vertex>(meshes.vertices));
+  upload.copy(indices_, std::span<const uint32_t>(meshes.indices));
+  upload.submit();
+}
+
+void GpuScene::update(ecs::World& world, uint32_t slot) {
+  items_.clear();
+  gathered_.clear();
+  const scene::Material default_material;
+  world.query<const ecs::WorldTransform, const scene::MeshInstance>().for_each(
+      [&](ecs::Entity entity, const ecs::WorldTransform& transform, const scene::MeshInstance& mesh) {
+        const scene::Material* found = world.try_get<scene::Material>(entity);
+        const scene::Material& material = found ? *found : default_material;
+        items_.push_back({mesh.mesh, mesh.casts_shadow, static_cast<uint32_t>(gathered_.size())});
+        gathered_.push_back({transform.matrix, glm::inverseTranspose(transform.matrix),
+                             glm::vec4(glm::vec3(material.base_color), material.specular),
+                             glm::vec4(material.shininess, 0.0f, 0.0f, 0.0f)});
+      });
+  std::sort(items_.begin(), items_.end(), [](const Item& a, const Item& b) {
+    return a.mesh != b.mesh ? a.mesh < b.mesh : a.caster > b.caster;
+  });
+
+  sorted_.clear();
+  commands_.clear();
+  caster_commands_.clear();
+  caster_count_ = 0;
+  // One command per mesh over its instances; the caster prefix of each range gets its own
+  // command, appended after the "all" list.
+  for (size_t begin = 0; begin < items_.size();) {
+    const uint32_t mesh = items_[begin].mesh;
+    size_t end = begin;
+    uint32_t casters = 0;
+    for (; end < items_.size() && items_[end].mesh == mesh; ++end) casters += items_[end].caster;
+    const scene::MeshRange& range = meshes_[mesh];
+    const auto first_instance = static_cast<uint32_t>(sorted_.size());
+    for (size_t i = begin; i < end; ++i) sorted_.push_back(gathered_[items_[i].index]);
+    if (range.index_count > 0) {
+      const VkDrawIndexedIndirectCommand command{range.index_count, static_cast<uint32_t>(end - begin),
+                                                 range.first_index,
+                                                 static_cast<int32_t>(range.vertex_offset), first_instance};
+      commands_.push_back(command);
+      if (casters > 0) {
+        VkDrawIndexedIndirectCommand caster = command;
+        caster.instanceCount = casters;
+        caster_commands_.push_back(caster);
+      }
+    }
+    caster_count_ += casters;
+    begin = end;
+  }
+  draw_count_ = static_cast<uint32_t>(commands_.size());
+  caster_draw_count_ = static_cast<uint32_t>(caster_commands_.size());
+  commands_.insert(commands_.end(), caster_commands_.begin(), caster_commands_.end());
+  instance_count_ = static_cast<uint32_t>(sorted_.size());
+
+  instances_.write(slot, std::span<const GpuInstance>(sorted_));
+  draws_.write(slot, std::span<const VkDrawIndexedIndirectCommand>(commands_));
+}
+
+void GpuScene::draw(VkCommandBuffer cmd, uint32_t slot, DrawSet set) const {
+  const uint32_t count = set == DrawSet::all ? draw_count_ : caster_draw_count_;
+  if (count == 0 || vertices_.handle() == VK_NULL_HANDLE) return;
+  const VkBuffer vertex_buffer = vertices_.handle();
+  const VkDeviceSize zero = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &zero);
+  vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+  const VkDeviceSize offset =
+      set == DrawSet::all ? 0 : VkDeviceSize{draw_count_} * sizeof(VkDrawIndexedIndirectCommand);
+  vkCmdDrawIndexedIndirect(cmd, draws_.buffer(slot).handle(), offset, count,
+                           sizeof(VkDrawIndexedIndirectCommand));
+}
+
+}  // namespace sg
