@@ -50,9 +50,7 @@ CLI::Validator fraction() {
 
 }  // namespace
 
-ParseResult parse_options(int argc, char** argv) {
-  Options o;
-  CLI::App app{"Shadowgraph sandbox: renders a scene in a window, or headless to a PNG."};
+void add_options(CLI::App& app, Options& o) {
   app.add_flag("--headless", o.headless, "Render offscreen even when a display is available");
   app.add_option("--width", o.width, "Output width in pixels")->check(CLI::Range(1u, 16384u));
   app.add_option("--height", o.height, "Output height in pixels")->check(CLI::Range(1u, 16384u));
@@ -97,6 +95,12 @@ ParseResult parse_options(int argc, char** argv) {
       ->transform(whole_number(0, std::numeric_limits<std::uint64_t>::max()))
       ->capture_default_str();
   app.add_option("--stats", o.stats_path, "Write facts about the run to this JSON file");
+}
+
+ParseResult parse_options(int argc, char** argv) {
+  Options o;
+  CLI::App app{"Shadowgraph sandbox: renders a scene in a window, or headless to a PNG."};
+  add_options(app, o);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -8,6 +8,10 @@
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"
 
+namespace CLI {
+class App;
+}
+
 namespace sg::sandbox {
 
 struct Options {
@@ -40,6 +44,10 @@ struct ParseResult {
   int exit_code = 0;
 };
 ParseResult parse_options(int argc, char** argv);
+
+// Registers the sandbox's options on `app`, writing into `options`: for tools that render the
+// sandbox's frame and add options of their own.
+void add_options(CLI::App& app, Options& options);
 
 // The Vulkan context the options ask for (device, validation); presentation off.
 vk::ContextOptions context_options(const Options& options);

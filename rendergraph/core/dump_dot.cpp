@@ -59,15 +59,28 @@ std::string to_dot(const RenderGraph& graph, const CompiledPlan& plan) {
     } else {
       dot << "label=\"#" << position[p] << " " << escaped(pass.name) << "\\n" << queue_name(pass.queue) << "\"];\n";
     }
-    for (const ResourceAccess& access : pass.accesses) {
+    const auto draw_version = [&](const ResourceAccess& access) {
       const ResourceDeclaration& resource = resources[access.resource];
-      if (drawn_versions.emplace(access.resource, access.version).second) {
+      if (!drawn_versions.emplace(access.resource, access.version).second) return;
+      dot << "  ";
+      write_version_node(dot, access);
+      dot << " [shape=ellipse, label=\"" << escaped(resource.name) << " v" << access.version
+          << (resource.imported ? "\\nimported" : "") << "\"];\n";
+    };
+    for (const ResourceAccess& access : pass.accesses) {
+      draw_version(access);
+      write_edge(dot, p, access, resources[access.resource]);
+      // A write without a clear keeps the earlier contents outside (or under) what it draws:
+      // it depends on the version it replaces, shown dashed.
+      const bool has_contents = access.version > 1 || resources[access.resource].imported;
+      if (access.direction == Direction::write && !access.clear && has_contents) {
+        ResourceAccess consumed = access;
+        consumed.version = access.version - 1;
+        draw_version(consumed);
         dot << "  ";
-        write_version_node(dot, access);
-        dot << " [shape=ellipse, label=\"" << escaped(resource.name) << " v" << access.version
-            << (resource.imported ? "\\nimported" : "") << "\"];\n";
+        write_version_node(dot, consumed);
+        dot << " -> p" << p << " [style=dashed, label=\"previous contents\"];\n";
       }
-      write_edge(dot, p, access, resource);
     }
   }
   dot << "}\n";

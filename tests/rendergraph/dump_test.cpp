@@ -59,6 +59,9 @@ TEST_F(Dumps, DotShowsPassesVersionsUsagesAndGreysCulledPasses) {
   EXPECT_TRUE(mentions(dot, "r1v1 [shape=ellipse, label=\"swapchain v1\\nimported\"]"));
   EXPECT_TRUE(mentions(dot, "p0 -> r0v1 [label=\"depth_attachment\\nmip 0, layer 2\"]"));
   EXPECT_TRUE(mentions(dot, "r0v1 -> p1 [label=\"sampled_fragment\"]"));
+  // The atlas layer is drawn without a clear: the pass also depends on the imported contents.
+  EXPECT_TRUE(mentions(dot, "r0v0 [shape=ellipse, label=\"atlas v0\\nimported\"]"));
+  EXPECT_TRUE(mentions(dot, "r0v0 -> p0 [style=dashed, label=\"previous contents\"]"));
   EXPECT_EQ(dot.back(), '\n');
 }
 
