@@ -1,0 +1,39 @@
+// One light as the shaders see it: every light of the frame is one element of the Lights
+// storage buffer (lights_interface.glsl). Must match sg::shadows::GpuLight
+// (systems/shadows/gpu_light.h); tests/shadows/light_record_layout_test.cpp compares the two
+// from glslang's reflection of this declaration. std430, every member 16-byte aligned: 208 bytes.
+#ifndef SG_LIGHT_RECORD_GLSL
+#define SG_LIGHT_RECORD_GLSL
+
+const uint LIGHT_POINT = 0u;
+const uint LIGHT_SPOT = 1u;
+const uint LIGHT_DIRECTIONAL = 2u;
+const uint LIGHT_CYLINDER = 3u;
+
+const uint FALLOFF_LINEAR_WINDOW = 0u;
+const uint FALLOFF_GLTF_PUNCTUAL = 1u;
+
+const uint SHADOW_HARD = 0u;
+const uint SHADOW_PCF = 1u;
+const uint SHADOW_NOISE = 2u;
+const uint SHADOW_PCSS = 3u;
+const uint SHADOW_PCSS_NOISE = 4u;
+
+const uint NO_SHADOW_MAP = 0xFFFFFFFFu;
+
+struct Light {
+  vec4 position_range;        // xyz: world position (point, spot, cylinder); w: range R (point, spot; 0 otherwise)
+  vec4 direction_type;        // xyz: unit direction the light travels (spot, directional, cylinder); w: unused
+  vec4 color_intensity;       // rgb: linear colour; a: intensity
+  vec4 shape;                 // spot: x cos(inner), y cos(outer); cylinder: z inner radius r, w outer radius R
+  vec4 shadow_color_density;  // rgb: shadow colour sc; a: density
+  vec4 shadow_bias;           // x: constant bias b0, y: slope bias b1, z: pcf radius (texels), w: light size (world units)
+  uvec4 info;                 // x: type (LIGHT_*); y: falloff (FALLOFF_*); z: algorithm (SHADOW_*);
+                              // w: shadow map index (2D: atlas layer; point: cube index) or NO_SHADOW_MAP
+  vec4 shadow_rect;           // 2D maps: xy uv offset, zw uv scale of the light's square region in its layer
+  vec4 shadow_depth;          // x: near, y: far, z: texel size in uv of the light's map (1/resolution),
+                              // w: 0 perspective, 1 orthographic
+  mat4 shadow_matrix;         // world -> light clip space (Vulkan, depth [0,1]) for 2D maps
+};
+
+#endif

@@ -1,0 +1,79 @@
+#include "systems/shadows/gpu_light.h"
+
+#include <cmath>
+
+namespace sg::shadows {
+namespace {
+
+std::uint32_t to_gpu(GpuLightType type) { return static_cast<std::uint32_t>(type); }
+std::uint32_t to_gpu(scene::FalloffMode falloff) { return static_cast<std::uint32_t>(falloff); }
+std::uint32_t to_gpu(scene::ShadowAlgorithm algorithm) {
+  return static_cast<std::uint32_t>(algorithm);
+}
+
+// The fields every light type fills the same way.
+GpuLight common_record(GpuLightType type, glm::vec3 color, float intensity,
+                       const scene::ShadowSettings& shadow) {
+  GpuLight record;
+  record.color_intensity = glm::vec4(color, intensity);
+  record.shadow_color_density = glm::vec4(shadow.shadow_color, shadow.density);
+  record.shadow_bias =
+      glm::vec4(shadow.constant_bias, shadow.slope_bias, shadow.pcf_radius, shadow.light_size);
+  record.info = glm::uvec4(to_gpu(type), 0u, to_gpu(shadow.algorithm), no_shadow_map);
+  return record;
+}
+
+}  // namespace
+
+GpuLight pack_light(const scene::PointLight& light, const ecs::WorldTransform& world,
+                    const scene::ShadowSettings& shadow) {
+  GpuLight record = common_record(GpuLightType::point, light.color, light.intensity, shadow);
+  record.position_range = glm::vec4(scene::light_position(world), light.range);
+  record.info.y = to_gpu(light.falloff);
+  return record;
+}
+
+GpuLight pack_light(const scene::SpotLight& light, const ecs::WorldTransform& world,
+                    const scene::ShadowSettings& shadow) {
+  GpuLight record = common_record(GpuLightType::spot, light.color, light.intensity, shadow);
+  record.position_range = glm::vec4(scene::light_position(world), light.range);
+  record.direction_type = glm::vec4(scene::light_direction(world), 0.0f);
+  record.shape = glm::vec4(std::cos(light.inner_cone), std::cos(light.outer_cone), 0.0f, 0.0f);
+  record.info.y = to_gpu(light.falloff);
+  return record;
+}
+
+GpuLight pack_light(const scene::DirectionalLight& light, const ecs::WorldTransform& world,
+                    const scene::ShadowSettings& shadow) {
+  GpuLight record =
+      common_record(GpuLightType::directional, light.color, light.intensity, shadow);
+  record.direction_type = glm::vec4(scene::light_direction(world), 0.0f);
+  return record;
+}
+
+GpuLight pack_light(const scene::CylinderLight& light, const ecs::WorldTransform& world,
+                    const scene::ShadowSettings& shadow) {
+  GpuLight record = common_record(GpuLightType::cylinder, light.color, light.intensity, shadow);
+  record.position_range = glm::vec4(scene::light_position(world), 0.0f);
+  record.direction_type = glm::vec4(scene::light_direction(world), 0.0f);
+  record.shape = glm::vec4(0.0f, 0.0f, light.inner_radius, light.outer_radius);
+  return record;
+}
+
+void set_shadow_map(GpuLight& light, std::uint32_t atlas_layer, const glm::vec4& uv_rect,
+                    std::uint32_t resolution, const LightView& view) {
+  light.info.w = atlas_layer;
+  light.shadow_rect = uv_rect;
+  light.shadow_depth = glm::vec4(view.near, view.far, 1.0f / float(resolution),
+                                 view.orthographic ? 1.0f : 0.0f);
+  light.shadow_matrix = view.view_projection();
+}
+
+void set_shadow_cube(GpuLight& light, std::uint32_t cube_index, std::uint32_t resolution,
+                     const CubeViews& cube) {
+  light.info.w = cube_index;
+  light.shadow_rect = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
+  light.shadow_depth = glm::vec4(cube.near, cube.far, 1.0f / float(resolution), 0.0f);
+}
+
+}  // namespace sg::shadows

@@ -1,0 +1,72 @@
+#pragma once
+// The GPU record of one light: all lights of a frame are one array of GpuLight in one storage
+// buffer, read by the lighting shaders as `Light lights[]` (shaders/light_record.glsl, whose
+// field comments say what each component holds). tests/shadows/light_record_layout_test.cpp
+// checks every offset against glslang's reflection of the shader declaration.
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "ecs/transform.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/shadow_settings.h"
+#include "systems/shadows/light_views.h"
+
+namespace sg::shadows {
+
+// info.x; the values of LIGHT_* in light_record.glsl.
+enum class GpuLightType : std::uint32_t { point = 0, spot = 1, directional = 2, cylinder = 3 };
+
+// info.w of a light that casts no shadow (NO_SHADOW_MAP in light_record.glsl).
+inline constexpr std::uint32_t no_shadow_map = 0xFFFFFFFFu;
+
+struct GpuLight {
+  glm::vec4 position_range{0.0f};
+  glm::vec4 direction_type{0.0f};
+  glm::vec4 color_intensity{0.0f};
+  glm::vec4 shape{0.0f};
+  glm::vec4 shadow_color_density{0.0f};
+  glm::vec4 shadow_bias{0.0f};
+  glm::uvec4 info{0u, 0u, 0u, no_shadow_map};  // type, falloff, algorithm, shadow map index
+  glm::vec4 shadow_rect{0.0f, 0.0f, 1.0f, 1.0f};
+  glm::vec4 shadow_depth{0.0f};
+  glm::mat4 shadow_matrix{1.0f};
+};
+static_assert(sizeof(GpuLight) == 208);
+static_assert(offsetof(GpuLight, direction_type) == 16);
+static_assert(offsetof(GpuLight, color_intensity) == 32);
+static_assert(offsetof(GpuLight, shape) == 48);
+static_assert(offsetof(GpuLight, shadow_color_density) == 64);
+static_assert(offsetof(GpuLight, shadow_bias) == 80);
+static_assert(offsetof(GpuLight, info) == 96);
+static_assert(offsetof(GpuLight, shadow_rect) == 112);
+static_assert(offsetof(GpuLight, shadow_depth) == 128);
+static_assert(offsetof(GpuLight, shadow_matrix) == 144);
+
+// A light's record from its components: position and direction from its world transform
+// (scene::light_position, scene::light_direction), parameters from the light, the shadow
+// algorithm and its parameters from `shadow`. The record has no shadow map
+// (info.w == no_shadow_map) until set_shadow_map or set_shadow_cube gives it one; lights whose
+// ShadowSettings::casts_shadow is false are meant to stay that way.
+GpuLight pack_light(const scene::PointLight& light, const ecs::WorldTransform& world,
+                    const scene::ShadowSettings& shadow);
+GpuLight pack_light(const scene::SpotLight& light, const ecs::WorldTransform& world,
+                    const scene::ShadowSettings& shadow);
+GpuLight pack_light(const scene::DirectionalLight& light, const ecs::WorldTransform& world,
+                    const scene::ShadowSettings& shadow);
+GpuLight pack_light(const scene::CylinderLight& light, const ecs::WorldTransform& world,
+                    const scene::ShadowSettings& shadow);
+
+// Gives a spot, directional or cylinder light its 2D map: the square region `uv_rect` (xy
+// offset, zw scale, in uv of the atlas layer) of atlas layer `atlas_layer`, `resolution`
+// texels wide, rendered with `view`.
+void set_shadow_map(GpuLight& light, std::uint32_t atlas_layer, const glm::vec4& uv_rect,
+                    std::uint32_t resolution, const LightView& view);
+
+// Gives a point light cube `cube_index` of the cube-map array (layers 6 * cube_index + face),
+// `resolution` texels per face side, rendered with `cube` (point_light_cube).
+void set_shadow_cube(GpuLight& light, std::uint32_t cube_index, std::uint32_t resolution,
+                     const CubeViews& cube);
+
+}  // namespace sg::shadows
