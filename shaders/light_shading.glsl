@@ -1,0 +1,60 @@
+// Every light's contribution at a surface point (../shared/ALGORITHMS.md section 2), each with
+// its own shadow algorithm (shadow_sampling.glsl). Include this instead of lighting.glsl, which
+// it includes (lighting.glsl has no include guard). The ambient term is not part of the sum:
+// add it once per fragment, as blinn_light expects.
+#ifndef SG_LIGHT_SHADING_GLSL
+#define SG_LIGHT_SHADING_GLSL
+
+#include "lighting.glsl"
+#include "light_formulas.glsl"
+#include "lights_interface.glsl"
+#include "shadow_sampling.glsl"
+
+// One light at world_pos. `reach` folds the light's falloff, spot cone and cylinder lambda
+// into its radiance; where it is zero the light adds nothing (not even shadow colour) and its
+// shadow map is not read. The shadow colour term is weighted by lambda as section 2's formula
+// has it (lambda is 1 for every light but the cylinder).
+vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
+  uint type = light.info.x;
+  vec3 to_light;
+  float reach = 1.0;
+  float lambda = 1.0;
+  if (type == LIGHT_DIRECTIONAL) {
+    to_light = -light.direction_type.xyz;
+  } else if (type == LIGHT_CYLINDER) {
+    // A beam of parallel rays along T: L is -T everywhere, as its orthographic map assumes.
+    vec3 axis = light.direction_type.xyz;
+    vec3 from_light = world_pos - light.position_range.xyz;
+    to_light = -axis;
+    lambda = cylinder_lambda(dot(axis, from_light), length(cross(axis, from_light)),
+                             light.shape.z, light.shape.w);
+    reach = lambda;
+  } else {
+    vec3 offset = light.position_range.xyz - world_pos;
+    float distance = length(offset);
+    to_light = offset / max(distance, 1e-6);
+    float range = light.position_range.w;
+    reach = light.info.y == FALLOFF_GLTF_PUNCTUAL ? falloff_gltf_punctual(distance, range)
+                                                  : falloff_linear_window(distance, range);
+    if (type == LIGHT_SPOT) {
+      reach *= spot_cone(dot(light.direction_type.xyz, -to_light), light.shape.x, light.shape.y);
+    }
+  }
+  if (reach <= 0.0) return vec3(0.0);
+
+  float shade = light_shadow(light, world_pos, dot(p.normal, to_light));
+  vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * reach;
+  return blinn_light(p, to_light, radiance, shade, light.shadow_color_density.a,
+                     lambda * light.shadow_color_density.rgb);
+}
+
+// The sum over lights[0 .. light_count) at world_pos, without ambient.
+vec3 shade_lights(SurfacePoint p, vec3 world_pos, uint light_count) {
+  vec3 color = vec3(0.0);
+  for (uint i = 0u; i < light_count; ++i) {
+    color += shade_light(lights[i], p, world_pos);
+  }
+  return color;
+}
+
+#endif

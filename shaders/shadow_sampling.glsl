@@ -1,0 +1,308 @@
+// The five per-light shadow algorithms of ../shared/ALGORITHMS.md section 4, on 2D maps (spot,
+// directional and cylinder lights: a square region of one shadow_atlas layer) and on point
+// lights' cube maps. Entry point: light_shadow(). Every function returns the shadow factor
+// `shade` in [0, 1], 1 = fully shadowed; a point outside the map or beyond its far plane is lit.
+//
+// Depths are compared as *normalized linear depth*, so that a bias means the same distance
+// anywhere in a map: view depth / far for perspective 2D maps (the stored depth is converted,
+// light_formulas.glsl), the stored depth itself for orthographic maps (linear over near..far),
+// and distance / far for cube maps, which store exactly that (shadow_cube.frag).
+//
+// Samplers (lights_interface.glsl): shadow_atlas and shadow_cubes plain reads with a NEAREST
+// sampler; shadow_atlas_compare a comparison sampler over the same image with LINEAR filtering
+// (each fetch is a 2x2 bilinear PCF) and VK_COMPARE_OP_LESS_OR_EQUAL (1 = lit). Every fetch has an
+// explicit level of detail, as lights are evaluated in non-uniform control flow.
+//
+// Kernels: pcf a 3x3 grid (the source's), noise 16 Gaussian offsets, pcss 16 blocker-search and
+// 32 filter samples of a Poisson disk on 2D maps and the 20 directions of section 4 on cube maps;
+// pcss_noise the same kernels rotated randomly per surface point.
+#ifndef SG_SHADOW_SAMPLING_GLSL
+#define SG_SHADOW_SAMPLING_GLSL
+
+#include "light_formulas.glsl"
+#include "lights_interface.glsl"
+
+const int PCF_HALF_WIDTH = 1;  // (2k + 1)^2 = 9 taps
+const uint NOISE_SAMPLES = 16u;
+const uint PCSS_BLOCKER_SAMPLES = 16u;
+const uint PCSS_FILTER_SAMPLES = 32u;
+
+// Mitchell's best-candidate points in the unit disk: every prefix is well spread, so the
+// blocker search uses the first 16 and the filter all 32.
+const vec2 POISSON_DISK[32] = vec2[](
+    vec2(0.5867, 0.6439), vec2(-0.6497, -0.6319), vec2(-0.7711, 0.6312), vec2(0.6956, -0.6727),
+    vec2(0.0117, -0.0660), vec2(-0.1406, 0.9737), vec2(0.0031, -0.9956), vec2(0.9012, 0.0402),
+    vec2(-0.9934, -0.0583), vec2(-0.2636, 0.4069), vec2(0.1924, -0.5298), vec2(-0.5277, -0.1600),
+    vec2(0.4234, 0.1911), vec2(0.5643, -0.2443), vec2(0.1106, 0.6065), vec2(-0.2136, -0.6078),
+    vec2(-0.6894, 0.2220), vec2(0.3802, -0.9181), vec2(0.3466, 0.9328), vec2(0.9297, -0.3571),
+    vec2(-0.4298, 0.7374), vec2(-0.3782, -0.9227), vec2(0.8772, 0.4355), vec2(-0.9085, -0.3986),
+    vec2(0.0279, 0.2665), vec2(-0.3129, 0.0729), vec2(-0.2628, -0.3027), vec2(0.3059, -0.1001),
+    vec2(-0.9655, 0.2401), vec2(-0.5435, 0.4605), vec2(0.7017, 0.2276), vec2(0.3719, 0.4599));
+
+// Section 4's offsets around fragToLight for cube maps.
+const uint CUBE_OFFSET_COUNT = 20u;
+const vec3 CUBE_OFFSETS[20] = vec3[](
+    vec3(1, 1, 1), vec3(1, -1, 1), vec3(-1, -1, 1), vec3(-1, 1, 1),
+    vec3(1, 1, -1), vec3(1, -1, -1), vec3(-1, -1, -1), vec3(-1, 1, -1),
+    vec3(1, 1, 0), vec3(1, -1, 0), vec3(-1, -1, 0), vec3(-1, 1, 0),
+    vec3(1, 0, 1), vec3(-1, 0, 1), vec3(1, 0, -1), vec3(-1, 0, -1),
+    vec3(0, 1, 1), vec3(0, -1, 1), vec3(0, -1, -1), vec3(0, 1, -1));
+
+// ---- randomness, stable per surface point (light_formulas.glsl: surface_random) ----
+
+mat2 random_rotation_2d(vec3 world_pos) {
+  float angle = 6.28318531 * surface_random(world_pos, 1000u).x;
+  float c = cos(angle), s = sin(angle);
+  return mat2(c, s, -s, c);
+}
+
+// A uniformly random rotation, as a unit quaternion from four Gaussian numbers.
+vec4 random_rotation_3d(vec3 world_pos) {
+  vec3 u = surface_random(world_pos, 1000u);
+  vec3 w = surface_random(world_pos, 1001u);
+  return normalize(vec4(gaussian_pair(u.xy), gaussian_pair(vec2(u.z, w.x))));
+}
+
+vec3 rotate(vec4 q, vec3 v) {
+  return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v);
+}
+
+// ---- 2D maps ----
+
+struct MapPoint {
+  vec2 uv;           // in the light's own square map, [0, 1]^2
+  float depth;       // normalized linear depth of the receiver
+  float view_depth;  // its distance along the light's axis, world units
+};
+
+bool map_is_orthographic(Light light) { return light.shadow_depth.w > 0.5; }
+
+float map_linear_depth(Light light, float stored_depth) {
+  if (map_is_orthographic(light)) return stored_depth;
+  return perspective_view_depth(stored_depth, light.shadow_depth.x, light.shadow_depth.y) /
+         light.shadow_depth.y;
+}
+
+float map_stored_depth(Light light, float linear_depth) {
+  if (map_is_orthographic(light)) return linear_depth;
+  return perspective_stored_depth(linear_depth * light.shadow_depth.y, light.shadow_depth.x,
+                                  light.shadow_depth.y);
+}
+
+float map_view_depth(Light light, float linear_depth) {
+  float near = light.shadow_depth.x, far = light.shadow_depth.y;
+  return map_is_orthographic(light) ? near + linear_depth * (far - near) : linear_depth * far;
+}
+
+// Section 3's lookup: proj = M_b * shadow_matrix * world, divided by w. Vulkan's NDC y points
+// down like the framebuffer the map was rendered to, so M_b is (x + 1) / 2 on both axes.
+bool project_to_map(Light light, vec3 world_pos, out MapPoint point) {
+  vec4 clip = light.shadow_matrix * vec4(world_pos, 1.0);
+  point.uv = vec2(0.0);
+  point.depth = 0.0;
+  point.view_depth = 0.0;
+  if (clip.w <= 0.0) return false;  // behind a perspective light
+  vec3 ndc = clip.xyz / clip.w;
+  point.uv = ndc.xy * 0.5 + 0.5;
+  if (any(lessThan(point.uv, vec2(0.0))) || any(greaterThan(point.uv, vec2(1.0))) ||
+      ndc.z < 0.0 || ndc.z > 1.0) {
+    return false;
+  }
+  point.depth = map_linear_depth(light, ndc.z);
+  point.view_depth = map_view_depth(light, point.depth);
+  return true;
+}
+
+// Atlas coordinates of map uv `uv`, held half a texel inside the light's region so that
+// filtered fetches never read a neighbour's texels.
+vec3 atlas_coord(Light light, vec2 uv) {
+  float half_texel = 0.5 * light.shadow_depth.z;
+  vec2 inside = clamp(uv, vec2(half_texel), vec2(1.0 - half_texel));
+  return vec3(light.shadow_rect.xy + inside * light.shadow_rect.zw, float(light.info.w));
+}
+
+float fetch_linear_depth(Light light, vec2 uv) {
+  return map_linear_depth(light, textureLod(shadow_atlas, atlas_coord(light, uv), 0.0).r);
+}
+
+// Bilinear 2x2 PCF of the hardware: the shadowed fraction around uv for a stored-depth reference.
+float compare_filtered(Light light, vec2 uv, float reference_stored) {
+  vec4 coord = vec4(atlas_coord(light, uv), reference_stored);
+  return 1.0 - textureGrad(shadow_atlas_compare, coord, vec2(0.0), vec2(0.0));
+}
+
+// 4.1: z - bias > depth(uv) ? 1 : 0, on the nearest texel.
+float shadow_2d_hard(Light light, MapPoint point, float reference) {
+  return reference > fetch_linear_depth(light, point.uv) ? 1.0 : 0.0;
+}
+
+// 4.2: the hard test averaged over a (2k+1)^2 grid of offsets (x, y) * texel * pcfRadius.
+float shadow_2d_pcf(Light light, MapPoint point, float reference_stored) {
+  float step_uv = light.shadow_bias.z * light.shadow_depth.z;
+  float sum = 0.0;
+  for (int y = -PCF_HALF_WIDTH; y <= PCF_HALF_WIDTH; ++y) {
+    for (int x = -PCF_HALF_WIDTH; x <= PCF_HALF_WIDTH; ++x) {
+      sum += compare_filtered(light, point.uv + vec2(x, y) * step_uv, reference_stored);
+    }
+  }
+  float taps = float((2 * PCF_HALF_WIDTH + 1) * (2 * PCF_HALF_WIDTH + 1));
+  return sum / taps;
+}
+
+// 4.3: like pcf with Gaussian offsets (r1, r2) * sigma, sigma = pcfRadius texels.
+float shadow_2d_noise(Light light, MapPoint point, float reference_stored, vec3 world_pos) {
+  float sigma_uv = light.shadow_bias.z * light.shadow_depth.z;
+  float sum = 0.0;
+  for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
+    vec2 offset = gaussian_pair(surface_random(world_pos, i).xy) * sigma_uv;
+    sum += compare_filtered(light, point.uv + offset, reference_stored);
+  }
+  return sum / float(NOISE_SAMPLES);
+}
+
+// 4.4 and 4.5. Radii are chosen in world units on the receiver's plane (facing the light) and
+// converted to map uv there (map_uv_per_world_unit). The blocker search covers light_size
+// around the receiver, which finds every blocker whose penumbra reaches it from the far two
+// thirds of the way to a perspective light (zBlocker >= zReceiver / 3); nearer blockers would need
+// most of the map searched. The filter radius is half the penumbra width, so the transition
+// from lit to shadowed is w wide, and at least one texel, so contact shadows stay antialiased.
+float shadow_2d_pcss(Light light, MapPoint point, float reference, bool jitter, vec3 world_pos) {
+  bool orthographic = map_is_orthographic(light);
+  float light_size = light.shadow_bias.w;
+  float uv_per_unit = map_uv_per_world_unit(projection_x_scale(light.shadow_matrix),
+                                            point.view_depth, orthographic);
+  mat2 rotation = jitter ? random_rotation_2d(world_pos) : mat2(1.0);
+
+  float search_uv = light_size * uv_per_unit;
+  float blocker_sum = 0.0;
+  float blockers = 0.0;
+  for (uint i = 0u; i < PCSS_BLOCKER_SAMPLES; ++i) {
+    float depth = fetch_linear_depth(light, point.uv + rotation * POISSON_DISK[i] * search_uv);
+    if (depth < reference) {
+      blocker_sum += depth;
+      blockers += 1.0;
+    }
+  }
+  if (blockers == 0.0) return 0.0;
+
+  float blocker = map_view_depth(light, blocker_sum / blockers);
+  float width = orthographic
+                    ? orthographic_penumbra_width(point.view_depth, blocker, light_size)
+                    : pcss_penumbra_width(point.view_depth, blocker, light_size);
+  float radius_uv = max(0.5 * width * uv_per_unit, light.shadow_depth.z);
+  float reference_stored = map_stored_depth(light, reference);
+  float sum = 0.0;
+  for (uint i = 0u; i < PCSS_FILTER_SAMPLES; ++i) {
+    sum += compare_filtered(light, point.uv + rotation * POISSON_DISK[i] * radius_uv,
+                            reference_stored);
+  }
+  return sum / float(PCSS_FILTER_SAMPLES);
+}
+
+float shadow_2d(Light light, vec3 world_pos, float bias) {
+  MapPoint point;
+  if (!project_to_map(light, world_pos, point)) return 0.0;
+  float reference = point.depth - bias;
+  uint algorithm = light.info.z;
+  if (algorithm == SHADOW_HARD) return shadow_2d_hard(light, point, reference);
+  if (algorithm == SHADOW_PCF) {
+    return shadow_2d_pcf(light, point, map_stored_depth(light, reference));
+  }
+  if (algorithm == SHADOW_NOISE) {
+    return shadow_2d_noise(light, point, map_stored_depth(light, reference), world_pos);
+  }
+  return shadow_2d_pcss(light, point, reference, algorithm == SHADOW_PCSS_NOISE, world_pos);
+}
+
+// ---- cube maps (point lights) ----
+
+// Stored distance / far in direction `direction` from the light.
+float fetch_cube_depth(Light light, vec3 direction) {
+  return textureLod(shadow_cubes, vec4(direction, float(light.info.w)), 0.0).r;
+}
+
+float cube_occluded(Light light, vec3 direction, float reference) {
+  return reference > fetch_cube_depth(light, direction) ? 1.0 : 0.0;
+}
+
+// The k-th kernel offset of pcf and pcss, optionally rotated (pcss_noise).
+vec3 cube_offset(uint k, bool jitter, vec4 rotation) {
+  return jitter ? rotate(rotation, CUBE_OFFSETS[k]) : CUBE_OFFSETS[k];
+}
+
+// PCSS on a cube map with shadow_2d_pcss's radii, in world units directly: an offset moves the
+// lookup direction by its part perpendicular to fragToLight (the part along it only changes the
+// length, which a cube lookup ignores), so radii act at the receiver's distance.
+float shadow_cube_pcss(Light light, vec3 to_fragment, float distance, float reference,
+                       bool jitter, vec3 world_pos) {
+  float far = light.shadow_depth.y;
+  float light_size = light.shadow_bias.w;
+  vec4 rotation = jitter ? random_rotation_3d(world_pos) : vec4(0.0, 0.0, 0.0, 1.0);
+
+  float blocker_sum = 0.0;
+  float blockers = 0.0;
+  for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
+    vec3 direction = to_fragment + cube_offset(k, jitter, rotation) * light_size;
+    float depth = fetch_cube_depth(light, direction);
+    if (depth < reference) {
+      blocker_sum += depth;
+      blockers += 1.0;
+    }
+  }
+  if (blockers == 0.0) return 0.0;
+
+  float blocker = blocker_sum / blockers * far;
+  float width = pcss_penumbra_width(distance, blocker, light_size);
+  float radius = max(0.5 * width, cube_texel_world_size(distance, light.shadow_depth.z));
+  float sum = 0.0;
+  for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
+    vec3 direction = to_fragment + cube_offset(k, jitter, rotation) * radius;
+    sum += cube_occluded(light, direction, reference);
+  }
+  return sum / float(CUBE_OFFSET_COUNT);
+}
+
+float shadow_cube(Light light, vec3 world_pos, float bias) {
+  vec3 to_fragment = world_pos - light.position_range.xyz;
+  float distance = length(to_fragment);
+  float depth = distance / light.shadow_depth.y;
+  if (depth > 1.0) return 0.0;
+  float reference = depth - bias;
+  uint algorithm = light.info.z;
+  if (algorithm == SHADOW_HARD) return cube_occluded(light, to_fragment, reference);
+
+  // pcfRadius texels, measured where fragToLight meets its cube face.
+  float radius = light.shadow_bias.z * cube_texel_world_size(distance, light.shadow_depth.z);
+  if (algorithm == SHADOW_PCF) {
+    float sum = 0.0;
+    for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
+      sum += cube_occluded(light, to_fragment + CUBE_OFFSETS[k] * radius, reference);
+    }
+    return sum / float(CUBE_OFFSET_COUNT);
+  }
+  if (algorithm == SHADOW_NOISE) {
+    float sum = 0.0;
+    for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
+      vec3 u = surface_random(world_pos, 2u * i);
+      vec3 w = surface_random(world_pos, 2u * i + 1u);
+      vec3 gaussian = vec3(gaussian_pair(u.xy), gaussian_pair(vec2(u.z, w.x)).x);
+      sum += cube_occluded(light, to_fragment + gaussian * radius, reference);
+    }
+    return sum / float(NOISE_SAMPLES);
+  }
+  return shadow_cube_pcss(light, to_fragment, distance, reference,
+                          algorithm == SHADOW_PCSS_NOISE, world_pos);
+}
+
+// ---- entry point ----
+
+// `light`'s shadow factor at world_pos with its own algorithm and parameters; n_dot_l is
+// dot(N, L) for the slope-scaled bias. 0 for a light without a shadow map.
+float light_shadow(Light light, vec3 world_pos, float n_dot_l) {
+  if (light.info.w == NO_SHADOW_MAP) return 0.0;
+  float bias = shadow_bias(n_dot_l, light.shadow_bias.x, light.shadow_bias.y);
+  if (light.info.x == LIGHT_POINT) return shadow_cube(light, world_pos, bias);
+  return shadow_2d(light, world_pos, bias);
+}
+
+#endif
