@@ -1,0 +1,109 @@
+// Packing lights from their components into GPU records.
+#include <cmath>
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include "systems/scene/camera.h"
+#include "systems/shadows/gpu_light.h"
+
+namespace sg::shadows {
+namespace {
+
+// A light at `position` whose -Z axis is turned to shine along `direction`.
+ecs::WorldTransform placed(glm::vec3 position, glm::vec3 direction) {
+  const glm::quat rotation = scene::look_rotation(position, position + direction);
+  return {ecs::to_matrix({position, rotation, glm::vec3(1.0f)})};
+}
+
+void expect_near(glm::vec3 actual, glm::vec3 expected) {
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(actual[c], expected[c], 1e-5f) << "component " << c;
+}
+
+scene::ShadowSettings test_shadow() {
+  scene::ShadowSettings shadow;
+  shadow.algorithm = scene::ShadowAlgorithm::pcss_noise;
+  shadow.constant_bias = 0.001f;
+  shadow.slope_bias = 0.02f;
+  shadow.pcf_radius = 2.5f;
+  shadow.light_size = 0.4f;
+  shadow.density = 0.5f;
+  shadow.shadow_color = {0.1f, 0.2f, 0.3f};
+  return shadow;
+}
+
+TEST(GpuLight, PointLightRecord) {
+  scene::PointLight light;
+  light.color = {1.0f, 0.5f, 0.25f};
+  light.intensity = 3.0f;
+  light.range = 7.0f;
+  light.falloff = scene::FalloffMode::gltf_punctual;
+  const GpuLight record = pack_light(light, placed({1, 2, 3}, {0, -1, 0}), test_shadow());
+  EXPECT_EQ(record.position_range, glm::vec4(1, 2, 3, 7));
+  EXPECT_EQ(record.color_intensity, glm::vec4(1.0f, 0.5f, 0.25f, 3.0f));
+  EXPECT_EQ(record.info, glm::uvec4(0u, 1u, 4u, no_shadow_map));
+  EXPECT_EQ(record.shadow_bias, glm::vec4(0.001f, 0.02f, 2.5f, 0.4f));
+  EXPECT_EQ(record.shadow_color_density, glm::vec4(0.1f, 0.2f, 0.3f, 0.5f));
+}
+
+TEST(GpuLight, SpotLightRecord) {
+  scene::SpotLight light;
+  light.range = 12.0f;
+  light.inner_cone = glm::radians(15.0f);
+  light.outer_cone = glm::radians(30.0f);
+  const glm::vec3 direction = glm::normalize(glm::vec3(1, -2, 0));
+  const GpuLight record = pack_light(light, placed({0, 4, 0}, direction), test_shadow());
+  EXPECT_EQ(record.position_range, glm::vec4(0, 4, 0, 12));
+  expect_near(glm::vec3(record.direction_type), direction);
+  EXPECT_NEAR(record.shape.x, std::cos(glm::radians(15.0f)), 1e-6f);
+  EXPECT_NEAR(record.shape.y, std::cos(glm::radians(30.0f)), 1e-6f);
+  EXPECT_EQ(record.info, glm::uvec4(1u, 0u, 4u, no_shadow_map));
+}
+
+TEST(GpuLight, DirectionalLightRecord) {
+  scene::DirectionalLight light;
+  light.intensity = 2.0f;
+  const glm::vec3 direction = glm::normalize(glm::vec3(-1, -3, 1));
+  const GpuLight record = pack_light(light, placed({5, 5, 5}, direction), test_shadow());
+  expect_near(glm::vec3(record.direction_type), direction);
+  EXPECT_EQ(record.position_range.w, 0.0f) << "no range";
+  EXPECT_EQ(record.info.x, 2u);
+}
+
+TEST(GpuLight, CylinderLightRecord) {
+  scene::CylinderLight light;
+  light.inner_radius = 0.25f;
+  light.outer_radius = 0.75f;
+  const GpuLight record = pack_light(light, placed({0, 3, 1}, {0, -1, 0}), test_shadow());
+  EXPECT_EQ(record.position_range, glm::vec4(0, 3, 1, 0));
+  expect_near(glm::vec3(record.direction_type), {0, -1, 0});
+  EXPECT_EQ(record.shape.z, 0.25f);
+  EXPECT_EQ(record.shape.w, 0.75f);
+  EXPECT_EQ(record.info.x, 3u);
+}
+
+TEST(GpuLight, ShadowMapPlacementAndCamera) {
+  GpuLight record = pack_light(scene::SpotLight{}, placed({0, 4, 0}, {0, -1, 0}), test_shadow());
+  const LightView view = spot_light_view({0, 4, 0}, {0, -1, 0}, glm::radians(45.0f), 10.0f);
+  set_shadow_map(record, 3, {0.5f, 0.25f, 0.25f, 0.25f}, 512, view);
+  EXPECT_EQ(record.info.w, 3u);
+  EXPECT_EQ(record.shadow_rect, glm::vec4(0.5f, 0.25f, 0.25f, 0.25f));
+  EXPECT_EQ(record.shadow_depth, glm::vec4(view.near, 10.0f, 1.0f / 512.0f, 0.0f));
+  EXPECT_EQ(record.shadow_matrix, view.view_projection());
+
+  scene::Aabb bounds;
+  scene::grow(bounds, glm::vec3(-1.0f));
+  scene::grow(bounds, glm::vec3(1.0f));
+  set_shadow_map(record, 0, {0, 0, 1, 1}, 1024, directional_light_view({0, -1, 0}, bounds));
+  EXPECT_EQ(record.shadow_depth.w, 1.0f) << "orthographic";
+}
+
+TEST(GpuLight, ShadowCubePlacement) {
+  GpuLight record = pack_light(scene::PointLight{}, placed({0, 1, 0}, {0, 0, -1}), test_shadow());
+  set_shadow_cube(record, 5, 256, point_light_cube({0, 1, 0}, 10.0f));
+  EXPECT_EQ(record.info.w, 5u);
+  EXPECT_EQ(record.shadow_depth, glm::vec4(shadow_near_plane(10.0f), 10.0f, 1.0f / 256.0f, 0.0f));
+}
+
+}  // namespace
+}  // namespace sg::shadows

@@ -1,0 +1,21 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Built, never run: compiles light_shading.glsl (with shadow_sampling.glsl and the light
+// resources) the way a lighting shader uses it, and glslang's reflection of this shader
+// (glslangValidator -q) gives the std430 layout of `Light` that light_record_layout_test.cpp
+// compares with sg::shadows::GpuLight.
+#include "light_shading.glsl"
+
+layout(local_size_x = 1) in;
+
+layout(std430, set = 1, binding = 0) writeonly buffer Result { vec4 color; } result;
+
+void main() {
+  SurfacePoint p;
+  p.normal = vec3(0.0, 1.0, 0.0);
+  p.to_viewer = vec3(0.0, 1.0, 0.0);
+  p.base_color = vec3(0.5);
+  p.specular = 0.5;
+  p.shininess = 32.0;
+  result.color = vec4(shade_lights(p, vec3(0.0), uint(lights.length())), 1.0);
+}
