@@ -323,6 +323,9 @@ void VulkanContext::create_device(const ContextOptions& options) {
 
   DeviceFeatures features;
   enable_required_features(features);
+  DeviceFeatures supported;
+  query_features(physical_device_, supported);
+  optional_features_ = enable_optional_features(supported, features);
   std::vector<const char*> extensions;
   if (options.presentation) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
 

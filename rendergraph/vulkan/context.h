@@ -14,6 +14,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "rendergraph/vulkan/device_features.h"
 #include "rendergraph/vulkan/gpu_allocator.h"
 
 namespace sg::vk {
@@ -52,6 +53,8 @@ class VulkanContext {
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   std::string device_name() const { return properties_.deviceName; }
   GpuAllocator& allocator() { return *allocator_; }
+  // The optional features this device has, all of them enabled.
+  const OptionalFeatures& optional_features() const { return optional_features_; }
 
   bool validation_enabled() const { return messenger_ != VK_NULL_HANDLE; }
   uint32_t validation_errors() const { return validation_errors_.load(); }
@@ -82,6 +85,7 @@ class VulkanContext {
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queue_family_ = 0;
+  OptionalFeatures optional_features_;
   VkCommandPool one_time_pool_ = VK_NULL_HANDLE;
   std::unique_ptr<GpuAllocator> allocator_;
 

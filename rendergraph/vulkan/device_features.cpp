@@ -48,4 +48,11 @@ void enable_required_features(DeviceFeatures& out) {
   for (const RequiredFeature& r : required_features) r.field(out) = VK_TRUE;
 }
 
+OptionalFeatures enable_optional_features(const DeviceFeatures& supported, DeviceFeatures& out) {
+  OptionalFeatures enabled;
+  enabled.shader_output_layer = supported.v12.shaderOutputLayer == VK_TRUE;
+  out.v12.shaderOutputLayer = supported.v12.shaderOutputLayer;
+  return enabled;
+}
+
 }  // namespace sg::vk

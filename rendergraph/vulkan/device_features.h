@@ -27,4 +27,13 @@ std::vector<std::string> missing_required_features(DeviceFeatures& supported);
 // Sets exactly the required features in `out` (for VkDeviceCreateInfo::pNext).
 void enable_required_features(DeviceFeatures& out);
 
+// Features the engine uses when present and works around when absent.
+struct OptionalFeatures {
+  // shaderOutputLayer (Vulkan 1.2): gl_Layer from the vertex shader, for single-pass cube
+  // shadow maps; without it point lights render six passes.
+  bool shader_output_layer = false;
+};
+// Sets in `out` the optional features that `supported` has, and says which.
+OptionalFeatures enable_optional_features(const DeviceFeatures& supported, DeviceFeatures& out);
+
 }  // namespace sg::vk

@@ -24,4 +24,18 @@ struct Rgba8Image {
 // available to transfer reads by an earlier barrier on the same queue. Waits for the copy.
 Rgba8Image read_rgba8(VulkanContext& context, const Image& image);
 
+// One layer of a D32_SFLOAT image, rows top to bottom.
+struct DepthImage {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<float> depths;
+  float at(uint32_t x, uint32_t y) const { return depths[size_t{y} * width + x]; }
+};
+
+// Reads mip 0 of `layer` of a D32_SFLOAT image that is in `layout` with its writes available to
+// transfers or to the fragment shader (a shadow map after the frame), and leaves it in
+// `layout`. Waits for the copy.
+DepthImage read_depth_layer(VulkanContext& context, const Image& image, uint32_t layer,
+                            VkImageLayout layout);
+
 }  // namespace sg::vk
