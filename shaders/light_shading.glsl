@@ -42,7 +42,7 @@ vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
   }
   if (reach <= 0.0) return vec3(0.0);
 
-  float shade = light_shadow(light, world_pos, dot(p.normal, to_light));
+  float shade = light_shadow(light, world_pos, p.normal, dot(p.normal, to_light));
   vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * reach;
   return blinn_light(p, to_light, radiance, shade, light.shadow_color_density.a,
                      lambda * light.shadow_color_density.rgb);

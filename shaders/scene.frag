@@ -1,7 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// The lighting pass: ambient plus every light of the frame, each with its own shadow algorithm
+// (ALGORITHMS.md sections 2 and 4).
 #include "scene_interface.glsl"
-#include "lighting.glsl"
+#include "light_shading.glsl"
 
 layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_normal;
@@ -18,9 +20,7 @@ void main() {
   p.specular = inst.base_color_specular.a;
   p.shininess = inst.material.x;
 
-  vec3 to_sun = -frame.sun_direction.xyz;
-  vec3 radiance = frame.sun_color.rgb * frame.sun_direction.w;
-  vec3 color = frame.sun_color.a * p.base_color;
-  color += blinn_light(p, to_sun, radiance, 0.0, 1.0, vec3(0.0));
+  vec3 color = frame.camera_position.w * p.base_color;
+  color += shade_lights(p, in_world_position, frame.counts.x);
   out_color = vec4(color, 1.0);  // linear; the sRGB target encodes
 }

@@ -11,7 +11,6 @@ layout(std430, set = 0, binding = 0) readonly buffer Instances { Instance instan
 
 layout(push_constant) uniform FrameConstants {
   mat4 view_projection;
-  vec4 camera_position;  // xyz
-  vec4 sun_direction;    // xyz: the way the light travels, w: intensity
-  vec4 sun_color;        // rgb: colour, a: ambient term kA * IA
+  vec4 camera_position;  // xyz; w: the ambient term kA * IA
+  uvec4 counts;          // x: lights in the Lights buffer
 } frame;

@@ -225,6 +225,31 @@ float cube_occluded(Light light, vec3 direction, float reference) {
   return reference > fetch_cube_depth(light, direction) ? 1.0 : 0.0;
 }
 
+// Where a wide kernel looks past the fragment, a flat receiver lies nearer or farther than the
+// fragment itself, most at grazing angles, and comparing with the fragment's own distance would
+// shadow the receiver with itself (acne spreading across lit floors). So each sample is compared
+// with the distance, in its own direction, of the receiver's tangent plane (receiver-plane depth
+// bias), held within half and twice the fragment's distance where the plane runs off.
+struct CubeReceiver {
+  vec3 to_fragment;  // fragWorld - P
+  float distance;    // its length
+  vec3 normal;       // the receiver's unit normal
+  float bias;        // the light's bias, in distance / far
+};
+
+float cube_reference(Light light, CubeReceiver r, vec3 direction) {
+  float along = dot(r.normal, r.to_fragment);
+  float facing = dot(r.normal, normalize(direction));
+  float planar = along * facing > 0.0 ? along / facing : r.distance;
+  planar = clamp(planar, 0.5 * r.distance, 2.0 * r.distance);
+  return planar / light.shadow_depth.y - r.bias;
+}
+
+float cube_sample(Light light, CubeReceiver r, vec3 offset) {
+  vec3 direction = r.to_fragment + offset;
+  return cube_occluded(light, direction, cube_reference(light, r, direction));
+}
+
 // The k-th kernel offset of pcf and pcss, optionally rotated (pcss_noise).
 vec3 cube_offset(uint k, bool jitter, vec4 rotation) {
   return jitter ? rotate(rotation, CUBE_OFFSETS[k]) : CUBE_OFFSETS[k];
@@ -233,8 +258,7 @@ vec3 cube_offset(uint k, bool jitter, vec4 rotation) {
 // PCSS on a cube map with shadow_2d_pcss's radii, in world units directly: an offset moves the
 // lookup direction by its part perpendicular to fragToLight (the part along it only changes the
 // length, which a cube lookup ignores), so radii act at the receiver's distance.
-float shadow_cube_pcss(Light light, vec3 to_fragment, float distance, float reference,
-                       bool jitter, vec3 world_pos) {
+float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, vec3 world_pos) {
   float far = light.shadow_depth.y;
   float light_size = light.shadow_bias.w;
   vec4 rotation = jitter ? random_rotation_3d(world_pos) : vec4(0.0, 0.0, 0.0, 1.0);
@@ -242,9 +266,9 @@ float shadow_cube_pcss(Light light, vec3 to_fragment, float distance, float refe
   float blocker_sum = 0.0;
   float blockers = 0.0;
   for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
-    vec3 direction = to_fragment + cube_offset(k, jitter, rotation) * light_size;
+    vec3 direction = r.to_fragment + cube_offset(k, jitter, rotation) * light_size;
     float depth = fetch_cube_depth(light, direction);
-    if (depth < reference) {
+    if (depth < cube_reference(light, r, direction)) {
       blocker_sum += depth;
       blockers += 1.0;
     }
@@ -252,32 +276,31 @@ float shadow_cube_pcss(Light light, vec3 to_fragment, float distance, float refe
   if (blockers == 0.0) return 0.0;
 
   float blocker = blocker_sum / blockers * far;
-  float width = pcss_penumbra_width(distance, blocker, light_size);
-  float radius = max(0.5 * width, cube_texel_world_size(distance, light.shadow_depth.z));
+  float width = pcss_penumbra_width(r.distance, blocker, light_size);
+  float radius = max(0.5 * width, cube_texel_world_size(r.distance, light.shadow_depth.z));
   float sum = 0.0;
   for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
-    vec3 direction = to_fragment + cube_offset(k, jitter, rotation) * radius;
-    sum += cube_occluded(light, direction, reference);
+    sum += cube_sample(light, r, cube_offset(k, jitter, rotation) * radius);
   }
   return sum / float(CUBE_OFFSET_COUNT);
 }
 
-float shadow_cube(Light light, vec3 world_pos, float bias) {
-  vec3 to_fragment = world_pos - light.position_range.xyz;
-  float distance = length(to_fragment);
-  float depth = distance / light.shadow_depth.y;
+float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias) {
+  CubeReceiver r;
+  r.to_fragment = world_pos - light.position_range.xyz;
+  r.distance = length(r.to_fragment);
+  r.normal = normal;
+  r.bias = bias;
+  float depth = r.distance / light.shadow_depth.y;
   if (depth > 1.0) return 0.0;
-  float reference = depth - bias;
   uint algorithm = light.info.z;
-  if (algorithm == SHADOW_HARD) return cube_occluded(light, to_fragment, reference);
+  if (algorithm == SHADOW_HARD) return cube_occluded(light, r.to_fragment, depth - bias);
 
   // pcfRadius texels, measured where fragToLight meets its cube face.
-  float radius = light.shadow_bias.z * cube_texel_world_size(distance, light.shadow_depth.z);
+  float radius = light.shadow_bias.z * cube_texel_world_size(r.distance, light.shadow_depth.z);
   if (algorithm == SHADOW_PCF) {
     float sum = 0.0;
-    for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
-      sum += cube_occluded(light, to_fragment + CUBE_OFFSETS[k] * radius, reference);
-    }
+    for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) sum += cube_sample(light, r, CUBE_OFFSETS[k] * radius);
     return sum / float(CUBE_OFFSET_COUNT);
   }
   if (algorithm == SHADOW_NOISE) {
@@ -286,22 +309,22 @@ float shadow_cube(Light light, vec3 world_pos, float bias) {
       vec3 u = surface_random(world_pos, 2u * i);
       vec3 w = surface_random(world_pos, 2u * i + 1u);
       vec3 gaussian = vec3(gaussian_pair(u.xy), gaussian_pair(vec2(u.z, w.x)).x);
-      sum += cube_occluded(light, to_fragment + gaussian * radius, reference);
+      sum += cube_sample(light, r, gaussian * radius);
     }
     return sum / float(NOISE_SAMPLES);
   }
-  return shadow_cube_pcss(light, to_fragment, distance, reference,
-                          algorithm == SHADOW_PCSS_NOISE, world_pos);
+  return shadow_cube_pcss(light, r, algorithm == SHADOW_PCSS_NOISE, world_pos);
 }
 
 // ---- entry point ----
 
-// `light`'s shadow factor at world_pos with its own algorithm and parameters; n_dot_l is
-// dot(N, L) for the slope-scaled bias. 0 for a light without a shadow map.
-float light_shadow(Light light, vec3 world_pos, float n_dot_l) {
+// `light`'s shadow factor at world_pos with its own algorithm and parameters; `normal` is the
+// receiver's unit normal and n_dot_l is dot(N, L) for the slope-scaled bias. 0 for a light
+// without a shadow map.
+float light_shadow(Light light, vec3 world_pos, vec3 normal, float n_dot_l) {
   if (light.info.w == NO_SHADOW_MAP) return 0.0;
   float bias = shadow_bias(n_dot_l, light.shadow_bias.x, light.shadow_bias.y);
-  if (light.info.x == LIGHT_POINT) return shadow_cube(light, world_pos, bias);
+  if (light.info.x == LIGHT_POINT) return shadow_cube(light, world_pos, normal, bias);
   return shadow_2d(light, world_pos, bias);
 }
 

@@ -1,7 +1,9 @@
 #pragma once
-// The lighting pass: every drawable of the GpuScene shaded with the extended Blinn model
-// (shaders/scene.frag) into a colour target, with a depth buffer it creates.
+// The lighting pass: every drawable of the GpuScene shaded by ambient plus every light of the
+// frame, each light with its own shadow algorithm and parameters (shaders/scene.frag,
+// shaders/light_shading.glsl), into a colour target, with a depth buffer it creates.
 #include <cstdint>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -10,12 +12,14 @@
 #include "systems/scene_gpu_types.h"
 
 namespace sg::vk {
+class Buffer;
 class VulkanContext;
-}
+}  // namespace sg::vk
 
 namespace sg {
 
 class GpuScene;
+class ShadowAtlas;
 
 struct ForwardTargets {
   rg::ImageHandle colour;
@@ -27,15 +31,27 @@ class ForwardPass {
   static constexpr rg::Format colour_format = rg::Format::rgba8_srgb;
   static constexpr rg::Format depth_format = rg::Format::d32_sfloat;
 
-  explicit ForwardPass(vk::VulkanContext& context);
+  ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight);
 
-  // Adds the pass: clears `colour` (a colour_format image of the frame's size) and a new depth
-  // buffer, draws every instance. `scene` and `constants` are read when the pass records.
-  ForwardTargets add_to(rg::RenderGraph& graph, rg::ImageHandle colour, const GpuScene& scene,
-                        uint32_t slot, const FrameConstants& constants) const;
+  // CPU side of a frame, after FrameRing::begin_frame returned `slot`: points the slot's
+  // descriptor set at this frame's instances, light records and shadow images.
+  void prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer& lights,
+               const ShadowAtlas& atlas);
+
+  // Adds the pass: samples `maps` and `cubes` (the shadow images' newest versions), clears
+  // `colour` (a colour_format image of the frame's size) and a new depth buffer, draws every
+  // instance. `scene` is read when the pass records.
+  ForwardTargets add_to(rg::RenderGraph& graph, rg::ImageHandle colour, rg::ImageHandle maps,
+                        rg::ImageHandle cubes, const GpuScene& scene, uint32_t slot,
+                        const FrameConstants& constants) const;
 
  private:
+  vk::VulkanContext& context_;
+  vk::UniqueSampler nearest_;
+  vk::UniqueSampler compare_;
   vk::UniqueDescriptorSetLayout set_layout_;
+  vk::UniqueDescriptorPool pool_;
+  std::vector<VkDescriptorSet> slot_sets_;
   vk::UniquePipelineLayout pipeline_layout_;
   vk::UniquePipeline pipeline_;
 };

@@ -79,6 +79,10 @@ void GpuScene::update(ecs::World& world, uint32_t slot) {
   draw_count_ = static_cast<uint32_t>(commands_.size());
   caster_draw_count_ = static_cast<uint32_t>(caster_commands_.size());
   commands_.insert(commands_.end(), caster_commands_.begin(), caster_commands_.end());
+  for (VkDrawIndexedIndirectCommand command : caster_commands_) {
+    command.instanceCount *= 6;
+    commands_.push_back(command);
+  }
   instance_count_ = static_cast<uint32_t>(sorted_.size());
 
   instances_.write(slot, std::span<const GpuInstance>(sorted_));
@@ -88,12 +92,14 @@ void GpuScene::update(ecs::World& world, uint32_t slot) {
 void GpuScene::draw(VkCommandBuffer cmd, uint32_t slot, DrawSet set) const {
   const uint32_t count = set == DrawSet::all ? draw_count_ : caster_draw_count_;
   if (count == 0 || vertices_.handle() == VK_NULL_HANDLE) return;
+  const uint32_t first = set == DrawSet::all       ? 0
+                         : set == DrawSet::casters ? draw_count_
+                                                   : draw_count_ + caster_draw_count_;
   const VkBuffer vertex_buffer = vertices_.handle();
   const VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &zero);
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-  const VkDeviceSize offset =
-      set == DrawSet::all ? 0 : VkDeviceSize{draw_count_} * sizeof(VkDrawIndexedIndirectCommand);
+  const VkDeviceSize offset = VkDeviceSize{first} * sizeof(VkDrawIndexedIndirectCommand);
   vkCmdDrawIndexedIndirect(cmd, draws_.buffer(slot).handle(), offset, count,
                            sizeof(VkDrawIndexedIndirectCommand));
 }

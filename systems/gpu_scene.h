@@ -19,7 +19,13 @@
 
 namespace sg {
 
-enum class DrawSet { all, casters };
+enum class DrawSet {
+  all,
+  casters,
+  // The caster draws with six times the instances, for single-pass cube rendering
+  // (shaders/shadow_cube_layered.vert picks instance k / 6 and face k % 6).
+  casters_per_cube_face,
+};
 
 class GpuScene {
  public:
@@ -44,7 +50,7 @@ class GpuScene {
   vk::Buffer indices_;
   std::vector<scene::MeshRange> meshes_;
   vk::FrameBuffers instances_;
-  vk::FrameBuffers draws_;  // all draws, then caster draws
+  vk::FrameBuffers draws_;  // all draws, then caster draws, then caster draws x 6
   uint32_t draw_count_ = 0;
   uint32_t caster_draw_count_ = 0;
   uint32_t instance_count_ = 0;

@@ -15,9 +15,8 @@ static_assert(sizeof(GpuInstance) == 160);
 
 struct FrameConstants {
   glm::mat4 view_projection;
-  glm::vec4 camera_position;
-  glm::vec4 sun_direction;  // w: intensity
-  glm::vec4 sun_color;      // a: ambient
+  glm::vec4 camera_position;  // w: ambient term kA * IA
+  glm::uvec4 counts;          // x: lights
 };
 static_assert(sizeof(FrameConstants) <= 128, "Vulkan guarantees only 128 bytes of push constants");
 

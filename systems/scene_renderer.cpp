@@ -1,37 +1,80 @@
 #include "systems/scene_renderer.h"
 
+#include <span>
+
 #include "systems/camera.h"
-#include "systems/scene/lights.h"
+#include "systems/scene/scene_queries.h"
 
 namespace sg {
+namespace {
+
+constexpr const char* atlas_name = "shadow atlas";
+constexpr const char* cubes_name = "shadow cubes";
+// Where the shadow images are left: sampled by the lighting pass.
+constexpr rg::ResourceState sampled{rg::PipelineStage::fragment_shader, rg::Access::shader_sampled_read,
+                                    rg::ImageLayout::read_only_optimal};
+
+}  // namespace
 
 SceneRenderer::SceneRenderer(vk::VulkanContext& context, scene::Scene& scene,
-                             uint32_t frames_in_flight)
-    : scene_(scene), gpu_scene_(context, scene.meshes, frames_in_flight), forward_(context) {}
+                             uint32_t frames_in_flight, const RendererSettings& settings)
+    : scene_(scene),
+      settings_(settings),
+      gpu_scene_(context, scene.meshes, frames_in_flight),
+      atlas_(context),
+      shadow_passes_(context, frames_in_flight),
+      forward_(context, frames_in_flight),
+      light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light records") {}
 
-void SceneRenderer::update(uint32_t slot) { gpu_scene_.update(scene_.world, slot); }
+void SceneRenderer::update(uint32_t slot) {
+  gpu_scene_.update(scene_.world, slot);
+  gather_lights(scene_.world, scene::scene_bounds(scene_), settings_.lights, lights_);
+  const ShadowAtlas::Changes changes =
+      atlas_.fit(static_cast<uint32_t>(lights_.maps.size()), lights_.map_size,
+                 static_cast<uint32_t>(lights_.cubes.size()), lights_.cube_size);
+  recreated_.maps = recreated_.maps || changes.maps;
+  recreated_.cubes = recreated_.cubes || changes.cubes;
+  // Layers are sized to the largest request; each record's region was computed for
+  // lights_.map_size, which the atlas may exceed after shrinking requests: rescale.
+  const float scale = float(lights_.map_size) / float(atlas_.maps_desc().width);
+  for (const ShadowMapView& map : lights_.maps) {
+    glm::vec4& rect = lights_.records[map.light].shadow_rect;
+    rect.z *= scale;
+    rect.w *= scale;
+  }
+  const vk::Buffer& records =
+      light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
+  shadow_passes_.prepare(slot, lights_, gpu_scene_);
+  forward_.prepare(slot, gpu_scene_, records, atlas_);
+}
 
-ForwardTargets SceneRenderer::add_passes(rg::RenderGraph& graph, rg::ImageHandle colour,
-                                         uint32_t slot, const scene::CameraPose& pose,
-                                         const scene::Camera& lens) const {
-  // Until the light list lands (issue 6), the first directional light is the only one shaded.
-  glm::vec3 sun_direction{0.0f, -1.0f, 0.0f};
-  glm::vec3 sun_radiance{0.0f};
-  bool found = false;
-  scene_.world.query<const ecs::WorldTransform, const scene::DirectionalLight>().for_each(
-      [&](const ecs::WorldTransform& transform, const scene::DirectionalLight& light) {
-        if (found) return;
-        found = true;
-        sun_direction = scene::light_direction(transform);
-        sun_radiance = light.color * light.intensity;
-      });
+ForwardTargets SceneRenderer::add_passes(rg::RenderGraph& graph, rg::ImportedStates& states,
+                                         rg::ImageHandle colour, uint32_t slot,
+                                         const scene::CameraPose& pose, const scene::Camera& lens) {
+  if (recreated_.maps) states.forget(atlas_name);
+  if (recreated_.cubes) states.forget(cubes_name);
+  recreated_ = {};
+  imported_ = {
+      graph.import_image(atlas_name, atlas_.maps_desc(), states.initial_states(atlas_name), sampled),
+      graph.import_image(cubes_name, atlas_.cubes_desc(), states.initial_states(cubes_name), sampled)};
+  const ShadowPasses::Targets shadows =
+      shadow_passes_.add_to(graph, imported_, lights_, gpu_scene_, slot, settings_.cube_shadows);
 
   const rg::ImageDesc& target = graph.resources()[colour.index].image;
   const float aspect = float(target.width) / float(target.height);
   const FrameConstants constants{projection_matrix(lens, aspect) * view_matrix(pose),
-                                 glm::vec4(pose.eye, 1.0f), glm::vec4(sun_direction, 1.0f),
-                                 glm::vec4(sun_radiance, ambient)};
-  return forward_.add_to(graph, colour, gpu_scene_, slot, constants);
+                                 glm::vec4(pose.eye, ambient),
+                                 glm::uvec4(static_cast<uint32_t>(lights_.records.size()), 0, 0, 0)};
+  return forward_.add_to(graph, colour, shadows.maps, shadows.cubes, gpu_scene_, slot, constants);
+}
+
+}  // namespace sg
+
+namespace sg {
+
+void SceneRenderer::bind_imports(vk::ImportedResources& imports) const {
+  imports.bind(imported_.maps, atlas_.maps());
+  imports.bind(imported_.cubes, atlas_.cubes());
 }
 
 }  // namespace sg

@@ -1,0 +1,66 @@
+#pragma once
+// The lights of one frame, gathered from the ECS world: the GPU records the lighting pass reads
+// (one array, one storage buffer) and the shadow views the shadow passes render.
+//
+// Shadow storage is shared by all lights: spot, directional and cylinder lights each own one
+// layer of a 2D depth array (the "shadow atlas"), point lights one cube of a depth cube-map
+// array. Layers are map_size texels square, the largest resolution any 2D light asks for; a light
+// asking for less renders into, and samples, the top-left square of its layer of that size. Cube
+// faces are cube_size texels, the largest any point light asks for.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "ecs/world.h"
+#include "systems/scene/aabb.h"
+#include "systems/scene/shadow_settings.h"
+#include "systems/shadows/gpu_light.h"
+#include "systems/shadows/light_views.h"
+
+namespace sg {
+
+// Command-line overrides applied to every light (--algorithm, --shadows off).
+struct LightOverrides {
+  std::optional<scene::ShadowAlgorithm> algorithm;
+  bool shadows = true;
+};
+
+// Limits on map sizes, whatever the lights ask for.
+inline constexpr uint32_t min_shadow_resolution = 16;
+inline constexpr uint32_t max_atlas_resolution = 4096;
+inline constexpr uint32_t max_cube_resolution = 2048;
+
+struct ShadowMapView {
+  uint32_t light = 0;  // index into FrameLights::records
+  uint32_t layer = 0;
+  uint32_t resolution = 0;  // the square region [0, resolution)^2 of the layer
+  glm::mat4 view_projection{1.0f};
+  std::string name;  // for the pass: "shadow <light name>"
+};
+
+struct ShadowCubeView {
+  uint32_t light = 0;
+  uint32_t cube = 0;  // layers 6 * cube .. 6 * cube + 5
+  shadows::CubeViews views;
+  glm::vec4 position_far{0.0f};  // shadow_cube.frag's push constant
+  std::string name;
+};
+
+struct FrameLights {
+  std::vector<shadows::GpuLight> records;
+  std::vector<ShadowMapView> maps;
+  std::vector<ShadowCubeView> cubes;
+  uint32_t map_size = min_shadow_resolution;   // atlas layer side, texels
+  uint32_t cube_size = min_shadow_resolution;  // cube face side, texels
+};
+
+// Fills `out` (reusing its storage) from every light entity of `world`. Directional and
+// cylinder maps are fitted around `scene_bounds`. Lights whose ShadowSettings::casts_shadow is
+// false, and every light with overrides.shadows off, get no map.
+void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
+                   const LightOverrides& overrides, FrameLights& out);
+
+}  // namespace sg

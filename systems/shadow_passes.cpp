@@ -1,0 +1,196 @@
+#include "systems/shadow_passes.h"
+
+#include <cstring>
+#include <span>
+
+#include "rendergraph/vulkan/context.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "rendergraph/vulkan/pipeline.h"
+#include "rendergraph/vulkan/plan_translation.h"
+#include "rendergraph/vulkan/vulkan_error.h"
+#include "shaders/shadow_cube.frag.spv.h"
+#include "shaders/shadow_cube_layered.vert.spv.h"
+#include "shaders/shadow_map.vert.spv.h"
+#include "systems/gpu_scene.h"
+#include "systems/scene/mesh_library.h"
+#include "systems/shadow_atlas.h"
+
+namespace sg {
+namespace {
+
+constexpr VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+// shadow_map.vert reads bytes 0..63 (the view-projection), shadow_cube.frag bytes 64..79.
+struct PassConstants {
+  glm::mat4 view_projection;
+  glm::vec4 light_position_far;
+};
+
+constexpr VkDeviceSize cube_faces_bytes = 6 * sizeof(glm::mat4);
+
+}  // namespace
+
+ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight)
+    : context_(context),
+      slot_sets_(frames_in_flight),
+      cube_faces_(context, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frames_in_flight, "cube face matrices") {
+  const VkDevice device = context.device();
+  const VkDeviceSize alignment = context.properties().limits.minUniformBufferOffsetAlignment;
+  cube_faces_stride_ = (cube_faces_bytes + alignment - 1) / alignment * alignment;
+
+  const VkDescriptorSetLayoutBinding bindings[] = {
+      {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+      {5, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}};
+  VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  set_info.bindingCount = 2;
+  set_info.pBindings = bindings;
+  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+  vk::check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &set_layout),
+            "vkCreateDescriptorSetLayout");
+  set_layout_ = vk::UniqueDescriptorSetLayout(device, set_layout);
+
+  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, frames_in_flight},
+                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frames_in_flight}};
+  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pool_info.maxSets = frames_in_flight;
+  pool_info.poolSizeCount = 2;
+  pool_info.pPoolSizes = sizes;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  vk::check(vkCreateDescriptorPool(device, &pool_info, nullptr, &pool), "vkCreateDescriptorPool");
+  pool_ = vk::UniqueDescriptorPool(device, pool);
+  const std::vector<VkDescriptorSetLayout> layouts(frames_in_flight, set_layout);
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = pool;
+  alloc.descriptorSetCount = frames_in_flight;
+  alloc.pSetLayouts = layouts.data();
+  vk::check(vkAllocateDescriptorSets(device, &alloc, slot_sets_.data()), "vkAllocateDescriptorSets");
+
+  const VkPushConstantRange push{stages, 0, sizeof(PassConstants)};
+  VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layout_info.setLayoutCount = 1;
+  layout_info.pSetLayouts = &set_layout;
+  layout_info.pushConstantRangeCount = 1;
+  layout_info.pPushConstantRanges = &push;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  vk::check(vkCreatePipelineLayout(device, &layout_info, nullptr, &layout), "vkCreatePipelineLayout");
+  pipeline_layout_ = vk::UniquePipelineLayout(device, layout);
+
+  vk::GraphicsPipelineDesc desc;
+  desc.vertex_bindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+  desc.vertex_attributes = {
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, position))}};
+  desc.depth_format = vk::to_vk(ShadowAtlas::depth_format);
+  // Receivers apply each light's own bias (ALGORITHMS.md section 4), so casters are drawn as
+  // they are, both faces: thin and open meshes cast too.
+  desc.cull_mode = VK_CULL_MODE_NONE;
+  desc.layout = layout;
+  desc.vertex_spirv = shadow_map_vert;
+  desc.name = "shadow map";
+  map_pipeline_ = vk::create_graphics_pipeline(context, desc);
+  desc.fragment_spirv = shadow_cube_frag;
+  desc.name = "shadow cube face";
+  face_pipeline_ = vk::create_graphics_pipeline(context, desc);
+  if (context.optional_features().shader_output_layer) {
+    desc.vertex_spirv = shadow_cube_layered_vert;
+    desc.name = "shadow cube layered";
+    layered_pipeline_ = vk::create_graphics_pipeline(context, desc);
+  }
+}
+
+void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuScene& scene) {
+  cube_faces_scratch_.assign(std::max<size_t>(1, lights.cubes.size()) * cube_faces_stride_, std::byte{0});
+  for (size_t c = 0; c < lights.cubes.size(); ++c) {
+    std::memcpy(cube_faces_scratch_.data() + c * cube_faces_stride_,
+                lights.cubes[c].views.view_projection.data(), cube_faces_bytes);
+  }
+  const vk::Buffer& faces = cube_faces_.write(slot, std::span<const std::byte>(cube_faces_scratch_));
+
+  const VkDescriptorBufferInfo instances{scene.instances(slot).handle(), 0, VK_WHOLE_SIZE};
+  const VkDescriptorBufferInfo face_matrices{faces.handle(), 0, cube_faces_bytes};
+  VkWriteDescriptorSet writes[2]{{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET},
+                                 {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
+  writes[0].dstSet = slot_sets_[slot];
+  writes[0].dstBinding = 0;
+  writes[0].descriptorCount = 1;
+  writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  writes[0].pBufferInfo = &instances;
+  writes[1].dstSet = slot_sets_[slot];
+  writes[1].dstBinding = 5;
+  writes[1].descriptorCount = 1;
+  writes[1].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+  writes[1].pBufferInfo = &face_matrices;
+  vkUpdateDescriptorSets(context_.device(), 2, writes, 0, nullptr);
+}
+
+void ShadowPasses::draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline pipeline,
+                                const glm::mat4& view_projection, const glm::vec4& position_far,
+                                uint32_t cube_faces_offset, const GpuScene& scene,
+                                DrawSet draw_set) const {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_.get(), 0, 1,
+                          &slot_sets_[slot], 1, &cube_faces_offset);
+  const PassConstants constants{view_projection, position_far};
+  vkCmdPushConstants(cmd, pipeline_layout_.get(), stages, 0, sizeof(constants), &constants);
+  scene.draw(cmd, slot, draw_set);
+}
+
+ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targets,
+                                           const FrameLights& lights, const GpuScene& scene,
+                                           uint32_t slot, CubeShadowMode mode) const {
+  const rg::ClearValue far = rg::ClearValue::depth_of(1.0f);
+  for (const ShadowMapView& map : lights.maps) {
+    graph.add_pass(
+        map.name, rg::QueueType::graphics,
+        [&](rg::PassBuilder& b) {
+          targets.maps = b.write(targets.maps, rg::Usage::depth_attachment, far,
+                                 rg::SubresourceRange::layer(map.layer));
+        },
+        [this, &map, &scene, slot](rg::PassContext& ctx) {
+          const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
+          // The light's square region of its layer.
+          const VkViewport viewport{0.0f, 0.0f, float(map.resolution), float(map.resolution), 0.0f, 1.0f};
+          const VkRect2D scissor{{0, 0}, {map.resolution, map.resolution}};
+          vkCmdSetViewport(rec.cmd(), 0, 1, &viewport);
+          vkCmdSetScissor(rec.cmd(), 0, 1, &scissor);
+          draw_casters(rec.cmd(), slot, map_pipeline_.get(), map.view_projection, glm::vec4(0.0f), 0,
+                       scene, DrawSet::casters);
+        });
+  }
+
+  const bool layered = mode == CubeShadowMode::layered && layered_supported();
+  for (const ShadowCubeView& cube : lights.cubes) {
+    const auto faces_offset = static_cast<uint32_t>(cube.cube * cube_faces_stride_);
+    if (layered) {
+      graph.add_pass(
+          cube.name, rg::QueueType::graphics,
+          [&](rg::PassBuilder& b) {
+            targets.cubes = b.write(targets.cubes, rg::Usage::depth_attachment, far,
+                                    rg::SubresourceRange::cube(cube.cube));
+          },
+          [this, &cube, &scene, slot, faces_offset](rg::PassContext& ctx) {
+            const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
+            rec.set_full_viewport();
+            draw_casters(rec.cmd(), slot, layered_pipeline_.get(), glm::mat4(1.0f), cube.position_far,
+                         faces_offset, scene, DrawSet::casters_per_cube_face);
+          });
+      continue;
+    }
+    for (uint32_t face = 0; face < 6; ++face) {
+      graph.add_pass(
+          cube.name + " face " + std::to_string(face), rg::QueueType::graphics,
+          [&](rg::PassBuilder& b) {
+            targets.cubes = b.write(targets.cubes, rg::Usage::depth_attachment, far,
+                                    rg::SubresourceRange::cube_face(cube.cube, face));
+          },
+          [this, &cube, &scene, slot, face, faces_offset](rg::PassContext& ctx) {
+            const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
+            rec.set_full_viewport();
+            draw_casters(rec.cmd(), slot, face_pipeline_.get(), cube.views.view_projection[face],
+                         cube.position_far, faces_offset, scene, DrawSet::casters);
+          });
+    }
+  }
+  return targets;
+}
+
+}  // namespace sg

@@ -1,0 +1,64 @@
+#pragma once
+// The shadow-map passes: one per 2D shadow (spot, directional, cylinder light) writing that
+// light's atlas layer, and per point-light shadow either one layered pass writing all six faces
+// of its cube (CubeShadowMode::layered, needs shaderOutputLayer) or six passes, one per face.
+// Every pass draws the scene's casters with one indirect call.
+#include <cstdint>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/vulkan/frame_buffers.h"
+#include "rendergraph/vulkan/unique_handle.h"
+#include "systems/frame_lights.h"
+#include "systems/gpu_scene.h"
+
+namespace sg::vk {
+class VulkanContext;
+}
+
+namespace sg {
+
+enum class CubeShadowMode { layered, six_passes };
+
+class ShadowPasses {
+ public:
+  ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight);
+
+  // Whether the device can render a cube in one pass.
+  bool layered_supported() const { return layered_pipeline_.get() != VK_NULL_HANDLE; }
+
+  // CPU side of a frame, after FrameRing::begin_frame returned `slot`: writes the point lights'
+  // face matrices and points the slot's descriptor set at this frame's buffers.
+  void prepare(uint32_t slot, const FrameLights& lights, const GpuScene& scene);
+
+  struct Targets {
+    rg::ImageHandle maps;
+    rg::ImageHandle cubes;
+  };
+  // Adds the passes for `lights` (as given to prepare) and returns the maps' newest versions.
+  // `lights` and `scene` are read when the passes record. layered falls back to six passes when
+  // the device cannot do it.
+  Targets add_to(rg::RenderGraph& graph, Targets targets, const FrameLights& lights,
+                 const GpuScene& scene, uint32_t slot, CubeShadowMode mode) const;
+
+ private:
+  void draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline pipeline,
+                    const glm::mat4& view_projection, const glm::vec4& position_far,
+                    uint32_t cube_faces_offset, const GpuScene& scene, DrawSet draw_set) const;
+
+  vk::VulkanContext& context_;
+  vk::UniqueDescriptorSetLayout set_layout_;
+  vk::UniqueDescriptorPool pool_;
+  std::vector<VkDescriptorSet> slot_sets_;
+  vk::UniquePipelineLayout pipeline_layout_;
+  vk::UniquePipeline map_pipeline_;
+  vk::UniquePipeline face_pipeline_;
+  vk::UniquePipeline layered_pipeline_;
+  vk::FrameBuffers cube_faces_;  // per point light: six face matrices, at cube_faces_stride_
+  VkDeviceSize cube_faces_stride_ = 0;
+  std::vector<std::byte> cube_faces_scratch_;
+};
+
+}  // namespace sg
