@@ -8,6 +8,7 @@
 #include "sandbox/run_stats.h"
 #include "sandbox/sandbox_frame.h"
 #include "sandbox/scene_setup.h"
+#include "sandbox/shadow_map_dump.h"
 #include "systems/scene/scene_queries.h"
 
 namespace sg::sandbox {
@@ -20,6 +21,10 @@ int finish_run(const Options& options, vk::VulkanContext& context, SandboxScene&
   } else if (!options.screenshot.empty()) {
     write_png(options.screenshot, vk::read_rgba8(context, frame.image()));
     std::printf("shadowgraph: wrote %s\n", options.screenshot.c_str());
+  }
+
+  if (!options.dump_shadow_maps.empty() && rendered) {
+    dump_shadow_maps(context, frame.renderer(), options.dump_shadow_maps);
   }
 
   RunStats stats;
@@ -35,6 +40,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, SandboxScene&
     stats.passes = record.gpu_times->pass_summaries();
   }
   if (context.validation_enabled()) stats.validation_errors = context.validation_errors();
+  stats.shadow_map_bytes = frame.renderer().atlas().bytes();
 
   if (stats.cpu_frame_ms) {
     std::printf("shadowgraph: %llu frames, CPU frame time median %.2f ms (min %.2f, max %.2f)\n",

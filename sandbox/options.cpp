@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include <CLI/CLI.hpp>
 
@@ -95,6 +96,25 @@ void add_options(CLI::App& app, Options& o) {
       ->transform(whole_number(0, std::numeric_limits<std::uint64_t>::max()))
       ->capture_default_str();
   app.add_option("--stats", o.stats_path, "Write facts about the run to this JSON file");
+
+  const std::map<std::string, scene::ShadowAlgorithm> algorithms = {
+      {"hard", scene::ShadowAlgorithm::hard},
+      {"pcf", scene::ShadowAlgorithm::pcf},
+      {"noise", scene::ShadowAlgorithm::noise},
+      {"pcss", scene::ShadowAlgorithm::pcss},
+      {"pcss_noise", scene::ShadowAlgorithm::pcss_noise}};
+  app.add_option("--algorithm", o.algorithm, "Shadow algorithm for every light, overriding the scene's")
+      ->transform(CLI::CheckedTransformer(algorithms));
+  app.add_option("--shadows", o.shadows, "on: every light casts its shadow; off: none does")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"on", true}, {"off", false}}))
+      ->default_str("on");
+  app.add_option("--cube-shadows", o.cube_shadows,
+                 "Point-light cube maps: layered (one pass, all six faces) or six (one pass per face)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, CubeShadowMode>{
+          {"layered", CubeShadowMode::layered}, {"six", CubeShadowMode::six_passes}}))
+      ->default_str("layered");
+  app.add_option("--dump-shadow-maps", o.dump_shadow_maps,
+                 "After the run, write each light's shadow map as PNG into this folder");
 }
 
 ParseResult parse_options(int argc, char** argv) {

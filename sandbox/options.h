@@ -7,6 +7,8 @@
 #include "rendergraph/vulkan/context.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"
+#include "systems/scene/shadow_settings.h"
+#include "systems/shadow_passes.h"
 
 namespace CLI {
 class App;
@@ -28,6 +30,10 @@ struct Options {
   scene::BuiltinSceneParams scene_params;   // the stress scene's size, lights and seed
   std::string stats_path;                   // --stats: JSON facts about the run; empty: none
   bool depth_overlay = false;               // --depth-overlay: the render-graph extension example
+  std::optional<scene::ShadowAlgorithm> algorithm;  // --algorithm: every light uses this one
+  bool shadows = true;                              // --shadows off: no light casts a shadow
+  CubeShadowMode cube_shadows = CubeShadowMode::layered;  // --cube-shadows layered|six
+  std::string dump_shadow_maps;             // --dump-shadow-maps DIR: each light's map as PNG
 };
 
 // Upper bounds on the stress scene's parameters: values above them would exhaust memory

@@ -59,12 +59,20 @@ rg::ImageHandle add_present(rg::RenderGraph& graph, rg::ImageHandle frame, const
 
 }  // namespace
 
+RendererSettings renderer_settings(const Options& options) {
+  RendererSettings settings;
+  settings.lights.algorithm = options.algorithm;
+  settings.lights.shadows = options.shadows;
+  settings.cube_shadows = options.cube_shadows;
+  return settings;
+}
+
 SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, const Options& options,
                            uint32_t frames_in_flight)
     : context_(context),
       scene_(scene),
       depth_overlay_enabled_(options.depth_overlay),
-      renderer_(context, scene.scene, frames_in_flight),
+      renderer_(context, scene.scene, frames_in_flight, renderer_settings(options)),
       depth_overlay_(context, ForwardPass::colour_format),
       executor_(context, frames_in_flight) {}
 
@@ -90,11 +98,12 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
       frame_image_name, {extent.width, extent.height, ForwardPass::colour_format},
       imported_states_.initial_states(frame_image_name), transfer_source);
   const ForwardTargets targets =
-      renderer_.add_passes(graph_, frame_image, frame.slot, scene_.pose, scene_.lens);
+      renderer_.add_passes(graph_, imported_states_, frame_image, frame.slot, scene_.pose, scene_.lens);
   rg::ImageHandle colour = targets.colour;
   if (depth_overlay_enabled_) colour = depth_overlay_.add_to(graph_, targets.depth, colour, scene_.lens);
   vk::ImportedResources imports;
   imports.bind(frame_image, image_);
+  renderer_.bind_imports(imports);
   if (present) imports.bind(add_present(graph_, colour, *present), present->image, present->format);
 
   rg::CompileResult compiled = plans_.get_or_compile(graph_);

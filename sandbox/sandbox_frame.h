@@ -34,6 +34,9 @@ struct PresentTarget {
 };
 inline constexpr VkPipelineStageFlags2 acquire_wait_stage = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
 
+// What the command line asks of the renderer (--algorithm, --shadows, --cube-shadows).
+RendererSettings renderer_settings(const Options& options);
+
 class SandboxFrame {
  public:
   SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, const Options& options,
@@ -48,6 +51,7 @@ class SandboxFrame {
               const std::optional<PresentTarget>& present = std::nullopt);
 
   const vk::Image& image() const { return image_; }
+  const SceneRenderer& renderer() const { return renderer_; }
   const rg::RenderGraph& graph() const { return graph_; }
   const std::shared_ptr<const rg::CompiledPlan>& plan() const { return plan_; }
   vk::GraphExecutor& executor() { return executor_; }
