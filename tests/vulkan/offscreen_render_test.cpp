@@ -13,10 +13,10 @@
 #include "rendergraph/vulkan/frame_ring.h"
 #include "rendergraph/vulkan/readback.h"
 #include "sandbox/sandbox_frame.h"
-#include "systems/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"
+#include "tests/support/shadow_reference.h"
 #include "vulkan_test_context.h"
 
 namespace sg::test {
@@ -33,44 +33,21 @@ float srgb_encode(float linear) {
 }
 
 // An oriented box: extends half_extent from its center, turned by yaw about +Y.
-struct Box {
+struct OrientedBox {
   glm::vec3 center;
   glm::vec3 half_extent;
   float yaw = 0.0f;
 };
 
-ecs::LocalTransform placement(const Box& box) {
+ecs::LocalTransform placement(const OrientedBox& box) {
   return {box.center, glm::angleAxis(box.yaw, glm::vec3(0, 1, 0)), 2.0f * box.half_extent};
-}
-
-// Distance along the ray to the box grown by `margin`, if hit.
-std::optional<float> hit_box(const Box& box, glm::vec3 origin, glm::vec3 dir, float margin) {
-  Box grown = box;
-  grown.half_extent += glm::vec3(margin);
-  const glm::mat4 to_local = glm::inverse(ecs::to_matrix(placement(grown)));
-  const glm::vec3 o = glm::vec3(to_local * glm::vec4(origin, 1.0f));
-  const glm::vec3 d = glm::vec3(to_local * glm::vec4(dir, 0.0f));
-  constexpr float h = 0.5f;  // the box mesh is the cube [-h, h]^3
-  float t_near = -INFINITY, t_far = INFINITY;
-  for (int axis = 0; axis < 3; ++axis) {
-    if (std::abs(d[axis]) < 1e-8f) {
-      if (std::abs(o[axis]) > h) return std::nullopt;
-      continue;
-    }
-    float t0 = (-h - o[axis]) / d[axis], t1 = (h - o[axis]) / d[axis];
-    if (t0 > t1) std::swap(t0, t1);
-    t_near = std::max(t_near, t0);
-    t_far = std::min(t_far, t1);
-  }
-  if (t_near > t_far || t_far < 0.0f) return std::nullopt;
-  return t_near;
 }
 
 // A 20 x 20 m floor (top at y = 0), three boxes, and a sun with no shadow: every unoccluded
 // floor pixel follows the formula exactly.
 struct FloorScene {
   sandbox::SandboxScene sandbox;
-  std::vector<Box> boxes;
+  std::vector<OrientedBox> boxes;
   scene::Material floor_material;
   scene::DirectionalLight sun;
   glm::vec3 sun_direction;
@@ -88,7 +65,7 @@ FloorScene make_floor_scene() {
              {{0, 0.3f, 3}, {1.0f, 0.3f, 0.6f}, 1.1f}};
   scene::Material box_material;
   box_material.base_color = {0.8f, 0.3f, 0.2f, 1.0f};
-  for (const Box& box : s.boxes) scene::add_instance(s.sandbox.scene, box_mesh, placement(box), box_material);
+  for (const OrientedBox& box : s.boxes) scene::add_instance(s.sandbox.scene, box_mesh, placement(box), box_material);
 
   s.sun.color = {1.0f, 0.95f, 0.9f};
   s.sun.intensity = 0.9f;
@@ -136,24 +113,19 @@ TEST_F(OffscreenRender, FloorMatchesLightingFormula) {
     const vk::Rgba8Image image = vk::read_rgba8(context, frame.image());
     ASSERT_EQ(image.width, width);
 
-    const glm::mat4 inverse_view_proj = glm::inverse(
-        projection_matrix(s.sandbox.lens, float(width) / float(height)) * view_matrix(s.sandbox.pose));
+    const CameraImage camera{s.sandbox.pose, s.sandbox.lens, {width, height}};
     int checked = 0, mismatched = 0;
     for (uint32_t y = 0; y < height; y += 3) {
       for (uint32_t x = 0; x < width; x += 3) {
-        const glm::vec2 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f);
-        const glm::vec4 near_h = inverse_view_proj * glm::vec4(ndc, 0.0f, 1.0f);
-        const glm::vec4 far_h = inverse_view_proj * glm::vec4(ndc, 1.0f, 1.0f);
-        const glm::vec3 origin = glm::vec3(near_h) / near_h.w;
-        const glm::vec3 dir = glm::normalize(glm::vec3(far_h) / far_h.w - origin);
-        if (dir.y >= -1e-4f) continue;
-        const float t_floor = -origin.y / dir.y;
-        const glm::vec3 point = origin + t_floor * dir;
+        const Ray ray = pixel_ray(camera, x, y);
+        const std::optional<glm::vec3> hit = hit_floor(ray);
+        if (!hit) continue;
+        const glm::vec3 point = *hit;
         if (std::abs(point.x) > 9.5f || std::abs(point.z) > 9.5f) continue;
         bool occluded = false;  // by a box, or too close to one's silhouette to be sure
-        for (const Box& box : s.boxes) {
-          const auto t = hit_box(box, origin, dir, 0.05f);
-          occluded = occluded || (t && *t < t_floor);
+        for (OrientedBox box : s.boxes) {
+          box.half_extent += glm::vec3(0.05f);
+          occluded = occluded || segment_hits_box(ray.origin, point, {ecs::to_matrix(placement(box))});
         }
         if (occluded) continue;
 
