@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
-#include <map>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -97,21 +97,27 @@ void add_options(CLI::App& app, Options& o) {
       ->capture_default_str();
   app.add_option("--stats", o.stats_path, "Write facts about the run to this JSON file");
 
-  const std::map<std::string, scene::ShadowAlgorithm> algorithms = {
-      {"hard", scene::ShadowAlgorithm::hard},
-      {"pcf", scene::ShadowAlgorithm::pcf},
-      {"noise", scene::ShadowAlgorithm::noise},
-      {"pcss", scene::ShadowAlgorithm::pcss},
-      {"pcss_noise", scene::ShadowAlgorithm::pcss_noise}};
-  app.add_option("--algorithm", o.algorithm, "Shadow algorithm for every light, overriding the scene's")
-      ->transform(CLI::CheckedTransformer(algorithms));
-  app.add_option("--shadows", o.shadows, "on: every light casts its shadow; off: none does")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, bool>{{"on", true}, {"off", false}}))
+  std::vector<std::string> algorithm_names;
+  for (const scene::ShadowAlgorithm a : scene::all_shadow_algorithms) {
+    algorithm_names.emplace_back(scene::to_string(a));
+  }
+  app.add_option_function<std::string>(
+         "--algorithm",
+         [&o](const std::string& name) { o.algorithm = scene::parse_shadow_algorithm(name); },
+         "Shadow algorithm for every light, overriding the scene's")
+      ->check(CLI::IsMember(algorithm_names));
+  app.add_option_function<std::string>(
+         "--shadows", [&o](const std::string& value) { o.shadows = value == "on"; },
+         "on: every light casts its shadow; off: none does")
+      ->check(CLI::IsMember({"on", "off"}))
       ->default_str("on");
-  app.add_option("--cube-shadows", o.cube_shadows,
-                 "Point-light cube maps: layered (one pass, all six faces) or six (one pass per face)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, CubeShadowMode>{
-          {"layered", CubeShadowMode::layered}, {"six", CubeShadowMode::six_passes}}))
+  app.add_option_function<std::string>(
+         "--cube-shadows",
+         [&o](const std::string& value) {
+           o.cube_shadows = value == "six" ? CubeShadowMode::six_passes : CubeShadowMode::layered;
+         },
+         "Point-light cube maps: layered (one pass, all six faces) or six (one pass per face)")
+      ->check(CLI::IsMember({"layered", "six"}))
       ->default_str("layered");
   app.add_option("--dump-shadow-maps", o.dump_shadow_maps,
                  "After the run, write each light's shadow map as PNG into this folder");

@@ -20,7 +20,9 @@ int run_windowed(const Options& options);
 
 // What a run measured, for the summary and --stats.
 struct RunRecord {
-  std::vector<double> cpu_frame_ms;  // record + submit, per rendered frame
+  // Per rendered frame: CPU time to update, build, compile, record and submit it, not counting
+  // waits for the GPU (the frame ring's fence, the swapchain's acquire and present).
+  std::vector<double> cpu_frame_ms;
   const GpuTimeLog* gpu_times = nullptr;
 };
 

@@ -27,8 +27,8 @@ int run_headless(const Options& options) {
   GpuTimeLog gpu_times;
   RunRecord record{{}, &gpu_times};
   for (uint32_t i = 0; i < frame_count; ++i) {
-    const auto start = std::chrono::steady_clock::now();
     vk::FrameSlot& slot = frames.begin_frame();
+    const auto start = std::chrono::steady_clock::now();  // after the wait for the GPU
     frame.record(slot, i * frame_seconds);
     frames.submit();
     gpu_times.add(frame.executor().latest_timings());

@@ -13,7 +13,8 @@
 //     "triangles": 1234, "entities": 56, "mesh_instances": 20,
 //     "lights": {"point": 2, "spot": 2, "directional": 1, "cylinder": 1, "shadow_casting": 6}
 //   },
-//   "cpu_frame_ms": {"median": 1.5, "min": 1.2, "max": 3.0},  // null when no frame ran
+//   "cpu_frame_ms": {"median": 1.5, "min": 1.2, "max": 3.0},  // null when no frame ran; CPU
+//                                                // time per frame without waits for the GPU
 //   "gpu_frame_ms": {"median": ..., "min": ..., "max": ...},  // null without GPU timestamps
 //   "passes": [{"name": "lighting", "gpu_ms": {"median": ..., "min": ..., "max": ...}}],
 //   "validation_errors": 0,                      // null when the validation layer was off

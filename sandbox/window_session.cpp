@@ -87,22 +87,22 @@ FrameResult WindowSession::frame() {
     return ready_ ? FrameResult::swapchain_recreated : FrameResult::minimized;
   }
 
-  const auto start = std::chrono::steady_clock::now();
   vk::FrameSlot& frame = frames_->begin_frame();
   const std::optional<uint32_t> image = swapchain_->acquire(frame.image_acquired);
   if (!image) {
     ready_ = false;
     return FrameResult::swapchain_recreated;
   }
+  const auto start = std::chrono::steady_clock::now();  // after the waits for the GPU
   frame_->record(frame, glfwGetTime() - start_seconds_,
                  PresentTarget{swapchain_->image(*image), swapchain_->format(), swapchain_->extent()});
   const vk::SemaphoreWait wait{frame.image_acquired, acquire_wait_stage};
   const VkSemaphore signal = swapchain_->render_finished(*image);
   frames_->submit({&wait, 1}, {&signal, 1});
-  if (!swapchain_->present(*image)) ready_ = false;
-  gpu_times_.add(frame_->executor().latest_timings());
   frame_ms_.push_back(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  if (!swapchain_->present(*image)) ready_ = false;
+  gpu_times_.add(frame_->executor().latest_timings());
   return FrameResult::rendered;
 }
 

@@ -55,6 +55,28 @@ TEST(SandboxOptions, ExistingOptionsStillWork) {
   EXPECT_FALSE(options.vsync);
 }
 
+TEST(SandboxOptions, ShadowOptions) {
+  const Options defaults = parse_ok({});
+  EXPECT_FALSE(defaults.algorithm.has_value());
+  EXPECT_TRUE(defaults.shadows);
+  EXPECT_EQ(defaults.cube_shadows, CubeShadowMode::layered);
+  EXPECT_FALSE(defaults.depth_overlay);
+  EXPECT_TRUE(defaults.dump_shadow_maps.empty());
+
+  const Options options = parse_ok({"--algorithm", "pcss_noise", "--shadows", "off", "--cube-shadows",
+                                    "six", "--depth-overlay", "--dump-shadow-maps", "maps"});
+  EXPECT_EQ(options.algorithm, scene::ShadowAlgorithm::pcss_noise);
+  EXPECT_FALSE(options.shadows);
+  EXPECT_EQ(options.cube_shadows, CubeShadowMode::six_passes);
+  EXPECT_TRUE(options.depth_overlay);
+  EXPECT_EQ(options.dump_shadow_maps, "maps");
+
+  for (const std::vector<std::string>& bad :
+       {std::vector<std::string>{"--algorithm", "soft"}, {"--shadows", "maybe"}, {"--cube-shadows", "five"}}) {
+    EXPECT_EQ(parse(bad).exit_code, 2) << bad[0];
+  }
+}
+
 TEST(SandboxOptions, SceneOptions) {
   const Options options =
       parse_ok({"--scene", "stress", "--scene-triangles", "5000", "--point-lights", "4",
