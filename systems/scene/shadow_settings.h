@@ -20,9 +20,10 @@ std::string_view to_string(ShadowAlgorithm algorithm);
 // The inverse of to_string; nullopt for any other text (case-sensitive).
 std::optional<ShadowAlgorithm> parse_shadow_algorithm(std::string_view name);
 
-// Biases are in the units of the depth the light's map stores, normalized to [0, 1] (linear
-// distance / far plane for point lights). The receiver compares with
-// bias = max(slope_bias * (1 - dot(N, L)), constant_bias). The defaults are sized for maps of
+// Biases are in normalized linear depth, so that one value means the same distance anywhere in
+// a map: view depth / far for spot maps, depth across near..far for orthographic maps
+// (directional, cylinder), distance / range for point lights (shaders/shadow_sampling.glsl).
+// The receiver compares with bias = max(slope_bias * (1 - dot(N, L)), constant_bias). The defaults are sized for maps of
 // `resolution` texels over room-sized light volumes (tens of metres): enough to keep acne off
 // lit floors and walls, small enough that contact shadows stay attached (no peter-panning).
 struct ShadowSettings {
