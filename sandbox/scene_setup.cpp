@@ -3,8 +3,10 @@
 #include <algorithm>
 
 #include "ecs/transform.h"
+#include "ecs/transform_system.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/lights.h"
+#include "systems/scene/scene_builder.h"
 #include "systems/scene/scene_queries.h"
 
 namespace sg::sandbox {
@@ -20,10 +22,29 @@ std::string scene_camera_source(const Options& options, const scene::Scene& scen
   return name ? "glTF camera '" + name->value + "'" : "glTF camera";
 }
 
+// A scene that brings no light (many glTF files) would show ambient only: give it a sun from
+// above and in front of the camera's side, casting a shadow, and say so.
+void add_default_light(scene::Scene& scene) {
+  const scene::SceneStats stats = scene::scene_stats(scene);
+  if (stats.point_lights + stats.spot_lights + stats.directional_lights + stats.cylinder_lights > 0) {
+    return;
+  }
+  const glm::vec3 direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.6f));
+  const scene::Aabb bounds = scene::scene_bounds(scene);
+  const glm::vec3 centre = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
+  const glm::vec3 position = centre - direction;
+  scene::add_light(scene, scene::DirectionalLight{glm::vec3(1.0f), 1.0f},
+                   {position, scene::look_rotation(position, centre), glm::vec3(1.0f)},
+                   scene::ShadowSettings{}, "sandbox sun");
+  ecs::update_world_transforms(scene.world, 0);
+  scene::warn(scene, "the scene has no lights: the sandbox added a directional light with a shadow");
+}
+
 }  // namespace
 
 SandboxScene load_sandbox_scene(const Options& options, float aspect) {
   SandboxScene result{scene::load_scene(options.scene, options.scene_params), {}, {}, {}};
+  add_default_light(result.scene);
   const std::optional<ecs::Entity> camera = scene::first_camera(result.scene);
   if (camera) result.lens = result.scene.world.get<scene::Camera>(*camera);
 

@@ -23,6 +23,8 @@ struct SandboxScene {
 //   lens's field of view and `aspect` (viewport width / height).
 // - lens: the scene's first camera's, also under --camera (the file's field of view belongs to
 //   the scene, --camera only moves the eye); scene::Camera{} when the scene has none.
+// A scene without any light gets a directional "sandbox sun" with a shadow (and a warning), so
+// that files that bring no lights still show their shapes and shadows.
 // Throws scene::SceneError when the scene cannot be loaded.
 SandboxScene load_sandbox_scene(const Options& options, float aspect);
 

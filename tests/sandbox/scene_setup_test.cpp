@@ -51,6 +51,23 @@ TEST(SandboxScene, UsesTheGltfCamera) {
   EXPECT_EQ(loaded.scene.name, options.scene);
 }
 
+TEST(SandboxScene, AFileWithoutLightsGetsTheSandboxSun) {
+  TempDir dir;
+  Options options;
+  options.scene = write_scene(dir, false);
+  SandboxScene loaded = load_sandbox_scene(options, 1.0f);
+  const scene::SceneStats stats = scene::scene_stats(loaded.scene);
+  EXPECT_EQ(stats.directional_lights, 1u);
+  EXPECT_EQ(stats.shadow_casting_lights, 1u);
+  ASSERT_FALSE(loaded.scene.warnings.empty());
+  EXPECT_NE(loaded.scene.warnings.back().find("no lights"), std::string::npos);
+
+  // The built-in scenes bring their own lights and get none added.
+  options.scene = "default";
+  SandboxScene builtin = load_sandbox_scene(options, 1.0f);
+  EXPECT_EQ(scene::scene_stats(builtin.scene).directional_lights, 1u);
+}
+
 TEST(SandboxScene, UnnamedGltfCamera) {
   TempDir dir;
   Options options;
