@@ -49,9 +49,8 @@ void dump_shadow_maps(vk::VulkanContext& context, const SceneRenderer& renderer,
 
   for (const ShadowMapView& map : lights.maps) {
     const vk::DepthImage depth = vk::read_depth_layer(context, atlas.maps(), map.layer, sampled);
-    const glm::vec4 planes = lights.records[map.light].shadow_depth;  // near, far, texel, ortho
-    const float near = planes.x, far = planes.y;
-    const bool orthographic = planes.w > 0.5f;
+    const float near = map.view.near, far = map.view.far;
+    const bool orthographic = map.view.orthographic;
     const std::string path = directory + "/" + file_stem(map.name) + ".png";
     write_png(path, grey_image(map.resolution, [&](uint32_t x, uint32_t y) {
                 const float d = depth.at(x, y);

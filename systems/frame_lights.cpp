@@ -34,16 +34,14 @@ void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
     s.casts_shadow = s.casts_shadow && overrides.shadows;
     return s;
   };
-  // 2D maps get their layer now and their region size once every request is known.
-  std::vector<uint32_t> requested;
+  // 2D maps get their layer now and their uv region once every request is known.
   const auto add_map = [&](ecs::Entity entity, const char* kind, const scene::ShadowSettings& s,
                            const shadows::LightView& view) {
     const auto layer = static_cast<uint32_t>(out.maps.size());
-    requested.push_back(clamp_resolution(s.resolution, max_atlas_resolution));
-    out.maps.push_back({static_cast<uint32_t>(out.records.size() - 1), layer, 0,
-                        view.view_projection(), "shadow " + light_name(world, entity, kind, layer)});
+    out.maps.push_back({static_cast<uint32_t>(out.records.size() - 1), layer,
+                        clamp_resolution(s.resolution, max_atlas_resolution), view,
+                        "shadow " + light_name(world, entity, kind, layer)});
   };
-  std::vector<shadows::LightView> map_views;
 
   world.query<const ecs::WorldTransform, const scene::SpotLight, const scene::ShadowSettings>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform& transform, const scene::SpotLight& light,
@@ -51,10 +49,10 @@ void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
         const scene::ShadowSettings s = settings(shadow);
         out.records.push_back(shadows::pack_light(light, transform, s));
         if (!s.casts_shadow) return;
-        map_views.push_back(shadows::spot_light_view(scene::light_position(transform),
-                                                     scene::light_direction(transform),
-                                                     light.outer_cone, light.range));
-        add_map(entity, "spot", s, map_views.back());
+        add_map(entity, "spot", s,
+                shadows::spot_light_view(scene::light_position(transform),
+                                         scene::light_direction(transform), light.outer_cone,
+                                         light.range));
       });
   world.query<const ecs::WorldTransform, const scene::DirectionalLight, const scene::ShadowSettings>()
       .for_each([&](ecs::Entity entity, const ecs::WorldTransform& transform,
@@ -62,8 +60,8 @@ void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
         const scene::ShadowSettings s = settings(shadow);
         out.records.push_back(shadows::pack_light(light, transform, s));
         if (!s.casts_shadow) return;
-        map_views.push_back(shadows::directional_light_view(scene::light_direction(transform), bounds));
-        add_map(entity, "directional", s, map_views.back());
+        add_map(entity, "directional", s,
+                shadows::directional_light_view(scene::light_direction(transform), bounds));
       });
   world.query<const ecs::WorldTransform, const scene::CylinderLight, const scene::ShadowSettings>()
       .for_each([&](ecs::Entity entity, const ecs::WorldTransform& transform,
@@ -71,23 +69,20 @@ void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
         const scene::ShadowSettings s = settings(shadow);
         out.records.push_back(shadows::pack_light(light, transform, s));
         if (!s.casts_shadow) return;
-        map_views.push_back(shadows::cylinder_light_view(scene::light_position(transform),
-                                                         scene::light_direction(transform),
-                                                         light.outer_radius, bounds));
-        add_map(entity, "cylinder", s, map_views.back());
+        add_map(entity, "cylinder", s,
+                shadows::cylinder_light_view(scene::light_position(transform),
+                                             scene::light_direction(transform), light.outer_radius,
+                                             bounds));
       });
 
   out.map_size = min_shadow_resolution;
-  for (uint32_t r : requested) out.map_size = std::max(out.map_size, r);
-  for (size_t m = 0; m < out.maps.size(); ++m) {
-    ShadowMapView& map = out.maps[m];
-    map.resolution = requested[m];
+  for (const ShadowMapView& map : out.maps) out.map_size = std::max(out.map_size, map.resolution);
+  for (const ShadowMapView& map : out.maps) {
     const float scale = float(map.resolution) / float(out.map_size);
     shadows::set_shadow_map(out.records[map.light], map.layer, glm::vec4(0.0f, 0.0f, scale, scale),
-                            map.resolution, map_views[m]);
+                            map.resolution, map.view);
   }
 
-  std::vector<uint32_t> cube_requests;
   world.query<const ecs::WorldTransform, const scene::PointLight, const scene::ShadowSettings>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform& transform, const scene::PointLight& light,
           const scene::ShadowSettings& shadow) {
@@ -97,13 +92,15 @@ void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
         const glm::vec3 position = scene::light_position(transform);
         const auto cube = static_cast<uint32_t>(out.cubes.size());
         out.cubes.push_back({static_cast<uint32_t>(out.records.size() - 1), cube,
+                             clamp_resolution(s.resolution, max_cube_resolution),
                              shadows::point_light_cube(position, light.range),
                              glm::vec4(position, light.range),
                              "shadow " + light_name(world, entity, "point", cube)});
-        cube_requests.push_back(clamp_resolution(s.resolution, max_cube_resolution));
       });
   out.cube_size = min_shadow_resolution;
-  for (uint32_t r : cube_requests) out.cube_size = std::max(out.cube_size, r);
+  for (const ShadowCubeView& cube : out.cubes) {
+    out.cube_size = std::max(out.cube_size, cube.requested_resolution);
+  }
   for (const ShadowCubeView& cube : out.cubes) {
     shadows::set_shadow_cube(out.records[cube.light], cube.cube, out.cube_size, cube.views);
   }

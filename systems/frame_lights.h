@@ -37,13 +37,14 @@ struct ShadowMapView {
   uint32_t light = 0;  // index into FrameLights::records
   uint32_t layer = 0;
   uint32_t resolution = 0;  // the square region [0, resolution)^2 of the layer
-  glm::mat4 view_projection{1.0f};
+  shadows::LightView view;
   std::string name;  // for the pass: "shadow <light name>"
 };
 
 struct ShadowCubeView {
   uint32_t light = 0;
   uint32_t cube = 0;  // layers 6 * cube .. 6 * cube + 5
+  uint32_t requested_resolution = 0;  // the light's wish; faces are FrameLights::cube_size
   shadows::CubeViews views;
   glm::vec4 position_far{0.0f};  // shadow_cube.frag's push constant
   std::string name;

@@ -152,7 +152,7 @@ ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targe
           const VkRect2D scissor{{0, 0}, {map.resolution, map.resolution}};
           vkCmdSetViewport(rec.cmd(), 0, 1, &viewport);
           vkCmdSetScissor(rec.cmd(), 0, 1, &scissor);
-          draw_casters(rec.cmd(), slot, map_pipeline_.get(), map.view_projection, glm::vec4(0.0f), 0,
+          draw_casters(rec.cmd(), slot, map_pipeline_.get(), map.view.view_projection(), glm::vec4(0.0f), 0,
                        scene, DrawSet::casters);
         });
   }
