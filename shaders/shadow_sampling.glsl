@@ -73,6 +73,8 @@ struct MapPoint {
   vec2 uv;           // in the light's own square map, [0, 1]^2
   float depth;       // normalized linear depth of the receiver
   float view_depth;  // its distance along the light's axis, world units
+  vec2 depth_slope;  // d(depth)/d(uv) across the receiver's tangent plane (receiver-plane bias)
+  float texel_slack; // the most depth can change across one texel of that plane
 };
 
 bool map_is_orthographic(Light light) { return light.shadow_depth.w > 0.5; }
@@ -96,11 +98,20 @@ float map_view_depth(Light light, float linear_depth) {
 
 // Section 3's lookup: proj = M_b * shadow_matrix * world, divided by w. Vulkan's NDC y points
 // down like the framebuffer the map was rendered to, so M_b is (x + 1) / 2 on both axes.
-bool project_to_map(Light light, vec3 world_pos, out MapPoint point) {
+//
+// Filtering compares the receiver with texels away from its own uv, and a texel holds the depth
+// at its centre: on a receiver tilted towards the light both differ from the receiver's depth
+// by the plane's slope times the distance, which a constant or N.L bias cannot follow (acne on
+// lit surfaces at grazing angles, growing with the kernel). So the receiver's tangent plane is
+// carried into the map: the map's Jacobian at the point gives d(depth)/d(uv) on that plane, and
+// every sample is compared with the plane's depth at the sample (receiver-plane depth bias).
+bool project_to_map(Light light, vec3 world_pos, vec3 normal, out MapPoint point) {
   vec4 clip = light.shadow_matrix * vec4(world_pos, 1.0);
   point.uv = vec2(0.0);
   point.depth = 0.0;
   point.view_depth = 0.0;
+  point.depth_slope = vec2(0.0);
+  point.texel_slack = 0.0;
   if (clip.w <= 0.0) return false;  // behind a perspective light
   vec3 ndc = clip.xyz / clip.w;
   point.uv = ndc.xy * 0.5 + 0.5;
@@ -110,7 +121,36 @@ bool project_to_map(Light light, vec3 world_pos, out MapPoint point) {
   }
   point.depth = map_linear_depth(light, ndc.z);
   point.view_depth = map_view_depth(light, point.depth);
+
+  mat4 m = light.shadow_matrix;
+  vec3 row_x = vec3(m[0][0], m[1][0], m[2][0]);
+  vec3 row_y = vec3(m[0][1], m[1][1], m[2][1]);
+  vec3 row_z = vec3(m[0][2], m[1][2], m[2][2]);
+  vec3 row_w = vec3(m[0][3], m[1][3], m[2][3]);
+  // uv = (clip.xy / clip.w + 1) / 2; linear depth = clip.w / far (perspective) or clip.z.
+  vec3 du = 0.5 * (row_x - ndc.x * row_w) / clip.w;
+  vec3 dv = 0.5 * (row_y - ndc.y * row_w) / clip.w;
+  vec3 dz = map_is_orthographic(light) ? row_z : row_w / light.shadow_depth.y;
+  vec3 t1 = normalize(abs(normal.y) < 0.9 ? cross(normal, vec3(0.0, 1.0, 0.0))
+                                          : cross(normal, vec3(1.0, 0.0, 0.0)));
+  vec3 t2 = cross(normal, t1);
+  mat2 uv_per_tangent = mat2(dot(du, t1), dot(dv, t1), dot(du, t2), dot(dv, t2));
+  float det = determinant(uv_per_tangent);
+  // A plane seen edge-on from the light is unlit anyway (N.L = 0): no slope to follow.
+  if (abs(det) > 1e-12) {
+    vec2 depth_per_tangent = vec2(dot(dz, t1), dot(dz, t2));
+    point.depth_slope = depth_per_tangent * inverse(uv_per_tangent);
+    // Held to 10% of the depth range per texel, for planes nearly edge-on.
+    float texel = light.shadow_depth.z;
+    point.depth_slope = clamp(point.depth_slope, vec2(-0.1 / texel), vec2(0.1 / texel));
+    point.texel_slack = (abs(point.depth_slope.x) + abs(point.depth_slope.y)) * texel;
+  }
   return true;
+}
+
+// The receiver plane's linear depth at map uv point.uv + offset, minus `bias`.
+float plane_reference(MapPoint point, vec2 offset, float bias) {
+  return point.depth + dot(point.depth_slope, offset) - bias;
 }
 
 // Atlas coordinates of map uv `uv`, held half a texel inside the light's region so that
@@ -131,18 +171,32 @@ float compare_filtered(Light light, vec2 uv, float reference_stored) {
   return 1.0 - textureGrad(shadow_atlas_compare, coord, vec2(0.0), vec2(0.0));
 }
 
-// 4.1: z - bias > depth(uv) ? 1 : 0, on the nearest texel.
-float shadow_2d_hard(Light light, MapPoint point, float reference) {
+// The centre of the light-map texel that a nearest fetch at `uv` reads, relative to `uv`.
+vec2 to_texel_centre(Light light, vec2 uv) {
+  float texels = 1.0 / light.shadow_depth.z;
+  return (floor(uv * texels) + 0.5) / texels - uv;
+}
+
+// 4.1: z - bias > depth(uv) ? 1 : 0, on the nearest texel (z taken where that texel's depth was).
+float shadow_2d_hard(Light light, MapPoint point, float bias) {
+  float reference = plane_reference(point, to_texel_centre(light, point.uv), bias);
   return reference > fetch_linear_depth(light, point.uv) ? 1.0 : 0.0;
 }
 
+// A hardware 2x2 comparison at uv + offset against the receiver plane there; the four texels'
+// centres lie within a texel, so the plane's change across one texel is given as slack.
+float compare_plane(Light light, MapPoint point, vec2 offset, float bias) {
+  float reference = plane_reference(point, offset, bias + point.texel_slack);
+  return compare_filtered(light, point.uv + offset, map_stored_depth(light, reference));
+}
+
 // 4.2: the hard test averaged over a (2k+1)^2 grid of offsets (x, y) * texel * pcfRadius.
-float shadow_2d_pcf(Light light, MapPoint point, float reference_stored) {
+float shadow_2d_pcf(Light light, MapPoint point, float bias) {
   float step_uv = light.shadow_bias.z * light.shadow_depth.z;
   float sum = 0.0;
   for (int y = -PCF_HALF_WIDTH; y <= PCF_HALF_WIDTH; ++y) {
     for (int x = -PCF_HALF_WIDTH; x <= PCF_HALF_WIDTH; ++x) {
-      sum += compare_filtered(light, point.uv + vec2(x, y) * step_uv, reference_stored);
+      sum += compare_plane(light, point, vec2(x, y) * step_uv, bias);
     }
   }
   float taps = float((2 * PCF_HALF_WIDTH + 1) * (2 * PCF_HALF_WIDTH + 1));
@@ -150,12 +204,12 @@ float shadow_2d_pcf(Light light, MapPoint point, float reference_stored) {
 }
 
 // 4.3: like pcf with Gaussian offsets (r1, r2) * sigma, sigma = pcfRadius texels.
-float shadow_2d_noise(Light light, MapPoint point, float reference_stored, vec3 world_pos) {
+float shadow_2d_noise(Light light, MapPoint point, float bias, vec3 world_pos) {
   float sigma_uv = light.shadow_bias.z * light.shadow_depth.z;
   float sum = 0.0;
   for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
     vec2 offset = gaussian_pair(surface_random(world_pos, i).xy) * sigma_uv;
-    sum += compare_filtered(light, point.uv + offset, reference_stored);
+    sum += compare_plane(light, point, offset, bias);
   }
   return sum / float(NOISE_SAMPLES);
 }
@@ -166,7 +220,7 @@ float shadow_2d_noise(Light light, MapPoint point, float reference_stored, vec3 
 // thirds of the way to a perspective light (zBlocker >= zReceiver / 3); nearer blockers would need
 // most of the map searched. The filter radius is half the penumbra width, so the transition
 // from lit to shadowed is w wide, and at least one texel, so contact shadows stay antialiased.
-float shadow_2d_pcss(Light light, MapPoint point, float reference, bool jitter, vec3 world_pos) {
+float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, vec3 world_pos) {
   bool orthographic = map_is_orthographic(light);
   float light_size = light.shadow_bias.w;
   float uv_per_unit = map_uv_per_world_unit(projection_x_scale(light.shadow_matrix),
@@ -177,8 +231,9 @@ float shadow_2d_pcss(Light light, MapPoint point, float reference, bool jitter, 
   float blocker_sum = 0.0;
   float blockers = 0.0;
   for (uint i = 0u; i < PCSS_BLOCKER_SAMPLES; ++i) {
-    float depth = fetch_linear_depth(light, point.uv + rotation * POISSON_DISK[i] * search_uv);
-    if (depth < reference) {
+    vec2 offset = rotation * POISSON_DISK[i] * search_uv;
+    float depth = fetch_linear_depth(light, point.uv + offset);
+    if (depth < plane_reference(point, offset + to_texel_centre(light, point.uv + offset), bias)) {
       blocker_sum += depth;
       blockers += 1.0;
     }
@@ -190,28 +245,21 @@ float shadow_2d_pcss(Light light, MapPoint point, float reference, bool jitter, 
                     ? orthographic_penumbra_width(point.view_depth, blocker, light_size)
                     : pcss_penumbra_width(point.view_depth, blocker, light_size);
   float radius_uv = max(0.5 * width * uv_per_unit, light.shadow_depth.z);
-  float reference_stored = map_stored_depth(light, reference);
   float sum = 0.0;
   for (uint i = 0u; i < PCSS_FILTER_SAMPLES; ++i) {
-    sum += compare_filtered(light, point.uv + rotation * POISSON_DISK[i] * radius_uv,
-                            reference_stored);
+    sum += compare_plane(light, point, rotation * POISSON_DISK[i] * radius_uv, bias);
   }
   return sum / float(PCSS_FILTER_SAMPLES);
 }
 
-float shadow_2d(Light light, vec3 world_pos, float bias) {
+float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias) {
   MapPoint point;
-  if (!project_to_map(light, world_pos, point)) return 0.0;
-  float reference = point.depth - bias;
+  if (!project_to_map(light, world_pos, normal, point)) return 0.0;
   uint algorithm = light.info.z;
-  if (algorithm == SHADOW_HARD) return shadow_2d_hard(light, point, reference);
-  if (algorithm == SHADOW_PCF) {
-    return shadow_2d_pcf(light, point, map_stored_depth(light, reference));
-  }
-  if (algorithm == SHADOW_NOISE) {
-    return shadow_2d_noise(light, point, map_stored_depth(light, reference), world_pos);
-  }
-  return shadow_2d_pcss(light, point, reference, algorithm == SHADOW_PCSS_NOISE, world_pos);
+  if (algorithm == SHADOW_HARD) return shadow_2d_hard(light, point, bias);
+  if (algorithm == SHADOW_PCF) return shadow_2d_pcf(light, point, bias);
+  if (algorithm == SHADOW_NOISE) return shadow_2d_noise(light, point, bias, world_pos);
+  return shadow_2d_pcss(light, point, bias, algorithm == SHADOW_PCSS_NOISE, world_pos);
 }
 
 // ---- cube maps (point lights) ----
@@ -290,14 +338,20 @@ float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias) {
   r.to_fragment = world_pos - light.position_range.xyz;
   r.distance = length(r.to_fragment);
   r.normal = normal;
-  r.bias = bias;
+  // A texel holds the distance in the direction of its centre: across one texel a tilted
+  // receiver's distance changes by the texel's width times tan(angle of incidence), which is
+  // added to the light's bias (held at 10 texels for grazing receivers, which are barely lit).
+  float n_dot_l = max(dot(normal, -r.to_fragment / max(r.distance, 1e-6)), 0.0);
+  float tan_incidence = min(sqrt(max(1.0 - n_dot_l * n_dot_l, 0.0)) / max(n_dot_l, 1e-3), 10.0);
+  float texel_world = cube_texel_world_size(r.distance, light.shadow_depth.z);
+  r.bias = bias + texel_world * tan_incidence / light.shadow_depth.y;
   float depth = r.distance / light.shadow_depth.y;
   if (depth > 1.0) return 0.0;
   uint algorithm = light.info.z;
-  if (algorithm == SHADOW_HARD) return cube_occluded(light, r.to_fragment, depth - bias);
+  if (algorithm == SHADOW_HARD) return cube_occluded(light, r.to_fragment, depth - r.bias);
 
   // pcfRadius texels, measured where fragToLight meets its cube face.
-  float radius = light.shadow_bias.z * cube_texel_world_size(r.distance, light.shadow_depth.z);
+  float radius = light.shadow_bias.z * texel_world;
   if (algorithm == SHADOW_PCF) {
     float sum = 0.0;
     for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) sum += cube_sample(light, r, CUBE_OFFSETS[k] * radius);
@@ -325,7 +379,7 @@ float light_shadow(Light light, vec3 world_pos, vec3 normal, float n_dot_l) {
   if (light.info.w == NO_SHADOW_MAP) return 0.0;
   float bias = shadow_bias(n_dot_l, light.shadow_bias.x, light.shadow_bias.y);
   if (light.info.x == LIGHT_POINT) return shadow_cube(light, world_pos, normal, bias);
-  return shadow_2d(light, world_pos, bias);
+  return shadow_2d(light, world_pos, normal, bias);
 }
 
 #endif
