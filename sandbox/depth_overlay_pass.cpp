@@ -1,9 +1,9 @@
 #include "sandbox/depth_overlay_pass.h"
 
 #include "rendergraph/vulkan/context.h"
+#include "rendergraph/vulkan/descriptors.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/pipeline.h"
-#include "rendergraph/vulkan/vulkan_error.h"
 #include "sandbox_shaders/depth_overlay.frag.spv.h"
 #include "sandbox_shaders/depth_overlay.vert.spv.h"
 
@@ -23,42 +23,19 @@ constexpr float shown_distance = 40.0f;
 
 DepthOverlayPass::DepthOverlayPass(vk::VulkanContext& context, rg::Format colour_format) {
   const VkDevice device = context.device();
-  VkSamplerCreateInfo sampler_info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  sampler_info.magFilter = VK_FILTER_NEAREST;
-  sampler_info.minFilter = VK_FILTER_NEAREST;
-  sampler_info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  sampler_info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  sampler_info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  VkSampler sampler = VK_NULL_HANDLE;
-  vk::check(vkCreateSampler(device, &sampler_info, nullptr, &sampler), "vkCreateSampler");
-  sampler_ = vk::UniqueSampler(device, sampler);
-
+  sampler_ = vk::create_sampler(device, VK_FILTER_NEAREST);
   const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                              VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-  VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  set_info.bindingCount = 1;
-  set_info.pBindings = &binding;
-  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-  vk::check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &set_layout),
-            "vkCreateDescriptorSetLayout");
-  set_layout_ = vk::UniqueDescriptorSetLayout(device, set_layout);
-
-  const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LensConstants)};
-  VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layout_info.setLayoutCount = 1;
-  layout_info.pSetLayouts = &set_layout;
-  layout_info.pushConstantRangeCount = 1;
-  layout_info.pPushConstantRanges = &push;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  vk::check(vkCreatePipelineLayout(device, &layout_info, nullptr, &layout), "vkCreatePipelineLayout");
-  pipeline_layout_ = vk::UniquePipelineLayout(device, layout);
+  set_layout_ = vk::create_set_layout(device, {&binding, 1});
+  pipeline_layout_ = vk::create_pipeline_layout(
+      device, set_layout_.get(), {VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(LensConstants)});
 
   vk::GraphicsPipelineDesc desc;
   desc.vertex_spirv = depth_overlay_vert;
   desc.fragment_spirv = depth_overlay_frag;
   desc.color_formats = {static_cast<VkFormat>(colour_format)};
   desc.cull_mode = VK_CULL_MODE_NONE;
-  desc.layout = layout;
+  desc.layout = pipeline_layout_.get();
   desc.name = "depth overlay";
   pipeline_ = vk::create_graphics_pipeline(context, desc);
 }

@@ -1,11 +1,11 @@
 #include "systems/forward_pass.h"
 
 #include "rendergraph/vulkan/context.h"
+#include "rendergraph/vulkan/descriptors.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/pipeline.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "rendergraph/vulkan/resources.h"
-#include "rendergraph/vulkan/vulkan_error.h"
 #include "shaders/scene.frag.spv.h"
 #include "shaders/scene.vert.spv.h"
 #include "systems/gpu_scene.h"
@@ -16,22 +16,6 @@ namespace sg {
 namespace {
 
 constexpr VkShaderStageFlags shader_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-
-vk::UniqueSampler create_sampler(VkDevice device, VkFilter filter, bool compare) {
-  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = filter;
-  info.minFilter = filter;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  // shadow_sampling.glsl: the comparison returns 1 where the receiver is lit.
-  info.compareEnable = compare ? VK_TRUE : VK_FALSE;
-  info.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-  VkSampler sampler = VK_NULL_HANDLE;
-  vk::check(vkCreateSampler(device, &info, nullptr, &sampler), "vkCreateSampler");
-  return vk::UniqueSampler(device, sampler);
-}
 
 // Hardware 2x2 PCF needs linear filtering of the depth format; fall back to one tap without it.
 VkFilter compare_filter(const vk::VulkanContext& context) {
@@ -46,10 +30,10 @@ VkFilter compare_filter(const vk::VulkanContext& context) {
 }  // namespace
 
 ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight)
-    : context_(context), slot_sets_(frames_in_flight) {
+    : context_(context) {
   const VkDevice device = context.device();
-  nearest_ = create_sampler(device, VK_FILTER_NEAREST, false);
-  compare_ = create_sampler(device, compare_filter(context), true);
+  nearest_ = vk::create_sampler(device, VK_FILTER_NEAREST);
+  compare_ = vk::create_sampler(device, compare_filter(context), true);
 
   // shaders/scene_interface.glsl and shaders/lights_interface.glsl.
   const VkDescriptorSetLayoutBinding bindings[] = {
@@ -58,40 +42,10 @@ ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight)
       {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
-  VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  set_info.bindingCount = static_cast<uint32_t>(std::size(bindings));
-  set_info.pBindings = bindings;
-  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-  vk::check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &set_layout),
-            "vkCreateDescriptorSetLayout");
-  set_layout_ = vk::UniqueDescriptorSetLayout(device, set_layout);
-
-  const VkDescriptorPoolSize sizes[] = {
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2 * frames_in_flight},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 3 * frames_in_flight}};
-  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  pool_info.maxSets = frames_in_flight;
-  pool_info.poolSizeCount = 2;
-  pool_info.pPoolSizes = sizes;
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  vk::check(vkCreateDescriptorPool(device, &pool_info, nullptr, &pool), "vkCreateDescriptorPool");
-  pool_ = vk::UniqueDescriptorPool(device, pool);
-  const std::vector<VkDescriptorSetLayout> layouts(frames_in_flight, set_layout);
-  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  alloc.descriptorPool = pool;
-  alloc.descriptorSetCount = frames_in_flight;
-  alloc.pSetLayouts = layouts.data();
-  vk::check(vkAllocateDescriptorSets(device, &alloc, slot_sets_.data()), "vkAllocateDescriptorSets");
-
-  const VkPushConstantRange push{shader_stages, 0, sizeof(FrameConstants)};
-  VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layout_info.setLayoutCount = 1;
-  layout_info.pSetLayouts = &set_layout;
-  layout_info.pushConstantRangeCount = 1;
-  layout_info.pPushConstantRanges = &push;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  vk::check(vkCreatePipelineLayout(device, &layout_info, nullptr, &layout), "vkCreatePipelineLayout");
-  pipeline_layout_ = vk::UniquePipelineLayout(device, layout);
+  set_layout_ = vk::create_set_layout(device, bindings);
+  slot_sets_ = vk::allocate_sets(device, set_layout_.get(), bindings, frames_in_flight);
+  pipeline_layout_ = vk::create_pipeline_layout(device, set_layout_.get(),
+                                                {shader_stages, 0, sizeof(FrameConstants)});
 
   vk::GraphicsPipelineDesc desc;
   desc.vertex_spirv = scene_vert;
@@ -102,7 +56,7 @@ ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight)
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, normal))}};
   desc.color_formats = {vk::to_vk(colour_format)};
   desc.depth_format = vk::to_vk(depth_format);
-  desc.layout = layout;
+  desc.layout = pipeline_layout_.get();
   desc.name = "forward";
   pipeline_ = vk::create_graphics_pipeline(context, desc);
 }
@@ -124,7 +78,7 @@ void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer
   for (uint32_t binding = 0; binding < 5; ++binding) {
     VkWriteDescriptorSet& write = writes[binding];
     write = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = slot_sets_[slot];
+    write.dstSet = slot_sets_.sets[slot];
     write.dstBinding = binding;
     write.descriptorCount = 1;
     if (binding < 2) {
@@ -160,7 +114,7 @@ ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colou
         rec.set_full_viewport();
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_.get(), 0, 1,
-                                &slot_sets_[slot], 0, nullptr);
+                                &slot_sets_.sets[slot], 0, nullptr);
         vkCmdPushConstants(cmd, pipeline_layout_.get(), shader_stages, 0, sizeof(constants), &constants);
         scene.draw(cmd, slot, DrawSet::all);
       });

@@ -8,6 +8,7 @@
 #include <vulkan/vulkan.h>
 
 #include "rendergraph/core/render_graph.h"
+#include "rendergraph/vulkan/descriptors.h"
 #include "rendergraph/vulkan/unique_handle.h"
 #include "systems/scene_gpu_types.h"
 
@@ -50,8 +51,7 @@ class ForwardPass {
   vk::UniqueSampler nearest_;
   vk::UniqueSampler compare_;
   vk::UniqueDescriptorSetLayout set_layout_;
-  vk::UniqueDescriptorPool pool_;
-  std::vector<VkDescriptorSet> slot_sets_;
+  vk::DescriptorSets slot_sets_;
   vk::UniquePipelineLayout pipeline_layout_;
   vk::UniquePipeline pipeline_;
 };

@@ -4,10 +4,10 @@
 #include <span>
 
 #include "rendergraph/vulkan/context.h"
+#include "rendergraph/vulkan/descriptors.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/pipeline.h"
 #include "rendergraph/vulkan/plan_translation.h"
-#include "rendergraph/vulkan/vulkan_error.h"
 #include "shaders/shadow_cube.frag.spv.h"
 #include "shaders/shadow_cube_layered.vert.spv.h"
 #include "shaders/shadow_map.vert.spv.h"
@@ -32,7 +32,6 @@ constexpr VkDeviceSize cube_faces_bytes = 6 * sizeof(glm::mat4);
 
 ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight)
     : context_(context),
-      slot_sets_(frames_in_flight),
       cube_faces_(context, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frames_in_flight, "cube face matrices") {
   const VkDevice device = context.device();
   const VkDeviceSize alignment = context.properties().limits.minUniformBufferOffsetAlignment;
@@ -41,39 +40,10 @@ ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight
   const VkDescriptorSetLayoutBinding bindings[] = {
       {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
       {5, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}};
-  VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  set_info.bindingCount = 2;
-  set_info.pBindings = bindings;
-  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-  vk::check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &set_layout),
-            "vkCreateDescriptorSetLayout");
-  set_layout_ = vk::UniqueDescriptorSetLayout(device, set_layout);
-
-  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, frames_in_flight},
-                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frames_in_flight}};
-  VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  pool_info.maxSets = frames_in_flight;
-  pool_info.poolSizeCount = 2;
-  pool_info.pPoolSizes = sizes;
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  vk::check(vkCreateDescriptorPool(device, &pool_info, nullptr, &pool), "vkCreateDescriptorPool");
-  pool_ = vk::UniqueDescriptorPool(device, pool);
-  const std::vector<VkDescriptorSetLayout> layouts(frames_in_flight, set_layout);
-  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  alloc.descriptorPool = pool;
-  alloc.descriptorSetCount = frames_in_flight;
-  alloc.pSetLayouts = layouts.data();
-  vk::check(vkAllocateDescriptorSets(device, &alloc, slot_sets_.data()), "vkAllocateDescriptorSets");
-
-  const VkPushConstantRange push{stages, 0, sizeof(PassConstants)};
-  VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layout_info.setLayoutCount = 1;
-  layout_info.pSetLayouts = &set_layout;
-  layout_info.pushConstantRangeCount = 1;
-  layout_info.pPushConstantRanges = &push;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  vk::check(vkCreatePipelineLayout(device, &layout_info, nullptr, &layout), "vkCreatePipelineLayout");
-  pipeline_layout_ = vk::UniquePipelineLayout(device, layout);
+  set_layout_ = vk::create_set_layout(device, bindings);
+  slot_sets_ = vk::allocate_sets(device, set_layout_.get(), bindings, frames_in_flight);
+  pipeline_layout_ = vk::create_pipeline_layout(device, set_layout_.get(),
+                                                {stages, 0, sizeof(PassConstants)});
 
   vk::GraphicsPipelineDesc desc;
   desc.vertex_bindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
@@ -83,7 +53,7 @@ ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight
   // Receivers apply each light's own bias (ALGORITHMS.md section 4), so casters are drawn as
   // they are, both faces: thin and open meshes cast too.
   desc.cull_mode = VK_CULL_MODE_NONE;
-  desc.layout = layout;
+  desc.layout = pipeline_layout_.get();
   desc.vertex_spirv = shadow_map_vert;
   desc.name = "shadow map";
   map_pipeline_ = vk::create_graphics_pipeline(context, desc);
@@ -109,12 +79,12 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
   const VkDescriptorBufferInfo face_matrices{faces.handle(), 0, cube_faces_bytes};
   VkWriteDescriptorSet writes[2]{{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET},
                                  {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
-  writes[0].dstSet = slot_sets_[slot];
+  writes[0].dstSet = slot_sets_.sets[slot];
   writes[0].dstBinding = 0;
   writes[0].descriptorCount = 1;
   writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   writes[0].pBufferInfo = &instances;
-  writes[1].dstSet = slot_sets_[slot];
+  writes[1].dstSet = slot_sets_.sets[slot];
   writes[1].dstBinding = 5;
   writes[1].descriptorCount = 1;
   writes[1].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
@@ -128,7 +98,7 @@ void ShadowPasses::draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline p
                                 DrawSet draw_set) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_.get(), 0, 1,
-                          &slot_sets_[slot], 1, &cube_faces_offset);
+                          &slot_sets_.sets[slot], 1, &cube_faces_offset);
   const PassConstants constants{view_projection, position_far};
   vkCmdPushConstants(cmd, pipeline_layout_.get(), stages, 0, sizeof(constants), &constants);
   scene.draw(cmd, slot, draw_set);

@@ -9,6 +9,7 @@
 #include <vulkan/vulkan.h>
 
 #include "rendergraph/core/render_graph.h"
+#include "rendergraph/vulkan/descriptors.h"
 #include "rendergraph/vulkan/frame_buffers.h"
 #include "rendergraph/vulkan/unique_handle.h"
 #include "systems/frame_lights.h"
@@ -50,8 +51,7 @@ class ShadowPasses {
 
   vk::VulkanContext& context_;
   vk::UniqueDescriptorSetLayout set_layout_;
-  vk::UniqueDescriptorPool pool_;
-  std::vector<VkDescriptorSet> slot_sets_;
+  vk::DescriptorSets slot_sets_;
   vk::UniquePipelineLayout pipeline_layout_;
   vk::UniquePipeline map_pipeline_;
   vk::UniquePipeline face_pipeline_;

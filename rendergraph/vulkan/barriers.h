@@ -15,9 +15,11 @@ struct ImageTransition {
   VkAccessFlags2 src_access = VK_ACCESS_2_NONE;
   VkPipelineStageFlags2 dst_stages = VK_PIPELINE_STAGE_2_NONE;
   VkAccessFlags2 dst_access = VK_ACCESS_2_NONE;
+  uint32_t base_layer = 0;
+  uint32_t layer_count = VK_REMAINING_ARRAY_LAYERS;
 };
 
-// Records the transition over all mips and layers of the image.
+// Records the transition over all mips of the layers base_layer .. base_layer + layer_count.
 void transition(VkCommandBuffer cmd, const ImageTransition& t);
 
 // Records a global memory dependency (all resources), e.g. copies before host reads.

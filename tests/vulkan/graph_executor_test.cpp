@@ -8,6 +8,7 @@
 
 #include "rendergraph/core/compile.h"
 #include "rendergraph/core/imported_states.h"
+#include "rendergraph/vulkan/barriers.h"
 #include "rendergraph/vulkan/frame_ring.h"
 #include "rendergraph/vulkan/graph_executor.h"
 #include "rendergraph/vulkan/readback.h"
@@ -206,30 +207,20 @@ TEST_F(GraphExecutorTest, RendersIntoOneLayerOfAnImportedArrayAndLeavesTheOthers
   for (uint32_t layer = 0; layer < 3; ++layer) {
     // Copy each layer into `output` to read it back.
     context.submit_and_wait([&](VkCommandBuffer cmd) {
-      VkImageMemoryBarrier2 to_dst{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-      to_dst.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-      to_dst.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-      to_dst.srcAccessMask = VK_ACCESS_2_TRANSFER_READ_BIT;
-      to_dst.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-      to_dst.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-      to_dst.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-      to_dst.image = output.handle();
-      to_dst.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-      VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-      dependency.imageMemoryBarrierCount = 1;
-      dependency.pImageMemoryBarriers = &to_dst;
-      vkCmdPipelineBarrier2(cmd, &dependency);
+      vk::transition(cmd, {output.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                           VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                           VK_ACCESS_2_TRANSFER_WRITE_BIT});
       VkImageCopy region{};
       region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
       region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
       region.extent = {size, size, 1};
       vkCmdCopyImage(cmd, layers.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, output.handle(),
                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-      to_dst.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-      to_dst.dstAccessMask = VK_ACCESS_2_TRANSFER_READ_BIT;
-      to_dst.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-      to_dst.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-      vkCmdPipelineBarrier2(cmd, &dependency);
+      vk::transition(cmd, {output.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                           VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                           VK_ACCESS_2_TRANSFER_READ_BIT});
     });
     const uint8_t expected = layer == 1 ? 255 : 128;
     SCOPED_TRACE(layer);

@@ -16,6 +16,7 @@
 #include "rendergraph/vulkan/context.h"
 #include "rendergraph/vulkan/frame_ring.h"
 #include "sandbox/gpu_time_log.h"
+#include "sandbox/headless_frames.h"
 #include "sandbox/options.h"
 #include "sandbox/sandbox_frame.h"
 #include "sandbox/scene_setup.h"
@@ -39,17 +40,7 @@ Measurement measure(sg::vk::VulkanContext& context, const Options& options, uint
   sg::sandbox::SandboxFrame frame(context, scene, options, ring.frames_in_flight());
   frame.resize({options.width, options.height});
   sg::sandbox::GpuTimeLog log;
-  for (uint32_t i = 0; i < frames; ++i) {
-    sg::vk::FrameSlot& slot = ring.begin_frame();
-    frame.record(slot, i / 60.0);
-    ring.submit();
-    log.add(frame.executor().latest_timings());
-  }
-  ring.wait_idle();
-  for (uint32_t i = frames > ring.frames_in_flight() ? frames - ring.frames_in_flight() : 0; i < frames; ++i) {
-    frame.executor().collect_timings(i % ring.frames_in_flight());
-    log.add(frame.executor().latest_timings());
-  }
+  sg::sandbox::render_headless_frames(frame, ring, frames, log);
   Measurement m;
   for (const PassTime& pass : log.pass_summaries()) {
     if (pass.name == "forward") m.forward_ms = pass.gpu_ms.median;

@@ -17,6 +17,8 @@
 #include "rendergraph/core/dump.h"
 #include "rendergraph/vulkan/context.h"
 #include "rendergraph/vulkan/frame_ring.h"
+#include "sandbox/gpu_time_log.h"
+#include "sandbox/headless_frames.h"
 #include "sandbox/options.h"
 #include "sandbox/sandbox_frame.h"
 #include "sandbox/scene_setup.h"
@@ -56,16 +58,11 @@ int main(int argc, char** argv) {
     sg::vk::FrameRing frames(context);
     sg::sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
     frame.resize({options.width, options.height});
-    // Enough frames for the first frame's timestamps to come back.
-    const uint32_t frame_count = options.frames.value_or(frames.frames_in_flight() + 1);
-    for (uint32_t i = 0; i < frame_count; ++i) {
-      sg::vk::FrameSlot& slot = frames.begin_frame();
-      frame.record(slot, i / 60.0);
-      frames.submit();
-    }
-    frames.wait_idle();
-    const uint32_t last = frame_count - 1;
-    frame.executor().collect_timings(last % frames.frames_in_flight());
+    // A few frames, so that the dumped plan is one the cache served, as in a running sandbox.
+    sg::sandbox::GpuTimeLog gpu_times;
+    sg::sandbox::render_headless_frames(frame, frames,
+                                        options.frames.value_or(frames.frames_in_flight() + 1),
+                                        gpu_times);
 
     // The last frame's graph and plan; its timings when they are that frame's.
     const auto& timings = frame.executor().latest_timings();

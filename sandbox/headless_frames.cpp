@@ -1,0 +1,38 @@
+#include "sandbox/headless_frames.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "rendergraph/vulkan/frame_ring.h"
+#include "sandbox/gpu_time_log.h"
+#include "sandbox/sandbox_frame.h"
+
+namespace sg::sandbox {
+
+RunRecord render_headless_frames(SandboxFrame& frame, vk::FrameRing& ring, uint32_t count,
+                                 GpuTimeLog& gpu_times, bool progress) {
+  constexpr double frame_seconds = 1.0 / 60.0;
+  RunRecord record{{}, &gpu_times};
+  for (uint32_t i = 0; i < count; ++i) {
+    vk::FrameSlot& slot = ring.begin_frame();
+    const auto start = std::chrono::steady_clock::now();  // after the wait for the GPU
+    frame.record(slot, i * frame_seconds);
+    ring.submit();
+    gpu_times.add(frame.executor().latest_timings());
+    record.cpu_frame_ms.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    if (progress && count >= 100 && (i + 1) % (count / 10) == 0) {
+      std::printf("shadowgraph: %u/%u frames\n", i + 1, count);
+    }
+  }
+  ring.wait_idle();
+  // The last frames' timestamps are readable now that the GPU is idle, oldest first.
+  const uint32_t in_flight = ring.frames_in_flight();
+  for (uint32_t i = count > in_flight ? count - in_flight : 0; i < count; ++i) {
+    frame.executor().collect_timings(i % in_flight);
+    gpu_times.add(frame.executor().latest_timings());
+  }
+  return record;
+}
+
+}  // namespace sg::sandbox

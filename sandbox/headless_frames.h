@@ -1,0 +1,22 @@
+#pragma once
+// The offscreen frame loop shared by the headless sandbox and the tools that measure its frame.
+#include <cstdint>
+
+#include "sandbox/run.h"
+
+namespace sg::vk {
+class FrameRing;
+}
+
+namespace sg::sandbox {
+
+class GpuTimeLog;
+class SandboxFrame;
+
+// Renders `count` frames, animation advancing a fixed 1/60 s per frame so runs repeat exactly,
+// then waits for the GPU and collects the last frames' timings too. CPU times go into the
+// returned record, GPU times into `gpu_times`. With `progress`, long runs print every tenth.
+RunRecord render_headless_frames(SandboxFrame& frame, vk::FrameRing& ring, uint32_t count,
+                                 GpuTimeLog& gpu_times, bool progress = false);
+
+}  // namespace sg::sandbox
