@@ -123,18 +123,25 @@ void add_options(CLI::App& app, Options& o) {
                  "After the run, write each light's shadow map as PNG into this folder");
 }
 
-ParseResult parse_options(int argc, char** argv) {
-  Options o;
-  CLI::App app{"Shadowgraph sandbox: renders a scene in a window, or headless to a PNG."};
-  add_options(app, o);
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, Options& options) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // CLI11 has an exit code per kind of error; the sandbox promises 2 for every usage error.
     const bool usage_error = app.exit(e) != static_cast<int>(CLI::ExitCodes::Success);
-    return {std::nullopt, usage_error ? 2 : 0};
+    return usage_error ? 2 : 0;
   }
-  o.validation = o.validation || vk::validation_requested_by_environment();
+  options.validation = options.validation || vk::validation_requested_by_environment();
+  return std::nullopt;
+}
+
+ParseResult parse_options(int argc, char** argv) {
+  Options o;
+  CLI::App app{"Shadowgraph sandbox: renders a scene in a window, or headless to a PNG."};
+  add_options(app, o);
+  if (const std::optional<int> exit_code = parse_command_line(app, argc, argv, o)) {
+    return {std::nullopt, *exit_code};
+  }
   return {o, 0};
 }
 

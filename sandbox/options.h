@@ -51,9 +51,12 @@ struct ParseResult {
 };
 ParseResult parse_options(int argc, char** argv);
 
-// Registers the sandbox's options on `app`, writing into `options`: for tools that render the
-// sandbox's frame and add options of their own.
+// For tools that render the sandbox's frame and add options of their own: registers the
+// sandbox's options on `app`, writing into `options`...
 void add_options(CLI::App& app, Options& options);
+// ...then parses as parse_options does (validation also from the environment). Returns nullopt
+// to go on, or the exit code to end with (0 after --help, 2 for a usage error).
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, Options& options);
 
 // The Vulkan context the options ask for (device, validation); presentation off.
 vk::ContextOptions context_options(const Options& options);

@@ -75,14 +75,22 @@ CameraImage camera() {
   return c;
 }
 
-sandbox::SandboxScene build(const ShadowScene& s, float intensity) {
+// A scene with the grey floor (its top at y = 0) and the box mesh, for the tests to fill.
+sandbox::SandboxScene floor_scene(const char* name, uint32_t& box) {
   sandbox::SandboxScene out;
-  scene::Scene& scene = out.scene;
-  scene.name = "shadow test";
-  const uint32_t box = scene::add_box_mesh(scene.meshes);
-  scene::add_instance(scene, box,
+  out.scene.name = name;
+  box = scene::add_box_mesh(out.scene.meshes);
+  scene::add_instance(out.scene, box,
                       {{0.0f, -0.1f, 0.0f}, glm::quat(1, 0, 0, 0), {2 * floor_half_extent, 0.2f, 2 * floor_half_extent}},
                       grey_floor());
+  out.camera_source = "test";
+  return out;
+}
+
+sandbox::SandboxScene build(const ShadowScene& s, float intensity) {
+  uint32_t box = 0;
+  sandbox::SandboxScene out = floor_scene("shadow test", box);
+  scene::Scene& scene = out.scene;
   if (s.with_box) scene::add_instance(scene, box, box_placement(s), scene::Material{});
   const ecs::LocalTransform aim = aimed_light(s.light_position, s.aim);
   if (s.kind == LightKind::spot) {
@@ -101,7 +109,6 @@ sandbox::SandboxScene build(const ShadowScene& s, float intensity) {
   ecs::update_world_transforms(scene.world, 0);
   out.pose = camera().pose;
   out.lens = camera().lens;
-  out.camera_source = "test";
   return out;
 }
 
@@ -321,13 +328,9 @@ TEST_F(ShadowAlgorithms, NoiseIsStableFromFrameToFrame) {
 TEST_F(ShadowAlgorithms, FiveLightsEachRenderWithTheirOwnAlgorithm) {
   constexpr float spacing = 4.0f;
   const auto build_row = [&]() {
-    sandbox::SandboxScene out;
+    uint32_t box = 0;
+    sandbox::SandboxScene out = floor_scene("five lights", box);
     scene::Scene& scene = out.scene;
-    scene.name = "five lights";
-    const uint32_t box = scene::add_box_mesh(scene.meshes);
-    scene::add_instance(scene, box,
-                        {{0.0f, -0.1f, 0.0f}, glm::quat(1, 0, 0, 0), {2 * floor_half_extent, 0.2f, 2 * floor_half_extent}},
-                        grey_floor());
     for (int i = 0; i < 5; ++i) {
       const float x = (i - 2) * spacing;
       scene::add_instance(scene, box,
@@ -347,7 +350,6 @@ TEST_F(ShadowAlgorithms, FiveLightsEachRenderWithTheirOwnAlgorithm) {
     }
     ecs::update_world_transforms(scene.world, 0);
     out.pose = {{0.0f, 14.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
-    out.camera_source = "test";
     return out;
   };
   sandbox::SandboxScene mixed_scene = build_row();

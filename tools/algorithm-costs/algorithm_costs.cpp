@@ -64,12 +64,9 @@ int main(int argc, char** argv) {
   app.add_option("--timed-frames", frames, "Frames per algorithm (the median is reported)")
       ->check(CLI::Range(3u, 100000u))
       ->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
+  if (const std::optional<int> exit_code = sg::sandbox::parse_command_line(app, argc, argv, options)) {
+    return *exit_code;
   }
-  options.validation = options.validation || sg::vk::validation_requested_by_environment();
   try {
     sg::vk::VulkanContext context(sg::sandbox::context_options(options));
     std::printf("device: %s, %ux%u, scene %s, %u frames per row\n\n", context.device_name().c_str(),

@@ -44,12 +44,9 @@ int main(int argc, char** argv) {
   CLI::App app{"Writes the sandbox frame's compiled render graph as DOT, JSON and PNG."};
   sg::sandbox::add_options(app, options);
   app.add_option("--out", out, "Output path without extension")->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
+  if (const std::optional<int> exit_code = sg::sandbox::parse_command_line(app, argc, argv, options)) {
+    return *exit_code;
   }
-  options.validation = options.validation || sg::vk::validation_requested_by_environment();
 
   try {
     sg::sandbox::SandboxScene scene =
