@@ -116,7 +116,7 @@ ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colou
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_.get(), 0, 1,
                                 &slot_sets_.sets[slot], 0, nullptr);
         vkCmdPushConstants(cmd, pipeline_layout_.get(), shader_stages, 0, sizeof(constants), &constants);
-        scene.draw(cmd, slot, DrawSet::all);
+        scene.draw_all(cmd, slot);
       });
   return targets;
 }

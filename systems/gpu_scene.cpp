@@ -1,7 +1,6 @@
 #include "systems/gpu_scene.h"
 
 #include <algorithm>
-#include <span>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -49,59 +48,52 @@ void GpuScene::update(ecs::World& world, uint32_t slot) {
   });
 
   sorted_.clear();
+  bounds_.clear();
   commands_.clear();
-  caster_commands_.clear();
-  caster_count_ = 0;
-  // One command per mesh over its instances; the caster prefix of each range gets its own
-  // command, appended after the "all" list.
+  caster_groups_.clear();
+  // One command per mesh over its instances, and a caster group over its casters (first).
   for (size_t begin = 0; begin < items_.size();) {
     const uint32_t mesh = items_[begin].mesh;
+    const scene::MeshRange& range = meshes_[mesh];
     size_t end = begin;
     uint32_t casters = 0;
     for (; end < items_.size() && items_[end].mesh == mesh; ++end) casters += items_[end].caster;
-    const scene::MeshRange& range = meshes_[mesh];
     const auto first_instance = static_cast<uint32_t>(sorted_.size());
-    for (size_t i = begin; i < end; ++i) sorted_.push_back(gathered_[items_[i].index]);
+    for (size_t i = begin; i < end; ++i) {
+      const GpuInstance& instance = gathered_[items_[i].index];
+      sorted_.push_back(instance);
+      bounds_.push_back(scene::transformed(range.bounds, instance.model));
+    }
     if (range.index_count > 0) {
       const VkDrawIndexedIndirectCommand command{range.index_count, static_cast<uint32_t>(end - begin),
                                                  range.first_index,
                                                  static_cast<int32_t>(range.vertex_offset), first_instance};
       commands_.push_back(command);
       if (casters > 0) {
-        VkDrawIndexedIndirectCommand caster = command;
-        caster.instanceCount = casters;
-        caster_commands_.push_back(caster);
+        VkDrawIndexedIndirectCommand group = command;
+        group.instanceCount = casters;
+        caster_groups_.push_back(group);
       }
     }
-    caster_count_ += casters;
     begin = end;
   }
-  draw_count_ = static_cast<uint32_t>(commands_.size());
-  caster_draw_count_ = static_cast<uint32_t>(caster_commands_.size());
-  commands_.insert(commands_.end(), caster_commands_.begin(), caster_commands_.end());
-  for (VkDrawIndexedIndirectCommand command : caster_commands_) {
-    command.instanceCount *= 6;
-    commands_.push_back(command);
-  }
-  instance_count_ = static_cast<uint32_t>(sorted_.size());
-
   instances_.write(slot, std::span<const GpuInstance>(sorted_));
   draws_.write(slot, std::span<const VkDrawIndexedIndirectCommand>(commands_));
 }
 
-void GpuScene::draw(VkCommandBuffer cmd, uint32_t slot, DrawSet set) const {
-  const uint32_t count = set == DrawSet::all ? draw_count_ : caster_draw_count_;
-  if (count == 0 || vertices_.handle() == VK_NULL_HANDLE) return;
-  const uint32_t first = set == DrawSet::all       ? 0
-                         : set == DrawSet::casters ? draw_count_
-                                                   : draw_count_ + caster_draw_count_;
+bool GpuScene::bind_geometry(VkCommandBuffer cmd) const {
+  if (vertices_.handle() == VK_NULL_HANDLE) return false;
   const VkBuffer vertex_buffer = vertices_.handle();
   const VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &zero);
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-  const VkDeviceSize offset = VkDeviceSize{first} * sizeof(VkDrawIndexedIndirectCommand);
-  vkCmdDrawIndexedIndirect(cmd, draws_.buffer(slot).handle(), offset, count,
-                           sizeof(VkDrawIndexedIndirectCommand));
+  return true;
+}
+
+void GpuScene::draw_all(VkCommandBuffer cmd, uint32_t slot) const {
+  if (commands_.empty() || !bind_geometry(cmd)) return;
+  vkCmdDrawIndexedIndirect(cmd, draws_.buffer(slot).handle(), 0,
+                           static_cast<uint32_t>(commands_.size()), sizeof(VkDrawIndexedIndirectCommand));
 }
 
 }  // namespace sg

@@ -1,12 +1,14 @@
 #pragma once
 // The scene's drawables on the GPU: the mesh library in one vertex and one index buffer
 // (uploaded once), and per frame the instances of every drawable entity plus one indirect draw
-// per mesh, so that a view of the whole scene is a single vkCmdDrawIndexedIndirect call
-// whatever the number of instances.
+// per mesh, so that the camera's view of the whole scene is a single vkCmdDrawIndexedIndirect
+// call whatever the number of instances.
 //
-// Instances are grouped by mesh, shadow casters first within each mesh, so that the caster
-// draws are the same commands with smaller instance counts (shadow passes draw casters only).
+// Instances are grouped by mesh, shadow casters first within each mesh: the caster groups
+// (caster_groups()) and the instances' world bounds are what shadow views cull against
+// (ShadowCasterLists).
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -14,18 +16,11 @@
 #include "ecs/world.h"
 #include "rendergraph/vulkan/frame_buffers.h"
 #include "rendergraph/vulkan/resources.h"
+#include "systems/scene/aabb.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/scene_gpu_types.h"
 
 namespace sg {
-
-enum class DrawSet {
-  all,
-  casters,
-  // The caster draws with six times the instances, for single-pass cube rendering
-  // (shaders/shadow_cube_layered.vert picks instance k / 6 and face k % 6).
-  casters_per_cube_face,
-};
 
 class GpuScene {
  public:
@@ -36,27 +31,29 @@ class GpuScene {
   // up to date (ecs::update_world_transforms).
   void update(ecs::World& world, uint32_t slot);
 
-  // Binds the vertex and index buffers and draws `set` with the pipeline already bound. The
-  // pipeline's vertex input is scene::Vertex at binding 0; instance data comes from the
-  // instance buffer, indexed by gl_InstanceIndex.
-  void draw(VkCommandBuffer cmd, uint32_t slot, DrawSet set) const;
+  // Binds the vertex and index buffers (scene::Vertex at binding 0, 32-bit indices); false when
+  // the scene has no geometry, and nothing may be drawn.
+  bool bind_geometry(VkCommandBuffer cmd) const;
+  // Draws every instance with the pipeline already bound; instance data comes from the instance
+  // buffer, indexed by gl_InstanceIndex.
+  void draw_all(VkCommandBuffer cmd, uint32_t slot) const;
 
   const vk::Buffer& instances(uint32_t slot) const { return instances_.buffer(slot); }
-  uint32_t instance_count() const { return instance_count_; }
-  uint32_t caster_count() const { return caster_count_; }
+  uint32_t instance_count() const { return static_cast<uint32_t>(bounds_.size()); }
+  // Per mesh with casters: its draw over exactly its casters (firstInstance and instanceCount
+  // give their range in the instance buffer).
+  std::span<const VkDrawIndexedIndirectCommand> caster_groups() const { return caster_groups_; }
+  // World-space bounds of every instance, in instance-buffer order.
+  std::span<const scene::Aabb> instance_bounds() const { return bounds_; }
 
  private:
   vk::Buffer vertices_;
   vk::Buffer indices_;
   std::vector<scene::MeshRange> meshes_;
   vk::FrameBuffers instances_;
-  vk::FrameBuffers draws_;  // all draws, then caster draws, then caster draws x 6
-  uint32_t draw_count_ = 0;
-  uint32_t caster_draw_count_ = 0;
-  uint32_t instance_count_ = 0;
-  uint32_t caster_count_ = 0;
+  vk::FrameBuffers draws_;
 
-  // Per-frame scratch, reused so that gathering allocates nothing once it has grown.
+  // Per-frame data and scratch, reused so that gathering allocates nothing once it has grown.
   struct Item {
     uint32_t mesh;
     bool caster;
@@ -65,8 +62,9 @@ class GpuScene {
   std::vector<Item> items_;
   std::vector<GpuInstance> gathered_;
   std::vector<GpuInstance> sorted_;
+  std::vector<scene::Aabb> bounds_;
   std::vector<VkDrawIndexedIndirectCommand> commands_;
-  std::vector<VkDrawIndexedIndirectCommand> caster_commands_;
+  std::vector<VkDrawIndexedIndirectCommand> caster_groups_;
 };
 
 }  // namespace sg

@@ -44,7 +44,7 @@ void SceneRenderer::update(uint32_t slot) {
   }
   const vk::Buffer& records =
       light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
-  shadow_passes_.prepare(slot, lights_, gpu_scene_);
+  shadow_passes_.prepare(slot, lights_, gpu_scene_, settings_.cube_shadows);
   forward_.prepare(slot, gpu_scene_, records, atlas_);
 }
 

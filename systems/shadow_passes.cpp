@@ -32,6 +32,7 @@ constexpr VkDeviceSize cube_faces_bytes = 6 * sizeof(glm::mat4);
 
 ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight)
     : context_(context),
+      casters_(context, frames_in_flight),
       cube_faces_(context, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frames_in_flight, "cube face matrices") {
   const VkDevice device = context.device();
   const VkDeviceSize alignment = context.properties().limits.minUniformBufferOffsetAlignment;
@@ -39,7 +40,8 @@ ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight
 
   const VkDescriptorSetLayoutBinding bindings[] = {
       {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-      {5, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}};
+      {5, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+      {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}};
   set_layout_ = vk::create_set_layout(device, bindings);
   slot_sets_ = vk::allocate_sets(device, set_layout_.get(), bindings, frames_in_flight);
   pipeline_layout_ = vk::create_pipeline_layout(device, set_layout_.get(),
@@ -67,7 +69,25 @@ ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight
   }
 }
 
-void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuScene& scene) {
+void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuScene& scene,
+                           CubeShadowMode mode) {
+  // Spot and point lights reach no farther than their range; directional and cylinder maps
+  // cover the scene, and keep every caster.
+  casters_.clear();
+  map_casters_.clear();
+  for (const ShadowMapView& map : lights.maps) {
+    const shadows::GpuLight& light = lights.records[map.light];
+    const bool spot = light.info.x == static_cast<uint32_t>(shadows::GpuLightType::spot);
+    map_casters_.push_back(
+        casters_.add_view(scene, spot ? light.position_range : glm::vec4(0.0f, 0.0f, 0.0f, -1.0f), 1));
+  }
+  const uint32_t copies = mode == CubeShadowMode::layered && layered_supported() ? 6 : 1;
+  cube_casters_.clear();
+  for (const ShadowCubeView& cube : lights.cubes) {
+    cube_casters_.push_back(casters_.add_view(scene, cube.position_far, copies));
+  }
+  casters_.upload(slot);
+
   cube_faces_scratch_.assign(std::max<size_t>(1, lights.cubes.size()) * cube_faces_stride_, std::byte{0});
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
     std::memcpy(cube_faces_scratch_.data() + c * cube_faces_stride_,
@@ -77,45 +97,53 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
 
   const VkDescriptorBufferInfo instances{scene.instances(slot).handle(), 0, VK_WHOLE_SIZE};
   const VkDescriptorBufferInfo face_matrices{faces.handle(), 0, cube_faces_bytes};
-  VkWriteDescriptorSet writes[2]{{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET},
-                                 {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
-  writes[0].dstSet = slot_sets_.sets[slot];
-  writes[0].dstBinding = 0;
-  writes[0].descriptorCount = 1;
-  writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  writes[0].pBufferInfo = &instances;
-  writes[1].dstSet = slot_sets_.sets[slot];
-  writes[1].dstBinding = 5;
-  writes[1].descriptorCount = 1;
-  writes[1].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
-  writes[1].pBufferInfo = &face_matrices;
-  vkUpdateDescriptorSets(context_.device(), 2, writes, 0, nullptr);
+  const VkDescriptorBufferInfo caster_ids{casters_.ids(slot).handle(), 0, VK_WHOLE_SIZE};
+  const struct {
+    uint32_t binding;
+    VkDescriptorType type;
+    const VkDescriptorBufferInfo* info;
+  } buffers[] = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &instances},
+                 {5, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, &face_matrices},
+                 {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &caster_ids}};
+  VkWriteDescriptorSet writes[std::size(buffers)];
+  for (size_t i = 0; i < std::size(buffers); ++i) {
+    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[i].dstSet = slot_sets_.sets[slot];
+    writes[i].dstBinding = buffers[i].binding;
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType = buffers[i].type;
+    writes[i].pBufferInfo = buffers[i].info;
+  }
+  vkUpdateDescriptorSets(context_.device(), static_cast<uint32_t>(std::size(writes)), writes, 0, nullptr);
 }
 
 void ShadowPasses::draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline pipeline,
                                 const glm::mat4& view_projection, const glm::vec4& position_far,
                                 uint32_t cube_faces_offset, const GpuScene& scene,
-                                DrawSet draw_set) const {
+                                CasterView view) const {
+  if (view.command_count == 0 || !scene.bind_geometry(cmd)) return;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_.get(), 0, 1,
                           &slot_sets_.sets[slot], 1, &cube_faces_offset);
   const PassConstants constants{view_projection, position_far};
   vkCmdPushConstants(cmd, pipeline_layout_.get(), stages, 0, sizeof(constants), &constants);
-  scene.draw(cmd, slot, draw_set);
+  casters_.draw(cmd, slot, view);
 }
 
 ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targets,
                                            const FrameLights& lights, const GpuScene& scene,
                                            uint32_t slot, CubeShadowMode mode) const {
   const rg::ClearValue far = rg::ClearValue::depth_of(1.0f);
-  for (const ShadowMapView& map : lights.maps) {
+  for (size_t m = 0; m < lights.maps.size(); ++m) {
+    const ShadowMapView& map = lights.maps[m];
+    const CasterView view = map_casters_[m];
     graph.add_pass(
         map.name, rg::QueueType::graphics,
         [&](rg::PassBuilder& b) {
           targets.maps = b.write(targets.maps, rg::Usage::depth_attachment, far,
                                  rg::SubresourceRange::layer(map.layer));
         },
-        [this, &map, &scene, slot](rg::PassContext& ctx) {
+        [this, &map, &scene, slot, view](rg::PassContext& ctx) {
           const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
           // The light's square region of its layer.
           const VkViewport viewport{0.0f, 0.0f, float(map.resolution), float(map.resolution), 0.0f, 1.0f};
@@ -123,12 +151,14 @@ ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targe
           vkCmdSetViewport(rec.cmd(), 0, 1, &viewport);
           vkCmdSetScissor(rec.cmd(), 0, 1, &scissor);
           draw_casters(rec.cmd(), slot, map_pipeline_.get(), map.view.view_projection(), glm::vec4(0.0f), 0,
-                       scene, DrawSet::casters);
+                       scene, view);
         });
   }
 
   const bool layered = mode == CubeShadowMode::layered && layered_supported();
-  for (const ShadowCubeView& cube : lights.cubes) {
+  for (size_t c = 0; c < lights.cubes.size(); ++c) {
+    const ShadowCubeView& cube = lights.cubes[c];
+    const CasterView view = cube_casters_[c];
     const auto faces_offset = static_cast<uint32_t>(cube.cube * cube_faces_stride_);
     if (layered) {
       graph.add_pass(
@@ -137,11 +167,11 @@ ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targe
             targets.cubes = b.write(targets.cubes, rg::Usage::depth_attachment, far,
                                     rg::SubresourceRange::cube(cube.cube));
           },
-          [this, &cube, &scene, slot, faces_offset](rg::PassContext& ctx) {
+          [this, &cube, &scene, slot, faces_offset, view](rg::PassContext& ctx) {
             const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
             rec.set_full_viewport();
             draw_casters(rec.cmd(), slot, layered_pipeline_.get(), glm::mat4(1.0f), cube.position_far,
-                         faces_offset, scene, DrawSet::casters_per_cube_face);
+                         faces_offset, scene, view);
           });
       continue;
     }
@@ -152,11 +182,11 @@ ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targe
             targets.cubes = b.write(targets.cubes, rg::Usage::depth_attachment, far,
                                     rg::SubresourceRange::cube_face(cube.cube, face));
           },
-          [this, &cube, &scene, slot, face, faces_offset](rg::PassContext& ctx) {
+          [this, &cube, &scene, slot, face, faces_offset, view](rg::PassContext& ctx) {
             const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
             rec.set_full_viewport();
             draw_casters(rec.cmd(), slot, face_pipeline_.get(), cube.views.view_projection[face],
-                         cube.position_far, faces_offset, scene, DrawSet::casters);
+                         cube.position_far, faces_offset, scene, view);
           });
     }
   }

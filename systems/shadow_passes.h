@@ -2,7 +2,8 @@
 // The shadow-map passes: one per 2D shadow (spot, directional, cylinder light) writing that
 // light's atlas layer, and per point-light shadow either one layered pass writing all six faces
 // of its cube (CubeShadowMode::layered, needs shaderOutputLayer) or six passes, one per face.
-// Every pass draws the scene's casters with one indirect call.
+// Every pass draws the casters within its light's reach (ShadowCasterLists) with one indirect
+// call.
 #include <cstdint>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "rendergraph/vulkan/unique_handle.h"
 #include "systems/frame_lights.h"
 #include "systems/gpu_scene.h"
+#include "systems/shadow_caster_lists.h"
 
 namespace sg::vk {
 class VulkanContext;
@@ -30,9 +32,10 @@ class ShadowPasses {
   // Whether the device can render a cube in one pass.
   bool layered_supported() const { return layered_pipeline_.get() != VK_NULL_HANDLE; }
 
-  // CPU side of a frame, after FrameRing::begin_frame returned `slot`: writes the point lights'
-  // face matrices and points the slot's descriptor set at this frame's buffers.
-  void prepare(uint32_t slot, const FrameLights& lights, const GpuScene& scene);
+  // CPU side of a frame, after FrameRing::begin_frame returned `slot`: culls each view's
+  // casters, writes them and the point lights' face matrices, and points the slot's descriptor
+  // set at this frame's buffers. `mode` must be the one add_to gets.
+  void prepare(uint32_t slot, const FrameLights& lights, const GpuScene& scene, CubeShadowMode mode);
 
   struct Targets {
     rg::ImageHandle maps;
@@ -41,13 +44,17 @@ class ShadowPasses {
   // Adds the passes for `lights` (as given to prepare) and returns the maps' newest versions.
   // `lights` and `scene` are read when the passes record. layered falls back to six passes when
   // the device cannot do it.
+  //
+  // kept_casters() says how many caster instances the views kept after culling.
   Targets add_to(rg::RenderGraph& graph, Targets targets, const FrameLights& lights,
                  const GpuScene& scene, uint32_t slot, CubeShadowMode mode) const;
+
+  uint64_t kept_casters() const { return casters_.kept_instances(); }
 
  private:
   void draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline pipeline,
                     const glm::mat4& view_projection, const glm::vec4& position_far,
-                    uint32_t cube_faces_offset, const GpuScene& scene, DrawSet draw_set) const;
+                    uint32_t cube_faces_offset, const GpuScene& scene, CasterView view) const;
 
   vk::VulkanContext& context_;
   vk::UniqueDescriptorSetLayout set_layout_;
@@ -56,6 +63,9 @@ class ShadowPasses {
   vk::UniquePipeline map_pipeline_;
   vk::UniquePipeline face_pipeline_;
   vk::UniquePipeline layered_pipeline_;
+  ShadowCasterLists casters_;
+  std::vector<CasterView> map_casters_;   // per FrameLights::maps entry
+  std::vector<CasterView> cube_casters_;  // per FrameLights::cubes entry
   vk::FrameBuffers cube_faces_;  // per point light: six face matrices, at cube_faces_stride_
   VkDeviceSize cube_faces_stride_ = 0;
   std::vector<std::byte> cube_faces_scratch_;

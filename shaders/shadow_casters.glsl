@@ -1,0 +1,8 @@
+// The casters a shadow view draws (systems/shadow_caster_lists.h): instance k of a view's draw
+// is instance view_instances[k] of the Instances buffer.
+#ifndef SG_SHADOW_CASTERS_GLSL
+#define SG_SHADOW_CASTERS_GLSL
+
+layout(std430, set = 0, binding = 6) readonly buffer ViewInstances { uint view_instances[]; };
+
+#endif

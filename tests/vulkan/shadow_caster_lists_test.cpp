@@ -1,0 +1,69 @@
+// Per-view caster culling: which instances a light's shadow view keeps, and the indirect
+// commands that draw them.
+#include <gtest/gtest.h>
+
+#include "ecs/transform_system.h"
+#include "systems/gpu_scene.h"
+#include "systems/scene/mesh_instance.h"
+#include "systems/scene/primitive_meshes.h"
+#include "systems/scene/scene.h"
+#include "systems/scene/scene_builder.h"
+#include "systems/shadow_caster_lists.h"
+#include "vulkan_test_context.h"
+
+namespace sg::test {
+namespace {
+
+class ShadowCasterListsTest : public GpuTest {
+ protected:
+  // Unit boxes at x = 0, 5 and 20, a cylinder at x = 5, and a box at x = 0 that casts no shadow.
+  ShadowCasterListsTest() {
+    box = scene::add_box_mesh(world.meshes);
+    cylinder = scene::add_cylinder_mesh(world.meshes, 8);
+    for (float x : {0.0f, 5.0f, 20.0f}) {
+      scene::add_instance(world, box, {{x, 0.0f, 0.0f}}, scene::Material{});
+    }
+    scene::add_instance(world, cylinder, {{5.0f, 0.0f, 0.0f}}, scene::Material{});
+    const ecs::Entity receiver = scene::add_instance(world, box, {{0.0f, 0.0f, 0.0f}}, scene::Material{});
+    world.world.get_mut<scene::MeshInstance>(receiver).casts_shadow = false;
+    ecs::update_world_transforms(world.world, 0);
+    gpu = std::make_unique<GpuScene>(context, world.meshes, 1);
+    gpu->update(world.world, 0);
+  }
+
+  scene::Scene world;
+  uint32_t box = 0;
+  uint32_t cylinder = 0;
+  std::unique_ptr<GpuScene> gpu;
+  ShadowCasterLists lists{context, 1};
+};
+
+TEST_F(ShadowCasterListsTest, AViewKeepsTheCastersWithinItsLightsReach) {
+  ASSERT_EQ(gpu->caster_groups().size(), 2u);  // boxes, cylinder
+  EXPECT_EQ(gpu->caster_groups()[0].instanceCount, 3u) << "the receiver-only box is not a caster";
+
+  lists.clear();
+  const CasterView near = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, 6.0f}, 1);
+  EXPECT_EQ(near.command_count, 2u);
+  EXPECT_EQ(lists.kept_instances(), 3u) << "boxes at 0 and 5 and the cylinder; not the box at 20";
+
+  const CasterView box_only = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, 1.0f}, 1);
+  EXPECT_EQ(box_only.first_command, 2u);
+  EXPECT_EQ(box_only.command_count, 1u);
+  EXPECT_EQ(lists.kept_instances(), 4u);
+
+  const CasterView nothing = lists.add_view(*gpu, {100.0f, 0.0f, 0.0f, 1.0f}, 1);
+  EXPECT_EQ(nothing.command_count, 0u);
+  lists.upload(0);
+}
+
+TEST_F(ShadowCasterListsTest, ANegativeRadiusKeepsEveryCaster) {
+  lists.clear();
+  const CasterView all = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, -1.0f}, 6);
+  EXPECT_EQ(all.command_count, 2u);
+  EXPECT_EQ(lists.kept_instances(), 4u);
+  lists.upload(0);
+}
+
+}  // namespace
+}  // namespace sg::test
