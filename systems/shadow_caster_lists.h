@@ -5,6 +5,10 @@
 // go into one id buffer per frame slot, and each view gets one indirect command per mesh
 // whose firstInstance points into that buffer: the shadow shaders read
 // instances[view_instances[gl_InstanceIndex]] (shaders/shadow_map.vert).
+//
+// Bounded views do not test every caster: begin_frame() bins the casters into a uniform grid
+// over the scene's ground plane (x, z), and a view tests only the casters in the cells its
+// sphere covers, so culling costs follow what lights reach, not lights times casters.
 #include <cstdint>
 #include <vector>
 
@@ -30,8 +34,8 @@ class ShadowCasterLists {
  public:
   ShadowCasterLists(vk::VulkanContext& context, uint32_t frames_in_flight);
 
-  // Starts a frame's lists.
-  void clear();
+  // Starts a frame's lists for the scene as GpuScene::update left it.
+  void begin_frame(const GpuScene& scene);
   // The casters of `scene` whose bounds meet the sphere `reach` (xyz centre, w radius; a
   // negative radius keeps every caster), each drawn `copies` times (6 for layered cubes).
   CasterView add_view(const GpuScene& scene, const glm::vec4& reach, uint32_t copies);
@@ -46,8 +50,24 @@ class ShadowCasterLists {
   uint64_t kept_instances() const { return ids_scratch_.size(); }
 
  private:
+  // The frame's grid: cell c holds caster ids cell_ids[cell_start[c] .. cell_start[c + 1]).
+  struct Grid {
+    glm::vec2 origin{0.0f};
+    float cell_size = 1.0f;
+    uint32_t columns = 0;
+    uint32_t rows = 0;
+    std::vector<uint32_t> cell_start;
+    std::vector<uint32_t> cell_ids;
+  };
+  void build_grid(const GpuScene& scene);
+
   vk::FrameBuffers ids_;
   vk::FrameBuffers commands_;
+  Grid grid_;
+  std::vector<uint32_t> group_of_;    // per instance: its caster group, or none
+  std::vector<uint32_t> seen_;        // per instance: the last view that tested it
+  uint32_t view_stamp_ = 0;
+  std::vector<uint32_t> candidates_;  // one view's kept ids before sorting
   std::vector<uint32_t> ids_scratch_;
   std::vector<VkDrawIndexedIndirectCommand> commands_scratch_;
 };

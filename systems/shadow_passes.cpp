@@ -73,7 +73,7 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
                            CubeShadowMode mode) {
   // Spot and point lights reach no farther than their range; directional and cylinder maps
   // cover the scene, and keep every caster.
-  casters_.clear();
+  casters_.begin_frame(scene);
   map_casters_.clear();
   for (const ShadowMapView& map : lights.maps) {
     const shadows::GpuLight& light = lights.records[map.light];
