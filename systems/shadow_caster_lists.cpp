@@ -11,8 +11,8 @@ namespace sg {
 namespace {
 
 constexpr uint32_t no_group = std::numeric_limits<uint32_t>::max();
-// Cells per side at most: enough to separate lights in large halls, few enough to build in
-// one pass over the casters.
+// Cells per side at most, however small the lights' reach: few enough to build in one pass
+// over the casters.
 constexpr uint32_t max_cells_per_side = 64;
 
 bool sphere_meets_box(const glm::vec4& sphere, const scene::Aabb& box) {
@@ -28,7 +28,7 @@ ShadowCasterLists::ShadowCasterLists(vk::VulkanContext& context, uint32_t frames
     : ids_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow caster ids"),
       commands_(context, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, frames_in_flight, "shadow caster draws") {}
 
-void ShadowCasterLists::begin_frame(const GpuScene& scene) {
+void ShadowCasterLists::begin_frame(const GpuScene& scene, float typical_reach) {
   ids_scratch_.clear();
   commands_scratch_.clear();
   const std::span<const VkDrawIndexedIndirectCommand> groups = scene.caster_groups();
@@ -40,10 +40,10 @@ void ShadowCasterLists::begin_frame(const GpuScene& scene) {
   }
   seen_.assign(scene.instance_count(), 0);
   view_stamp_ = 0;
-  build_grid(scene);
+  build_grid(scene, typical_reach);
 }
 
-void ShadowCasterLists::build_grid(const GpuScene& scene) {
+void ShadowCasterLists::build_grid(const GpuScene& scene, float typical_reach) {
   const std::span<const scene::Aabb> bounds = scene.instance_bounds();
   scene::Aabb extent;
   for (uint32_t i = 0; i < bounds.size(); ++i) {
@@ -58,7 +58,8 @@ void ShadowCasterLists::build_grid(const GpuScene& scene) {
   }
   const glm::vec2 size(extent.max.x - extent.min.x, extent.max.z - extent.min.z);
   grid.origin = {extent.min.x, extent.min.z};
-  grid.cell_size = std::max({size.x, size.y, 1e-3f}) / float(max_cells_per_side);
+  const float widest = std::max({size.x, size.y, 1e-3f});
+  grid.cell_size = std::clamp(typical_reach, widest / float(max_cells_per_side), widest);
   grid.columns = std::clamp(uint32_t(std::ceil(size.x / grid.cell_size)), 1u, max_cells_per_side);
   grid.rows = std::clamp(uint32_t(std::ceil(size.y / grid.cell_size)), 1u, max_cells_per_side);
 
@@ -125,22 +126,22 @@ CasterView ShadowCasterLists::add_view(const GpuScene& scene, const glm::vec4& r
         }
       }
     }
-    // Instance order is mesh order: sorted ids fall into one run per caster group.
-    std::sort(candidates_.begin(), candidates_.end());
   }
 
+  // One command per caster group the view kept anything of; order within a group is free.
   CasterView view{static_cast<uint32_t>(commands_scratch_.size()), 0};
-  for (size_t k = 0; k < candidates_.size();) {
-    const uint32_t group = group_of_[candidates_[k]];
-    const auto first = static_cast<uint32_t>(ids_scratch_.size());
-    for (; k < candidates_.size() && group_of_[candidates_[k]] == group; ++k) {
-      ids_scratch_.push_back(candidates_[k]);
-    }
+  by_group_.resize(groups.size());
+  for (const uint32_t i : candidates_) by_group_[group_of_[i]].push_back(i);
+  for (uint32_t group = 0; group < groups.size(); ++group) {
+    std::vector<uint32_t>& kept = by_group_[group];
+    if (kept.empty()) continue;
     VkDrawIndexedIndirectCommand command = groups[group];
-    command.instanceCount = (static_cast<uint32_t>(ids_scratch_.size()) - first) * copies;
-    command.firstInstance = first;
+    command.instanceCount = static_cast<uint32_t>(kept.size()) * copies;
+    command.firstInstance = static_cast<uint32_t>(ids_scratch_.size());
+    ids_scratch_.insert(ids_scratch_.end(), kept.begin(), kept.end());
     commands_scratch_.push_back(command);
     ++view.command_count;
+    kept.clear();
   }
   return view;
 }

@@ -34,8 +34,9 @@ class ShadowCasterLists {
  public:
   ShadowCasterLists(vk::VulkanContext& context, uint32_t frames_in_flight);
 
-  // Starts a frame's lists for the scene as GpuScene::update left it.
-  void begin_frame(const GpuScene& scene);
+  // Starts a frame's lists for the scene as GpuScene::update left it. `typical_reach` (the
+  // bounded views' mean radius) sizes the grid's cells, so that a view covers a few cells.
+  void begin_frame(const GpuScene& scene, float typical_reach);
   // The casters of `scene` whose bounds meet the sphere `reach` (xyz centre, w radius; a
   // negative radius keeps every caster), each drawn `copies` times (6 for layered cubes).
   CasterView add_view(const GpuScene& scene, const glm::vec4& reach, uint32_t copies);
@@ -59,7 +60,7 @@ class ShadowCasterLists {
     std::vector<uint32_t> cell_start;
     std::vector<uint32_t> cell_ids;
   };
-  void build_grid(const GpuScene& scene);
+  void build_grid(const GpuScene& scene, float typical_reach);
 
   vk::FrameBuffers ids_;
   vk::FrameBuffers commands_;
@@ -67,7 +68,8 @@ class ShadowCasterLists {
   std::vector<uint32_t> group_of_;    // per instance: its caster group, or none
   std::vector<uint32_t> seen_;        // per instance: the last view that tested it
   uint32_t view_stamp_ = 0;
-  std::vector<uint32_t> candidates_;  // one view's kept ids before sorting
+  std::vector<uint32_t> candidates_;  // one view's kept ids
+  std::vector<std::vector<uint32_t>> by_group_;  // the same, per caster group
   std::vector<uint32_t> ids_scratch_;
   std::vector<VkDrawIndexedIndirectCommand> commands_scratch_;
 };

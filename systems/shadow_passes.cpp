@@ -73,7 +73,20 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
                            CubeShadowMode mode) {
   // Spot and point lights reach no farther than their range; directional and cylinder maps
   // cover the scene, and keep every caster.
-  casters_.begin_frame(scene);
+  float reach_sum = 0.0f;
+  uint32_t bounded = 0;
+  for (const ShadowMapView& map : lights.maps) {
+    const shadows::GpuLight& light = lights.records[map.light];
+    if (light.info.x == static_cast<uint32_t>(shadows::GpuLightType::spot)) {
+      reach_sum += light.position_range.w;
+      ++bounded;
+    }
+  }
+  for (const ShadowCubeView& cube : lights.cubes) {
+    reach_sum += cube.position_far.w;
+    ++bounded;
+  }
+  casters_.begin_frame(scene, bounded > 0 ? reach_sum / float(bounded) : 0.0f);
   map_casters_.clear();
   for (const ShadowMapView& map : lights.maps) {
     const shadows::GpuLight& light = lights.records[map.light];
