@@ -1,7 +1,8 @@
 #pragma once
 // The sandbox's frame, built as a render graph every frame:
 //
-//   forward (scene renderer) -> [depth overlay, --depth-overlay] -> [present, in a window]
+//   shadow passes, forward (SceneRenderer) -> [depth overlay, --depth-overlay]
+//     -> [present, in a window]
 //
 // The picture lands in the persistent "frame" image (imported into each graph, left in
 // TRANSFER_SRC), which screenshots read and the present pass blits to the swapchain image.
