@@ -46,7 +46,7 @@ TEST_F(ShadowCasterListsTest, AViewKeepsTheCastersWithinItsLightsReach) {
   ASSERT_EQ(gpu->caster_groups().size(), 2u);  // boxes, cylinder
   EXPECT_EQ(gpu->caster_groups()[0].instanceCount, 3u) << "the receiver-only box is not a caster";
 
-  lists.begin_frame(*gpu);
+  lists.begin_frame(*gpu, 3.0f);
   const CasterView near = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, 6.0f}, 1);
   EXPECT_EQ(near.command_count, 2u);
   EXPECT_EQ(lists.kept_instances(), 3u) << "boxes at 0 and 5 and the cylinder; not the box at 20";
@@ -62,7 +62,7 @@ TEST_F(ShadowCasterListsTest, AViewKeepsTheCastersWithinItsLightsReach) {
 }
 
 TEST_F(ShadowCasterListsTest, ANegativeRadiusKeepsEveryCaster) {
-  lists.begin_frame(*gpu);
+  lists.begin_frame(*gpu, 3.0f);
   const CasterView all = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, -1.0f}, 6);
   EXPECT_EQ(all.command_count, 2u);
   EXPECT_EQ(lists.kept_instances(), 4u);
@@ -80,7 +80,7 @@ TEST(ShadowCasterListsGrid, KeepsExactlyWhatABruteForceTestKeeps) {
   GpuScene gpu(context, stress.meshes, 1);
   gpu.update(stress.world, 0);
   ShadowCasterLists lists(context, 1);
-  lists.begin_frame(gpu);
+  lists.begin_frame(gpu, 4.0f);
 
   const scene::Aabb hall = scene::scene_bounds(stress);
   std::mt19937 random(7);
