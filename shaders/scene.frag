@@ -8,6 +8,10 @@
 layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) flat in uint in_instance;
+layout(location = 3) in vec2 in_uv;
+
+// Every material texture of the scene, one per layer (systems/gpu_textures.h).
+layout(set = 0, binding = 7) uniform sampler2DArray base_color_textures;
 
 layout(location = 0) out vec4 out_color;
 
@@ -17,6 +21,10 @@ void main() {
   p.normal = normalize(in_normal);
   p.to_viewer = normalize(frame.camera_position.xyz - in_world_position);
   p.base_color = inst.base_color_specular.rgb;
+  int texture_index = int(inst.material.y);
+  if (texture_index >= 0) {
+    p.base_color *= texture(base_color_textures, vec3(in_uv, float(texture_index))).rgb;
+  }
   p.specular = inst.base_color_specular.a;
   p.shininess = inst.material.x;
 

@@ -4,10 +4,12 @@
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec2 in_uv;
 
 layout(location = 0) out vec3 out_world_position;
 layout(location = 1) out vec3 out_normal;
 layout(location = 2) flat out uint out_instance;
+layout(location = 3) out vec2 out_uv;
 
 void main() {
   Instance inst = instances[gl_InstanceIndex];
@@ -15,5 +17,6 @@ void main() {
   out_world_position = world.xyz;
   out_normal = mat3(inst.normal_matrix) * in_normal;
   out_instance = gl_InstanceIndex;
+  out_uv = in_uv;
   gl_Position = frame.view_projection * world;
 }

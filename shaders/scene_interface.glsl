@@ -4,7 +4,7 @@ struct Instance {
   mat4 model;
   mat4 normal_matrix;       // inverse transpose of the model matrix
   vec4 base_color_specular; // rgb: base colour, a: specular strength kS
-  vec4 material;            // x: Blinn shininess s
+  vec4 material;            // x: Blinn shininess s, y: base colour texture index or -1
 };
 
 layout(std430, set = 0, binding = 0) readonly buffer Instances { Instance instances[]; };

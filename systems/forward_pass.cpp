@@ -9,6 +9,7 @@
 #include "shaders/scene.frag.spv.h"
 #include "shaders/scene.vert.spv.h"
 #include "systems/gpu_scene.h"
+#include "systems/gpu_textures.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/shadow_atlas.h"
 
@@ -29,11 +30,14 @@ VkFilter compare_filter(const vk::VulkanContext& context) {
 
 }  // namespace
 
-ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight)
+ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight,
+                         const GpuTextures& textures)
     : context_(context) {
   const VkDevice device = context.device();
   nearest_ = vk::create_sampler(device, VK_FILTER_NEAREST);
   compare_ = vk::create_sampler(device, compare_filter(context), true);
+  // glTF's default wrapping.
+  material_ = vk::create_sampler(device, VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_REPEAT);
 
   // shaders/scene_interface.glsl and shaders/lights_interface.glsl.
   const VkDescriptorSetLayoutBinding bindings[] = {
@@ -41,9 +45,22 @@ ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight)
       {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
+      {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {7, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
   set_layout_ = vk::create_set_layout(device, bindings);
   slot_sets_ = vk::allocate_sets(device, set_layout_.get(), bindings, frames_in_flight);
+  // The textures never change: bind them once in every slot's set.
+  const VkDescriptorImageInfo texture_array{material_.get(), textures.array().view(),
+                                            VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL};
+  for (const VkDescriptorSet set : slot_sets_.sets) {
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = set;
+    write.dstBinding = 7;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = &texture_array;
+    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+  }
   pipeline_layout_ = vk::create_pipeline_layout(device, set_layout_.get(),
                                                 {shader_stages, 0, sizeof(FrameConstants)});
 
@@ -53,7 +70,8 @@ ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight)
   desc.vertex_bindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
   desc.vertex_attributes = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, position))},
-      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, normal))}};
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, normal))},
+      {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, uv))}};
   desc.color_formats = {vk::to_vk(colour_format)};
   desc.depth_format = vk::to_vk(depth_format);
   desc.layout = pipeline_layout_.get();

@@ -20,6 +20,7 @@ class VulkanContext;
 namespace sg {
 
 class GpuScene;
+class GpuTextures;
 class ShadowAtlas;
 
 struct ForwardTargets {
@@ -32,7 +33,8 @@ class ForwardPass {
   static constexpr rg::Format colour_format = rg::Format::rgba8_srgb;
   static constexpr rg::Format depth_format = rg::Format::d32_sfloat;
 
-  ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight);
+  // `textures` must outlive the pass: its array is bound once, at binding 7.
+  ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);
 
   // CPU side of a frame, after FrameRing::begin_frame returned `slot`: points the slot's
   // descriptor set at this frame's instances, light records and shadow images.
@@ -50,6 +52,7 @@ class ForwardPass {
   vk::VulkanContext& context_;
   vk::UniqueSampler nearest_;
   vk::UniqueSampler compare_;
+  vk::UniqueSampler material_;
   vk::UniqueDescriptorSetLayout set_layout_;
   vk::DescriptorSets slot_sets_;
   vk::UniquePipelineLayout pipeline_layout_;

@@ -41,7 +41,11 @@ void GpuScene::update(ecs::World& world, uint32_t slot) {
         items_.push_back({mesh.mesh, mesh.casts_shadow, static_cast<uint32_t>(gathered_.size())});
         gathered_.push_back({transform.matrix, glm::inverseTranspose(transform.matrix),
                              glm::vec4(glm::vec3(material.base_color), material.specular),
-                             glm::vec4(material.shininess, 0.0f, 0.0f, 0.0f)});
+                             glm::vec4(material.shininess,
+                                       material.base_color_texture == scene::no_texture
+                                           ? -1.0f
+                                           : float(material.base_color_texture),
+                                       0.0f, 0.0f)});
       });
   std::sort(items_.begin(), items_.end(), [](const Item& a, const Item& b) {
     return a.mesh != b.mesh ? a.mesh < b.mesh : a.caster > b.caster;

@@ -9,7 +9,7 @@ struct GpuInstance {
   glm::mat4 model;
   glm::mat4 normal_matrix;
   glm::vec4 base_color_specular;
-  glm::vec4 material;  // x: shininess
+  glm::vec4 material;  // x: shininess, y: base colour texture index or -1
 };
 static_assert(sizeof(GpuInstance) == 160);
 

@@ -21,9 +21,10 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, scene::Scene& scene,
     : scene_(scene),
       settings_(settings),
       gpu_scene_(context, scene.meshes, frames_in_flight),
+      textures_(context, scene.textures),
       atlas_(context),
       shadow_passes_(context, frames_in_flight),
-      forward_(context, frames_in_flight),
+      forward_(context, frames_in_flight, textures_),
       light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light records") {}
 
 void SceneRenderer::update(uint32_t slot) {

@@ -19,6 +19,7 @@
 #include "systems/forward_pass.h"
 #include "systems/frame_lights.h"
 #include "systems/gpu_scene.h"
+#include "systems/gpu_textures.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
 #include "systems/shadow_atlas.h"
@@ -65,6 +66,7 @@ class SceneRenderer {
   scene::Scene& scene_;
   RendererSettings settings_;
   GpuScene gpu_scene_;
+  GpuTextures textures_;
   ShadowAtlas atlas_;
   ShadowPasses shadow_passes_;
   ForwardPass forward_;

@@ -26,14 +26,15 @@ UniquePipelineLayout create_pipeline_layout(VkDevice device, VkDescriptorSetLayo
   return UniquePipelineLayout(device, layout);
 }
 
-UniqueSampler create_sampler(VkDevice device, VkFilter filter, bool compare) {
+UniqueSampler create_sampler(VkDevice device, VkFilter filter, bool compare,
+                             VkSamplerAddressMode address) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = filter;
   info.minFilter = filter;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeU = address;
+  info.addressModeV = address;
+  info.addressModeW = address;
   info.compareEnable = compare ? VK_TRUE : VK_FALSE;
   info.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
   VkSampler sampler = VK_NULL_HANDLE;

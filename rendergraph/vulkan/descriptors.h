@@ -18,9 +18,10 @@ UniqueDescriptorSetLayout create_set_layout(VkDevice device,
 UniquePipelineLayout create_pipeline_layout(VkDevice device, VkDescriptorSetLayout set_layout,
                                             VkPushConstantRange push = {});
 
-// Clamp-to-edge, one mip level. `compare` makes a depth-comparison sampler with
-// VK_COMPARE_OP_LESS_OR_EQUAL (1 where the reference is not farther than the texel).
-UniqueSampler create_sampler(VkDevice device, VkFilter filter, bool compare = false);
+// One mip level. `compare` makes a depth-comparison sampler with VK_COMPARE_OP_LESS_OR_EQUAL
+// (1 where the reference is not farther than the texel).
+UniqueSampler create_sampler(VkDevice device, VkFilter filter, bool compare = false,
+                             VkSamplerAddressMode address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE);
 
 // `count` sets of one layout in a pool of their own: a pass that rewrites its set every frame
 // keeps one per frame slot, so the GPU never reads a set the CPU is updating.

@@ -10,6 +10,7 @@
 namespace sg::vk {
 
 class Buffer;
+class Image;
 class VulkanContext;
 
 class UploadBatch {
@@ -23,6 +24,11 @@ class UploadBatch {
     copy_bytes(dst, std::as_bytes(items), dst_offset);
   }
 
+  // Queues tightly packed 4-byte texels for mip 0 of every layer of `dst`, layer after layer
+  // (bytes = width * height * 4 * layers). After submit() the whole image is in
+  // READ_ONLY_OPTIMAL, ready to sample.
+  void copy_to_image(const Image& dst, uint32_t layers, std::span<const std::byte> texels);
+
   // Submits every queued copy and waits. Afterwards the data is visible to any later command
   // on the queue, at any stage.
   void submit();
@@ -34,9 +40,19 @@ class UploadBatch {
     size_t staging_offset;
     size_t size;
   };
+  struct PendingImage {
+    VkImage dst;
+    VkImageAspectFlags aspect;
+    VkExtent2D extent;
+    uint32_t layers;
+    size_t staging_offset;
+  };
+  size_t stage(std::span<const std::byte> bytes);
+
   VulkanContext& context_;
   std::vector<std::byte> staged_;
   std::vector<Pending> pending_;
+  std::vector<PendingImage> pending_images_;
 };
 
 }  // namespace sg::vk

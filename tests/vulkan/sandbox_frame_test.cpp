@@ -2,6 +2,7 @@
 // (GpuTest fails on any report): the built-in scenes, the extension example, and the passes the
 // plan runs.
 #include <algorithm>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -9,7 +10,12 @@
 
 #include "rendergraph/vulkan/frame_ring.h"
 #include "rendergraph/vulkan/readback.h"
+#include "ecs/transform_system.h"
 #include "sandbox/sandbox_frame.h"
+#include "systems/scene/camera.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/primitive_meshes.h"
+#include "systems/scene/scene_builder.h"
 #include "vulkan_test_context.h"
 
 namespace sg::test {
@@ -85,6 +91,48 @@ TEST_F(SandboxFrameTest, SixPassCubesRenderTheSamePictureAsLayeredCubes) {
   int differing = 0;
   for (size_t i = 0; i < a.pixels.size(); ++i) differing += std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 1;
   EXPECT_EQ(differing, 0);
+}
+
+// A material's base-colour texture multiplies its base colour: a white floor with a green
+// texture renders green, the same floor without it grey.
+TEST_F(SandboxFrameTest, MaterialTexturesTintTheBaseColour) {
+  const auto floor_pixel = [&](bool textured) {
+    sandbox::SandboxScene scene;
+    scene.scene.name = "textured floor";
+    const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
+    scene.scene.textures.textures.push_back({"green", 2, 2, std::vector<uint8_t>(16, 0)});
+    for (size_t texel = 0; texel < 4; ++texel) {
+      scene.scene.textures.textures[0].pixels[texel * 4 + 1] = 255;
+      scene.scene.textures.textures[0].pixels[texel * 4 + 3] = 255;
+    }
+    scene::Material white;
+    white.base_color = glm::vec4(1.0f);
+    white.specular = 0.0f;
+    if (textured) white.base_color_texture = 0;
+    scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}}, white);
+    scene::add_light(scene.scene, scene::DirectionalLight{glm::vec3(1.0f), 0.5f},
+                     {glm::vec3(0.0f, 5.0f, 0.0f), scene::look_rotation({0, 5, 0}, {0.1f, 0, 0}), glm::vec3(1.0f)},
+                     scene::ShadowSettings{}, "sun");
+    ecs::update_world_transforms(scene.scene.world, 0);
+    scene.pose = {{0.0f, 6.0f, 0.1f}, {0.0f, 0.0f, 0.0f}};
+    vk::FrameRing frames(context);
+    sandbox::SandboxFrame frame(context, scene, sandbox::Options{}, frames.frames_in_flight());
+    frame.resize({width, height});
+    frame.record(frames.begin_frame(), 0.0);
+    frames.submit();
+    frames.wait_idle();
+    const vk::Rgba8Image image = vk::read_rgba8(context, frame.image());
+    const uint8_t* p = image.at(width / 2, height / 2);
+    return std::array<int, 3>{p[0], p[1], p[2]};
+  };
+  const std::array<int, 3> green = floor_pixel(true);
+  const std::array<int, 3> grey = floor_pixel(false);
+  EXPECT_GT(green[1], 100);
+  EXPECT_LT(green[0], 5);
+  EXPECT_LT(green[2], 5);
+  EXPECT_EQ(grey[0], grey[1]);
+  EXPECT_EQ(grey[1], grey[2]);
+  EXPECT_EQ(grey[1], green[1]) << "white times green keeps green's full strength";
 }
 
 TEST_F(SandboxFrameTest, DepthOverlayDrawsOnlyIntoTheBottomRightQuarter) {
