@@ -22,7 +22,6 @@ constexpr RequiredFeature required_features[] = {
      [](DeviceFeatures& f) -> VkBool32& { return f.core.features.drawIndirectFirstInstance; }},
     {"shaderDrawParameters (Vulkan 1.1)", "shaders read gl_DrawID and gl_BaseInstance",
      [](DeviceFeatures& f) -> VkBool32& { return f.v11.shaderDrawParameters; }},
-
 };
 
 }  // namespace
