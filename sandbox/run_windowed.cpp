@@ -12,6 +12,7 @@ int run_windowed(const Options& options) {
   const size_t frame_limit = options.frames.value_or(UINT32_MAX);
   while (session.frame_ms().size() < frame_limit && session.frame() != FrameResult::closed) {
   }
+  session.finish();
   return finish_run(options, session.context(), session.scene(), session.sandbox_frame(),
                     {session.frame_ms(), &session.gpu_times()});
 }

@@ -72,6 +72,14 @@ bool WindowSession::fit_to_window() {
   return true;
 }
 
+void WindowSession::finish() {
+  frames_->wait_idle();
+  for (uint32_t slot = 0; slot < frames_->frames_in_flight(); ++slot) {
+    frame_->executor().collect_timings(slot);
+    gpu_times_.add(frame_->executor().latest_timings());
+  }
+}
+
 FrameResult WindowSession::frame() {
   glfwPollEvents();
   if (glfwWindowShouldClose(window_)) return FrameResult::closed;

@@ -33,6 +33,8 @@ class WindowSession {
 
   // Handles window events, then renders and presents one frame when the window can show one.
   FrameResult frame();
+  // Waits for the GPU and takes the timings of the frames still in flight.
+  void finish();
 
   GLFWwindow* window() const { return window_; }
   vk::VulkanContext& context() { return *context_; }
