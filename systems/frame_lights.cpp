@@ -8,6 +8,8 @@
 namespace sg {
 namespace {
 
+constexpr glm::vec4 unbounded_reach{0.0f, 0.0f, 0.0f, -1.0f};
+
 uint32_t clamp_resolution(uint32_t requested, uint32_t limit) {
   return std::clamp(requested, min_shadow_resolution, limit);
 }
@@ -19,6 +21,31 @@ std::string light_name(ecs::World& world, ecs::Entity entity, const char* kind, 
   return std::string(kind) + " " + std::to_string(index);
 }
 
+scene::ShadowSettings with_overrides(scene::ShadowSettings shadow, const LightOverrides& overrides) {
+  if (overrides.algorithm) shadow.algorithm = *overrides.algorithm;
+  shadow.casts_shadow = shadow.casts_shadow && overrides.shadows;
+  return shadow;
+}
+
+// Every light of type Light, with a 2D map from view_of(light, transform) when it casts one.
+template <class Light, class ViewOf, class ReachOf>
+void gather_2d(ecs::World& world, const LightOverrides& overrides, const char* kind,
+               ViewOf view_of, ReachOf reach_of, FrameLights& out) {
+  world.query<const ecs::WorldTransform, const Light, const scene::ShadowSettings>().for_each(
+      [&](ecs::Entity entity, const ecs::WorldTransform& transform, const Light& light,
+          const scene::ShadowSettings& shadow) {
+        const scene::ShadowSettings s = with_overrides(shadow, overrides);
+        out.records.push_back(shadows::pack_light(light, transform, s));
+        if (!s.casts_shadow) return;
+        const auto layer = static_cast<uint32_t>(out.maps.size());
+        out.maps.push_back({static_cast<uint32_t>(out.records.size() - 1), layer,
+                            clamp_resolution(s.resolution, max_atlas_resolution),
+                            view_of(light, transform), reach_of(light, transform),
+                            "shadow " + light_name(world, entity, kind, layer)});
+        out.map_size = std::max(out.map_size, out.maps.back().resolution);
+      });
+}
+
 }  // namespace
 
 void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
@@ -26,67 +53,42 @@ void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
   out.records.clear();
   out.maps.clear();
   out.cubes.clear();
+  out.map_size = min_shadow_resolution;
+  out.cube_size = min_shadow_resolution;
   const scene::Aabb bounds = scene_bounds.empty() ? scene::Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)}
                                                   : scene_bounds;
-  const auto settings = [&](const scene::ShadowSettings& shadow) {
-    scene::ShadowSettings s = shadow;
-    if (overrides.algorithm) s.algorithm = *overrides.algorithm;
-    s.casts_shadow = s.casts_shadow && overrides.shadows;
-    return s;
-  };
-  // 2D maps get their layer now and their uv region once every request is known.
-  const auto add_map = [&](ecs::Entity entity, const char* kind, const scene::ShadowSettings& s,
-                           const shadows::LightView& view) {
-    const auto layer = static_cast<uint32_t>(out.maps.size());
-    out.maps.push_back({static_cast<uint32_t>(out.records.size() - 1), layer,
-                        clamp_resolution(s.resolution, max_atlas_resolution), view,
-                        "shadow " + light_name(world, entity, kind, layer)});
-  };
+  const auto no_range = [](const auto&, const ecs::WorldTransform&) { return unbounded_reach; };
 
-  world.query<const ecs::WorldTransform, const scene::SpotLight, const scene::ShadowSettings>().for_each(
-      [&](ecs::Entity entity, const ecs::WorldTransform& transform, const scene::SpotLight& light,
-          const scene::ShadowSettings& shadow) {
-        const scene::ShadowSettings s = settings(shadow);
-        out.records.push_back(shadows::pack_light(light, transform, s));
-        if (!s.casts_shadow) return;
-        add_map(entity, "spot", s,
-                shadows::spot_light_view(scene::light_position(transform),
-                                         scene::light_direction(transform), light.outer_cone,
-                                         light.range));
-      });
-  world.query<const ecs::WorldTransform, const scene::DirectionalLight, const scene::ShadowSettings>()
-      .for_each([&](ecs::Entity entity, const ecs::WorldTransform& transform,
-                    const scene::DirectionalLight& light, const scene::ShadowSettings& shadow) {
-        const scene::ShadowSettings s = settings(shadow);
-        out.records.push_back(shadows::pack_light(light, transform, s));
-        if (!s.casts_shadow) return;
-        add_map(entity, "directional", s,
-                shadows::directional_light_view(scene::light_direction(transform), bounds));
-      });
-  world.query<const ecs::WorldTransform, const scene::CylinderLight, const scene::ShadowSettings>()
-      .for_each([&](ecs::Entity entity, const ecs::WorldTransform& transform,
-                    const scene::CylinderLight& light, const scene::ShadowSettings& shadow) {
-        const scene::ShadowSettings s = settings(shadow);
-        out.records.push_back(shadows::pack_light(light, transform, s));
-        if (!s.casts_shadow) return;
-        add_map(entity, "cylinder", s,
-                shadows::cylinder_light_view(scene::light_position(transform),
-                                             scene::light_direction(transform), light.outer_radius,
-                                             bounds));
-      });
-
-  out.map_size = min_shadow_resolution;
-  for (const ShadowMapView& map : out.maps) out.map_size = std::max(out.map_size, map.resolution);
-  for (const ShadowMapView& map : out.maps) {
-    const float scale = float(map.resolution) / float(out.map_size);
-    shadows::set_shadow_map(out.records[map.light], map.layer, glm::vec4(0.0f, 0.0f, scale, scale),
-                            map.resolution, map.view);
-  }
+  gather_2d<scene::SpotLight>(
+      world, overrides, "spot",
+      [](const scene::SpotLight& light, const ecs::WorldTransform& transform) {
+        return shadows::spot_light_view(scene::light_position(transform),
+                                        scene::light_direction(transform), light.outer_cone,
+                                        light.range);
+      },
+      [](const scene::SpotLight& light, const ecs::WorldTransform& transform) {
+        return glm::vec4(scene::light_position(transform), light.range);
+      },
+      out);
+  gather_2d<scene::DirectionalLight>(
+      world, overrides, "directional",
+      [&](const scene::DirectionalLight&, const ecs::WorldTransform& transform) {
+        return shadows::directional_light_view(scene::light_direction(transform), bounds);
+      },
+      no_range, out);
+  gather_2d<scene::CylinderLight>(
+      world, overrides, "cylinder",
+      [&](const scene::CylinderLight& light, const ecs::WorldTransform& transform) {
+        return shadows::cylinder_light_view(scene::light_position(transform),
+                                            scene::light_direction(transform), light.outer_radius,
+                                            bounds);
+      },
+      no_range, out);
 
   world.query<const ecs::WorldTransform, const scene::PointLight, const scene::ShadowSettings>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform& transform, const scene::PointLight& light,
           const scene::ShadowSettings& shadow) {
-        const scene::ShadowSettings s = settings(shadow);
+        const scene::ShadowSettings s = with_overrides(shadow, overrides);
         out.records.push_back(shadows::pack_light(light, transform, s));
         if (!s.casts_shadow) return;
         const glm::vec3 position = scene::light_position(transform);
@@ -96,13 +98,18 @@ void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
                              shadows::point_light_cube(position, light.range),
                              glm::vec4(position, light.range),
                              "shadow " + light_name(world, entity, "point", cube)});
+        out.cube_size = std::max(out.cube_size, out.cubes.back().requested_resolution);
       });
-  out.cube_size = min_shadow_resolution;
-  for (const ShadowCubeView& cube : out.cubes) {
-    out.cube_size = std::max(out.cube_size, cube.requested_resolution);
+}
+
+void place_shadow_maps(FrameLights& lights, uint32_t layer_size, uint32_t face_size) {
+  for (const ShadowMapView& map : lights.maps) {
+    const float scale = float(map.resolution) / float(layer_size);
+    shadows::set_shadow_map(lights.records[map.light], map.layer, glm::vec4(0.0f, 0.0f, scale, scale),
+                            map.resolution, map.view);
   }
-  for (const ShadowCubeView& cube : out.cubes) {
-    shadows::set_shadow_cube(out.records[cube.light], cube.cube, out.cube_size, cube.views);
+  for (const ShadowCubeView& cube : lights.cubes) {
+    shadows::set_shadow_cube(lights.records[cube.light], cube.cube, face_size, cube.views);
   }
 }
 

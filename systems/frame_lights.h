@@ -4,9 +4,10 @@
 //
 // Shadow storage is shared by all lights: spot, directional and cylinder lights each own one
 // layer of a 2D depth array (the "shadow atlas"), point lights one cube of a depth cube-map
-// array. Layers are map_size texels square, the largest resolution any 2D light asks for; a light
-// asking for less renders into, and samples, the top-left square of its layer of that size. Cube
-// faces are cube_size texels, the largest any point light asks for.
+// array. The storage must have layers of at least map_size texels (the largest resolution any
+// 2D light asks for) and faces of at least cube_size; a light asking for less renders into,
+// and samples, the top-left square of its layer of its own size. Once the storage is sized,
+// place_shadow_maps() tells each record where its map is.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -38,15 +39,18 @@ struct ShadowMapView {
   uint32_t layer = 0;
   uint32_t resolution = 0;  // the square region [0, resolution)^2 of the layer
   shadows::LightView view;
+  // The sphere beyond which the light reaches nothing (xyz centre, w radius): casters outside
+  // cannot shadow anything it lights. A negative radius for lights without a range.
+  glm::vec4 reach{0.0f, 0.0f, 0.0f, -1.0f};
   std::string name;  // for the pass: "shadow <light name>"
 };
 
 struct ShadowCubeView {
   uint32_t light = 0;
   uint32_t cube = 0;  // layers 6 * cube .. 6 * cube + 5
-  uint32_t requested_resolution = 0;  // the light's wish; faces are FrameLights::cube_size
+  uint32_t requested_resolution = 0;  // the light's wish; all faces share the storage's size
   shadows::CubeViews views;
-  glm::vec4 position_far{0.0f};  // shadow_cube.frag's push constant
+  glm::vec4 position_far{0.0f};  // shadow_cube.frag's push constant, and the light's reach
   std::string name;
 };
 
@@ -54,14 +58,19 @@ struct FrameLights {
   std::vector<shadows::GpuLight> records;
   std::vector<ShadowMapView> maps;
   std::vector<ShadowCubeView> cubes;
-  uint32_t map_size = min_shadow_resolution;   // atlas layer side, texels
-  uint32_t cube_size = min_shadow_resolution;  // cube face side, texels
+  uint32_t map_size = min_shadow_resolution;   // the smallest atlas layer side that fits, texels
+  uint32_t cube_size = min_shadow_resolution;  // the smallest cube face side that fits, texels
 };
 
 // Fills `out` (reusing its storage) from every light entity of `world`. Directional and
 // cylinder maps are fitted around `scene_bounds`. Lights whose ShadowSettings::casts_shadow is
-// false, and every light with overrides.shadows off, get no map.
+// false, and every light with overrides.shadows off, get no map. The records do not yet say
+// where their maps are (place_shadow_maps).
 void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
                    const LightOverrides& overrides, FrameLights& out);
+
+// Gives every shadowed record its map in storage whose layers are `layer_size` texels and
+// whose cube faces are `face_size` texels (at least lights.map_size and lights.cube_size).
+void place_shadow_maps(FrameLights& lights, uint32_t layer_size, uint32_t face_size);
 
 }  // namespace sg

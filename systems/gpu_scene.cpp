@@ -53,6 +53,7 @@ void GpuScene::update(ecs::World& world, uint32_t slot) {
 
   sorted_.clear();
   bounds_.clear();
+  scene_bounds_ = {};
   commands_.clear();
   caster_groups_.clear();
   // One command per mesh over its instances, and a caster group over its casters (first).
@@ -67,6 +68,7 @@ void GpuScene::update(ecs::World& world, uint32_t slot) {
       const GpuInstance& instance = gathered_[items_[i].index];
       sorted_.push_back(instance);
       bounds_.push_back(scene::transformed(range.bounds, instance.model));
+      scene::grow(scene_bounds_, bounds_.back());
     }
     if (range.index_count > 0) {
       const VkDrawIndexedIndirectCommand command{range.index_count, static_cast<uint32_t>(end - begin),

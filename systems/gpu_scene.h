@@ -43,8 +43,9 @@ class GpuScene {
   // Per mesh with casters: its draw over exactly its casters (firstInstance and instanceCount
   // give their range in the instance buffer).
   std::span<const VkDrawIndexedIndirectCommand> caster_groups() const { return caster_groups_; }
-  // World-space bounds of every instance, in instance-buffer order.
+  // World-space bounds of every instance, in instance-buffer order, and of all of them.
   std::span<const scene::Aabb> instance_bounds() const { return bounds_; }
+  const scene::Aabb& bounds() const { return scene_bounds_; }
 
  private:
   vk::Buffer vertices_;
@@ -63,6 +64,7 @@ class GpuScene {
   std::vector<GpuInstance> gathered_;
   std::vector<GpuInstance> sorted_;
   std::vector<scene::Aabb> bounds_;
+  scene::Aabb scene_bounds_;
   std::vector<VkDrawIndexedIndirectCommand> commands_;
   std::vector<VkDrawIndexedIndirectCommand> caster_groups_;
 };

@@ -3,7 +3,6 @@
 #include <span>
 
 #include "systems/camera.h"
-#include "systems/scene/scene_queries.h"
 
 namespace sg {
 namespace {
@@ -29,20 +28,13 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, scene::Scene& scene,
 
 void SceneRenderer::update(uint32_t slot) {
   gpu_scene_.update(scene_.world, slot);
-  gather_lights(scene_.world, scene::scene_bounds(scene_), settings_.lights, lights_);
+  gather_lights(scene_.world, gpu_scene_.bounds(), settings_.lights, lights_);
   const ShadowAtlas::Changes changes =
       atlas_.fit(static_cast<uint32_t>(lights_.maps.size()), lights_.map_size,
                  static_cast<uint32_t>(lights_.cubes.size()), lights_.cube_size);
   recreated_.maps = recreated_.maps || changes.maps;
   recreated_.cubes = recreated_.cubes || changes.cubes;
-  // Layers are sized to the largest request; each record's region was computed for
-  // lights_.map_size, which the atlas may exceed after shrinking requests: rescale.
-  const float scale = float(lights_.map_size) / float(atlas_.maps_desc().width);
-  for (const ShadowMapView& map : lights_.maps) {
-    glm::vec4& rect = lights_.records[map.light].shadow_rect;
-    rect.z *= scale;
-    rect.w *= scale;
-  }
+  place_shadow_maps(lights_, atlas_.maps_desc().width, atlas_.cubes_desc().width);
   const vk::Buffer& records =
       light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
   shadow_passes_.prepare(slot, lights_, gpu_scene_, settings_.cube_shadows);
@@ -68,10 +60,6 @@ ForwardTargets SceneRenderer::add_passes(rg::RenderGraph& graph, rg::ImportedSta
                                  glm::uvec4(static_cast<uint32_t>(lights_.records.size()), 0, 0, 0)};
   return forward_.add_to(graph, colour, shadows.maps, shadows.cubes, gpu_scene_, slot, constants);
 }
-
-}  // namespace sg
-
-namespace sg {
 
 void SceneRenderer::bind_imports(vk::ImportedResources& imports) const {
   imports.bind(imported_.maps, atlas_.maps());

@@ -71,29 +71,19 @@ ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight
 
 void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuScene& scene,
                            CubeShadowMode mode) {
-  // Spot and point lights reach no farther than their range; directional and cylinder maps
-  // cover the scene, and keep every caster.
+  // Grid cells as large as the lights' mean reach (views without one do not use the grid).
   float reach_sum = 0.0f;
   uint32_t bounded = 0;
-  for (const ShadowMapView& map : lights.maps) {
-    const shadows::GpuLight& light = lights.records[map.light];
-    if (light.info.x == static_cast<uint32_t>(shadows::GpuLightType::spot)) {
-      reach_sum += light.position_range.w;
-      ++bounded;
-    }
-  }
-  for (const ShadowCubeView& cube : lights.cubes) {
-    reach_sum += cube.position_far.w;
+  const auto add_reach = [&](const glm::vec4& reach) {
+    if (reach.w < 0.0f) return;
+    reach_sum += reach.w;
     ++bounded;
-  }
+  };
+  for (const ShadowMapView& map : lights.maps) add_reach(map.reach);
+  for (const ShadowCubeView& cube : lights.cubes) add_reach(cube.position_far);
   casters_.begin_frame(scene, bounded > 0 ? reach_sum / float(bounded) : 0.0f);
   map_casters_.clear();
-  for (const ShadowMapView& map : lights.maps) {
-    const shadows::GpuLight& light = lights.records[map.light];
-    const bool spot = light.info.x == static_cast<uint32_t>(shadows::GpuLightType::spot);
-    map_casters_.push_back(
-        casters_.add_view(scene, spot ? light.position_range : glm::vec4(0.0f, 0.0f, 0.0f, -1.0f), 1));
-  }
+  for (const ShadowMapView& map : lights.maps) map_casters_.push_back(casters_.add_view(scene, map.reach, 1));
   const uint32_t copies = mode == CubeShadowMode::layered && layered_supported() ? 6 : 1;
   cube_casters_.clear();
   for (const ShadowCubeView& cube : lights.cubes) {
