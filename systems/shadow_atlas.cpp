@@ -16,6 +16,12 @@ uint64_t image_bytes(const rg::ImageDesc& desc) {
   return uint64_t{desc.width} * desc.height * desc.layers * rg::bytes_per_texel(desc.format);
 }
 
+// Room for `needed`, growing by half again beyond it, so that a scene gaining lights one at a
+// time recreates (and waits for the GPU) a logarithmic number of times, not once per light.
+uint32_t capacity(uint32_t needed, uint32_t current) {
+  return needed <= current ? current : std::max(needed, current + current / 2);
+}
+
 }  // namespace
 
 ShadowAtlas::ShadowAtlas(vk::VulkanContext& context) : context_(context) { fit(1, 16, 1, 16); }
@@ -24,10 +30,10 @@ ShadowAtlas::Changes ShadowAtlas::fit(uint32_t map_layers, uint32_t map_size, ui
                                       uint32_t cube_size) {
   Changes changes;
   const rg::ImageDesc maps{std::max(map_size, maps_desc_.width), std::max(map_size, maps_desc_.width),
-                           depth_format, std::max({map_layers, maps_desc_.layers, 1u})};
+                           depth_format, capacity(std::max(map_layers, 1u), maps_desc_.layers)};
   const rg::ImageDesc cube_desc{std::max(cube_size, cubes_desc_.width),
                                 std::max(cube_size, cubes_desc_.width), depth_format,
-                                6 * std::max({cubes, cubes_desc_.layers / 6, 1u}), 1, true};
+                                6 * capacity(std::max(cubes, 1u), cubes_desc_.layers / 6), 1, true};
   changes.maps = maps != maps_desc_;
   changes.cubes = cube_desc != cubes_desc_;
   if ((changes.maps && maps_.handle() != VK_NULL_HANDLE) ||

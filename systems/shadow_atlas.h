@@ -4,8 +4,9 @@
 // Both outlive frames and are imported into each frame's graph.
 //
 // Contract: fit() recreates an image only when the lights need more layers or cubes or a larger
-// size than it has (it grows, never shrinks while running); recreating waits for the GPU to go
-// idle first, because frames in flight may still sample the old image. Both images always
+// size than it has (it grows, never shrinks while running, and adds half again the layers or
+// cubes it had, so that lights added one by one recreate it rarely); recreating waits for the
+// GPU to go idle first, because frames in flight may still sample the old image. Both images always
 // exist (at least one layer and one cube), so the lighting pass's descriptors are always valid.
 #include <cstdint>
 
