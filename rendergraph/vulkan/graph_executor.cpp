@@ -57,7 +57,7 @@ void ImportedResources::bind(rg::BufferHandle handle, const Buffer& buffer) {
 VkImageView PassRecorder::view(rg::ImageHandle image, rg::SubresourceRange range,
                                std::optional<VkImageViewType> type) const {
   const PhysicalResource& resource = resources_[image.index];
-  const rg::ImageDesc& desc = images_[image.index];
+  const rg::ImageDesc& desc = descriptions_[image.index].image;
   if (resource.views == nullptr) {
     throw std::logic_error("image resource " + std::to_string(image.index) +
                            " was bound without views (a swapchain image?); it can only be copied");
@@ -133,10 +133,8 @@ void GraphExecutor::execute(VkCommandBuffer cmd, uint32_t slot_index, uint64_t f
 
   const TransientResources& transients = transients_for(slot, plan);
   physical_.assign(plan->resources.size(), PhysicalResource{});
-  image_descs_.resize(plan->resources.size());
   for (uint32_t i = 0; i < plan->resources.size(); ++i) {
     const rg::CompiledResource& resource = plan->resources[i];
-    image_descs_[i] = resource.image;
     if (resource.imported) continue;
     const VkImageAspectFlags aspect =
         resource.kind == rg::ResourceKind::image ? aspect_of(to_vk(resource.image.format)) : 0;
@@ -154,7 +152,7 @@ void GraphExecutor::execute(VkCommandBuffer cmd, uint32_t slot_index, uint64_t f
     }
   }
 
-  PassRecorder recorder(context_, cmd, physical_, image_descs_, slot.descriptors.get());
+  PassRecorder recorder(context_, cmd, physical_, plan->resources, slot.descriptors.get());
   for (uint32_t position = 0; position < pass_count; ++position) {
     const rg::CompiledPass& pass = plan->passes[position];
     context_.begin_label(cmd, pass.name.c_str());
@@ -185,7 +183,7 @@ void GraphExecutor::record_pass(VkCommandBuffer cmd, const rg::CompiledPass& pas
   uint32_t layers = 1;
   for (const rg::ResourceAccess& access : declaration.accesses) {
     if (!is_attachment(access.usage)) continue;
-    const rg::ImageDesc& desc = image_descs_[access.resource];
+    const rg::ImageDesc& desc = recorder.descriptions_[access.resource].image;
     const rg::SubresourceRange& range = access.range;
     const PhysicalResource& resource = physical_[access.resource];
     if (resource.views == nullptr) {

@@ -113,7 +113,6 @@ class GraphExecutor {
   std::optional<FrameTimings> latest_timings_;
   // Per-frame scratch, reused so that a frame allocates nothing once they have grown.
   std::vector<PhysicalResource> physical_;
-  std::vector<rg::ImageDesc> image_descs_;
   std::vector<double> pass_ms_;
   BarrierScratch barrier_scratch_;
   std::vector<VkRenderingAttachmentInfo> colour_attachments_;

@@ -16,6 +16,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "rendergraph/core/compiled_plan.h"
 #include "rendergraph/core/resource_types.h"
 #include "rendergraph/vulkan/plan_translation.h"
 
@@ -26,12 +27,13 @@ class VulkanContext;
 class PassRecorder {
  public:
   PassRecorder(VulkanContext& context, VkCommandBuffer cmd,
-               std::span<const PhysicalResource> resources, std::span<const rg::ImageDesc> images,
+               std::span<const PhysicalResource> resources,
+               std::span<const rg::CompiledResource> descriptions,
                VkDescriptorPool frame_descriptors)
       : context_(context),
         cmd_(cmd),
         resources_(resources),
-        images_(images),
+        descriptions_(descriptions),
         frame_descriptors_(frame_descriptors) {}
 
   VulkanContext& context() const { return context_; }
@@ -63,7 +65,7 @@ class PassRecorder {
   VulkanContext& context_;
   VkCommandBuffer cmd_;
   std::span<const PhysicalResource> resources_;
-  std::span<const rg::ImageDesc> images_;
+  std::span<const rg::CompiledResource> descriptions_;  // the plan's, by resource index
   VkDescriptorPool frame_descriptors_;
   VkExtent2D render_extent_{0, 0};
 };
