@@ -1,9 +1,9 @@
 #include "sandbox/depth_overlay_pass.h"
 
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/descriptors.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/descriptors.h"
 #include "rendergraph/vulkan/pass_recorder.h"
-#include "rendergraph/vulkan/pipeline.h"
+#include "rendergraph/device/pipeline.h"
 #include "sandbox_shaders/depth_overlay.frag.spv.h"
 #include "sandbox_shaders/depth_overlay.vert.spv.h"
 

@@ -5,7 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include "rendergraph/core/render_graph.h"
-#include "rendergraph/vulkan/unique_handle.h"
+#include "rendergraph/device/unique_handle.h"
 #include "systems/scene/camera.h"
 
 namespace sg::vk {

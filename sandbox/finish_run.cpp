@@ -1,7 +1,7 @@
 #include <cstdio>
 
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/readback.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/readback.h"
 #include "sandbox/gpu_time_log.h"
 #include "sandbox/png.h"
 #include "sandbox/run.h"

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "rendergraph/vulkan/frame_ring.h"
+#include "rendergraph/device/frame_ring.h"
 #include "sandbox/gpu_time_log.h"
 #include "sandbox/sandbox_frame.h"
 

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "rendergraph/vulkan/context.h"
+#include "rendergraph/device/context.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/shadow_settings.h"

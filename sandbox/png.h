@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "rendergraph/vulkan/readback.h"
+#include "rendergraph/device/readback.h"
 
 namespace sg::sandbox {
 

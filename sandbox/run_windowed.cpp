@@ -1,6 +1,6 @@
 #include <cstdio>
 
-#include "rendergraph/vulkan/context.h"
+#include "rendergraph/device/context.h"
 #include "sandbox/run.h"
 #include "sandbox/window_session.h"
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "rendergraph/vulkan/readback.h"
+#include "rendergraph/device/readback.h"
 #include "sandbox/png.h"
 #include "systems/scene_renderer.h"
 

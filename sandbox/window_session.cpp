@@ -7,10 +7,10 @@
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/frame_ring.h"
-#include "rendergraph/vulkan/swapchain.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/frame_ring.h"
+#include "rendergraph/device/swapchain.h"
+#include "rendergraph/device/vulkan_error.h"
 #include "sandbox/sandbox_frame.h"
 
 namespace sg::sandbox {

@@ -8,8 +8,8 @@
 #include <vulkan/vulkan.h>
 
 #include "rendergraph/core/render_graph.h"
-#include "rendergraph/vulkan/descriptors.h"
-#include "rendergraph/vulkan/unique_handle.h"
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/unique_handle.h"
 #include "systems/scene_gpu_types.h"
 
 namespace sg::vk {

@@ -5,7 +5,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "ecs/transform.h"
-#include "rendergraph/vulkan/upload.h"
+#include "rendergraph/device/upload.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
 

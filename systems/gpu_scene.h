@@ -14,8 +14,8 @@
 #include <vulkan/vulkan.h>
 
 #include "ecs/world.h"
-#include "rendergraph/vulkan/frame_buffers.h"
-#include "rendergraph/vulkan/resources.h"
+#include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/resources.h"
 #include "systems/scene/aabb.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/scene_gpu_types.h"

@@ -8,7 +8,7 @@
 
 #include <stb_image_resize.h>
 
-#include "rendergraph/vulkan/upload.h"
+#include "rendergraph/device/upload.h"
 
 namespace sg {
 

@@ -7,7 +7,7 @@
 // keeps their uv mapping. A scene without textures gets one white layer, so the array exists.
 #include <cstdint>
 
-#include "rendergraph/vulkan/resources.h"
+#include "rendergraph/device/resources.h"
 #include "systems/scene/texture_library.h"
 
 namespace sg {

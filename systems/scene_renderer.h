@@ -14,7 +14,7 @@
 
 #include "rendergraph/core/imported_states.h"
 #include "rendergraph/core/render_graph.h"
-#include "rendergraph/vulkan/frame_buffers.h"
+#include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/vulkan/graph_executor.h"
 #include "systems/forward_pass.h"
 #include "systems/frame_lights.h"

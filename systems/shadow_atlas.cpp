@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "rendergraph/core/format.h"
-#include "rendergraph/vulkan/context.h"
+#include "rendergraph/device/context.h"
 #include "rendergraph/vulkan/plan_translation.h"
 
 namespace sg {

@@ -11,7 +11,7 @@
 #include <cstdint>
 
 #include "rendergraph/core/resource_types.h"
-#include "rendergraph/vulkan/resources.h"
+#include "rendergraph/device/resources.h"
 
 namespace sg {
 

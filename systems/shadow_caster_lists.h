@@ -15,7 +15,7 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
-#include "rendergraph/vulkan/frame_buffers.h"
+#include "rendergraph/device/frame_buffers.h"
 
 namespace sg::vk {
 class VulkanContext;

@@ -3,10 +3,10 @@
 #include <cstring>
 #include <span>
 
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/descriptors.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/descriptors.h"
 #include "rendergraph/vulkan/pass_recorder.h"
-#include "rendergraph/vulkan/pipeline.h"
+#include "rendergraph/device/pipeline.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "shaders/shadow_cube.frag.spv.h"
 #include "shaders/shadow_cube_layered.vert.spv.h"

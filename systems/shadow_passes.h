@@ -10,9 +10,9 @@
 #include <vulkan/vulkan.h>
 
 #include "rendergraph/core/render_graph.h"
-#include "rendergraph/vulkan/descriptors.h"
-#include "rendergraph/vulkan/frame_buffers.h"
-#include "rendergraph/vulkan/unique_handle.h"
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/unique_handle.h"
 #include "systems/frame_lights.h"
 #include "systems/gpu_scene.h"
 #include "systems/shadow_caster_lists.h"

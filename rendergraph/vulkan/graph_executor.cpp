@@ -5,10 +5,10 @@
 #include <string>
 
 #include "rendergraph/core/pass_context.h"
-#include "rendergraph/vulkan/context.h"
+#include "rendergraph/device/context.h"
 #include "rendergraph/vulkan/pass_recorder.h"
-#include "rendergraph/vulkan/resources.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 namespace {

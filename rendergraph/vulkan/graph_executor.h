@@ -31,7 +31,7 @@
 #include "rendergraph/vulkan/pass_timer.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "rendergraph/vulkan/transient_resources.h"
-#include "rendergraph/vulkan/unique_handle.h"
+#include "rendergraph/device/unique_handle.h"
 
 namespace sg::vk {
 

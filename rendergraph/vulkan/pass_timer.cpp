@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 

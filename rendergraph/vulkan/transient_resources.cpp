@@ -4,10 +4,10 @@
 #include <utility>
 
 #include "rendergraph/core/aliasing.h"
-#include "rendergraph/vulkan/context.h"
+#include "rendergraph/device/context.h"
 #include "rendergraph/vulkan/plan_translation.h"
-#include "rendergraph/vulkan/resources.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 namespace {

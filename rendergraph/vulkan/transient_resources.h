@@ -15,8 +15,8 @@
 #include <vulkan/vulkan.h>
 
 #include "rendergraph/core/compiled_plan.h"
-#include "rendergraph/vulkan/gpu_allocator.h"
-#include "rendergraph/vulkan/image_views.h"
+#include "rendergraph/device/gpu_allocator.h"
+#include "rendergraph/device/image_views.h"
 
 namespace sg::vk {
 

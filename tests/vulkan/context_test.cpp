@@ -3,10 +3,10 @@
 
 #include <gtest/gtest.h>
 
-#include "rendergraph/vulkan/barriers.h"
-#include "rendergraph/vulkan/resources.h"
-#include "rendergraph/vulkan/upload.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/barriers.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/device/upload.h"
+#include "rendergraph/device/vulkan_error.h"
 #include "vulkan_test_context.h"
 
 namespace sg::test {

@@ -8,11 +8,11 @@
 
 #include "rendergraph/core/compile.h"
 #include "rendergraph/core/imported_states.h"
-#include "rendergraph/vulkan/barriers.h"
-#include "rendergraph/vulkan/frame_ring.h"
+#include "rendergraph/device/barriers.h"
+#include "rendergraph/device/frame_ring.h"
 #include "rendergraph/vulkan/graph_executor.h"
-#include "rendergraph/vulkan/readback.h"
-#include "rendergraph/vulkan/resources.h"
+#include "rendergraph/device/readback.h"
+#include "rendergraph/device/resources.h"
 #include "vulkan_test_context.h"
 
 namespace sg::test {

@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 
 #include "ecs/transform_system.h"
-#include "rendergraph/vulkan/frame_ring.h"
-#include "rendergraph/vulkan/readback.h"
+#include "rendergraph/device/frame_ring.h"
+#include "rendergraph/device/readback.h"
 #include "sandbox/sandbox_frame.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"

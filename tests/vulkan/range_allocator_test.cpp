@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "rendergraph/vulkan/range_allocator.h"
+#include "rendergraph/device/range_allocator.h"
 
 namespace sg::vk {
 namespace {

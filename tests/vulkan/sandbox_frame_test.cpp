@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "rendergraph/vulkan/frame_ring.h"
-#include "rendergraph/vulkan/readback.h"
+#include "rendergraph/device/frame_ring.h"
+#include "rendergraph/device/readback.h"
 #include "ecs/transform_system.h"
 #include "sandbox/sandbox_frame.h"
 #include "systems/scene/camera.h"

@@ -3,7 +3,7 @@
 // synchronization validation on, and fails if the layer reported any error.
 #include <gtest/gtest.h>
 
-#include "rendergraph/vulkan/context.h"
+#include "rendergraph/device/context.h"
 
 namespace sg::test {
 

@@ -6,8 +6,8 @@
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
-#include "rendergraph/vulkan/swapchain.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/swapchain.h"
+#include "rendergraph/device/vulkan_error.h"
 #include "sandbox/window_session.h"
 #include "vulkan_test_context.h"
 

@@ -15,8 +15,8 @@
 #include <CLI/CLI.hpp>
 
 #include "rendergraph/core/dump.h"
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/frame_ring.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/frame_ring.h"
 #include "sandbox/gpu_time_log.h"
 #include "sandbox/headless_frames.h"
 #include "sandbox/options.h"

@@ -13,7 +13,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "rendergraph/vulkan/resources.h"
+#include "rendergraph/device/resources.h"
 
 namespace sg::vk {
 

@@ -1,4 +1,4 @@
-#include "rendergraph/vulkan/device_features.h"
+#include "rendergraph/device/device_features.h"
 
 namespace sg::vk {
 namespace {

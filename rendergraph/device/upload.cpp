@@ -1,11 +1,11 @@
-#include "rendergraph/vulkan/upload.h"
+#include "rendergraph/device/upload.h"
 
 #include <cstring>
 
-#include "rendergraph/vulkan/barriers.h"
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/resources.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/barriers.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 

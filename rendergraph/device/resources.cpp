@@ -1,9 +1,9 @@
-#include "rendergraph/vulkan/resources.h"
+#include "rendergraph/device/resources.h"
 
 #include <utility>
 
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 

@@ -1,10 +1,10 @@
-#include "rendergraph/vulkan/gpu_allocator.h"
+#include "rendergraph/device/gpu_allocator.h"
 
 #include <algorithm>
 #include <optional>
 #include <string>
 
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 namespace {

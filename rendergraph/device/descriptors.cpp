@@ -1,6 +1,6 @@
-#include "rendergraph/vulkan/descriptors.h"
+#include "rendergraph/device/descriptors.h"
 
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 

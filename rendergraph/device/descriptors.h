@@ -7,7 +7,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "rendergraph/vulkan/unique_handle.h"
+#include "rendergraph/device/unique_handle.h"
 
 namespace sg::vk {
 

@@ -1,4 +1,4 @@
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 

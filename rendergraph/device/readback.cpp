@@ -1,13 +1,13 @@
-#include "rendergraph/vulkan/readback.h"
+#include "rendergraph/device/readback.h"
 
 #include <cstring>
 #include <span>
 #include <utility>
 
-#include "rendergraph/vulkan/barriers.h"
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/resources.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/barriers.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 namespace {

@@ -14,8 +14,8 @@
 
 #include <vulkan/vulkan.h>
 
-#include "rendergraph/vulkan/device_features.h"
-#include "rendergraph/vulkan/gpu_allocator.h"
+#include "rendergraph/device/device_features.h"
+#include "rendergraph/device/gpu_allocator.h"
 
 namespace sg::vk {
 

@@ -1,4 +1,4 @@
-#include "rendergraph/vulkan/range_allocator.h"
+#include "rendergraph/device/range_allocator.h"
 
 #include <cassert>
 

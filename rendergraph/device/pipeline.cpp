@@ -1,7 +1,7 @@
-#include "rendergraph/vulkan/pipeline.h"
+#include "rendergraph/device/pipeline.h"
 
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 

@@ -1,7 +1,7 @@
-#include "rendergraph/vulkan/image_views.h"
+#include "rendergraph/device/image_views.h"
 
-#include "rendergraph/vulkan/resources.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 

@@ -1,4 +1,4 @@
-#include "rendergraph/vulkan/context.h"
+#include "rendergraph/device/context.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,8 +11,8 @@
 #include <dlfcn.h>
 #endif
 
-#include "rendergraph/vulkan/device_features.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/device_features.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 namespace {

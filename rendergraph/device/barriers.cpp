@@ -1,4 +1,4 @@
-#include "rendergraph/vulkan/barriers.h"
+#include "rendergraph/device/barriers.h"
 
 namespace sg::vk {
 

@@ -10,7 +10,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "rendergraph/vulkan/range_allocator.h"
+#include "rendergraph/device/range_allocator.h"
 
 namespace sg::vk {
 

@@ -1,4 +1,4 @@
-#include "rendergraph/vulkan/frame_buffers.h"
+#include "rendergraph/device/frame_buffers.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
-#include "rendergraph/vulkan/frame_ring.h"
+#include "rendergraph/device/frame_ring.h"
 
-#include "rendergraph/vulkan/context.h"
-#include "rendergraph/vulkan/vulkan_error.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
 
