@@ -5,12 +5,15 @@
 // commands later in an execute function:
 //
 //   ImageHandle depth{};
-//   graph.add_pass("depth prepass", QueueType::graphics,
+//   graph.add_pass("depth prepass",
 //       [&](PassBuilder& b) {
 //         depth = b.create_image("depth", {1920, 1080, Format::d32_sfloat});
 //         depth = b.write(depth, Usage::depth_attachment);
 //       },
-//       [=](PassContext& ctx) { draw_depth(ctx.get<VulkanRecorder>()); });
+//       [=](const vk::PassRecorder& rec) { draw_depth(rec); });
+//
+// The execute function takes either the PassContext or the executor's recorder type directly
+// (unwrapped with PassContext::get); without a queue, a pass runs on the graphics queue.
 //
 // Mistakes (stale versions, conflicting usages, bad ranges...) are recorded where they are made
 // and reported together by compile(); a graph with errors does not compile.
@@ -21,6 +24,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -32,6 +36,35 @@
 namespace sg::rg {
 
 using ExecuteFn = std::function<void(PassContext&)>;
+
+namespace detail {
+// The parameter type of a callable object with one non-template call operator.
+template <class CallOperator>
+struct sole_parameter;
+template <class R, class C, class P>
+struct sole_parameter<R (C::*)(P) const> {
+  using type = P;
+};
+template <class R, class C, class P>
+struct sole_parameter<R (C::*)(P)> {
+  using type = P;
+};
+}  // namespace detail
+
+// An execute function as the graph stores it: one that takes a PassContext as it is, one that
+// takes a recorder (`const vk::PassRecorder&`) wrapped to unwrap the context first.
+template <class Execute>
+ExecuteFn to_execute_fn(Execute&& execute) {
+  if constexpr (std::is_invocable_v<Execute&, PassContext&>) {
+    return ExecuteFn(std::forward<Execute>(execute));
+  } else {
+    using Parameter = typename detail::sole_parameter<decltype(&std::remove_cvref_t<Execute>::operator())>::type;
+    using Recorder = std::remove_cvref_t<Parameter>;
+    return [fn = std::forward<Execute>(execute)](PassContext& context) mutable {
+      fn(context.get<Recorder>());
+    };
+  }
+}
 
 // One declared use of a resource by a pass. `version` is the version read, or for a write the
 // version it produces (the write consumes version - 1). `range` is resolved (no `remaining`).
@@ -121,11 +154,17 @@ class RenderGraph {
 
   // Runs `setup` now to collect the pass's declarations; `execute` runs when the executor records
   // the pass (an empty one records nothing). Returns the pass's declaration index.
-  template <std::invocable<PassBuilder&> Setup>
-  std::uint32_t add_pass(std::string name, QueueType queue, Setup&& setup, ExecuteFn execute = {}) {
-    PassBuilder builder = begin_pass(std::move(name), queue, std::move(execute));
+  template <std::invocable<PassBuilder&> Setup, class Execute = ExecuteFn>
+  std::uint32_t add_pass(std::string name, QueueType queue, Setup&& setup, Execute&& execute = {}) {
+    PassBuilder builder =
+        begin_pass(std::move(name), queue, to_execute_fn(std::forward<Execute>(execute)));
     std::forward<Setup>(setup)(builder);
     return builder.pass_;
+  }
+  template <std::invocable<PassBuilder&> Setup, class Execute = ExecuteFn>
+  std::uint32_t add_pass(std::string name, Setup&& setup, Execute&& execute = {}) {
+    return add_pass(std::move(name), QueueType::graphics, std::forward<Setup>(setup),
+                    std::forward<Execute>(execute));
   }
 
   std::span<const PassDeclaration> passes() const { return passes_; }
