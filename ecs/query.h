@@ -33,11 +33,18 @@ class Query {
 public:
   explicit Query(World& world)
       : world_(&world), pools_{&world.pool<std::remove_const_t<Components>>()...} {}
+  // Read-only (World::query() const checks that every component is const). A component type the
+  // world has never seen gets an empty pool, so the query visits nothing.
+  explicit Query(const World& world)
+      : world_(&world), pools_{existing_or_empty<std::remove_const_t<Components>>(world)...} {}
 
   // Skips entities that have any of `Excluded`.
   template <typename... Excluded>
   Query& without() {
-    (excluded_.push_back(&world_->pool<Excluded>()), ...);
+    const auto exclude = [this](const SparseSet* pool) {
+      if (pool != nullptr) excluded_.push_back(pool);
+    };
+    (exclude(world_->find_pool<Excluded>()), ...);
     return *this;
   }
 
@@ -106,6 +113,13 @@ private:
   template <typename T>
   static constexpr bool is_mutable = !std::is_const_v<T>;
 
+  template <typename T>
+  static ComponentPool<T>* existing_or_empty(const World& world) {
+    static ComponentPool<T> empty;  // never written: only read-only queries use it
+    ComponentPool<T>* pool = world.find_pool<T>();
+    return pool != nullptr ? pool : &empty;
+  }
+
   // True when slot i of every pool is the same entity and nothing is excluded, so the query is
   // a plain loop over parallel arrays.
   bool visits_every_slot() const {
@@ -167,7 +181,7 @@ private:
     }(std::index_sequence_for<Components...>{});
   }
 
-  World* world_;
+  const World* world_;
   Pools pools_;
   std::vector<const SparseSet*> excluded_;
   const SparseSet* watched_ = nullptr;

@@ -119,6 +119,13 @@ public:
   Query<Components...> query() {
     return Query<Components...>(*this);
   }
+  // Read-only: every listed component must be const, and nothing is marked changed.
+  template <typename... Components>
+  Query<Components...> query() const {
+    static_assert((std::is_const_v<Components> && ...),
+                  "a const World gives read-only queries: list the components as const");
+    return Query<Components...>(*this);
+  }
 
 private:
   template <typename... Components>

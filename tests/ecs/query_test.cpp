@@ -100,5 +100,30 @@ TEST(Query, ExclusionAppliesToAlignedPools) {
   EXPECT_EQ(world.query<const Position>().without<Frozen>().count(), 1u);
 }
 
+TEST(Query, AConstWorldGivesReadOnlyQueries) {
+  World world;
+  const Entity moving = test::spawn_moving(world, {1.0f, 0.0f});
+  world.add<Frozen>(test::spawn_moving(world));
+  const Tick before = world.tick();
+  world.advance_tick();
+
+  const World& reader = world;
+  std::vector<Entity> visited;
+  reader.query<const Position, const Velocity>().without<Frozen>().for_each(
+      [&](Entity entity, const Position&, const Velocity&) { visited.push_back(entity); });
+  EXPECT_EQ(visited, std::vector<Entity>{moving});
+  // Reading marks nothing changed.
+  EXPECT_EQ(reader.query<const Position>().changed_since<const Position>(before).count(), 0u);
+}
+
+TEST(Query, AConstQueryOfAnUnknownComponentVisitsNothing) {
+  struct NeverAdded {};
+  World world;
+  test::spawn_still(world);
+  const World& reader = world;
+  EXPECT_EQ((reader.query<const Position, const NeverAdded>().count()), 0u);
+  EXPECT_EQ(reader.query<const Position>().without<NeverAdded>().count(), 1u);
+}
+
 }  // namespace
 }  // namespace sg::ecs
