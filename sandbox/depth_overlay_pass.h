@@ -2,9 +2,8 @@
 // The render graph's extension example: a pass written outside the engine (no file in
 // rendergraph/ or systems/ knows it) that draws the camera's depth buffer, as grey, into the
 // bottom-right quarter of the frame. rendergraph/README.md walks through it.
-#include <vulkan/vulkan.h>
-
 #include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/scene/camera.h"
 
@@ -25,8 +24,7 @@ class DepthOverlayPass {
 
  private:
   vk::UniqueSampler sampler_;
-  vk::UniqueDescriptorSetLayout set_layout_;
-  vk::UniquePipelineLayout pipeline_layout_;
+  vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;
 };
 

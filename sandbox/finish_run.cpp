@@ -40,7 +40,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, SandboxScene&
     stats.passes = record.gpu_times->pass_summaries();
   }
   if (context.validation_enabled()) stats.validation_errors = context.validation_errors();
-  stats.shadow_map_bytes = frame.renderer().atlas().bytes();
+  stats.shadow_map_bytes = frame.renderer().shadow_maps().bytes();
 
   if (stats.cpu_frame_ms) {
     std::printf("shadowgraph: %llu frames, CPU frame time median %.2f ms (min %.2f, max %.2f)\n",

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "rendergraph/device/context.h"
 #include "systems/scene/scene_error.h"
 
 namespace sg::sandbox {
@@ -114,7 +115,8 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option_function<std::string>(
          "--cube-shadows",
          [&o](const std::string& value) {
-           o.cube_shadows = value == "six" ? CubeShadowMode::six_passes : CubeShadowMode::layered;
+           o.cube_shadows = value == "six" ? shadows::CubeShadowMode::six_passes
+                                           : shadows::CubeShadowMode::layered;
          },
          "Point-light cube maps: layered (one pass, all six faces) or six (one pass per face)")
       ->check(CLI::IsMember({"layered", "six"}))

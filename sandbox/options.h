@@ -4,14 +4,17 @@
 #include <optional>
 #include <string>
 
-#include "rendergraph/device/context.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/shadow_settings.h"
-#include "systems/shadow_passes.h"
+#include "systems/shadows/cube_shadow_mode.h"
 
 namespace CLI {
 class App;
+}
+
+namespace sg::vk {
+struct ContextOptions;
 }
 
 namespace sg::sandbox {
@@ -32,7 +35,7 @@ struct Options {
   bool depth_overlay = false;               // --depth-overlay: the render-graph extension example
   std::optional<scene::ShadowAlgorithm> algorithm;  // --algorithm: every light uses this one
   bool shadows = true;                              // --shadows off: no light casts a shadow
-  CubeShadowMode cube_shadows = CubeShadowMode::layered;  // --cube-shadows layered|six
+  shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;  // --cube-shadows layered|six
   std::string dump_shadow_maps;             // --dump-shadow-maps DIR: each light's map as PNG
 };
 
@@ -58,7 +61,8 @@ void add_options(CLI::App& app, Options& options);
 // to go on, or the exit code to end with (0 after --help, 2 for a usage error).
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, Options& options);
 
-// The Vulkan context the options ask for (device, validation); presentation off.
+// The Vulkan context the options ask for (device, validation); presentation off. Callers
+// include rendergraph/device/context.h, which defines the result.
 vk::ContextOptions context_options(const Options& options);
 
 }  // namespace sg::sandbox

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "ecs/transform_system.h"
 #include "rendergraph/vulkan/pass_recorder.h"
@@ -11,38 +12,25 @@
 namespace sg::sandbox {
 namespace {
 
-constexpr const char* frame_image_name = "frame";
 constexpr rg::ResourceState transfer_source{rg::PipelineStage::all_transfer, rg::Access::transfer_read,
                                             rg::ImageLayout::transfer_src_optimal};
 
-rg::Format swapchain_format(VkFormat format) {
-  switch (format) {
-    case VK_FORMAT_B8G8R8A8_SRGB: return rg::Format::bgra8_srgb;
-    case VK_FORMAT_B8G8R8A8_UNORM: return rg::Format::bgra8_unorm;
-    case VK_FORMAT_R8G8B8A8_SRGB: return rg::Format::rgba8_srgb;
-    case VK_FORMAT_R8G8B8A8_UNORM: return rg::Format::rgba8_unorm;
-    default: throw std::runtime_error("unsupported swapchain format " + std::to_string(format));
-  }
-}
-
 // Blits the frame onto the swapchain image (scaling if sizes differ) and leaves it presentable.
-// Returns the swapchain image's import, for binding.
-rg::ImageHandle add_present(rg::RenderGraph& graph, rg::ImageHandle frame, const PresentTarget& target) {
+void add_present(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHandle frame,
+                 const PresentTarget& target) {
   // The first use chains with the acquire semaphore's wait at acquire_wait_stage; the contents
   // of an acquired image are not needed (UNDEFINED).
-  const rg::ImageHandle imported = graph.import_image(
-      "swapchain", {target.extent.width, target.extent.height, swapchain_format(target.format)},
+  rg::ImageHandle swapchain = imports.import_image(
+      graph, "swapchain", target.image, target.format, target.extent,
       rg::ResourceState{rg::PipelineStage::all_transfer, rg::Access::none, rg::ImageLayout::undefined},
       rg::ResourceState{rg::PipelineStage::none, rg::Access::none, rg::ImageLayout::present_src});
-  rg::ImageHandle swapchain = imported;
   graph.add_pass(
-      "present", rg::QueueType::graphics,
+      "present",
       [&](rg::PassBuilder& b) {
         b.read(frame, rg::Usage::transfer);
         swapchain = b.write(swapchain, rg::Usage::transfer);
       },
-      [frame, swapchain, &graph](rg::PassContext& ctx) {
-        const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
+      [frame, swapchain, &graph](const vk::PassRecorder& rec) {
         const rg::ImageDesc& src = graph.resources()[frame.index].image;
         const rg::ImageDesc& dst = graph.resources()[swapchain.index].image;
         VkImageBlit region{};
@@ -54,7 +42,6 @@ rg::ImageHandle add_present(rg::RenderGraph& graph, rg::ImageHandle frame, const
                        rec.image(swapchain), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region,
                        VK_FILTER_LINEAR);
       });
-  return imported;
 }
 
 }  // namespace
@@ -79,41 +66,45 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, cons
 void SandboxFrame::resize(VkExtent2D extent) {
   image_ = vk::Image(context_, {extent, vk::to_vk(ForwardPass::colour_format),
                                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                1, 1, VK_IMAGE_VIEW_TYPE_2D, frame_image_name});
-  imported_states_.forget(frame_image_name);
+                                1, 1, VK_IMAGE_VIEW_TYPE_2D, "frame"});
 }
 
 void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
                           const std::optional<PresentTarget>& present) {
+  update(time_seconds);
+  renderer_.gather(std::as_const(scene_.scene.world));
+  renderer_.prepare(frame.slot);
+  declare_passes(frame.slot, present);
+  execute(frame);
+}
+
+void SandboxFrame::update(double time_seconds) {
   ecs::World& world = scene_.scene.world;
-  scene::animate_stress_scene(world, static_cast<float>(time_seconds));
+  scene::animate_orbits(world, static_cast<float>(time_seconds));
   ecs::update_world_transforms(world, transforms_updated_);
   transforms_updated_ = world.tick();
   world.advance_tick();
-  renderer_.update(frame.slot);
+}
 
+void SandboxFrame::declare_passes(uint32_t slot, const std::optional<PresentTarget>& present) {
   graph_ = rg::RenderGraph();
-  const VkExtent2D extent = image_.extent();
-  const rg::ImageHandle frame_image = graph_.import_image(
-      frame_image_name, {extent.width, extent.height, ForwardPass::colour_format},
-      imported_states_.initial_states(frame_image_name), transfer_source);
+  const rg::ImageHandle frame_image = imports_.import_image(graph_, "frame", image_, transfer_source);
   const ForwardTargets targets =
-      renderer_.add_passes(graph_, imported_states_, frame_image, frame.slot, scene_.pose, scene_.lens);
+      renderer_.add_passes(graph_, imports_, frame_image, slot, scene_.pose, scene_.lens);
   rg::ImageHandle colour = targets.colour;
   if (depth_overlay_enabled_) colour = depth_overlay_.add_to(graph_, targets.depth, colour, scene_.lens);
-  vk::ImportedResources imports;
-  imports.bind(frame_image, image_);
-  renderer_.bind_imports(imports);
-  if (present) imports.bind(add_present(graph_, colour, *present), present->image, present->format);
+  if (present) add_present(graph_, imports_, colour, *present);
+}
 
+void SandboxFrame::execute(const vk::FrameSlot& frame) {
   rg::CompileResult compiled = plans_.get_or_compile(graph_);
   if (!compiled.ok()) {
     throw std::logic_error("the sandbox's frame graph does not compile: " +
                            compiled.errors.front().message);
   }
   plan_ = compiled.plan;
-  executor_.execute(frame.cmd, frame.slot, frame.frame_number, graph_, plan_, imports);
-  imported_states_.remember(*plan_);
+  executor_.execute(frame.cmd, frame.slot, frame.frame_number, graph_, plan_, imports_.resources());
+  imports_.remember(*plan_);
 }
 
 }  // namespace sg::sandbox

@@ -1,24 +1,27 @@
 #pragma once
-// The sandbox's frame, built as a render graph every frame:
+// The sandbox's frame. record() runs the frame's five phases, in this order and nowhere else:
 //
-//   shadow passes, forward (SceneRenderer) -> [depth overlay, --depth-overlay]
-//     -> [present, in a window]
+//   1. update   systems that write the world: animation, then world transforms
+//   2. gather   read-only systems over a const World: drawables and lights into CPU lists
+//   3. prepare  shadow storage, caster culling, this frame slot's GPU buffers and descriptors
+//   4. declare  the frame graph: shadow passes, forward (SceneRenderer) -> [depth overlay,
+//               --depth-overlay] -> [present, in a window]
+//   5. execute  compile (plans come from a PlanCache: shapes repeat) and record the commands
 //
 // The picture lands in the persistent "frame" image (imported into each graph, left in
 // TRANSFER_SRC), which screenshots read and the present pass blits to the swapchain image.
-// Graph shapes repeat from frame to frame, so compiled plans come from a PlanCache.
 #include <cstdint>
 #include <memory>
 #include <optional>
 
 #include <vulkan/vulkan.h>
 
-#include "rendergraph/core/imported_states.h"
 #include "rendergraph/core/plan_cache.h"
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/frame_ring.h"
-#include "rendergraph/vulkan/graph_executor.h"
 #include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/graph_executor.h"
+#include "rendergraph/vulkan/graph_imports.h"
 #include "sandbox/depth_overlay_pass.h"
 #include "sandbox/options.h"
 #include "sandbox/scene_setup.h"
@@ -46,8 +49,8 @@ class SandboxFrame {
   // (Re)creates the frame image. The GPU must not be using the old one (wait idle first).
   void resize(VkExtent2D extent);
 
-  // Animates the scene to `time_seconds`, updates transforms and GPU buffers, builds and
-  // compiles the graph, and records it into `frame.cmd`.
+  // Runs the frame's phases for the scene at `time_seconds` and records the commands into
+  // `frame.cmd`.
   void record(const vk::FrameSlot& frame, double time_seconds,
               const std::optional<PresentTarget>& present = std::nullopt);
 
@@ -59,6 +62,10 @@ class SandboxFrame {
   const vk::GraphExecutor& executor() const { return executor_; }
 
  private:
+  void update(double time_seconds);
+  void declare_passes(uint32_t slot, const std::optional<PresentTarget>& present);
+  void execute(const vk::FrameSlot& frame);
+
   vk::VulkanContext& context_;
   SandboxScene& scene_;
   bool depth_overlay_enabled_;
@@ -66,7 +73,7 @@ class SandboxFrame {
   DepthOverlayPass depth_overlay_;
   vk::GraphExecutor executor_;
   rg::PlanCache plans_;
-  rg::ImportedStates imported_states_;
+  vk::GraphImports imports_;
   vk::Image image_;
   ecs::Tick transforms_updated_ = 0;
   rg::RenderGraph graph_;

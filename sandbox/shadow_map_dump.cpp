@@ -42,13 +42,13 @@ void dump_shadow_maps(vk::VulkanContext& context, const SceneRenderer& renderer,
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error) throw std::runtime_error("cannot create " + directory + ": " + error.message());
-  const FrameLights& lights = renderer.lights();
-  const ShadowAtlas& atlas = renderer.atlas();
+  const shadows::FrameLights& lights = renderer.lights();
+  const ShadowMapArrays& storage = renderer.shadow_maps();
   constexpr VkImageLayout sampled = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
   int written = 0;
 
-  for (const ShadowMapView& map : lights.maps) {
-    const vk::DepthImage depth = vk::read_depth_layer(context, atlas.maps(), map.layer, sampled);
+  for (const shadows::ShadowMapView& map : lights.maps) {
+    const vk::DepthImage depth = vk::read_depth_layer(context, storage.maps(), map.layer, sampled);
     const float near = map.view.near, far = map.view.far;
     const bool orthographic = map.view.orthographic;
     const std::string path = directory + "/" + file_stem(map.name) + ".png";
@@ -61,9 +61,9 @@ void dump_shadow_maps(vk::VulkanContext& context, const SceneRenderer& renderer,
               }));
     ++written;
   }
-  for (const ShadowCubeView& cube : lights.cubes) {
+  for (const shadows::ShadowCubeView& cube : lights.cubes) {
     for (uint32_t face = 0; face < 6; ++face) {
-      const vk::DepthImage depth = vk::read_depth_layer(context, atlas.cubes(), 6 * cube.cube + face, sampled);
+      const vk::DepthImage depth = vk::read_depth_layer(context, storage.cubes(), 6 * cube.cube + face, sampled);
       const std::string path =
           directory + "/" + file_stem(cube.name) + "_face" + std::to_string(face) + ".png";
       write_png(path, grey_image(depth.width, [&](uint32_t x, uint32_t y) { return depth.at(x, y); }));

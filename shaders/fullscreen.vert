@@ -1,5 +1,6 @@
 #version 460
-// One triangle that covers the viewport; uv runs 0..1 across it.
+// One triangle that covers the viewport, for passes that shade every pixel of it; uv runs 0..1
+// across the viewport (out location 0). Draw 3 vertices, no vertex buffer.
 layout(location = 0) out vec2 out_uv;
 
 void main() {

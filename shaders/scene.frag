@@ -11,7 +11,7 @@ layout(location = 2) flat in uint in_instance;
 layout(location = 3) in vec2 in_uv;
 
 // Every material texture of the scene, one per layer (systems/gpu_textures.h).
-layout(set = 0, binding = 7) uniform sampler2DArray base_color_textures;
+layout(set = 0, binding = material_textures_binding) uniform sampler2DArray base_color_textures;
 
 layout(location = 0) out vec4 out_color;
 

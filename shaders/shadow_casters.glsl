@@ -3,6 +3,8 @@
 #ifndef SG_SHADOW_CASTERS_GLSL
 #define SG_SHADOW_CASTERS_GLSL
 
-layout(std430, set = 0, binding = 6) readonly buffer ViewInstances { uint view_instances[]; };
+#include "bindings.glsl"
+
+layout(std430, set = 0, binding = view_instances_binding) readonly buffer ViewInstances { uint view_instances[]; };
 
 #endif

@@ -11,14 +11,14 @@
 // Device features: shaderOutputLayer (Vulkan 1.2; SPIR-V capability ShaderLayer) to write
 // gl_Layer from a vertex shader, and shaderDrawParameters (gl_BaseInstance).
 //
-// Resources: Instances (set 0 binding 0, scene_interface.glsl), the view's casters (binding 6)
-// and the cube's six face matrices
-// at set 0 binding 5 (sg::shadows::CubeViews::view_projection, e.g. one 384-byte slice per point
-// light of one buffer, bound with a dynamic offset). Push constants as for shadow_cube.frag.
+// Resources: Instances (scene_interface.glsl), the view's casters (shadow_casters.glsl) and the
+// cube's six face matrices (sg::shadows::CubeViews::view_projection, e.g. one 384-byte slice per
+// point light of one buffer, bound with a dynamic offset). Push constants as for
+// shadow_cube.frag.
 #include "scene_interface.glsl"
 #include "shadow_casters.glsl"
 
-layout(std140, set = 0, binding = 5) uniform CubeFaces {
+layout(std140, set = 0, binding = cube_faces_binding) uniform CubeFaces {
   mat4 face_view_projection[6];  // +X, -X, +Y, -Y, +Z, -Z
 } cube;
 

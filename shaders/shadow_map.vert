@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Shadow-map depth pass: casters' positions into one light view's clip space. Instances through
-// the view's caster list (shadow_casters.glsl) into Instances (set 0 binding 0). Push
+// the view's caster list (shadow_casters.glsl) into Instances (scene_interface.glsl). Push
 // constants: the FrameConstants block of scene_interface.glsl, of which only view_projection (bytes 0..63) is
 // read: the light view's (LightView::view_projection() or one CubeViews face). 2D maps need no
 // fragment shader; cube faces add shadow_cube.frag, which reads the world position.

@@ -3,9 +3,6 @@
 // frame, each light with its own shadow algorithm and parameters (shaders/scene.frag,
 // shaders/light_shading.glsl), into a colour target, with a depth buffer it creates.
 #include <cstdint>
-#include <vector>
-
-#include <vulkan/vulkan.h>
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
@@ -21,7 +18,7 @@ namespace sg {
 
 class GpuScene;
 class GpuTextures;
-class ShadowAtlas;
+class ShadowMapArrays;
 
 struct ForwardTargets {
   rg::ImageHandle colour;
@@ -33,13 +30,13 @@ class ForwardPass {
   static constexpr rg::Format colour_format = rg::Format::rgba8_srgb;
   static constexpr rg::Format depth_format = rg::Format::d32_sfloat;
 
-  // `textures` must outlive the pass: its array is bound once, at binding 7.
+  // `textures` must outlive the pass: its array is bound once.
   ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);
 
   // CPU side of a frame, after FrameRing::begin_frame returned `slot`: points the slot's
   // descriptor set at this frame's instances, light records and shadow images.
   void prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer& lights,
-               const ShadowAtlas& atlas);
+               const ShadowMapArrays& shadow_maps);
 
   // Adds the pass: samples `maps` and `cubes` (the shadow images' newest versions), clears
   // `colour` (a colour_format image of the frame's size) and a new depth buffer, draws every
@@ -49,13 +46,11 @@ class ForwardPass {
                         const FrameConstants& constants) const;
 
  private:
-  vk::VulkanContext& context_;
   vk::UniqueSampler nearest_;
   vk::UniqueSampler compare_;
   vk::UniqueSampler material_;
-  vk::UniqueDescriptorSetLayout set_layout_;
+  vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;
-  vk::UniquePipelineLayout pipeline_layout_;
   vk::UniquePipeline pipeline_;
 };
 

@@ -30,7 +30,7 @@ GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes,
   upload.submit();
 }
 
-void GpuScene::update(ecs::World& world, uint32_t slot) {
+void GpuScene::gather(const ecs::World& world) {
   items_.clear();
   gathered_.clear();
   const scene::Material default_material;
@@ -83,6 +83,9 @@ void GpuScene::update(ecs::World& world, uint32_t slot) {
     }
     begin = end;
   }
+}
+
+void GpuScene::upload(uint32_t slot) {
   instances_.write(slot, std::span<const GpuInstance>(sorted_));
   draws_.write(slot, std::span<const VkDrawIndexedIndirectCommand>(commands_));
 }

@@ -27,9 +27,12 @@ class GpuScene {
   GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes, uint32_t frames_in_flight);
 
   // Gathers every entity with WorldTransform and MeshInstance (Material when present, the
-  // default grey otherwise) into the slot's instance buffer and draw lists. Transforms must be
-  // up to date (ecs::update_world_transforms).
-  void update(ecs::World& world, uint32_t slot);
+  // default grey otherwise) into instances and draw lists, on the CPU; bounds() and
+  // instance_bounds() describe them from here on. Transforms must be up to date
+  // (ecs::update_world_transforms).
+  void gather(const ecs::World& world);
+  // Writes what gather() found into the slot's instance and indirect-draw buffers.
+  void upload(uint32_t slot);
 
   // Binds the vertex and index buffers (scene::Vertex at binding 0, 32-bit indices); false when
   // the scene has no geometry, and nothing may be drawn.

@@ -1,29 +1,30 @@
 #pragma once
 // Renders an ECS scene through the render graph: the shadow maps of every shadow-casting light,
-// then the lighting pass. Each frame:
+// then the lighting pass. It takes three of the frame's phases (SandboxFrame::record names all
+// five):
 //
-//   renderer.update(slot);                     // CPU: world -> this slot's GPU buffers
-//   ForwardTargets t = renderer.add_passes(graph, states, colour, slot, pose, lens);
-//   ... compile, execute, states.remember(plan) ...
+//   renderer.gather(world);          // read the world: drawables and lights, on the CPU
+//   renderer.prepare(slot);          // shadow storage, caster culling, this slot's GPU buffers
+//   ForwardTargets t = renderer.add_passes(graph, imports, colour, slot, pose, lens);
 //
 // `colour` is any colour image of ForwardPass::colour_format (imported or transient); the
 // returned handles let later passes (overlays, copies, presentation) read the results. The
-// shadow images are imported as "shadow atlas" and "shadow cubes"; `states` carries their
-// layouts between frames (the renderer forgets them itself when it recreates an image).
+// shadow images are imported through `imports` as "shadow maps" and "shadow cubes".
 #include <cstdint>
 
-#include "rendergraph/core/imported_states.h"
+#include "ecs/world.h"
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/frame_buffers.h"
-#include "rendergraph/vulkan/graph_executor.h"
+#include "rendergraph/vulkan/graph_imports.h"
 #include "systems/forward_pass.h"
-#include "systems/frame_lights.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
-#include "systems/shadow_atlas.h"
+#include "systems/shadow_map_arrays.h"
 #include "systems/shadow_passes.h"
+#include "systems/shadows/cube_shadow_mode.h"
+#include "systems/shadows/frame_lights.h"
 
 namespace sg::vk {
 class VulkanContext;
@@ -32,8 +33,8 @@ class VulkanContext;
 namespace sg {
 
 struct RendererSettings {
-  LightOverrides lights;
-  CubeShadowMode cube_shadows = CubeShadowMode::layered;
+  shadows::LightOverrides lights;
+  shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
 };
 
 class SceneRenderer {
@@ -41,39 +42,33 @@ class SceneRenderer {
   // ALGORITHMS.md section 2's default ambient term kA * IA.
   static constexpr float ambient = 0.15f;
 
-  // `scene` must outlive the renderer; its mesh library is uploaded now.
-  SceneRenderer(vk::VulkanContext& context, scene::Scene& scene, uint32_t frames_in_flight,
+  // Uploads `scene`'s meshes and textures; the scene's world is read by gather() each frame.
+  SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene, uint32_t frames_in_flight,
                 const RendererSettings& settings = {});
 
-  // Gathers the world's drawables and lights into the slot's buffers and fits the shadow
-  // storage to the lights. Call after FrameRing::begin_frame returned `slot` and after the
-  // frame's transform update.
-  void update(uint32_t slot);
-
-  ForwardTargets add_passes(rg::RenderGraph& graph, rg::ImportedStates& states,
-                            rg::ImageHandle colour, uint32_t slot, const scene::CameraPose& pose,
-                            const scene::Camera& lens);
-
-  // Binds the shadow images imported by the last add_passes.
-  void bind_imports(vk::ImportedResources& imports) const;
+  // Reads the world's drawables and lights into CPU lists. Transforms must be up to date.
+  void gather(const ecs::World& world);
+  // Fits the shadow storage to the gathered lights and writes everything the frame's passes read
+  // into the slot's buffers and descriptor sets. Call after FrameRing::begin_frame gave `slot`.
+  void prepare(uint32_t slot);
+  // Declares the shadow passes and the lighting pass.
+  ForwardTargets add_passes(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHandle colour,
+                            uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens);
 
   const GpuScene& gpu_scene() const { return gpu_scene_; }
-  const FrameLights& lights() const { return lights_; }
-  const ShadowAtlas& atlas() const { return atlas_; }
+  const shadows::FrameLights& lights() const { return lights_; }
+  const ShadowMapArrays& shadow_maps() const { return shadow_maps_; }
   const RendererSettings& settings() const { return settings_; }
 
  private:
-  scene::Scene& scene_;
   RendererSettings settings_;
   GpuScene gpu_scene_;
   GpuTextures textures_;
-  ShadowAtlas atlas_;
+  ShadowMapArrays shadow_maps_;
   ShadowPasses shadow_passes_;
   ForwardPass forward_;
   vk::FrameBuffers light_records_;
-  FrameLights lights_;
-  ShadowAtlas::Changes recreated_;  // since the last add_passes
-  ShadowPasses::Targets imported_;  // the last add_passes's imports
+  shadows::FrameLights lights_;
 };
 
 }  // namespace sg

@@ -3,41 +3,36 @@
 // directional or cylinder shadow) and a D32 cube-map array (one cube per point-light shadow).
 // Both outlive frames and are imported into each frame's graph.
 //
-// Contract: fit() recreates an image only when the lights need more layers or cubes or a larger
-// size than it has (it grows, never shrinks while running, and adds half again the layers or
-// cubes it had, so that lights added one by one recreate it rarely); recreating waits for the
-// GPU to go idle first, because frames in flight may still sample the old image. Both images always
+// Contract: fit() recreates an image only when shadows::fit_shadow_storage asks for a size other
+// than the one it has (it grows, never shrinks while running); recreating waits for the GPU to
+// go idle first, because frames in flight may still sample the old image. Both images always
 // exist (at least one layer and one cube), so the lighting pass's descriptors are always valid.
 #include <cstdint>
 
 #include "rendergraph/core/resource_types.h"
 #include "rendergraph/device/resources.h"
+#include "systems/shadows/shadow_storage_size.h"
 
 namespace sg {
 
-class ShadowAtlas {
+class ShadowMapArrays {
  public:
   static constexpr rg::Format depth_format = rg::Format::d32_sfloat;
 
-  explicit ShadowAtlas(vk::VulkanContext& context);
+  explicit ShadowMapArrays(vk::VulkanContext& context);
 
-  struct Changes {
-    bool maps = false;   // the 2D array was recreated: its contents and layout are gone
-    bool cubes = false;  // the cube array was recreated
-  };
-  Changes fit(uint32_t map_layers, uint32_t map_size, uint32_t cubes, uint32_t cube_size);
+  // Makes room for `needed` (shadows::needed_storage of the frame's lights).
+  void fit(const shadows::ShadowStorageSize& needed);
 
   const vk::Image& maps() const { return maps_; }
   const vk::Image& cubes() const { return cubes_; }
-  rg::ImageDesc maps_desc() const { return maps_desc_; }
-  rg::ImageDesc cubes_desc() const { return cubes_desc_; }
+  const shadows::ShadowStorageSize& size() const { return size_; }
   // Memory of both images, for --stats' shadow_map_bytes.
   uint64_t bytes() const;
 
  private:
   vk::VulkanContext& context_;
-  rg::ImageDesc maps_desc_{};
-  rg::ImageDesc cubes_desc_{};
+  shadows::ShadowStorageSize size_{};
   vk::Image maps_;
   vk::Image cubes_;
 };

@@ -4,7 +4,6 @@
 #include <span>
 
 #include "rendergraph/device/context.h"
-#include "rendergraph/device/descriptors.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/vulkan/plan_translation.h"
@@ -13,10 +12,17 @@
 #include "shaders/shadow_map.vert.spv.h"
 #include "systems/gpu_scene.h"
 #include "systems/scene/mesh_library.h"
-#include "systems/shadow_atlas.h"
+#include "systems/shader_bindings.h"
+#include "systems/shadow_map_arrays.h"
 
 namespace sg {
 namespace {
+
+using namespace bindings;
+using shadows::CubeShadowMode;
+using shadows::FrameLights;
+using shadows::ShadowCubeView;
+using shadows::ShadowMapView;
 
 constexpr VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
@@ -31,31 +37,26 @@ constexpr VkDeviceSize cube_faces_bytes = 6 * sizeof(glm::mat4);
 }  // namespace
 
 ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight)
-    : context_(context),
+    : layout_(context.device(),
+              {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT},
+               {cube_faces_binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, VK_SHADER_STAGE_VERTEX_BIT},
+               {view_instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}},
+              vk::push_constants<PassConstants>(stages)),
+      slot_sets_(layout_.allocate_sets(frames_in_flight)),
       casters_(context, frames_in_flight),
       cube_faces_(context, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frames_in_flight, "cube face matrices") {
-  const VkDevice device = context.device();
   const VkDeviceSize alignment = context.properties().limits.minUniformBufferOffsetAlignment;
   cube_faces_stride_ = (cube_faces_bytes + alignment - 1) / alignment * alignment;
-
-  const VkDescriptorSetLayoutBinding bindings[] = {
-      {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-      {5, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-      {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}};
-  set_layout_ = vk::create_set_layout(device, bindings);
-  slot_sets_ = vk::allocate_sets(device, set_layout_.get(), bindings, frames_in_flight);
-  pipeline_layout_ = vk::create_pipeline_layout(device, set_layout_.get(),
-                                                {stages, 0, sizeof(PassConstants)});
 
   vk::GraphicsPipelineDesc desc;
   desc.vertex_bindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
   desc.vertex_attributes = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, position))}};
-  desc.depth_format = vk::to_vk(ShadowAtlas::depth_format);
+  desc.depth_format = vk::to_vk(ShadowMapArrays::depth_format);
   // Receivers apply each light's own bias (ALGORITHMS.md section 4), so casters are drawn as
   // they are, both faces: thin and open meshes cast too.
   desc.cull_mode = VK_CULL_MODE_NONE;
-  desc.layout = pipeline_layout_.get();
+  desc.layout = layout_.get();
   desc.vertex_spirv = shadow_map_vert;
   desc.name = "shadow map";
   map_pipeline_ = vk::create_graphics_pipeline(context, desc);
@@ -98,26 +99,11 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
   }
   const vk::Buffer& faces = cube_faces_.write(slot, std::span<const std::byte>(cube_faces_scratch_));
 
-  const VkDescriptorBufferInfo instances{scene.instances(slot).handle(), 0, VK_WHOLE_SIZE};
-  const VkDescriptorBufferInfo face_matrices{faces.handle(), 0, cube_faces_bytes};
-  const VkDescriptorBufferInfo caster_ids{casters_.ids(slot).handle(), 0, VK_WHOLE_SIZE};
-  const struct {
-    uint32_t binding;
-    VkDescriptorType type;
-    const VkDescriptorBufferInfo* info;
-  } buffers[] = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &instances},
-                 {5, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, &face_matrices},
-                 {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &caster_ids}};
-  VkWriteDescriptorSet writes[std::size(buffers)];
-  for (size_t i = 0; i < std::size(buffers); ++i) {
-    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    writes[i].dstSet = slot_sets_.sets[slot];
-    writes[i].dstBinding = buffers[i].binding;
-    writes[i].descriptorCount = 1;
-    writes[i].descriptorType = buffers[i].type;
-    writes[i].pBufferInfo = buffers[i].info;
-  }
-  vkUpdateDescriptorSets(context_.device(), static_cast<uint32_t>(std::size(writes)), writes, 0, nullptr);
+  layout_.write(slot_sets_.sets[slot])
+      .buffer(instances_binding, scene.instances(slot).handle())
+      .buffer(cube_faces_binding, faces.handle(), 0, cube_faces_bytes)
+      .buffer(view_instances_binding, casters_.ids(slot).handle())
+      .update();
 }
 
 void ShadowPasses::draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline pipeline,
@@ -126,10 +112,8 @@ void ShadowPasses::draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline p
                                 CasterView view) const {
   if (view.command_count == 0 || !scene.bind_geometry(cmd)) return;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout_.get(), 0, 1,
-                          &slot_sets_.sets[slot], 1, &cube_faces_offset);
-  const PassConstants constants{view_projection, position_far};
-  vkCmdPushConstants(cmd, pipeline_layout_.get(), stages, 0, sizeof(constants), &constants);
+  layout_.bind(cmd, slot_sets_.sets[slot], {&cube_faces_offset, 1});
+  layout_.push(cmd, PassConstants{view_projection, position_far});
   casters_.draw(cmd, slot, view);
 }
 
@@ -141,18 +125,13 @@ ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targe
     const ShadowMapView& map = lights.maps[m];
     const CasterView view = map_casters_[m];
     graph.add_pass(
-        map.name, rg::QueueType::graphics,
+        map.name,
         [&](rg::PassBuilder& b) {
           targets.maps = b.write(targets.maps, rg::Usage::depth_attachment, far,
                                  rg::SubresourceRange::layer(map.layer));
         },
-        [this, &map, &scene, slot, view](rg::PassContext& ctx) {
-          const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
-          // The light's square region of its layer.
-          const VkViewport viewport{0.0f, 0.0f, float(map.resolution), float(map.resolution), 0.0f, 1.0f};
-          const VkRect2D scissor{{0, 0}, {map.resolution, map.resolution}};
-          vkCmdSetViewport(rec.cmd(), 0, 1, &viewport);
-          vkCmdSetScissor(rec.cmd(), 0, 1, &scissor);
+        [this, &map, &scene, slot, view](const vk::PassRecorder& rec) {
+          rec.set_viewport({{0, 0}, {map.resolution, map.resolution}});  // the light's square
           draw_casters(rec.cmd(), slot, map_pipeline_.get(), map.view.view_projection(), glm::vec4(0.0f), 0,
                        scene, view);
         });
@@ -165,13 +144,12 @@ ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targe
     const auto faces_offset = static_cast<uint32_t>(cube.cube * cube_faces_stride_);
     if (layered) {
       graph.add_pass(
-          cube.name, rg::QueueType::graphics,
+          cube.name,
           [&](rg::PassBuilder& b) {
             targets.cubes = b.write(targets.cubes, rg::Usage::depth_attachment, far,
                                     rg::SubresourceRange::cube(cube.cube));
           },
-          [this, &cube, &scene, slot, faces_offset, view](rg::PassContext& ctx) {
-            const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
+          [this, &cube, &scene, slot, faces_offset, view](const vk::PassRecorder& rec) {
             rec.set_full_viewport();
             draw_casters(rec.cmd(), slot, layered_pipeline_.get(), glm::mat4(1.0f), cube.position_far,
                          faces_offset, scene, view);
@@ -180,13 +158,12 @@ ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targe
     }
     for (uint32_t face = 0; face < 6; ++face) {
       graph.add_pass(
-          cube.name + " face " + std::to_string(face), rg::QueueType::graphics,
+          cube.name + " face " + std::to_string(face),
           [&](rg::PassBuilder& b) {
             targets.cubes = b.write(targets.cubes, rg::Usage::depth_attachment, far,
                                     rg::SubresourceRange::cube_face(cube.cube, face));
           },
-          [this, &cube, &scene, slot, face, faces_offset, view](rg::PassContext& ctx) {
-            const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
+          [this, &cube, &scene, slot, face, faces_offset, view](const vk::PassRecorder& rec) {
             rec.set_full_viewport();
             draw_casters(rec.cmd(), slot, face_pipeline_.get(), cube.views.view_projection[face],
                          cube.position_far, faces_offset, scene, view);

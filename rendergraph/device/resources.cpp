@@ -1,5 +1,6 @@
 #include "rendergraph/device/resources.h"
 
+#include <atomic>
 #include <utility>
 
 #include "rendergraph/device/context.h"
@@ -70,11 +71,17 @@ void Buffer::reset() {
 }
 
 Image::Image(VulkanContext& context, const ImageDesc& desc)
-    : context_(&context), format_(desc.format), extent_(desc.extent) {
+    : context_(&context),
+      format_(desc.format),
+      extent_(desc.extent),
+      mip_levels_(desc.mip_levels),
+      array_layers_(desc.array_layers),
+      cube_compatible_(desc.view_type == VK_IMAGE_VIEW_TYPE_CUBE ||
+                       desc.view_type == VK_IMAGE_VIEW_TYPE_CUBE_ARRAY) {
+  static std::atomic<uint64_t> images_created{0};
+  serial_ = ++images_created;
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  if (desc.view_type == VK_IMAGE_VIEW_TYPE_CUBE || desc.view_type == VK_IMAGE_VIEW_TYPE_CUBE_ARRAY) {
-    info.flags = VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
-  }
+  if (cube_compatible_) info.flags = VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = desc.format;
   info.extent = {desc.extent.width, desc.extent.height, 1};
@@ -120,7 +127,11 @@ Image::Image(Image&& other) noexcept
       views_(std::move(other.views_)),
       allocation_(std::exchange(other.allocation_, {})),
       format_(other.format_),
-      extent_(other.extent_) {}
+      extent_(other.extent_),
+      mip_levels_(other.mip_levels_),
+      array_layers_(other.array_layers_),
+      cube_compatible_(other.cube_compatible_),
+      serial_(std::exchange(other.serial_, 0)) {}
 
 Image& Image::operator=(Image&& other) noexcept {
   if (this != &other) {
@@ -132,6 +143,10 @@ Image& Image::operator=(Image&& other) noexcept {
     allocation_ = std::exchange(other.allocation_, {});
     format_ = other.format_;
     extent_ = other.extent_;
+    mip_levels_ = other.mip_levels_;
+    array_layers_ = other.array_layers_;
+    cube_compatible_ = other.cube_compatible_;
+    serial_ = std::exchange(other.serial_, 0);
   }
   return *this;
 }

@@ -67,7 +67,13 @@ class Image {
   ImageViewCache& views() const { return *views_; }
   VkFormat format() const { return format_; }
   VkExtent2D extent() const { return extent_; }
+  uint32_t mip_levels() const { return mip_levels_; }
+  uint32_t array_layers() const { return array_layers_; }
+  bool cube_compatible() const { return cube_compatible_; }
   VkImageAspectFlags aspect() const;
+  // A number no other image of the process had: tells a recreated image from its predecessor
+  // even when the driver hands out the same handle again. 0 for an empty Image.
+  uint64_t serial() const { return serial_; }
 
  private:
   void reset();
@@ -79,6 +85,10 @@ class Image {
   Allocation allocation_;
   VkFormat format_ = VK_FORMAT_UNDEFINED;
   VkExtent2D extent_{};
+  uint32_t mip_levels_ = 0;
+  uint32_t array_layers_ = 0;
+  bool cube_compatible_ = false;
+  uint64_t serial_ = 0;
 };
 
 // Depth, stencil or colour aspect of a format.

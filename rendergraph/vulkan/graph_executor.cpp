@@ -42,18 +42,6 @@ bool is_attachment(rg::Usage usage) {
 
 }  // namespace
 
-void ImportedResources::bind(rg::ImageHandle handle, const Image& image) {
-  bindings_.push_back({handle.index, {image.handle(), VK_NULL_HANDLE, &image.views(), image.aspect()}});
-}
-
-void ImportedResources::bind(rg::ImageHandle handle, VkImage image, VkFormat format) {
-  bindings_.push_back({handle.index, {image, VK_NULL_HANDLE, nullptr, aspect_of(format)}});
-}
-
-void ImportedResources::bind(rg::BufferHandle handle, const Buffer& buffer) {
-  bindings_.push_back({handle.index, {VK_NULL_HANDLE, buffer.handle(), nullptr, 0}});
-}
-
 VkImageView PassRecorder::view(rg::ImageHandle image, rg::SubresourceRange range,
                                std::optional<VkImageViewType> type) const {
   const PhysicalResource& resource = resources_[image.index];
@@ -76,19 +64,21 @@ VkImageView PassRecorder::view(rg::ImageHandle image, rg::SubresourceRange range
       {range.base_mip, range.mip_count, range.base_layer, range.layer_count, *type});
 }
 
-void PassRecorder::set_full_viewport() const {
-  const VkViewport viewport{0.0f, 0.0f, float(render_extent_.width), float(render_extent_.height),
-                            0.0f, 1.0f};
-  const VkRect2D scissor{{0, 0}, render_extent_};
+void PassRecorder::set_full_viewport() const { set_viewport({{0, 0}, render_extent_}); }
+
+void PassRecorder::set_viewport(const VkRect2D& area) const {
+  const VkViewport viewport{float(area.offset.x), float(area.offset.y), float(area.extent.width),
+                            float(area.extent.height), 0.0f, 1.0f};
   vkCmdSetViewport(cmd_, 0, 1, &viewport);
-  vkCmdSetScissor(cmd_, 0, 1, &scissor);
+  vkCmdSetScissor(cmd_, 0, 1, &area);
 }
 
-VkDescriptorSet PassRecorder::allocate_set(VkDescriptorSetLayout layout) const {
+VkDescriptorSet PassRecorder::allocate_set(const PipelineLayout& layout) const {
+  const VkDescriptorSetLayout set_layout = layout.set_layout();
   VkDescriptorSetAllocateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   info.descriptorPool = frame_descriptors_;
   info.descriptorSetCount = 1;
-  info.pSetLayouts = &layout;
+  info.pSetLayouts = &set_layout;
   VkDescriptorSet set = VK_NULL_HANDLE;
   check(vkAllocateDescriptorSets(context_.device(), &info, &set), "vkAllocateDescriptorSets");
   return set;

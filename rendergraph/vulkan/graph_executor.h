@@ -10,7 +10,7 @@
 //
 // Imported resources are bound by the caller for each frame (ImportedResources); their states at
 // the end of the frame are the plan's exported_states, which the caller feeds to the next frame's
-// imports (rg::ImportedStates does that by name).
+// imports. GraphImports does both: it declares, binds and carries states in one call.
 //
 // Every pass runs on the graphics queue whatever its QueueType: the engine uses one queue.
 //
@@ -27,6 +27,7 @@
 
 #include "rendergraph/core/compiled_plan.h"
 #include "rendergraph/core/render_graph.h"
+#include "rendergraph/vulkan/graph_imports.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/pass_timer.h"
 #include "rendergraph/vulkan/plan_translation.h"
@@ -35,24 +36,7 @@
 
 namespace sg::vk {
 
-class Buffer;
-class Image;
 class VulkanContext;
-
-// The physical objects of one frame's imported resources.
-class ImportedResources {
- public:
-  void bind(rg::ImageHandle handle, const Image& image);
-  // An image without a view cache (a swapchain image): passes may use it only for transfers
-  // and barriers.
-  void bind(rg::ImageHandle handle, VkImage image, VkFormat format);
-  void bind(rg::BufferHandle handle, const Buffer& buffer);
-
-  std::span<const std::pair<uint32_t, PhysicalResource>> bindings() const { return bindings_; }
-
- private:
-  std::vector<std::pair<uint32_t, PhysicalResource>> bindings_;  // by graph resource index
-};
 
 // GPU milliseconds of the passes of one completed frame, by execution position of `plan`.
 struct FrameTimings {

@@ -1,9 +1,8 @@
 #pragma once
-// What a pass's execute function records with. The executor wraps one in the rg::PassContext,
-// and the pass unwraps it:
+// What a pass's execute function records with. An execute function that takes it is handed
+// it directly (rg::RenderGraph::add_pass unwraps the rg::PassContext):
 //
-//   [=](rg::PassContext& ctx) {
-//     const vk::PassRecorder& rec = ctx.get<vk::PassRecorder>();
+//   [=](const vk::PassRecorder& rec) {
 //     rec.set_full_viewport();
 //     vkCmdDraw(rec.cmd(), 3, 1, 0, 0);
 //   }
@@ -18,6 +17,7 @@
 
 #include "rendergraph/core/compiled_plan.h"
 #include "rendergraph/core/resource_types.h"
+#include "rendergraph/device/descriptors.h"
 #include "rendergraph/vulkan/plan_translation.h"
 
 namespace sg::vk {
@@ -53,11 +53,13 @@ class PassRecorder {
   VkExtent2D render_extent() const { return render_extent_; }
   // Viewport and scissor over the whole render area, depth [0, 1].
   void set_full_viewport() const;
+  // Viewport and scissor over `area`, depth [0, 1].
+  void set_viewport(const VkRect2D& area) const;
 
   // A descriptor set that lives for this frame only: the executor resets the frame's pool when
   // the frame slot comes around again. For the handful of sets a pass binds per frame (its
   // inputs are transients whose views change with the slot).
-  VkDescriptorSet allocate_set(VkDescriptorSetLayout layout) const;
+  VkDescriptorSet allocate_set(const PipelineLayout& layout) const;
 
  private:
   friend class GraphExecutor;

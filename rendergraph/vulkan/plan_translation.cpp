@@ -1,6 +1,10 @@
 #include "rendergraph/vulkan/plan_translation.h"
 
 #include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "rendergraph/device/resources.h"
 
 namespace sg::vk {
 namespace {
@@ -105,6 +109,29 @@ VkPipelineStageFlags2 to_vk(rg::PipelineStage stages) { return value(stages); }
 VkAccessFlags2 to_vk(rg::Access access) { return value(access); }
 VkImageLayout to_vk(rg::ImageLayout layout) { return static_cast<VkImageLayout>(value(layout)); }
 VkFormat to_vk(rg::Format format) { return static_cast<VkFormat>(value(format)); }
+
+Format from_vk(VkFormat format) {
+  const auto candidate = static_cast<Format>(format);
+  switch (candidate) {  // every enumerator, so that a new one must be added here
+    case Format::undefined:
+    case Format::rgba8_unorm:
+    case Format::rgba8_srgb:
+    case Format::bgra8_unorm:
+    case Format::bgra8_srgb:
+    case Format::rg16_sfloat:
+    case Format::rgba16_sfloat:
+    case Format::r32_sfloat:
+    case Format::d16_unorm:
+    case Format::d32_sfloat:
+      return candidate;
+  }
+  throw std::invalid_argument("the render graph has no format for VkFormat " + std::to_string(format));
+}
+
+rg::ImageDesc graph_desc(const Image& image) {
+  return {image.extent().width, image.extent().height, from_vk(image.format()),
+          image.array_layers(), image.mip_levels(), image.cube_compatible()};
+}
 VkImageUsageFlags to_vk(rg::ImageUsage usage) { return value(usage); }
 VkBufferUsageFlags to_vk(rg::BufferUsage usage) { return value(usage); }
 

@@ -11,14 +11,19 @@
 
 namespace sg::vk {
 
+class Image;
 class ImageViewCache;
 
 VkPipelineStageFlags2 to_vk(rg::PipelineStage stages);
 VkAccessFlags2 to_vk(rg::Access access);
 VkImageLayout to_vk(rg::ImageLayout layout);
 VkFormat to_vk(rg::Format format);
+// Throws std::invalid_argument for a format the graph cannot describe.
+rg::Format from_vk(VkFormat format);
 VkImageUsageFlags to_vk(rg::ImageUsage usage);
 VkBufferUsageFlags to_vk(rg::BufferUsage usage);
+// How the graph describes `image` (size, format, layers, mips, cube compatibility).
+rg::ImageDesc graph_desc(const Image& image);
 // `range` must be resolved (no rg::remaining).
 VkImageSubresourceRange to_vk(const rg::SubresourceRange& range, VkImageAspectFlags aspect);
 

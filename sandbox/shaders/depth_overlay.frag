@@ -1,12 +1,10 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
 // The camera's depth buffer as grey: white at the near plane, black at `shown_distance`.
-layout(set = 0, binding = 0) uniform sampler2D depth_buffer;
+#include "depth_overlay_interface.glsl"
 
-layout(push_constant) uniform Lens {
-  float znear;
-  float zfar;
-  float shown_distance;
-} lens;
+layout(set = 0, binding = depth_buffer_binding) uniform sampler2D depth_buffer;
+layout(push_constant) uniform Constants { DepthOverlayLens lens; };
 
 layout(location = 0) in vec2 in_uv;
 layout(location = 0) out vec4 out_color;

@@ -9,7 +9,7 @@
 // "stress": a hall of columns and furniture on a grid of 4 m cells, filled until the triangle
 //   count reaches `triangles`, with the requested point and spot lights (algorithms assigned in
 //   turn, so all five appear once there are five lights), a sun, and a camera framing the hall.
-//   `moving_fraction` of the lights and of the crates get an OrbitMotion (animate_stress_scene).
+//   `moving_fraction` of the lights and of the crates get an OrbitMotion (animate_orbits).
 //   Everything follows from `seed`: equal parameters give identical scenes.
 // Built-in lights use FalloffMode::linear_window.
 #include <array>
@@ -40,7 +40,8 @@ Scene build_scene(std::string_view name, const BuiltinSceneParams& params = {});
 // A built-in scene when `name_or_path` is one of builtin_scene_names, otherwise load_gltf.
 Scene load_scene(std::string_view name_or_path, const BuiltinSceneParams& params = {});
 
-// Stress-scene motion: the entity circles `center` in the horizontal plane.
+// Motion of an entity that circles `center` in the horizontal plane (the stress scene's moving
+// lights and crates; any scene may add it).
 struct OrbitMotion {
   glm::vec3 center{0.0f};
   float radius = 1.0f;
@@ -48,9 +49,9 @@ struct OrbitMotion {
   float phase = 0.0f;          // radians at time 0
 };
 
-// Per-frame system: sets each OrbitMotion entity's LocalTransform translation for `time`
+// Per-frame system: sets every OrbitMotion entity's LocalTransform translation for `time`
 // seconds (rotation untouched), marking LocalTransform changed so shadow caches see the move.
 // Run ecs::update_world_transforms afterwards.
-void animate_stress_scene(ecs::World& world, float time);
+void animate_orbits(ecs::World& world, float time);
 
 }  // namespace sg::scene

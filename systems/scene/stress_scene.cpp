@@ -148,7 +148,7 @@ Scene build_stress_scene(const BuiltinSceneParams& params) {
   return scene;
 }
 
-void animate_stress_scene(ecs::World& world, float time) {
+void animate_orbits(ecs::World& world, float time) {
   world.query<ecs::LocalTransform, const OrbitMotion>().for_each(
       [time](ecs::LocalTransform& local, const OrbitMotion& orbit) {
         const float angle = orbit.phase + orbit.angular_speed * time;

@@ -1,11 +1,11 @@
-#include "systems/frame_lights.h"
+#include "systems/shadows/frame_lights.h"
 
 #include <algorithm>
 
 #include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
 
-namespace sg {
+namespace sg::shadows {
 namespace {
 
 constexpr glm::vec4 unbounded_reach{0.0f, 0.0f, 0.0f, -1.0f};
@@ -14,7 +14,7 @@ uint32_t clamp_resolution(uint32_t requested, uint32_t limit) {
   return std::clamp(requested, min_shadow_resolution, limit);
 }
 
-std::string light_name(ecs::World& world, ecs::Entity entity, const char* kind, size_t index) {
+std::string light_name(const ecs::World& world, ecs::Entity entity, const char* kind, size_t index) {
   if (const scene::Name* name = world.try_get<scene::Name>(entity); name && !name->value.empty()) {
     return name->value;
   }
@@ -29,17 +29,17 @@ scene::ShadowSettings with_overrides(scene::ShadowSettings shadow, const LightOv
 
 // Every light of type Light, with a 2D map from view_of(light, transform) when it casts one.
 template <class Light, class ViewOf, class ReachOf>
-void gather_2d(ecs::World& world, const LightOverrides& overrides, const char* kind,
+void gather_2d(const ecs::World& world, const LightOverrides& overrides, const char* kind,
                ViewOf view_of, ReachOf reach_of, FrameLights& out) {
   world.query<const ecs::WorldTransform, const Light, const scene::ShadowSettings>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform& transform, const Light& light,
           const scene::ShadowSettings& shadow) {
         const scene::ShadowSettings s = with_overrides(shadow, overrides);
-        out.records.push_back(shadows::pack_light(light, transform, s));
+        out.records.push_back(pack_light(light, transform, s));
         if (!s.casts_shadow) return;
         const auto layer = static_cast<uint32_t>(out.maps.size());
         out.maps.push_back({static_cast<uint32_t>(out.records.size() - 1), layer,
-                            clamp_resolution(s.resolution, max_atlas_resolution),
+                            clamp_resolution(s.resolution, max_map_resolution),
                             view_of(light, transform), reach_of(light, transform),
                             "shadow " + light_name(world, entity, kind, layer)});
         out.map_size = std::max(out.map_size, out.maps.back().resolution);
@@ -48,7 +48,7 @@ void gather_2d(ecs::World& world, const LightOverrides& overrides, const char* k
 
 }  // namespace
 
-void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
+void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds,
                    const LightOverrides& overrides, FrameLights& out) {
   out.records.clear();
   out.maps.clear();
@@ -62,7 +62,7 @@ void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
   gather_2d<scene::SpotLight>(
       world, overrides, "spot",
       [](const scene::SpotLight& light, const ecs::WorldTransform& transform) {
-        return shadows::spot_light_view(scene::light_position(transform),
+        return spot_light_view(scene::light_position(transform),
                                         scene::light_direction(transform), light.outer_cone,
                                         light.range);
       },
@@ -73,13 +73,13 @@ void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
   gather_2d<scene::DirectionalLight>(
       world, overrides, "directional",
       [&](const scene::DirectionalLight&, const ecs::WorldTransform& transform) {
-        return shadows::directional_light_view(scene::light_direction(transform), bounds);
+        return directional_light_view(scene::light_direction(transform), bounds);
       },
       no_range, out);
   gather_2d<scene::CylinderLight>(
       world, overrides, "cylinder",
       [&](const scene::CylinderLight& light, const ecs::WorldTransform& transform) {
-        return shadows::cylinder_light_view(scene::light_position(transform),
+        return cylinder_light_view(scene::light_position(transform),
                                             scene::light_direction(transform), light.outer_radius,
                                             bounds);
       },
@@ -89,28 +89,33 @@ void gather_lights(ecs::World& world, const scene::Aabb& scene_bounds,
       [&](ecs::Entity entity, const ecs::WorldTransform& transform, const scene::PointLight& light,
           const scene::ShadowSettings& shadow) {
         const scene::ShadowSettings s = with_overrides(shadow, overrides);
-        out.records.push_back(shadows::pack_light(light, transform, s));
+        out.records.push_back(pack_light(light, transform, s));
         if (!s.casts_shadow) return;
         const glm::vec3 position = scene::light_position(transform);
         const auto cube = static_cast<uint32_t>(out.cubes.size());
         out.cubes.push_back({static_cast<uint32_t>(out.records.size() - 1), cube,
                              clamp_resolution(s.resolution, max_cube_resolution),
-                             shadows::point_light_cube(position, light.range),
+                             point_light_cube(position, light.range),
                              glm::vec4(position, light.range),
                              "shadow " + light_name(world, entity, "point", cube)});
         out.cube_size = std::max(out.cube_size, out.cubes.back().requested_resolution);
       });
 }
 
+ShadowStorageSize needed_storage(const FrameLights& lights) {
+  return {{lights.map_size, static_cast<uint32_t>(lights.maps.size())},
+          {lights.cube_size, static_cast<uint32_t>(lights.cubes.size())}};
+}
+
 void place_shadow_maps(FrameLights& lights, uint32_t layer_size, uint32_t face_size) {
   for (const ShadowMapView& map : lights.maps) {
     const float scale = float(map.resolution) / float(layer_size);
-    shadows::set_shadow_map(lights.records[map.light], map.layer, glm::vec4(0.0f, 0.0f, scale, scale),
+    set_shadow_map(lights.records[map.light], map.layer, glm::vec4(0.0f, 0.0f, scale, scale),
                             map.resolution, map.view);
   }
   for (const ShadowCubeView& cube : lights.cubes) {
-    shadows::set_shadow_cube(lights.records[cube.light], cube.cube, face_size, cube.views);
+    set_shadow_cube(lights.records[cube.light], cube.cube, face_size, cube.views);
   }
 }
 
-}  // namespace sg
+}  // namespace sg::shadows

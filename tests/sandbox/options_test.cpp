@@ -59,7 +59,7 @@ TEST(SandboxOptions, ShadowOptions) {
   const Options defaults = parse_ok({});
   EXPECT_FALSE(defaults.algorithm.has_value());
   EXPECT_TRUE(defaults.shadows);
-  EXPECT_EQ(defaults.cube_shadows, CubeShadowMode::layered);
+  EXPECT_EQ(defaults.cube_shadows, shadows::CubeShadowMode::layered);
   EXPECT_FALSE(defaults.depth_overlay);
   EXPECT_TRUE(defaults.dump_shadow_maps.empty());
 
@@ -67,7 +67,7 @@ TEST(SandboxOptions, ShadowOptions) {
                                     "six", "--depth-overlay", "--dump-shadow-maps", "maps"});
   EXPECT_EQ(options.algorithm, scene::ShadowAlgorithm::pcss_noise);
   EXPECT_FALSE(options.shadows);
-  EXPECT_EQ(options.cube_shadows, CubeShadowMode::six_passes);
+  EXPECT_EQ(options.cube_shadows, shadows::CubeShadowMode::six_passes);
   EXPECT_TRUE(options.depth_overlay);
   EXPECT_EQ(options.dump_shadow_maps, "maps");
 

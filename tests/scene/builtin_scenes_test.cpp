@@ -107,7 +107,7 @@ TEST(BuiltinScenes, AnimationMovesOnlyOrbitingEntitiesAndMarksThemChanged) {
   Scene scene = build_scene("stress", small_stress());
   const ecs::Tick before = scene.world.tick();
   scene.world.advance_tick();
-  animate_stress_scene(scene.world, 1.5f);
+  animate_orbits(scene.world, 1.5f);
   std::uint32_t changed = 0;
   std::uint32_t orbiting = 0;
   scene.world.query<const ecs::LocalTransform>().changed_since<const ecs::LocalTransform>(before).for_each(

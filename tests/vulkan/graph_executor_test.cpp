@@ -7,12 +7,12 @@
 #include <gtest/gtest.h>
 
 #include "rendergraph/core/compile.h"
-#include "rendergraph/core/imported_states.h"
 #include "rendergraph/device/barriers.h"
 #include "rendergraph/device/frame_ring.h"
-#include "rendergraph/vulkan/graph_executor.h"
 #include "rendergraph/device/readback.h"
 #include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/graph_executor.h"
+#include "rendergraph/vulkan/graph_imports.h"
 #include "vulkan_test_context.h"
 
 namespace sg::test {
@@ -34,22 +34,20 @@ class GraphExecutorTest : public GpuTest {
                 1, 1, VK_IMAGE_VIEW_TYPE_2D, "test output"});
   vk::FrameRing frames{context};
   vk::GraphExecutor executor{context, frames.frames_in_flight()};
-  ImportedStates states;
+  vk::GraphImports imports;
 
   ImageHandle import_output(RenderGraph& graph) {
-    return graph.import_image("output", colour_desc, states.initial_states("output"), transfer_source);
+    return imports.import_image(graph, "output", output, transfer_source);
   }
 
   // Compiles and runs one frame, then remembers the imported states for the next.
-  void run(RenderGraph& graph, ImageHandle output_handle) {
+  void run(RenderGraph& graph) {
     CompileResult compiled = compile(graph);
     ASSERT_TRUE(compiled.errors.empty()) << compiled.errors.front().message;
-    vk::ImportedResources imports;
-    imports.bind(output_handle, output);
     vk::FrameSlot& frame = frames.begin_frame();
-    executor.execute(frame.cmd, frame.slot, frame.frame_number, graph, compiled.plan, imports);
+    executor.execute(frame.cmd, frame.slot, frame.frame_number, graph, compiled.plan, imports.resources());
     frames.submit();
-    states.remember(*compiled.plan);
+    imports.remember(*compiled.plan);
     last_plan = compiled.plan;
   }
 
@@ -101,7 +99,7 @@ TEST_F(GraphExecutorTest, ClearsAndCopiesThroughTransientsIntoTheImportedImage) 
   ImageHandle out = import_output(graph);
   const ImageHandle red = add_clear(graph, "red", ClearValue::colour_of(1, 0, 0));
   add_copy(graph, "copy", red, out);
-  run(graph, out);
+  run(graph);
   frames.wait_idle();
   expect_every_pixel(vk::read_rgba8(context, output), 255, 0, 0);
 }
@@ -115,7 +113,7 @@ TEST_F(GraphExecutorTest, AliasedTransientsKeepTheirOwnContents) {
   add_copy(graph, "copy red", red, out);
   const ImageHandle blue = add_clear(graph, "blue", ClearValue::colour_of(0, 0, 1));
   add_copy(graph, "copy blue", blue, out);
-  run(graph, out);
+  run(graph);
   frames.wait_idle();
   EXPECT_LT(executor.transient_heap_bytes(0), executor.transient_unaliased_bytes(0))
       << "red and blue live in disjoint pass ranges and should share one allocation";
@@ -130,19 +128,42 @@ TEST_F(GraphExecutorTest, ImportedStatesCarryAcrossFramesAndLoadKeepsContents) {
     RenderGraph graph;
     ImageHandle out = import_output(graph);
     add_copy(graph, "copy green", add_clear(graph, "green", ClearValue::colour_of(0, 1, 0)), out);
-    run(graph, out);
+    run(graph);
   }
-  ASSERT_EQ(states.initial_states("output").size(), 1u);
-  EXPECT_EQ(states.initial_states("output")[0].state, transfer_source);
   {
     RenderGraph graph;
     ImageHandle out = import_output(graph);
+    const std::vector<RangeState>& initial = graph.resources()[out.index].initial_states;
+    ASSERT_EQ(initial.size(), 1u);
+    EXPECT_EQ(initial[0].state, transfer_source);
     graph.add_pass("load only", QueueType::graphics,
                    [&](PassBuilder& b) { out = b.write(out, Usage::colour_attachment); });
-    run(graph, out);
+    run(graph);
   }
   frames.wait_idle();
   expect_every_pixel(vk::read_rgba8(context, output), 0, 255, 0);
+}
+
+TEST_F(GraphExecutorTest, ARecreatedImportStartsUndefined) {
+  {
+    RenderGraph graph;
+    ImageHandle out = import_output(graph);
+    add_copy(graph, "copy green", add_clear(graph, "green", ClearValue::colour_of(0, 1, 0)), out);
+    run(graph);
+  }
+  frames.wait_idle();
+  output = vk::Image(context, {{size, size}, VK_FORMAT_R8G8B8A8_UNORM,
+                               VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                               1, 1, VK_IMAGE_VIEW_TYPE_2D, "test output, recreated"});
+  RenderGraph graph;
+  ImageHandle out = import_output(graph);
+  // The old image's states would make the first barrier claim a layout the new one never had.
+  EXPECT_TRUE(graph.resources()[out.index].initial_states.empty());
+  add_copy(graph, "copy red", add_clear(graph, "red", ClearValue::colour_of(1, 0, 0)), out);
+  run(graph);
+  frames.wait_idle();
+  expect_every_pixel(vk::read_rgba8(context, output), 255, 0, 0);
 }
 
 TEST_F(GraphExecutorTest, ReportsPerPassGpuMillisecondsAfterTheSlotComesAround) {
@@ -151,7 +172,7 @@ TEST_F(GraphExecutorTest, ReportsPerPassGpuMillisecondsAfterTheSlotComesAround) 
     RenderGraph graph;
     ImageHandle out = import_output(graph);
     add_copy(graph, "copy", add_clear(graph, "red", ClearValue::colour_of(1, 0, 0)), out);
-    run(graph, out);
+    run(graph);
   }
   frames.wait_idle();
   const auto& timings = executor.latest_timings();

@@ -83,7 +83,7 @@ TEST_F(SandboxFrameTest, MovingStressSceneStaysCleanAcrossFrames) {
 TEST_F(SandboxFrameTest, SixPassCubesRenderTheSamePictureAsLayeredCubes) {
   sandbox::Options layered;
   sandbox::Options six;
-  six.cube_shadows = CubeShadowMode::six_passes;
+  six.cube_shadows = shadows::CubeShadowMode::six_passes;
   const vk::Rgba8Image a = render(layered, 1);
   const vk::Rgba8Image b = render(six, 1);
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "shadow warm point face 3"), 1);

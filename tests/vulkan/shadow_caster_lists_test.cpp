@@ -32,7 +32,8 @@ class ShadowCasterListsTest : public GpuTest {
     world.world.get_mut<scene::MeshInstance>(receiver).casts_shadow = false;
     ecs::update_world_transforms(world.world, 0);
     gpu = std::make_unique<GpuScene>(context, world.meshes, 1);
-    gpu->update(world.world, 0);
+    gpu->gather(world.world);
+    gpu->upload(0);
   }
 
   scene::Scene world;
@@ -78,7 +79,8 @@ TEST(ShadowCasterListsGrid, KeepsExactlyWhatABruteForceTestKeeps) {
   params.spot_lights = 0;
   scene::Scene stress = scene::build_scene("stress", params);
   GpuScene gpu(context, stress.meshes, 1);
-  gpu.update(stress.world, 0);
+  gpu.gather(stress.world);
+  gpu.upload(0);
   ShadowCasterLists lists(context, 1);
   lists.begin_frame(gpu, 4.0f);
 

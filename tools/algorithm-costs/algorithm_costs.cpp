@@ -47,7 +47,7 @@ Measurement measure(sg::vk::VulkanContext& context, const Options& options, uint
     if (pass.name.rfind("shadow", 0) == 0) m.shadow_ms += pass.gpu_ms.median;
   }
   if (const auto frame_ms = sg::sandbox::summarize(log.frame_ms())) m.frame_ms = frame_ms->median;
-  const sg::FrameLights& lights = frame.renderer().lights();
+  const sg::shadows::FrameLights& lights = frame.renderer().lights();
   m.shadowed_lights = static_cast<uint32_t>(lights.maps.size() + lights.cubes.size());
   return m;
 }
