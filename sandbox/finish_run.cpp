@@ -13,7 +13,7 @@
 
 namespace sg::sandbox {
 
-int finish_run(const Options& options, vk::VulkanContext& context, SandboxScene& scene,
+int finish_run(const Options& options, vk::VulkanContext& context, const SandboxScene& scene,
                const SandboxFrame& frame, const RunRecord& record) {
   const bool rendered = !record.cpu_frame_ms.empty();
   if (!options.screenshot.empty() && !rendered) {

@@ -16,8 +16,9 @@ namespace sg::rg {
 
 enum class ResourceKind : std::uint8_t { image, buffer };
 
-// The queue family a pass is recorded for. The plan orders all passes on one timeline; the
-// executor adds semaphores where consecutive passes change queue.
+// The queue family a pass is meant for. The plan orders all passes on one timeline, and today's
+// executor records every pass on its one graphics queue whatever this says: it adds no
+// semaphores, so a compute or transfer pass costs no queue switch (and gains no overlap).
 enum class QueueType : std::uint8_t { graphics, compute, transfer };
 
 std::string_view queue_name(QueueType queue);
@@ -39,9 +40,7 @@ struct SubresourceRange {
     return {0, remaining, first, count};
   }
   static constexpr SubresourceRange layer(std::uint32_t index) { return layers(index, 1); }
-  static constexpr SubresourceRange cube(std::uint32_t cube_index) {
-    return layers(cube_index * 6, 6);
-  }
+  static constexpr SubresourceRange cube(std::uint32_t cube_index) { return layers(cube_index * 6, 6); }
   static constexpr SubresourceRange cube_face(std::uint32_t cube_index, std::uint32_t face) {
     return layer(cube_index * 6 + face);
   }

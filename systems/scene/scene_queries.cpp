@@ -10,19 +10,18 @@ namespace sg::scene {
 namespace {
 
 template <typename Light>
-std::uint32_t count_lights(ecs::World& world, std::uint32_t& casting) {
+std::uint32_t count_lights(const ecs::World& world, std::uint32_t& casting) {
   std::uint32_t count = 0;
-  world.query<const Light, const ShadowSettings>().for_each(
-      [&](const Light&, const ShadowSettings& shadow) {
-        ++count;
-        if (shadow.casts_shadow) ++casting;
-      });
+  world.query<const Light, const ShadowSettings>().for_each([&](const Light&, const ShadowSettings& shadow) {
+    ++count;
+    if (shadow.casts_shadow) ++casting;
+  });
   return count;
 }
 
 }  // namespace
 
-SceneStats scene_stats(Scene& scene) {
+SceneStats scene_stats(const Scene& scene) {
   SceneStats stats;
   stats.entities = scene.world.entity_count();
   scene.world.query<const MeshInstance>().for_each([&](const MeshInstance& instance) {
@@ -31,13 +30,12 @@ SceneStats scene_stats(Scene& scene) {
   });
   stats.point_lights = count_lights<PointLight>(scene.world, stats.shadow_casting_lights);
   stats.spot_lights = count_lights<SpotLight>(scene.world, stats.shadow_casting_lights);
-  stats.directional_lights =
-      count_lights<DirectionalLight>(scene.world, stats.shadow_casting_lights);
+  stats.directional_lights = count_lights<DirectionalLight>(scene.world, stats.shadow_casting_lights);
   stats.cylinder_lights = count_lights<CylinderLight>(scene.world, stats.shadow_casting_lights);
   return stats;
 }
 
-Aabb scene_bounds(Scene& scene) {
+Aabb scene_bounds(const Scene& scene) {
   Aabb bounds;
   scene.world.query<const MeshInstance, const ecs::WorldTransform>().for_each(
       [&](const MeshInstance& instance, const ecs::WorldTransform& world) {
@@ -46,7 +44,7 @@ Aabb scene_bounds(Scene& scene) {
   return bounds;
 }
 
-std::optional<ecs::Entity> first_camera(Scene& scene) {
+std::optional<ecs::Entity> first_camera(const Scene& scene) {
   std::optional<ecs::Entity> found;
   scene.world.query<const Camera>().for_each([&](ecs::Entity entity, const Camera&) {
     if (!found) found = entity;

@@ -22,12 +22,12 @@ struct SceneStats {
   std::uint32_t shadow_casting_lights = 0;  // lights whose ShadowSettings::casts_shadow is set
 };
 
-SceneStats scene_stats(Scene& scene);
+SceneStats scene_stats(const Scene& scene);
 
 // The world-space box around every mesh instance; empty when there are none.
-Aabb scene_bounds(Scene& scene);
+Aabb scene_bounds(const Scene& scene);
 
 // The first camera entity created (glTF: the first camera node in depth-first order).
-std::optional<ecs::Entity> first_camera(Scene& scene);
+std::optional<ecs::Entity> first_camera(const Scene& scene);
 
 }  // namespace sg::scene
