@@ -17,7 +17,7 @@ namespace sg::ecs {
 // has no components until `apply`. Commands aimed at an entity that is no longer alive when
 // they are applied are skipped, so two systems may both queue the destruction of one entity.
 class CommandBuffer {
-public:
+ public:
   explicit CommandBuffer(World& world) : world_(&world) {}
 
   Entity create() { return world_->create(); }
@@ -45,7 +45,7 @@ public:
   // Runs and clears the recorded commands. Must not be called while a query iterates.
   void apply();
 
-private:
+ private:
   World* world_;
   std::vector<std::function<void(World&)>> commands_;
 };

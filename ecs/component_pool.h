@@ -10,7 +10,7 @@ namespace sg::ecs {
 // Dense storage of one component type: `components_[slot]` belongs to `entities()[slot]`.
 template <typename T>
 class ComponentPool final : public SparseSet {
-public:
+ public:
   // Adds the component, or replaces it if the entity already has one; marks it changed.
   template <typename... Args>
   T& emplace(Entity entity, Tick now, Args&&... args) {
@@ -36,7 +36,7 @@ public:
   T& at(std::uint32_t slot) { return components_[slot]; }
   const T& at(std::uint32_t slot) const { return components_[slot]; }
 
-private:
+ private:
   std::vector<T> components_;
 };
 

@@ -12,14 +12,14 @@ namespace sg::ecs {
 // reused with a new generation; a slot whose generation would wrap around is retired for good,
 // so a stale handle can never match a live entity.
 class EntityRegistry {
-public:
+ public:
   Entity create();
   // Returns false (and does nothing) for a stale or null handle.
   bool destroy(Entity entity);
   bool alive(Entity entity) const;
   std::size_t alive_count() const { return alive_count_; }
 
-private:
+ private:
   struct Slot {
     std::uint32_t generation = 0;  // of the live entity, or of the next one while free
     bool alive = false;

@@ -30,9 +30,8 @@ template <typename... Components>
 class Query {
   static_assert(sizeof...(Components) > 0, "a query needs at least one component");
 
-public:
-  explicit Query(World& world)
-      : world_(&world), pools_{&world.pool<std::remove_const_t<Components>>()...} {}
+ public:
+  explicit Query(World& world) : world_(&world), pools_{&world.pool<std::remove_const_t<Components>>()...} {}
   // Read-only (World::query() const checks that every component is const). A component type the
   // world has never seen gets an empty pool, so the query visits nothing.
   explicit Query(const World& world)
@@ -68,10 +67,10 @@ public:
     // Opening this tick's change segments once here keeps mark_changed to one compare.
     std::array<std::uint64_t, sizeof...(Components)> segment_begins{};
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-      ((segment_begins[I] =
-            is_mutable<Components> ? std::get<I>(pools_)->begin_changes(world_->tick()) : 0),
+      ((segment_begins[I] = is_mutable<Components> ? std::get<I>(pools_)->begin_changes(world_->tick()) : 0),
        ...);
-    }(std::index_sequence_for<Components...>{});
+    }
+    (std::index_sequence_for<Components...>{});
     if (watched_ != nullptr) {
       // Collected first because writes inside the callback append to the log being read.
       std::vector<Entity> changed;
@@ -97,7 +96,7 @@ public:
     return visited;
   }
 
-private:
+ private:
   template <typename... Others>
   friend class Query;
 
@@ -106,8 +105,7 @@ private:
   template <typename T>
   static constexpr std::size_t index_of() {
     constexpr std::array matches{std::is_same_v<T, std::remove_const_t<Components>>...};
-    return static_cast<std::size_t>(std::find(matches.begin(), matches.end(), true) -
-                                    matches.begin());
+    return static_cast<std::size_t>(std::find(matches.begin(), matches.end(), true) - matches.begin());
   }
 
   template <typename T>
@@ -124,8 +122,8 @@ private:
   // a plain loop over parallel arrays.
   bool visits_every_slot() const {
     const SparseSet& first = *std::get<0>(pools_);
-    const bool aligned = std::apply(
-        [&](const auto*... pools) { return (first.has_same_layout(*pools) && ...); }, pools_);
+    const bool aligned =
+        std::apply([&](const auto*... pools) { return (first.has_same_layout(*pools) && ...); }, pools_);
     return aligned && std::all_of(excluded_.begin(), excluded_.end(),
                                   [](const SparseSet* excluded) { return excluded->size() == 0; });
   }
@@ -135,8 +133,7 @@ private:
   template <typename Fn>
   void for_each_slot(Fn& fn) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-      ((is_mutable<Components> ? std::get<I>(pools_)->mark_all_changed(world_->tick()) : void()),
-       ...);
+      ((is_mutable<Components> ? std::get<I>(pools_)->mark_all_changed(world_->tick()) : void()), ...);
       const std::tuple data{std::get<I>(pools_)->data()...};
       const std::span<const Entity> entities = std::get<0>(pools_)->entities();
       for (std::size_t slot = 0; slot < entities.size(); ++slot) {
@@ -146,7 +143,8 @@ private:
           fn(std::get<I>(data)[slot]...);
         }
       }
-    }(std::index_sequence_for<Components...>{});
+    }
+    (std::index_sequence_for<Components...>{});
   }
 
   const SparseSet* smallest_pool() const {
@@ -170,15 +168,15 @@ private:
       for (const SparseSet* excluded : excluded_) {
         if (excluded->contains(entity)) return;
       }
-      ((is_mutable<Components> ? std::get<I>(pools_)->mark_changed(slots[I], segment_begins[I])
-                               : void()),
+      ((is_mutable<Components> ? std::get<I>(pools_)->mark_changed(slots[I], segment_begins[I]) : void()),
        ...);
       if constexpr (std::is_invocable_v<Fn&, Entity, Components&...>) {
         fn(entity, std::get<I>(pools_)->at(slots[I])...);
       } else {
         fn(std::get<I>(pools_)->at(slots[I])...);
       }
-    }(std::index_sequence_for<Components...>{});
+    }
+    (std::index_sequence_for<Components...>{});
   }
 
   const World* world_;

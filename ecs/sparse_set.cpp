@@ -13,9 +13,8 @@ constexpr std::size_t min_log_size_before_compaction = 1024;
 bool SparseSet::has_same_layout(const SparseSet& other) const {
   if (&other == this) return true;
   if (other.dense_.size() != dense_.size()) return false;
-  auto known = std::find_if(
-      layout_comparisons_.begin(), layout_comparisons_.end(),
-      [&](const LayoutComparison& comparison) { return comparison.other == &other; });
+  auto known = std::find_if(layout_comparisons_.begin(), layout_comparisons_.end(),
+                            [&](const LayoutComparison& comparison) { return comparison.other == &other; });
   if (known == layout_comparisons_.end()) {
     known = layout_comparisons_.insert(known, LayoutComparison{&other, 0, 0, false});
   } else if (known->version == layout_version_ && known->other_version == other.layout_version_) {
@@ -45,9 +44,9 @@ void SparseSet::mark_all_changed(Tick now) {
 Tick SparseSet::change_tick(std::uint32_t slot) const {
   const std::uint64_t position = log_position_[slot];
   if (position < log_base_) return bulk_tick_;
-  const auto after = std::upper_bound(
-      segments_.begin(), segments_.end(), position,
-      [](std::uint64_t value, const Segment& segment) { return value < segment.begin; });
+  const auto after =
+      std::upper_bound(segments_.begin(), segments_.end(), position,
+                       [](std::uint64_t value, const Segment& segment) { return value < segment.begin; });
   return std::prev(after)->tick;
 }
 
@@ -62,9 +61,9 @@ void SparseSet::collect_changed_since(Tick since, std::vector<Entity>& out) cons
     out.insert(out.end(), dense_.begin(), dense_.end());
     return;
   }
-  const auto first = std::upper_bound(
-      segments_.begin(), segments_.end(), since,
-      [](Tick value, const Segment& segment) { return value < segment.tick; });
+  const auto first =
+      std::upper_bound(segments_.begin(), segments_.end(), since,
+                       [](Tick value, const Segment& segment) { return value < segment.tick; });
   if (first == segments_.end()) return;
   for (auto position = first->begin; position < end_of_log(); ++position) {
     if (is_newest_entry(position)) out.push_back(change_log_[position - log_base_]);
@@ -92,16 +91,16 @@ void SparseSet::compact_change_log() {
 }
 
 std::span<const Removal> SparseSet::removed_since(Tick since) const {
-  const auto first = std::upper_bound(
-      removals_.begin(), removals_.end(), since,
-      [](Tick value, const Removal& removal) { return value < removal.tick; });
+  const auto first =
+      std::upper_bound(removals_.begin(), removals_.end(), since,
+                       [](Tick value, const Removal& removal) { return value < removal.tick; });
   return {first, removals_.end()};
 }
 
 void SparseSet::forget_removals_before(Tick tick) {
-  const auto first_kept = std::lower_bound(
-      removals_.begin(), removals_.end(), tick,
-      [](const Removal& removal, Tick value) { return removal.tick < value; });
+  const auto first_kept =
+      std::lower_bound(removals_.begin(), removals_.end(), tick,
+                       [](const Removal& removal, Tick value) { return removal.tick < value; });
   removals_.erase(removals_.begin(), first_kept);
 }
 

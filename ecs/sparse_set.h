@@ -36,7 +36,7 @@ struct Removal {
 // log before it is dropped (log positions are global counters; those before `log_base_` mean
 // "changed at bulk_tick_"). This keeps a full per-frame update as cheap as a plain loop.
 class SparseSet {
-public:
+ public:
   static constexpr std::uint32_t npos = UINT32_MAX;
 
   SparseSet() = default;
@@ -98,7 +98,7 @@ public:
   // Removes the entity's component, recording the removal at `now`. Returns false if absent.
   virtual bool remove(Entity entity, Tick now) = 0;
 
-protected:
+ protected:
   // Adds the entity to the set, marked as changed at `now`; returns its dense slot. The typed
   // pool appends the component itself.
   std::uint32_t insert(Entity entity, Tick now);
@@ -106,7 +106,7 @@ protected:
   // pool must do the same swap on its component array.
   void erase(std::uint32_t slot, Tick now);
 
-private:
+ private:
   struct Segment {
     Tick tick;
     std::uint64_t begin;  // global log position of this tick's first write
@@ -127,10 +127,10 @@ private:
   std::vector<std::uint64_t> log_position_;  // dense slot -> global position of newest entry
   std::vector<Entity> change_log_;           // change_log_[0] is at global position log_base_
   std::uint64_t log_base_ = 0;
-  Tick bulk_tick_ = 0;                       // last mark_all_changed; 0 if never
-  std::vector<Segment> segments_;            // ascending ticks, all after bulk_tick_
-  std::vector<Removal> removals_;            // ascending ticks
-  std::uint64_t layout_version_ = 0;         // bumped by every insert and erase
+  Tick bulk_tick_ = 0;                // last mark_all_changed; 0 if never
+  std::vector<Segment> segments_;     // ascending ticks, all after bulk_tick_
+  std::vector<Removal> removals_;     // ascending ticks
+  std::uint64_t layout_version_ = 0;  // bumped by every insert and erase
   mutable std::vector<LayoutComparison> layout_comparisons_;
 };
 

@@ -5,8 +5,7 @@
 namespace sg::ecs {
 
 glm::mat4 to_matrix(const LocalTransform& local) {
-  return glm::scale(glm::translate(glm::mat4{1.0f}, local.translation) *
-                        glm::mat4_cast(local.rotation),
+  return glm::scale(glm::translate(glm::mat4{1.0f}, local.translation) * glm::mat4_cast(local.rotation),
                     local.scale);
 }
 

@@ -52,8 +52,7 @@ void update_subtree(World& world, Entity root, std::unordered_set<Entity>& updat
     updated.insert(entity);
     const LocalTransform* local = world.try_get<LocalTransform>(entity);
     if (local != nullptr && world.has<WorldTransform>(entity)) {
-      world.get_mut<WorldTransform>(entity).matrix =
-          parent_matrix(world, entity) * to_matrix(*local);
+      world.get_mut<WorldTransform>(entity).matrix = parent_matrix(world, entity) * to_matrix(*local);
     }
     const std::span<const Entity> children = children_of(world, entity);
     pending.insert(pending.end(), children.begin(), children.end());

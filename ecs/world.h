@@ -30,7 +30,7 @@ class Query;
 // - Component references and queries stay valid until the next structural change (create,
 //   destroy, add, remove). During iteration, make structural changes through a CommandBuffer.
 class World {
-public:
+ public:
   Entity create() { return entities_.create(); }
   // Removes all of the entity's components (each removal is recorded) and makes its handle
   // stale. Returns false for a stale handle.
@@ -82,8 +82,7 @@ public:
   template <typename T>
   T& get_mut(Entity entity) {
     ComponentPool<T>* components = find_pool<T>();
-    const std::uint32_t slot =
-        components == nullptr ? SparseSet::npos : components->slot_of(entity);
+    const std::uint32_t slot = components == nullptr ? SparseSet::npos : components->slot_of(entity);
     if (slot == SparseSet::npos) {
       throw std::out_of_range("sg::ecs::World::get_mut: no such component");
     }
@@ -127,7 +126,7 @@ public:
     return Query<Components...>(*this);
   }
 
-private:
+ private:
   template <typename... Components>
   friend class Query;
 

@@ -17,7 +17,8 @@ constexpr float shown_distance = 40.0f;
 DepthOverlayPass::DepthOverlayPass(vk::VulkanContext& context, rg::Format colour_format)
     : sampler_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       layout_(context.device(),
-              {{depth_buffer_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}},
+              {{depth_buffer_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                VK_SHADER_STAGE_FRAGMENT_BIT}},
               vk::push_constants<DepthOverlayLens>(VK_SHADER_STAGE_FRAGMENT_BIT)),
       pipeline_(vk::create_graphics_pipeline(context, {.vertex_spirv = fullscreen_vert,
                                                        .fragment_spirv = depth_overlay_frag,
@@ -37,7 +38,8 @@ rg::ImageHandle DepthOverlayPass::add_to(rg::RenderGraph& graph, rg::ImageHandle
       [this, depth, lens](const vk::PassRecorder& rec) {
         const VkExtent2D full = rec.render_extent();
         const VkExtent2D quarter{full.width / 2, full.height / 2};
-        rec.set_viewport({{int32_t(full.width - quarter.width), int32_t(full.height - quarter.height)}, quarter});
+        rec.set_viewport(
+            {{int32_t(full.width - quarter.width), int32_t(full.height - quarter.height)}, quarter});
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
         layout_.bind(rec.cmd(), layout_.write(rec.allocate_set(layout_))
                                     .image(depth_buffer_binding, rec.view(depth), sampler_.get())

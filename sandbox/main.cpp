@@ -33,8 +33,8 @@ int main(int argc, char** argv) {
       options.headless = true;
     }
     if (options.headless && options.screenshot.empty()) options.screenshot = "shadowgraph.png";
-    const int code = options.headless ? sg::sandbox::run_headless(options)
-                                      : sg::sandbox::run_windowed(options);
+    const int code =
+        options.headless ? sg::sandbox::run_headless(options) : sg::sandbox::run_windowed(options);
     if (!options.headless) glfwTerminate();
     return code;
   } catch (const std::exception& e) {

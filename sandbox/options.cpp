@@ -17,8 +17,7 @@ namespace {
 // "010" is octal. Checking the text first gives plain decimal numbers and a message that says
 // what is allowed; the text is rewritten in canonical form so CLI11's conversion agrees.
 CLI::Validator whole_number(std::uint64_t min, std::uint64_t max) {
-  const std::string allowed =
-      "a whole number in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  const std::string allowed = "a whole number in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
   return CLI::Validator(
       [min, max, allowed](std::string& text) -> std::string {
         std::uint64_t value = 0;
@@ -41,8 +40,8 @@ CLI::Validator fraction() {
         float value = 0.0f;
         const char* end = text.data() + text.size();
         const auto [stop, error] = std::from_chars(text.data(), end, value);
-        if (text.empty() || error != std::errc{} || stop != end || !std::isfinite(value) ||
-            value < 0.0f || value > 1.0f) {
+        if (text.empty() || error != std::errc{} || stop != end || !std::isfinite(value) || value < 0.0f ||
+            value > 1.0f) {
           return "\"" + text + "\" is not a number in [0, 1]";
         }
         return {};
@@ -65,8 +64,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--depth-overlay", o.depth_overlay,
                "Show the depth buffer in the bottom-right quarter (the render graph's extension example)");
 
-  app.add_option("--scene", o.scene, "Scene: default, stress, or a .gltf/.glb file")
-      ->capture_default_str();
+  app.add_option("--scene", o.scene, "Scene: default, stress, or a .gltf/.glb file")->capture_default_str();
   app.add_option_function<std::string>(
          "--camera",
          [&o](const std::string& text) {
@@ -103,8 +101,7 @@ void add_options(CLI::App& app, Options& o) {
     algorithm_names.emplace_back(scene::to_string(a));
   }
   app.add_option_function<std::string>(
-         "--algorithm",
-         [&o](const std::string& name) { o.algorithm = scene::parse_shadow_algorithm(name); },
+         "--algorithm", [&o](const std::string& name) { o.algorithm = scene::parse_shadow_algorithm(name); },
          "Shadow algorithm for every light, overriding the scene's")
       ->check(CLI::IsMember(algorithm_names));
   app.add_option_function<std::string>(
@@ -115,8 +112,8 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option_function<std::string>(
          "--cube-shadows",
          [&o](const std::string& value) {
-           o.cube_shadows = value == "six" ? shadows::CubeShadowMode::six_passes
-                                           : shadows::CubeShadowMode::layered;
+           o.cube_shadows =
+               value == "six" ? shadows::CubeShadowMode::six_passes : shadows::CubeShadowMode::layered;
          },
          "Point-light cube maps: layered (one pass, all six faces) or six (one pass per face)")
       ->check(CLI::IsMember({"layered", "six"}))

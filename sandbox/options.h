@@ -28,15 +28,15 @@ struct Options {
   std::string device;              // substring of the Vulkan device name
   bool validation = false;         // also on with SHADOWGRAPH_VALIDATION=1
   bool vsync = true;
-  std::string scene = "default";           // a built-in scene name or a .gltf/.glb path
-  std::optional<scene::CameraPose> camera;  // --camera; unset: the scene's camera or framing
-  scene::BuiltinSceneParams scene_params;   // the stress scene's size, lights and seed
-  std::string stats_path;                   // --stats: JSON facts about the run; empty: none
-  bool depth_overlay = false;               // --depth-overlay: the render-graph extension example
+  std::string scene = "default";                    // a built-in scene name or a .gltf/.glb path
+  std::optional<scene::CameraPose> camera;          // --camera; unset: the scene's camera or framing
+  scene::BuiltinSceneParams scene_params;           // the stress scene's size, lights and seed
+  std::string stats_path;                           // --stats: JSON facts about the run; empty: none
+  bool depth_overlay = false;                       // --depth-overlay: the render-graph extension example
   std::optional<scene::ShadowAlgorithm> algorithm;  // --algorithm: every light uses this one
   bool shadows = true;                              // --shadows off: no light casts a shadow
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;  // --cube-shadows layered|six
-  std::string dump_shadow_maps;             // --dump-shadow-maps DIR: each light's map as PNG
+  std::string dump_shadow_maps;  // --dump-shadow-maps DIR: each light's map as PNG
 };
 
 // Upper bounds on the stress scene's parameters: values above them would exhaust memory

@@ -25,27 +25,25 @@ Json stats_json(const RunStats& stats) {
   for (const PassTime& pass : stats.passes) {
     passes.push_back({{"name", pass.name}, {"gpu_ms", summary_json(pass.gpu_ms)}});
   }
-  return {
-      {"device", stats.device},
-      {"resolution", {{"width", stats.width}, {"height", stats.height}}},
-      {"frames", stats.frames},
-      {"scene",
-       {{"name", stats.scene_name},
-        {"triangles", scene.triangles},
-        {"entities", scene.entities},
-        {"mesh_instances", scene.mesh_instances},
-        {"lights",
-         {{"point", scene.point_lights},
-          {"spot", scene.spot_lights},
-          {"directional", scene.directional_lights},
-          {"cylinder", scene.cylinder_lights},
-          {"shadow_casting", scene.shadow_casting_lights}}}}},
-      {"cpu_frame_ms", summary_json(stats.cpu_frame_ms)},
-      {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},
-      {"passes", passes},
-      {"validation_errors",
-       stats.validation_errors ? Json(*stats.validation_errors) : Json()},
-      {"shadow_map_bytes", stats.shadow_map_bytes}};
+  return {{"device", stats.device},
+          {"resolution", {{"width", stats.width}, {"height", stats.height}}},
+          {"frames", stats.frames},
+          {"scene",
+           {{"name", stats.scene_name},
+            {"triangles", scene.triangles},
+            {"entities", scene.entities},
+            {"mesh_instances", scene.mesh_instances},
+            {"lights",
+             {{"point", scene.point_lights},
+              {"spot", scene.spot_lights},
+              {"directional", scene.directional_lights},
+              {"cylinder", scene.cylinder_lights},
+              {"shadow_casting", scene.shadow_casting_lights}}}}},
+          {"cpu_frame_ms", summary_json(stats.cpu_frame_ms)},
+          {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},
+          {"passes", passes},
+          {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},
+          {"shadow_map_bytes", stats.shadow_map_bytes}};
 }
 
 }  // namespace
@@ -55,8 +53,7 @@ std::optional<TimeSummary> summarize(std::span<const double> samples) {
   std::vector<double> sorted(samples.begin(), samples.end());
   std::sort(sorted.begin(), sorted.end());
   const std::size_t middle = sorted.size() / 2;
-  const double median =
-      sorted.size() % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2.0;
+  const double median = sorted.size() % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2.0;
   return TimeSummary{median, sorted.front(), sorted.back()};
 }
 

@@ -65,8 +65,8 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, cons
 
 void SandboxFrame::resize(VkExtent2D extent) {
   image_ = vk::Image(context_, {extent, vk::to_vk(ForwardPass::colour_format),
-                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                1, 1, VK_IMAGE_VIEW_TYPE_2D, "frame"});
+                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, 1, 1,
+                                VK_IMAGE_VIEW_TYPE_2D, "frame"});
 }
 
 void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
@@ -99,8 +99,7 @@ void SandboxFrame::declare_passes(uint32_t slot, const std::optional<PresentTarg
 void SandboxFrame::execute(const vk::FrameSlot& frame) {
   rg::CompileResult compiled = plans_.get_or_compile(graph_);
   if (!compiled.ok()) {
-    throw std::logic_error("the sandbox's frame graph does not compile: " +
-                           compiled.errors.front().message);
+    throw std::logic_error("the sandbox's frame graph does not compile: " + compiled.errors.front().message);
   }
   plan_ = compiled.plan;
   executor_.execute(frame.cmd, frame.slot, frame.frame_number, graph_, plan_, imports_.resources());

@@ -12,8 +12,7 @@
 namespace sg::sandbox {
 namespace {
 
-std::string scene_camera_source(const Options& options, const scene::Scene& scene,
-                                ecs::Entity camera) {
+std::string scene_camera_source(const Options& options, const scene::Scene& scene, ecs::Entity camera) {
   const auto& builtin = scene::builtin_scene_names;
   if (std::find(builtin.begin(), builtin.end(), options.scene) != builtin.end()) {
     return "built-in camera";

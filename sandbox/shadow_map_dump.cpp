@@ -63,7 +63,8 @@ void dump_shadow_maps(vk::VulkanContext& context, const SceneRenderer& renderer,
   }
   for (const shadows::ShadowCubeView& cube : lights.cubes) {
     for (uint32_t face = 0; face < 6; ++face) {
-      const vk::DepthImage depth = vk::read_depth_layer(context, storage.cubes(), 6 * cube.cube + face, sampled);
+      const vk::DepthImage depth =
+          vk::read_depth_layer(context, storage.cubes(), 6 * cube.cube + face, sampled);
       const std::string path =
           directory + "/" + file_stem(cube.name) + "_face" + std::to_string(face) + ".png";
       write_png(path, grey_image(depth.width, [&](uint32_t x, uint32_t y) { return depth.at(x, y); }));

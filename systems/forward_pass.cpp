@@ -23,8 +23,8 @@ constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 // Hardware 2x2 PCF needs linear filtering of the depth format; fall back to one tap without it.
 VkFilter compare_filter(const vk::VulkanContext& context) {
   VkFormatProperties properties;
-  vkGetPhysicalDeviceFormatProperties(context.physical_device(),
-                                      vk::to_vk(ShadowMapArrays::depth_format), &properties);
+  vkGetPhysicalDeviceFormatProperties(context.physical_device(), vk::to_vk(ShadowMapArrays::depth_format),
+                                      &properties);
   return (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)
              ? VK_FILTER_LINEAR
              : VK_FILTER_NEAREST;
@@ -32,12 +32,12 @@ VkFilter compare_filter(const vk::VulkanContext& context) {
 
 }  // namespace
 
-ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight,
-                         const GpuTextures& textures)
+ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures)
     : nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       compare_(vk::create_sampler(context.device(), compare_filter(context), true)),
       // glTF's default wrapping.
-      material_(vk::create_sampler(context.device(), VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_REPEAT)),
+      material_(
+          vk::create_sampler(context.device(), VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_REPEAT)),
       layout_(context.device(),
               {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
                {lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment},
@@ -71,8 +71,7 @@ void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer
                           const ShadowMapArrays& shadow_maps) {
   const vk::Image& maps = shadow_maps.maps();
   const vk::Image& cubes = shadow_maps.cubes();
-  const VkImageView maps_view =
-      maps.views().get({0, 1, 0, maps.array_layers(), VK_IMAGE_VIEW_TYPE_2D_ARRAY});
+  const VkImageView maps_view = maps.views().get({0, 1, 0, maps.array_layers(), VK_IMAGE_VIEW_TYPE_2D_ARRAY});
   const VkImageView cubes_view =
       cubes.views().get({0, 1, 0, cubes.array_layers(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY});
   layout_.write(slot_sets_.sets[slot])
@@ -84,9 +83,8 @@ void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer
       .update();
 }
 
-ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colour,
-                                   rg::ImageHandle maps, rg::ImageHandle cubes,
-                                   const GpuScene& scene, uint32_t slot,
+ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colour, rg::ImageHandle maps,
+                                   rg::ImageHandle cubes, const GpuScene& scene, uint32_t slot,
                                    const FrameConstants& constants) const {
   ForwardTargets targets;
   graph.add_pass(
@@ -97,8 +95,8 @@ ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colou
         const rg::ImageDesc& target = graph.resources()[colour.index].image;
         targets.depth = b.create_image("depth", {target.width, target.height, depth_format});
         targets.depth = b.write(targets.depth, rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
-        targets.colour = b.write(colour, rg::Usage::colour_attachment,
-                                 rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
+        targets.colour =
+            b.write(colour, rg::Usage::colour_attachment, rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
       },
       [this, &scene, slot, constants](const vk::PassRecorder& rec) {
         rec.set_full_viewport();

@@ -11,19 +11,18 @@
 
 namespace sg {
 
-GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes,
-                   uint32_t frames_in_flight)
+GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes, uint32_t frames_in_flight)
     : meshes_(meshes.meshes),
       instances_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "instances"),
       draws_(context, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, frames_in_flight, "indirect draws") {
   if (meshes.indices.empty()) return;  // nothing to draw, and Vulkan refuses empty buffers
   constexpr VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-  vertices_ = vk::Buffer(context, {meshes.vertices.size() * sizeof(scene::Vertex),
-                                   dst | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUsage::gpu_only,
-                                   "scene vertices"});
-  indices_ = vk::Buffer(context, {meshes.indices.size() * sizeof(uint32_t),
-                                  dst | VK_BUFFER_USAGE_INDEX_BUFFER_BIT, vk::MemoryUsage::gpu_only,
-                                  "scene indices"});
+  vertices_ = vk::Buffer(
+      context, {meshes.vertices.size() * sizeof(scene::Vertex), dst | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                vk::MemoryUsage::gpu_only, "scene vertices"});
+  indices_ =
+      vk::Buffer(context, {meshes.indices.size() * sizeof(uint32_t), dst | VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                           vk::MemoryUsage::gpu_only, "scene indices"});
   vk::UploadBatch upload(context);
   upload.copy(vertices_, std::span<const scene::Vertex>(meshes.vertices));
   upload.copy(indices_, std::span<const uint32_t>(meshes.indices));
@@ -39,13 +38,13 @@ void GpuScene::gather(const ecs::World& world) {
         const scene::Material* found = world.try_get<scene::Material>(entity);
         const scene::Material& material = found ? *found : default_material;
         items_.push_back({mesh.mesh, mesh.casts_shadow, static_cast<uint32_t>(gathered_.size())});
-        gathered_.push_back({transform.matrix, glm::inverseTranspose(transform.matrix),
-                             glm::vec4(glm::vec3(material.base_color), material.specular),
-                             glm::vec4(material.shininess,
-                                       material.base_color_texture == scene::no_texture
-                                           ? -1.0f
-                                           : float(material.base_color_texture),
-                                       0.0f, 0.0f)});
+        gathered_.push_back(
+            {transform.matrix, glm::inverseTranspose(transform.matrix),
+             glm::vec4(glm::vec3(material.base_color), material.specular),
+             glm::vec4(material.shininess,
+                       material.base_color_texture == scene::no_texture ? -1.0f
+                                                                        : float(material.base_color_texture),
+                       0.0f, 0.0f)});
       });
   std::sort(items_.begin(), items_.end(), [](const Item& a, const Item& b) {
     return a.mesh != b.mesh ? a.mesh < b.mesh : a.caster > b.caster;
@@ -72,8 +71,8 @@ void GpuScene::gather(const ecs::World& world) {
     }
     if (range.index_count > 0) {
       const VkDrawIndexedIndirectCommand command{range.index_count, static_cast<uint32_t>(end - begin),
-                                                 range.first_index,
-                                                 static_cast<int32_t>(range.vertex_offset), first_instance};
+                                                 range.first_index, static_cast<int32_t>(range.vertex_offset),
+                                                 first_instance};
       commands_.push_back(command);
       if (casters > 0) {
         VkDrawIndexedIndirectCommand group = command;
@@ -101,8 +100,8 @@ bool GpuScene::bind_geometry(VkCommandBuffer cmd) const {
 
 void GpuScene::draw_all(VkCommandBuffer cmd, uint32_t slot) const {
   if (commands_.empty() || !bind_geometry(cmd)) return;
-  vkCmdDrawIndexedIndirect(cmd, draws_.buffer(slot).handle(), 0,
-                           static_cast<uint32_t>(commands_.size()), sizeof(VkDrawIndexedIndirectCommand));
+  vkCmdDrawIndexedIndirect(cmd, draws_.buffer(slot).handle(), 0, static_cast<uint32_t>(commands_.size()),
+                           sizeof(VkDrawIndexedIndirectCommand));
 }
 
 }  // namespace sg

@@ -32,9 +32,13 @@ GpuTextures::GpuTextures(vk::VulkanContext& context, const scene::TextureLibrary
       throw std::runtime_error("cannot resample texture '" + texture.name + "'");
     }
   }
-  array_ = vk::Image(context, {{size, size}, VK_FORMAT_R8G8B8A8_SRGB,
-                               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, 1, layers_,
-                               VK_IMAGE_VIEW_TYPE_2D_ARRAY, "material textures"});
+  array_ = vk::Image(context, {{size, size},
+                               VK_FORMAT_R8G8B8A8_SRGB,
+                               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                               1,
+                               layers_,
+                               VK_IMAGE_VIEW_TYPE_2D_ARRAY,
+                               "material textures"});
   vk::UploadBatch upload(context);
   upload.copy_to_image(array_, layers_, std::as_bytes(std::span(texels)));
   upload.submit();

@@ -13,8 +13,8 @@ constexpr rg::ResourceState sampled{rg::PipelineStage::fragment_shader, rg::Acce
 
 }  // namespace
 
-SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene,
-                             uint32_t frames_in_flight, const RendererSettings& settings)
+SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene, uint32_t frames_in_flight,
+                             const RendererSettings& settings)
     : settings_(settings),
       gpu_scene_(context, scene.meshes, frames_in_flight),
       textures_(context, scene.textures),
@@ -33,15 +33,14 @@ void SceneRenderer::prepare(uint32_t slot) {
   shadows::place_shadow_maps(lights_, shadow_maps_.size().maps.resolution,
                              shadow_maps_.size().cubes.resolution);
   gpu_scene_.upload(slot);
-  const vk::Buffer& records =
-      light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
+  const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
   shadow_passes_.prepare(slot, lights_, gpu_scene_, settings_.cube_shadows);
   forward_.prepare(slot, gpu_scene_, records, shadow_maps_);
 }
 
 ForwardTargets SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports& imports,
-                                         rg::ImageHandle colour, uint32_t slot,
-                                         const scene::CameraPose& pose, const scene::Camera& lens) {
+                                         rg::ImageHandle colour, uint32_t slot, const scene::CameraPose& pose,
+                                         const scene::Camera& lens) {
   ShadowPasses::Targets shadows{imports.import_image(graph, "shadow maps", shadow_maps_.maps(), sampled),
                                 imports.import_image(graph, "shadow cubes", shadow_maps_.cubes(), sampled)};
   shadows = shadow_passes_.add_to(graph, shadows, lights_, gpu_scene_, slot, settings_.cube_shadows);

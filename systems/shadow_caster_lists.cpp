@@ -64,7 +64,8 @@ void ShadowCasterLists::build_grid(const GpuScene& scene, float typical_reach) {
   grid.rows = std::clamp(uint32_t(std::ceil(size.y / grid.cell_size)), 1u, max_cells_per_side);
 
   // Each caster goes into every cell its box covers: count, prefix-sum, fill.
-  const auto cell_range = [&](const scene::Aabb& box, uint32_t& x0, uint32_t& x1, uint32_t& z0, uint32_t& z1) {
+  const auto cell_range = [&](const scene::Aabb& box, uint32_t& x0, uint32_t& x1, uint32_t& z0,
+                              uint32_t& z1) {
     const auto cell = [&](float v, float origin, uint32_t cells) {
       return std::min(uint32_t(std::max(0.0f, (v - origin) / grid.cell_size)), cells - 1);
     };

@@ -12,8 +12,8 @@
 #include <cstdint>
 #include <vector>
 
-#include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
 
 #include "rendergraph/device/frame_buffers.h"
 
@@ -65,10 +65,10 @@ class ShadowCasterLists {
   vk::FrameBuffers ids_;
   vk::FrameBuffers commands_;
   Grid grid_;
-  std::vector<uint32_t> group_of_;    // per instance: its caster group, or none
-  std::vector<uint32_t> seen_;        // per instance: the last view that tested it
+  std::vector<uint32_t> group_of_;  // per instance: its caster group, or none
+  std::vector<uint32_t> seen_;      // per instance: the last view that tested it
   uint32_t view_stamp_ = 0;
-  std::vector<uint32_t> candidates_;  // one view's kept ids
+  std::vector<uint32_t> candidates_;             // one view's kept ids
   std::vector<std::vector<uint32_t>> by_group_;  // the same, per caster group
   std::vector<uint32_t> ids_scratch_;
   std::vector<VkDrawIndexedIndirectCommand> commands_scratch_;

@@ -8,8 +8,8 @@
 namespace sg {
 namespace {
 
-constexpr VkImageUsageFlags usage =
-    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
 
 uint64_t array_bytes(const shadows::ShadowArraySize& size, uint32_t layers_per_entry) {
   return uint64_t{size.resolution} * size.resolution * size.count * layers_per_entry *
@@ -30,12 +30,22 @@ void ShadowMapArrays::fit(const shadows::ShadowStorageSize& needed) {
   }
   const VkFormat format = vk::to_vk(depth_format);
   if (new_maps) {
-    maps_ = vk::Image(context_, {{size.maps.resolution, size.maps.resolution}, format, usage, 1,
-                                 size.maps.count, VK_IMAGE_VIEW_TYPE_2D_ARRAY, "shadow maps"});
+    maps_ = vk::Image(context_, {{size.maps.resolution, size.maps.resolution},
+                                 format,
+                                 usage,
+                                 1,
+                                 size.maps.count,
+                                 VK_IMAGE_VIEW_TYPE_2D_ARRAY,
+                                 "shadow maps"});
   }
   if (new_cubes) {
-    cubes_ = vk::Image(context_, {{size.cubes.resolution, size.cubes.resolution}, format, usage, 1,
-                                  6 * size.cubes.count, VK_IMAGE_VIEW_TYPE_CUBE_ARRAY, "shadow cubes"});
+    cubes_ = vk::Image(context_, {{size.cubes.resolution, size.cubes.resolution},
+                                  format,
+                                  usage,
+                                  1,
+                                  6 * size.cubes.count,
+                                  VK_IMAGE_VIEW_TYPE_CUBE_ARRAY,
+                                  "shadow cubes"});
   }
   size_ = size;
 }

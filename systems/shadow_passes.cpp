@@ -4,8 +4,8 @@
 #include <span>
 
 #include "rendergraph/device/context.h"
-#include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/device/pipeline.h"
+#include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "shaders/shadow_cube.frag.spv.h"
 #include "shaders/shadow_cube_layered.vert.spv.h"
@@ -108,8 +108,7 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
 
 void ShadowPasses::draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline pipeline,
                                 const glm::mat4& view_projection, const glm::vec4& position_far,
-                                uint32_t cube_faces_offset, const GpuScene& scene,
-                                CasterView view) const {
+                                uint32_t cube_faces_offset, const GpuScene& scene, CasterView view) const {
   if (view.command_count == 0 || !scene.bind_geometry(cmd)) return;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
   layout_.bind(cmd, slot_sets_.sets[slot], {&cube_faces_offset, 1});
@@ -117,9 +116,8 @@ void ShadowPasses::draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline p
   casters_.draw(cmd, slot, view);
 }
 
-ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targets,
-                                           const FrameLights& lights, const GpuScene& scene,
-                                           uint32_t slot, CubeShadowMode mode) const {
+ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targets, const FrameLights& lights,
+                                           const GpuScene& scene, uint32_t slot, CubeShadowMode mode) const {
   const rg::ClearValue far = rg::ClearValue::depth_of(1.0f);
   for (size_t m = 0; m < lights.maps.size(); ++m) {
     const ShadowMapView& map = lights.maps[m];
@@ -127,8 +125,8 @@ ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targe
     graph.add_pass(
         map.name,
         [&](rg::PassBuilder& b) {
-          targets.maps = b.write(targets.maps, rg::Usage::depth_attachment, far,
-                                 rg::SubresourceRange::layer(map.layer));
+          targets.maps =
+              b.write(targets.maps, rg::Usage::depth_attachment, far, rg::SubresourceRange::layer(map.layer));
         },
         [this, &map, &scene, slot, view](const vk::PassRecorder& rec) {
           rec.set_viewport({{0, 0}, {map.resolution, map.resolution}});  // the light's square

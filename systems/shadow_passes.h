@@ -34,7 +34,8 @@ class ShadowPasses {
   // CPU side of a frame, after FrameRing::begin_frame returned `slot`: culls each view's
   // casters, writes them and the point lights' face matrices, and points the slot's descriptor
   // set at this frame's buffers. `mode` must be the one add_to gets.
-  void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene, shadows::CubeShadowMode mode);
+  void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene,
+               shadows::CubeShadowMode mode);
 
   struct Targets {
     rg::ImageHandle maps;
@@ -51,9 +52,9 @@ class ShadowPasses {
   uint64_t kept_casters() const { return casters_.kept_instances(); }
 
  private:
-  void draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline pipeline,
-                    const glm::mat4& view_projection, const glm::vec4& position_far,
-                    uint32_t cube_faces_offset, const GpuScene& scene, CasterView view) const;
+  void draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline pipeline, const glm::mat4& view_projection,
+                    const glm::vec4& position_far, uint32_t cube_faces_offset, const GpuScene& scene,
+                    CasterView view) const;
 
   vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;
@@ -63,7 +64,7 @@ class ShadowPasses {
   ShadowCasterLists casters_;
   std::vector<CasterView> map_casters_;   // per shadows::FrameLights::maps entry
   std::vector<CasterView> cube_casters_;  // per shadows::FrameLights::cubes entry
-  vk::FrameBuffers cube_faces_;  // per point light: six face matrices, at cube_faces_stride_
+  vk::FrameBuffers cube_faces_;           // per point light: six face matrices, at cube_faces_stride_
   VkDeviceSize cube_faces_stride_ = 0;
   std::vector<std::byte> cube_faces_scratch_;
 };

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config                  # toolchain
+  cmake g++ make pkg-config clang-format     # toolchain, and the formatter CTest checks the code with
   libvulkan-dev glslang-tools                # Vulkan loader/headers, GLSL -> SPIR-V compiler
   mesa-vulkan-drivers vulkan-validationlayers  # lavapipe CPU device, Khronos validation
   libglfw3-dev libglm-dev libtinygltf-dev libimgui-dev libstb-dev

@@ -76,7 +76,8 @@ AliasingPlan plan_aliasing(std::span<const AliasingRequest> requests) {
     placement.size = request.size;
     for (std::uint32_t heap = 0; heap < plan.heaps.size() && placement.heap == invalid_index; ++heap) {
       if (plan.heaps[heap].kind != request.kind) continue;
-      if (const auto offset = find_offset(plan.heaps[heap], members[heap], requests, plan.placements, request)) {
+      if (const auto offset =
+              find_offset(plan.heaps[heap], members[heap], requests, plan.placements, request)) {
         placement.heap = heap;
         placement.offset = *offset;
       }

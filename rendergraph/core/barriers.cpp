@@ -14,7 +14,8 @@ using Pieces = std::vector<RangeValue<Dependency>>;
 Tracker initial_tracker(const ResourceDeclaration& resource) {
   Tracker tracker(resource.mip_count(), resource.layer_count(), SyncState{});
   for (const RangeState& initial : resource.initial_states) {
-    tracker.update(initial.range, [&](const SubresourceRange&, SyncState& state) { state = imported_state(initial.state); });
+    tracker.update(initial.range,
+                   [&](const SubresourceRange&, SyncState& state) { state = imported_state(initial.state); });
   }
   return tracker;
 }
@@ -34,7 +35,8 @@ Tracker reused_memory_tracker(const ResourceDeclaration& resource, const MemoryP
 }
 
 // Advances every subresource of `range` to `use`, collecting the dependencies needed.
-void advance_range(Tracker& tracker, const SubresourceRange& range, const ResourceState& use, Pieces& pieces) {
+void advance_range(Tracker& tracker, const SubresourceRange& range, const ResourceState& use,
+                   Pieces& pieces) {
   tracker.update(range, [&](const SubresourceRange& piece, SyncState& state) {
     if (const auto dependency = advance(state, use)) pieces.push_back({piece, *dependency});
   });
@@ -78,11 +80,13 @@ void plan_barriers(const RenderGraph& graph, CompiledPlan& plan) {
     CompiledPass& pass = plan.passes[position];
     std::vector<std::uint32_t> touched;
     for (const ResourceAccess& access : pass.accesses) {
-      if (std::find(touched.begin(), touched.end(), access.resource) == touched.end()) touched.push_back(access.resource);
+      if (std::find(touched.begin(), touched.end(), access.resource) == touched.end())
+        touched.push_back(access.resource);
     }
     for (std::uint32_t index : touched) {
       const CompiledResource& compiled = plan.resources[index];
-      if (compiled.placement && compiled.lifetime->first == position && !compiled.placement->previous_occupants.empty()) {
+      if (compiled.placement && compiled.lifetime->first == position &&
+          !compiled.placement->previous_occupants.empty()) {
         trackers[index] = reused_memory_tracker(resources[index], *compiled.placement, trackers);
       }
       Pieces pieces;

@@ -60,9 +60,9 @@ struct CompiledPass {
   std::string name;
   QueueType queue = QueueType::graphics;
   bool side_effects = false;
-  std::vector<ResourceAccess> accesses;     // as declared; attachments for dynamic rendering
-  std::vector<std::uint32_t> depends_on;    // earlier execution positions, ascending
-  BarrierBatch barriers;                    // before the pass
+  std::vector<ResourceAccess> accesses;   // as declared; attachments for dynamic rendering
+  std::vector<std::uint32_t> depends_on;  // earlier execution positions, ascending
+  BarrierBatch barriers;                  // before the pass
 };
 
 struct CulledPass {
@@ -101,11 +101,11 @@ struct CompiledResource {
   bool imported = false;
   ImageDesc image;
   BufferDesc buffer;
-  ImageUsage image_usage = ImageUsage::none;     // union over executed passes' declarations
+  ImageUsage image_usage = ImageUsage::none;  // union over executed passes' declarations
   BufferUsage buffer_usage = BufferUsage::none;
   std::uint32_t version_count = 1;
-  std::optional<Lifetime> lifetime;              // none when no executed pass touches it
-  std::optional<MemoryPlacement> placement;      // transients with a lifetime
+  std::optional<Lifetime> lifetime;          // none when no executed pass touches it
+  std::optional<MemoryPlacement> placement;  // transients with a lifetime
 };
 
 // The state an imported resource is left in, per range: the next frame's import_image() input.
@@ -121,12 +121,12 @@ struct MemoryStats {
 };
 
 struct CompiledPlan {
-  std::vector<CompiledPass> passes;          // execution order
-  std::vector<CulledPass> culled;            // declaration order
-  std::vector<CompiledResource> resources;   // graph resource order
+  std::vector<CompiledPass> passes;         // execution order
+  std::vector<CulledPass> culled;           // declaration order
+  std::vector<CompiledResource> resources;  // graph resource order
   std::vector<MemoryHeap> heaps;
   MemoryStats memory;
-  BarrierBatch final_barriers;               // imported resources to their final states
+  BarrierBatch final_barriers;  // imported resources to their final states
   std::vector<ExportedState> exported_states;
 };
 

@@ -57,7 +57,8 @@ std::string to_dot(const RenderGraph& graph, const CompiledPlan& plan) {
       dot << "style=filled, fillcolor=\"#dddddd\", fontcolor=\"#888888\", label=\"" << escaped(pass.name)
           << "\\nculled\"];\n";
     } else {
-      dot << "label=\"#" << position[p] << " " << escaped(pass.name) << "\\n" << queue_name(pass.queue) << "\"];\n";
+      dot << "label=\"#" << position[p] << " " << escaped(pass.name) << "\\n"
+          << queue_name(pass.queue) << "\"];\n";
     }
     const auto draw_version = [&](const ResourceAccess& access) {
       const ResourceDeclaration& resource = resources[access.resource];

@@ -59,12 +59,9 @@ json pass_json(const CompiledPass& pass, std::uint32_t position, const CompiledP
 }
 
 json resource_json(const CompiledResource& resource, const CompiledPlan& plan) {
-  json entry{{"name", resource.name},
-             {"kind", kind_name(resource.kind)},
-             {"imported", resource.imported},
-             {"versions", resource.version_count},
-             {"lifetime", nullptr},
-             {"placement", nullptr}};
+  json entry{{"name", resource.name},         {"kind", kind_name(resource.kind)},
+             {"imported", resource.imported}, {"versions", resource.version_count},
+             {"lifetime", nullptr},           {"placement", nullptr}};
   if (resource.kind == ResourceKind::image) {
     entry["format"] = format_name(resource.image.format);
     entry["extent"] = {resource.image.width, resource.image.height};
@@ -75,10 +72,12 @@ json resource_json(const CompiledResource& resource, const CompiledPlan& plan) {
     entry["size"] = resource.buffer.size;
     entry["usage"] = static_cast<std::uint32_t>(resource.buffer_usage);
   }
-  if (resource.lifetime) entry["lifetime"] = {{"first", resource.lifetime->first}, {"last", resource.lifetime->last}};
+  if (resource.lifetime)
+    entry["lifetime"] = {{"first", resource.lifetime->first}, {"last", resource.lifetime->last}};
   if (resource.placement) {
     json reuses = json::array();
-    for (std::uint32_t previous : resource.placement->previous_occupants) reuses.push_back(plan.resources[previous].name);
+    for (std::uint32_t previous : resource.placement->previous_occupants)
+      reuses.push_back(plan.resources[previous].name);
     entry["placement"] = {{"heap", resource.placement->heap},
                           {"offset", resource.placement->offset},
                           {"size", resource.placement->size},
@@ -95,7 +94,8 @@ std::string to_json(const CompiledPlan& plan, std::span<const double> pass_milli
     passes.push_back(pass_json(plan.passes[position], position, plan, pass_milliseconds));
   }
   json culled = json::array();
-  for (const CulledPass& pass : plan.culled) culled.push_back({{"name", pass.name}, {"declared_index", pass.declared_index}});
+  for (const CulledPass& pass : plan.culled)
+    culled.push_back({{"name", pass.name}, {"declared_index", pass.declared_index}});
   json resources = json::array();
   for (const CompiledResource& resource : plan.resources) resources.push_back(resource_json(resource, plan));
   json heaps = json::array();

@@ -33,7 +33,8 @@ void PassBuilder::read(BufferHandle buffer, Usage usage) {
 }
 
 ImageHandle PassBuilder::write(ImageHandle image, Usage usage, SubresourceRange range) {
-  const auto version = declare(image.index, image.version, ResourceKind::image, usage, Direction::write, range);
+  const auto version =
+      declare(image.index, image.version, ResourceKind::image, usage, Direction::write, range);
   return version ? ImageHandle{image.index, *version} : image;
 }
 
@@ -44,8 +45,8 @@ ImageHandle PassBuilder::write(ImageHandle image, Usage usage, ClearValue clear,
 }
 
 BufferHandle PassBuilder::write(BufferHandle buffer, Usage usage) {
-  const auto version = declare(buffer.index, buffer.version, ResourceKind::buffer, usage,
-                               Direction::write, SubresourceRange::all());
+  const auto version = declare(buffer.index, buffer.version, ResourceKind::buffer, usage, Direction::write,
+                               SubresourceRange::all());
   return version ? BufferHandle{buffer.index, *version} : buffer;
 }
 
@@ -64,13 +65,15 @@ std::optional<std::uint32_t> PassBuilder::declare(std::uint32_t resource_index, 
 
   if (resource_index >= graph_.resources_.size() || graph_.resources_[resource_index].kind != kind ||
       version >= graph_.resources_[resource_index].producers.size()) {
-    return fail(ErrorKind::invalid_handle, "uses a handle that does not name a resource version of this graph");
+    return fail(ErrorKind::invalid_handle,
+                "uses a handle that does not name a resource version of this graph");
   }
   ResourceDeclaration& resource = graph_.resources_[resource_index];
   const auto state = usage_state(usage, direction, kind);
   if (!state) {
     return fail(ErrorKind::invalid_usage, "cannot " + std::string(direction_name(direction)) + " " +
-                                              quoted(resource.name) + " as " + std::string(usage_name(usage)));
+                                              quoted(resource.name) + " as " +
+                                              std::string(usage_name(usage)));
   }
   if (clear && usage != Usage::colour_attachment && usage != Usage::depth_attachment) {
     return fail(ErrorKind::invalid_usage, "clears " + quoted(resource.name) + " used as " +
@@ -81,11 +84,14 @@ std::optional<std::uint32_t> PassBuilder::declare(std::uint32_t resource_index, 
   if (!resolved) {
     return fail(ErrorKind::invalid_range, "uses " + quoted(resource.name) + " at " + to_string(range) +
                                               ", outside its " + std::to_string(resource.mip_count()) +
-                                              " mips and " + std::to_string(resource.layer_count()) + " layers");
+                                              " mips and " + std::to_string(resource.layer_count()) +
+                                              " layers");
   }
 
   const auto latest = static_cast<std::uint32_t>(resource.producers.size() - 1);
-  const auto producer_name = [&](std::uint32_t v) { return quoted(graph_.passes_[resource.producers[v]].name); };
+  const auto producer_name = [&](std::uint32_t v) {
+    return quoted(graph_.passes_[resource.producers[v]].name);
+  };
   if (direction == Direction::read) {
     // A pass may read the version its own write consumes (its input), never the one it produces.
     const bool own_input = version + 1 == latest && resource.producers[latest] == pass_;
@@ -121,9 +127,10 @@ std::optional<std::uint32_t> PassBuilder::declare(std::uint32_t resource_index, 
     if (other.resource == resource_index && !compatible && overlaps(other.range, *resolved)) {
       return fail(ErrorKind::conflicting_usage,
                   "uses " + quoted(resource.name) + " as " + std::string(usage_name(other.usage)) + " (" +
-                      std::string(direction_name(other.direction)) + ", " + to_string(other.range) + ") and as " +
-                      std::string(usage_name(usage)) + " (" + std::string(direction_name(direction)) + ", " +
-                      to_string(*resolved) + "): the subresources overlap");
+                      std::string(direction_name(other.direction)) + ", " + to_string(other.range) +
+                      ") and as " + std::string(usage_name(usage)) + " (" +
+                      std::string(direction_name(direction)) + ", " + to_string(*resolved) +
+                      "): the subresources overlap");
     }
   }
 

@@ -15,8 +15,9 @@ namespace sg::rg {
 class PassContext {
  public:
   template <class Recorder>
-    requires(!std::same_as<Recorder, PassContext> && !std::is_const_v<Recorder>)
-  explicit PassContext(Recorder& recorder) : recorder_(&recorder), type_(&typeid(Recorder)) {}
+  requires(!std::same_as<Recorder, PassContext> &&
+           !std::is_const_v<Recorder>) explicit PassContext(Recorder& recorder)
+      : recorder_(&recorder), type_(&typeid(Recorder)) {}
 
   template <class Recorder>
   Recorder& get() const {

@@ -8,7 +8,8 @@ CompileResult PlanCache::get_or_compile(const RenderGraph& graph) {
   if (!graph.errors().empty()) return compile(graph);
 
   GraphShape shape = graph_shape(graph);
-  const auto found = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& entry) { return entry.shape == shape; });
+  const auto found = std::find_if(entries_.begin(), entries_.end(),
+                                  [&](const Entry& entry) { return entry.shape == shape; });
   if (found != entries_.end()) {
     ++hits_;
     std::rotate(entries_.begin(), found, std::next(found));

@@ -2,8 +2,7 @@
 
 namespace sg::rg {
 
-std::optional<SubresourceRange> resolve(const SubresourceRange& range,
-                                        const ResourceDeclaration& resource) {
+std::optional<SubresourceRange> resolve(const SubresourceRange& range, const ResourceDeclaration& resource) {
   // 64-bit sums so that huge counts cannot wrap around into a range that looks valid.
   const auto fit = [](std::uint32_t base, std::uint32_t count,
                       std::uint32_t total) -> std::optional<std::uint32_t> {
@@ -39,14 +38,12 @@ ImageHandle RenderGraph::import_image(std::string name, const ImageDesc& desc,
   return {index, 0};
 }
 
-ImageHandle RenderGraph::import_image(std::string name, const ImageDesc& desc,
-                                      ResourceState initial_state,
+ImageHandle RenderGraph::import_image(std::string name, const ImageDesc& desc, ResourceState initial_state,
                                       std::optional<ResourceState> final_state) {
   return import_image(std::move(name), desc, {{SubresourceRange::all(), initial_state}}, final_state);
 }
 
-BufferHandle RenderGraph::import_buffer(std::string name, const BufferDesc& desc,
-                                        ResourceState initial_state,
+BufferHandle RenderGraph::import_buffer(std::string name, const BufferDesc& desc, ResourceState initial_state,
                                         std::optional<ResourceState> final_state) {
   const std::uint32_t index = add_resource(std::move(name), ResourceKind::buffer);
   ResourceDeclaration& resource = resources_[index];

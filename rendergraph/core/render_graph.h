@@ -58,11 +58,11 @@ ExecuteFn to_execute_fn(Execute&& execute) {
   if constexpr (std::is_invocable_v<Execute&, PassContext&>) {
     return ExecuteFn(std::forward<Execute>(execute));
   } else {
-    using Parameter = typename detail::sole_parameter<decltype(&std::remove_cvref_t<Execute>::operator())>::type;
+    using Parameter =
+        typename detail::sole_parameter<decltype(&std::remove_cvref_t<Execute>::operator())>::type;
     using Recorder = std::remove_cvref_t<Parameter>;
-    return [fn = std::forward<Execute>(execute)](PassContext& context) mutable {
-      fn(context.get<Recorder>());
-    };
+    return
+        [fn = std::forward<Execute>(execute)](PassContext& context) mutable { fn(context.get<Recorder>()); };
   }
 }
 
@@ -130,9 +130,8 @@ class PassBuilder {
 
   // Validates and records one access; returns the version read or produced, or nullopt when the
   // declaration was rejected (the error is recorded on the graph).
-  std::optional<std::uint32_t> declare(std::uint32_t resource, std::uint32_t version,
-                                       ResourceKind kind, Usage usage, Direction direction,
-                                       const SubresourceRange& range,
+  std::optional<std::uint32_t> declare(std::uint32_t resource, std::uint32_t version, ResourceKind kind,
+                                       Usage usage, Direction direction, const SubresourceRange& range,
                                        std::optional<ClearValue> clear = std::nullopt);
 
   RenderGraph& graph_;
@@ -144,8 +143,7 @@ class RenderGraph {
   // An image that outlives the frame (swapchain image, shadow atlas, cube-map array, history).
   // `initial_states` says how each range was last used (ranges not listed start undefined); a
   // graph that writes the image must give `final_state`, the state every subresource is left in.
-  ImageHandle import_image(std::string name, const ImageDesc& desc,
-                           std::vector<RangeState> initial_states,
+  ImageHandle import_image(std::string name, const ImageDesc& desc, std::vector<RangeState> initial_states,
                            std::optional<ResourceState> final_state = std::nullopt);
   ImageHandle import_image(std::string name, const ImageDesc& desc, ResourceState initial_state,
                            std::optional<ResourceState> final_state = std::nullopt);
@@ -156,8 +154,7 @@ class RenderGraph {
   // the pass (an empty one records nothing). Returns the pass's declaration index.
   template <std::invocable<PassBuilder&> Setup, class Execute = ExecuteFn>
   std::uint32_t add_pass(std::string name, QueueType queue, Setup&& setup, Execute&& execute = {}) {
-    PassBuilder builder =
-        begin_pass(std::move(name), queue, to_execute_fn(std::forward<Execute>(execute)));
+    PassBuilder builder = begin_pass(std::move(name), queue, to_execute_fn(std::forward<Execute>(execute)));
     std::forward<Setup>(setup)(builder);
     return builder.pass_;
   }
@@ -184,7 +181,6 @@ class RenderGraph {
 };
 
 // `range` with `remaining` counts replaced, or nullopt when it does not fit in the resource.
-std::optional<SubresourceRange> resolve(const SubresourceRange& range,
-                                        const ResourceDeclaration& resource);
+std::optional<SubresourceRange> resolve(const SubresourceRange& range, const ResourceDeclaration& resource);
 
 }  // namespace sg::rg

@@ -3,8 +3,7 @@
 namespace sg::rg {
 namespace {
 
-std::string span_text(std::string_view one, std::string_view many, std::uint32_t first,
-                      std::uint32_t count) {
+std::string span_text(std::string_view one, std::string_view many, std::uint32_t first, std::uint32_t count) {
   if (count == remaining) return std::string(many) + " " + std::to_string(first) + "-last";
   if (count == 1) return std::string(one) + " " + std::to_string(first);
   return std::string(many) + " " + std::to_string(first) + "-" + std::to_string(first + count - 1);

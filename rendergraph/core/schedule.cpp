@@ -58,7 +58,8 @@ Schedule schedule_passes(const RenderGraph& graph) {
     std::vector<std::uint32_t>& depends_on = schedule.depends_on[position_now];
     const auto depend_on_producer = [&](const ResourceAccess& access) {
       const std::uint32_t producer = resources[access.resource].producers[consumed_version(access)];
-      if (producer != invalid_index && position[producer] != position_now) depends_on.push_back(position[producer]);
+      if (producer != invalid_index && position[producer] != position_now)
+        depends_on.push_back(position[producer]);
     };
     // Reads first, so that a pass reading the version its own write replaces counts as a reader
     // of the old version, not the new one.

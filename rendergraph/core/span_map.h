@@ -93,7 +93,8 @@ class SubresourceMap {
   template <class Visit>
   void for_each(Visit&& visit) const {
     for (std::uint32_t mip = 0; mip < mips_.size(); ++mip) {
-      for (const auto& span : mips_[mip].spans()) visit(SubresourceRange{mip, 1, span.first, span.count}, span.value);
+      for (const auto& span : mips_[mip].spans())
+        visit(SubresourceRange{mip, 1, span.first, span.count}, span.value);
     }
   }
 
@@ -116,8 +117,8 @@ std::vector<RangeValue<Value>> merge_into_ranges(const std::vector<RangeValue<Va
   for (const auto& piece : pieces) {
     if (!rows.empty()) {
       SubresourceRange& last = rows.back().range;
-      if (last.base_mip == piece.range.base_mip && last.base_layer + last.layer_count == piece.range.base_layer &&
-          rows.back().value == piece.value) {
+      if (last.base_mip == piece.range.base_mip &&
+          last.base_layer + last.layer_count == piece.range.base_layer && rows.back().value == piece.value) {
         last.layer_count += piece.range.layer_count;
         continue;
       }

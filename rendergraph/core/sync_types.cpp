@@ -65,9 +65,7 @@ std::string to_string(PipelineStage stages) {
   return join_bits(static_cast<std::uint64_t>(stages), stage_names);
 }
 
-std::string to_string(Access access) {
-  return join_bits(static_cast<std::uint64_t>(access), access_names);
-}
+std::string to_string(Access access) { return join_bits(static_cast<std::uint64_t>(access), access_names); }
 
 std::string to_string(ImageLayout layout) {
   switch (layout) {

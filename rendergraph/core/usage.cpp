@@ -23,7 +23,9 @@ std::optional<ResourceState> usage_state(Usage usage, Direction direction, Resou
     case Usage::depth_attachment:
       if (!image) return std::nullopt;
       // The sync2 generic layouts let a read-only depth attachment also be sampled in one pass.
-      if (read) return ResourceState{depth_tests, Access::depth_stencil_attachment_read, ImageLayout::read_only_optimal};
+      if (read)
+        return ResourceState{depth_tests, Access::depth_stencil_attachment_read,
+                             ImageLayout::read_only_optimal};
       return ResourceState{depth_tests,
                            Access::depth_stencil_attachment_read | Access::depth_stencil_attachment_write,
                            ImageLayout::attachment_optimal};
@@ -35,9 +37,9 @@ std::optional<ResourceState> usage_state(Usage usage, Direction direction, Resou
     case Usage::sampled_fragment:
     case Usage::sampled_compute:
       if (!image || !read) return std::nullopt;
-      return ResourceState{usage == Usage::sampled_fragment ? PipelineStage::fragment_shader
-                                                            : PipelineStage::compute_shader,
-                           Access::shader_sampled_read, ImageLayout::read_only_optimal};
+      return ResourceState{
+          usage == Usage::sampled_fragment ? PipelineStage::fragment_shader : PipelineStage::compute_shader,
+          Access::shader_sampled_read, ImageLayout::read_only_optimal};
     case Usage::storage_vertex: return storage(PipelineStage::vertex_shader, direction, kind);
     case Usage::storage_fragment: return storage(PipelineStage::fragment_shader, direction, kind);
     case Usage::storage_compute: return storage(PipelineStage::compute_shader, direction, kind);
@@ -50,7 +52,8 @@ std::optional<ResourceState> usage_state(Usage usage, Direction direction, Resou
                            image ? ImageLayout::transfer_dst_optimal : ImageLayout::undefined};
     case Usage::indirect:
       if (image || !read) return std::nullopt;
-      return ResourceState{PipelineStage::draw_indirect, Access::indirect_command_read, ImageLayout::undefined};
+      return ResourceState{PipelineStage::draw_indirect, Access::indirect_command_read,
+                           ImageLayout::undefined};
     case Usage::vertex:
       if (image || !read) return std::nullopt;
       return ResourceState{PipelineStage::vertex_attribute_input, Access::vertex_attribute_read,

@@ -20,9 +20,9 @@
 namespace sg::vk {
 
 struct ContextOptions {
-  bool validation = false;                  // Khronos validation layer + debug messenger
-  bool synchronization_validation = false;  // also check barriers (implies validation)
-  std::string device_name;                  // case-insensitive substring; empty: best type
+  bool validation = false;                       // Khronos validation layer + debug messenger
+  bool synchronization_validation = false;       // also check barriers (implies validation)
+  std::string device_name;                       // case-insensitive substring; empty: best type
   std::vector<std::string> instance_extensions;  // e.g. the window system's surface extensions
   bool presentation = false;                     // enable VK_KHR_swapchain on the device
 };

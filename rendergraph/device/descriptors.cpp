@@ -23,8 +23,7 @@ PipelineLayout::PipelineLayout(VkDevice device, std::vector<VkDescriptorSetLayou
   set_info.bindingCount = static_cast<uint32_t>(bindings_.size());
   set_info.pBindings = bindings_.data();
   VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-  check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &set_layout),
-        "vkCreateDescriptorSetLayout");
+  check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &set_layout), "vkCreateDescriptorSetLayout");
   set_layout_ = UniqueDescriptorSetLayout(device, set_layout);
 
   VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -38,8 +37,9 @@ PipelineLayout::PipelineLayout(VkDevice device, std::vector<VkDescriptorSetLayou
 }
 
 VkDescriptorType PipelineLayout::type_of(uint32_t binding) const {
-  const auto found = std::find_if(bindings_.begin(), bindings_.end(),
-                                  [&](const VkDescriptorSetLayoutBinding& b) { return b.binding == binding; });
+  const auto found =
+      std::find_if(bindings_.begin(), bindings_.end(),
+                   [&](const VkDescriptorSetLayoutBinding& b) { return b.binding == binding; });
   if (found == bindings_.end()) {
     throw std::logic_error("descriptor binding " + std::to_string(binding) + " is not in the layout");
   }
@@ -129,8 +129,7 @@ VkDescriptorSet DescriptorWriter::update() {
   return set_;
 }
 
-UniqueSampler create_sampler(VkDevice device, VkFilter filter, bool compare,
-                             VkSamplerAddressMode address) {
+UniqueSampler create_sampler(VkDevice device, VkFilter filter, bool compare, VkSamplerAddressMode address) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = filter;
   info.minFilter = filter;

@@ -59,8 +59,7 @@ class PipelineLayout {
 
   // Binds `set` as set 0 of graphics pipelines; `dynamic_offsets` are its dynamic buffers',
   // in binding order.
-  void bind(VkCommandBuffer cmd, VkDescriptorSet set,
-            std::span<const uint32_t> dynamic_offsets = {}) const;
+  void bind(VkCommandBuffer cmd, VkDescriptorSet set, std::span<const uint32_t> dynamic_offsets = {}) const;
   // Pushes `constants` at offset 0, to the stages of the layout's push-constant range.
   template <class Constants>
   void push(VkCommandBuffer cmd, const Constants& constants) const {

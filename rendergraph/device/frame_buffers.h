@@ -19,8 +19,7 @@ namespace sg::vk {
 
 class FrameBuffers {
  public:
-  FrameBuffers(VulkanContext& context, VkBufferUsageFlags usage, uint32_t frames_in_flight,
-               std::string name);
+  FrameBuffers(VulkanContext& context, VkBufferUsageFlags usage, uint32_t frames_in_flight, std::string name);
 
   // Copies `items` to the start of the slot's buffer, growing it when needed. An empty span
   // leaves a small buffer, so descriptors always have something valid to point at.

@@ -18,12 +18,9 @@ MemoryPreference preference_for(MemoryUsage usage) {
   constexpr VkMemoryPropertyFlags host =
       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
   switch (usage) {
-    case MemoryUsage::gpu_only:
-      return {VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0};
-    case MemoryUsage::upload:
-      return {host, 0};
-    case MemoryUsage::readback:
-      return {host, VK_MEMORY_PROPERTY_HOST_CACHED_BIT};
+    case MemoryUsage::gpu_only: return {VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0};
+    case MemoryUsage::upload: return {host, 0};
+    case MemoryUsage::readback: return {host, VK_MEMORY_PROPERTY_HOST_CACHED_BIT};
   }
   return {0, 0};
 }
@@ -32,8 +29,7 @@ bool is_host_visible(MemoryUsage usage) { return usage != MemoryUsage::gpu_only;
 
 }  // namespace
 
-GpuAllocator::GpuAllocator(VkPhysicalDevice physical_device, VkDevice device,
-                           VkDeviceSize block_size)
+GpuAllocator::GpuAllocator(VkPhysicalDevice physical_device, VkDevice device, VkDeviceSize block_size)
     : device_(device), block_size_(block_size) {
   vkGetPhysicalDeviceMemoryProperties(physical_device, &memory_properties_);
 }
@@ -64,8 +60,7 @@ uint32_t GpuAllocator::find_memory_type(uint32_t type_bits, MemoryUsage usage) c
   return fallback;
 }
 
-uint32_t GpuAllocator::create_block(uint32_t memory_type, ResourceTiling tiling,
-                                    VkDeviceSize size) {
+uint32_t GpuAllocator::create_block(uint32_t memory_type, ResourceTiling tiling, VkDeviceSize size) {
   VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   info.allocationSize = size;
   info.memoryTypeIndex = memory_type;

@@ -48,8 +48,7 @@ class GpuAllocator {
   GpuAllocator& operator=(const GpuAllocator&) = delete;
 
   // Throws VulkanError when no memory type fits or the device is out of memory.
-  Allocation allocate(const VkMemoryRequirements& requirements, MemoryUsage usage,
-                      ResourceTiling tiling);
+  Allocation allocate(const VkMemoryRequirements& requirements, MemoryUsage usage, ResourceTiling tiling);
   void free(const Allocation& allocation);
 
   MemoryStats stats() const;

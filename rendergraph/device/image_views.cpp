@@ -20,8 +20,7 @@ VkImageView ImageViewCache::get(const ViewKey& key) {
   info.image = image_;
   info.viewType = key.type;
   info.format = format_;
-  info.subresourceRange = {aspect_of(format_), key.base_mip, key.mip_count, key.base_layer,
-                           key.layer_count};
+  info.subresourceRange = {aspect_of(format_), key.base_mip, key.mip_count, key.base_layer, key.layer_count};
   VkImageView view = VK_NULL_HANDLE;
   check(vkCreateImageView(device_, &info, nullptr, &view), "vkCreateImageView");
   views_.push_back({key, view});

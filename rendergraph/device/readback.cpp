@@ -21,11 +21,11 @@ bool is_rgba(VkFormat format) {
 
 // Copies mip 0 of `layer` into `out` (as many bytes as the layer has) and waits. An image not
 // in TRANSFER_SRC_OPTIMAL is moved there for the copy and back to `layout` after it.
-void copy_layer_to_host(VulkanContext& context, const Image& image, uint32_t layer,
-                        VkImageLayout layout, std::span<std::byte> out) {
+void copy_layer_to_host(VulkanContext& context, const Image& image, uint32_t layer, VkImageLayout layout,
+                        std::span<std::byte> out) {
   const VkExtent2D extent = image.extent();
-  Buffer staging(context, {out.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback,
-                           "readback staging"});
+  Buffer staging(context,
+                 {out.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::readback, "readback staging"});
   const bool move = layout != VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
   context.submit_and_wait([&](VkCommandBuffer cmd) {
     if (move) {
@@ -36,12 +36,12 @@ void copy_layer_to_host(VulkanContext& context, const Image& image, uint32_t lay
     VkBufferImageCopy region{};
     region.imageSubresource = {image.aspect(), 0, layer, 1};
     region.imageExtent = {extent.width, extent.height, 1};
-    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           staging.handle(), 1, &region);
+    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1,
+                           &region);
     if (move) {
       transition(cmd, {image.handle(), image.aspect(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
-                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                       VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE, layer, 1});
+                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                       VK_ACCESS_2_NONE, layer, 1});
     }
     // Make the copy visible to the host read below.
     memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,

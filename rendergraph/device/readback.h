@@ -35,7 +35,6 @@ struct DepthImage {
 // Reads mip 0 of `layer` of a D32_SFLOAT image that is in `layout` with its writes available to
 // transfers or to the fragment shader (a shadow map after the frame), and leaves it in
 // `layout`. Waits for the copy.
-DepthImage read_depth_layer(VulkanContext& context, const Image& image, uint32_t layer,
-                            VkImageLayout layout);
+DepthImage read_depth_layer(VulkanContext& context, const Image& image, uint32_t layer, VkImageLayout layout);
 
 }  // namespace sg::vk

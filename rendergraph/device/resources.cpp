@@ -12,14 +12,11 @@ VkImageAspectFlags aspect_of(VkFormat format) {
   switch (format) {
     case VK_FORMAT_D16_UNORM:
     case VK_FORMAT_D32_SFLOAT:
-    case VK_FORMAT_X8_D24_UNORM_PACK32:
-      return VK_IMAGE_ASPECT_DEPTH_BIT;
+    case VK_FORMAT_X8_D24_UNORM_PACK32: return VK_IMAGE_ASPECT_DEPTH_BIT;
     case VK_FORMAT_D16_UNORM_S8_UINT:
     case VK_FORMAT_D24_UNORM_S8_UINT:
-    case VK_FORMAT_D32_SFLOAT_S8_UINT:
-      return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
-    default:
-      return VK_IMAGE_ASPECT_COLOR_BIT;
+    case VK_FORMAT_D32_SFLOAT_S8_UINT: return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+    default: return VK_IMAGE_ASPECT_COLOR_BIT;
   }
 }
 
@@ -97,8 +94,7 @@ Image::Image(VulkanContext& context, const ImageDesc& desc)
   VkMemoryRequirements requirements;
   vkGetImageMemoryRequirements(context.device(), image_, &requirements);
   try {
-    allocation_ = context.allocator().allocate(requirements, MemoryUsage::gpu_only,
-                                               ResourceTiling::optimal);
+    allocation_ = context.allocator().allocate(requirements, MemoryUsage::gpu_only, ResourceTiling::optimal);
     check(vkBindImageMemory(context.device(), image_, allocation_.memory, allocation_.offset),
           "vkBindImageMemory " + desc.name);
     VkImageViewCreateInfo view_info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
@@ -106,8 +102,7 @@ Image::Image(VulkanContext& context, const ImageDesc& desc)
     view_info.viewType = desc.view_type;
     view_info.format = desc.format;
     view_info.subresourceRange = {aspect_of(desc.format), 0, desc.mip_levels, 0, desc.array_layers};
-    check(vkCreateImageView(context.device(), &view_info, nullptr, &view_),
-          "vkCreateImageView " + desc.name);
+    check(vkCreateImageView(context.device(), &view_info, nullptr, &view_), "vkCreateImageView " + desc.name);
     views_ = std::make_unique<ImageViewCache>(context.device(), image_, desc.format);
   } catch (...) {
     reset();

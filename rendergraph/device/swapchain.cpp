@@ -25,8 +25,7 @@ VkSurfaceFormatKHR choose_format(VkPhysicalDevice device, VkSurfaceKHR surface) 
   return formats.front();
 }
 
-VkPresentModeKHR choose_present_mode(VkPhysicalDevice device, VkSurfaceKHR surface,
-                                     PresentMode mode) {
+VkPresentModeKHR choose_present_mode(VkPhysicalDevice device, VkSurfaceKHR surface, PresentMode mode) {
   if (mode == PresentMode::vsync) return VK_PRESENT_MODE_FIFO_KHR;  // always supported
   uint32_t count = 0;
   vkGetPhysicalDeviceSurfacePresentModesKHR(device, surface, &count, nullptr);
@@ -126,8 +125,8 @@ bool Swapchain::recreate(VkExtent2D wanted) {
 
 std::optional<uint32_t> Swapchain::acquire(VkSemaphore image_acquired) {
   uint32_t index = 0;
-  const VkResult result = vkAcquireNextImageKHR(context_.device(), swapchain_, UINT64_MAX,
-                                                image_acquired, VK_NULL_HANDLE, &index);
+  const VkResult result = vkAcquireNextImageKHR(context_.device(), swapchain_, UINT64_MAX, image_acquired,
+                                                VK_NULL_HANDLE, &index);
   if (result == VK_ERROR_OUT_OF_DATE_KHR) return std::nullopt;
   if (result != VK_SUBOPTIMAL_KHR) check(result, "vkAcquireNextImageKHR");
   return index;

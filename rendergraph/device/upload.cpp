@@ -13,8 +13,8 @@ void UploadBatch::copy_bytes(const Buffer& dst, std::span<const std::byte> bytes
   if (bytes.empty()) return;
   if (dst_offset + bytes.size() > dst.size()) {
     throw VulkanError("upload of " + std::to_string(bytes.size()) + " bytes at offset " +
-                      std::to_string(dst_offset) + " overruns a buffer of " +
-                      std::to_string(dst.size()) + " bytes");
+                      std::to_string(dst_offset) + " overruns a buffer of " + std::to_string(dst.size()) +
+                      " bytes");
   }
   pending_.push_back({dst.handle(), dst_offset, stage(bytes), bytes.size()});
 }
@@ -40,8 +40,8 @@ size_t UploadBatch::stage(std::span<const std::byte> bytes) {
 
 void UploadBatch::submit() {
   if (pending_.empty() && pending_images_.empty()) return;
-  Buffer staging(context_, {staged_.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload,
-                            "upload staging"});
+  Buffer staging(context_,
+                 {staged_.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::upload, "upload staging"});
   std::memcpy(staging.mapped(), staged_.data(), staged_.size());
   context_.submit_and_wait([&](VkCommandBuffer cmd) {
     for (const Pending& p : pending_) {
@@ -57,12 +57,13 @@ void UploadBatch::submit() {
       region.imageSubresource = {p.aspect, 0, 0, p.layers};
       region.imageExtent = {p.extent.width, p.extent.height, 1};
       vkCmdCopyBufferToImage(cmd, staging.handle(), p.dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-      transition(cmd, {p.dst, p.aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
-                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT});
+      transition(cmd,
+                 {p.dst, p.aspect, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
+                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT});
     }
     memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+                   VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
   });
   staged_.clear();
   pending_.clear();

@@ -5,8 +5,7 @@ namespace sg::vk {
 std::string_view to_string(VkResult result) {
   switch (result) {
 #define SG_RESULT(name) \
-  case name:            \
-    return #name;
+  case name: return #name;
     SG_RESULT(VK_SUCCESS)
     SG_RESULT(VK_NOT_READY)
     SG_RESULT(VK_TIMEOUT)
@@ -29,8 +28,7 @@ std::string_view to_string(VkResult result) {
     SG_RESULT(VK_ERROR_OUT_OF_DATE_KHR)
     SG_RESULT(VK_ERROR_VALIDATION_FAILED_EXT)
 #undef SG_RESULT
-    default:
-      return "unknown VkResult";
+    default: return "unknown VkResult";
   }
 }
 

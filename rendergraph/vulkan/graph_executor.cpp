@@ -6,9 +6,9 @@
 
 #include "rendergraph/core/pass_context.h"
 #include "rendergraph/device/context.h"
-#include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/device/resources.h"
 #include "rendergraph/device/vulkan_error.h"
+#include "rendergraph/vulkan/pass_recorder.h"
 
 namespace sg::vk {
 namespace {
@@ -19,10 +19,12 @@ constexpr size_t transient_sets_per_slot = 4;
 UniqueDescriptorPool create_frame_descriptor_pool(VkDevice device) {
   // Sized for the handful of per-frame sets each pass allocates; exhausting it is a VulkanError
   // naming vkAllocateDescriptorSets, not silent corruption.
-  const VkDescriptorPoolSize sizes[] = {
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1024}, {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 256},
-      {VK_DESCRIPTOR_TYPE_SAMPLER, 64},                  {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 256},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1024},         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 256}};
+  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1024},
+                                        {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 256},
+                                        {VK_DESCRIPTOR_TYPE_SAMPLER, 64},
+                                        {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 256},
+                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1024},
+                                        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 256}};
   VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   info.maxSets = 512;
   info.poolSizeCount = static_cast<uint32_t>(std::size(sizes));
@@ -53,22 +55,23 @@ VkImageView PassRecorder::view(rg::ImageHandle image, rg::SubresourceRange range
   if (range.mip_count == rg::remaining) range.mip_count = desc.mips - range.base_mip;
   if (range.layer_count == rg::remaining) range.layer_count = desc.layers - range.base_layer;
   if (!type) {
-    const bool whole_cubes =
-        desc.cube_compatible && range.base_layer % 6 == 0 && range.layer_count % 6 == 0;
+    const bool whole_cubes = desc.cube_compatible && range.base_layer % 6 == 0 && range.layer_count % 6 == 0;
     type = range.layer_count == 1 ? VK_IMAGE_VIEW_TYPE_2D
-           : whole_cubes          ? (range.layer_count == 6 ? VK_IMAGE_VIEW_TYPE_CUBE
-                                                            : VK_IMAGE_VIEW_TYPE_CUBE_ARRAY)
-                                  : VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+           : whole_cubes ? (range.layer_count == 6 ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_CUBE_ARRAY)
+                         : VK_IMAGE_VIEW_TYPE_2D_ARRAY;
   }
-  return resource.views->get(
-      {range.base_mip, range.mip_count, range.base_layer, range.layer_count, *type});
+  return resource.views->get({range.base_mip, range.mip_count, range.base_layer, range.layer_count, *type});
 }
 
 void PassRecorder::set_full_viewport() const { set_viewport({{0, 0}, render_extent_}); }
 
 void PassRecorder::set_viewport(const VkRect2D& area) const {
-  const VkViewport viewport{float(area.offset.x), float(area.offset.y), float(area.extent.width),
-                            float(area.extent.height), 0.0f, 1.0f};
+  const VkViewport viewport{float(area.offset.x),
+                            float(area.offset.y),
+                            float(area.extent.width),
+                            float(area.extent.height),
+                            0.0f,
+                            1.0f};
   vkCmdSetViewport(cmd_, 0, 1, &viewport);
   vkCmdSetScissor(cmd_, 0, 1, &area);
 }
@@ -97,9 +100,8 @@ TransientResources& GraphExecutor::transients_for(Slot& slot,
   // The GPU has finished this slot's previous frame, so sets of plans nobody holds any more can
   // go now; a live plan's set is kept even while unused (its shape may come back).
   std::erase_if(sets, [](const CachedTransients& set) { return set.plan.expired(); });
-  const auto found = std::find_if(sets.begin(), sets.end(), [&](const CachedTransients& set) {
-    return set.key == plan.get();
-  });
+  const auto found = std::find_if(sets.begin(), sets.end(),
+                                  [&](const CachedTransients& set) { return set.key == plan.get(); });
   if (found != sets.end()) {
     std::rotate(sets.begin(), found, found + 1);
   } else {
@@ -110,8 +112,7 @@ TransientResources& GraphExecutor::transients_for(Slot& slot,
 }
 
 void GraphExecutor::execute(VkCommandBuffer cmd, uint32_t slot_index, uint64_t frame_number,
-                            const rg::RenderGraph& graph,
-                            const std::shared_ptr<const rg::CompiledPlan>& plan,
+                            const rg::RenderGraph& graph, const std::shared_ptr<const rg::CompiledPlan>& plan,
                             const ImportedResources& imports) {
   Slot& slot = slots_[slot_index];
   const auto pass_count = static_cast<uint32_t>(plan->passes.size());
@@ -137,8 +138,8 @@ void GraphExecutor::execute(VkCommandBuffer cmd, uint32_t slot_index, uint64_t f
     const rg::CompiledResource& resource = plan->resources[i];
     const bool bound = physical_[i].image != VK_NULL_HANDLE || physical_[i].buffer != VK_NULL_HANDLE;
     if (resource.imported && resource.lifetime && !bound) {
-      throw std::logic_error("render graph: imported " + std::string(rg::kind_name(resource.kind)) +
-                             " '" + resource.name + "' is used by the frame but was not bound");
+      throw std::logic_error("render graph: imported " + std::string(rg::kind_name(resource.kind)) + " '" +
+                             resource.name + "' is used by the frame but was not bound");
     }
   }
 
@@ -181,13 +182,13 @@ void GraphExecutor::record_pass(VkCommandBuffer cmd, const rg::CompiledPass& pas
                              "' renders to an image bound without views");
     }
     VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    attachment.imageView = resource.views->get(
-        {range.base_mip, 1, range.base_layer, range.layer_count,
-         range.layer_count == 1 ? VK_IMAGE_VIEW_TYPE_2D : VK_IMAGE_VIEW_TYPE_2D_ARRAY});
+    attachment.imageView =
+        resource.views->get({range.base_mip, 1, range.base_layer, range.layer_count,
+                             range.layer_count == 1 ? VK_IMAGE_VIEW_TYPE_2D : VK_IMAGE_VIEW_TYPE_2D_ARRAY});
     attachment.imageLayout = to_vk(access.state.layout);
     attachment.loadOp = access.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-    attachment.storeOp = access.direction == rg::Direction::write ? VK_ATTACHMENT_STORE_OP_STORE
-                                                                  : VK_ATTACHMENT_STORE_OP_NONE;
+    attachment.storeOp =
+        access.direction == rg::Direction::write ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_NONE;
     if (access.clear) {
       const rg::ClearValue& clear = *access.clear;
       if (access.usage == rg::Usage::depth_attachment) {

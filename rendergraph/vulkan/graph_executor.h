@@ -27,12 +27,12 @@
 
 #include "rendergraph/core/compiled_plan.h"
 #include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/unique_handle.h"
 #include "rendergraph/vulkan/graph_imports.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/pass_timer.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "rendergraph/vulkan/transient_resources.h"
-#include "rendergraph/device/unique_handle.h"
 
 namespace sg::vk {
 
@@ -56,9 +56,8 @@ class GraphExecutor {
   // GPU must have finished the slot's previous frame (FrameRing::begin_frame waits for it).
   // `plan` must have been compiled from a graph shaped like `graph`. Throws std::logic_error
   // when an imported resource an executed pass uses has no binding.
-  void execute(VkCommandBuffer cmd, uint32_t slot, uint64_t frame_number,
-               const rg::RenderGraph& graph, const std::shared_ptr<const rg::CompiledPlan>& plan,
-               const ImportedResources& imports);
+  void execute(VkCommandBuffer cmd, uint32_t slot, uint64_t frame_number, const rg::RenderGraph& graph,
+               const std::shared_ptr<const rg::CompiledPlan>& plan, const ImportedResources& imports);
 
   // Reads the timestamps of the slot's previous frame, if not read yet, into latest_timings().
   // execute() does this itself; call it after the last frames to see their timings too. The GPU
@@ -81,15 +80,15 @@ class GraphExecutor {
     std::unique_ptr<TransientResources> resources;
   };
   struct Slot {
-    std::vector<CachedTransients> transients;  // most recently used first
+    std::vector<CachedTransients> transients;      // most recently used first
     std::shared_ptr<const rg::CompiledPlan> plan;  // in flight; keeps names for timings
     uint64_t frame_number = 0;
     UniqueDescriptorPool descriptors;
   };
 
   TransientResources& transients_for(Slot& slot, const std::shared_ptr<const rg::CompiledPlan>& plan);
-  void record_pass(VkCommandBuffer cmd, const rg::CompiledPass& pass,
-                   const rg::PassDeclaration& declaration, PassRecorder& recorder);
+  void record_pass(VkCommandBuffer cmd, const rg::CompiledPass& pass, const rg::PassDeclaration& declaration,
+                   PassRecorder& recorder);
 
   VulkanContext& context_;
   PassTimer timer_;

@@ -53,8 +53,8 @@ class GraphImports {
                                std::optional<rg::ResourceState> final_state);
   // An image whose contents are not kept from frame to frame (an acquired swapchain image):
   // starts in `initial_state`, bound without views.
-  rg::ImageHandle import_image(rg::RenderGraph& graph, std::string name, VkImage image,
-                               VkFormat format, VkExtent2D extent, rg::ResourceState initial_state,
+  rg::ImageHandle import_image(rg::RenderGraph& graph, std::string name, VkImage image, VkFormat format,
+                               VkExtent2D extent, rg::ResourceState initial_state,
                                rg::ResourceState final_state);
 
   // This frame's bindings, for GraphExecutor::execute.

@@ -26,10 +26,8 @@ class VulkanContext;
 
 class PassRecorder {
  public:
-  PassRecorder(VulkanContext& context, VkCommandBuffer cmd,
-               std::span<const PhysicalResource> resources,
-               std::span<const rg::CompiledResource> descriptions,
-               VkDescriptorPool frame_descriptors)
+  PassRecorder(VulkanContext& context, VkCommandBuffer cmd, std::span<const PhysicalResource> resources,
+               std::span<const rg::CompiledResource> descriptions, VkDescriptorPool frame_descriptors)
       : context_(context),
         cmd_(cmd),
         resources_(resources),

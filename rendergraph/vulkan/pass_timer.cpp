@@ -7,13 +7,11 @@
 
 namespace sg::vk {
 
-PassTimer::PassTimer(VulkanContext& context, uint32_t slots)
-    : device_(context.device()), slots_(slots) {
+PassTimer::PassTimer(VulkanContext& context, uint32_t slots) : device_(context.device()), slots_(slots) {
   uint32_t family_count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(context.physical_device(), &family_count, nullptr);
   std::vector<VkQueueFamilyProperties> families(family_count);
-  vkGetPhysicalDeviceQueueFamilyProperties(context.physical_device(), &family_count,
-                                           families.data());
+  vkGetPhysicalDeviceQueueFamilyProperties(context.physical_device(), &family_count, families.data());
   const uint32_t valid_bits = families[context.queue_family()].timestampValidBits;
   if (valid_bits == 0) return;
   valid_mask_ = valid_bits >= 64 ? ~uint64_t{0} : (uint64_t{1} << valid_bits) - 1;
@@ -36,9 +34,8 @@ bool PassTimer::collect(uint32_t slot_index, std::vector<double>& pass_ms) {
     // The frame ring has waited for this slot's previous frame, so the results are available;
     // VK_NOT_READY would mean that frame was never submitted, and it is skipped.
     const VkResult result =
-        vkGetQueryPoolResults(device_, slot.pool, 0, 2 * slot.pass_count,
-                              ticks_.size() * sizeof(uint64_t), ticks_.data(), sizeof(uint64_t),
-                              VK_QUERY_RESULT_64_BIT);
+        vkGetQueryPoolResults(device_, slot.pool, 0, 2 * slot.pass_count, ticks_.size() * sizeof(uint64_t),
+                              ticks_.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
     if (result == VK_SUCCESS) {
       for (uint32_t p = 0; p < slot.pass_count; ++p) {
         const uint64_t ticks = (ticks_[2 * p + 1] - ticks_[2 * p]) & valid_mask_;

@@ -39,8 +39,8 @@ class PassTimer {
  private:
   struct Slot {
     VkQueryPool pool = VK_NULL_HANDLE;
-    uint32_t capacity = 0;     // passes the pool has room for
-    uint32_t pass_count = 0;   // passes of the frame last recorded in this slot
+    uint32_t capacity = 0;    // passes the pool has room for
+    uint32_t pass_count = 0;  // passes of the frame last recorded in this slot
   };
 
   VkDevice device_;

@@ -24,10 +24,8 @@ static_assert(value(PipelineStage::top_of_pipe) == VK_PIPELINE_STAGE_2_TOP_OF_PI
 static_assert(value(PipelineStage::draw_indirect) == VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT);
 static_assert(value(PipelineStage::vertex_shader) == VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
 static_assert(value(PipelineStage::fragment_shader) == VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
-static_assert(value(PipelineStage::early_fragment_tests) ==
-              VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT);
-static_assert(value(PipelineStage::late_fragment_tests) ==
-              VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT);
+static_assert(value(PipelineStage::early_fragment_tests) == VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT);
+static_assert(value(PipelineStage::late_fragment_tests) == VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT);
 static_assert(value(PipelineStage::color_attachment_output) ==
               VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT);
 static_assert(value(PipelineStage::compute_shader) == VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
@@ -37,8 +35,7 @@ static_assert(value(PipelineStage::host) == VK_PIPELINE_STAGE_2_HOST_BIT);
 static_assert(value(PipelineStage::all_graphics) == VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT);
 static_assert(value(PipelineStage::all_commands) == VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT);
 static_assert(value(PipelineStage::index_input) == VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT);
-static_assert(value(PipelineStage::vertex_attribute_input) ==
-              VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT);
+static_assert(value(PipelineStage::vertex_attribute_input) == VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT);
 
 static_assert(value(Access::none) == VK_ACCESS_2_NONE);
 static_assert(value(Access::indirect_command_read) == VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
@@ -47,8 +44,7 @@ static_assert(value(Access::vertex_attribute_read) == VK_ACCESS_2_VERTEX_ATTRIBU
 static_assert(value(Access::uniform_read) == VK_ACCESS_2_UNIFORM_READ_BIT);
 static_assert(value(Access::color_attachment_read) == VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT);
 static_assert(value(Access::color_attachment_write) == VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-static_assert(value(Access::depth_stencil_attachment_read) ==
-              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+static_assert(value(Access::depth_stencil_attachment_read) == VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
 static_assert(value(Access::depth_stencil_attachment_write) ==
               VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 static_assert(value(Access::transfer_read) == VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -63,14 +59,12 @@ static_assert(value(Access::shader_storage_write) == VK_ACCESS_2_SHADER_STORAGE_
 
 static_assert(value(ImageLayout::undefined) == VK_IMAGE_LAYOUT_UNDEFINED);
 static_assert(value(ImageLayout::general) == VK_IMAGE_LAYOUT_GENERAL);
-static_assert(value(ImageLayout::color_attachment_optimal) ==
-              VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+static_assert(value(ImageLayout::color_attachment_optimal) == VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
 static_assert(value(ImageLayout::depth_stencil_attachment_optimal) ==
               VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
 static_assert(value(ImageLayout::depth_stencil_read_only_optimal) ==
               VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
-static_assert(value(ImageLayout::shader_read_only_optimal) ==
-              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+static_assert(value(ImageLayout::shader_read_only_optimal) == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
 static_assert(value(ImageLayout::transfer_src_optimal) == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
 static_assert(value(ImageLayout::transfer_dst_optimal) == VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
 static_assert(value(ImageLayout::read_only_optimal) == VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
@@ -93,8 +87,7 @@ static_assert(value(rg::ImageUsage::transfer_dst) == VK_IMAGE_USAGE_TRANSFER_DST
 static_assert(value(rg::ImageUsage::sampled) == VK_IMAGE_USAGE_SAMPLED_BIT);
 static_assert(value(rg::ImageUsage::storage) == VK_IMAGE_USAGE_STORAGE_BIT);
 static_assert(value(rg::ImageUsage::color_attachment) == VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
-static_assert(value(rg::ImageUsage::depth_stencil_attachment) ==
-              VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+static_assert(value(rg::ImageUsage::depth_stencil_attachment) == VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
 
 static_assert(value(rg::BufferUsage::transfer_src) == VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
 static_assert(value(rg::BufferUsage::transfer_dst) == VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -122,15 +115,14 @@ Format from_vk(VkFormat format) {
     case Format::rgba16_sfloat:
     case Format::r32_sfloat:
     case Format::d16_unorm:
-    case Format::d32_sfloat:
-      return candidate;
+    case Format::d32_sfloat: return candidate;
   }
   throw std::invalid_argument("the render graph has no format for VkFormat " + std::to_string(format));
 }
 
 rg::ImageDesc graph_desc(const Image& image) {
   return {image.extent().width, image.extent().height, from_vk(image.format()),
-          image.array_layers(), image.mip_levels(), image.cube_compatible()};
+          image.array_layers(), image.mip_levels(),    image.cube_compatible()};
 }
 VkImageUsageFlags to_vk(rg::ImageUsage usage) { return value(usage); }
 VkBufferUsageFlags to_vk(rg::BufferUsage usage) { return value(usage); }

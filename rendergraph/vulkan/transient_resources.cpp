@@ -5,9 +5,9 @@
 
 #include "rendergraph/core/aliasing.h"
 #include "rendergraph/device/context.h"
-#include "rendergraph/vulkan/plan_translation.h"
 #include "rendergraph/device/resources.h"
 #include "rendergraph/device/vulkan_error.h"
+#include "rendergraph/vulkan/plan_translation.h"
 
 namespace sg::vk {
 namespace {
@@ -94,8 +94,8 @@ TransientResources::TransientResources(VulkanContext& context, const rg::Compile
         if (kind == rg::ResourceKind::image) {
           check(vkBindImageMemory(device, object.image, heap.memory, heap.offset + placement.offset),
                 "vkBindImageMemory " + plan.resources[index].name);
-          object.views = std::make_unique<ImageViewCache>(
-              device, object.image, to_vk(plan.resources[index].image.format));
+          object.views = std::make_unique<ImageViewCache>(device, object.image,
+                                                          to_vk(plan.resources[index].image.format));
         } else {
           check(vkBindBufferMemory(device, object.buffer, heap.memory, heap.offset + placement.offset),
                 "vkBindBufferMemory " + plan.resources[index].name);

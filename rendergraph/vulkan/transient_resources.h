@@ -34,7 +34,7 @@ class TransientResources {
   VkBuffer buffer(uint32_t resource) const { return objects_[resource].buffer; }
   ImageViewCache* views(uint32_t resource) const { return objects_[resource].views.get(); }
 
-  uint64_t heap_bytes() const { return heap_bytes_; }        // memory actually allocated
+  uint64_t heap_bytes() const { return heap_bytes_; }            // memory actually allocated
   uint64_t unaliased_bytes() const { return unaliased_bytes_; }  // had nothing been shared
 
  private:

@@ -24,8 +24,8 @@ Scene build_scene(std::string_view name, const BuiltinSceneParams& params) {
 }
 
 Scene load_scene(std::string_view name_or_path, const BuiltinSceneParams& params) {
-  const bool builtin = std::find(builtin_scene_names.begin(), builtin_scene_names.end(),
-                                 name_or_path) != builtin_scene_names.end();
+  const bool builtin = std::find(builtin_scene_names.begin(), builtin_scene_names.end(), name_or_path) !=
+                       builtin_scene_names.end();
   return builtin ? build_scene(name_or_path, params) : load_gltf(std::string(name_or_path));
 }
 

@@ -27,7 +27,7 @@ struct BuiltinSceneParams {
   std::uint64_t triangles = 250'000;  // stress: target, met within one cell's furniture (~200)
   std::uint32_t point_lights = 32;
   std::uint32_t spot_lights = 32;
-  float moving_fraction = 0.1f;       // [0, 1] of lights and of crates
+  float moving_fraction = 0.1f;  // [0, 1] of lights and of crates
   std::uint64_t seed = 1;
 };
 

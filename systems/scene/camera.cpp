@@ -35,8 +35,9 @@ CameraPose parse_camera(std::string_view text) {
     if (field.empty() || error != std::errc{} || end != field.data() + field.size() ||
         !std::isfinite(value)) {
       throw SceneError(where, "value " + std::to_string(count + 1),
-                       "\"" + std::string(field) + "\" is not a finite number "
-                       "(expected ex,ey,ez,tx,ty,tz)");
+                       "\"" + std::string(field) +
+                           "\" is not a finite number "
+                           "(expected ex,ey,ez,tx,ty,tz)");
     }
     values[count++] = value;
     if (comma == std::string_view::npos) break;

@@ -39,12 +39,12 @@ double read_component(const unsigned char* bytes, int component_type, bool norma
 }
 
 // Reads `count` elements of `components` components into `out`, element i at out[i * components].
-void read_elements(const tinygltf::Model& model, int view_index, std::size_t byte_offset,
-                   std::size_t count, std::size_t components, int component_type,
-                   bool normalized, std::size_t stride, double* out) {
+void read_elements(const tinygltf::Model& model, int view_index, std::size_t byte_offset, std::size_t count,
+                   std::size_t components, int component_type, bool normalized, std::size_t stride,
+                   double* out) {
   const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(view_index)];
-  const unsigned char* base = model.buffers[static_cast<std::size_t>(view.buffer)].data.data() +
-                              view.byteOffset + byte_offset;
+  const unsigned char* base =
+      model.buffers[static_cast<std::size_t>(view.buffer)].data.data() + view.byteOffset + byte_offset;
   const std::size_t component_bytes =
       static_cast<std::size_t>(tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(component_type)));
   for (std::size_t i = 0; i < count; ++i) {
@@ -57,14 +57,12 @@ void read_elements(const tinygltf::Model& model, int view_index, std::size_t byt
 
 }  // namespace
 
-std::vector<double> read_accessor(const tinygltf::Model& model, std::size_t index,
-                                  const std::string& where) {
+std::vector<double> read_accessor(const tinygltf::Model& model, std::size_t index, const std::string& where) {
   const tinygltf::Accessor& accessor = model.accessors[index];
   const auto components =
       static_cast<std::size_t>(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type)));
-  const std::size_t element_bytes =
-      components * static_cast<std::size_t>(tinygltf::GetComponentSizeInBytes(
-                       static_cast<std::uint32_t>(accessor.componentType)));
+  const std::size_t element_bytes = components * static_cast<std::size_t>(tinygltf::GetComponentSizeInBytes(
+                                                     static_cast<std::uint32_t>(accessor.componentType)));
   std::vector<double> values(accessor.count * components, 0.0);
   if (accessor.bufferView >= 0) {
     const std::size_t declared_stride =
@@ -80,20 +78,20 @@ std::vector<double> read_accessor(const tinygltf::Model& model, std::size_t inde
   std::vector<double> targets(count);
   const std::size_t index_bytes = static_cast<std::size_t>(
       tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(sparse.indices.componentType)));
-  read_elements(model, sparse.indices.bufferView, static_cast<std::size_t>(sparse.indices.byteOffset),
-                count, 1, sparse.indices.componentType, false, index_bytes, targets.data());
+  read_elements(model, sparse.indices.bufferView, static_cast<std::size_t>(sparse.indices.byteOffset), count,
+                1, sparse.indices.componentType, false, index_bytes, targets.data());
   std::vector<double> replacements(count * components);
-  read_elements(model, sparse.values.bufferView, static_cast<std::size_t>(sparse.values.byteOffset),
-                count, components, accessor.componentType, accessor.normalized, element_bytes,
-                replacements.data());
+  read_elements(model, sparse.values.bufferView, static_cast<std::size_t>(sparse.values.byteOffset), count,
+                components, accessor.componentType, accessor.normalized, element_bytes, replacements.data());
   for (std::size_t i = 0; i < count; ++i) {
     if (targets[i] >= static_cast<double>(accessor.count)) {
       throw SceneError(where, indexed("accessors", index) + ".sparse.indices",
                        "index " + std::to_string(static_cast<std::uint64_t>(targets[i])) +
                            " is not below the accessor's count " + std::to_string(accessor.count));
     }
-    std::copy_n(replacements.begin() + static_cast<std::ptrdiff_t>(i * components), components,
-                values.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(targets[i]) * components));
+    std::copy_n(
+        replacements.begin() + static_cast<std::ptrdiff_t>(i * components), components,
+        values.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(targets[i]) * components));
   }
   return values;
 }

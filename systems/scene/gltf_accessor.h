@@ -12,7 +12,6 @@ namespace sg::scene {
 
 // count * components values, element by element. Throws SceneError when a sparse index is
 // not below the accessor's count.
-std::vector<double> read_accessor(const tinygltf::Model& model, std::size_t index,
-                                  const std::string& where);
+std::vector<double> read_accessor(const tinygltf::Model& model, std::size_t index, const std::string& where);
 
 }  // namespace sg::scene

@@ -46,17 +46,18 @@ ecs::LocalTransform decompose(const glm::mat4& matrix, const std::string& object
     }
   }
   if (error > 1e-4f * magnitude) {
-    warn(scene, object + ": matrix has shear or projection; approximated by translation, "
-                         "rotation and scale");
+    warn(scene, object +
+                    ": matrix has shear or projection; approximated by translation, "
+                    "rotation and scale");
   }
   return local;
 }
 
-ecs::LocalTransform node_transform(const tinygltf::Node& node, const std::string& object,
-                                   Scene& scene) {
+ecs::LocalTransform node_transform(const tinygltf::Node& node, const std::string& object, Scene& scene) {
   if (node.matrix.size() == 16) {
     glm::mat4 matrix;
-    for (int i = 0; i < 16; ++i) matrix[i / 4][i % 4] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < 16; ++i)
+      matrix[i / 4][i % 4] = static_cast<float>(node.matrix[static_cast<std::size_t>(i)]);
     return decompose(matrix, object, scene);
   }
   ecs::LocalTransform local;
@@ -78,9 +79,9 @@ ecs::LocalTransform node_transform(const tinygltf::Node& node, const std::string
 }
 
 class Importer {
-public:
-  Importer(const GltfSource& source, const tinygltf::Model& model,
-           std::vector<ImportedLight> lights, Scene& scene)
+ public:
+  Importer(const GltfSource& source, const tinygltf::Model& model, std::vector<ImportedLight> lights,
+           Scene& scene)
       : source_(source), model_(model), scene_(scene), lights_(std::move(lights)) {}
 
   void run() {
@@ -96,24 +97,26 @@ public:
     }
     std::vector<std::pair<int, ecs::Entity>> pending;  // node, parent entity
     const std::vector<int> roots = root_nodes();
-    for (auto root = roots.rbegin(); root != roots.rend(); ++root) pending.emplace_back(*root, ecs::null_entity);
+    for (auto root = roots.rbegin(); root != roots.rend(); ++root)
+      pending.emplace_back(*root, ecs::null_entity);
     while (!pending.empty()) {
       const auto [index, parent] = pending.back();
       pending.pop_back();
       const ecs::Entity entity = add_node(static_cast<std::size_t>(index), parent);
       const auto& children = model_.nodes[static_cast<std::size_t>(index)].children;
-      for (auto child = children.rbegin(); child != children.rend(); ++child) pending.emplace_back(*child, entity);
+      for (auto child = children.rbegin(); child != children.rend(); ++child)
+        pending.emplace_back(*child, entity);
     }
     ecs::update_world_transforms(scene_.world, 0);
   }
 
-private:
+ private:
   std::vector<int> root_nodes() const {
     if (!model_.scenes.empty()) {
-      const int chosen = model_.defaultScene >= 0 &&
-                                 static_cast<std::size_t>(model_.defaultScene) < model_.scenes.size()
-                             ? model_.defaultScene
-                             : 0;
+      const int chosen =
+          model_.defaultScene >= 0 && static_cast<std::size_t>(model_.defaultScene) < model_.scenes.size()
+              ? model_.defaultScene
+              : 0;
       return model_.scenes[static_cast<std::size_t>(chosen)].nodes;
     }
     std::vector<bool> is_child(model_.nodes.size(), false);

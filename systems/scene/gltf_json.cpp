@@ -6,8 +6,7 @@
 
 namespace sg::scene {
 
-const nlohmann::json& json_array(const nlohmann::json& document, const char* key,
-                                 const std::string& where) {
+const nlohmann::json& json_array(const nlohmann::json& document, const char* key, const std::string& where) {
   static const nlohmann::json empty = nlohmann::json::array();
   const auto found = document.find(key);
   if (found == document.end()) return empty;
@@ -26,8 +25,8 @@ std::optional<std::uint64_t> json_uint(const nlohmann::json& object, const char*
   throw SceneError(where, object_name, std::string(key) + " is not a non-negative integer");
 }
 
-std::optional<double> json_number(const nlohmann::json& object, const char* key,
-                                  const std::string& where, const std::string& object_name) {
+std::optional<double> json_number(const nlohmann::json& object, const char* key, const std::string& where,
+                                  const std::string& object_name) {
   const auto found = object.find(key);
   if (found == object.end()) return std::nullopt;
   if (!found->is_number() || !std::isfinite(found->get<double>())) {

@@ -10,8 +10,7 @@
 namespace sg::scene {
 
 // `document[key]` when it is an array; an empty array when absent; SceneError otherwise.
-const nlohmann::json& json_array(const nlohmann::json& document, const char* key,
-                                 const std::string& where);
+const nlohmann::json& json_array(const nlohmann::json& document, const char* key, const std::string& where);
 
 // An unsigned integer property; nullopt when absent. Throws SceneError when present but not a
 // non-negative integer. `object` names the JSON object in messages, e.g. "buffers[2]".
@@ -20,8 +19,8 @@ std::optional<std::uint64_t> json_uint(const nlohmann::json& object, const char*
 
 // A number property (finite); nullopt when absent. Throws SceneError when present but not a
 // finite number.
-std::optional<double> json_number(const nlohmann::json& object, const char* key,
-                                  const std::string& where, const std::string& object_name);
+std::optional<double> json_number(const nlohmann::json& object, const char* key, const std::string& where,
+                                  const std::string& object_name);
 
 // A string property; nullopt when absent; SceneError when present but not a string.
 std::optional<std::string> json_string(const nlohmann::json& object, const char* key,

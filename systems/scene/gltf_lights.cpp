@@ -24,8 +24,8 @@ const nlohmann::json& light_array(const GltfSource& source) {
   return json_array(*lights, "lights", source.path);
 }
 
-glm::vec3 read_color(const nlohmann::json& light, const GltfSource& source,
-                     const std::string& object, Scene& scene) {
+glm::vec3 read_color(const nlohmann::json& light, const GltfSource& source, const std::string& object,
+                     Scene& scene) {
   const auto found = light.find("color");
   if (found == light.end()) return glm::vec3(1.0f);
   const bool valid = found->is_array() && found->size() == 3 &&
@@ -40,8 +40,8 @@ glm::vec3 read_color(const nlohmann::json& light, const GltfSource& source,
   return clamped;
 }
 
-SpotLight read_spot(const nlohmann::json& light, const GltfSource& source,
-                    const std::string& object, Scene& scene) {
+SpotLight read_spot(const nlohmann::json& light, const GltfSource& source, const std::string& object,
+                    Scene& scene) {
   SpotLight spot;
   spot.inner_cone = 0.0f;
   spot.outer_cone = glm::quarter_pi<float>();  // the extension's defaults
@@ -55,12 +55,12 @@ SpotLight read_spot(const nlohmann::json& light, const GltfSource& source,
   spot.outer_cone = static_cast<float>(
       json_number(*cone, "outerConeAngle", source.path, cone_object).value_or(spot.outer_cone));
   if (spot.inner_cone < 0.0f) {
-    throw SceneError(source.path, cone_object, "innerConeAngle " + std::to_string(spot.inner_cone) + " is negative");
+    throw SceneError(source.path, cone_object,
+                     "innerConeAngle " + std::to_string(spot.inner_cone) + " is negative");
   }
   if (spot.outer_cone <= 0.0f || spot.outer_cone > glm::half_pi<float>()) {
     throw SceneError(source.path, cone_object,
-                     "outerConeAngle " + std::to_string(spot.outer_cone) +
-                         " is outside (0, pi/2]");
+                     "outerConeAngle " + std::to_string(spot.outer_cone) + " is outside (0, pi/2]");
   }
   if (spot.inner_cone > spot.outer_cone) {
     throw SceneError(source.path, cone_object,
@@ -74,8 +74,8 @@ SpotLight read_spot(const nlohmann::json& light, const GltfSource& source,
   return spot;
 }
 
-ImportedLight read_light(const nlohmann::json& light, const GltfSource& source,
-                         const std::string& object, Scene& scene) {
+ImportedLight read_light(const nlohmann::json& light, const GltfSource& source, const std::string& object,
+                         Scene& scene) {
   if (!light.is_object()) throw SceneError(source.path, object, "is not an object");
   const std::string type = json_string(light, "type", source.path, object).value_or("");
   const glm::vec3 color = read_color(light, source, object, scene);
@@ -89,8 +89,7 @@ ImportedLight read_light(const nlohmann::json& light, const GltfSource& source,
     throw SceneError(source.path, object,
                      "range " + std::to_string(*declared_range) + " must be greater than 0");
   }
-  const float range = declared_range ? static_cast<float>(*declared_range)
-                                     : effective_light_range(intensity);
+  const float range = declared_range ? static_cast<float>(*declared_range) : effective_light_range(intensity);
   const auto extras = light.find("extras");
   ImportedLight imported;
   imported.shadow = read_shadow_extras(extras == light.end() ? nlohmann::json() : *extras,
@@ -115,23 +114,20 @@ ImportedLight read_light(const nlohmann::json& light, const GltfSource& source,
 
 }  // namespace
 
-float effective_light_range(float intensity) {
-  return std::max(16.0f * std::sqrt(intensity), 0.01f);
-}
+float effective_light_range(float intensity) { return std::max(16.0f * std::sqrt(intensity), 0.01f); }
 
 std::vector<ImportedLight> read_gltf_lights(const GltfSource& source, Scene& scene) {
   const nlohmann::json& lights = light_array(source);
   std::vector<ImportedLight> imported;
   imported.reserve(lights.size());
   for (std::size_t i = 0; i < lights.size(); ++i) {
-    imported.push_back(read_light(lights[i], source, std::string(extension) + ".lights[" +
-                                                         std::to_string(i) + "]", scene));
+    imported.push_back(
+        read_light(lights[i], source, std::string(extension) + ".lights[" + std::to_string(i) + "]", scene));
   }
   return imported;
 }
 
-std::optional<std::size_t> node_light(const GltfSource& source, std::size_t node,
-                                      std::size_t light_count) {
+std::optional<std::size_t> node_light(const GltfSource& source, std::size_t node, std::size_t light_count) {
   const nlohmann::json& nodes = json_array(source.document, "nodes", source.path);
   if (node >= nodes.size() || !nodes[node].is_object()) return std::nullopt;
   const auto extensions = nodes[node].find("extensions");

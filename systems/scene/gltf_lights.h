@@ -44,7 +44,6 @@ std::vector<ImportedLight> read_gltf_lights(const GltfSource& source, Scene& sce
 
 // The light that nodes[node] references, if any. Throws SceneError when the reference is not
 // an index into the `light_count` lights.
-std::optional<std::size_t> node_light(const GltfSource& source, std::size_t node,
-                                      std::size_t light_count);
+std::optional<std::size_t> node_light(const GltfSource& source, std::size_t node, std::size_t light_count);
 
 }  // namespace sg::scene

@@ -29,8 +29,8 @@ std::vector<Material> import_materials(const tinygltf::Model& model, Scene& scen
     const std::string object = indexed("materials", m);
     Material material;
     if (pbr.baseColorFactor.size() == 4) {
-      const glm::vec4 factor{pbr.baseColorFactor[0], pbr.baseColorFactor[1],
-                             pbr.baseColorFactor[2], pbr.baseColorFactor[3]};
+      const glm::vec4 factor{pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
+                             pbr.baseColorFactor[3]};
       material.base_color = glm::clamp(factor, 0.0f, 1.0f);
       if (material.base_color != factor) warn(scene, object + ": baseColorFactor outside [0, 1]; clamped");
     }

@@ -44,17 +44,16 @@ std::vector<std::uint32_t> read_indices(const tinygltf::Model& model, const tiny
     for (std::size_t i = 0; i < values.size(); ++i) {
       if (values[i] >= static_cast<double>(vertex_count)) {
         throw SceneError(where, indexed("accessors", accessor),
-                         "index " + std::to_string(static_cast<std::uint64_t>(values[i])) +
-                             " at position " + std::to_string(i) + " is out of range: " + object +
-                             " has " + std::to_string(vertex_count) + " vertices");
+                         "index " + std::to_string(static_cast<std::uint64_t>(values[i])) + " at position " +
+                             std::to_string(i) + " is out of range: " + object + " has " +
+                             std::to_string(vertex_count) + " vertices");
       }
       indices.push_back(static_cast<std::uint32_t>(values[i]));
     }
   }
   if (indices.size() % 3 != 0) {
     throw SceneError(where, object,
-                     counted + " " + std::to_string(indices.size()) +
-                         " is not a multiple of 3 (triangles)");
+                     counted + " " + std::to_string(indices.size()) + " is not a multiple of 3 (triangles)");
   }
   return indices;
 }
@@ -63,8 +62,7 @@ std::optional<ImportedPrimitive> import_primitive(const tinygltf::Model& model,
                                                   const tinygltf::Primitive& primitive,
                                                   const std::string& object, Scene& scene) {
   if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1) {
-    warn(scene, object + ": mode " + std::to_string(primitive.mode) +
-                    " is not triangles; skipped");
+    warn(scene, object + ": mode " + std::to_string(primitive.mode) + " is not triangles; skipped");
     return std::nullopt;
   }
   const std::vector<double> positions = read_attribute(model, primitive, "POSITION", scene);
@@ -93,8 +91,7 @@ std::optional<ImportedPrimitive> import_primitive(const tinygltf::Model& model,
 
 }  // namespace
 
-std::vector<std::vector<ImportedPrimitive>> import_meshes(const tinygltf::Model& model,
-                                                          Scene& scene) {
+std::vector<std::vector<ImportedPrimitive>> import_meshes(const tinygltf::Model& model, Scene& scene) {
   std::vector<std::vector<ImportedPrimitive>> meshes(model.meshes.size());
   for (std::size_t m = 0; m < model.meshes.size(); ++m) {
     for (std::size_t p = 0; p < model.meshes[m].primitives.size(); ++p) {

@@ -19,7 +19,6 @@ struct ImportedPrimitive {
 };
 
 // For each glTF mesh, its imported primitives (skipped ones are absent). Throws SceneError.
-std::vector<std::vector<ImportedPrimitive>> import_meshes(const tinygltf::Model& model,
-                                                          Scene& scene);
+std::vector<std::vector<ImportedPrimitive>> import_meshes(const tinygltf::Model& model, Scene& scene);
 
 }  // namespace sg::scene

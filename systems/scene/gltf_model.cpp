@@ -12,8 +12,8 @@ namespace sg::scene {
 namespace {
 
 // tinygltf's LoadImageDataFunction. Checks the header's dimensions before stb allocates.
-bool decode_rgba8(tinygltf::Image* image, const int index, std::string* error, std::string*,
-                  int, int, const unsigned char* bytes, int size, void*) {
+bool decode_rgba8(tinygltf::Image* image, const int index, std::string* error, std::string*, int, int,
+                  const unsigned char* bytes, int size, void*) {
   const std::string object = "images[" + std::to_string(index) + "]";
   int width = 0;
   int height = 0;
@@ -57,13 +57,11 @@ tinygltf::Model parse_gltf_model(const GltfSource& source, Scene& scene) {
   std::string warnings;
   const std::string base_dir = source.base_dir.string();
   const bool loaded =
-      source.binary
-          ? loader.LoadBinaryFromMemory(&model, &error, &warnings, source.bytes.data(),
-                                        static_cast<unsigned int>(source.bytes.size()), base_dir)
-          : loader.LoadASCIIFromString(&model, &error, &warnings,
-                                       reinterpret_cast<const char*>(source.json_text.data()),
-                                       static_cast<unsigned int>(source.json_text.size()),
-                                       base_dir);
+      source.binary ? loader.LoadBinaryFromMemory(&model, &error, &warnings, source.bytes.data(),
+                                                  static_cast<unsigned int>(source.bytes.size()), base_dir)
+                    : loader.LoadASCIIFromString(
+                          &model, &error, &warnings, reinterpret_cast<const char*>(source.json_text.data()),
+                          static_cast<unsigned int>(source.json_text.size()), base_dir);
   std::istringstream lines(warnings);
   for (std::string line; std::getline(lines, line);) {
     if (!line.empty()) warn(scene, "tinygltf: " + line);

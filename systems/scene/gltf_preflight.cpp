@@ -1,8 +1,8 @@
 #include "systems/scene/gltf_preflight.h"
 
 #include <algorithm>
-#include <cctype>
 #include <array>
+#include <cctype>
 #include <string_view>
 #include <vector>
 
@@ -32,8 +32,7 @@ std::string decode_uri(std::string_view uri) {
 }
 
 // The most bytes a base64 data URI can decode to; tinygltf decodes only base64.
-std::uint64_t data_uri_capacity(const GltfSource& source, std::string_view uri,
-                                const std::string& object) {
+std::uint64_t data_uri_capacity(const GltfSource& source, std::string_view uri, const std::string& object) {
   const std::size_t marker = uri.find(";base64,");
   if (marker == std::string_view::npos) {
     throw SceneError(source.path, object, "data URI is not base64");
@@ -69,8 +68,8 @@ std::vector<std::uint64_t> check_buffers(const GltfSource& source) {
     }
     if (*declared > available) {
       throw SceneError(source.path, object,
-                       "byteLength " + std::to_string(*declared) + " exceeds the data: " + origin +
-                           " " + std::to_string(available) + " bytes");
+                       "byteLength " + std::to_string(*declared) + " exceeds the data: " + origin + " " +
+                           std::to_string(available) + " bytes");
     }
     lengths.push_back(*declared);
   }
@@ -92,9 +91,8 @@ void check_buffer_views(const GltfSource& source, const std::vector<std::uint64_
     // Both terms are at most a file size (<= 2^30) or the check below fails on the first.
     if (offset > buffers[*buffer] || *length > buffers[*buffer] - offset) {
       throw SceneError(source.path, object,
-                       "byteOffset " + std::to_string(offset) + " + byteLength " +
-                           std::to_string(*length) + " exceeds buffers[" +
-                           std::to_string(*buffer) + "].byteLength " +
+                       "byteOffset " + std::to_string(offset) + " + byteLength " + std::to_string(*length) +
+                           " exceeds buffers[" + std::to_string(*buffer) + "].byteLength " +
                            std::to_string(buffers[*buffer]));
     }
   }
@@ -109,8 +107,7 @@ void check_images(const GltfSource& source) {
     const auto uri = json_string(images[i], "uri", source.path, object);
     const auto view = json_uint(images[i], "bufferView", source.path, object);
     if (uri && !is_data_uri(*uri)) {
-      checked_file_size(source.base_dir / decode_uri(*uri), source.path,
-                        object + " (missing image file?)");
+      checked_file_size(source.base_dir / decode_uri(*uri), source.path, object + " (missing image file?)");
     } else if (!uri && (!view || *view >= view_count)) {
       throw SceneError(source.path, object, "has neither a uri nor an existing bufferView");
     }
@@ -121,11 +118,10 @@ void check_required_extensions(const GltfSource& source) {
   const nlohmann::json& required = json_array(source.document, "extensionsRequired", source.path);
   for (std::size_t i = 0; i < required.size(); ++i) {
     const std::string name = required[i].is_string() ? required[i].get<std::string>() : "?";
-    if (std::find(supported_required_extensions.begin(), supported_required_extensions.end(),
-                  name) == supported_required_extensions.end()) {
+    if (std::find(supported_required_extensions.begin(), supported_required_extensions.end(), name) ==
+        supported_required_extensions.end()) {
       throw SceneError(source.path, indexed("extensionsRequired", i),
-                       "unsupported required extension \"" + name +
-                           "\" (supported: KHR_lights_punctual)");
+                       "unsupported required extension \"" + name + "\" (supported: KHR_lights_punctual)");
     }
   }
 }

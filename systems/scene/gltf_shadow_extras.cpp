@@ -41,8 +41,7 @@ struct ExtrasReader {
 
 }  // namespace
 
-ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object,
-                                  Scene& scene) {
+ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object, Scene& scene) {
   ShadowSettings settings;
   if (!extras.is_object()) return settings;
   ExtrasReader reader{extras, object, scene};
@@ -56,13 +55,11 @@ ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::strin
     settings.resolution = static_cast<std::uint32_t>(std::lround(*resolution));
   }
   if (const auto found = extras.find("algorithm"); found != extras.end()) {
-    const auto parsed = found->is_string() ? parse_shadow_algorithm(found->get<std::string>())
-                                           : std::nullopt;
+    const auto parsed = found->is_string() ? parse_shadow_algorithm(found->get<std::string>()) : std::nullopt;
     if (parsed) {
       settings.algorithm = *parsed;
     } else {
-      reader.report("algorithm", found->dump() +
-                                     " is not one of hard, pcf, noise, pcss, pcss_noise; using " +
+      reader.report("algorithm", found->dump() + " is not one of hard, pcf, noise, pcss, pcss_noise; using " +
                                      std::string(to_string(settings.algorithm)));
     }
   }
@@ -84,7 +81,8 @@ ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::strin
       for (int c = 0; c < 3; ++c) {
         const float value = (*found)[c].get<float>();
         settings.shadow_color[c] = std::clamp(value, 0.0f, 1.0f);
-        if (settings.shadow_color[c] != value) reader.report("shadow_color", "component outside [0, 1]; clamped");
+        if (settings.shadow_color[c] != value)
+          reader.report("shadow_color", "component outside [0, 1]; clamped");
       }
     }
   }

@@ -11,7 +11,6 @@ namespace sg::scene {
 
 // `extras` may be anything (absent lights pass null); only an object contributes. `object`
 // names the light in warnings, e.g. "KHR_lights_punctual.lights[2]".
-ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object,
-                                  Scene& scene);
+ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object, Scene& scene);
 
 }  // namespace sg::scene

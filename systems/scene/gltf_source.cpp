@@ -9,9 +9,9 @@
 namespace sg::scene {
 namespace {
 
-constexpr std::uint32_t glb_magic = 0x46546C67;       // "glTF"
-constexpr std::uint32_t chunk_type_json = 0x4E4F534A; // "JSON"
-constexpr std::uint32_t chunk_type_bin = 0x004E4942;  // "BIN\0"
+constexpr std::uint32_t glb_magic = 0x46546C67;        // "glTF"
+constexpr std::uint32_t chunk_type_json = 0x4E4F534A;  // "JSON"
+constexpr std::uint32_t chunk_type_bin = 0x004E4942;   // "BIN\0"
 constexpr std::size_t glb_header_bytes = 12;
 constexpr std::size_t chunk_header_bytes = 8;
 
@@ -38,8 +38,7 @@ void frame_glb(GltfSource& source) {
   if (length != size) {
     throw SceneError(source.path, "glb header",
                      (length > size ? "truncated: the header declares " : "the header declares ") +
-                         std::to_string(length) + " bytes but the file has " +
-                         std::to_string(size));
+                         std::to_string(length) + " bytes but the file has " + std::to_string(size));
   }
   const std::uint64_t json_length = read_u32(bytes, 12);
   if (read_u32(bytes, 16) != chunk_type_json) {
@@ -64,8 +63,8 @@ void frame_glb(GltfSource& source) {
   }
   if (bin_length > rest - chunk_header_bytes) {
     throw SceneError(source.path, "glb chunk 1",
-                     "truncated: declares " + std::to_string(bin_length) +
-                         " bytes, the file holds " + std::to_string(rest - chunk_header_bytes));
+                     "truncated: declares " + std::to_string(bin_length) + " bytes, the file holds " +
+                         std::to_string(rest - chunk_header_bytes));
   }
   source.bin_chunk = std::span(bytes).subspan(json_end + chunk_header_bytes, bin_length);
 }
@@ -99,8 +98,7 @@ GltfSource read_gltf_source(const std::string& path) {
   const std::uint64_t size = checked_file_size(path, path, "file");
   source.bytes.resize(size);
   std::ifstream stream(path, std::ios::binary);
-  if (!stream.read(reinterpret_cast<char*>(source.bytes.data()),
-                   static_cast<std::streamsize>(size))) {
+  if (!stream.read(reinterpret_cast<char*>(source.bytes.data()), static_cast<std::streamsize>(size))) {
     throw SceneError(path, "file", "read error");
   }
   source.binary = size >= 4 && read_u32(source.bytes, 0) == glb_magic;

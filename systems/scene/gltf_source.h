@@ -13,10 +13,10 @@
 namespace sg::scene {
 
 struct GltfSource {
-  std::string path;                  // as given; prefixes every error and warning
-  std::filesystem::path base_dir;    // where relative URIs resolve
-  std::vector<unsigned char> bytes;  // the whole file
-  bool binary = false;               // .glb framing (detected by its magic, not the extension)
+  std::string path;                          // as given; prefixes every error and warning
+  std::filesystem::path base_dir;            // where relative URIs resolve
+  std::vector<unsigned char> bytes;          // the whole file
+  bool binary = false;                       // .glb framing (detected by its magic, not the extension)
   std::span<const unsigned char> json_text;  // into bytes
   std::span<const unsigned char> bin_chunk;  // into bytes; empty when the .glb has none
   nlohmann::json document;

@@ -25,29 +25,27 @@ struct Validator {
   }
 
   template <typename T>
-  void require_index(int index, const std::vector<T>& items, const std::string& object,
-                     const char* what, const char* array) const {
+  void require_index(int index, const std::vector<T>& items, const std::string& object, const char* what,
+                     const char* array) const {
     if (index < 0 || static_cast<std::size_t>(index) >= items.size()) {
-      fail(object, std::string(what) + " " + std::to_string(index) + " is not an index into " +
-                       array + " (" + std::to_string(items.size()) + " entries)");
+      fail(object, std::string(what) + " " + std::to_string(index) + " is not an index into " + array + " (" +
+                       std::to_string(items.size()) + " entries)");
     }
   }
 
   // `count` elements of `element_bytes` each, `stride` apart, starting at `offset` in view
   // `view`, must end inside the view. Sizes are compared without overflow: count is first
   // bounded by the view's byteLength (which preflight bounded by a file size).
-  void require_in_view(int view, std::uint64_t offset, std::uint64_t count,
-                       std::uint64_t element_bytes, std::uint64_t stride,
-                       const std::string& object) const {
+  void require_in_view(int view, std::uint64_t offset, std::uint64_t count, std::uint64_t element_bytes,
+                       std::uint64_t stride, const std::string& object) const {
     require_index(view, model.bufferViews, object, "bufferView", "bufferViews");
     const std::uint64_t length = model.bufferViews[static_cast<std::size_t>(view)].byteLength;
-    const std::uint64_t needed =
-        count > length ? UINT64_MAX : offset + (count - 1) * stride + element_bytes;
+    const std::uint64_t needed = count > length ? UINT64_MAX : offset + (count - 1) * stride + element_bytes;
     if (offset > length || needed > length) {
-      fail(object, "byteOffset " + std::to_string(offset) + " + " + std::to_string(count) +
-                       " elements of " + std::to_string(element_bytes) + " bytes, stride " +
-                       std::to_string(stride) + ", exceed bufferViews[" + std::to_string(view) +
-                       "].byteLength " + std::to_string(length));
+      fail(object, "byteOffset " + std::to_string(offset) + " + " + std::to_string(count) + " elements of " +
+                       std::to_string(element_bytes) + " bytes, stride " + std::to_string(stride) +
+                       ", exceed bufferViews[" + std::to_string(view) + "].byteLength " +
+                       std::to_string(length));
     }
   }
 
@@ -72,8 +70,7 @@ struct Validator {
       require_in_view(accessor.bufferView, accessor.byteOffset, accessor.count, element_bytes,
                       declared_stride != 0 ? declared_stride : element_bytes, object);
     } else if (accessor.count > gltf_limits::max_implicit_accessor_elements) {
-      fail(object, "count " + std::to_string(accessor.count) +
-                       " without a bufferView is over the limit of " +
+      fail(object, "count " + std::to_string(accessor.count) + " without a bufferView is over the limit of " +
                        std::to_string(gltf_limits::max_implicit_accessor_elements));
     }
     if (!accessor.sparse.isSparse) return;
@@ -92,10 +89,10 @@ struct Validator {
     const std::uint64_t index_bytes = static_cast<std::uint64_t>(
         tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(sparse.indices.componentType)));
     const auto count = static_cast<std::uint64_t>(sparse.count);
-    require_in_view(sparse.indices.bufferView, static_cast<std::uint64_t>(sparse.indices.byteOffset),
-                    count, index_bytes, index_bytes, sparse_object + ".indices");
-    require_in_view(sparse.values.bufferView, static_cast<std::uint64_t>(sparse.values.byteOffset),
-                    count, element_bytes, element_bytes, sparse_object + ".values");
+    require_in_view(sparse.indices.bufferView, static_cast<std::uint64_t>(sparse.indices.byteOffset), count,
+                    index_bytes, index_bytes, sparse_object + ".indices");
+    require_in_view(sparse.values.bufferView, static_cast<std::uint64_t>(sparse.values.byteOffset), count,
+                    element_bytes, element_bytes, sparse_object + ".values");
   }
 
   void primitive(const tinygltf::Primitive& primitive, const std::string& object) const {
@@ -150,8 +147,9 @@ struct Validator {
         require_index(child, model.nodes, object, "child", "nodes");
         int& child_parent = parent[static_cast<std::size_t>(child)];
         if (child_parent != -1 || static_cast<std::size_t>(child) == i) {
-          fail(object, "child " + std::to_string(child) + " already has a parent (a node may "
-                       "have only one, and never itself)");
+          fail(object, "child " + std::to_string(child) +
+                           " already has a parent (a node may "
+                           "have only one, and never itself)");
         }
         child_parent = static_cast<int>(i);
       }
@@ -161,8 +159,8 @@ struct Validator {
       std::uint32_t depth = 0;
       for (int at = parent[i]; at != -1; at = parent[static_cast<std::size_t>(at)]) {
         if (++depth > gltf_limits::max_node_depth) {
-          fail(indexed("nodes", i), "is in a cycle or deeper than " +
-                                        std::to_string(gltf_limits::max_node_depth) + " levels");
+          fail(indexed("nodes", i),
+               "is in a cycle or deeper than " + std::to_string(gltf_limits::max_node_depth) + " levels");
         }
       }
     }
@@ -174,8 +172,9 @@ struct Validator {
     const tinygltf::PerspectiveCamera& p = camera.perspective;
     const std::string object = indexed("cameras", index);
     if (p.yfov <= 0.0 || p.znear <= 0.0 || p.aspectRatio < 0.0 || (p.zfar != 0.0 && p.zfar <= p.znear)) {
-      fail(object, "needs yfov > 0, znear > 0, zfar > znear (or absent) and aspectRatio > 0 "
-                   "(or absent)");
+      fail(object,
+           "needs yfov > 0, znear > 0, zfar > znear (or absent) and aspectRatio > 0 "
+           "(or absent)");
     }
   }
 

@@ -14,8 +14,8 @@ namespace sg::scene {
 // Distance falloff (ALGORITHMS.md section 2). Built-in scenes use the linear window,
 // imported glTF lights the extension's own windowed inverse square.
 enum class FalloffMode : std::uint8_t {
-  linear_window,    // A = max(1 - d/R, 0)
-  gltf_punctual,    // A = clamp(1 - (d/R)^4, 0, 1)^2 / d^2
+  linear_window,  // A = max(1 - d/R, 0)
+  gltf_punctual,  // A = clamp(1 - (d/R)^4, 0, 1)^2 / d^2
 };
 
 struct PointLight {
@@ -29,8 +29,8 @@ struct SpotLight {
   glm::vec3 color{1.0f};
   float intensity = 1.0f;
   float range = 10.0f;
-  float inner_cone = 0.0f;                     // radians from the axis, < outer_cone
-  float outer_cone = glm::radians(45.0f);      // radians, (0, pi/2]; shadow fov = 2 * outer
+  float inner_cone = 0.0f;                 // radians from the axis, < outer_cone
+  float outer_cone = glm::radians(45.0f);  // radians, (0, pi/2]; shadow fov = 2 * outer
   FalloffMode falloff = FalloffMode::linear_window;
 };
 
@@ -48,9 +48,7 @@ struct CylinderLight {
   float outer_radius = 1.0f;  // R > r; also the half extent of its orthographic shadow map
 };
 
-inline glm::vec3 light_position(const ecs::WorldTransform& world) {
-  return glm::vec3(world.matrix[3]);
-}
+inline glm::vec3 light_position(const ecs::WorldTransform& world) { return glm::vec3(world.matrix[3]); }
 
 // The unit direction the light travels (its world -Z axis).
 inline glm::vec3 light_direction(const ecs::WorldTransform& world) {

@@ -25,8 +25,8 @@ void make_flat_normals(std::vector<Vertex>& vertices, std::vector<std::uint32_t>
   for (std::size_t first = 0; first + 2 < indices.size(); first += 3) {
     const Vertex corners[3] = {vertices[indices[first]], vertices[indices[first + 1]],
                                vertices[indices[first + 2]]};
-    const glm::vec3 cross = glm::cross(corners[1].position - corners[0].position,
-                                       corners[2].position - corners[0].position);
+    const glm::vec3 cross =
+        glm::cross(corners[1].position - corners[0].position, corners[2].position - corners[0].position);
     const float length = glm::length(cross);
     const glm::vec3 normal = length > 0.0f ? cross / length : glm::vec3(0.0f, 1.0f, 0.0f);
     for (Vertex corner : corners) {

@@ -21,11 +21,11 @@ struct Vertex {
 
 struct MeshRange {
   std::string name;
-  std::uint32_t first_index = 0;   // into MeshLibrary::indices
-  std::uint32_t index_count = 0;   // a multiple of 3: triangle lists only
-  std::uint32_t vertex_offset = 0; // added to each index (indices are relative to the mesh)
+  std::uint32_t first_index = 0;    // into MeshLibrary::indices
+  std::uint32_t index_count = 0;    // a multiple of 3: triangle lists only
+  std::uint32_t vertex_offset = 0;  // added to each index (indices are relative to the mesh)
   std::uint32_t vertex_count = 0;
-  Aabb bounds;                     // in the mesh's own space
+  Aabb bounds;  // in the mesh's own space
 };
 
 struct MeshLibrary {

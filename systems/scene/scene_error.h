@@ -9,7 +9,7 @@
 namespace sg::scene {
 
 class SceneError : public std::runtime_error {
-public:
+ public:
   SceneError(const std::string& where, const std::string& object, const std::string& problem)
       : std::runtime_error(where + ": " + object + ": " + problem) {}
 };

@@ -11,9 +11,9 @@ namespace sg::scene {
 
 enum class ShadowAlgorithm : std::uint8_t { hard, pcf, noise, pcss, pcss_noise };
 
-inline constexpr ShadowAlgorithm all_shadow_algorithms[] = {
-    ShadowAlgorithm::hard, ShadowAlgorithm::pcf, ShadowAlgorithm::noise, ShadowAlgorithm::pcss,
-    ShadowAlgorithm::pcss_noise};
+inline constexpr ShadowAlgorithm all_shadow_algorithms[] = {ShadowAlgorithm::hard, ShadowAlgorithm::pcf,
+                                                            ShadowAlgorithm::noise, ShadowAlgorithm::pcss,
+                                                            ShadowAlgorithm::pcss_noise};
 
 // "hard", "pcf", "noise", "pcss", "pcss_noise": the names used by extras and command lines.
 std::string_view to_string(ShadowAlgorithm algorithm);
@@ -23,17 +23,17 @@ std::optional<ShadowAlgorithm> parse_shadow_algorithm(std::string_view name);
 // Biases are in normalized linear depth, so that one value means the same distance anywhere in
 // a map: view depth / far for spot maps, depth across near..far for orthographic maps
 // (directional, cylinder), distance / range for point lights (shaders/shadow_sampling.glsl).
-// The receiver compares with bias = max(slope_bias * (1 - dot(N, L)), constant_bias). The defaults are sized for maps of
-// `resolution` texels over room-sized light volumes (tens of metres): enough to keep acne off
-// lit floors and walls, small enough that contact shadows stay attached (no peter-panning).
+// The receiver compares with bias = max(slope_bias * (1 - dot(N, L)), constant_bias). The defaults are sized
+// for maps of `resolution` texels over room-sized light volumes (tens of metres): enough to keep acne off lit
+// floors and walls, small enough that contact shadows stay attached (no peter-panning).
 struct ShadowSettings {
   ShadowAlgorithm algorithm = ShadowAlgorithm::pcf;
-  float constant_bias = 0.0005f;  // b0
-  float slope_bias = 0.005f;      // b1
-  float pcf_radius = 1.5f;        // texels; the kernel's half width for pcf/noise
-  float light_size = 0.3f;        // world units: the emitter width that scales PCSS penumbrae
-  float density = 1.0f;           // [0, 1]; 0 removes the shadow, 1 the full darkening
-  glm::vec3 shadow_color{0.0f};   // linear RGB blended into shadowed points
+  float constant_bias = 0.0005f;    // b0
+  float slope_bias = 0.005f;        // b1
+  float pcf_radius = 1.5f;          // texels; the kernel's half width for pcf/noise
+  float light_size = 0.3f;          // world units: the emitter width that scales PCSS penumbrae
+  float density = 1.0f;             // [0, 1]; 0 removes the shadow, 1 the full darkening
+  glm::vec3 shadow_color{0.0f};     // linear RGB blended into shadowed points
   std::uint32_t resolution = 1024;  // texels per side requested (a hint to the allocator)
   bool casts_shadow = true;
 };

@@ -22,7 +22,7 @@ constexpr std::uint64_t typical_cell_triangles = 170;  // column, table, chair, 
 // splitmix64: tiny, and its sequence is fixed by the seed on every platform (the standard
 // distributions are not specified bit-exactly across libraries).
 class Random {
-public:
+ public:
   explicit Random(std::uint64_t seed) : state_(seed) {}
   std::uint64_t next() {
     std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
@@ -34,7 +34,7 @@ public:
     return low + (high - low) * static_cast<float>(next() >> 40) * 0x1.0p-24f;
   }
 
-private:
+ private:
   std::uint64_t state_;
 };
 
@@ -53,8 +53,7 @@ struct Hall {
   std::uint64_t triangles = 0;
   std::uint64_t crates = 0;
 
-  ecs::Entity add(std::uint32_t mesh, glm::vec3 center, glm::vec3 size, float yaw,
-                  const Material& material) {
+  ecs::Entity add(std::uint32_t mesh, glm::vec3 center, glm::vec3 size, float yaw, const Material& material) {
     triangles += triangle_count(scene.meshes.meshes[mesh]);
     return add_instance(scene, mesh, {center, glm::angleAxis(yaw, glm::vec3(0, 1, 0)), size}, material);
   }
@@ -126,16 +125,17 @@ Scene build_stress_scene(const BuiltinSceneParams& params) {
       light = add_light(scene, PointLight{color, 1.0f, 2.5f * cell_size}, {position}, shadow,
                         "point " + std::to_string(i));
     } else {
-      const glm::vec3 target = position + glm::vec3(random.uniform(-2, 2), -position.y, random.uniform(-2, 2));
+      const glm::vec3 target =
+          position + glm::vec3(random.uniform(-2, 2), -position.y, random.uniform(-2, 2));
       const float outer = random.uniform(0.4f, 0.8f);
       light = add_light(scene, SpotLight{color, 1.5f, 3.0f * cell_size, 0.8f * outer, outer},
                         {position, look_rotation(position, target), glm::vec3(1.0f)}, shadow,
                         "spot " + std::to_string(i - params.point_lights));
     }
     if (selected(i, params.moving_fraction)) {
-      scene.world.add<OrbitMotion>(light, OrbitMotion{position, random.uniform(1.0f, 3.0f),
-                                                      random.uniform(0.2f, 0.8f),
-                                                      random.uniform(0.0f, glm::two_pi<float>())});
+      scene.world.add<OrbitMotion>(
+          light, OrbitMotion{position, random.uniform(1.0f, 3.0f), random.uniform(0.2f, 0.8f),
+                             random.uniform(0.0f, glm::two_pi<float>())});
     }
   }
   const glm::vec3 center(extent * 0.5f, 0.0f, extent * 0.5f);

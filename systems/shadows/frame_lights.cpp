@@ -29,8 +29,8 @@ scene::ShadowSettings with_overrides(scene::ShadowSettings shadow, const LightOv
 
 // Every light of type Light, with a 2D map from view_of(light, transform) when it casts one.
 template <class Light, class ViewOf, class ReachOf>
-void gather_2d(const ecs::World& world, const LightOverrides& overrides, const char* kind,
-               ViewOf view_of, ReachOf reach_of, FrameLights& out) {
+void gather_2d(const ecs::World& world, const LightOverrides& overrides, const char* kind, ViewOf view_of,
+               ReachOf reach_of, FrameLights& out) {
   world.query<const ecs::WorldTransform, const Light, const scene::ShadowSettings>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform& transform, const Light& light,
           const scene::ShadowSettings& shadow) {
@@ -39,32 +39,30 @@ void gather_2d(const ecs::World& world, const LightOverrides& overrides, const c
         if (!s.casts_shadow) return;
         const auto layer = static_cast<uint32_t>(out.maps.size());
         out.maps.push_back({static_cast<uint32_t>(out.records.size() - 1), layer,
-                            clamp_resolution(s.resolution, max_map_resolution),
-                            view_of(light, transform), reach_of(light, transform),
-                            "shadow " + light_name(world, entity, kind, layer)});
+                            clamp_resolution(s.resolution, max_map_resolution), view_of(light, transform),
+                            reach_of(light, transform), "shadow " + light_name(world, entity, kind, layer)});
         out.map_size = std::max(out.map_size, out.maps.back().resolution);
       });
 }
 
 }  // namespace
 
-void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds,
-                   const LightOverrides& overrides, FrameLights& out) {
+void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
+                   FrameLights& out) {
   out.records.clear();
   out.maps.clear();
   out.cubes.clear();
   out.map_size = min_shadow_resolution;
   out.cube_size = min_shadow_resolution;
-  const scene::Aabb bounds = scene_bounds.empty() ? scene::Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)}
-                                                  : scene_bounds;
+  const scene::Aabb bounds =
+      scene_bounds.empty() ? scene::Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)} : scene_bounds;
   const auto no_range = [](const auto&, const ecs::WorldTransform&) { return unbounded_reach; };
 
   gather_2d<scene::SpotLight>(
       world, overrides, "spot",
       [](const scene::SpotLight& light, const ecs::WorldTransform& transform) {
-        return spot_light_view(scene::light_position(transform),
-                                        scene::light_direction(transform), light.outer_cone,
-                                        light.range);
+        return spot_light_view(scene::light_position(transform), scene::light_direction(transform),
+                               light.outer_cone, light.range);
       },
       [](const scene::SpotLight& light, const ecs::WorldTransform& transform) {
         return glm::vec4(scene::light_position(transform), light.range);
@@ -79,9 +77,8 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds,
   gather_2d<scene::CylinderLight>(
       world, overrides, "cylinder",
       [&](const scene::CylinderLight& light, const ecs::WorldTransform& transform) {
-        return cylinder_light_view(scene::light_position(transform),
-                                            scene::light_direction(transform), light.outer_radius,
-                                            bounds);
+        return cylinder_light_view(scene::light_position(transform), scene::light_direction(transform),
+                                   light.outer_radius, bounds);
       },
       no_range, out);
 
@@ -95,8 +92,7 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds,
         const auto cube = static_cast<uint32_t>(out.cubes.size());
         out.cubes.push_back({static_cast<uint32_t>(out.records.size() - 1), cube,
                              clamp_resolution(s.resolution, max_cube_resolution),
-                             point_light_cube(position, light.range),
-                             glm::vec4(position, light.range),
+                             point_light_cube(position, light.range), glm::vec4(position, light.range),
                              "shadow " + light_name(world, entity, "point", cube)});
         out.cube_size = std::max(out.cube_size, out.cubes.back().requested_resolution);
       });
@@ -110,8 +106,8 @@ ShadowStorageSize needed_storage(const FrameLights& lights) {
 void place_shadow_maps(FrameLights& lights, uint32_t layer_size, uint32_t face_size) {
   for (const ShadowMapView& map : lights.maps) {
     const float scale = float(map.resolution) / float(layer_size);
-    set_shadow_map(lights.records[map.light], map.layer, glm::vec4(0.0f, 0.0f, scale, scale),
-                            map.resolution, map.view);
+    set_shadow_map(lights.records[map.light], map.layer, glm::vec4(0.0f, 0.0f, scale, scale), map.resolution,
+                   map.view);
   }
   for (const ShadowCubeView& cube : lights.cubes) {
     set_shadow_cube(lights.records[cube.light], cube.cube, face_size, cube.views);

@@ -49,7 +49,7 @@ struct ShadowMapView {
 
 struct ShadowCubeView {
   uint32_t light = 0;
-  uint32_t cube = 0;  // layers 6 * cube .. 6 * cube + 5
+  uint32_t cube = 0;                  // layers 6 * cube .. 6 * cube + 5
   uint32_t requested_resolution = 0;  // the light's wish; all faces share the storage's size
   CubeViews views;
   glm::vec4 position_far{0.0f};  // shadow_cube.frag's push constant, and the light's reach
@@ -68,8 +68,8 @@ struct FrameLights {
 // cylinder maps are fitted around `scene_bounds`. Lights whose ShadowSettings::casts_shadow is
 // false, and every light with overrides.shadows off, get no map. The records do not yet say
 // where their maps are (place_shadow_maps).
-void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds,
-                   const LightOverrides& overrides, FrameLights& out);
+void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
+                   FrameLights& out);
 
 // The shadow storage the lights need: a layer per 2D map, a cube per point light, each at least
 // as large as the largest request.

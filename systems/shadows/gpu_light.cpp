@@ -7,9 +7,7 @@ namespace {
 
 std::uint32_t to_gpu(GpuLightType type) { return static_cast<std::uint32_t>(type); }
 std::uint32_t to_gpu(scene::FalloffMode falloff) { return static_cast<std::uint32_t>(falloff); }
-std::uint32_t to_gpu(scene::ShadowAlgorithm algorithm) {
-  return static_cast<std::uint32_t>(algorithm);
-}
+std::uint32_t to_gpu(scene::ShadowAlgorithm algorithm) { return static_cast<std::uint32_t>(algorithm); }
 
 // The fields every light type fills the same way.
 GpuLight common_record(GpuLightType type, glm::vec3 color, float intensity,
@@ -45,8 +43,7 @@ GpuLight pack_light(const scene::SpotLight& light, const ecs::WorldTransform& wo
 
 GpuLight pack_light(const scene::DirectionalLight& light, const ecs::WorldTransform& world,
                     const scene::ShadowSettings& shadow) {
-  GpuLight record =
-      common_record(GpuLightType::directional, light.color, light.intensity, shadow);
+  GpuLight record = common_record(GpuLightType::directional, light.color, light.intensity, shadow);
   record.direction_type = glm::vec4(scene::light_direction(world), 0.0f);
   return record;
 }
@@ -64,8 +61,8 @@ void set_shadow_map(GpuLight& light, std::uint32_t atlas_layer, const glm::vec4&
                     std::uint32_t resolution, const LightView& view) {
   light.info.w = atlas_layer;
   light.shadow_rect = uv_rect;
-  light.shadow_depth = glm::vec4(view.near, view.far, 1.0f / float(resolution),
-                                 view.orthographic ? 1.0f : 0.0f);
+  light.shadow_depth =
+      glm::vec4(view.near, view.far, 1.0f / float(resolution), view.orthographic ? 1.0f : 0.0f);
   light.shadow_matrix = view.view_projection();
 }
 

@@ -26,9 +26,7 @@ glm::mat4 flip_y(glm::mat4 projection) {
   return projection;
 }
 
-float fit_margin(const scene::Aabb& bounds) {
-  return std::max(0.005f * glm::length(bounds.extent()), 1e-3f);
-}
+float fit_margin(const scene::Aabb& bounds) { return std::max(0.005f * glm::length(bounds.extent()), 1e-3f); }
 
 }  // namespace
 
@@ -56,9 +54,8 @@ LightView directional_light_view(glm::vec3 direction, const scene::Aabb& bounds)
   // The light looks down -Z: depth along its axis is -z.
   light.near = -box.max.z - margin;
   light.far = -box.min.z + margin;
-  light.projection = flip_y(glm::orthoRH_ZO(box.min.x - margin, box.max.x + margin,
-                                            box.min.y - margin, box.max.y + margin, light.near,
-                                            light.far));
+  light.projection = flip_y(glm::orthoRH_ZO(box.min.x - margin, box.max.x + margin, box.min.y - margin,
+                                            box.max.y + margin, light.near, light.far));
   return light;
 }
 
@@ -71,8 +68,8 @@ LightView cylinder_light_view(glm::vec3 position, glm::vec3 direction, float out
   const float farthest = bounds.empty() ? 0.0f : -scene::transformed(bounds, light.view).min.z;
   light.near = 0.0f;
   light.far = std::max(farthest, 0.0f) + margin;
-  light.projection = flip_y(glm::orthoRH_ZO(-outer_radius, outer_radius, -outer_radius,
-                                            outer_radius, light.near, light.far));
+  light.projection = flip_y(
+      glm::orthoRH_ZO(-outer_radius, outer_radius, -outer_radius, outer_radius, light.near, light.far));
   return light;
 }
 
@@ -81,18 +78,16 @@ CubeViews point_light_cube(glm::vec3 position, float range) {
     glm::vec3 axis;
     glm::vec3 up;
   };
-  static constexpr Face faces[6] = {
-      {{1, 0, 0}, {0, -1, 0}}, {{-1, 0, 0}, {0, -1, 0}}, {{0, 1, 0}, {0, 0, 1}},
-      {{0, -1, 0}, {0, 0, -1}}, {{0, 0, 1}, {0, -1, 0}}, {{0, 0, -1}, {0, -1, 0}}};
+  static constexpr Face faces[6] = {{{1, 0, 0}, {0, -1, 0}}, {{-1, 0, 0}, {0, -1, 0}},
+                                    {{0, 1, 0}, {0, 0, 1}},  {{0, -1, 0}, {0, 0, -1}},
+                                    {{0, 0, 1}, {0, -1, 0}}, {{0, 0, -1}, {0, -1, 0}}};
   CubeViews cube;
   cube.near = shadow_near_plane(range);
   cube.far = range;
   // No y flip here: see CubeViews in the header.
-  const glm::mat4 projection =
-      glm::perspectiveRH_ZO(glm::radians(90.0f), 1.0f, cube.near, cube.far);
+  const glm::mat4 projection = glm::perspectiveRH_ZO(glm::radians(90.0f), 1.0f, cube.near, cube.far);
   for (int f = 0; f < 6; ++f) {
-    cube.view_projection[f] =
-        projection * glm::lookAtRH(position, position + faces[f].axis, faces[f].up);
+    cube.view_projection[f] = projection * glm::lookAtRH(position, position + faces[f].axis, faces[f].up);
   }
   return cube;
 }

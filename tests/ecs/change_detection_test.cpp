@@ -20,8 +20,7 @@ std::vector<Entity> changed_positions(World& world, Tick since) {
 }
 
 std::vector<Entity> sorted(std::vector<Entity> entities) {
-  std::sort(entities.begin(), entities.end(),
-            [](Entity a, Entity b) { return a.index < b.index; });
+  std::sort(entities.begin(), entities.end(), [](Entity a, Entity b) { return a.index < b.index; });
   return entities;
 }
 

@@ -37,16 +37,18 @@ TEST(Barriers, TransientDepthIsDiscardedThenTransitionedForSampling) {
   ASSERT_EQ(before_lighting.images.size(), 2u) << "depth and swapchain share one batch";
   EXPECT_EQ(before_lighting.images[0].dependency,
             (Dependency{depth_tests, Access::depth_stencil_attachment_write, PipelineStage::fragment_shader,
-                        Access::shader_sampled_read, ImageLayout::attachment_optimal, ImageLayout::read_only_optimal}));
+                        Access::shader_sampled_read, ImageLayout::attachment_optimal,
+                        ImageLayout::read_only_optimal}));
   EXPECT_EQ(before_lighting.images[1].resource, swapchain.index);
   EXPECT_EQ(before_lighting.images[1].dependency,
-            (Dependency{PipelineStage::color_attachment_output, Access::none, PipelineStage::color_attachment_output,
-                        colour_read_write, ImageLayout::undefined, ImageLayout::attachment_optimal}));
+            (Dependency{PipelineStage::color_attachment_output, Access::none,
+                        PipelineStage::color_attachment_output, colour_read_write, ImageLayout::undefined,
+                        ImageLayout::attachment_optimal}));
 
   const ImageBarrier& present = only_image_barrier(plan->final_barriers);
-  EXPECT_EQ(present.dependency,
-            (Dependency{PipelineStage::color_attachment_output, Access::color_attachment_write, PipelineStage::none,
-                        Access::none, ImageLayout::attachment_optimal, ImageLayout::present_src}));
+  EXPECT_EQ(present.dependency, (Dependency{PipelineStage::color_attachment_output,
+                                            Access::color_attachment_write, PipelineStage::none, Access::none,
+                                            ImageLayout::attachment_optimal, ImageLayout::present_src}));
 }
 
 // Rendering face 3 of cube 1 in a cube-map array, then sampling all of cube 1: only layer 9
@@ -74,9 +76,9 @@ TEST_F(CubeFace, OnlyTheRenderedFaceIsTransitioned) {
 
   const ImageBarrier& to_attachment = only_image_barrier(plan->passes[0].barriers);
   EXPECT_EQ(to_attachment.range, (SubresourceRange{0, 1, 9, 1}));
-  EXPECT_EQ(to_attachment.dependency, (Dependency{PipelineStage::fragment_shader, Access::none, depth_tests,
-                                                  depth_read_write, ImageLayout::read_only_optimal,
-                                                  ImageLayout::attachment_optimal}));
+  EXPECT_EQ(to_attachment.dependency,
+            (Dependency{PipelineStage::fragment_shader, Access::none, depth_tests, depth_read_write,
+                        ImageLayout::read_only_optimal, ImageLayout::attachment_optimal}));
 
   const BarrierBatch& before_lighting = plan->passes[1].barriers;
   ASSERT_EQ(before_lighting.images.size(), 2u);
@@ -85,7 +87,8 @@ TEST_F(CubeFace, OnlyTheRenderedFaceIsTransitioned) {
   EXPECT_EQ(to_sampled.dependency.src_access, Access::depth_stencil_attachment_write);
   EXPECT_EQ(to_sampled.dependency.new_layout, ImageLayout::read_only_optimal);
 
-  EXPECT_EQ(plan->final_barriers.images.size(), 1u) << "only the swapchain; the cubes already are in their final state";
+  EXPECT_EQ(plan->final_barriers.images.size(), 1u)
+      << "only the swapchain; the cubes already are in their final state";
   ASSERT_EQ(plan->exported_states.size(), 2u);
   EXPECT_EQ(plan->exported_states[0].states,
             (std::vector<RangeState>{{SubresourceRange{0, 1, 0, 24}, sampled_in_fragment}}));
@@ -145,11 +148,13 @@ TEST(Barriers, ReadsInTheSameLayoutAndStageNeedNoBarrierAndANewStageOnlyVisibili
   });
   const auto plan = compile_ok(graph);
 
-  EXPECT_EQ(only_image_barrier(plan->passes[1].barriers).dependency.new_layout, ImageLayout::read_only_optimal);
+  EXPECT_EQ(only_image_barrier(plan->passes[1].barriers).dependency.new_layout,
+            ImageLayout::read_only_optimal);
   EXPECT_TRUE(plan->passes[2].barriers.empty());
   EXPECT_EQ(only_image_barrier(plan->passes[3].barriers).dependency,
             (Dependency{PipelineStage::fragment_shader, Access::none, PipelineStage::compute_shader,
-                        Access::shader_sampled_read, ImageLayout::read_only_optimal, ImageLayout::read_only_optimal}));
+                        Access::shader_sampled_read, ImageLayout::read_only_optimal,
+                        ImageLayout::read_only_optimal}));
 }
 
 TEST(Barriers, CompatibleReadsInOnePassShareOneBarrier) {
@@ -167,7 +172,8 @@ TEST(Barriers, CompatibleReadsInOnePassShareOneBarrier) {
 
   const ImageBarrier& barrier = only_image_barrier(plan->passes[1].barriers);
   EXPECT_EQ(barrier.dependency.dst_stages, depth_tests | PipelineStage::fragment_shader);
-  EXPECT_EQ(barrier.dependency.dst_access, Access::depth_stencil_attachment_read | Access::shader_sampled_read);
+  EXPECT_EQ(barrier.dependency.dst_access,
+            Access::depth_stencil_attachment_read | Access::shader_sampled_read);
 }
 
 TEST(Barriers, DownsamplingReadsOneMipAndWritesTheNext) {
@@ -208,9 +214,10 @@ TEST(Barriers, BuffersGetBufferBarriersWithoutLayouts) {
 
   EXPECT_TRUE(plan->passes[0].barriers.empty()) << "nothing to wait for before a fresh buffer's first write";
   ASSERT_EQ(plan->passes[1].barriers.buffers.size(), 1u);
-  EXPECT_EQ(plan->passes[1].barriers.buffers[0].dependency,
-            (Dependency{PipelineStage::compute_shader, Access::shader_storage_write, PipelineStage::draw_indirect,
-                        Access::indirect_command_read, ImageLayout::undefined, ImageLayout::undefined}));
+  EXPECT_EQ(
+      plan->passes[1].barriers.buffers[0].dependency,
+      (Dependency{PipelineStage::compute_shader, Access::shader_storage_write, PipelineStage::draw_indirect,
+                  Access::indirect_command_read, ImageLayout::undefined, ImageLayout::undefined}));
   EXPECT_EQ(plan->resources[draws.index].buffer_usage, BufferUsage::storage | BufferUsage::indirect);
 }
 

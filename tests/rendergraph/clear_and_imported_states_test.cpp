@@ -38,8 +38,8 @@ TEST(AttachmentClear, ChangesTheShapeButItsValueDoesNot) {
     RenderGraph graph;
     graph.add_pass("colour", QueueType::graphics, [&](PassBuilder& b) {
       ImageHandle image = b.create_image("image", screen_colour_desc);
-      image = clear ? b.write(image, Usage::colour_attachment, *clear)
-                    : b.write(image, Usage::colour_attachment);
+      image =
+          clear ? b.write(image, Usage::colour_attachment, *clear) : b.write(image, Usage::colour_attachment);
       b.mark_side_effects();
     });
     return graph_shape(graph);
@@ -52,8 +52,8 @@ TEST(AttachmentClear, ChangesTheShapeButItsValueDoesNot) {
 // sampled state the plan left it in.
 CompileResult atlas_frame(ImportedStates& states) {
   RenderGraph graph;
-  ImageHandle atlas = graph.import_image("atlas", shadow_atlas_desc, states.initial_states("atlas"),
-                                         sampled_in_fragment);
+  ImageHandle atlas =
+      graph.import_image("atlas", shadow_atlas_desc, states.initial_states("atlas"), sampled_in_fragment);
   graph.add_pass("spot", QueueType::graphics, [&](PassBuilder& b) {
     atlas = b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(0));
   });

@@ -18,16 +18,20 @@ GraphError only_error(const RenderGraph& graph) {
 class DeclarationErrors : public ::testing::Test {
  protected:
   RenderGraph graph;
-  ImageHandle atlas = graph.import_image("shadow atlas", shadow_atlas_desc, sampled_in_fragment, sampled_in_fragment);
+  ImageHandle atlas =
+      graph.import_image("shadow atlas", shadow_atlas_desc, sampled_in_fragment, sampled_in_fragment);
 };
 
 TEST_F(DeclarationErrors, ReadingAnOldVersionAfterANewerWrite) {
   ImageHandle v1{};
-  graph.add_pass("spot 0", QueueType::graphics,
-                 [&](PassBuilder& b) { v1 = b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(0)); });
-  graph.add_pass("spot 1", QueueType::graphics,
-                 [&](PassBuilder& b) { (void)b.write(v1, Usage::depth_attachment, SubresourceRange::layer(1)); });
-  graph.add_pass("lighting", QueueType::graphics, [&](PassBuilder& b) { b.read(v1, Usage::sampled_fragment); });
+  graph.add_pass("spot 0", QueueType::graphics, [&](PassBuilder& b) {
+    v1 = b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(0));
+  });
+  graph.add_pass("spot 1", QueueType::graphics, [&](PassBuilder& b) {
+    (void)b.write(v1, Usage::depth_attachment, SubresourceRange::layer(1));
+  });
+  graph.add_pass("lighting", QueueType::graphics,
+                 [&](PassBuilder& b) { b.read(v1, Usage::sampled_fragment); });
 
   const GraphError error = only_error(graph);
   EXPECT_EQ(error.kind, ErrorKind::stale_version);
@@ -37,10 +41,12 @@ TEST_F(DeclarationErrors, ReadingAnOldVersionAfterANewerWrite) {
 }
 
 TEST_F(DeclarationErrors, WritingAnOldVersionWouldBranchTheChain) {
-  graph.add_pass("spot 0", QueueType::graphics,
-                 [&](PassBuilder& b) { (void)b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(0)); });
-  graph.add_pass("spot 1", QueueType::graphics,
-                 [&](PassBuilder& b) { (void)b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(1)); });
+  graph.add_pass("spot 0", QueueType::graphics, [&](PassBuilder& b) {
+    (void)b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(0));
+  });
+  graph.add_pass("spot 1", QueueType::graphics, [&](PassBuilder& b) {
+    (void)b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(1));
+  });
 
   const GraphError error = only_error(graph);
   EXPECT_EQ(error.kind, ErrorKind::stale_version);
@@ -117,8 +123,9 @@ TEST_F(DeclarationErrors, UsagesThatDoNotExistInThatDirectionOrKind) {
 }
 
 TEST_F(DeclarationErrors, RangesOutsideTheImage) {
-  graph.add_pass("spot 16", QueueType::graphics,
-                 [&](PassBuilder& b) { (void)b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(16)); });
+  graph.add_pass("spot 16", QueueType::graphics, [&](PassBuilder& b) {
+    (void)b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(16));
+  });
   graph.add_pass("mip 1", QueueType::graphics,
                  [&](PassBuilder& b) { b.read(atlas, Usage::sampled_fragment, SubresourceRange::mip(1)); });
   graph.import_image("cubes", cube_array_desc, {{SubresourceRange::cube(4), sampled_in_fragment}});
@@ -146,8 +153,9 @@ TEST_F(DeclarationErrors, HandlesFromAnotherGraphOrNowhere) {
 
 TEST_F(DeclarationErrors, CompileReportsEveryErrorAndNoPlan) {
   graph.add_pass("a", QueueType::graphics, [&](PassBuilder& b) { b.read(atlas, Usage::colour_attachment); });
-  graph.add_pass("b", QueueType::graphics,
-                 [&](PassBuilder& b) { b.read(atlas, Usage::sampled_fragment, SubresourceRange::layer(99)); });
+  graph.add_pass("b", QueueType::graphics, [&](PassBuilder& b) {
+    b.read(atlas, Usage::sampled_fragment, SubresourceRange::layer(99));
+  });
 
   const CompileResult result = compile(graph);
   EXPECT_FALSE(result.ok());

@@ -41,8 +41,8 @@ TEST(PassContext, AnExecuteFunctionTakingTheRecorderGetsItUnwrapped) {
 
 TEST(PassContext, AnExecuteFunctionTakingAnotherRecorderIsRefusedWhenRun) {
   RenderGraph graph;
-  graph.add_pass("draw", QueueType::compute, [](PassBuilder& b) { b.mark_side_effects(); },
-                 [](const FakeRecorder&) {});
+  graph.add_pass(
+      "draw", QueueType::compute, [](PassBuilder& b) { b.mark_side_effects(); }, [](const FakeRecorder&) {});
   EXPECT_EQ(graph.passes()[0].queue, QueueType::compute);
   int other_recorder = 0;
   PassContext context(other_recorder);

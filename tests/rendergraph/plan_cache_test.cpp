@@ -78,7 +78,8 @@ TEST(PlanCache, KeepsTheMostRecentlyUsedShapes) {
 TEST(PlanCache, DoesNotKeepGraphsWithErrors) {
   PlanCache cache;
   RenderGraph graph;
-  graph.add_pass("bad", QueueType::graphics, [&](PassBuilder& b) { b.read(ImageHandle{}, Usage::sampled_fragment); });
+  graph.add_pass("bad", QueueType::graphics,
+                 [&](PassBuilder& b) { b.read(ImageHandle{}, Usage::sampled_fragment); });
   EXPECT_FALSE(cache.get_or_compile(graph).ok());
   EXPECT_EQ(cache.size(), 0u);
 }

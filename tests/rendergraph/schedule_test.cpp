@@ -17,11 +17,13 @@ std::vector<std::string> executed_names(const CompiledPlan& plan) {
 class FrameSchedule : public ::testing::Test {
  protected:
   FrameSchedule() {
-    ImageHandle atlas = graph.import_image("atlas", shadow_atlas_desc, sampled_in_fragment, sampled_in_fragment);
+    ImageHandle atlas =
+        graph.import_image("atlas", shadow_atlas_desc, sampled_in_fragment, sampled_in_fragment);
     ImageHandle swapchain = graph.import_image("swapchain", screen_colour_desc, acquired, presentable);
     ImageHandle depth{};
-    graph.add_pass("shadow", QueueType::graphics,
-                   [&](PassBuilder& b) { atlas = b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(0)); });
+    graph.add_pass("shadow", QueueType::graphics, [&](PassBuilder& b) {
+      atlas = b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(0));
+    });
     graph.add_pass("gbuffer", QueueType::graphics, [&](PassBuilder& b) {
       depth = b.write(b.create_image("depth", {1280, 720, Format::d32_sfloat}), Usage::depth_attachment);
     });
@@ -103,7 +105,8 @@ TEST(Schedule, APartialWriteKeepsTheWriterOfTheRestAlive) {
 
 TEST(Schedule, AWriterWaitsForTheReadersOfTheVersionItReplaces) {
   RenderGraph graph;
-  ImageHandle history = graph.import_image("history", screen_colour_desc, sampled_in_fragment, sampled_in_fragment);
+  ImageHandle history =
+      graph.import_image("history", screen_colour_desc, sampled_in_fragment, sampled_in_fragment);
   graph.add_pass("reproject", QueueType::graphics, [&](PassBuilder& b) {
     b.read(history, Usage::sampled_fragment);
     b.mark_side_effects();

@@ -26,7 +26,8 @@ TEST(Advance, FirstWriteOfAFreshImageDiscardsFromUndefinedWithoutWaiting) {
 
 TEST(Advance, FirstWriteOfAFreshBufferNeedsNoBarrier) {
   SyncState state;
-  EXPECT_FALSE(advance(state, {PipelineStage::compute_shader, Access::shader_storage_write, ImageLayout::undefined}));
+  EXPECT_FALSE(
+      advance(state, {PipelineStage::compute_shader, Access::shader_storage_write, ImageLayout::undefined}));
 }
 
 TEST(Advance, ReadAfterWriteMakesTheWriteAvailableAndTransitions) {
@@ -83,8 +84,8 @@ TEST(ReusedMemoryState, WaitsForThePreviousOwnerButKeepsNothing) {
   advance(previous, sampled_in_fragment);
   SyncState state = reused_memory_state(previous);
   EXPECT_EQ(state.layout, ImageLayout::undefined);
-  const auto dependency = advance(state, {PipelineStage::color_attachment_output, colour_read_write,
-                                          ImageLayout::attachment_optimal});
+  const auto dependency = advance(
+      state, {PipelineStage::color_attachment_output, colour_read_write, ImageLayout::attachment_optimal});
   ASSERT_TRUE(dependency);
   EXPECT_EQ(dependency->src_stages, PipelineStage::fragment_shader);
   EXPECT_EQ(dependency->old_layout, ImageLayout::undefined);

@@ -24,11 +24,12 @@ inline constexpr Access depth_read_write =
 inline constexpr Access colour_read_write = Access::color_attachment_read | Access::color_attachment_write;
 
 // How a shadow map is left for the lighting pass of the next frame.
-inline constexpr ResourceState sampled_in_fragment{PipelineStage::fragment_shader, Access::shader_sampled_read,
-                                                   ImageLayout::read_only_optimal};
+inline constexpr ResourceState sampled_in_fragment{
+    PipelineStage::fragment_shader, Access::shader_sampled_read, ImageLayout::read_only_optimal};
 inline constexpr ResourceState presentable{PipelineStage::none, Access::none, ImageLayout::present_src};
 // A swapchain image right after acquire: its semaphore wait is at colour attachment output.
-inline constexpr ResourceState acquired{PipelineStage::color_attachment_output, Access::none, ImageLayout::undefined};
+inline constexpr ResourceState acquired{PipelineStage::color_attachment_output, Access::none,
+                                        ImageLayout::undefined};
 
 // A substring check that prints the whole message when it fails.
 inline ::testing::AssertionResult mentions(const std::string& message, std::string_view text) {

@@ -43,8 +43,8 @@ TEST(SandboxOptions, DefaultsComeFromTheSceneLibrary) {
 
 TEST(SandboxOptions, ExistingOptionsStillWork) {
   const Options options =
-      parse_ok({"--headless", "--width", "320", "--height", "200", "--frames", "5", "--screenshot",
-                "a.png", "--device", "llvmpipe", "--validation", "--no-vsync"});
+      parse_ok({"--headless", "--width", "320", "--height", "200", "--frames", "5", "--screenshot", "a.png",
+                "--device", "llvmpipe", "--validation", "--no-vsync"});
   EXPECT_TRUE(options.headless);
   EXPECT_EQ(options.width, 320u);
   EXPECT_EQ(options.height, 200u);
@@ -63,25 +63,25 @@ TEST(SandboxOptions, ShadowOptions) {
   EXPECT_FALSE(defaults.depth_overlay);
   EXPECT_TRUE(defaults.dump_shadow_maps.empty());
 
-  const Options options = parse_ok({"--algorithm", "pcss_noise", "--shadows", "off", "--cube-shadows",
-                                    "six", "--depth-overlay", "--dump-shadow-maps", "maps"});
+  const Options options = parse_ok({"--algorithm", "pcss_noise", "--shadows", "off", "--cube-shadows", "six",
+                                    "--depth-overlay", "--dump-shadow-maps", "maps"});
   EXPECT_EQ(options.algorithm, scene::ShadowAlgorithm::pcss_noise);
   EXPECT_FALSE(options.shadows);
   EXPECT_EQ(options.cube_shadows, shadows::CubeShadowMode::six_passes);
   EXPECT_TRUE(options.depth_overlay);
   EXPECT_EQ(options.dump_shadow_maps, "maps");
 
-  for (const std::vector<std::string>& bad :
-       {std::vector<std::string>{"--algorithm", "soft"}, {"--shadows", "maybe"}, {"--cube-shadows", "five"}}) {
+  for (const std::vector<std::string>& bad : {std::vector<std::string>{"--algorithm", "soft"},
+                                              {"--shadows", "maybe"},
+                                              {"--cube-shadows", "five"}}) {
     EXPECT_EQ(parse(bad).exit_code, 2) << bad[0];
   }
 }
 
 TEST(SandboxOptions, SceneOptions) {
   const Options options =
-      parse_ok({"--scene", "stress", "--scene-triangles", "5000", "--point-lights", "4",
-                "--spot-lights", "0", "--moving-lights", "0.5", "--seed", "42", "--stats",
-                "out.json"});
+      parse_ok({"--scene", "stress", "--scene-triangles", "5000", "--point-lights", "4", "--spot-lights", "0",
+                "--moving-lights", "0.5", "--seed", "42", "--stats", "out.json"});
   EXPECT_EQ(options.scene, "stress");
   EXPECT_EQ(options.scene_params.triangles, 5000u);
   EXPECT_EQ(options.scene_params.point_lights, 4u);
@@ -94,8 +94,8 @@ TEST(SandboxOptions, SceneOptions) {
 
 TEST(SandboxOptions, BoundaryValuesAreAccepted) {
   const Options options = parse_ok({"--scene-triangles", std::to_string(max_scene_triangles),
-                                    "--point-lights", std::to_string(max_lights_per_type),
-                                    "--moving-lights", "1", "--seed", "18446744073709551615"});
+                                    "--point-lights", std::to_string(max_lights_per_type), "--moving-lights",
+                                    "1", "--seed", "18446744073709551615"});
   EXPECT_EQ(options.scene_params.triangles, max_scene_triangles);
   EXPECT_EQ(options.scene_params.point_lights, max_lights_per_type);
   EXPECT_EQ(options.scene_params.moving_fraction, 1.0f);
@@ -153,8 +153,7 @@ TEST(SandboxOptions, ImpossibleValuesAreUsageErrors) {
     const std::string command_line = refusal.args[0] + (refusal.args.size() > 1 ? " " + refusal.args[1] : "");
     EXPECT_FALSE(result.options.has_value()) << command_line;
     EXPECT_EQ(result.exit_code, 2) << command_line;
-    EXPECT_NE(printed.find(refusal.message), std::string::npos)
-        << command_line << " printed: " << printed;
+    EXPECT_NE(printed.find(refusal.message), std::string::npos) << command_line << " printed: " << printed;
   }
 }
 
@@ -164,8 +163,8 @@ TEST(SandboxOptions, HelpExitsWithZero) {
   const std::string printed = testing::internal::GetCapturedStdout();
   EXPECT_FALSE(result.options.has_value());
   EXPECT_EQ(result.exit_code, 0);
-  for (const char* option : {"--scene", "--camera", "--scene-triangles", "--point-lights",
-                             "--spot-lights", "--moving-lights", "--seed", "--stats"}) {
+  for (const char* option : {"--scene", "--camera", "--scene-triangles", "--point-lights", "--spot-lights",
+                             "--moving-lights", "--seed", "--stats"}) {
     EXPECT_NE(printed.find(option), std::string::npos) << option;
   }
 }

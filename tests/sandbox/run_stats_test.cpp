@@ -92,11 +92,9 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(scene.at("triangles"), 250'123);
   EXPECT_EQ(scene.at("entities"), 4'321);
   EXPECT_EQ(scene.at("mesh_instances"), 1'234);
-  EXPECT_EQ(scene.at("lights"), nlohmann::json({{"point", 32},
-                                                {"spot", 31},
-                                                {"directional", 1},
-                                                {"cylinder", 2},
-                                                {"shadow_casting", 60}}));
+  EXPECT_EQ(scene.at("lights"),
+            nlohmann::json(
+                {{"point", 32}, {"spot", 31}, {"directional", 1}, {"cylinder", 2}, {"shadow_casting", 60}}));
   expect_summary(json.at("cpu_frame_ms"), *stats.cpu_frame_ms);
   expect_summary(json.at("gpu_frame_ms"), *stats.gpu_frame_ms);
   const nlohmann::json& passes = json.at("passes");

@@ -17,8 +17,8 @@ using scene::test::TempDir;
 
 void expect_near(const glm::vec3& actual, const glm::vec3& expected) {
   EXPECT_LT(glm::length(actual - expected), 1e-5f)
-      << "(" << actual.x << ", " << actual.y << ", " << actual.z << ") vs (" << expected.x
-      << ", " << expected.y << ", " << expected.z << ")";
+      << "(" << actual.x << ", " << actual.y << ", " << actual.z << ") vs (" << expected.x << ", "
+      << expected.y << ", " << expected.z << ")";
 }
 
 // One triangle at the origin, and optionally a perspective camera node at (1, 2, 3) turned
@@ -28,8 +28,8 @@ std::string write_scene(const TempDir& dir, bool with_camera, const char* camera
   const int mesh = file.add_mesh({{"POSITION", file.add_triangle_positions()}});
   file.add_node({{"mesh", mesh}});
   if (with_camera) {
-    file.document["cameras"] = {{{"type", "perspective"},
-                                 {"perspective", {{"yfov", 0.7}, {"znear", 0.1}, {"zfar", 50}}}}};
+    file.document["cameras"] = {
+        {{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}, {"zfar", 50}}}}};
     const float half = std::sqrt(0.5f);
     nlohmann::json node = {{"camera", 0}, {"translation", {1, 2, 3}}, {"rotation", {0, half, 0, half}}};
     if (camera_name) node["name"] = camera_name;

@@ -66,9 +66,10 @@ TEST(Camera, AddedCameraLooksAtItsTarget) {
   EXPECT_NEAR(glm::dot(forward, expected), 1.0f, 1e-5f);
   EXPECT_EQ(light_position(transform), pose.eye);
   // Straight down works too (up vector fallback).
-  EXPECT_NEAR(glm::dot(glm::vec3(glm::mat4_cast(look_rotation({0, 5, 0}, {0, 0, 0})) * glm::vec4(0, 0, -1, 0)),
-                       glm::vec3(0, -1, 0)),
-              1.0f, 1e-5f);
+  EXPECT_NEAR(
+      glm::dot(glm::vec3(glm::mat4_cast(look_rotation({0, 5, 0}, {0, 0, 0})) * glm::vec4(0, 0, -1, 0)),
+               glm::vec3(0, -1, 0)),
+      1.0f, 1e-5f);
 }
 
 TEST(ShadowSettingsNames, RoundTripAndRefuseUnknown) {

@@ -28,7 +28,8 @@ void expect_refused(const std::filesystem::path& path, const std::vector<std::st
     const std::string message = error.what();
     EXPECT_NE(message.find(path.string()), std::string::npos) << message;
     for (const std::string& fragment : fragments) {
-      EXPECT_NE(message.find(fragment), std::string::npos) << "missing \"" << fragment << "\" in: " << message;
+      EXPECT_NE(message.find(fragment), std::string::npos)
+          << "missing \"" << fragment << "\" in: " << message;
     }
   }
 }
@@ -99,8 +100,8 @@ TEST(GltfErrors, DeclaredOneTebibyteBufferIsRefusedBeforeAllocating) {
   TempDir dir;
   const std::uint64_t tebibyte = std::uint64_t{1} << 40;
   GltfWriter file = triangle_file();
-  file.document["buffers"] = {{{"byteLength", tebibyte},
-                               {"uri", "data:application/octet-stream;base64," + test::base64(file.blob)}}};
+  file.document["buffers"] = {
+      {{"byteLength", tebibyte}, {"uri", "data:application/octet-stream;base64," + test::base64(file.blob)}}};
   expect_refused(file.write_gltf(dir, "huge"), {"buffers[0]", "byteLength 1099511627776 exceeds the data"});
   GltfWriter binary = triangle_file();
   binary.document["buffers"] = {{{"byteLength", tebibyte}}};
@@ -120,8 +121,7 @@ TEST(GltfErrors, NonFinitePosition) {
 // transform, camera or light value can be non-finite.
 TEST(GltfErrors, OverflowingJsonNumber) {
   TempDir dir;
-  const std::string text =
-      R"({"asset":{"version":"2.0"},"nodes":[{"translation":[0,1e999,0]}]})";
+  const std::string text = R"({"asset":{"version":"2.0"},"nodes":[{"translation":[0,1e999,0]}]})";
   test::write_file(dir.path("inf.gltf"), text);
   expect_refused(dir.path("inf.gltf"), {"JSON: does not parse", "overflow"});
 }
@@ -153,7 +153,9 @@ TEST(GltfErrors, EachBadLightValue) {
   const std::vector<BadLight> cases = {
       {"negative_range", {{"type", "point"}, {"range", -1}}, {"lights[0]", "range -1", "greater than 0"}},
       {"zero_range", {{"type", "point"}, {"range", 0}}, {"lights[0]", "must be greater than 0"}},
-      {"negative_intensity", {{"type", "point"}, {"intensity", -2}}, {"lights[0]", "intensity -2", "negative"}},
+      {"negative_intensity",
+       {{"type", "point"}, {"intensity", -2}},
+       {"lights[0]", "intensity -2", "negative"}},
       {"inner_above_outer",
        {{"type", "spot"}, {"spot", {{"innerConeAngle", 0.6}, {"outerConeAngle", 0.4}}}},
        {"lights[0].spot", "innerConeAngle 0.6", "greater than outerConeAngle 0.4"}},
@@ -182,7 +184,8 @@ TEST(GltfErrors, NodeReferencingAMissingLight) {
   GltfWriter file;
   file.add_light({{"type", "point"}});
   file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 3}}}}}});
-  expect_refused(file.write_gltf(dir, "dangling"), {"nodes[0]", "references light 3", "does not exist (1 lights)"});
+  expect_refused(file.write_gltf(dir, "dangling"),
+                 {"nodes[0]", "references light 3", "does not exist (1 lights)"});
 }
 
 // Structural damage to a valid one-triangle file, one class per case.
@@ -194,22 +197,33 @@ struct Damage {
 
 TEST(GltfErrors, EachStructuralDamage) {
   const std::vector<Damage> cases = {
-      {"accessor_longer_than_view", [](GltfWriter& f) { f.document["accessors"][0]["count"] = 4; },
+      {"accessor_longer_than_view",
+       [](GltfWriter& f) { f.document["accessors"][0]["count"] = 4; },
        {"accessors[0]", "exceed bufferViews[0].byteLength 36"}},
-      {"accessor_offset_past_view", [](GltfWriter& f) { f.document["accessors"][0]["byteOffset"] = 4; },
+      {"accessor_offset_past_view",
+       [](GltfWriter& f) { f.document["accessors"][0]["byteOffset"] = 4; },
        {"accessors[0]", "byteOffset 4"}},
-      {"stride_below_element", [](GltfWriter& f) { f.document["bufferViews"][0]["byteStride"] = 8; },
+      {"stride_below_element",
+       [](GltfWriter& f) { f.document["bufferViews"][0]["byteStride"] = 8; },
        {"accessors[0]", "byteStride 8 is smaller than the element size 12"}},
-      {"view_outside_buffer", [](GltfWriter& f) { f.document["bufferViews"][0]["byteLength"] = 40; },
+      {"view_outside_buffer",
+       [](GltfWriter& f) { f.document["bufferViews"][0]["byteLength"] = 40; },
        {"bufferViews[0]", "exceeds buffers[0].byteLength 36"}},
-      {"huge_implicit_accessor", [](GltfWriter& f) { f.add_accessor(-1, f32, std::size_t{1} << 40, "VEC3"); },
+      {"huge_implicit_accessor",
+       [](GltfWriter& f) { f.add_accessor(-1, f32, std::size_t{1} << 40, "VEC3"); },
        {"accessors[1]", "without a bufferView is over the limit"}},
-      {"dangling_mesh", [](GltfWriter& f) { f.document["nodes"][0]["mesh"] = 7; },
+      {"dangling_mesh",
+       [](GltfWriter& f) { f.document["nodes"][0]["mesh"] = 7; },
        {"nodes[0]", "mesh 7 is not an index into meshes"}},
       {"unsupported_required_extension",
-       [](GltfWriter& f) { f.document["extensionsRequired"] = {"KHR_lights_punctual", "KHR_draco_mesh_compression"}; },
+       [](GltfWriter& f) {
+         f.document["extensionsRequired"] = {"KHR_lights_punctual", "KHR_draco_mesh_compression"};
+       },
        {"extensionsRequired[1]", "unsupported required extension \"KHR_draco_mesh_compression\""}},
-      {"missing_image_file", [](GltfWriter& f) { f.document["images"] = {{{"uri", "nowhere.png"}}}; },
+      {"missing_image_file",
+       [](GltfWriter& f) {
+         f.document["images"] = {{{"uri", "nowhere.png"}}};
+       },
        {"images[0]", "missing image file", "nowhere.png"}},
       {"undecodable_image",
        [](GltfWriter& f) {

@@ -100,8 +100,8 @@ TEST(GltfImport, InterleavedAttributesWithByteStride) {
   TempDir dir;
   GltfWriter file;
   // position xyz, normal xyz, uv: 8 floats per vertex.
-  const std::vector<float> interleaved = {0, 0, 0, 0, 0, 1, 0.0f, 0.0f,   //
-                                          2, 0, 0, 0, 0, 1, 1.0f, 0.0f,   //
+  const std::vector<float> interleaved = {0, 0, 0, 0, 0, 1, 0.0f, 0.0f,  //
+                                          2, 0, 0, 0, 0, 1, 1.0f, 0.0f,  //
                                           0, 3, 0, 0, 0, 1, 0.0f, 0.5f};
   const int view = file.add_view(interleaved, 32);
   const int position = file.add_accessor(view, f32, 3, "VEC3", 0);
@@ -150,7 +150,8 @@ TEST(GltfImport, SparseAccessorReplacesListedElements) {
   const int implicit = file.add_accessor(-1, f32, 3, "VEC3");
   file.document["accessors"][implicit]["sparse"] = {
       {"count", 1},
-      {"indices", {{"bufferView", file.add_view(std::vector<std::uint16_t>{2, 0})}, {"componentType", test::u16}}},
+      {"indices",
+       {{"bufferView", file.add_view(std::vector<std::uint16_t>{2, 0})}, {"componentType", test::u16}}},
       {"values", {{"bufferView", file.add_view(std::vector<float>{0, 0, 1})}}}};
   file.add_node({{"mesh", file.add_mesh({{"POSITION", base}, {"NORMAL", implicit}})}});
   Scene scene = load_gltf(file.write_gltf(dir, "sparse").string());
@@ -168,8 +169,8 @@ TEST(GltfImport, HierarchyComposesTrsAndMatrixTransforms) {
   const int mesh = file.add_mesh({{"POSITION", file.add_triangle_positions()}});
   // Parent: translate (10, 0, 0) and turn 90 degrees about +Y, as a column-major matrix.
   const nlohmann::json matrix = {0, 0, -1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 10, 0, 0, 1};
-  file.document["nodes"].push_back({{"name", "child"}, {"translation", {0, 0, 1}},
-                                    {"scale", {2, 2, 2}}, {"mesh", mesh}});
+  file.document["nodes"].push_back(
+      {{"name", "child"}, {"translation", {0, 0, 1}}, {"scale", {2, 2, 2}}, {"mesh", mesh}});
   const int parent = file.add_node({{"name", "parent"}, {"matrix", matrix}, {"children", {0}}});
   (void)parent;
   Scene scene = load_gltf(file.write_gltf(dir, "hierarchy").string());
@@ -201,16 +202,16 @@ TEST(GltfImport, BaseColourFactorAndTexture) {
   GltfWriter file;
   // A 1x1 red PNG, as stb_image_write would produce it.
   const std::vector<std::uint8_t> png = {
-      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44,
-      0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x02, 0x00, 0x00, 0x00, 0x90,
-      0x77, 0x53, 0xde, 0x00, 0x00, 0x00, 0x0c, 0x49, 0x44, 0x41, 0x54, 0x08, 0xd7, 0x63, 0xf8,
-      0xcf, 0xc0, 0x00, 0x00, 0x03, 0x01, 0x01, 0x00, 0x18, 0xdd, 0x8d, 0xb0, 0x00, 0x00, 0x00,
-      0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
+      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+      0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x02, 0x00, 0x00,
+      0x00, 0x90, 0x77, 0x53, 0xde, 0x00, 0x00, 0x00, 0x0c, 0x49, 0x44, 0x41, 0x54, 0x08,
+      0xd7, 0x63, 0xf8, 0xcf, 0xc0, 0x00, 0x00, 0x03, 0x01, 0x01, 0x00, 0x18, 0xdd, 0x8d,
+      0xb0, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82};
   file.document["images"] = {{{"uri", "data:image/png;base64," + test::base64(png)}, {"name", "red"}}};
   file.document["textures"] = {{{"source", 0}}};
   file.document["materials"] = {
-      {{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 1.0}},
-                                 {"baseColorTexture", {{"index", 0}}}}}},
+      {{"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.2, 0.4, 0.6, 1.0}}, {"baseColorTexture", {{"index", 0}}}}}},
       {{"pbrMetallicRoughness", {{"baseColorFactor", {2.0, 0.5, 0.5, 1.0}}}}}};
   file.add_node({{"mesh", file.add_mesh({{"POSITION", file.add_triangle_positions()}}, -1, 0)}});
   file.add_node({{"mesh", file.add_mesh({{"POSITION", file.add_triangle_positions()}}, -1, 1)}});
@@ -255,12 +256,23 @@ TEST(GltfImport, PerspectiveCameraAndSkippedOrthographic) {
 TEST(GltfImport, EachLightTypeWithShadowExtras) {
   TempDir dir;
   GltfWriter file;
-  file.add_light({{"type", "point"}, {"color", {1, 0.5, 0.25}}, {"intensity", 20}, {"range", 8},
-                  {"extras", {{"algorithm", "pcss"}, {"bias", 0.002}, {"slope_bias", 0.01},
-                              {"pcf_radius", 2.5}, {"light_size", 0.7}, {"density", 0.5},
-                              {"shadow_color", {0.1, 0.2, 0.3}}, {"resolution", 512},
-                              {"casts_shadow", false}}}});
-  file.add_light({{"type", "spot"}, {"intensity", 4}, {"range", 12},
+  file.add_light({{"type", "point"},
+                  {"color", {1, 0.5, 0.25}},
+                  {"intensity", 20},
+                  {"range", 8},
+                  {"extras",
+                   {{"algorithm", "pcss"},
+                    {"bias", 0.002},
+                    {"slope_bias", 0.01},
+                    {"pcf_radius", 2.5},
+                    {"light_size", 0.7},
+                    {"density", 0.5},
+                    {"shadow_color", {0.1, 0.2, 0.3}},
+                    {"resolution", 512},
+                    {"casts_shadow", false}}}});
+  file.add_light({{"type", "spot"},
+                  {"intensity", 4},
+                  {"range", 12},
                   {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}},
                   {"extras", {{"algorithm", "noise"}}}});
   file.add_light({{"type", "directional"}, {"intensity", 3}, {"extras", {{"algorithm", "hard"}}}});
@@ -340,7 +352,8 @@ TEST(GltfImport, LightDefaultsWithoutExtrasOrRange) {
 TEST(GltfImport, OddLightValuesAreClampedWithWarnings) {
   TempDir dir;
   GltfWriter file;
-  file.add_light({{"type", "spot"}, {"color", {2, 0.5, -1}},
+  file.add_light({{"type", "spot"},
+                  {"color", {2, 0.5, -1}},
                   {"spot", {{"innerConeAngle", 0.5}, {"outerConeAngle", 0.5}}},
                   {"extras", {{"algorithm", "soft"}, {"density", 3}, {"resolution", 1e9}}}});
   file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});

@@ -104,8 +104,7 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   write_file(path, text.data(), text.size());
 }
 
-std::filesystem::path GltfWriter::write_gltf(const TempDir& dir, const std::string& name,
-                                             Buffer buffer) {
+std::filesystem::path GltfWriter::write_gltf(const TempDir& dir, const std::string& name, Buffer buffer) {
   nlohmann::json out = document;
   if (!blob.empty() && out["buffers"].empty()) {
     nlohmann::json entry = {{"byteLength", blob.size()}};

@@ -13,14 +13,14 @@ namespace sg::scene::test {
 
 // A fresh, empty directory under the system temp dir, removed on destruction.
 class TempDir {
-public:
+ public:
   TempDir();
   ~TempDir();
   TempDir(const TempDir&) = delete;
   TempDir& operator=(const TempDir&) = delete;
   std::filesystem::path path(const std::string& file) const { return root_ / file; }
 
-private:
+ private:
   std::filesystem::path root_;
 };
 
@@ -30,7 +30,7 @@ inline constexpr int u32 = 5125;
 inline constexpr int f32 = 5126;
 
 class GltfWriter {
-public:
+ public:
   GltfWriter();
 
   nlohmann::json document;
@@ -46,7 +46,7 @@ public:
                    std::size_t byte_offset = 0, bool normalized = false);
   // A mesh with one triangle primitive; `attributes` maps names to accessors; indices < 0: none.
   int add_mesh(const nlohmann::json& attributes, int indices = -1, int material = -1);
-  int add_node(const nlohmann::json& node);  // also listed as a root of scene 0
+  int add_node(const nlohmann::json& node);    // also listed as a root of scene 0
   int add_light(const nlohmann::json& light);  // into KHR_lights_punctual.lights
 
   // The unit right triangle (0,0,0), (1,0,0), (0,1,0) with normals +Z: positions accessor.

@@ -18,8 +18,8 @@ std::string shared_asset(const std::string& relative) {
   return std::filesystem::exists(path) ? path.string() : std::string();
 }
 
-#define LOAD_SHARED_OR_SKIP(variable, relative)                                  \
-  const std::string variable##_path = shared_asset(relative);                    \
+#define LOAD_SHARED_OR_SKIP(variable, relative)                                     \
+  const std::string variable##_path = shared_asset(relative);                       \
   if (variable##_path.empty()) GTEST_SKIP() << "shared asset absent: " << relative; \
   Scene variable = load_gltf(variable##_path)
 

@@ -1,8 +1,8 @@
 // Packing lights from their components into GPU records.
 #include <cmath>
 
-#include <glm/glm.hpp>
 #include <gtest/gtest.h>
+#include <glm/glm.hpp>
 
 #include "systems/scene/camera.h"
 #include "systems/shadows/gpu_light.h"

@@ -2,8 +2,8 @@
 // the light views' actual projections.
 #include <cmath>
 
-#include <glm/glm.hpp>
 #include <gtest/gtest.h>
+#include <glm/glm.hpp>
 
 #include "systems/shadows/light_formulas.h"
 #include "systems/shadows/light_views.h"
@@ -121,8 +121,7 @@ TEST(LightFormulas, CubeTexelWorldSizeIsOneTexelOfAFaceCentre) {
   const float texel_uv = 1.0f / 512.0f, distance = 3.0f;
   const glm::vec3 centre = light + glm::vec3(0, 0, -distance);  // face 5 (-Z)
   const glm::vec3 next = centre + glm::vec3(cube_texel_world_size(distance, texel_uv), 0, 0);
-  EXPECT_NEAR(glm::length(map_uv(cube.view_projection[5], next) -
-                          map_uv(cube.view_projection[5], centre)),
+  EXPECT_NEAR(glm::length(map_uv(cube.view_projection[5], next) - map_uv(cube.view_projection[5], centre)),
               texel_uv, 1e-6f);
 }
 

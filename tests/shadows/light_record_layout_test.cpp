@@ -25,7 +25,7 @@ std::string read_text(const char* path) {
 
 struct Reflection {
   std::map<std::string, long> member_offsets;  // Light member name -> offset
-  long block_size = -1;                         // the Lights block
+  long block_size = -1;                        // the Lights block
   long array_stride = -1;
 };
 
@@ -75,8 +75,8 @@ TEST(LightRecordLayout, EveryMemberSitsWhereTheShaderReadsIt) {
 std::map<std::string, unsigned long> parse_constants(const std::string& text) {
   std::map<std::string, unsigned long> constants;
   const std::regex constant(R"(const uint (\w+) = (0x[0-9A-Fa-f]+|\d+)u;)");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), constant);
-       it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), constant); it != std::sregex_iterator();
+       ++it) {
     constants[(*it)[1]] = std::stoul((*it)[2], nullptr, 0);
   }
   return constants;

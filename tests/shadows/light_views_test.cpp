@@ -2,8 +2,8 @@
 // and a point light's cube faces agree with Vulkan's cube-map addressing.
 #include <random>
 
-#include <glm/glm.hpp>
 #include <gtest/gtest.h>
+#include <glm/glm.hpp>
 
 #include "systems/camera.h"
 #include "systems/shadows/light_views.h"
@@ -43,8 +43,8 @@ TEST(ShadowNearPlane, IsRangeOver200WithinOneToTenCentimetres) {
 TEST(SpotLightView, IsTheCameraOfTheSameLens) {
   // The receiver reads spot maps with the camera's conventions, y flip included.
   const glm::vec3 position(1.0f, 4.0f, 2.0f), target(0.0f, 0.0f, -1.0f);
-  const LightView spot = spot_light_view(position, glm::normalize(target - position),
-                                         glm::radians(30.0f), 12.0f);
+  const LightView spot =
+      spot_light_view(position, glm::normalize(target - position), glm::radians(30.0f), 12.0f);
   const scene::Camera lens{glm::radians(60.0f), spot.near, 12.0f, 1.0f};
   const glm::mat4 camera = projection_matrix(lens, 1.0f) * view_matrix({position, target});
   const glm::mat4 light = spot.view_projection();
@@ -90,8 +90,8 @@ TEST(SpotLightView, EveryPointOfTheConeWithinRangeIsInsideTheMap) {
     for (int i = 0; i < 50; ++i) {
       // A point at angle <= outer from the axis, at view depth within [near, far].
       const float angle = outer * unit(rng) * 0.999f;
-      const glm::vec3 around = glm::normalize(
-          glm::cross(direction, side) * (unit(rng) - 0.5f) + side * (unit(rng) - 0.5f));
+      const glm::vec3 around =
+          glm::normalize(glm::cross(direction, side) * (unit(rng) - 0.5f) + side * (unit(rng) - 0.5f));
       const glm::vec3 ray = direction * std::cos(angle) + around * std::sin(angle);
       const float depth = spot.near + (range - spot.near) * unit(rng);
       const glm::vec3 point = position + ray * (depth / std::cos(angle));
@@ -182,8 +182,8 @@ glm::vec3 corner(const scene::Aabb& box, int index) {
 
 TEST(DirectionalLightView, FitsEveryCornerOfTheBoundsTightly) {
   const scene::Aabb bounds = test_bounds();
-  for (const glm::vec3 direction : {glm::vec3(0, -1, 0), glm::normalize(glm::vec3(1, -2, 0.5f)),
-                                    glm::normalize(glm::vec3(-3, -1, -2))}) {
+  for (const glm::vec3 direction :
+       {glm::vec3(0, -1, 0), glm::normalize(glm::vec3(1, -2, 0.5f)), glm::normalize(glm::vec3(-3, -1, -2))}) {
     const LightView light = directional_light_view(direction, bounds);
     EXPECT_TRUE(light.orthographic);
     glm::vec3 lowest(1.0f), highest(0.0f);
@@ -224,8 +224,8 @@ TEST(CylinderLightView, CoversOuterRadiusAroundTheBeamAndDepthToTheBounds) {
   EXPECT_NEAR(map_coords(vp, position).z, 0.0f, 1e-5f);
   // The beam's rim is the map's inscribed circle.
   const glm::vec3 side = perpendicular(direction);
-  for (const glm::vec3 across : {side, -side, glm::cross(direction, side), glm::normalize(
-                                     side + glm::cross(direction, side))}) {
+  for (const glm::vec3 across :
+       {side, -side, glm::cross(direction, side), glm::normalize(side + glm::cross(direction, side))}) {
     const glm::vec3 rim = map_coords(vp, position + direction * 3.0f + across * outer);
     EXPECT_NEAR(glm::length(glm::vec2(rim) - glm::vec2(0.5f)), 0.5f, 1e-4f);
   }

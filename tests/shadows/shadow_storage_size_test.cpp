@@ -33,7 +33,8 @@ TEST(ShadowStorageSize, GrowsByHalfAgainSoLightsAddedOneByOneRarelyRecreateIt) {
 }
 
 TEST(ShadowStorageSize, AJumpBeyondHalfAgainGetsExactlyWhatIsNeeded) {
-  const ShadowStorageSize size = fit_shadow_storage({{256, 4}, {256, 4}}, {{256, 100}, {256, 4}}, min_resolution);
+  const ShadowStorageSize size =
+      fit_shadow_storage({{256, 4}, {256, 4}}, {{256, 100}, {256, 4}}, min_resolution);
   EXPECT_EQ(size.maps.count, 100u);
   EXPECT_EQ(size.cubes.count, 4u);
 }
@@ -44,7 +45,8 @@ TEST(ShadowStorageSize, NeverShrinksWhileRunning) {
 }
 
 TEST(ShadowStorageSize, ResolutionFollowsTheLargestRequest) {
-  const ShadowStorageSize size = fit_shadow_storage({{512, 2}, {256, 2}}, {{1024, 2}, {8, 2}}, min_resolution);
+  const ShadowStorageSize size =
+      fit_shadow_storage({{512, 2}, {256, 2}}, {{1024, 2}, {8, 2}}, min_resolution);
   EXPECT_EQ(size.maps.resolution, 1024u);
   EXPECT_EQ(size.cubes.resolution, 256u);
 }

@@ -43,8 +43,8 @@ bool floor_point_shadowed(glm::vec3 floor_point, glm::vec3 light_position, const
 Ray pixel_ray(const CameraImage& camera, std::uint32_t x, std::uint32_t y) {
   const float aspect = float(camera.size.x) / float(camera.size.y);
   // In double: the near and far planes are far apart, and the inverse magnifies rounding.
-  const glm::dmat4 inverse_view_projection = glm::inverse(
-      glm::dmat4(projection_matrix(camera.lens, aspect) * view_matrix(camera.pose)));
+  const glm::dmat4 inverse_view_projection =
+      glm::inverse(glm::dmat4(projection_matrix(camera.lens, aspect) * view_matrix(camera.pose)));
   const glm::dvec2 ndc((x + 0.5) / camera.size.x * 2.0 - 1.0, (y + 0.5) / camera.size.y * 2.0 - 1.0);
   const glm::dvec4 near_point = inverse_view_projection * glm::dvec4(ndc, 0.0, 1.0);
   const glm::dvec4 far_point = inverse_view_projection * glm::dvec4(ndc, 1.0, 1.0);
@@ -62,8 +62,8 @@ std::optional<glm::vec3> hit_floor(const Ray& ray) {
   return point;
 }
 
-FloorPixels classify_floor(const CameraImage& camera, float floor_half_extent,
-                           glm::vec3 light_position, std::span<const Box> boxes) {
+FloorPixels classify_floor(const CameraImage& camera, float floor_half_extent, glm::vec3 light_position,
+                           std::span<const Box> boxes) {
   FloorPixels result{camera.size, std::vector<FloorPixel>(camera.size.x * camera.size.y)};
   for (std::uint32_t y = 0; y < camera.size.y; ++y) {
     for (std::uint32_t x = 0; x < camera.size.x; ++x) {
@@ -71,8 +71,7 @@ FloorPixels classify_floor(const CameraImage& camera, float floor_half_extent,
       const std::optional<glm::vec3> point = hit_floor(ray);
       FloorPixel& pixel = result.pixels[y * camera.size.x + x];
       pixel = FloorPixel::not_floor;
-      if (!point || std::abs(point->x) > floor_half_extent ||
-          std::abs(point->z) > floor_half_extent) {
+      if (!point || std::abs(point->x) > floor_half_extent || std::abs(point->z) > floor_half_extent) {
         continue;
       }
       const auto hides = [&](glm::vec3 from, glm::vec3 to) {

@@ -49,8 +49,8 @@ std::optional<glm::vec3> hit_floor(const Ray& ray);
 enum class FloorPixel : std::uint8_t {
   not_floor,  // no floor there, or a box in front of it
   lit,
-  shadowed,   // a box hides the light
-  edge,       // only from with_edge_band: near a change of class, where any answer is right
+  shadowed,  // a box hides the light
+  edge,      // only from with_edge_band: near a change of class, where any answer is right
 };
 
 struct FloorPixels {
@@ -63,8 +63,8 @@ struct FloorPixels {
 // Every pixel of `camera`, classified at its centre: the floor is y = 0 with |x| and |z| up to
 // floor_half_extent; `boxes` (the occluders above it, not the floor's own slab) hide the light
 // at `light_position` from floor points, and floor points from the camera.
-FloorPixels classify_floor(const CameraImage& camera, float floor_half_extent,
-                           glm::vec3 light_position, std::span<const Box> boxes);
+FloorPixels classify_floor(const CameraImage& camera, float floor_half_extent, glm::vec3 light_position,
+                           std::span<const Box> boxes);
 
 // `classified` with each lit or shadowed pixel that has a pixel of another class within
 // `radius` pixels (Chebyshev distance) turned into `edge`: the band where rasterization and

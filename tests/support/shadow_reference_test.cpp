@@ -1,9 +1,9 @@
 // The CPU shadow reference on cases solved by hand.
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
-#include <gtest/gtest.h>
 
 #include "systems/camera.h"
 #include "tests/support/shadow_reference.h"
@@ -122,15 +122,13 @@ TEST(WithEdgeBand, MarksPixelsNearAChangeOfClass) {
   FloorPixels pixels{{10, 3}, {}};
   for (int y = 0; y < 3; ++y) {
     for (int x = 0; x < 10; ++x) {
-      pixels.pixels.push_back(x < 5 ? FloorPixel::lit
-                                    : x < 9 ? FloorPixel::shadowed : FloorPixel::not_floor);
+      pixels.pixels.push_back(x < 5 ? FloorPixel::lit : x < 9 ? FloorPixel::shadowed : FloorPixel::not_floor);
     }
   }
   const FloorPixels banded = with_edge_band(pixels, 2);
-  const FloorPixel expected[10] = {FloorPixel::lit,       FloorPixel::lit,  FloorPixel::lit,
-                                   FloorPixel::edge,      FloorPixel::edge, FloorPixel::edge,
-                                   FloorPixel::edge,      FloorPixel::edge, FloorPixel::edge,
-                                   FloorPixel::not_floor};
+  const FloorPixel expected[10] = {FloorPixel::lit,  FloorPixel::lit,      FloorPixel::lit,  FloorPixel::edge,
+                                   FloorPixel::edge, FloorPixel::edge,     FloorPixel::edge, FloorPixel::edge,
+                                   FloorPixel::edge, FloorPixel::not_floor};
   for (std::uint32_t y = 0; y < 3; ++y) {
     for (std::uint32_t x = 0; x < 10; ++x) {
       EXPECT_EQ(banded.at(x, y), expected[x]) << "pixel " << x << ", " << y;

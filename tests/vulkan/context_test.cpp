@@ -78,9 +78,11 @@ TEST_F(ContextTest, StagedUploadReachesDeviceLocalBuffer) {
   std::vector<uint32_t> data(10000);
   for (size_t i = 0; i < data.size(); ++i) data[i] = static_cast<uint32_t>(i * 2654435761u);
   const VkDeviceSize bytes = data.size() * sizeof(uint32_t);
-  vk::Buffer device_buffer(context, {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                     vk::MemoryUsage::gpu_only, "device"});
-  vk::Buffer host_buffer(context, {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUsage::readback, "host"});
+  vk::Buffer device_buffer(context,
+                           {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                            vk::MemoryUsage::gpu_only, "device"});
+  vk::Buffer host_buffer(context,
+                         {bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUsage::readback, "host"});
   vk::UploadBatch upload(context);
   upload.copy(device_buffer, std::span<const uint32_t>(data));
   upload.submit();
@@ -88,7 +90,7 @@ TEST_F(ContextTest, StagedUploadReachesDeviceLocalBuffer) {
     const VkBufferCopy region{0, 0, bytes};
     vkCmdCopyBuffer(cmd, device_buffer.handle(), host_buffer.handle(), 1, &region);
     vk::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
   });
   EXPECT_EQ(std::memcmp(host_buffer.mapped(), data.data(), bytes), 0);
 }

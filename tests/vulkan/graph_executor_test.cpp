@@ -27,11 +27,14 @@ constexpr ResourceState transfer_source{PipelineStage::all_transfer, Access::tra
 
 class GraphExecutorTest : public GpuTest {
  protected:
-  vk::Image output = vk::Image(
-      context, {{size, size}, VK_FORMAT_R8G8B8A8_UNORM,
-                VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
-                1, 1, VK_IMAGE_VIEW_TYPE_2D, "test output"});
+  vk::Image output = vk::Image(context, {{size, size},
+                                         VK_FORMAT_R8G8B8A8_UNORM,
+                                         VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                                         1,
+                                         1,
+                                         VK_IMAGE_VIEW_TYPE_2D,
+                                         "test output"});
   vk::FrameRing frames{context};
   vk::GraphExecutor executor{context, frames.frames_in_flight()};
   vk::GraphImports imports;
@@ -152,10 +155,14 @@ TEST_F(GraphExecutorTest, ARecreatedImportStartsUndefined) {
     run(graph);
   }
   frames.wait_idle();
-  output = vk::Image(context, {{size, size}, VK_FORMAT_R8G8B8A8_UNORM,
+  output = vk::Image(context, {{size, size},
+                               VK_FORMAT_R8G8B8A8_UNORM,
                                VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
-                               1, 1, VK_IMAGE_VIEW_TYPE_2D, "test output, recreated"});
+                               1,
+                               1,
+                               VK_IMAGE_VIEW_TYPE_2D,
+                               "test output, recreated"});
   RenderGraph graph;
   ImageHandle out = import_output(graph);
   // The old image's states would make the first barrier claim a layout the new one never had.
@@ -203,9 +210,13 @@ TEST_F(GraphExecutorTest, AnUnboundImportIsAClearError) {
 TEST_F(GraphExecutorTest, RendersIntoOneLayerOfAnImportedArrayAndLeavesTheOthers) {
   // Layer 1 of a three-layer image is cleared through a one-layer attachment view; layer 0 and
   // layer 2 keep the values an earlier pass gave them.
-  vk::Image layers(context, {{size, size}, VK_FORMAT_R8G8B8A8_UNORM,
+  vk::Image layers(context, {{size, size},
+                             VK_FORMAT_R8G8B8A8_UNORM,
                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                             1, 3, VK_IMAGE_VIEW_TYPE_2D_ARRAY, "layers"});
+                             1,
+                             3,
+                             VK_IMAGE_VIEW_TYPE_2D_ARRAY,
+                             "layers"});
   RenderGraph graph;
   const ImageDesc desc{size, size, Format::rgba8_unorm, 3};
   ImageHandle array = graph.import_image("layers", desc, ResourceState{}, transfer_source);
@@ -213,8 +224,8 @@ TEST_F(GraphExecutorTest, RendersIntoOneLayerOfAnImportedArrayAndLeavesTheOthers
     array = b.write(array, Usage::colour_attachment, ClearValue::colour_of(0.5f, 0.5f, 0.5f));
   });
   graph.add_pass("layer 1 white", QueueType::graphics, [&](PassBuilder& b) {
-    array = b.write(array, Usage::colour_attachment, ClearValue::colour_of(1, 1, 1),
-                    SubresourceRange::layer(1));
+    array =
+        b.write(array, Usage::colour_attachment, ClearValue::colour_of(1, 1, 1), SubresourceRange::layer(1));
   });
   const CompileResult compiled = compile(graph);
   ASSERT_TRUE(compiled.errors.empty());

@@ -5,9 +5,9 @@
 #include <optional>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <gtest/gtest.h>
 
 #include "ecs/transform_system.h"
 #include "rendergraph/device/frame_ring.h"
@@ -65,7 +65,8 @@ FloorScene make_floor_scene() {
              {{0, 0.3f, 3}, {1.0f, 0.3f, 0.6f}, 1.1f}};
   scene::Material box_material;
   box_material.base_color = {0.8f, 0.3f, 0.2f, 1.0f};
-  for (const OrientedBox& box : s.boxes) scene::add_instance(s.sandbox.scene, box_mesh, placement(box), box_material);
+  for (const OrientedBox& box : s.boxes)
+    scene::add_instance(s.sandbox.scene, box_mesh, placement(box), box_material);
 
   s.sun.color = {1.0f, 0.95f, 0.9f};
   s.sun.intensity = 0.9f;
@@ -136,8 +137,8 @@ TEST_F(OffscreenRender, FloorMatchesLightingFormula) {
           const int want = static_cast<int>(std::lround(srgb_encode(expected[c]) * 255.0f));
           if (std::abs(int(pixel[c]) - want) > tolerance) {
             ++mismatched;
-            ADD_FAILURE() << "pixel (" << x << ", " << y << ") channel " << c << ": got "
-                          << int(pixel[c]) << ", formula gives " << want;
+            ADD_FAILURE() << "pixel (" << x << ", " << y << ") channel " << c << ": got " << int(pixel[c])
+                          << ", formula gives " << want;
             break;
           }
         }

@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include "ecs/transform_system.h"
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
-#include "ecs/transform_system.h"
 #include "sandbox/sandbox_frame.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
@@ -55,9 +55,9 @@ TEST_F(SandboxFrameTest, DefaultSceneRendersThroughTheGraph) {
   const vk::Rgba8Image image = render(sandbox::Options{}, 3);
   // One shadow pass per 2D shadow, one layered pass per point light (lavapipe has
   // shaderOutputLayer), then the lighting pass.
-  EXPECT_EQ(passes, (std::vector<std::string>{"shadow spot west", "shadow spot east", "shadow sun",
-                                              "shadow beam", "shadow warm point", "shadow cool point",
-                                              "forward"}));
+  EXPECT_EQ(passes,
+            (std::vector<std::string>{"shadow spot west", "shadow spot east", "shadow sun", "shadow beam",
+                                      "shadow warm point", "shadow cool point", "forward"}));
   // Something was drawn: the picture is not a single colour.
   const uint8_t* first = image.at(0, 0);
   bool varied = false;
@@ -75,9 +75,9 @@ TEST_F(SandboxFrameTest, MovingStressSceneStaysCleanAcrossFrames) {
   options.scene_params.spot_lights = 3;
   options.scene_params.moving_fraction = 0.5f;
   render(options, 4);
-  EXPECT_EQ(passes, (std::vector<std::string>{"shadow spot 0", "shadow spot 1", "shadow spot 2",
-                                              "shadow sun", "shadow point 0", "shadow point 1",
-                                              "shadow point 2", "forward"}));
+  EXPECT_EQ(passes,
+            (std::vector<std::string>{"shadow spot 0", "shadow spot 1", "shadow spot 2", "shadow sun",
+                                      "shadow point 0", "shadow point 1", "shadow point 2", "forward"}));
 }
 
 TEST_F(SandboxFrameTest, SixPassCubesRenderTheSamePictureAsLayeredCubes) {
@@ -109,10 +109,12 @@ TEST_F(SandboxFrameTest, MaterialTexturesTintTheBaseColour) {
     white.base_color = glm::vec4(1.0f);
     white.specular = 0.0f;
     if (textured) white.base_color_texture = 0;
-    scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}}, white);
-    scene::add_light(scene.scene, scene::DirectionalLight{glm::vec3(1.0f), 0.5f},
-                     {glm::vec3(0.0f, 5.0f, 0.0f), scene::look_rotation({0, 5, 0}, {0.1f, 0, 0}), glm::vec3(1.0f)},
-                     scene::ShadowSettings{}, "sun");
+    scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
+                        white);
+    scene::add_light(
+        scene.scene, scene::DirectionalLight{glm::vec3(1.0f), 0.5f},
+        {glm::vec3(0.0f, 5.0f, 0.0f), scene::look_rotation({0, 5, 0}, {0.1f, 0, 0}), glm::vec3(1.0f)},
+        scene::ShadowSettings{}, "sun");
     ecs::update_world_transforms(scene.scene.world, 0);
     scene.pose = {{0.0f, 6.0f, 0.1f}, {0.0f, 0.0f, 0.0f}};
     vk::FrameRing frames(context);

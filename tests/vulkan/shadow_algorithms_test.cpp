@@ -11,8 +11,8 @@
 #include <optional>
 #include <vector>
 
-#include <glm/glm.hpp>
 #include <gtest/gtest.h>
+#include <glm/glm.hpp>
 
 #include "ecs/transform_system.h"
 #include "rendergraph/device/frame_ring.h"
@@ -80,9 +80,10 @@ sandbox::SandboxScene floor_scene(const char* name, uint32_t& box) {
   sandbox::SandboxScene out;
   out.scene.name = name;
   box = scene::add_box_mesh(out.scene.meshes);
-  scene::add_instance(out.scene, box,
-                      {{0.0f, -0.1f, 0.0f}, glm::quat(1, 0, 0, 0), {2 * floor_half_extent, 0.2f, 2 * floor_half_extent}},
-                      grey_floor());
+  scene::add_instance(
+      out.scene, box,
+      {{0.0f, -0.1f, 0.0f}, glm::quat(1, 0, 0, 0), {2 * floor_half_extent, 0.2f, 2 * floor_half_extent}},
+      grey_floor());
   out.camera_source = "test";
   return out;
 }
@@ -173,12 +174,12 @@ class ShadowAlgorithms : public GpuTest {
 };
 
 struct Classification {
-  int measured = 0;        // floor pixels outside the band with a measurement
-  int misclassified = 0;   // measured shade on the other side of 0.5 from the reference
-  int shadowed = 0;        // reference says shadowed
+  int measured = 0;                   // floor pixels outside the band with a measurement
+  int misclassified = 0;              // measured shade on the other side of 0.5 from the reference
+  int shadowed = 0;                   // reference says shadowed
   int intermediate_outside_band = 0;  // 0.1 < shade < 0.9 away from the edge
-  int intermediate = 0;    // anywhere
-  int lit_but_darkened = 0;  // reference lit, shade > 0.1 (acne)
+  int intermediate = 0;               // anywhere
+  int lit_but_darkened = 0;           // reference lit, shade > 0.1 (acne)
 };
 
 Classification classify(const std::vector<std::optional<float>>& shade, const FloorPixels& reference) {
@@ -225,7 +226,8 @@ TEST_F(ShadowAlgorithms, HardPointShadowMatchesRayCastingAwayFromTheEdge) {
 }
 
 TEST_F(ShadowAlgorithms, FilteredAlgorithmsAreIntermediateOnlyNearTheEdge) {
-  for (const scene::ShadowAlgorithm algorithm : {scene::ShadowAlgorithm::pcf, scene::ShadowAlgorithm::noise}) {
+  for (const scene::ShadowAlgorithm algorithm :
+       {scene::ShadowAlgorithm::pcf, scene::ShadowAlgorithm::noise}) {
     for (const LightKind kind : {LightKind::spot, LightKind::point}) {
       SCOPED_TRACE(std::string(scene::to_string(algorithm)) + (kind == LightKind::spot ? " spot" : " point"));
       // A coarse map makes the filter several pixels wide on screen. Cube faces are coarser at
@@ -333,9 +335,9 @@ TEST_F(ShadowAlgorithms, FiveLightsEachRenderWithTheirOwnAlgorithm) {
     scene::Scene& scene = out.scene;
     for (int i = 0; i < 5; ++i) {
       const float x = (i - 2) * spacing;
-      scene::add_instance(scene, box,
-                          {{x + 0.2f, 1.2f, 0.1f}, glm::angleAxis(0.4f, glm::vec3(0, 1, 0)), {0.7f, 0.3f, 0.6f}},
-                          scene::Material{});
+      scene::add_instance(
+          scene, box, {{x + 0.2f, 1.2f, 0.1f}, glm::angleAxis(0.4f, glm::vec3(0, 1, 0)), {0.7f, 0.3f, 0.6f}},
+          scene::Material{});
       scene::SpotLight light;
       light.intensity = 1.6f;
       light.range = 8.0f;

@@ -74,7 +74,9 @@ int main(int argc, char** argv) {
     Options off = options;
     off.shadows = false;
     const Measurement base = measure(context, off, frames);
-    std::printf("| algorithm | lighting pass (ms) | over shadows off (ms) | per shadowed light (ms) | shadow maps (ms) | GPU frame (ms) |\n");
+    std::printf(
+        "| algorithm | lighting pass (ms) | over shadows off (ms) | per shadowed light (ms) | shadow maps "
+        "(ms) | GPU frame (ms) |\n");
     std::printf("|---|---:|---:|---:|---:|---:|\n");
     std::printf("| off | %.3f | - | - | - | %.3f |\n", base.forward_ms, base.frame_ms);
     for (const sg::scene::ShadowAlgorithm algorithm : sg::scene::all_shadow_algorithms) {

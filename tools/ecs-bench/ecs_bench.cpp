@@ -294,8 +294,9 @@ void changed_since_ecs(benchmark::State& state) {
     for (const std::uint32_t index : written) world->get_mut<Position>(entities[index]).x += 1.0f;
     state.ResumeTiming();
     float sum = 0.0f;
-    world->query<const Position>().changed_since<Position>(last_frame).for_each(
-        [&](const Position& position) { sum += position.x; });
+    world->query<const Position>()
+        .changed_since<Position>(last_frame)
+        .for_each([&](const Position& position) { sum += position.x; });
     benchmark::DoNotOptimize(sum);
   }
   state.SetItemsProcessed(state.iterations() * written.size());
@@ -337,9 +338,7 @@ BENCHMARK(destroy_ecs)->Name("destroy/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(destroy_raw)->Name("destroy/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(add_remove_ecs)->Name("add_remove/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(add_remove_raw)->Name("add_remove/raw")->Unit(benchmark::kMillisecond);
-BENCHMARK(add_remove_archetype_model)
-    ->Name("add_remove/archetype_model")
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(add_remove_archetype_model)->Name("add_remove/archetype_model")->Unit(benchmark::kMillisecond);
 BENCHMARK(changed_since_ecs)->Name("changed_since/ecs")->Arg(1)->Arg(10)->Unit(benchmark::kMicrosecond);
 BENCHMARK(changed_since_raw)->Name("changed_since/raw")->Arg(1)->Arg(10)->Unit(benchmark::kMicrosecond);
 

@@ -17,23 +17,27 @@ using namespace sg::rg;
 
 constexpr ImageDesc atlas_desc{4096, 4096, Format::d32_sfloat, 64, 1, false};
 constexpr ImageDesc cubes_desc{1024, 1024, Format::d16_unorm, 6 * 128, 1, true};
-constexpr ResourceState sampled{PipelineStage::fragment_shader, Access::shader_sampled_read, ImageLayout::read_only_optimal};
+constexpr ResourceState sampled{PipelineStage::fragment_shader, Access::shader_sampled_read,
+                                ImageLayout::read_only_optimal};
 
 void add_gbuffer(RenderGraph& graph, ImageHandle& depth, ImageHandle& normals) {
   graph.add_pass("gbuffer", QueueType::graphics, [&](PassBuilder& b) {
     depth = b.write(b.create_image("depth", {1920, 1080, Format::d32_sfloat}), Usage::depth_attachment);
-    normals = b.write(b.create_image("normals", {1920, 1080, Format::rgba16_sfloat}), Usage::colour_attachment);
+    normals =
+        b.write(b.create_image("normals", {1920, 1080, Format::rgba16_sfloat}), Usage::colour_attachment);
   });
 }
 
 // `passes` in all; shadow passes fill what the G-buffer and lighting passes leave.
 RenderGraph build_frame(std::uint32_t passes) {
   RenderGraph graph;
-  ImageHandle swapchain = graph.import_image("swapchain", {1920, 1080, Format::bgra8_srgb},
-                                             {PipelineStage::color_attachment_output, Access::none, ImageLayout::undefined},
-                                             ResourceState{PipelineStage::none, Access::none, ImageLayout::present_src});
+  ImageHandle swapchain =
+      graph.import_image("swapchain", {1920, 1080, Format::bgra8_srgb},
+                         {PipelineStage::color_attachment_output, Access::none, ImageLayout::undefined},
+                         ResourceState{PipelineStage::none, Access::none, ImageLayout::present_src});
   if (passes == 1) {
-    graph.add_pass("clear", QueueType::graphics, [&](PassBuilder& b) { swapchain = b.write(swapchain, Usage::colour_attachment); });
+    graph.add_pass("clear", QueueType::graphics,
+                   [&](PassBuilder& b) { swapchain = b.write(swapchain, Usage::colour_attachment); });
     return graph;
   }
   ImageHandle atlas = graph.import_image("shadow atlas", atlas_desc, sampled, sampled);
@@ -49,7 +53,8 @@ RenderGraph build_frame(std::uint32_t passes) {
     if (shadow % 10 == 8 && shadow + 3 < passes) {
       ImageHandle moments{};
       graph.add_pass("moments " + light, QueueType::graphics, [&](PassBuilder& b) {
-        moments = b.write(b.create_image("moments " + light, {1024, 1024, Format::rg16_sfloat}), Usage::colour_attachment);
+        moments = b.write(b.create_image("moments " + light, {1024, 1024, Format::rg16_sfloat}),
+                          Usage::colour_attachment);
       });
       graph.add_pass("blur " + light, QueueType::compute, [&](PassBuilder& b) {
         b.read(moments, Usage::sampled_compute);
@@ -78,9 +83,9 @@ RenderGraph build_frame(std::uint32_t passes) {
 
 void set_counters(benchmark::State& state, std::uint32_t passes) {
   state.counters["passes"] = passes;
-  state.counters["us_per_pass"] = benchmark::Counter(static_cast<double>(passes) * static_cast<double>(state.iterations()),
-                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert,
-                                                     benchmark::Counter::kIs1000);
+  state.counters["us_per_pass"] = benchmark::Counter(
+      static_cast<double>(passes) * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert, benchmark::Counter::kIs1000);
 }
 
 void build_only(benchmark::State& state) {

@@ -57,8 +57,7 @@ int main(int argc, char** argv) {
     frame.resize({options.width, options.height});
     // A few frames, so that the dumped plan is one the cache served, as in a running sandbox.
     sg::sandbox::GpuTimeLog gpu_times;
-    sg::sandbox::render_headless_frames(frame, frames,
-                                        options.frames.value_or(frames.frames_in_flight() + 1),
+    sg::sandbox::render_headless_frames(frame, frames, options.frames.value_or(frames.frames_in_flight() + 1),
                                         gpu_times);
 
     // The last frame's graph and plan; its timings when they are that frame's.
