@@ -1,7 +1,7 @@
 #pragma once
 // --dump-shadow-maps DIR: every light's shadow map as a grey PNG, for looking at what the
 // shadow passes rendered. 2D maps (spot, directional, cylinder) show linear depth from the
-// light's near (black) to far plane (white), over the light's own square region of its atlas
+// light's near (black) to far plane (white), over the light's own square region of its
 // layer; point lights write six files, one per cube face, of distance / range.
 #include <string>
 
