@@ -118,6 +118,20 @@ void add_options(CLI::App& app, Options& o) {
          "Point-light cube maps: layered (one pass, all six faces) or six (one pass per face)")
       ->check(CLI::IsMember({"layered", "six"}))
       ->default_str("layered");
+  app.add_option_function<std::string>(
+         "--lighting",
+         [&o](const std::string& value) {
+           o.lighting = value == "forward"    ? LightingPath::forward
+                        : value == "deferred" ? LightingPath::deferred
+                                              : LightingPath::automatic;
+         },
+         "forward: every light at every pixel in one pass; deferred: light lists per screen tile and "
+         "a compute pass per light group; auto: the faster on this kind of device")
+      ->check(CLI::IsMember({"auto", "forward", "deferred"}))
+      ->default_str("auto");
+  app.add_option("--exposure", o.exposure, "Multiplies the lit colour before tone mapping")
+      ->check(CLI::Range(1e-3f, 1e3f))
+      ->capture_default_str();
   app.add_option("--dump-shadow-maps", o.dump_shadow_maps,
                  "After the run, write each light's shadow map as PNG into this folder");
 }

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "systems/lighting_path.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/shadow_settings.h"
@@ -36,7 +37,9 @@ struct Options {
   std::optional<scene::ShadowAlgorithm> algorithm;  // --algorithm: every light uses this one
   bool shadows = true;                              // --shadows off: no light casts a shadow
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;  // --cube-shadows layered|six
-  std::string dump_shadow_maps;  // --dump-shadow-maps DIR: each light's map as PNG
+  LightingPath lighting = LightingPath::automatic;  // --lighting auto|forward|deferred
+  float exposure = 1.0f;                            // --exposure
+  std::string dump_shadow_maps;                     // --dump-shadow-maps DIR: each light's map as PNG
 };
 
 // Upper bounds on the stress scene's parameters: values above them would exhaust memory

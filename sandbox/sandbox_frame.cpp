@@ -51,6 +51,8 @@ RendererSettings renderer_settings(const Options& options) {
   settings.lights.algorithm = options.algorithm;
   settings.lights.shadows = options.shadows;
   settings.cube_shadows = options.cube_shadows;
+  settings.lighting = options.lighting;
+  settings.exposure = options.exposure;
   return settings;
 }
 
@@ -59,12 +61,12 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, cons
     : context_(context),
       scene_(scene),
       depth_overlay_enabled_(options.depth_overlay),
-      renderer_(context, scene.scene, frames_in_flight, renderer_settings(options)),
-      depth_overlay_(context, ForwardPass::colour_format),
+      renderer_(context, scene.scene, frames_in_flight, frame_format, renderer_settings(options)),
+      depth_overlay_(context, frame_format),
       executor_(context, frames_in_flight) {}
 
 void SandboxFrame::resize(VkExtent2D extent) {
-  image_ = vk::Image(context_, {extent, vk::to_vk(ForwardPass::colour_format),
+  image_ = vk::Image(context_, {extent, vk::to_vk(frame_format),
                                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, 1, 1,
                                 VK_IMAGE_VIEW_TYPE_2D, "frame"});
 }
@@ -89,7 +91,7 @@ void SandboxFrame::update(double time_seconds) {
 void SandboxFrame::declare_passes(uint32_t slot, const std::optional<PresentTarget>& present) {
   graph_ = rg::RenderGraph();
   const rg::ImageHandle frame_image = imports_.import_image(graph_, "frame", image_, transfer_source);
-  const ForwardTargets targets =
+  const RenderedFrame targets =
       renderer_.add_passes(graph_, imports_, frame_image, slot, scene_.pose, scene_.lens);
   rg::ImageHandle colour = targets.colour;
   if (depth_overlay_enabled_) colour = depth_overlay_.add_to(graph_, targets.depth, colour, scene_.lens);

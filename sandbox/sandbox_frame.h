@@ -38,7 +38,11 @@ struct PresentTarget {
 };
 inline constexpr VkPipelineStageFlags2 acquire_wait_stage = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
 
-// What the command line asks of the renderer (--algorithm, --shadows, --cube-shadows).
+// The frame image's format: what screenshots read and the present pass blits.
+inline constexpr rg::Format frame_format = rg::Format::rgba8_srgb;
+
+// What the command line asks of the renderer (--algorithm, --shadows, --cube-shadows,
+// --lighting, --exposure).
 RendererSettings renderer_settings(const Options& options);
 
 class SandboxFrame {

@@ -1,17 +1,29 @@
 // Descriptor binding numbers of the engine's passes (set 0), declared once for the shaders and
 // for the C++ that binds them (systems/shader_bindings.h includes this file): a `const int` reads
-// the same in GLSL and C++. The forward pass binds instances, lights, the shadow images and the
-// material textures; the shadow passes bind instances, cube faces and view instances.
+// the same in GLSL and C++. Each pass binds the subset it uses.
 #ifndef SG_BINDINGS_GLSL
 #define SG_BINDINGS_GLSL
 
-const int instances_binding = 0;             // scene_interface.glsl
-const int lights_binding = 1;                // lights_interface.glsl
-const int shadow_maps_binding = 2;           // lights_interface.glsl
-const int shadow_maps_compare_binding = 3;   // lights_interface.glsl
-const int shadow_cubes_binding = 4;          // lights_interface.glsl
-const int cube_faces_binding = 5;            // shadow_cube_layered.vert
-const int view_instances_binding = 6;        // shadow_casters.glsl
-const int material_textures_binding = 7;     // scene.frag
+// The scene's instances and lights, the shadow images, the material textures: forward and
+// G-buffer passes, shadow passes, tiled lighting.
+const int instances_binding = 0;            // scene_interface.glsl
+const int lights_binding = 1;               // lights_interface.glsl
+const int shadow_maps_binding = 2;          // lights_interface.glsl
+const int shadow_maps_compare_binding = 3;  // lights_interface.glsl
+const int shadow_cubes_binding = 4;         // lights_interface.glsl
+const int cube_faces_binding = 5;           // shadow_cube_layered.vert
+const int view_instances_binding = 6;       // shadow_casters.glsl
+const int material_textures_binding = 7;    // material.glsl
+
+// Tiled deferred lighting (light_tiles.glsl): the G-buffer, the sum being lit, the tile lists.
+const int gbuffer_position_binding = 8;
+const int gbuffer_normal_binding = 9;
+const int gbuffer_albedo_binding = 10;
+const int hdr_binding = 11;  // the lit sum: a storage image while lighting, sampled by tone mapping
+const int scene_depth_binding = 12;
+const int tile_lights_binding = 13;
+const int tile_ranges_binding = 14;
+const int group_tiles_binding = 15;
+const int group_dispatch_binding = 16;
 
 #endif

@@ -1,7 +1,6 @@
 // Every light's contribution at a surface point (../shared/ALGORITHMS.md section 2), each with
-// its own shadow algorithm (shadow_sampling.glsl). Include this instead of lighting.glsl, which
-// it includes (lighting.glsl has no include guard). The ambient term is not part of the sum:
-// add it once per fragment, as blinn_light expects.
+// its own shadow algorithm (shadow_sampling.glsl). The ambient term is not part of the sum: add
+// it once per surface point, as blinn_light expects.
 #ifndef SG_LIGHT_SHADING_GLSL
 #define SG_LIGHT_SHADING_GLSL
 
@@ -14,7 +13,10 @@
 // into its radiance; where it is zero the light adds nothing (not even shadow colour) and its
 // shadow map is not read. The shadow colour term is weighted by lambda as section 2's formula
 // has it (lambda is 1 for every light but the cylinder).
-vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
+//
+// `shadow_kind` and `algorithm` are the light's own (light_shadow_kind, info.z); shade_light
+// reads them from the record, a pass that shades one light group passes its constants.
+vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kind, uint algorithm) {
   uint type = light.info.x;
   vec3 to_light;
   float reach = 1.0;
@@ -42,10 +44,14 @@ vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
   }
   if (reach <= 0.0) return vec3(0.0);
 
-  float shade = light_shadow(light, world_pos, p.normal, dot(p.normal, to_light));
+  float shade = light_shadow_as(light, world_pos, p.normal, dot(p.normal, to_light), shadow_kind, algorithm);
   vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * reach;
   return blinn_light(p, to_light, radiance, shade, light.shadow_color_density.a,
                      lambda * light.shadow_color_density.rgb);
+}
+
+vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
+  return shade_light_as(light, p, world_pos, light_shadow_kind(light), light.info.z);
 }
 
 // The sum over lights[0 .. light_count) at world_pos, without ambient.

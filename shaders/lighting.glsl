@@ -1,5 +1,7 @@
 // The lighting model of ALGORITHMS.md section 2: extended Blinn with shadow density and
 // shadow colour. `shade` is the light's shadow factor (1 = fully shadowed).
+#ifndef SG_LIGHTING_GLSL
+#define SG_LIGHTING_GLSL
 
 struct SurfacePoint {
   vec3 normal;      // unit
@@ -22,3 +24,5 @@ vec3 blinn_light(SurfacePoint p, vec3 to_light, vec3 radiance, float shade, floa
   return (1.0 - sh) * p.base_color * radiance * n_dot_l + sh * shadow_color +
          (1.0 - shade) * p.specular * radiance * spec;
 }
+
+#endif

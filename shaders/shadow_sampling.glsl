@@ -1,6 +1,6 @@
 // The five per-light shadow algorithms of ../shared/ALGORITHMS.md section 4, on 2D maps (spot,
 // directional and cylinder lights: a square region of one shadow_atlas layer) and on point
-// lights' cube maps. Entry point: light_shadow(). Every function returns the shadow factor
+// lights' cube maps. Entry point: light_shadow_as(). Every function returns the shadow factor
 // `shade` in [0, 1], 1 = fully shadowed; a point outside the map or beyond its far plane is lit.
 //
 // Depths are compared as *normalized linear depth*, so that a bias means the same distance
@@ -20,6 +20,7 @@
 #define SG_SHADOW_SAMPLING_GLSL
 
 #include "light_formulas.glsl"
+#include "light_groups.glsl"
 #include "lights_interface.glsl"
 
 const int PCF_HALF_WIDTH = 1;  // (2k + 1)^2 = 9 taps
@@ -252,10 +253,9 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, vec3 
   return sum / float(PCSS_FILTER_SAMPLES);
 }
 
-float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias) {
+float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
   MapPoint point;
   if (!project_to_map(light, world_pos, normal, point)) return 0.0;
-  uint algorithm = light.info.z;
   if (algorithm == SHADOW_HARD) return shadow_2d_hard(light, point, bias);
   if (algorithm == SHADOW_PCF) return shadow_2d_pcf(light, point, bias);
   if (algorithm == SHADOW_NOISE) return shadow_2d_noise(light, point, bias, world_pos);
@@ -333,7 +333,7 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, vec3 world_pos)
   return sum / float(CUBE_OFFSET_COUNT);
 }
 
-float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias) {
+float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
   CubeReceiver r;
   r.to_fragment = world_pos - light.position_range.xyz;
   r.distance = length(r.to_fragment);
@@ -347,7 +347,6 @@ float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias) {
   r.bias = bias + texel_world * tan_incidence / light.shadow_depth.y;
   float depth = r.distance / light.shadow_depth.y;
   if (depth > 1.0) return 0.0;
-  uint algorithm = light.info.z;
   if (algorithm == SHADOW_HARD) return cube_occluded(light, r.to_fragment, depth - r.bias);
 
   // pcfRadius texels, measured where fragToLight meets its cube face.
@@ -370,16 +369,24 @@ float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias) {
   return shadow_cube_pcss(light, r, algorithm == SHADOW_PCSS_NOISE, world_pos);
 }
 
-// ---- entry point ----
+// ---- entry points ----
 
-// `light`'s shadow factor at world_pos with its own algorithm and parameters; `normal` is the
-// receiver's unit normal and n_dot_l is dot(N, L) for the slope-scaled bias. 0 for a light
-// without a shadow map.
-float light_shadow(Light light, vec3 world_pos, vec3 normal, float n_dot_l) {
-  if (light.info.w == NO_SHADOW_MAP) return 0.0;
+// The shadow code `light` runs (light_groups.glsl).
+uint light_shadow_kind(Light light) {
+  if (light.info.w == NO_SHADOW_MAP) return SHADOW_KIND_NONE;
+  return light.info.x == LIGHT_POINT ? SHADOW_KIND_CUBE : SHADOW_KIND_MAP;
+}
+
+// `light`'s shadow factor at world_pos; `normal` is the receiver's unit normal and n_dot_l is
+// dot(N, L) for the slope-scaled bias. `shadow_kind` and `algorithm` must be the light's own
+// (light_shadow_kind, info.z): passed in, they can be compile-time constants, which leaves only
+// that algorithm's code in the shader.
+float light_shadow_as(Light light, vec3 world_pos, vec3 normal, float n_dot_l, uint shadow_kind,
+                      uint algorithm) {
+  if (shadow_kind == SHADOW_KIND_NONE) return 0.0;
   float bias = shadow_bias(n_dot_l, light.shadow_bias.x, light.shadow_bias.y);
-  if (light.info.x == LIGHT_POINT) return shadow_cube(light, world_pos, normal, bias);
-  return shadow_2d(light, world_pos, normal, bias);
+  if (shadow_kind == SHADOW_KIND_CUBE) return shadow_cube(light, world_pos, normal, bias, algorithm);
+  return shadow_2d(light, world_pos, normal, bias, algorithm);
 }
 
 #endif

@@ -20,21 +20,10 @@ using namespace bindings;
 constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 
-// Hardware 2x2 PCF needs linear filtering of the depth format; fall back to one tap without it.
-VkFilter compare_filter(const vk::VulkanContext& context) {
-  VkFormatProperties properties;
-  vkGetPhysicalDeviceFormatProperties(context.physical_device(), vk::to_vk(ShadowMapArrays::depth_format),
-                                      &properties);
-  return (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)
-             ? VK_FILTER_LINEAR
-             : VK_FILTER_NEAREST;
-}
-
 }  // namespace
 
 ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures)
-    : nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
-      compare_(vk::create_sampler(context.device(), compare_filter(context), true)),
+    : shadow_samplers_(create_shadow_samplers(context)),
       // glTF's default wrapping.
       material_(
           vk::create_sampler(context.device(), VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_REPEAT)),
@@ -55,12 +44,8 @@ ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
   vk::GraphicsPipelineDesc desc;
   desc.vertex_spirv = scene_vert;
   desc.fragment_spirv = scene_frag;
-  desc.vertex_bindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-  desc.vertex_attributes = {
-      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, position))},
-      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, normal))},
-      {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, uv))}};
-  desc.color_formats = {vk::to_vk(colour_format)};
+  scene_vertex_input(desc, true);
+  desc.color_formats = {vk::to_vk(lit_sum_format)};
   desc.depth_format = vk::to_vk(depth_format);
   desc.layout = layout_.get();
   desc.name = "forward";
@@ -77,26 +62,26 @@ void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer
   layout_.write(slot_sets_.sets[slot])
       .buffer(instances_binding, scene.instances(slot).handle())
       .buffer(lights_binding, lights.handle())
-      .image(shadow_maps_binding, maps_view, nearest_.get())
-      .image(shadow_maps_compare_binding, maps_view, compare_.get())
-      .image(shadow_cubes_binding, cubes_view, nearest_.get())
+      .image(shadow_maps_binding, maps_view, shadow_samplers_.nearest.get())
+      .image(shadow_maps_compare_binding, maps_view, shadow_samplers_.compare.get())
+      .image(shadow_cubes_binding, cubes_view, shadow_samplers_.nearest.get())
       .update();
 }
 
-ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colour, rg::ImageHandle maps,
-                                   rg::ImageHandle cubes, const GpuScene& scene, uint32_t slot,
-                                   const FrameConstants& constants) const {
+ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height,
+                                   rg::ImageHandle maps, rg::ImageHandle cubes, const GpuScene& scene,
+                                   uint32_t slot, const FrameConstants& constants) const {
   ForwardTargets targets;
   graph.add_pass(
       "forward",
       [&](rg::PassBuilder& b) {
         b.read(maps, rg::Usage::sampled_fragment);
         b.read(cubes, rg::Usage::sampled_fragment);
-        const rg::ImageDesc& target = graph.resources()[colour.index].image;
-        targets.depth = b.create_image("depth", {target.width, target.height, depth_format});
-        targets.depth = b.write(targets.depth, rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
-        targets.colour =
-            b.write(colour, rg::Usage::colour_attachment, rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
+        targets.depth = b.write(b.create_image("depth", {width, height, depth_format}),
+                                rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
+        targets.lit_sum =
+            b.write(b.create_image("lit sum", {width, height, lit_sum_format}), rg::Usage::colour_attachment,
+                    rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
       },
       [this, &scene, slot, constants](const vk::PassRecorder& rec) {
         rec.set_full_viewport();

@@ -1,13 +1,14 @@
 #pragma once
-// The lighting pass: every drawable of the GpuScene shaded by ambient plus every light of the
-// frame, each light with its own shadow algorithm and parameters (shaders/scene.frag,
-// shaders/light_shading.glsl), into a colour target, with a depth buffer it creates.
+// Forward lighting: every drawable of the GpuScene shaded by ambient plus every light of the
+// frame at every pixel, each light with its own shadow algorithm and parameters
+// (shaders/scene.frag, shaders/light_shading.glsl), into a lit sum and a depth buffer it creates.
 #include <cstdint>
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/scene_gpu_types.h"
+#include "systems/shadow_samplers.h"
 
 namespace sg::vk {
 class Buffer;
@@ -21,13 +22,13 @@ class GpuTextures;
 class ShadowMapArrays;
 
 struct ForwardTargets {
-  rg::ImageHandle colour;
-  rg::ImageHandle depth;  // transient D32, readable by later passes (depth-tested or sampled)
+  rg::ImageHandle lit_sum;  // linear HDR colour (rgba32f), for tone mapping
+  rg::ImageHandle depth;    // transient D32, readable by later passes (depth-tested or sampled)
 };
 
 class ForwardPass {
  public:
-  static constexpr rg::Format colour_format = rg::Format::rgba8_srgb;
+  static constexpr rg::Format lit_sum_format = rg::Format::rgba32_sfloat;
   static constexpr rg::Format depth_format = rg::Format::d32_sfloat;
 
   // `textures` must outlive the pass: its array is bound once.
@@ -38,16 +39,15 @@ class ForwardPass {
   void prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer& lights,
                const ShadowMapArrays& shadow_maps);
 
-  // Adds the pass: samples `maps` and `cubes` (the shadow images' newest versions), clears
-  // `colour` (a colour_format image of the frame's size) and a new depth buffer, draws every
-  // instance. `scene` is read when the pass records.
-  ForwardTargets add_to(rg::RenderGraph& graph, rg::ImageHandle colour, rg::ImageHandle maps,
+  // Adds the pass: samples `maps` and `cubes` (the shadow images' newest versions), draws every
+  // instance into a new lit sum and depth buffer of `width` x `height`. `scene` is read when the
+  // pass records.
+  ForwardTargets add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height, rg::ImageHandle maps,
                         rg::ImageHandle cubes, const GpuScene& scene, uint32_t slot,
                         const FrameConstants& constants) const;
 
  private:
-  vk::UniqueSampler nearest_;
-  vk::UniqueSampler compare_;
+  ShadowSamplers shadow_samplers_;
   vk::UniqueSampler material_;
   vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;

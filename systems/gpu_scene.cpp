@@ -11,6 +11,17 @@
 
 namespace sg {
 
+void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface) {
+  desc.vertex_bindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+  desc.vertex_attributes = {
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, position))}};
+  if (!surface) return;
+  desc.vertex_attributes.push_back(
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, normal))});
+  desc.vertex_attributes.push_back(
+      {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, uv))});
+}
+
 GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes, uint32_t frames_in_flight)
     : meshes_(meshes.meshes),
       instances_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "instances"),

@@ -15,12 +15,17 @@
 
 #include "ecs/world.h"
 #include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/pipeline.h"
 #include "rendergraph/device/resources.h"
 #include "systems/scene/aabb.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/scene_gpu_types.h"
 
 namespace sg {
+
+// The pipeline input of scene::Vertex at binding 0 (GpuScene::bind_geometry): the position at
+// location 0, and with `surface` the normal at 1 and the uv at 2.
+void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface);
 
 class GpuScene {
  public:

@@ -2,25 +2,36 @@
 
 #include <span>
 
+#include "rendergraph/device/context.h"
 #include "systems/camera.h"
 
 namespace sg {
 namespace {
 
-// Where the shadow images are left: sampled by the lighting pass.
-constexpr rg::ResourceState sampled{rg::PipelineStage::fragment_shader, rg::Access::shader_sampled_read,
-                                    rg::ImageLayout::read_only_optimal};
+// Where the shadow images are left: sampled by the lighting.
+constexpr rg::ResourceState sampled{rg::PipelineStage::fragment_shader | rg::PipelineStage::compute_shader,
+                                    rg::Access::shader_sampled_read, rg::ImageLayout::read_only_optimal};
+
+// Measured (docs/PERFORMANCE.md): tiled deferred wins on both lavapipe and the H100.
+LightingPath choose_lighting(LightingPath asked, const vk::VulkanContext&) {
+  return asked == LightingPath::automatic ? LightingPath::deferred : asked;
+}
 
 }  // namespace
 
 SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene, uint32_t frames_in_flight,
-                             const RendererSettings& settings)
+                             rg::Format frame_format, const RendererSettings& settings)
     : settings_(settings),
+      lighting_(choose_lighting(settings.lighting, context)),
       gpu_scene_(context, scene.meshes, frames_in_flight),
       textures_(context, scene.textures),
       shadow_maps_(context),
       shadow_passes_(context, frames_in_flight),
       forward_(context, frames_in_flight, textures_),
+      gbuffer_(context, frames_in_flight, textures_),
+      light_tiles_(context),
+      tiled_lighting_(context),
+      tone_map_(context, frame_format),
       light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light records") {}
 
 void SceneRenderer::gather(const ecs::World& world) {
@@ -35,22 +46,43 @@ void SceneRenderer::prepare(uint32_t slot) {
   gpu_scene_.upload(slot);
   const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
   shadow_passes_.prepare(slot, lights_, gpu_scene_, settings_.cube_shadows);
-  forward_.prepare(slot, gpu_scene_, records, shadow_maps_);
+  if (lighting_ == LightingPath::forward) {
+    forward_.prepare(slot, gpu_scene_, records, shadow_maps_);
+  } else {
+    gbuffer_.prepare(slot, gpu_scene_);
+  }
 }
 
-ForwardTargets SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports& imports,
-                                         rg::ImageHandle colour, uint32_t slot, const scene::CameraPose& pose,
-                                         const scene::Camera& lens) {
+RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports& imports,
+                                        rg::ImageHandle frame, uint32_t slot, const scene::CameraPose& pose,
+                                        const scene::Camera& lens) {
   ShadowPasses::Targets shadows{imports.import_image(graph, "shadow maps", shadow_maps_.maps(), sampled),
                                 imports.import_image(graph, "shadow cubes", shadow_maps_.cubes(), sampled)};
   shadows = shadow_passes_.add_to(graph, shadows, lights_, gpu_scene_, slot, settings_.cube_shadows);
 
-  const rg::ImageDesc& target = graph.resources()[colour.index].image;
-  const float aspect = float(target.width) / float(target.height);
-  const FrameConstants constants{projection_matrix(lens, aspect) * view_matrix(pose),
-                                 glm::vec4(pose.eye, ambient),
-                                 glm::uvec4(static_cast<uint32_t>(lights_.records.size()), 0, 0, 0)};
-  return forward_.add_to(graph, colour, shadows.maps, shadows.cubes, gpu_scene_, slot, constants);
+  const rg::ImageDesc& target = graph.resources()[frame.index].image;
+  const glm::mat4 view_projection =
+      projection_matrix(lens, float(target.width) / float(target.height)) * view_matrix(pose);
+  const auto light_count = static_cast<uint32_t>(lights_.records.size());
+  const FrameConstants constants{view_projection, glm::vec4(pose.eye, ambient),
+                                 glm::uvec4(light_count, 0, 0, 0)};
+
+  rg::ImageHandle lit_sum;
+  rg::ImageHandle depth;
+  if (lighting_ == LightingPath::forward) {
+    const ForwardTargets lit = forward_.add_to(graph, target.width, target.height, shadows.maps,
+                                               shadows.cubes, gpu_scene_, slot, constants);
+    lit_sum = lit.lit_sum;
+    depth = lit.depth;
+  } else {
+    const GBuffer gbuffer = gbuffer_.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
+    const vk::Buffer& records = light_records_.buffer(slot);
+    const LightTiles tiles = light_tiles_.add_to(graph, gbuffer.depth, records, light_count, view_projection);
+    lit_sum = tiled_lighting_.add_to(graph, gbuffer, tiles, shadows.maps, shadows.cubes, records,
+                                     lights_.group_begin, pose.eye);
+    depth = gbuffer.depth;
+  }
+  return {tone_map_.add_to(graph, lit_sum, frame, settings_.exposure), depth};
 }
 
 }  // namespace sg

@@ -1,13 +1,13 @@
 #pragma once
 // Renders an ECS scene through the render graph: the shadow maps of every shadow-casting light,
-// then the lighting pass. It takes three of the frame's phases (SandboxFrame::record names all
-// five):
+// the lighting (forward, or tiled deferred), then exposure and tone mapping into the frame. It
+// takes three of the frame's phases (SandboxFrame::record names all five):
 //
 //   renderer.gather(world);          // read the world: drawables and lights, on the CPU
 //   renderer.prepare(slot);          // shadow storage, caster culling, this slot's GPU buffers
-//   ForwardTargets t = renderer.add_passes(graph, imports, colour, slot, pose, lens);
+//   RenderedFrame f = renderer.add_passes(graph, imports, frame, slot, pose, lens);
 //
-// `colour` is any colour image of ForwardPass::colour_format (imported or transient); the
+// `frame` is any colour image of a format given at construction (imported or transient); the
 // returned handles let later passes (overlays, copies, presentation) read the results. The
 // shadow images are imported through `imports` as "shadow maps" and "shadow cubes".
 #include <cstdint>
@@ -17,14 +17,19 @@
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/vulkan/graph_imports.h"
 #include "systems/forward_pass.h"
+#include "systems/gbuffer_pass.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
+#include "systems/light_tiles_pass.h"
+#include "systems/lighting_path.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
 #include "systems/shadow_map_arrays.h"
 #include "systems/shadow_passes.h"
 #include "systems/shadows/cube_shadow_mode.h"
 #include "systems/shadows/frame_lights.h"
+#include "systems/tiled_lighting_pass.h"
+#include "systems/tone_map_pass.h"
 
 namespace sg::vk {
 class VulkanContext;
@@ -35,6 +40,13 @@ namespace sg {
 struct RendererSettings {
   shadows::LightOverrides lights;
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
+  LightingPath lighting = LightingPath::automatic;
+  float exposure = 1.0f;  // multiplies the lit sum before tone mapping
+};
+
+struct RenderedFrame {
+  rg::ImageHandle colour;  // the frame image's newest version: the tone-mapped picture
+  rg::ImageHandle depth;   // the camera's D32 depth buffer (transient)
 };
 
 class SceneRenderer {
@@ -43,18 +55,21 @@ class SceneRenderer {
   static constexpr float ambient = 0.15f;
 
   // Uploads `scene`'s meshes and textures; the scene's world is read by gather() each frame.
+  // `frame_format` is the format of the images add_passes draws the picture into.
   SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene, uint32_t frames_in_flight,
-                const RendererSettings& settings = {});
+                rg::Format frame_format, const RendererSettings& settings = {});
 
   // Reads the world's drawables and lights into CPU lists. Transforms must be up to date.
   void gather(const ecs::World& world);
   // Fits the shadow storage to the gathered lights and writes everything the frame's passes read
   // into the slot's buffers and descriptor sets. Call after FrameRing::begin_frame gave `slot`.
   void prepare(uint32_t slot);
-  // Declares the shadow passes and the lighting pass.
-  ForwardTargets add_passes(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHandle colour,
-                            uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens);
+  // Declares the shadow passes, the lighting and the tone mapping into `frame`.
+  RenderedFrame add_passes(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHandle frame,
+                           uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens);
 
+  // The lighting path in use: the settings' one, or for automatic the one chosen for the device.
+  LightingPath lighting() const { return lighting_; }
   const GpuScene& gpu_scene() const { return gpu_scene_; }
   const shadows::FrameLights& lights() const { return lights_; }
   const ShadowMapArrays& shadow_maps() const { return shadow_maps_; }
@@ -62,11 +77,16 @@ class SceneRenderer {
 
  private:
   RendererSettings settings_;
+  LightingPath lighting_;
   GpuScene gpu_scene_;
   GpuTextures textures_;
   ShadowMapArrays shadow_maps_;
   ShadowPasses shadow_passes_;
   ForwardPass forward_;
+  GBufferPass gbuffer_;
+  LightTilesPass light_tiles_;
+  TiledLightingPass tiled_lighting_;
+  ToneMapPass tone_map_;
   vk::FrameBuffers light_records_;
   shadows::FrameLights lights_;
 };

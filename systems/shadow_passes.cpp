@@ -49,9 +49,7 @@ ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight
   cube_faces_stride_ = (cube_faces_bytes + alignment - 1) / alignment * alignment;
 
   vk::GraphicsPipelineDesc desc;
-  desc.vertex_bindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-  desc.vertex_attributes = {
-      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, position))}};
+  scene_vertex_input(desc, false);
   desc.depth_format = vk::to_vk(ShadowMapArrays::depth_format);
   // Receivers apply each light's own bias (ALGORITHMS.md section 4), so casters are drawn as
   // they are, both faces: thin and open meshes cast too.

@@ -54,11 +54,10 @@ BufferHandle RenderGraph::import_buffer(std::string name, const BufferDesc& desc
   return {index, 0};
 }
 
-PassBuilder RenderGraph::begin_pass(std::string name, QueueType queue, ExecuteFn execute) {
+PassBuilder RenderGraph::begin_pass(std::string name, QueueType queue) {
   PassDeclaration& pass = passes_.emplace_back();
   pass.name = std::move(name);
   pass.queue = queue;
-  pass.execute = std::move(execute);
   return PassBuilder(*this, static_cast<std::uint32_t>(passes_.size() - 1));
 }
 

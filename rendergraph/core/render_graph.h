@@ -24,6 +24,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -38,17 +39,20 @@ namespace sg::rg {
 using ExecuteFn = std::function<void(PassContext&)>;
 
 namespace detail {
-// The parameter type of a callable object with one non-template call operator.
+// The last parameter type of a callable object with one non-template call operator.
 template <class CallOperator>
-struct sole_parameter;
-template <class R, class C, class P>
-struct sole_parameter<R (C::*)(P) const> {
-  using type = P;
+struct last_parameter;
+template <class R, class C, class... Ps>
+struct last_parameter<R (C::*)(Ps...) const> {
+  using type = std::tuple_element_t<sizeof...(Ps) - 1, std::tuple<Ps...>>;
 };
-template <class R, class C, class P>
-struct sole_parameter<R (C::*)(P)> {
-  using type = P;
+template <class R, class C, class... Ps>
+struct last_parameter<R (C::*)(Ps...)> {
+  using type = std::tuple_element_t<sizeof...(Ps) - 1, std::tuple<Ps...>>;
 };
+template <class Execute>
+using recorder_of =
+    std::remove_cvref_t<typename last_parameter<decltype(&std::remove_cvref_t<Execute>::operator())>::type>;
 }  // namespace detail
 
 // An execute function as the graph stores it: one that takes a PassContext as it is, one that
@@ -58,11 +62,24 @@ ExecuteFn to_execute_fn(Execute&& execute) {
   if constexpr (std::is_invocable_v<Execute&, PassContext&>) {
     return ExecuteFn(std::forward<Execute>(execute));
   } else {
-    using Parameter =
-        typename detail::sole_parameter<decltype(&std::remove_cvref_t<Execute>::operator())>::type;
-    using Recorder = std::remove_cvref_t<Parameter>;
+    using Recorder = detail::recorder_of<Execute>;
     return
         [fn = std::forward<Execute>(execute)](PassContext& context) mutable { fn(context.get<Recorder>()); };
+  }
+}
+
+// The same for a pass whose setup returned `data`: the execute function takes the data first.
+template <class Data, class Execute>
+ExecuteFn to_execute_fn(Data data, Execute&& execute) {
+  if constexpr (std::is_invocable_v<Execute&, const Data&, PassContext&>) {
+    return [data = std::move(data), fn = std::forward<Execute>(execute)](PassContext& context) mutable {
+      fn(data, context);
+    };
+  } else {
+    using Recorder = detail::recorder_of<Execute>;
+    return [data = std::move(data), fn = std::forward<Execute>(execute)](PassContext& context) mutable {
+      fn(data, context.get<Recorder>());
+    };
   }
 }
 
@@ -152,10 +169,23 @@ class RenderGraph {
 
   // Runs `setup` now to collect the pass's declarations; `execute` runs when the executor records
   // the pass (an empty one records nothing). Returns the pass's declaration index.
+  //
+  // The execute function's captures are taken before setup runs, so what setup decides (the
+  // handles of transients it creates) reaches execute as setup's return value: a setup that
+  // returns data hands it to execute as the first argument,
+  //   [&](PassBuilder& b) { return Out{b.write(b.create_buffer(...), ...)}; },
+  //   [](const Out& out, const vk::PassRecorder& rec) { ... rec.buffer(out.list) ... }
   template <std::invocable<PassBuilder&> Setup, class Execute = ExecuteFn>
   std::uint32_t add_pass(std::string name, QueueType queue, Setup&& setup, Execute&& execute = {}) {
-    PassBuilder builder = begin_pass(std::move(name), queue, to_execute_fn(std::forward<Execute>(execute)));
-    std::forward<Setup>(setup)(builder);
+    PassBuilder builder = begin_pass(std::move(name), queue);
+    using Data = std::invoke_result_t<Setup&, PassBuilder&>;
+    if constexpr (std::is_void_v<Data>) {
+      std::forward<Setup>(setup)(builder);
+      passes_[builder.pass_].execute = to_execute_fn(std::forward<Execute>(execute));
+    } else {
+      Data data = std::forward<Setup>(setup)(builder);
+      passes_[builder.pass_].execute = to_execute_fn(std::move(data), std::forward<Execute>(execute));
+    }
     return builder.pass_;
   }
   template <std::invocable<PassBuilder&> Setup, class Execute = ExecuteFn>
@@ -171,7 +201,7 @@ class RenderGraph {
  private:
   friend class PassBuilder;
 
-  PassBuilder begin_pass(std::string name, QueueType queue, ExecuteFn execute);
+  PassBuilder begin_pass(std::string name, QueueType queue);
   std::uint32_t add_resource(std::string name, ResourceKind kind);
   void report(ErrorKind kind, std::string message);
 

@@ -75,6 +75,10 @@ void PipelineLayout::bind(VkCommandBuffer cmd, VkDescriptorSet set,
                           static_cast<uint32_t>(dynamic_offsets.size()), dynamic_offsets.data());
 }
 
+void PipelineLayout::bind_compute(VkCommandBuffer cmd, VkDescriptorSet set) const {
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_.get(), 0, 1, &set, 0, nullptr);
+}
+
 void PipelineLayout::push_bytes(VkCommandBuffer cmd, const void* data, uint32_t size) const {
   if (size > push_.size) {
     throw std::logic_error("pushing " + std::to_string(size) + " bytes into a push-constant range of " +

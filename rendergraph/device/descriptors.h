@@ -60,6 +60,8 @@ class PipelineLayout {
   // Binds `set` as set 0 of graphics pipelines; `dynamic_offsets` are its dynamic buffers',
   // in binding order.
   void bind(VkCommandBuffer cmd, VkDescriptorSet set, std::span<const uint32_t> dynamic_offsets = {}) const;
+  // Binds `set` as set 0 of compute pipelines.
+  void bind_compute(VkCommandBuffer cmd, VkDescriptorSet set) const;
   // Pushes `constants` at offset 0, to the stages of the layout's push-constant range.
   template <class Constants>
   void push(VkCommandBuffer cmd, const Constants& constants) const {

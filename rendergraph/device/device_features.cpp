@@ -22,6 +22,9 @@ constexpr RequiredFeature required_features[] = {
      [](DeviceFeatures& f) -> VkBool32& { return f.core.features.drawIndirectFirstInstance; }},
     {"shaderDrawParameters (Vulkan 1.1)", "shaders read gl_DrawID and gl_BaseInstance",
      [](DeviceFeatures& f) -> VkBool32& { return f.v11.shaderDrawParameters; }},
+    {"maintenance4 (Vulkan 1.3)",
+     "compute shaders compiled for SPIR-V 1.6 declare their workgroup size with LocalSizeId",
+     [](DeviceFeatures& f) -> VkBool32& { return f.v13.maintenance4; }},
 };
 
 }  // namespace

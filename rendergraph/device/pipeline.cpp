@@ -100,4 +100,29 @@ UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPi
   return UniquePipeline(context.device(), pipeline);
 }
 
+UniquePipeline create_compute_pipeline(VulkanContext& context, const ComputePipelineDesc& desc) {
+  const UniqueShaderModule module = create_shader_module(context, desc.spirv);
+  std::vector<VkSpecializationMapEntry> entries;
+  for (uint32_t id = 0; id < desc.specialization.size(); ++id) {
+    entries.push_back({id, id * static_cast<uint32_t>(sizeof(uint32_t)), sizeof(uint32_t)});
+  }
+  const VkSpecializationInfo specialization{static_cast<uint32_t>(entries.size()), entries.data(),
+                                            desc.specialization.size() * sizeof(uint32_t),
+                                            desc.specialization.data()};
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = module.get();
+  info.stage.pName = "main";
+  info.stage.pSpecializationInfo = entries.empty() ? nullptr : &specialization;
+  info.layout = desc.layout;
+  VkPipeline pipeline;
+  check(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+        "vkCreateComputePipelines " + desc.name);
+  if (!desc.name.empty()) {
+    context.set_name(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<uint64_t>(pipeline), desc.name.c_str());
+  }
+  return UniquePipeline(context.device(), pipeline);
+}
+
 }  // namespace sg::vk

@@ -33,4 +33,15 @@ struct GraphicsPipelineDesc {
 
 UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPipelineDesc& desc);
 
+// A compute pipeline. `specialization[i]` is the value of the shader's `constant_id = i` (32-bit
+// integers or bools), so one shader serves variants whose branches are resolved at compile time.
+struct ComputePipelineDesc {
+  std::span<const uint32_t> spirv;
+  std::vector<uint32_t> specialization;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  std::string name;
+};
+
+UniquePipeline create_compute_pipeline(VulkanContext& context, const ComputePipelineDesc& desc);
+
 }  // namespace sg::vk

@@ -36,6 +36,8 @@ void gather_2d(const ecs::World& world, const LightOverrides& overrides, const c
           const scene::ShadowSettings& shadow) {
         const scene::ShadowSettings s = with_overrides(shadow, overrides);
         out.records.push_back(pack_light(light, transform, s));
+        out.scratch.groups.push_back(
+            light_group(s.casts_shadow ? ShadowKind::map : ShadowKind::none, s.algorithm));
         if (!s.casts_shadow) return;
         const auto layer = static_cast<uint32_t>(out.maps.size());
         out.maps.push_back({static_cast<uint32_t>(out.records.size() - 1), layer,
@@ -45,11 +47,31 @@ void gather_2d(const ecs::World& world, const LightOverrides& overrides, const c
       });
 }
 
+// Orders the records by group (stably, so lights keep the world's order within a group) and
+// points the views at their records' new places.
+void sort_by_group(FrameLights& out) {
+  FrameLights::Scratch& scratch = out.scratch;
+  out.group_begin.fill(0);
+  for (const uint32_t group : scratch.groups) ++out.group_begin[group + 1];
+  for (uint32_t g = 0; g < light_group_count; ++g) out.group_begin[g + 1] += out.group_begin[g];
+  std::array<uint32_t, light_group_count + 1> cursor = out.group_begin;
+  scratch.moved_to.resize(out.records.size());
+  scratch.records.resize(out.records.size());
+  for (size_t i = 0; i < out.records.size(); ++i) {
+    scratch.moved_to[i] = cursor[scratch.groups[i]]++;
+    scratch.records[scratch.moved_to[i]] = out.records[i];
+  }
+  std::swap(out.records, scratch.records);
+  for (ShadowMapView& map : out.maps) map.light = scratch.moved_to[map.light];
+  for (ShadowCubeView& cube : out.cubes) cube.light = scratch.moved_to[cube.light];
+}
+
 }  // namespace
 
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
                    FrameLights& out) {
   out.records.clear();
+  out.scratch.groups.clear();
   out.maps.clear();
   out.cubes.clear();
   out.map_size = min_shadow_resolution;
@@ -87,6 +109,8 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
           const scene::ShadowSettings& shadow) {
         const scene::ShadowSettings s = with_overrides(shadow, overrides);
         out.records.push_back(pack_light(light, transform, s));
+        out.scratch.groups.push_back(
+            light_group(s.casts_shadow ? ShadowKind::cube : ShadowKind::none, s.algorithm));
         if (!s.casts_shadow) return;
         const glm::vec3 position = scene::light_position(transform);
         const auto cube = static_cast<uint32_t>(out.cubes.size());
@@ -96,6 +120,7 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
                              "shadow " + light_name(world, entity, "point", cube)});
         out.cube_size = std::max(out.cube_size, out.cubes.back().requested_resolution);
       });
+  sort_by_group(out);
 }
 
 ShadowStorageSize needed_storage(const FrameLights& lights) {

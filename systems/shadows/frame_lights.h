@@ -9,6 +9,7 @@
 // faces of at least cube_size (needed_storage()); a light asking for less renders into, and
 // samples, the top-left square of its layer of its own size. Once the storage is sized,
 // place_shadow_maps() tells each record where its map is.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -20,6 +21,7 @@
 #include "systems/scene/aabb.h"
 #include "systems/scene/shadow_settings.h"
 #include "systems/shadows/gpu_light.h"
+#include "systems/shadows/light_groups.h"
 #include "systems/shadows/light_views.h"
 #include "systems/shadows/shadow_storage_size.h"
 
@@ -57,11 +59,21 @@ struct ShadowCubeView {
 };
 
 struct FrameLights {
+  // Ordered by light group (light_groups.h): the records of group g are
+  // [group_begin[g], group_begin[g + 1]), so a pass that shades one group reads one range.
   std::vector<GpuLight> records;
+  std::array<uint32_t, light_group_count + 1> group_begin{};
   std::vector<ShadowMapView> maps;
   std::vector<ShadowCubeView> cubes;
   uint32_t map_size = min_shadow_resolution;   // the smallest layer side that fits, texels
   uint32_t cube_size = min_shadow_resolution;  // the smallest cube face side that fits, texels
+
+  // gather_lights' working storage, kept so that a frame allocates nothing once it has grown.
+  struct Scratch {
+    std::vector<uint32_t> groups;  // per record as gathered
+    std::vector<uint32_t> moved_to;
+    std::vector<GpuLight> records;
+  } scratch;
 };
 
 // Fills `out` (reusing its storage) from every light entity of `world`. Directional and

@@ -95,7 +95,34 @@ TEST(FrameLights, PlacingMapsGivesEachRecordItsRegionOfTheStorage) {
   EXPECT_FLOAT_EQ(key.shadow_rect.w, 512.0f / 2048.0f);
   EXPECT_EQ(lights.records[lights.maps[1].light].info.w, 1u);
   EXPECT_EQ(lights.records[lights.cubes[1].light].info.w, 1u);
-  EXPECT_EQ(lights.records[1].info.w, no_shadow_map);  // "fill" still has none
+  EXPECT_EQ(lights.records[0].info.w, no_shadow_map);  // "fill" (unshadowed: group 0) has none
+}
+
+TEST(FrameLights, RecordsAreOrderedByLightGroup) {
+  const scene::Scene scene = five_lights();
+  FrameLights lights;
+  gather_lights(scene.world, bounds, {}, lights);
+  // Every light here uses pcf: "fill" is unshadowed, key and the sun have 2D maps, two cubes.
+  const uint32_t map_pcf = light_group(ShadowKind::map, scene::ShadowAlgorithm::pcf);
+  const uint32_t cube_pcf = light_group(ShadowKind::cube, scene::ShadowAlgorithm::pcf);
+  EXPECT_EQ(lights.group_begin[0], 0u);
+  EXPECT_EQ(lights.group_begin[1], 1u);  // one unshadowed light
+  EXPECT_EQ(lights.group_begin[map_pcf + 1] - lights.group_begin[map_pcf], 2u);
+  EXPECT_EQ(lights.group_begin[cube_pcf + 1] - lights.group_begin[cube_pcf], 2u);
+  EXPECT_EQ(lights.group_begin[light_group_count], 5u);
+  for (const ShadowMapView& map : lights.maps) {
+    EXPECT_GE(map.light, lights.group_begin[map_pcf]);
+    EXPECT_LT(map.light, lights.group_begin[map_pcf + 1]);
+  }
+  for (const ShadowCubeView& cube : lights.cubes) {
+    EXPECT_EQ(lights.records[cube.light].info.x, uint32_t(GpuLightType::point));
+    EXPECT_GE(cube.light, lights.group_begin[cube_pcf]);
+  }
+  // Groups number the same on both sides of the shader boundary.
+  for (uint32_t group = 0; group < light_group_count; ++group) {
+    if (group_shadow_kind(group) == ShadowKind::none) continue;
+    EXPECT_EQ(light_group(group_shadow_kind(group), group_algorithm(group)), group);
+  }
 }
 
 }  // namespace

@@ -1,0 +1,9 @@
+// The sizes of tiled light culling, declared once for the shaders (light_tiles.glsl) and the C++
+// that allocates their buffers (systems/light_tiles_pass.h includes this file).
+#ifndef SG_LIGHT_TILE_LAYOUT_GLSL
+#define SG_LIGHT_TILE_LAYOUT_GLSL
+
+const uint LIGHT_TILE_SIZE = 16u;       // pixels per tile side; one workgroup per tile
+const uint MAX_LIGHTS_PER_TILE = 256u;  // beyond this a tile drops its highest-numbered lights
+
+#endif

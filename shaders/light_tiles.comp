@@ -1,0 +1,120 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Light culling: one workgroup per screen tile of LIGHT_TILE_SIZE pixels. It bounds the tile's
+// visible surfaces (nearest to farthest depth, background excluded) by a sphere, lists every
+// light that reaches it in light-index order, and, since the records are sorted by light group
+// (systems/shadows/frame_lights.h), finds each group's range in that list. Every tile with
+// lights of a group is appended to that group's tile list, whose length is the group's
+// indirect dispatch (tiled_lighting.comp).
+#include "bindings.glsl"
+#include "light_groups.glsl"
+#include "light_record.glsl"
+#include "light_tiles.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+const uint THREADS = 256u;
+
+layout(std430, set = 0, binding = lights_binding) readonly buffer Lights { Light lights[]; };
+layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
+layout(std430, set = 0, binding = tile_lights_binding) writeonly buffer TileLights { uint tile_lights[]; };
+// Per tile and group: x the first entry in tile_lights, y how many.
+layout(std430, set = 0, binding = tile_ranges_binding) writeonly buffer TileRanges { uvec2 tile_ranges[]; };
+// Per group, tile_count slots: the tiles that have lights of the group, in no particular order.
+layout(std430, set = 0, binding = group_tiles_binding) writeonly buffer GroupTiles { uint group_tiles[]; };
+// Per group: VkDispatchIndirectCommand (x counts the group's tiles; y = z = 1), 16-byte stride.
+layout(std430, set = 0, binding = group_dispatch_binding) buffer GroupDispatch { uvec4 group_dispatch[]; };
+
+layout(push_constant) uniform Constants {
+  mat4 inverse_view_projection;
+  uvec4 screen;  // x width, y height, z tiles across, w tiles in all
+  uvec4 counts;  // x lights
+} frame;
+
+shared uint depth_min_bits;
+shared uint depth_max_bits;
+shared uint found[THREADS];  // per thread, then their inclusive prefix sums
+shared uint entries[MAX_LIGHTS_PER_TILE];
+shared uint group_first[LIGHT_GROUP_COUNT];
+shared uint group_end[LIGHT_GROUP_COUNT];
+
+uint group_of(uint light) {
+  Light l = lights[light];
+  uint kind = l.info.w == NO_SHADOW_MAP ? SHADOW_KIND_NONE
+                                        : (l.info.x == LIGHT_POINT ? SHADOW_KIND_CUBE : SHADOW_KIND_MAP);
+  return light_group(kind, l.info.z);
+}
+
+void main() {
+  uint local = gl_LocalInvocationIndex;
+  uint tile = gl_WorkGroupID.y * frame.screen.z + gl_WorkGroupID.x;
+  if (local == 0u) {
+    depth_min_bits = floatBitsToUint(1.0);
+    depth_max_bits = 0u;
+  }
+  if (local < LIGHT_GROUP_COUNT) {
+    group_first[local] = 0u;
+    group_end[local] = 0u;
+  }
+  barrier();
+
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) {
+    float depth = texelFetch(scene_depth, pixel, 0).r;
+    if (depth < 1.0) {  // positive floats order like their bits
+      atomicMin(depth_min_bits, floatBitsToUint(depth));
+      atomicMax(depth_max_bits, floatBitsToUint(depth));
+    }
+  }
+  barrier();
+
+  // Lights in ordered chunks, one per thread: count, prefix-sum, then write in order, so the
+  // list is sorted by light index and the same every frame.
+  bool has_surfaces = depth_max_bits != 0u;
+  uint light_count = has_surfaces ? frame.counts.x : 0u;
+  vec2 texel = 2.0 / vec2(frame.screen.xy);
+  vec2 ndc_min = vec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE) * texel - 1.0;
+  vec2 ndc_max = min(vec2((gl_WorkGroupID.xy + 1u) * LIGHT_TILE_SIZE) * texel - 1.0, vec2(1.0));
+  vec4 sphere = tile_bounding_sphere(frame.inverse_view_projection, ndc_min, ndc_max,
+                                     uintBitsToFloat(depth_min_bits), uintBitsToFloat(depth_max_bits));
+  uint chunk = (light_count + THREADS - 1u) / THREADS;
+  uint first = min(local * chunk, light_count);
+  uint last = min(first + chunk, light_count);
+  uint mine = 0u;
+  for (uint i = first; i < last; ++i) {
+    if (light_reaches_sphere(lights[i], sphere)) ++mine;
+  }
+  found[local] = mine;
+  barrier();
+  for (uint step = 1u; step < THREADS; step <<= 1u) {
+    uint add = local >= step ? found[local - step] : 0u;
+    barrier();
+    found[local] += add;
+    barrier();
+  }
+  uint total = min(found[THREADS - 1u], MAX_LIGHTS_PER_TILE);
+  uint slot = found[local] - mine;
+  for (uint i = first; i < last && slot < MAX_LIGHTS_PER_TILE; ++i) {
+    if (light_reaches_sphere(lights[i], sphere)) {
+      entries[slot] = i;
+      tile_lights[tile * MAX_LIGHTS_PER_TILE + slot] = i;
+      ++slot;
+    }
+  }
+  barrier();
+
+  // Groups are contiguous in the list: find where each begins and ends.
+  if (local < total) {
+    uint group = group_of(entries[local]);
+    if (local == 0u || group_of(entries[local - 1u]) != group) group_first[group] = local;
+    if (local + 1u == total || group_of(entries[local + 1u]) != group) group_end[group] = local + 1u;
+  }
+  barrier();
+  if (local < LIGHT_GROUP_COUNT) {
+    uint count = group_end[local] - group_first[local];
+    tile_ranges[tile * LIGHT_GROUP_COUNT + local] = uvec2(tile * MAX_LIGHTS_PER_TILE + group_first[local], count);
+    if (count > 0u) {
+      uint k = atomicAdd(group_dispatch[local].x, 1u);
+      group_tiles[local * frame.screen.w + k] = tile;
+    }
+  }
+}

@@ -1,0 +1,81 @@
+#include "systems/gbuffer_pass.h"
+
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/pipeline.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/gbuffer.frag.spv.h"
+#include "shaders/scene.vert.spv.h"
+#include "systems/gpu_scene.h"
+#include "systems/gpu_textures.h"
+#include "systems/shader_bindings.h"
+
+namespace sg {
+namespace {
+
+using namespace bindings;
+constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr rg::Format position_format = rg::Format::rgba32_sfloat;
+constexpr rg::Format normal_format = rg::Format::rgba16_sfloat;
+constexpr rg::Format albedo_format = rg::Format::rgba16_sfloat;
+constexpr rg::Format depth_format = rg::Format::d32_sfloat;
+
+}  // namespace
+
+GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures)
+    : material_(
+          vk::create_sampler(context.device(), VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_REPEAT)),
+      layout_(context.device(),
+              {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
+               {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                VK_SHADER_STAGE_FRAGMENT_BIT}},
+              vk::push_constants<FrameConstants>(both_stages)),
+      slot_sets_(layout_.allocate_sets(frames_in_flight)) {
+  for (const VkDescriptorSet set : slot_sets_.sets) {
+    layout_.write(set).image(material_textures_binding, textures.array().view(), material_.get()).update();
+  }
+  vk::GraphicsPipelineDesc desc;
+  desc.vertex_spirv = scene_vert;
+  desc.fragment_spirv = gbuffer_frag;
+  scene_vertex_input(desc, true);
+  desc.color_formats = {vk::to_vk(lit_sum_format), vk::to_vk(position_format), vk::to_vk(normal_format),
+                        vk::to_vk(albedo_format)};
+  desc.depth_format = vk::to_vk(depth_format);
+  desc.layout = layout_.get();
+  desc.name = "g-buffer";
+  pipeline_ = vk::create_graphics_pipeline(context, desc);
+}
+
+void GBufferPass::prepare(uint32_t slot, const GpuScene& scene) {
+  layout_.write(slot_sets_.sets[slot]).buffer(instances_binding, scene.instances(slot).handle()).update();
+}
+
+GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height, const GpuScene& scene,
+                            uint32_t slot, const FrameConstants& constants) const {
+  GBuffer g;
+  const rg::ClearValue nothing = rg::ClearValue::colour_of(0.0f, 0.0f, 0.0f, 0.0f);
+  graph.add_pass(
+      "g-buffer",
+      [&](rg::PassBuilder& b) {
+        const auto target = [&](const char* name, rg::Format format, rg::ClearValue clear) {
+          return b.write(b.create_image(name, {width, height, format}), rg::Usage::colour_attachment, clear);
+        };
+        // The background's colour, the forward pass's clear colour, so both paths agree.
+        g.lit_sum = target("lit sum", lit_sum_format, rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
+        g.position = target("g-buffer position", position_format, nothing);
+        g.normal = target("g-buffer normal", normal_format, nothing);
+        g.albedo = target("g-buffer albedo", albedo_format, nothing);
+        g.depth = b.write(b.create_image("depth", {width, height, depth_format}), rg::Usage::depth_attachment,
+                          rg::ClearValue::depth_of(1.0f));
+      },
+      [this, &scene, slot, constants](const vk::PassRecorder& rec) {
+        rec.set_full_viewport();
+        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
+        layout_.bind(rec.cmd(), slot_sets_.sets[slot]);
+        layout_.push(rec.cmd(), constants);
+        scene.draw_all(rec.cmd(), slot);
+      });
+  return g;
+}
+
+}  // namespace sg

@@ -1,0 +1,49 @@
+#pragma once
+// The G-buffer of tiled deferred lighting (shaders/gbuffer.frag): every drawable of the GpuScene
+// rasterized once into what the lighting needs per pixel, plus the ambient term as the start of
+// the lit sum. All targets are transients of the frame's size.
+#include <cstdint>
+
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/unique_handle.h"
+#include "systems/scene_gpu_types.h"
+
+namespace sg::vk {
+class VulkanContext;
+}
+
+namespace sg {
+
+class GpuScene;
+class GpuTextures;
+
+struct GBuffer {
+  rg::ImageHandle lit_sum;   // HDR (rgba32f): ambient so far
+  rg::ImageHandle position;  // rgba32f: world position, shininess
+  rg::ImageHandle normal;    // rgba16f: unit normal, specular strength
+  rg::ImageHandle albedo;    // rgba16f: base colour, 1 where a surface was drawn
+  rg::ImageHandle depth;     // D32
+};
+
+class GBufferPass {
+ public:
+  static constexpr rg::Format lit_sum_format = rg::Format::rgba32_sfloat;
+
+  // `textures` must outlive the pass: its array is bound once.
+  GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);
+
+  // Points the slot's descriptor set at this frame's instances.
+  void prepare(uint32_t slot, const GpuScene& scene);
+
+  GBuffer add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height, const GpuScene& scene,
+                 uint32_t slot, const FrameConstants& constants) const;
+
+ private:
+  vk::UniqueSampler material_;
+  vk::PipelineLayout layout_;
+  vk::DescriptorSets slot_sets_;
+  vk::UniquePipeline pipeline_;
+};
+
+}  // namespace sg

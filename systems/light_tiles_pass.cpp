@@ -1,0 +1,118 @@
+#include "systems/light_tiles_pass.h"
+
+#include <array>
+
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/pipeline.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/light_tiles.comp.spv.h"
+#include "systems/shader_bindings.h"
+#include "systems/shadows/light_groups.h"
+
+namespace sg {
+namespace {
+
+using namespace bindings;
+using shadows::light_group_count;
+constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+
+struct CullConstants {
+  glm::mat4 inverse_view_projection;
+  glm::uvec4 screen;  // width, height, tiles across, tiles in all
+  glm::uvec4 counts;  // lights
+};
+
+// Every group's dispatch starts at zero workgroups (the culling counts them) of height and depth 1.
+std::array<glm::uvec4, light_group_count> empty_dispatches() {
+  std::array<glm::uvec4, light_group_count> commands;
+  commands.fill(glm::uvec4(0u, 1u, 1u, 0u));
+  return commands;
+}
+
+}  // namespace
+
+LightTileGrid LightTileGrid::of(uint32_t width, uint32_t height) {
+  return {(width + tiles::LIGHT_TILE_SIZE - 1) / tiles::LIGHT_TILE_SIZE,
+          (height + tiles::LIGHT_TILE_SIZE - 1) / tiles::LIGHT_TILE_SIZE};
+}
+
+uint64_t LightTilesPass::lights_bytes(LightTileGrid grid) {
+  return uint64_t{grid.count()} * tiles::MAX_LIGHTS_PER_TILE * sizeof(uint32_t);
+}
+uint64_t LightTilesPass::ranges_bytes(LightTileGrid grid) {
+  return uint64_t{grid.count()} * light_group_count * sizeof(glm::uvec2);
+}
+uint64_t LightTilesPass::tiles_bytes(LightTileGrid grid) {
+  return uint64_t{grid.count()} * light_group_count * sizeof(uint32_t);
+}
+uint64_t LightTilesPass::dispatch_bytes() { return light_group_count * sizeof(glm::uvec4); }
+
+LightTilesPass::LightTilesPass(vk::VulkanContext& context)
+    : nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
+      layout_(context.device(),
+              {{lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
+               {scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+               {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
+               {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
+               {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
+               {group_dispatch_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}},
+              vk::push_constants<CullConstants>(compute)),
+      pipeline_(vk::create_compute_pipeline(context, {light_tiles_comp, {}, layout_.get(), "light tiles"})) {}
+
+LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
+                                  uint32_t light_count, const glm::mat4& view_projection,
+                                  const LightTiles* outputs) const {
+  const rg::ImageDesc& screen = graph.resources()[depth.index].image;
+  const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
+  const rg::BufferHandle reset_dispatch = [&] {
+    rg::BufferHandle dispatch;
+    graph.add_pass(
+        "light tiles reset",
+        [&](rg::PassBuilder& b) {
+          dispatch =
+              b.write(outputs ? outputs->dispatch : b.create_buffer("tile dispatch", {dispatch_bytes()}),
+                      rg::Usage::transfer);
+          return dispatch;
+        },
+        [](rg::BufferHandle written, const vk::PassRecorder& rec) {
+          const auto commands = empty_dispatches();
+          vkCmdUpdateBuffer(rec.cmd(), rec.buffer(written), 0, sizeof(commands), commands.data());
+        });
+    return dispatch;
+  }();
+  LightTiles out;
+  graph.add_pass(
+      "light tiles",
+      [&](rg::PassBuilder& b) {
+        b.read(depth, rg::Usage::sampled_compute);
+        const auto output = [&](const rg::BufferHandle* given, const char* name, uint64_t bytes) {
+          return b.write(given ? *given : b.create_buffer(name, {bytes}), rg::Usage::storage_compute);
+        };
+        out.lights = output(outputs ? &outputs->lights : nullptr, "tile lights", lights_bytes(grid));
+        out.ranges = output(outputs ? &outputs->ranges : nullptr, "tile ranges", ranges_bytes(grid));
+        out.tiles = output(outputs ? &outputs->tiles : nullptr, "group tiles", tiles_bytes(grid));
+        out.dispatch = b.write(reset_dispatch, rg::Usage::storage_compute);
+        return out;
+      },
+      [this, depth, grid, &lights, light_count, screen, inverse = glm::inverse(view_projection)](
+          const LightTiles& written, const vk::PassRecorder& rec) {
+        const VkDescriptorSet set = layout_.write(rec.allocate_set(layout_))
+                                        .buffer(lights_binding, lights.handle())
+                                        .image(scene_depth_binding, rec.view(depth), nearest_.get())
+                                        .buffer(tile_lights_binding, rec.buffer(written.lights))
+                                        .buffer(tile_ranges_binding, rec.buffer(written.ranges))
+                                        .buffer(group_tiles_binding, rec.buffer(written.tiles))
+                                        .buffer(group_dispatch_binding, rec.buffer(written.dispatch))
+                                        .update();
+        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
+        layout_.bind_compute(rec.cmd(), set);
+        layout_.push(rec.cmd(), CullConstants{inverse,
+                                              {screen.width, screen.height, grid.across, grid.count()},
+                                              {light_count, 0u, 0u, 0u}});
+        vkCmdDispatch(rec.cmd(), grid.across, grid.down, 1);
+      });
+  return out;
+}
+
+}  // namespace sg

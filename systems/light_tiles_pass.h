@@ -1,0 +1,64 @@
+#pragma once
+// Light culling for tiled lighting (shaders/light_tiles.comp): per screen tile of
+// LIGHT_TILE_SIZE pixels, the lights that reach the tile's visible surfaces, grouped by light
+// group, and per group the tiles to shade with their indirect dispatch.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/unique_handle.h"
+
+namespace sg::vk {
+class Buffer;
+class VulkanContext;
+}  // namespace sg::vk
+
+namespace sg {
+
+namespace tiles {
+using uint = std::uint32_t;
+#include "shaders/light_tile_layout.glsl"
+}  // namespace tiles
+
+// The culling's outputs, laid out as shaders/light_tiles.comp documents.
+struct LightTiles {
+  rg::BufferHandle lights;    // per tile, MAX_LIGHTS_PER_TILE light indices
+  rg::BufferHandle ranges;    // per tile and group: first entry, count
+  rg::BufferHandle tiles;     // per group, the tiles that have its lights
+  rg::BufferHandle dispatch;  // per group, a VkDispatchIndirectCommand at a 16-byte stride
+};
+
+struct LightTileGrid {
+  uint32_t across = 0;
+  uint32_t down = 0;
+  uint32_t count() const { return across * down; }
+  static LightTileGrid of(uint32_t width, uint32_t height);
+};
+
+class LightTilesPass {
+ public:
+  LightTilesPass(vk::VulkanContext& context);
+
+  // Bytes of each output for `grid`, for callers that provide their own buffers.
+  static uint64_t lights_bytes(LightTileGrid grid);
+  static uint64_t ranges_bytes(LightTileGrid grid);
+  static uint64_t tiles_bytes(LightTileGrid grid);
+  static uint64_t dispatch_bytes();
+
+  // Culls the first `light_count` records of `lights` (sorted by group) against the tiles of
+  // `depth` (the scene's D32 depth, rendered with `view_projection`). Writes into `outputs`
+  // when given (imported buffers of the sizes above), else into new transients; returns the
+  // outputs' new versions. `lights` must live until the frame is recorded.
+  LightTiles add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
+                    uint32_t light_count, const glm::mat4& view_projection,
+                    const LightTiles* outputs = nullptr) const;
+
+ private:
+  vk::UniqueSampler nearest_;
+  vk::PipelineLayout layout_;
+  vk::UniquePipeline pipeline_;
+};
+
+}  // namespace sg

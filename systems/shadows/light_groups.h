@@ -1,0 +1,19 @@
+#pragma once
+// Lights grouped by the shadow code they run: none, a 2D map or a cube map, and for shadowed
+// lights their algorithm. The numbering is shaders/light_groups.glsl's, compiled here as C++, so
+// the CPU that sorts lights by group and the shaders that run one group agree.
+#include <cstdint>
+
+#include "systems/scene/shadow_settings.h"
+
+namespace sg::shadows {
+
+inline constexpr uint32_t light_group_count = 11;
+
+enum class ShadowKind : uint32_t { none = 0, map = 1, cube = 2 };
+
+uint32_t light_group(ShadowKind kind, scene::ShadowAlgorithm algorithm);
+ShadowKind group_shadow_kind(uint32_t group);
+scene::ShadowAlgorithm group_algorithm(uint32_t group);
+
+}  // namespace sg::shadows

@@ -1,0 +1,110 @@
+#include "systems/tiled_lighting_pass.h"
+
+#include <string>
+
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/pipeline.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/tiled_lighting.comp.spv.h"
+#include "systems/shader_bindings.h"
+
+namespace sg {
+namespace {
+
+using namespace bindings;
+constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+
+struct LightingConstants {
+  glm::vec4 camera_position;
+  glm::uvec4 screen;  // width, height, tiles across, tiles in all
+};
+
+std::string group_name(uint32_t group) {
+  switch (shadows::group_shadow_kind(group)) {
+    case shadows::ShadowKind::none: return "unshadowed";
+    case shadows::ShadowKind::map:
+      return "2d " + std::string(scene::to_string(shadows::group_algorithm(group)));
+    case shadows::ShadowKind::cube:
+      return "cube " + std::string(scene::to_string(shadows::group_algorithm(group)));
+  }
+  return "group " + std::to_string(group);
+}
+
+}  // namespace
+
+TiledLightingPass::TiledLightingPass(vk::VulkanContext& context)
+    : shadow_samplers_(create_shadow_samplers(context)),
+      layout_(context.device(),
+              {{lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
+               {shadow_maps_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+               {shadow_maps_compare_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+               {shadow_cubes_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+               {gbuffer_position_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+               {gbuffer_normal_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+               {gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+               {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute},
+               {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
+               {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
+               {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}},
+              vk::push_constants<LightingConstants>(compute)) {
+  for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+    pipelines_[group] = vk::create_compute_pipeline(
+        context, {tiled_lighting_comp, {group}, layout_.get(), "tiled lighting " + group_name(group)});
+  }
+}
+
+rg::ImageHandle TiledLightingPass::add_to(
+    rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles, rg::ImageHandle maps,
+    rg::ImageHandle cubes, const vk::Buffer& lights,
+    const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
+    const glm::vec3& camera_position) const {
+  const rg::ImageDesc& screen = graph.resources()[gbuffer.lit_sum.index].image;
+  const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
+  const LightingConstants constants{glm::vec4(camera_position, 0.0f),
+                                    {screen.width, screen.height, grid.across, grid.count()}};
+  rg::ImageHandle lit_sum = gbuffer.lit_sum;
+  for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+    if (group_begin[group + 1] == group_begin[group]) continue;  // no light of the group this frame
+    graph.add_pass(
+        "lighting " + group_name(group),
+        [&](rg::PassBuilder& b) {
+          for (const rg::ImageHandle image :
+               {maps, cubes, gbuffer.position, gbuffer.normal, gbuffer.albedo}) {
+            b.read(image, rg::Usage::sampled_compute);
+          }
+          b.read(tiles.lights, rg::Usage::storage_compute);
+          b.read(tiles.ranges, rg::Usage::storage_compute);
+          b.read(tiles.tiles, rg::Usage::storage_compute);
+          b.read(tiles.dispatch, rg::Usage::indirect);
+          lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
+        },
+        [this, group, gbuffer, tiles, maps, cubes, lit_sum, &lights, constants](const vk::PassRecorder& rec) {
+          const VkSampler nearest = shadow_samplers_.nearest.get();
+          const VkImageView maps_view =
+              rec.view(maps, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY);
+          const VkDescriptorSet set =
+              layout_.write(rec.allocate_set(layout_))
+                  .buffer(lights_binding, lights.handle())
+                  .image(shadow_maps_binding, maps_view, nearest)
+                  .image(shadow_maps_compare_binding, maps_view, shadow_samplers_.compare.get())
+                  .image(shadow_cubes_binding,
+                         rec.view(cubes, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY), nearest)
+                  .image(gbuffer_position_binding, rec.view(gbuffer.position), nearest)
+                  .image(gbuffer_normal_binding, rec.view(gbuffer.normal), nearest)
+                  .image(gbuffer_albedo_binding, rec.view(gbuffer.albedo), nearest)
+                  .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL)
+                  .buffer(tile_lights_binding, rec.buffer(tiles.lights))
+                  .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
+                  .buffer(group_tiles_binding, rec.buffer(tiles.tiles))
+                  .update();
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[group].get());
+          layout_.bind_compute(rec.cmd(), set);
+          layout_.push(rec.cmd(), constants);
+          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.dispatch), group * sizeof(glm::uvec4));
+        });
+  }
+  return lit_sum;
+}
+
+}  // namespace sg

@@ -1,0 +1,42 @@
+#pragma once
+// Tiled deferred lighting (shaders/tiled_lighting.comp): for each light group that has lights,
+// one compute pass with that group's shadow code compiled in, over the tiles that have lights of
+// the group (an indirect dispatch from LightTilesPass), adding them to the lit sum.
+#include <array>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/unique_handle.h"
+#include "systems/gbuffer_pass.h"
+#include "systems/light_tiles_pass.h"
+#include "systems/shadow_samplers.h"
+#include "systems/shadows/light_groups.h"
+
+namespace sg::vk {
+class Buffer;
+class VulkanContext;
+}  // namespace sg::vk
+
+namespace sg {
+
+class TiledLightingPass {
+ public:
+  explicit TiledLightingPass(vk::VulkanContext& context);
+
+  // Adds one pass per group with lights (group_begin as in shadows::FrameLights) and returns the
+  // lit sum's newest version. `lights` must live until the frame is recorded.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles,
+                         rg::ImageHandle maps, rg::ImageHandle cubes, const vk::Buffer& lights,
+                         const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
+                         const glm::vec3& camera_position) const;
+
+ private:
+  ShadowSamplers shadow_samplers_;
+  vk::PipelineLayout layout_;
+  std::array<vk::UniquePipeline, shadows::light_group_count> pipelines_;
+};
+
+}  // namespace sg

@@ -1,0 +1,58 @@
+#include "tests/support/light_tiles_reference.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace sg::test {
+namespace glsl {
+using namespace glm;
+using uint = std::uint32_t;
+#include "shaders/light_record.glsl"
+#include "shaders/light_tiles.glsl"
+}  // namespace glsl
+
+static_assert(sizeof(glsl::Light) == sizeof(shadows::GpuLight));
+
+std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, uint32_t width,
+                                                 uint32_t height, const glm::mat4& view_projection,
+                                                 std::span<const shadows::GpuLight> lights) {
+  const uint32_t size = glsl::LIGHT_TILE_SIZE;
+  const uint32_t across = (width + size - 1) / size;
+  const uint32_t down = (height + size - 1) / size;
+  const glm::mat4 inverse = glm::inverse(view_projection);
+  std::vector<TileLightSets> tiles(across * down);
+  for (uint32_t ty = 0; ty < down; ++ty) {
+    for (uint32_t tx = 0; tx < across; ++tx) {
+      float nearest = 1.0f, farthest = 0.0f;
+      for (uint32_t y = ty * size; y < std::min(height, (ty + 1) * size); ++y) {
+        for (uint32_t x = tx * size; x < std::min(width, (tx + 1) * size); ++x) {
+          const float d = depth[y * width + x];
+          if (d >= 1.0f) continue;
+          nearest = std::min(nearest, d);
+          farthest = std::max(farthest, d);
+        }
+      }
+      if (farthest == 0.0f) continue;  // background only: no lights
+      const glm::vec2 texel = 2.0f / glm::vec2(width, height);
+      const glm::vec2 ndc_min = glm::vec2(tx * size, ty * size) * texel - 1.0f;
+      const glm::vec2 ndc_max =
+          glm::min(glm::vec2((tx + 1) * size, (ty + 1) * size) * texel - 1.0f, glm::vec2(1.0f));
+      const glm::vec4 sphere = glsl::tile_bounding_sphere(inverse, ndc_min, ndc_max, nearest, farthest);
+      const float hair = 1e-3f * sphere.w + 1e-4f;
+      TileLightSets& sets = tiles[ty * across + tx];
+      for (uint32_t i = 0; i < lights.size(); ++i) {
+        glsl::Light light;
+        std::memcpy(&light, &lights[i], sizeof(light));
+        if (glsl::light_reaches_sphere(light,
+                                       glm::vec4(glm::vec3(sphere), std::max(sphere.w - hair, 0.0f)))) {
+          sets.must.push_back(i);
+        }
+        if (glsl::light_reaches_sphere(light, glm::vec4(glm::vec3(sphere), sphere.w + hair)))
+          sets.may.push_back(i);
+      }
+    }
+  }
+  return tiles;
+}
+
+}  // namespace sg::test
