@@ -11,8 +11,10 @@
 #include "light_record.glsl"
 #include "light_tiles.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
-const uint THREADS = 256u;
+// 8 x 8 threads, each reading a 2 x 2 block of the tile's depth: few threads and few barriers,
+// which a CPU driver (one coroutine per SIMD batch, switched at every barrier) pays for most.
+layout(local_size_x = 8, local_size_y = 8) in;
+const uint THREADS = 64u;
 
 layout(std430, set = 0, binding = lights_binding) readonly buffer Lights { Light lights[]; };
 layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
@@ -32,7 +34,8 @@ layout(push_constant) uniform Constants {
 
 shared uint depth_min_bits;
 shared uint depth_max_bits;
-shared uint found[THREADS];  // per thread, then their inclusive prefix sums
+shared uint first_slot[THREADS];  // per thread: how many it found, then where its lights go
+shared uint total;
 shared uint entries[MAX_LIGHTS_PER_TILE];
 shared uint group_first[LIGHT_GROUP_COUNT];
 shared uint group_end[LIGHT_GROUP_COUNT];
@@ -57,18 +60,20 @@ void main() {
   }
   barrier();
 
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) {
-    float depth = texelFetch(scene_depth, pixel, 0).r;
-    if (depth < 1.0) {  // positive floats order like their bits
-      atomicMin(depth_min_bits, floatBitsToUint(depth));
-      atomicMax(depth_max_bits, floatBitsToUint(depth));
+  for (uint k = 0u; k < 4u; ++k) {
+    ivec2 pixel = ivec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy * 2u + uvec2(k & 1u, k >> 1u));
+    if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) {
+      float depth = texelFetch(scene_depth, pixel, 0).r;
+      if (depth < 1.0) {  // positive floats order like their bits
+        atomicMin(depth_min_bits, floatBitsToUint(depth));
+        atomicMax(depth_max_bits, floatBitsToUint(depth));
+      }
     }
   }
   barrier();
 
-  // Lights in ordered chunks, one per thread: count, prefix-sum, then write in order, so the
-  // list is sorted by light index and the same every frame.
+  // Lights in ordered chunks, one per thread: count, place the chunks one after another, then
+  // write in order, so the list is sorted by light index and the same every frame.
   bool has_surfaces = depth_max_bits != 0u;
   uint light_count = has_surfaces ? frame.counts.x : 0u;
   vec2 texel = 2.0 / vec2(frame.screen.xy);
@@ -83,16 +88,19 @@ void main() {
   for (uint i = first; i < last; ++i) {
     if (light_reaches_sphere(lights[i], sphere)) ++mine;
   }
-  found[local] = mine;
+  first_slot[local] = mine;
   barrier();
-  for (uint step = 1u; step < THREADS; step <<= 1u) {
-    uint add = local >= step ? found[local - step] : 0u;
-    barrier();
-    found[local] += add;
-    barrier();
+  if (local == 0u) {
+    uint sum = 0u;
+    for (uint t = 0u; t < THREADS; ++t) {
+      uint count = first_slot[t];
+      first_slot[t] = sum;
+      sum += count;
+    }
+    total = min(sum, MAX_LIGHTS_PER_TILE);
   }
-  uint total = min(found[THREADS - 1u], MAX_LIGHTS_PER_TILE);
-  uint slot = found[local] - mine;
+  barrier();
+  uint slot = first_slot[local];
   for (uint i = first; i < last && slot < MAX_LIGHTS_PER_TILE; ++i) {
     if (light_reaches_sphere(lights[i], sphere)) {
       entries[slot] = i;
@@ -103,10 +111,10 @@ void main() {
   barrier();
 
   // Groups are contiguous in the list: find where each begins and ends.
-  if (local < total) {
-    uint group = group_of(entries[local]);
-    if (local == 0u || group_of(entries[local - 1u]) != group) group_first[group] = local;
-    if (local + 1u == total || group_of(entries[local + 1u]) != group) group_end[group] = local + 1u;
+  for (uint j = local; j < total; j += THREADS) {
+    uint group = group_of(entries[j]);
+    if (j == 0u || group_of(entries[j - 1u]) != group) group_first[group] = j;
+    if (j + 1u == total || group_of(entries[j + 1u]) != group) group_end[group] = j + 1u;
   }
   barrier();
   if (local < LIGHT_GROUP_COUNT) {

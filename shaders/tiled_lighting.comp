@@ -15,7 +15,7 @@ layout(constant_id = 0) const uint LIGHT_GROUP = 0u;
 layout(set = 0, binding = gbuffer_position_binding) uniform sampler2D gbuffer_position;
 layout(set = 0, binding = gbuffer_normal_binding) uniform sampler2D gbuffer_normal;
 layout(set = 0, binding = gbuffer_albedo_binding) uniform sampler2D gbuffer_albedo;
-layout(set = 0, binding = hdr_binding, rgba32f) uniform image2D hdr;
+layout(set = 0, binding = hdr_binding, rgba16f) uniform image2D hdr;
 layout(std430, set = 0, binding = tile_lights_binding) readonly buffer TileLights { uint tile_lights[]; };
 layout(std430, set = 0, binding = tile_ranges_binding) readonly buffer TileRanges { uvec2 tile_ranges[]; };
 layout(std430, set = 0, binding = group_tiles_binding) readonly buffer GroupTiles { uint group_tiles[]; };

@@ -17,7 +17,7 @@ using namespace bindings;
 constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr rg::Format position_format = rg::Format::rgba32_sfloat;
 constexpr rg::Format normal_format = rg::Format::rgba16_sfloat;
-constexpr rg::Format albedo_format = rg::Format::rgba16_sfloat;
+constexpr rg::Format albedo_format = rg::Format::rgba8_unorm;
 constexpr rg::Format depth_format = rg::Format::d32_sfloat;
 
 }  // namespace

@@ -19,16 +19,16 @@ class GpuScene;
 class GpuTextures;
 
 struct GBuffer {
-  rg::ImageHandle lit_sum;   // HDR (rgba32f): ambient so far
+  rg::ImageHandle lit_sum;   // HDR (rgba16f): ambient so far
   rg::ImageHandle position;  // rgba32f: world position, shininess
   rg::ImageHandle normal;    // rgba16f: unit normal, specular strength
-  rg::ImageHandle albedo;    // rgba16f: base colour, 1 where a surface was drawn
+  rg::ImageHandle albedo;    // rgba8: base colour, 1 where a surface was drawn
   rg::ImageHandle depth;     // D32
 };
 
 class GBufferPass {
  public:
-  static constexpr rg::Format lit_sum_format = rg::Format::rgba32_sfloat;
+  static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
 
   // `textures` must outlive the pass: its array is bound once.
   GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);

@@ -27,12 +27,15 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       textures_(context, scene.textures),
       shadow_maps_(context),
       shadow_passes_(context, frames_in_flight),
-      forward_(context, frames_in_flight, textures_),
-      gbuffer_(context, frames_in_flight, textures_),
-      light_tiles_(context),
-      tiled_lighting_(context),
       tone_map_(context, frame_format),
-      light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light records") {}
+      light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light records") {
+  if (lighting_ == LightingPath::forward) {
+    forward_.emplace(context, frames_in_flight, textures_);
+  } else {
+    deferred_.emplace(GBufferPass(context, frames_in_flight, textures_), LightTilesPass(context),
+                      TiledLightingPass(context));
+  }
+}
 
 void SceneRenderer::gather(const ecs::World& world) {
   gpu_scene_.gather(world);
@@ -46,10 +49,11 @@ void SceneRenderer::prepare(uint32_t slot) {
   gpu_scene_.upload(slot);
   const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
   shadow_passes_.prepare(slot, lights_, gpu_scene_, settings_.cube_shadows);
-  if (lighting_ == LightingPath::forward) {
-    forward_.prepare(slot, gpu_scene_, records, shadow_maps_);
+  if (forward_) {
+    forward_->prepare(slot, gpu_scene_, records, shadow_maps_);
   } else {
-    gbuffer_.prepare(slot, gpu_scene_);
+    deferred_->gbuffer.prepare(slot, gpu_scene_);
+    deferred_->lighting.prepare(lights_.group_begin);
   }
 }
 
@@ -69,17 +73,19 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
 
   rg::ImageHandle lit_sum;
   rg::ImageHandle depth;
-  if (lighting_ == LightingPath::forward) {
-    const ForwardTargets lit = forward_.add_to(graph, target.width, target.height, shadows.maps,
-                                               shadows.cubes, gpu_scene_, slot, constants);
+  if (forward_) {
+    const ForwardTargets lit = forward_->add_to(graph, target.width, target.height, shadows.maps,
+                                                shadows.cubes, gpu_scene_, slot, constants);
     lit_sum = lit.lit_sum;
     depth = lit.depth;
   } else {
-    const GBuffer gbuffer = gbuffer_.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
+    const GBuffer gbuffer =
+        deferred_->gbuffer.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
     const vk::Buffer& records = light_records_.buffer(slot);
-    const LightTiles tiles = light_tiles_.add_to(graph, gbuffer.depth, records, light_count, view_projection);
-    lit_sum = tiled_lighting_.add_to(graph, gbuffer, tiles, shadows.maps, shadows.cubes, records,
-                                     lights_.group_begin, pose.eye);
+    const LightTiles tiles =
+        deferred_->light_tiles.add_to(graph, gbuffer.depth, records, light_count, view_projection);
+    lit_sum = deferred_->lighting.add_to(graph, gbuffer, tiles, shadows.maps, shadows.cubes, records,
+                                         lights_.group_begin, pose.eye);
     depth = gbuffer.depth;
   }
   return {tone_map_.add_to(graph, lit_sum, frame, settings_.exposure), depth};

@@ -11,6 +11,7 @@
 // returned handles let later passes (overlays, copies, presentation) read the results. The
 // shadow images are imported through `imports` as "shadow maps" and "shadow cubes".
 #include <cstdint>
+#include <optional>
 
 #include "ecs/world.h"
 #include "rendergraph/core/render_graph.h"
@@ -82,10 +83,14 @@ class SceneRenderer {
   GpuTextures textures_;
   ShadowMapArrays shadow_maps_;
   ShadowPasses shadow_passes_;
-  ForwardPass forward_;
-  GBufferPass gbuffer_;
-  LightTilesPass light_tiles_;
-  TiledLightingPass tiled_lighting_;
+  // The passes of the path in use only: a CPU driver compiles a pipeline slowly.
+  struct Deferred {
+    GBufferPass gbuffer;
+    LightTilesPass light_tiles;
+    TiledLightingPass lighting;
+  };
+  std::optional<ForwardPass> forward_;
+  std::optional<Deferred> deferred_;
   ToneMapPass tone_map_;
   vk::FrameBuffers light_records_;
   shadows::FrameLights lights_;

@@ -34,7 +34,8 @@ std::string group_name(uint32_t group) {
 }  // namespace
 
 TiledLightingPass::TiledLightingPass(vk::VulkanContext& context)
-    : shadow_samplers_(create_shadow_samplers(context)),
+    : context_(context),
+      shadow_samplers_(create_shadow_samplers(context)),
       layout_(context.device(),
               {{lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
                {shadow_maps_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
@@ -47,10 +48,13 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context)
                {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
                {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
                {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}},
-              vk::push_constants<LightingConstants>(compute)) {
+              vk::push_constants<LightingConstants>(compute)) {}
+
+void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin) {
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+    if (group_begin[group + 1] == group_begin[group] || pipelines_[group]) continue;
     pipelines_[group] = vk::create_compute_pipeline(
-        context, {tiled_lighting_comp, {group}, layout_.get(), "tiled lighting " + group_name(group)});
+        context_, {tiled_lighting_comp, {group}, layout_.get(), "tiled lighting " + group_name(group)});
   }
 }
 

@@ -26,6 +26,11 @@ class TiledLightingPass {
  public:
   explicit TiledLightingPass(vk::VulkanContext& context);
 
+  // Compiles the pipelines of the groups that have lights (group_begin as in
+  // shadows::FrameLights) and that it has not compiled yet: each holds one algorithm's shadow
+  // code, and a scene rarely uses all eleven.
+  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin);
+
   // Adds one pass per group with lights (group_begin as in shadows::FrameLights) and returns the
   // lit sum's newest version. `lights` must live until the frame is recorded.
   rg::ImageHandle add_to(rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles,
@@ -34,6 +39,7 @@ class TiledLightingPass {
                          const glm::vec3& camera_position) const;
 
  private:
+  vk::VulkanContext& context_;
   ShadowSamplers shadow_samplers_;
   vk::PipelineLayout layout_;
   std::array<vk::UniquePipeline, shadows::light_group_count> pipelines_;
