@@ -35,6 +35,8 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
   stats.scene_name = scene.scene.name;
   stats.scene = scene::scene_stats(scene.scene);
   stats.cpu_frame_ms = summarize(record.cpu_frame_ms);
+  stats.wall_frame_ms = summarize(record.wall_frame_ms);
+  stats.lighting = frame.renderer().lighting() == LightingPath::forward ? "forward" : "deferred";
   if (record.gpu_times) {
     stats.gpu_frame_ms = summarize(record.gpu_times->frame_ms());
     stats.passes = record.gpu_times->pass_summaries();
@@ -46,6 +48,11 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
     std::printf("shadowgraph: %llu frames, CPU frame time median %.2f ms (min %.2f, max %.2f)\n",
                 static_cast<unsigned long long>(stats.frames), stats.cpu_frame_ms->median,
                 stats.cpu_frame_ms->min, stats.cpu_frame_ms->max);
+  }
+  if (stats.wall_frame_ms) {
+    std::printf("shadowgraph: wall time per frame median %.2f ms (min %.2f, max %.2f), %s lighting\n",
+                stats.wall_frame_ms->median, stats.wall_frame_ms->min, stats.wall_frame_ms->max,
+                stats.lighting.c_str());
   }
   if (stats.gpu_frame_ms) {
     std::printf("shadowgraph: GPU frame time median %.3f ms over %zu timed frames; per pass:",

@@ -8,19 +8,29 @@
 #include "sandbox/sandbox_frame.h"
 
 namespace sg::sandbox {
+namespace {
+
+double milliseconds(std::chrono::steady_clock::duration elapsed) {
+  return std::chrono::duration<double, std::milli>(elapsed).count();
+}
+
+}  // namespace
 
 RunRecord render_headless_frames(SandboxFrame& frame, vk::FrameRing& ring, uint32_t count,
                                  GpuTimeLog& gpu_times, bool progress) {
   constexpr double frame_seconds = 1.0 / 60.0;
-  RunRecord record{{}, &gpu_times};
+  RunRecord record{{}, {}, &gpu_times};
+  auto previous_start = std::chrono::steady_clock::now();
   for (uint32_t i = 0; i < count; ++i) {
+    const auto frame_start = std::chrono::steady_clock::now();  // before the waits
+    if (i > 0) record.wall_frame_ms.push_back(milliseconds(frame_start - previous_start));
+    previous_start = frame_start;
     vk::FrameSlot& slot = ring.begin_frame();
     const auto start = std::chrono::steady_clock::now();  // after the wait for the GPU
     frame.record(slot, i * frame_seconds);
     ring.submit();
     gpu_times.add(frame.executor().latest_timings());
-    record.cpu_frame_ms.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    record.cpu_frame_ms.push_back(milliseconds(std::chrono::steady_clock::now() - start));
     if (progress && count >= 100 && (i + 1) % (count / 10) == 0) {
       std::printf("shadowgraph: %u/%u frames\n", i + 1, count);
     }

@@ -23,6 +23,9 @@ struct RunRecord {
   // Per rendered frame: CPU time to update, build, compile, record and submit it, not counting
   // waits for the GPU (the frame ring's fence, the swapchain's acquire and present).
   std::vector<double> cpu_frame_ms;
+  // Per frame after the first: elapsed time since the previous one, waits included (present to
+  // present in a window, frame start to frame start headless).
+  std::vector<double> wall_frame_ms;
   const GpuTimeLog* gpu_times = nullptr;
 };
 

@@ -40,6 +40,8 @@ Json stats_json(const RunStats& stats) {
               {"cylinder", scene.cylinder_lights},
               {"shadow_casting", scene.shadow_casting_lights}}}}},
           {"cpu_frame_ms", summary_json(stats.cpu_frame_ms)},
+          {"wall_frame_ms", summary_json(stats.wall_frame_ms)},
+          {"lighting", stats.lighting},
           {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},
           {"passes", passes},
           {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},

@@ -15,6 +15,10 @@
 //   },
 //   "cpu_frame_ms": {"median": 1.5, "min": 1.2, "max": 3.0},  // null when no frame ran; CPU
 //                                                // time per frame without waits for the GPU
+//   "wall_frame_ms": {...},                      // elapsed time per frame, waits included:
+//                                                // present to present in a window, frame start
+//                                                // to frame start headless; null under 2 frames
+//   "lighting": "deferred",                      // the lighting path used: forward, deferred
 //   "gpu_frame_ms": {"median": ..., "min": ..., "max": ...},  // null without GPU timestamps
 //   "passes": [{"name": "lighting", "gpu_ms": {"median": ..., "min": ..., "max": ...}}],
 //   "validation_errors": 0,                      // null when the validation layer was off
@@ -53,6 +57,8 @@ struct RunStats {
   std::string scene_name;
   scene::SceneStats scene;  // scene::scene_stats of the rendered scene
   std::optional<TimeSummary> cpu_frame_ms;
+  std::optional<TimeSummary> wall_frame_ms;
+  std::string lighting;
   std::optional<TimeSummary> gpu_frame_ms;  // unset when the device has no timestamps
   std::vector<PassTime> passes;             // in execution order
   // Unset when the validation layer was off: 0 would claim a check that never ran.

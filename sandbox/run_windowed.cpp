@@ -14,7 +14,7 @@ int run_windowed(const Options& options) {
   }
   session.finish();
   return finish_run(options, session.context(), session.scene(), session.sandbox_frame(),
-                    {session.frame_ms(), &session.gpu_times()});
+                    {session.frame_ms(), session.wall_frame_ms(), &session.gpu_times()});
 }
 
 }  // namespace sg::sandbox

@@ -110,6 +110,11 @@ FrameResult WindowSession::frame() {
   frame_ms_.push_back(
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   if (!swapchain_->present(*image)) ready_ = false;
+  const auto presented = std::chrono::steady_clock::now();
+  if (last_present_) {
+    wall_frame_ms_.push_back(std::chrono::duration<double, std::milli>(presented - *last_present_).count());
+  }
+  last_present_ = presented;
   gpu_times_.add(frame_->executor().latest_timings());
   return FrameResult::rendered;
 }

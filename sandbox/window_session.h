@@ -2,7 +2,9 @@
 // A window showing the scene: GLFW window, Vulkan context with presentation, swapchain, the
 // sandbox's frame graph. The swapchain follows the window's framebuffer size; while the window is
 // minimized (zero-sized framebuffer) frames are skipped rather than rendered.
+#include <chrono>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -42,6 +44,8 @@ class WindowSession {
   const SandboxFrame& sandbox_frame() const { return *frame_; }
   VkExtent2D swapchain_extent() const;
   const std::vector<double>& frame_ms() const { return frame_ms_; }
+  // Present to present, after the first frame.
+  const std::vector<double>& wall_frame_ms() const { return wall_frame_ms_; }
   const GpuTimeLog& gpu_times() const { return gpu_times_; }
 
  private:
@@ -56,6 +60,8 @@ class WindowSession {
   bool ready_ = false;
   double start_seconds_ = 0.0;
   std::vector<double> frame_ms_;
+  std::vector<double> wall_frame_ms_;
+  std::optional<std::chrono::steady_clock::time_point> last_present_;
   GpuTimeLog gpu_times_;
 };
 

@@ -72,6 +72,8 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.scene.cylinder_lights = 2;
   stats.scene.shadow_casting_lights = 60;
   stats.cpu_frame_ms = TimeSummary{1.5, 1.25, 3.75};
+  stats.wall_frame_ms = TimeSummary{16.5, 16.25, 33.0};
+  stats.lighting = "deferred";
   stats.gpu_frame_ms = TimeSummary{0.5, 0.25, 0.875};
   stats.passes = {{"shadow_atlas", {0.125, 0.0625, 0.25}}, {"lighting", {0.375, 0.25, 0.5}}};
   stats.validation_errors = 4;
@@ -82,7 +84,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 9u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 11u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);
@@ -96,6 +98,8 @@ TEST(StatsJson, EveryFieldRoundTrips) {
             nlohmann::json(
                 {{"point", 32}, {"spot", 31}, {"directional", 1}, {"cylinder", 2}, {"shadow_casting", 60}}));
   expect_summary(json.at("cpu_frame_ms"), *stats.cpu_frame_ms);
+  expect_summary(json.at("wall_frame_ms"), *stats.wall_frame_ms);
+  EXPECT_EQ(json.at("lighting"), "deferred");
   expect_summary(json.at("gpu_frame_ms"), *stats.gpu_frame_ms);
   const nlohmann::json& passes = json.at("passes");
   ASSERT_EQ(passes.size(), 2u);
@@ -115,6 +119,7 @@ TEST(StatsJson, MissingMeasurementsAreNull) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
   EXPECT_TRUE(json.at("cpu_frame_ms").is_null());
+  EXPECT_TRUE(json.at("wall_frame_ms").is_null());
   EXPECT_TRUE(json.at("gpu_frame_ms").is_null());
   EXPECT_TRUE(json.at("validation_errors").is_null());
   EXPECT_TRUE(json.at("passes").is_array());
