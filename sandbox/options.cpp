@@ -129,6 +129,11 @@ void add_options(CLI::App& app, Options& o) {
          "a compute pass per light group; auto: the faster on this kind of device")
       ->check(CLI::IsMember({"auto", "forward", "deferred"}))
       ->default_str("auto");
+  CLI::Option* naive = app.add_flag(
+      "--naive", o.naive,
+      "The source documents' way, as a baseline: six passes per cube, every caster in every shadow "
+      "view, every light at every pixel");
+  naive->excludes("--lighting")->excludes("--cube-shadows");
   app.add_option("--exposure", o.exposure, "Multiplies the lit colour before tone mapping")
       ->check(CLI::Range(1e-3f, 1e3f))
       ->capture_default_str();

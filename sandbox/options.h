@@ -39,7 +39,10 @@ struct Options {
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;  // --cube-shadows layered|six
   LightingPath lighting = LightingPath::automatic;  // --lighting auto|forward|deferred
   float exposure = 1.0f;                            // --exposure
-  std::string dump_shadow_maps;                     // --dump-shadow-maps DIR: each light's map as PNG
+  // --naive: what the source documents do, the baseline to measure against: six passes per
+  // cube, every caster in every view, forward lighting of every light at every pixel.
+  bool naive = false;
+  std::string dump_shadow_maps;  // --dump-shadow-maps DIR: each light's map as PNG
 };
 
 // Upper bounds on the stress scene's parameters: values above them would exhaust memory

@@ -53,6 +53,11 @@ RendererSettings renderer_settings(const Options& options) {
   settings.cube_shadows = options.cube_shadows;
   settings.lighting = options.lighting;
   settings.exposure = options.exposure;
+  if (options.naive) {
+    settings.cube_shadows = shadows::CubeShadowMode::six_passes;
+    settings.cull_casters = false;
+    settings.lighting = LightingPath::forward;
+  }
   return settings;
 }
 

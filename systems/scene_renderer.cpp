@@ -48,7 +48,7 @@ void SceneRenderer::prepare(uint32_t slot) {
                              shadow_maps_.size().cubes.resolution);
   gpu_scene_.upload(slot);
   const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
-  shadow_passes_.prepare(slot, lights_, gpu_scene_, settings_.cube_shadows);
+  shadow_passes_.prepare(slot, lights_, gpu_scene_, settings_.cube_shadows, settings_.cull_casters);
   if (forward_) {
     forward_->prepare(slot, gpu_scene_, records, shadow_maps_);
   } else {

@@ -42,7 +42,8 @@ struct RendererSettings {
   shadows::LightOverrides lights;
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
   LightingPath lighting = LightingPath::automatic;
-  float exposure = 1.0f;  // multiplies the lit sum before tone mapping
+  bool cull_casters = true;  // off: every shadow view draws every caster (the naive baseline)
+  float exposure = 1.0f;     // multiplies the lit sum before tone mapping
 };
 
 struct RenderedFrame {

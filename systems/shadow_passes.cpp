@@ -69,7 +69,8 @@ ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight
 }
 
 void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuScene& scene,
-                           CubeShadowMode mode) {
+                           CubeShadowMode mode, bool cull_casters) {
+  constexpr glm::vec4 everywhere{0.0f, 0.0f, 0.0f, -1.0f};  // a view with no reach keeps every caster
   // Grid cells as large as the lights' mean reach (views without one do not use the grid).
   float reach_sum = 0.0f;
   uint32_t bounded = 0;
@@ -82,11 +83,13 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
   for (const ShadowCubeView& cube : lights.cubes) add_reach(cube.position_far);
   casters_.begin_frame(scene, bounded > 0 ? reach_sum / float(bounded) : 0.0f);
   map_casters_.clear();
-  for (const ShadowMapView& map : lights.maps) map_casters_.push_back(casters_.add_view(scene, map.reach, 1));
+  for (const ShadowMapView& map : lights.maps) {
+    map_casters_.push_back(casters_.add_view(scene, cull_casters ? map.reach : everywhere, 1));
+  }
   const uint32_t copies = mode == CubeShadowMode::layered && layered_supported() ? 6 : 1;
   cube_casters_.clear();
   for (const ShadowCubeView& cube : lights.cubes) {
-    cube_casters_.push_back(casters_.add_view(scene, cube.position_far, copies));
+    cube_casters_.push_back(casters_.add_view(scene, cull_casters ? cube.position_far : everywhere, copies));
   }
   casters_.upload(slot);
 

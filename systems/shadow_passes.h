@@ -32,10 +32,11 @@ class ShadowPasses {
   bool layered_supported() const { return layered_pipeline_.get() != VK_NULL_HANDLE; }
 
   // CPU side of a frame, after FrameRing::begin_frame returned `slot`: culls each view's
-  // casters, writes them and the point lights' face matrices, and points the slot's descriptor
-  // set at this frame's buffers. `mode` must be the one add_to gets.
+  // casters (or, without cull_casters, gives every view every caster), writes them and the point lights' face
+  // matrices, and points the slot's descriptor set at this frame's buffers. `mode` must be the one add_to
+  // gets.
   void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene,
-               shadows::CubeShadowMode mode);
+               shadows::CubeShadowMode mode, bool cull_casters = true);
 
   struct Targets {
     rg::ImageHandle maps;

@@ -78,6 +78,22 @@ TEST(SandboxOptions, ShadowOptions) {
   }
 }
 
+TEST(SandboxOptions, LightingOptions) {
+  const Options defaults = parse_ok({});
+  EXPECT_EQ(defaults.lighting, LightingPath::automatic);
+  EXPECT_EQ(defaults.exposure, 1.0f);
+  EXPECT_FALSE(defaults.naive);
+  EXPECT_EQ(parse_ok({"--lighting", "forward"}).lighting, LightingPath::forward);
+  EXPECT_EQ(parse_ok({"--lighting", "deferred", "--exposure", "0.5"}).exposure, 0.5f);
+  EXPECT_TRUE(parse_ok({"--naive"}).naive);
+  for (const std::vector<std::string>& bad : {std::vector<std::string>{"--lighting", "raytraced"},
+                                              {"--exposure", "0"},
+                                              {"--naive", "--lighting", "deferred"},
+                                              {"--naive", "--cube-shadows", "layered"}}) {
+    EXPECT_EQ(parse(bad).exit_code, 2) << bad[0] << " " << bad[1];
+  }
+}
+
 TEST(SandboxOptions, SceneOptions) {
   const Options options =
       parse_ok({"--scene", "stress", "--scene-triangles", "5000", "--point-lights", "4", "--spot-lights", "0",

@@ -113,6 +113,15 @@ TEST_F(SandboxFrameTest, ForwardAndDeferredRenderTheSamePicture) {
     largest = std::max(largest, std::abs(int(forward.pixels[i]) - int(deferred.pixels[i])));
   }
   EXPECT_LE(largest, 2) << "levels of 255 in the worst channel (1 measured on lavapipe)";
+
+  // The naive baseline (six passes per cube, every caster in every view) draws the same maps.
+  sandbox::Options naive;
+  naive.naive = true;
+  const vk::Rgba8Image baseline = render(naive, 2);
+  EXPECT_EQ(std::count_if(passes.begin(), passes.end(),
+                          [](const std::string& name) { return name.find(" face ") != std::string::npos; }),
+            12);
+  EXPECT_EQ(baseline.pixels, forward.pixels);
 }
 
 TEST_F(SandboxFrameTest, SixPassCubesRenderTheSamePictureAsLayeredCubes) {
