@@ -36,6 +36,8 @@ RunRecord render_headless_frames(SandboxFrame& frame, vk::FrameRing& ring, uint3
     }
   }
   ring.wait_idle();
+  if (count > 0)
+    record.wall_frame_ms.push_back(milliseconds(std::chrono::steady_clock::now() - previous_start));
   // The last frames' timestamps are readable now that the GPU is idle, oldest first.
   const uint32_t in_flight = ring.frames_in_flight();
   for (uint32_t i = count > in_flight ? count - in_flight : 0; i < count; ++i) {

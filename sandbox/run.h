@@ -23,8 +23,8 @@ struct RunRecord {
   // Per rendered frame: CPU time to update, build, compile, record and submit it, not counting
   // waits for the GPU (the frame ring's fence, the swapchain's acquire and present).
   std::vector<double> cpu_frame_ms;
-  // Per frame after the first: elapsed time since the previous one, waits included (present to
-  // present in a window, frame start to frame start headless).
+  // Elapsed time per frame, waits included: present to present in a window (after the first
+  // frame), frame start to frame start headless (the last frame: to the GPU going idle).
   std::vector<double> wall_frame_ms;
   const GpuTimeLog* gpu_times = nullptr;
 };
