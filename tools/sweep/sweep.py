@@ -4,8 +4,9 @@
 For each light type (point, spot, mixed), light count and mode (optimized: the sandbox's
 defaults; naive: --naive), renders the stress scene headless with every light moving (so every
 shadow map is redrawn every frame) and reads its --stats. Writes sweep.csv and, when gnuplot is
-installed (apt-get install gnuplot-nox), sweep.png into --out, prints progress per run and a
-summary table. Python's standard library only.
+installed (apt-get install gnuplot-nox), sweep.png (GPU frame) and sweep_lighting.png (the
+lighting passes alone) into --out; prints progress per run and a summary table. Python's
+standard library only.
 
   python3 tools/sweep/sweep.py --out sweep-lavapipe
   python3 tools/sweep/sweep.py --counts 1,4,16,64,256,1024,4096 --width 1920 --height 1080 --out sweep-gpu
@@ -96,30 +97,34 @@ def plot(out_dir, rows, args):
     if not gnuplot:
         print("sweep: gnuplot not found (apt-get install gnuplot-nox): no plot, the CSV has everything")
         return
-    series = []
-    for light_type in args.types:
-        for mode in args.modes:
-            points = [(r["lights"], r["gpu_frame_ms"]) for r in rows
-                      if r["type"] == light_type and r["mode"] == mode and r["gpu_frame_ms"]]
-            if points:
-                data = os.path.join(out_dir, f"{light_type}_{mode}.dat")
-                with open(data, "w") as f:
-                    f.writelines(f"{n} {ms}\n" for n, ms in points)
-                series.append((data, f"{light_type}, {mode}"))
-    if not series:
-        return
-    device = rows[0]["device"]
-    script = "\n".join([
-        "set terminal pngcairo size 1100,700",
-        f"set output '{os.path.join(out_dir, 'sweep.png')}'",
-        f"set title 'GPU frame time against shadowed lights: {device}, {rows[0]['width']}x{rows[0]['height']}, "
-        f"{rows[0]['triangles']} triangles, {int(args.moving * 100)}% moving'",
-        "set xlabel 'lights (each with a shadow)'", "set ylabel 'GPU frame (ms)'",
-        "set logscale xy", "set grid", "set key left top",
-        "plot " + ", ".join(f"'{d}' with linespoints title '{t}'" for d, t in series),
-    ])
-    subprocess.run([gnuplot], input=script, text=True, check=True)
-    print(f"sweep: wrote {os.path.join(out_dir, 'sweep.png')}")
+    # The whole GPU frame, and the lighting alone (the shadow passes are the same work in both
+    # modes but for the naive six passes per cube and unculled casters).
+    for column, name, label in (("gpu_frame_ms", "sweep.png", "GPU frame"),
+                                ("lighting_ms", "sweep_lighting.png", "lighting passes")):
+        series = []
+        for light_type in args.types:
+            for mode in args.modes:
+                points = [(r["lights"], r[column]) for r in rows
+                          if r["type"] == light_type and r["mode"] == mode and r[column]]
+                if points:
+                    data = os.path.join(out_dir, f"{light_type}_{mode}_{column}.dat")
+                    with open(data, "w") as f:
+                        f.writelines(f"{n} {ms}\n" for n, ms in points)
+                    series.append((data, f"{light_type}, {mode}"))
+        if not series:
+            continue
+        first = rows[0]
+        script = "\n".join([
+            "set terminal pngcairo size 1100,700",
+            f"set output '{os.path.join(out_dir, name)}'",
+            f"set title '{label} against shadowed lights: {first['device']}, {first['width']}x{first['height']}, "
+            f"{first['triangles']} triangles, every light moving'",
+            "set xlabel 'lights (each with a shadow)'", f"set ylabel '{label} (ms)'",
+            "set logscale xy", "set grid", "set key left top",
+            "plot " + ", ".join(f"'{d}' with linespoints title '{t}'" for d, t in series),
+        ])
+        subprocess.run([gnuplot], input=script, text=True, check=True)
+        print(f"sweep: wrote {os.path.join(out_dir, name)}")
 
 
 def read_csv(path):
