@@ -69,11 +69,7 @@ GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t hei
                           rg::ClearValue::depth_of(1.0f));
       },
       [this, &scene, slot, constants](const vk::PassRecorder& rec) {
-        rec.set_full_viewport();
-        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
-        layout_.bind(rec.cmd(), slot_sets_.sets[slot]);
-        layout_.push(rec.cmd(), constants);
-        scene.draw_all(rec.cmd(), slot);
+        scene.draw_camera_pass(rec, pipeline_.get(), layout_, slot_sets_.sets[slot], constants, slot);
       });
   return g;
 }

@@ -6,6 +6,7 @@
 
 #include "ecs/transform.h"
 #include "rendergraph/device/upload.h"
+#include "rendergraph/vulkan/pass_recorder.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
 
@@ -98,6 +99,16 @@ void GpuScene::gather(const ecs::World& world) {
 void GpuScene::upload(uint32_t slot) {
   instances_.write(slot, std::span<const GpuInstance>(sorted_));
   draws_.write(slot, std::span<const VkDrawIndexedIndirectCommand>(commands_));
+}
+
+void GpuScene::draw_camera_pass(const vk::PassRecorder& rec, VkPipeline pipeline,
+                                const vk::PipelineLayout& layout, VkDescriptorSet set,
+                                const FrameConstants& constants, uint32_t slot) const {
+  rec.set_full_viewport();
+  vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+  layout.bind(rec.cmd(), set);
+  layout.push(rec.cmd(), constants);
+  draw_all(rec.cmd(), slot);
 }
 
 bool GpuScene::bind_geometry(VkCommandBuffer cmd) const {

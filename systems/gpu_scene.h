@@ -14,12 +14,17 @@
 #include <vulkan/vulkan.h>
 
 #include "ecs/world.h"
+#include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/device/resources.h"
 #include "systems/scene/aabb.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/scene_gpu_types.h"
+
+namespace sg::vk {
+class PassRecorder;
+}
 
 namespace sg {
 
@@ -45,6 +50,10 @@ class GpuScene {
   // Draws every instance with the pipeline already bound; instance data comes from the instance
   // buffer, indexed by gl_InstanceIndex.
   void draw_all(VkCommandBuffer cmd, uint32_t slot) const;
+  // A camera pass's recording: viewport over the render area, `pipeline` with `set` as set 0 of
+  // `layout` and `constants` pushed, every instance drawn (the forward and G-buffer passes).
+  void draw_camera_pass(const vk::PassRecorder& rec, VkPipeline pipeline, const vk::PipelineLayout& layout,
+                        VkDescriptorSet set, const FrameConstants& constants, uint32_t slot) const;
 
   const vk::Buffer& instances(uint32_t slot) const { return instances_.buffer(slot); }
   uint32_t instance_count() const { return static_cast<uint32_t>(bounds_.size()); }
