@@ -36,7 +36,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
   stats.scene = scene::scene_stats(scene.scene);
   stats.cpu_frame_ms = summarize(record.cpu_frame_ms);
   stats.wall_frame_ms = summarize(record.wall_frame_ms);
-  stats.lighting = frame.renderer().lighting() == LightingPath::forward ? "forward" : "deferred";
+  stats.lighting = lighting_path_name(frame.renderer().lighting());
   if (record.gpu_times) {
     stats.gpu_frame_ms = summarize(record.gpu_times->frame_ms());
     stats.passes = record.gpu_times->pass_summaries();

@@ -56,7 +56,7 @@ RendererSettings renderer_settings(const Options& options) {
   if (options.naive) {
     settings.cube_shadows = shadows::CubeShadowMode::six_passes;
     settings.cull_casters = false;
-    settings.lighting = LightingPath::forward;
+    settings.lighting = LightingPath::every_light;
   }
   return settings;
 }

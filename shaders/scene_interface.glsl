@@ -16,7 +16,7 @@ layout(std430, set = 0, binding = instances_binding) readonly buffer Instances {
 layout(push_constant) uniform FrameConstants {
   mat4 view_projection;
   vec4 camera_position;  // xyz; w: the ambient term kA * IA
-  uvec4 counts;          // x: lights in the Lights buffer
+  uvec4 counts;          // x: lights in the Lights buffer; y: light tiles across the screen
 } frame;
 
 #endif

@@ -1,11 +1,25 @@
 #pragma once
+#include <string_view>
 
 namespace sg {
 
-// How the frame is lit. forward: one pass shades every light at every pixel. deferred: a
-// G-buffer, light lists per screen tile, and per light group a compute pass over the tiles that
-// group reaches (a pixel pays only for its tile's lights and each light's own algorithm).
-// automatic: whichever measured faster on the device's kind (SceneRenderer says which).
-enum class LightingPath { automatic, forward, deferred };
+// How the frame is lit. Both tiled paths cull lights per 16x16 screen tile and shade a pixel
+// only with its tile's lights, each with its own algorithm:
+// - forward: depth prepass, light culling, one forward pass;
+// - deferred: G-buffer, light culling, a compute pass per light group (each holding one
+//   algorithm's code);
+// - every_light: one forward pass with every light at every pixel (the --naive baseline);
+// - automatic: whichever measured faster on the device's kind (SceneRenderer says which).
+enum class LightingPath { automatic, forward, deferred, every_light };
+
+constexpr std::string_view lighting_path_name(LightingPath path) {
+  switch (path) {
+    case LightingPath::automatic: return "auto";
+    case LightingPath::forward: return "forward";
+    case LightingPath::deferred: return "deferred";
+    case LightingPath::every_light: return "every light";
+  }
+  return "unknown";
+}
 
 }  // namespace sg

@@ -16,7 +16,7 @@ static_assert(sizeof(GpuInstance) == 160);
 struct FrameConstants {
   glm::mat4 view_projection;
   glm::vec4 camera_position;  // w: ambient term kA * IA
-  glm::uvec4 counts;          // x: lights
+  glm::uvec4 counts;          // x: lights; y: light tiles across the screen (tiled forward)
 };
 static_assert(sizeof(FrameConstants) <= 128, "Vulkan guarantees only 128 bytes of push constants");
 

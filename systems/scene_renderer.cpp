@@ -29,11 +29,16 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       shadow_passes_(context, frames_in_flight),
       tone_map_(context, frame_format),
       light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light records") {
-  if (lighting_ == LightingPath::forward) {
-    forward_.emplace(context, frames_in_flight, textures_);
-  } else {
-    deferred_.emplace(GBufferPass(context, frames_in_flight, textures_), LightTilesPass(context),
-                      TiledLightingPass(context));
+  switch (lighting_) {
+    case LightingPath::every_light: every_light_.emplace(context, frames_in_flight, textures_); break;
+    case LightingPath::forward:
+      tiled_forward_.emplace(TiledForwardPass(context, textures_), LightTilesPass(context));
+      break;
+    case LightingPath::automatic:
+    case LightingPath::deferred:
+      deferred_.emplace(GBufferPass(context, frames_in_flight, textures_), LightTilesPass(context),
+                        TiledLightingPass(context));
+      break;
   }
 }
 
@@ -49,9 +54,9 @@ void SceneRenderer::prepare(uint32_t slot) {
   gpu_scene_.upload(slot);
   const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
   shadow_passes_.prepare(slot, lights_, gpu_scene_, settings_.cube_shadows, settings_.cull_casters);
-  if (forward_) {
-    forward_->prepare(slot, gpu_scene_, records, shadow_maps_);
-  } else {
+  if (every_light_) every_light_->prepare(slot, gpu_scene_, records, shadow_maps_);
+  if (tiled_forward_) tiled_forward_->forward.prepare(lights_.group_begin);
+  if (deferred_) {
     deferred_->gbuffer.prepare(slot, gpu_scene_);
     deferred_->lighting.prepare(lights_.group_begin);
   }
@@ -68,20 +73,30 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
   const glm::mat4 view_projection =
       projection_matrix(lens, float(target.width) / float(target.height)) * view_matrix(pose);
   const auto light_count = static_cast<uint32_t>(lights_.records.size());
+  const LightTileGrid grid = LightTileGrid::of(target.width, target.height);
   const FrameConstants constants{view_projection, glm::vec4(pose.eye, ambient),
-                                 glm::uvec4(light_count, 0, 0, 0)};
+                                 glm::uvec4(light_count, grid.across, 0, 0)};
+  const vk::Buffer& records = light_records_.buffer(slot);
 
   rg::ImageHandle lit_sum;
   rg::ImageHandle depth;
-  if (forward_) {
-    const ForwardTargets lit = forward_->add_to(graph, target.width, target.height, shadows.maps,
-                                                shadows.cubes, gpu_scene_, slot, constants);
+  if (every_light_) {
+    const ForwardTargets lit = every_light_->add_to(graph, target.width, target.height, shadows.maps,
+                                                    shadows.cubes, gpu_scene_, slot, constants);
     lit_sum = lit.lit_sum;
     depth = lit.depth;
+  } else if (tiled_forward_) {
+    depth = tiled_forward_->forward.add_depth_prepass(graph, target.width, target.height, gpu_scene_, slot,
+                                                      constants);
+    const LightTiles tiles =
+        tiled_forward_->light_tiles.add_to(graph, depth, records, light_count, view_projection);
+    lit_sum =
+        tiled_forward_->forward
+            .add_to(graph, depth, tiles, shadows.maps, shadows.cubes, records, gpu_scene_, slot, constants)
+            .lit_sum;
   } else {
     const GBuffer gbuffer =
         deferred_->gbuffer.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
-    const vk::Buffer& records = light_records_.buffer(slot);
     const LightTiles tiles =
         deferred_->light_tiles.add_to(graph, gbuffer.depth, records, light_count, view_projection);
     lit_sum = deferred_->lighting.add_to(graph, gbuffer, tiles, shadows.maps, shadows.cubes, records,

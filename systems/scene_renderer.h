@@ -1,6 +1,6 @@
 #pragma once
 // Renders an ECS scene through the render graph: the shadow maps of every shadow-casting light,
-// the lighting (forward, or tiled deferred), then exposure and tone mapping into the frame. It
+// the lighting (lighting_path.h), then exposure and tone mapping into the frame. It
 // takes three of the frame's phases (SandboxFrame::record names all five):
 //
 //   renderer.gather(world);          // read the world: drawables and lights, on the CPU
@@ -29,6 +29,7 @@
 #include "systems/shadow_passes.h"
 #include "systems/shadows/cube_shadow_mode.h"
 #include "systems/shadows/frame_lights.h"
+#include "systems/tiled_forward_pass.h"
 #include "systems/tiled_lighting_pass.h"
 #include "systems/tone_map_pass.h"
 
@@ -85,12 +86,17 @@ class SceneRenderer {
   ShadowMapArrays shadow_maps_;
   ShadowPasses shadow_passes_;
   // The passes of the path in use only: a CPU driver compiles a pipeline slowly.
+  struct TiledForward {
+    TiledForwardPass forward;
+    LightTilesPass light_tiles;
+  };
   struct Deferred {
     GBufferPass gbuffer;
     LightTilesPass light_tiles;
     TiledLightingPass lighting;
   };
-  std::optional<ForwardPass> forward_;
+  std::optional<ForwardPass> every_light_;
+  std::optional<TiledForward> tiled_forward_;
   std::optional<Deferred> deferred_;
   ToneMapPass tone_map_;
   vk::FrameBuffers light_records_;

@@ -14,9 +14,30 @@ UniqueShaderModule create_shader_module(VulkanContext& context, std::span<const 
   return UniqueShaderModule(context.device(), module);
 }
 
+namespace {
+
+// Specialization constants 0..n-1 from 32-bit values, for one shader stage.
+struct Specialization {
+  std::vector<VkSpecializationMapEntry> entries;
+  VkSpecializationInfo info{};
+
+  explicit Specialization(const std::vector<uint32_t>& values) {
+    for (uint32_t id = 0; id < values.size(); ++id) {
+      entries.push_back({id, id * static_cast<uint32_t>(sizeof(uint32_t)), sizeof(uint32_t)});
+    }
+    info = {static_cast<uint32_t>(entries.size()), entries.data(), values.size() * sizeof(uint32_t),
+            values.data()};
+  }
+  Specialization(const Specialization&) = delete;  // info points into entries
+  const VkSpecializationInfo* get() const { return entries.empty() ? nullptr : &info; }
+};
+
+}  // namespace
+
 UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPipelineDesc& desc) {
   const UniqueShaderModule vertex = create_shader_module(context, desc.vertex_spirv);
   UniqueShaderModule fragment;
+  const Specialization fragment_specialization(desc.fragment_specialization);
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -27,6 +48,7 @@ UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPi
     fragment = create_shader_module(context, desc.fragment_spirv);
     stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stage.module = fragment.get();
+    stage.pSpecializationInfo = fragment_specialization.get();
     stages.push_back(stage);
   }
 
@@ -102,19 +124,13 @@ UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPi
 
 UniquePipeline create_compute_pipeline(VulkanContext& context, const ComputePipelineDesc& desc) {
   const UniqueShaderModule module = create_shader_module(context, desc.spirv);
-  std::vector<VkSpecializationMapEntry> entries;
-  for (uint32_t id = 0; id < desc.specialization.size(); ++id) {
-    entries.push_back({id, id * static_cast<uint32_t>(sizeof(uint32_t)), sizeof(uint32_t)});
-  }
-  const VkSpecializationInfo specialization{static_cast<uint32_t>(entries.size()), entries.data(),
-                                            desc.specialization.size() * sizeof(uint32_t),
-                                            desc.specialization.data()};
+  const Specialization specialization(desc.specialization);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   info.stage.module = module.get();
   info.stage.pName = "main";
-  info.stage.pSpecializationInfo = entries.empty() ? nullptr : &specialization;
+  info.stage.pSpecializationInfo = specialization.get();
   info.layout = desc.layout;
   VkPipeline pipeline;
   check(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),

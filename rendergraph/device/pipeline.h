@@ -19,6 +19,8 @@ UniqueShaderModule create_shader_module(VulkanContext& context, std::span<const 
 struct GraphicsPipelineDesc {
   std::span<const uint32_t> vertex_spirv;
   std::span<const uint32_t> fragment_spirv;  // empty for depth-only pipelines
+  // fragment_specialization[i] is the fragment shader's `constant_id = i` (32-bit values).
+  std::vector<uint32_t> fragment_specialization;
   std::vector<VkVertexInputBindingDescription> vertex_bindings;
   std::vector<VkVertexInputAttributeDescription> vertex_attributes;
   std::vector<VkFormat> color_formats;

@@ -1,0 +1,52 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Tiled forward lighting: ambient plus the lights of this pixel's screen tile (light_tiles.comp
+// ran on a depth prepass), group by group, each group's shadow kind and algorithm a constant.
+// GROUPS_PRESENT (a specialization constant, bit g for group g) removes the groups the frame has
+// no light of, so the shader holds only the shadow code the frame uses.
+#include "light_shading.glsl"
+#include "light_tiles.glsl"
+#include "material.glsl"
+
+layout(constant_id = 0) const uint GROUPS_PRESENT = 0x7FFu;
+
+layout(std430, set = 0, binding = tile_lights_binding) readonly buffer TileLights { uint tile_lights[]; };
+layout(std430, set = 0, binding = tile_ranges_binding) readonly buffer TileRanges { uvec2 tile_ranges[]; };
+
+layout(location = 0) in vec3 in_world_position;
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) flat in uint in_instance;
+layout(location = 3) in vec2 in_uv;
+
+layout(location = 0) out vec4 out_color;
+
+vec3 shade_group(uint group, uint tile, SurfacePoint p) {
+  vec3 color = vec3(0.0);
+  if ((GROUPS_PRESENT & (1u << group)) == 0u) return color;
+  uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + group];
+  for (uint j = 0u; j < range.y; ++j) {
+    color += shade_light_as(lights[tile_lights[range.x + j]], p, in_world_position, group_shadow_kind(group),
+                            group_algorithm(group));
+  }
+  return color;
+}
+
+void main() {
+  SurfacePoint p = instance_surface(in_instance, in_world_position, in_normal, in_uv);
+  uvec2 tile_xy = uvec2(gl_FragCoord.xy) / LIGHT_TILE_SIZE;
+  uint tile = tile_xy.y * frame.counts.y + tile_xy.x;  // counts.y: tiles across
+  vec3 color = frame.camera_position.w * p.base_color;
+  // One call per group with a literal group, so each call's shadow code is resolved at compile time.
+  color += shade_group(0u, tile, p);
+  color += shade_group(1u, tile, p);
+  color += shade_group(2u, tile, p);
+  color += shade_group(3u, tile, p);
+  color += shade_group(4u, tile, p);
+  color += shade_group(5u, tile, p);
+  color += shade_group(6u, tile, p);
+  color += shade_group(7u, tile, p);
+  color += shade_group(8u, tile, p);
+  color += shade_group(9u, tile, p);
+  color += shade_group(10u, tile, p);
+  out_color = vec4(color, 1.0);
+}

@@ -1,0 +1,134 @@
+#include "systems/tiled_forward_pass.h"
+
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/pipeline.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/depth_prepass.vert.spv.h"
+#include "shaders/scene.vert.spv.h"
+#include "shaders/scene_tiled.frag.spv.h"
+#include "systems/gpu_scene.h"
+#include "systems/gpu_textures.h"
+#include "systems/shader_bindings.h"
+
+namespace sg {
+namespace {
+
+using namespace bindings;
+constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+
+vk::GraphicsPipelineDesc scene_pipeline(VkPipelineLayout layout, bool depth_only) {
+  vk::GraphicsPipelineDesc desc;
+  desc.vertex_spirv =
+      depth_only ? std::span<const uint32_t>(depth_prepass_vert) : std::span<const uint32_t>(scene_vert);
+  scene_vertex_input(desc, !depth_only);
+  desc.depth_format = vk::to_vk(ForwardPass::depth_format);
+  desc.layout = layout;
+  return desc;
+}
+
+}  // namespace
+
+TiledForwardPass::TiledForwardPass(vk::VulkanContext& context, const GpuTextures& textures)
+    : context_(context),
+      textures_(textures),
+      shadow_samplers_(create_shadow_samplers(context)),
+      material_(
+          vk::create_sampler(context.device(), VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_REPEAT)),
+      layout_(context.device(),
+              {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
+               {lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment},
+               {shadow_maps_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
+               {shadow_maps_compare_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
+               {shadow_cubes_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
+               {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
+               {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment},
+               {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment}},
+              vk::push_constants<FrameConstants>(both_stages)),
+      depth_layout_(context.device(),
+                    {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages}},
+                    vk::push_constants<FrameConstants>(both_stages)) {
+  vk::GraphicsPipelineDesc desc = scene_pipeline(depth_layout_.get(), true);
+  desc.name = "depth prepass";
+  depth_pipeline_ = vk::create_graphics_pipeline(context, desc);
+}
+
+void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin) {
+  groups_present_ = 0;
+  for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+    if (group_begin[group + 1] > group_begin[group]) groups_present_ |= 1u << group;
+  }
+  vk::UniquePipeline& pipeline = pipelines_[groups_present_];
+  if (pipeline) return;
+  vk::GraphicsPipelineDesc desc = scene_pipeline(layout_.get(), false);
+  desc.fragment_spirv = scene_tiled_frag;
+  desc.fragment_specialization = {groups_present_};
+  desc.color_formats = {vk::to_vk(ForwardPass::lit_sum_format)};
+  // The prepass wrote the same depths with the same vertex shader: draw only what it kept.
+  desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+  desc.depth_write = false;
+  desc.name = "tiled forward";
+  pipeline = vk::create_graphics_pipeline(context_, desc);
+}
+
+rg::ImageHandle TiledForwardPass::add_depth_prepass(rg::RenderGraph& graph, uint32_t width, uint32_t height,
+                                                    const GpuScene& scene, uint32_t slot,
+                                                    const FrameConstants& constants) const {
+  rg::ImageHandle depth;
+  graph.add_pass(
+      "depth prepass",
+      [&](rg::PassBuilder& b) {
+        depth = b.write(b.create_image("depth", {width, height, ForwardPass::depth_format}),
+                        rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
+      },
+      [this, &scene, slot, constants](const vk::PassRecorder& rec) {
+        const VkDescriptorSet set = depth_layout_.write(rec.allocate_set(depth_layout_))
+                                        .buffer(instances_binding, scene.instances(slot).handle())
+                                        .update();
+        scene.draw_camera_pass(rec, depth_pipeline_.get(), depth_layout_, set, constants, slot);
+      });
+  return depth;
+}
+
+ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
+                                        const LightTiles& tiles, rg::ImageHandle maps, rg::ImageHandle cubes,
+                                        const vk::Buffer& lights, const GpuScene& scene, uint32_t slot,
+                                        const FrameConstants& constants) const {
+  const rg::ImageDesc& screen = graph.resources()[depth.index].image;
+  ForwardTargets targets{{}, depth};
+  graph.add_pass(
+      "forward",
+      [&](rg::PassBuilder& b) {
+        b.read(maps, rg::Usage::sampled_fragment);
+        b.read(cubes, rg::Usage::sampled_fragment);
+        b.read(tiles.lights, rg::Usage::storage_fragment);
+        b.read(tiles.ranges, rg::Usage::storage_fragment);
+        targets.depth = b.write(depth, rg::Usage::depth_attachment);  // tested, not written
+        targets.lit_sum =
+            b.write(b.create_image("lit sum", {screen.width, screen.height, ForwardPass::lit_sum_format}),
+                    rg::Usage::colour_attachment, rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
+      },
+      [this, &scene, &lights, slot, constants, tiles, maps, cubes,
+       pipeline = pipelines_.at(groups_present_).get()](const vk::PassRecorder& rec) {
+        const VkSampler nearest = shadow_samplers_.nearest.get();
+        const VkImageView maps_view =
+            rec.view(maps, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY);
+        const VkDescriptorSet set =
+            layout_.write(rec.allocate_set(layout_))
+                .buffer(instances_binding, scene.instances(slot).handle())
+                .buffer(lights_binding, lights.handle())
+                .image(shadow_maps_binding, maps_view, nearest)
+                .image(shadow_maps_compare_binding, maps_view, shadow_samplers_.compare.get())
+                .image(shadow_cubes_binding,
+                       rec.view(cubes, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY), nearest)
+                .image(material_textures_binding, textures_.array().view(), material_.get())
+                .buffer(tile_lights_binding, rec.buffer(tiles.lights))
+                .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
+                .update();
+        scene.draw_camera_pass(rec, pipeline, layout_, set, constants, slot);
+      });
+  return targets;
+}
+
+}  // namespace sg

@@ -1,0 +1,61 @@
+#pragma once
+// Tiled forward lighting (shaders/scene_tiled.frag): a depth prepass, light culling on it
+// (LightTilesPass), then every drawable shaded once with the lights of its pixel's tile, group by
+// group. The pipeline is specialized on the light groups the frame has (bit g for group g), so it
+// holds only their shadow code; one is compiled per set of groups, when first needed.
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/unique_handle.h"
+#include "systems/forward_pass.h"
+#include "systems/light_tiles_pass.h"
+#include "systems/scene_gpu_types.h"
+#include "systems/shadow_samplers.h"
+#include "systems/shadows/light_groups.h"
+
+namespace sg::vk {
+class Buffer;
+class VulkanContext;
+}  // namespace sg::vk
+
+namespace sg {
+
+class GpuScene;
+class GpuTextures;
+
+class TiledForwardPass {
+ public:
+  // `textures` must outlive the pass.
+  TiledForwardPass(vk::VulkanContext& context, const GpuTextures& textures);
+
+  // Makes the pipeline for the groups that have lights (group_begin as in shadows::FrameLights).
+  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin);
+
+  // The depth prepass: every drawable's depth into a new D32 image of `width` x `height`.
+  rg::ImageHandle add_depth_prepass(rg::RenderGraph& graph, uint32_t width, uint32_t height,
+                                    const GpuScene& scene, uint32_t slot,
+                                    const FrameConstants& constants) const;
+
+  // Shades every drawable where the prepass left it, into a new lit sum. `constants.counts.y`
+  // must be the tiles across the screen. `lights` and `scene` are read when the pass records.
+  ForwardTargets add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const LightTiles& tiles,
+                        rg::ImageHandle maps, rg::ImageHandle cubes, const vk::Buffer& lights,
+                        const GpuScene& scene, uint32_t slot, const FrameConstants& constants) const;
+
+ private:
+  vk::VulkanContext& context_;
+  const GpuTextures& textures_;
+  ShadowSamplers shadow_samplers_;
+  vk::UniqueSampler material_;
+  vk::PipelineLayout layout_;
+  // The prepass binds only the instances: a set with unwritten descriptors is not bindable.
+  vk::PipelineLayout depth_layout_;
+  vk::UniquePipeline depth_pipeline_;
+  std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;  // by groups present
+  uint32_t groups_present_ = 0;
+};
+
+}  // namespace sg
