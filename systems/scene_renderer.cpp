@@ -2,7 +2,6 @@
 
 #include <span>
 
-#include "rendergraph/device/context.h"
 #include "systems/camera.h"
 
 namespace sg {
@@ -12,17 +11,15 @@ namespace {
 constexpr rg::ResourceState sampled{rg::PipelineStage::fragment_shader | rg::PipelineStage::compute_shader,
                                     rg::Access::shader_sampled_read, rg::ImageLayout::read_only_optimal};
 
-// Measured (docs/PERFORMANCE.md): tiled deferred wins on both lavapipe and the H100.
-LightingPath choose_lighting(LightingPath asked, const vk::VulkanContext&) {
-  return asked == LightingPath::automatic ? LightingPath::deferred : asked;
-}
+// Tiled deferred measured fastest on both lavapipe and the H200 (docs/PERFORMANCE.md).
+constexpr LightingPath fastest_lighting = LightingPath::deferred;
 
 }  // namespace
 
 SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene, uint32_t frames_in_flight,
                              rg::Format frame_format, const RendererSettings& settings)
     : settings_(settings),
-      lighting_(choose_lighting(settings.lighting, context)),
+      lighting_(settings.lighting == LightingPath::automatic ? fastest_lighting : settings.lighting),
       gpu_scene_(context, scene.meshes, frames_in_flight),
       textures_(context, scene.textures),
       shadow_maps_(context),
@@ -34,7 +31,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
     case LightingPath::forward:
       tiled_forward_.emplace(TiledForwardPass(context, textures_), LightTilesPass(context));
       break;
-    case LightingPath::automatic:
+    case LightingPath::automatic:  // resolved above
     case LightingPath::deferred:
       deferred_.emplace(GBufferPass(context, frames_in_flight, textures_), LightTilesPass(context),
                         TiledLightingPass(context));
