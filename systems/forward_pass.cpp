@@ -23,22 +23,17 @@ constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 }  // namespace
 
 ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures)
-    : shadow_samplers_(create_shadow_samplers(context)),
-      // glTF's default wrapping.
-      material_(
-          vk::create_sampler(context.device(), VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_REPEAT)),
+    : light_resources_(context),
       layout_(context.device(),
-              {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
-               {lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment},
-               {shadow_maps_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
-               {shadow_maps_compare_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
-               {shadow_cubes_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
-               {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment}},
+              LightResources::bindings(
+                  fragment,
+                  {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
+                   {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment}}),
               vk::push_constants<FrameConstants>(both_stages)),
       slot_sets_(layout_.allocate_sets(frames_in_flight)) {
   // The textures never change: bind them once in every slot's set.
   for (const VkDescriptorSet set : slot_sets_.sets) {
-    layout_.write(set).image(material_textures_binding, textures.array().view(), material_.get()).update();
+    layout_.write(set).image(material_textures_binding, textures.array().view(), textures.sampler()).update();
   }
 
   vk::GraphicsPipelineDesc desc;
@@ -59,13 +54,9 @@ void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer
   const VkImageView maps_view = maps.views().get({0, 1, 0, maps.array_layers(), VK_IMAGE_VIEW_TYPE_2D_ARRAY});
   const VkImageView cubes_view =
       cubes.views().get({0, 1, 0, cubes.array_layers(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY});
-  layout_.write(slot_sets_.sets[slot])
-      .buffer(instances_binding, scene.instances(slot).handle())
-      .buffer(lights_binding, lights.handle())
-      .image(shadow_maps_binding, maps_view, shadow_samplers_.nearest.get())
-      .image(shadow_maps_compare_binding, maps_view, shadow_samplers_.compare.get())
-      .image(shadow_cubes_binding, cubes_view, shadow_samplers_.nearest.get())
-      .update();
+  vk::DescriptorWriter writer = layout_.write(slot_sets_.sets[slot]);
+  writer.buffer(instances_binding, scene.instances(slot).handle());
+  light_resources_.write(writer, lights.handle(), maps_view, cubes_view).update();
 }
 
 ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height,

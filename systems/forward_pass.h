@@ -7,8 +7,8 @@
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/unique_handle.h"
+#include "systems/light_resources.h"
 #include "systems/scene_gpu_types.h"
-#include "systems/shadow_samplers.h"
 
 namespace sg::vk {
 class Buffer;
@@ -47,8 +47,7 @@ class ForwardPass {
                         const FrameConstants& constants) const;
 
  private:
-  ShadowSamplers shadow_samplers_;
-  vk::UniqueSampler material_;
+  LightResources light_resources_;
   vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;
   vk::UniquePipeline pipeline_;

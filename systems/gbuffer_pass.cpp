@@ -23,16 +23,14 @@ constexpr rg::Format depth_format = rg::Format::d32_sfloat;
 }  // namespace
 
 GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures)
-    : material_(
-          vk::create_sampler(context.device(), VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_REPEAT)),
-      layout_(context.device(),
+    : layout_(context.device(),
               {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
                {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                 VK_SHADER_STAGE_FRAGMENT_BIT}},
               vk::push_constants<FrameConstants>(both_stages)),
       slot_sets_(layout_.allocate_sets(frames_in_flight)) {
   for (const VkDescriptorSet set : slot_sets_.sets) {
-    layout_.write(set).image(material_textures_binding, textures.array().view(), material_.get()).update();
+    layout_.write(set).image(material_textures_binding, textures.array().view(), textures.sampler()).update();
   }
   vk::GraphicsPipelineDesc desc;
   desc.vertex_spirv = scene_vert;

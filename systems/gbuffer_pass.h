@@ -40,7 +40,6 @@ class GBufferPass {
                  uint32_t slot, const FrameConstants& constants) const;
 
  private:
-  vk::UniqueSampler material_;
   vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;
   vk::UniquePipeline pipeline_;

@@ -8,11 +8,14 @@
 
 #include <stb_image_resize.h>
 
+#include "rendergraph/device/context.h"
 #include "rendergraph/device/upload.h"
 
 namespace sg {
 
-GpuTextures::GpuTextures(vk::VulkanContext& context, const scene::TextureLibrary& textures) {
+GpuTextures::GpuTextures(vk::VulkanContext& context, const scene::TextureLibrary& textures)
+    : sampler_(
+          vk::create_sampler(context.device(), VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_REPEAT)) {
   uint32_t size = 1;
   for (const scene::Texture& texture : textures.textures) {
     size = std::max({size, texture.width, texture.height});

@@ -7,6 +7,7 @@
 // keeps their uv mapping. A scene without textures gets one white layer, so the array exists.
 #include <cstdint>
 
+#include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/resources.h"
 #include "systems/scene/texture_library.h"
 
@@ -19,10 +20,13 @@ class GpuTextures {
   GpuTextures(vk::VulkanContext& context, const scene::TextureLibrary& textures);
 
   const vk::Image& array() const { return array_; }
+  // Linear filtering with glTF's default wrapping (repeat).
+  VkSampler sampler() const { return sampler_.get(); }
   uint32_t layers() const { return layers_; }
 
  private:
   vk::Image array_;
+  vk::UniqueSampler sampler_;
   uint32_t layers_ = 0;
 };
 

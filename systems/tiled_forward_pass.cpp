@@ -33,19 +33,15 @@ vk::GraphicsPipelineDesc scene_pipeline(VkPipelineLayout layout, bool depth_only
 TiledForwardPass::TiledForwardPass(vk::VulkanContext& context, const GpuTextures& textures)
     : context_(context),
       textures_(textures),
-      shadow_samplers_(create_shadow_samplers(context)),
-      material_(
-          vk::create_sampler(context.device(), VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_REPEAT)),
-      layout_(context.device(),
-              {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
-               {lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment},
-               {shadow_maps_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
-               {shadow_maps_compare_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
-               {shadow_cubes_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
-               {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
-               {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment},
-               {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment}},
-              vk::push_constants<FrameConstants>(both_stages)),
+      light_resources_(context),
+      layout_(
+          context.device(),
+          LightResources::bindings(
+              fragment, {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
+                         {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
+                         {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment},
+                         {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment}}),
+          vk::push_constants<FrameConstants>(both_stages)),
       depth_layout_(context.device(),
                     {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages}},
                     vk::push_constants<FrameConstants>(both_stages)) {
@@ -111,20 +107,16 @@ ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
       },
       [this, &scene, &lights, slot, constants, tiles, maps, cubes,
        pipeline = pipelines_.at(groups_present_).get()](const vk::PassRecorder& rec) {
-        const VkSampler nearest = shadow_samplers_.nearest.get();
-        const VkImageView maps_view =
-            rec.view(maps, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY);
+        vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
+        writer.buffer(instances_binding, scene.instances(slot).handle())
+            .image(material_textures_binding, textures_.array().view(), textures_.sampler())
+            .buffer(tile_lights_binding, rec.buffer(tiles.lights))
+            .buffer(tile_ranges_binding, rec.buffer(tiles.ranges));
         const VkDescriptorSet set =
-            layout_.write(rec.allocate_set(layout_))
-                .buffer(instances_binding, scene.instances(slot).handle())
-                .buffer(lights_binding, lights.handle())
-                .image(shadow_maps_binding, maps_view, nearest)
-                .image(shadow_maps_compare_binding, maps_view, shadow_samplers_.compare.get())
-                .image(shadow_cubes_binding,
-                       rec.view(cubes, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY), nearest)
-                .image(material_textures_binding, textures_.array().view(), material_.get())
-                .buffer(tile_lights_binding, rec.buffer(tiles.lights))
-                .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
+            light_resources_
+                .write(writer, lights.handle(),
+                       rec.view(maps, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY),
+                       rec.view(cubes, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY))
                 .update();
         scene.draw_camera_pass(rec, pipeline, layout_, set, constants, slot);
       });

@@ -11,9 +11,9 @@
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/forward_pass.h"
+#include "systems/light_resources.h"
 #include "systems/light_tiles_pass.h"
 #include "systems/scene_gpu_types.h"
-#include "systems/shadow_samplers.h"
 #include "systems/shadows/light_groups.h"
 
 namespace sg::vk {
@@ -48,8 +48,7 @@ class TiledForwardPass {
  private:
   vk::VulkanContext& context_;
   const GpuTextures& textures_;
-  ShadowSamplers shadow_samplers_;
-  vk::UniqueSampler material_;
+  LightResources light_resources_;
   vk::PipelineLayout layout_;
   // The prepass binds only the instances: a set with unwritten descriptors is not bindable.
   vk::PipelineLayout depth_layout_;

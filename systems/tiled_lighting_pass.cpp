@@ -35,19 +35,17 @@ std::string group_name(uint32_t group) {
 
 TiledLightingPass::TiledLightingPass(vk::VulkanContext& context)
     : context_(context),
-      shadow_samplers_(create_shadow_samplers(context)),
+      light_resources_(context),
+      nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       layout_(context.device(),
-              {{lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-               {shadow_maps_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-               {shadow_maps_compare_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-               {shadow_cubes_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-               {gbuffer_position_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-               {gbuffer_normal_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-               {gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-               {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute},
-               {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-               {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-               {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}},
+              LightResources::bindings(
+                  compute, {{gbuffer_position_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+                            {gbuffer_normal_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+                            {gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+                            {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute},
+                            {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
+                            {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
+                            {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}}),
               vk::push_constants<LightingConstants>(compute)) {}
 
 void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin) {
@@ -84,23 +82,20 @@ rg::ImageHandle TiledLightingPass::add_to(
           lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
         },
         [this, group, gbuffer, tiles, maps, cubes, lit_sum, &lights, constants](const vk::PassRecorder& rec) {
-          const VkSampler nearest = shadow_samplers_.nearest.get();
-          const VkImageView maps_view =
-              rec.view(maps, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY);
+          const VkSampler nearest = nearest_.get();
+          vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
+          writer.image(gbuffer_position_binding, rec.view(gbuffer.position), nearest)
+              .image(gbuffer_normal_binding, rec.view(gbuffer.normal), nearest)
+              .image(gbuffer_albedo_binding, rec.view(gbuffer.albedo), nearest)
+              .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL)
+              .buffer(tile_lights_binding, rec.buffer(tiles.lights))
+              .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
+              .buffer(group_tiles_binding, rec.buffer(tiles.tiles));
           const VkDescriptorSet set =
-              layout_.write(rec.allocate_set(layout_))
-                  .buffer(lights_binding, lights.handle())
-                  .image(shadow_maps_binding, maps_view, nearest)
-                  .image(shadow_maps_compare_binding, maps_view, shadow_samplers_.compare.get())
-                  .image(shadow_cubes_binding,
-                         rec.view(cubes, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY), nearest)
-                  .image(gbuffer_position_binding, rec.view(gbuffer.position), nearest)
-                  .image(gbuffer_normal_binding, rec.view(gbuffer.normal), nearest)
-                  .image(gbuffer_albedo_binding, rec.view(gbuffer.albedo), nearest)
-                  .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL)
-                  .buffer(tile_lights_binding, rec.buffer(tiles.lights))
-                  .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
-                  .buffer(group_tiles_binding, rec.buffer(tiles.tiles))
+              light_resources_
+                  .write(writer, lights.handle(),
+                         rec.view(maps, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY),
+                         rec.view(cubes, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY))
                   .update();
           vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[group].get());
           layout_.bind_compute(rec.cmd(), set);

@@ -11,8 +11,8 @@
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/gbuffer_pass.h"
+#include "systems/light_resources.h"
 #include "systems/light_tiles_pass.h"
-#include "systems/shadow_samplers.h"
 #include "systems/shadows/light_groups.h"
 
 namespace sg::vk {
@@ -40,7 +40,8 @@ class TiledLightingPass {
 
  private:
   vk::VulkanContext& context_;
-  ShadowSamplers shadow_samplers_;
+  LightResources light_resources_;
+  vk::UniqueSampler nearest_;  // G-buffer reads
   vk::PipelineLayout layout_;
   std::array<vk::UniquePipeline, shadows::light_group_count> pipelines_;
 };

@@ -1,0 +1,36 @@
+#pragma once
+// What every pass that shades lights binds (shaders/lights_interface.glsl): the frame's light
+// records and the shadow images, with the samplers shadow_sampling.glsl expects. Nearest reads,
+// and a comparison sampler whose linear filter makes each fetch a hardware 2x2 PCF (nearest
+// where the device cannot filter the depth format).
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/unique_handle.h"
+
+namespace sg::vk {
+class VulkanContext;
+}
+
+namespace sg {
+
+class LightResources {
+ public:
+  explicit LightResources(const vk::VulkanContext& context);
+
+  // The bindings, visible to `stages`, followed by a pass's own `more`.
+  static std::vector<VkDescriptorSetLayoutBinding> bindings(VkShaderStageFlags stages,
+                                                            std::vector<VkDescriptorSetLayoutBinding> more);
+
+  // Writes the records and views of `maps` (a 2D array view) and `cubes` (a cube array view).
+  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBuffer lights, VkImageView maps,
+                              VkImageView cubes) const;
+
+ private:
+  vk::UniqueSampler nearest_;
+  vk::UniqueSampler compare_;
+};
+
+}  // namespace sg
