@@ -6,7 +6,6 @@
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "shaders/scene.frag.spv.h"
-#include "shaders/scene.vert.spv.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
 #include "systems/scene/mesh_library.h"
@@ -36,15 +35,8 @@ ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
     layout_.write(set).image(material_textures_binding, textures.array().view(), textures.sampler()).update();
   }
 
-  vk::GraphicsPipelineDesc desc;
-  desc.vertex_spirv = scene_vert;
-  desc.fragment_spirv = scene_frag;
-  scene_vertex_input(desc, true);
-  desc.color_formats = {vk::to_vk(lit_sum_format)};
-  desc.depth_format = vk::to_vk(depth_format);
-  desc.layout = layout_.get();
-  desc.name = "forward";
-  pipeline_ = vk::create_graphics_pipeline(context, desc);
+  pipeline_ = vk::create_graphics_pipeline(
+      context, camera_pipeline_desc(scene_frag, {vk::to_vk(lit_sum_format)}, layout_.get(), "forward"));
 }
 
 void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer& lights,

@@ -5,7 +5,6 @@
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/gbuffer.frag.spv.h"
-#include "shaders/scene.vert.spv.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
 #include "systems/shader_bindings.h"
@@ -32,16 +31,11 @@ GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
   for (const VkDescriptorSet set : slot_sets_.sets) {
     layout_.write(set).image(material_textures_binding, textures.array().view(), textures.sampler()).update();
   }
-  vk::GraphicsPipelineDesc desc;
-  desc.vertex_spirv = scene_vert;
-  desc.fragment_spirv = gbuffer_frag;
-  scene_vertex_input(desc, true);
-  desc.color_formats = {vk::to_vk(lit_sum_format), vk::to_vk(position_format), vk::to_vk(normal_format),
-                        vk::to_vk(albedo_format)};
-  desc.depth_format = vk::to_vk(depth_format);
-  desc.layout = layout_.get();
-  desc.name = "g-buffer";
-  pipeline_ = vk::create_graphics_pipeline(context, desc);
+  pipeline_ = vk::create_graphics_pipeline(
+      context, camera_pipeline_desc(gbuffer_frag,
+                                    {vk::to_vk(lit_sum_format), vk::to_vk(position_format),
+                                     vk::to_vk(normal_format), vk::to_vk(albedo_format)},
+                                    layout_.get(), "g-buffer"));
 }
 
 void GBufferPass::prepare(uint32_t slot, const GpuScene& scene) {

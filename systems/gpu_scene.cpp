@@ -7,6 +7,7 @@
 #include "ecs/transform.h"
 #include "rendergraph/device/upload.h"
 #include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/scene.vert.spv.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
 
@@ -21,6 +22,20 @@ void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface) {
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, normal))});
   desc.vertex_attributes.push_back(
       {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, uv))});
+}
+
+vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
+                                              std::vector<VkFormat> colour_formats, VkPipelineLayout layout,
+                                              std::string name) {
+  vk::GraphicsPipelineDesc desc;
+  desc.vertex_spirv = scene_vert;
+  desc.fragment_spirv = fragment;
+  scene_vertex_input(desc, true);
+  desc.color_formats = std::move(colour_formats);
+  desc.depth_format = VK_FORMAT_D32_SFLOAT;
+  desc.layout = layout;
+  desc.name = std::move(name);
+  return desc;
 }
 
 GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes, uint32_t frames_in_flight)

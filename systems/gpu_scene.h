@@ -32,6 +32,12 @@ namespace sg {
 // location 0, and with `surface` the normal at 1 and the uv at 2.
 void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface);
 
+// A pipeline that draws the scene from the camera (shaders/scene.vert, draw_camera_pass) into
+// `colour_formats` with `fragment`, depth-tested against D32; callers may adjust the rest.
+vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
+                                              std::vector<VkFormat> colour_formats, VkPipelineLayout layout,
+                                              std::string name);
+
 class GpuScene {
  public:
   GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes, uint32_t frames_in_flight);

@@ -5,7 +5,6 @@
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/depth_prepass.vert.spv.h"
-#include "shaders/scene.vert.spv.h"
 #include "shaders/scene_tiled.frag.spv.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
@@ -17,16 +16,6 @@ namespace {
 using namespace bindings;
 constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
-
-vk::GraphicsPipelineDesc scene_pipeline(VkPipelineLayout layout, bool depth_only) {
-  vk::GraphicsPipelineDesc desc;
-  desc.vertex_spirv =
-      depth_only ? std::span<const uint32_t>(depth_prepass_vert) : std::span<const uint32_t>(scene_vert);
-  scene_vertex_input(desc, !depth_only);
-  desc.depth_format = vk::to_vk(ForwardPass::depth_format);
-  desc.layout = layout;
-  return desc;
-}
 
 }  // namespace
 
@@ -45,7 +34,11 @@ TiledForwardPass::TiledForwardPass(vk::VulkanContext& context, const GpuTextures
       depth_layout_(context.device(),
                     {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages}},
                     vk::push_constants<FrameConstants>(both_stages)) {
-  vk::GraphicsPipelineDesc desc = scene_pipeline(depth_layout_.get(), true);
+  vk::GraphicsPipelineDesc desc;
+  desc.vertex_spirv = depth_prepass_vert;
+  scene_vertex_input(desc, false);
+  desc.depth_format = vk::to_vk(ForwardPass::depth_format);
+  desc.layout = depth_layout_.get();
   desc.name = "depth prepass";
   depth_pipeline_ = vk::create_graphics_pipeline(context, desc);
 }
@@ -57,14 +50,12 @@ void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_c
   }
   vk::UniquePipeline& pipeline = pipelines_[groups_present_];
   if (pipeline) return;
-  vk::GraphicsPipelineDesc desc = scene_pipeline(layout_.get(), false);
-  desc.fragment_spirv = scene_tiled_frag;
+  vk::GraphicsPipelineDesc desc = camera_pipeline_desc(
+      scene_tiled_frag, {vk::to_vk(ForwardPass::lit_sum_format)}, layout_.get(), "tiled forward");
   desc.fragment_specialization = {groups_present_};
-  desc.color_formats = {vk::to_vk(ForwardPass::lit_sum_format)};
-  // The prepass wrote the same depths with the same vertex shader: draw only what it kept.
+  // depth_prepass.vert computed the same positions: draw only what the prepass kept.
   desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
   desc.depth_write = false;
-  desc.name = "tiled forward";
   pipeline = vk::create_graphics_pipeline(context_, desc);
 }
 
