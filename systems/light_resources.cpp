@@ -1,6 +1,7 @@
 #include "systems/light_resources.h"
 
 #include "rendergraph/device/context.h"
+#include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "systems/shader_bindings.h"
 #include "systems/shadow_map_arrays.h"
@@ -41,6 +42,13 @@ vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBuff
       .image(shadow_maps_binding, maps, nearest_.get())
       .image(shadow_maps_compare_binding, maps, compare_.get())
       .image(shadow_cubes_binding, cubes, nearest_.get());
+}
+
+vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBuffer lights,
+                                            const vk::PassRecorder& rec, rg::ImageHandle maps,
+                                            rg::ImageHandle cubes) const {
+  return write(writer, lights, rec.view(maps, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY),
+               rec.view(cubes, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY));
 }
 
 }  // namespace sg

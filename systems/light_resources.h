@@ -7,12 +7,14 @@
 
 #include <vulkan/vulkan.h>
 
+#include "rendergraph/core/resource_types.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/unique_handle.h"
 
 namespace sg::vk {
+class PassRecorder;
 class VulkanContext;
-}
+}  // namespace sg::vk
 
 namespace sg {
 
@@ -27,6 +29,9 @@ class LightResources {
   // Writes the records and views of `maps` (a 2D array view) and `cubes` (a cube array view).
   vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBuffer lights, VkImageView maps,
                               VkImageView cubes) const;
+  // The same inside a pass that declared the shadow images `maps` and `cubes` of its graph.
+  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBuffer lights, const vk::PassRecorder& rec,
+                              rg::ImageHandle maps, rg::ImageHandle cubes) const;
 
  private:
   vk::UniqueSampler nearest_;

@@ -104,11 +104,7 @@ ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
             .buffer(tile_lights_binding, rec.buffer(tiles.lights))
             .buffer(tile_ranges_binding, rec.buffer(tiles.ranges));
         const VkDescriptorSet set =
-            light_resources_
-                .write(writer, lights.handle(),
-                       rec.view(maps, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY),
-                       rec.view(cubes, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY))
-                .update();
+            light_resources_.write(writer, lights.handle(), rec, maps, cubes).update();
         scene.draw_camera_pass(rec, pipeline, layout_, set, constants, slot);
       });
   return targets;

@@ -92,11 +92,7 @@ rg::ImageHandle TiledLightingPass::add_to(
               .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
               .buffer(group_tiles_binding, rec.buffer(tiles.tiles));
           const VkDescriptorSet set =
-              light_resources_
-                  .write(writer, lights.handle(),
-                         rec.view(maps, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY),
-                         rec.view(cubes, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY))
-                  .update();
+              light_resources_.write(writer, lights.handle(), rec, maps, cubes).update();
           vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[group].get());
           layout_.bind_compute(rec.cmd(), set);
           layout_.push(rec.cmd(), constants);
