@@ -32,8 +32,10 @@ layout(push_constant) uniform Constants {
   uvec4 counts;  // x lights
 } frame;
 
-shared uint depth_min_bits;
-shared uint depth_max_bits;
+shared float thread_nearest[THREADS];
+shared float thread_farthest[THREADS];
+shared vec4 tile_sphere;
+shared bool has_surfaces;
 shared uint first_slot[THREADS];  // per thread: how many it found, then where its lights go
 shared uint total;
 shared uint entries[MAX_LIGHTS_PER_TILE];
@@ -50,37 +52,45 @@ uint group_of(uint light) {
 void main() {
   uint local = gl_LocalInvocationIndex;
   uint tile = gl_WorkGroupID.y * frame.screen.z + gl_WorkGroupID.x;
-  if (local == 0u) {
-    depth_min_bits = floatBitsToUint(1.0);
-    depth_max_bits = 0u;
-  }
   if (local < LIGHT_GROUP_COUNT) {
     group_first[local] = 0u;
     group_end[local] = 0u;
   }
-  barrier();
-
+  // Each thread reduces its 2 x 2 block, then one thread the 64 results and the tile's bound:
+  // shared-memory atomics and 64 copies of the same sphere cost a CPU driver more than a short
+  // serial loop.
+  float nearest = 1.0;
+  float farthest = 0.0;
   for (uint k = 0u; k < 4u; ++k) {
     ivec2 pixel = ivec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy * 2u + uvec2(k & 1u, k >> 1u));
     if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) {
       float depth = texelFetch(scene_depth, pixel, 0).r;
-      if (depth < 1.0) {  // positive floats order like their bits
-        atomicMin(depth_min_bits, floatBitsToUint(depth));
-        atomicMax(depth_max_bits, floatBitsToUint(depth));
+      if (depth < 1.0) {  // background does not bound the tile
+        nearest = min(nearest, depth);
+        farthest = max(farthest, depth);
       }
     }
+  }
+  thread_nearest[local] = nearest;
+  thread_farthest[local] = farthest;
+  barrier();
+  if (local == 0u) {
+    for (uint t = 1u; t < THREADS; ++t) {
+      nearest = min(nearest, thread_nearest[t]);
+      farthest = max(farthest, thread_farthest[t]);
+    }
+    has_surfaces = farthest > 0.0;
+    vec2 texel = 2.0 / vec2(frame.screen.xy);
+    vec2 ndc_min = vec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE) * texel - 1.0;
+    vec2 ndc_max = min(vec2((gl_WorkGroupID.xy + 1u) * LIGHT_TILE_SIZE) * texel - 1.0, vec2(1.0));
+    tile_sphere = tile_bounding_sphere(frame.inverse_view_projection, ndc_min, ndc_max, nearest, farthest);
   }
   barrier();
 
   // Lights in ordered chunks, one per thread: count, place the chunks one after another, then
   // write in order, so the list is sorted by light index and the same every frame.
-  bool has_surfaces = depth_max_bits != 0u;
   uint light_count = has_surfaces ? frame.counts.x : 0u;
-  vec2 texel = 2.0 / vec2(frame.screen.xy);
-  vec2 ndc_min = vec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE) * texel - 1.0;
-  vec2 ndc_max = min(vec2((gl_WorkGroupID.xy + 1u) * LIGHT_TILE_SIZE) * texel - 1.0, vec2(1.0));
-  vec4 sphere = tile_bounding_sphere(frame.inverse_view_projection, ndc_min, ndc_max,
-                                     uintBitsToFloat(depth_min_bits), uintBitsToFloat(depth_max_bits));
+  vec4 sphere = tile_sphere;
   uint chunk = (light_count + THREADS - 1u) / THREADS;
   uint first = min(local * chunk, light_count);
   uint last = min(first + chunk, light_count);
