@@ -16,7 +16,7 @@ class ComponentPool final : public SparseSet {
   T& emplace(Entity entity, Tick now, Args&&... args) {
     if (const std::uint32_t slot = slot_of(entity); slot != npos) {
       components_[slot] = T{std::forward<Args>(args)...};
-      mark_changed(slot, begin_changes(now));
+      mark_changed(slot, now);
       return components_[slot];
     }
     insert(entity, now);

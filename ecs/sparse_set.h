@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -23,18 +24,18 @@ struct Removal {
 // the last element into the hole, which keeps the dense arrays contiguous and every operation
 // O(1).
 //
-// Change history is a log of entities in tick order, split into one segment per tick that saw a
-// write. Each component remembers where its newest log entry is (`log_position_`); older entries
-// for the same component are simply ignored, so a write costs one compare and, for the first
-// write in a tick, one append. Reading "changed since T" visits only the segments after T, i.e.
-// it costs the number of changes, not the number of components. The log is compacted (stale
-// entries dropped) whenever it grows past twice the pool size, which keeps memory bounded with
-// amortised O(1) cost per write.
+// Change history is a tick per slot, the tick of the component's newest write, plus two levels
+// of summaries: the newest tick in each block of 16 slots and in each group of 256. Ticks only
+// grow, so a write is three plain stores (no branch, no log, nothing to compact later, so no
+// tick ever pays for older ones). Reading "changed since T" skips every group and block whose
+// summary is not after T and reads only the slot ticks of the blocks that are: for scattered
+// changes that is one cache line per change plus 1/16 of the pool's size in summaries read
+// sequentially. Summaries may be stale high after a removal moves a slot; readers check slots.
 //
 // A query that writes every component of the pool records that as one bulk mark instead of a
-// log entry per component: every component present then changed at `bulk_tick_`, so the whole
-// log before it is dropped (log positions are global counters; those before `log_base_` mean
-// "changed at bulk_tick_"). This keeps a full per-frame update as cheap as a plain loop.
+// store per component: every component present then changed at `bulk_tick_`, which counts as
+// the tick of any slot whose own tick is older. This keeps a full per-frame update as cheap as
+// a plain loop.
 class SparseSet {
  public:
   static constexpr std::uint32_t npos = UINT32_MAX;
@@ -56,12 +57,12 @@ class SparseSet {
     return slot < dense_.size() && dense_[slot] == entity ? slot : npos;
   }
 
-  // Same as slot_of, but first tries `hint`: when pools hold the same entities in the same order
-  // (the common case for components added together) this is a sequential read instead of a
-  // random one.
-  std::uint32_t slot_of(Entity entity, std::uint32_t hint) const {
-    if (hint < dense_.size() && dense_[hint] == entity) return hint;
-    return slot_of(entity);
+  // Dense slot of `entity`, or npos, for an entity known to be alive (e.g. read from another
+  // pool of the same world). One read of the sparse array: removal clears the entry and
+  // destroying an entity removes it from every pool, so a live entity's index can only point at
+  // its own slot, and the dense entity array (the generation check) stays untouched.
+  std::uint32_t slot_of_live(Entity entity) const {
+    return entity.index < sparse_.size() ? sparse_[entity.index] : npos;
   }
 
   // True if `other` holds exactly the same entities in the same slots, so slot i of one pool
@@ -69,26 +70,21 @@ class SparseSet {
   // changes structurally, so asking every frame is O(1).
   bool has_same_layout(const SparseSet& other) const;
 
-  // Opens the change segment of tick `now` if needed and returns the log position where it
-  // starts. A component whose newest entry is before that position has not been written yet in
-  // this tick. Call once before a batch of mark_changed calls with the same `now`.
-  std::uint64_t begin_changes(Tick now);
-
-  // Records a write at the tick `segment_begin` was opened for.
-  void mark_changed(std::uint32_t slot, std::uint64_t segment_begin) {
-    if (log_position_[slot] >= segment_begin) return;
-    log_position_[slot] = log_base_ + change_log_.size();
-    change_log_.push_back(dense_[slot]);
+  // Records a write at `now`, the world's current tick.
+  void mark_changed(std::uint32_t slot, Tick now) {
+    ticks_[slot] = now;
+    block_ticks_[slot / slots_per_block] = now;
+    group_ticks_[slot / slots_per_group] = now;
   }
 
   // Records a write at `now` to every component in the pool, in O(1).
-  void mark_all_changed(Tick now);
+  void mark_all_changed(Tick now) { bulk_tick_ = now; }
 
   // Tick of the newest write to the component of the entity in `slot`.
-  Tick change_tick(std::uint32_t slot) const;
+  Tick change_tick(std::uint32_t slot) const { return std::max(ticks_[slot], bulk_tick_); }
 
-  // Appends to `out` every entity whose component was written after `since`, each once, in the
-  // order of their newest write.
+  // Appends to `out` every entity whose component was written after `since`, each once, in slot
+  // order.
   void collect_changed_since(Tick since, std::vector<Entity>& out) const;
 
   // Removals after `since`, oldest first.
@@ -107,10 +103,8 @@ class SparseSet {
   void erase(std::uint32_t slot, Tick now);
 
  private:
-  struct Segment {
-    Tick tick;
-    std::uint64_t begin;  // global log position of this tick's first write
-  };
+  static constexpr std::uint32_t slots_per_block = 16;  // 16 ticks: one cache line
+  static constexpr std::uint32_t slots_per_group = 256;
   struct LayoutComparison {
     const SparseSet* other;
     std::uint64_t version;
@@ -118,19 +112,14 @@ class SparseSet {
     bool same;
   };
 
-  std::uint64_t end_of_log() const { return log_base_ + change_log_.size(); }
-  bool is_newest_entry(std::uint64_t position) const;
-  void compact_change_log();
-
-  std::vector<std::uint32_t> sparse_;        // entity index -> dense slot (may be stale)
-  std::vector<Entity> dense_;                // dense slot -> entity
-  std::vector<std::uint64_t> log_position_;  // dense slot -> global position of newest entry
-  std::vector<Entity> change_log_;           // change_log_[0] is at global position log_base_
-  std::uint64_t log_base_ = 0;
-  Tick bulk_tick_ = 0;                // last mark_all_changed; 0 if never
-  std::vector<Segment> segments_;     // ascending ticks, all after bulk_tick_
-  std::vector<Removal> removals_;     // ascending ticks
-  std::uint64_t layout_version_ = 0;  // bumped by every insert and erase
+  std::vector<std::uint32_t> sparse_;  // entity index -> dense slot, npos when absent
+  std::vector<Entity> dense_;          // dense slot -> entity
+  std::vector<Tick> ticks_;            // dense slot -> tick of the newest write
+  std::vector<Tick> block_ticks_;      // newest tick among slots_per_block slots
+  std::vector<Tick> group_ticks_;      // newest tick among slots_per_group slots
+  Tick bulk_tick_ = 0;                 // last mark_all_changed; 0 if never
+  std::vector<Removal> removals_;      // ascending ticks
+  std::uint64_t layout_version_ = 0;   // bumped by every insert and erase
   mutable std::vector<LayoutComparison> layout_comparisons_;
 };
 

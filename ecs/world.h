@@ -86,7 +86,7 @@ class World {
     if (slot == SparseSet::npos) {
       throw std::out_of_range("sg::ecs::World::get_mut: no such component");
     }
-    components->mark_changed(slot, components->begin_changes(tick_));
+    components->mark_changed(slot, tick_);
     return components->at(slot);
   }
 
