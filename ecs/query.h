@@ -69,9 +69,10 @@ class Query {
     const Tick now = world_->tick();
     if (watched_ != nullptr) {
       // Collected first, so writes made by the callback cannot change what this pass visits.
-      std::vector<Entity> changed;
+      std::vector<std::uint32_t> changed;
       watched_->collect_changed_since(since_, changed);
-      for (const Entity entity : changed) visit(entity, nullptr, SparseSet::npos, now, fn);
+      const std::span<const Entity> entities = watched_->entities();
+      for (const std::uint32_t slot : changed) visit(entities[slot], watched_, slot, now, fn);
       return;
     }
     const SparseSet* driver = smallest_pool();
@@ -154,7 +155,7 @@ class Query {
   }
 
   // Visits `entity` if it has every component; `driver_slot` is its slot in `driver`, the pool it
-  // was read from (null for entities from the change log).
+  // was read from.
   template <typename Fn>
   void visit(Entity entity, const SparseSet* driver, std::uint32_t driver_slot, Tick now, Fn& fn) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {

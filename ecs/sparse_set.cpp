@@ -19,26 +19,36 @@ bool SparseSet::has_same_layout(const SparseSet& other) const {
   return known->same;
 }
 
-void SparseSet::collect_changed_since(Tick since, std::vector<Entity>& out) const {
+void SparseSet::collect_changed_since(Tick since, std::vector<std::uint32_t>& out) const {
   if (bulk_tick_ > since) {
     // Everything present at the bulk mark changed then, and everything added since is newer.
-    out.insert(out.end(), dense_.begin(), dense_.end());
+    for (std::uint32_t slot = 0; slot < dense_.size(); ++slot) out.push_back(slot);
     return;
   }
-  const std::size_t size = dense_.size();
-  for (std::size_t group = 0; group * slots_per_group < size; ++group) {
+  // Scattered changes make the summary tests unpredictable, so both passes append
+  // unconditionally and advance only on a match instead of branching.
+  std::vector<std::uint32_t> blocks(block_ticks_.size());
+  std::size_t block_count = 0;
+  const std::size_t blocks_per_group = slots_per_group / slots_per_block;
+  for (std::size_t group = 0; group * slots_per_group < dense_.size(); ++group) {
     if (group_ticks_[group] <= since) continue;
-    const std::size_t first_block = group * (slots_per_group / slots_per_block);
-    const std::size_t end_block =
-        std::min(first_block + slots_per_group / slots_per_block, block_ticks_.size());
-    for (std::size_t block = first_block; block < end_block; ++block) {
-      if (block_ticks_[block] <= since) continue;
-      const std::size_t end = std::min(size, (block + 1) * slots_per_block);
-      for (std::size_t slot = block * slots_per_block; slot < end; ++slot) {
-        if (ticks_[slot] > since) out.push_back(dense_[slot]);
-      }
+    const std::size_t end_block = std::min((group + 1) * blocks_per_group, block_ticks_.size());
+    for (std::size_t block = group * blocks_per_group; block < end_block; ++block) {
+      blocks[block_count] = static_cast<std::uint32_t>(block);
+      block_count += block_ticks_[block] > since;
     }
   }
+  std::size_t found = out.size();
+  out.resize(found + block_count * slots_per_block);
+  for (std::size_t i = 0; i < block_count; ++i) {
+    const std::size_t first = std::size_t{blocks[i]} * slots_per_block;
+    const std::size_t end = std::min(dense_.size(), first + slots_per_block);
+    for (std::size_t slot = first; slot < end; ++slot) {
+      out[found] = static_cast<std::uint32_t>(slot);
+      found += ticks_[slot] > since;
+    }
+  }
+  out.resize(found);
 }
 
 std::span<const Removal> SparseSet::removed_since(Tick since) const {

@@ -83,9 +83,9 @@ class SparseSet {
   // Tick of the newest write to the component of the entity in `slot`.
   Tick change_tick(std::uint32_t slot) const { return std::max(ticks_[slot], bulk_tick_); }
 
-  // Appends to `out` every entity whose component was written after `since`, each once, in slot
+  // Appends to `out` the slot of every component written after `since`, each once, in slot
   // order.
-  void collect_changed_since(Tick since, std::vector<Entity>& out) const;
+  void collect_changed_since(Tick since, std::vector<std::uint32_t>& out) const;
 
   // Removals after `since`, oldest first.
   std::span<const Removal> removed_since(Tick since) const;
