@@ -20,6 +20,15 @@ Entity EntityRegistry::create() {
   return Entity{index, 0};
 }
 
+void EntityRegistry::create_many(std::size_t count, std::vector<Entity>& out) {
+  out.reserve(out.size() + count);
+  for (; count > 0 && !free_slots_.empty(); --count) out.push_back(create());
+  const auto first = static_cast<std::uint32_t>(slots_.size());
+  slots_.resize(slots_.size() + count, Slot{0, true});
+  for (std::uint32_t index = first; index < slots_.size(); ++index) out.push_back(Entity{index, 0});
+  alive_count_ += count;
+}
+
 bool EntityRegistry::destroy(Entity entity) {
   if (!alive(entity)) return false;
   --alive_count_;

@@ -14,6 +14,8 @@ namespace sg::ecs {
 class EntityRegistry {
  public:
   Entity create();
+  // Appends `count` new handles to `out`, reusing free slots first; grows the slot array once.
+  void create_many(std::size_t count, std::vector<Entity>& out);
   // Returns false (and does nothing) for a stale or null handle.
   bool destroy(Entity entity);
   bool alive(Entity entity) const;

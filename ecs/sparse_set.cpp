@@ -78,6 +78,54 @@ std::uint32_t SparseSet::insert(Entity entity, Tick now) {
   return slot;
 }
 
+void SparseSet::insert_many(std::span<const Entity> entities, Tick now) {
+  std::uint32_t max_index = 0;
+  for (const Entity entity : entities) max_index = std::max(max_index, entity.index);
+  if (!entities.empty() && max_index >= sparse_.size()) sparse_.resize(max_index + std::size_t{1}, npos);
+  const std::size_t first = dense_.size();
+  const std::size_t size = first + entities.size();
+  dense_.insert(dense_.end(), entities.begin(), entities.end());
+  ticks_.resize(size, now);
+  block_ticks_.resize(std::max(block_ticks_.size(), (size + slots_per_block - 1) / slots_per_block));
+  group_ticks_.resize(std::max(group_ticks_.size(), (size + slots_per_group - 1) / slots_per_group));
+  for (std::size_t slot = first; slot < size; ++slot) {
+    sparse_[dense_[slot].index] = static_cast<std::uint32_t>(slot);
+    block_ticks_[slot / slots_per_block] = now;
+  }
+  for (std::size_t group = first / slots_per_group;
+       group < group_ticks_.size() && group * slots_per_group < size; ++group) {
+    group_ticks_[group] = now;
+  }
+  ++layout_version_;
+}
+
+std::vector<bool> SparseSet::erase_many(std::span<const Entity> entities, Tick now) {
+  std::vector<bool> doomed(dense_.size(), false);
+  removals_.reserve(removals_.size() + entities.size());
+  for (const Entity entity : entities) {
+    const std::uint32_t slot = slot_of(entity);
+    if (slot == npos || doomed[slot]) continue;
+    doomed[slot] = true;
+    sparse_[entity.index] = npos;
+    removals_.push_back(Removal{entity, now});
+  }
+  std::size_t kept = 0;
+  for (std::size_t slot = 0; slot < dense_.size(); ++slot) {
+    if (doomed[slot]) continue;
+    dense_[kept] = dense_[slot];
+    ticks_[kept] = ticks_[slot];
+    sparse_[dense_[kept].index] = static_cast<std::uint32_t>(kept);
+    // Ticks move to lower slots, whose summaries must stay upper bounds.
+    block_ticks_[kept / slots_per_block] = std::max(block_ticks_[kept / slots_per_block], ticks_[kept]);
+    group_ticks_[kept / slots_per_group] = std::max(group_ticks_[kept / slots_per_group], ticks_[kept]);
+    ++kept;
+  }
+  dense_.resize(kept);
+  ticks_.resize(kept);
+  ++layout_version_;
+  return doomed;
+}
+
 void SparseSet::erase(std::uint32_t slot, Tick now) {
   const Entity removed = dense_[slot];
   const Entity last = dense_.back();

@@ -93,11 +93,21 @@ class SparseSet {
 
   // Removes the entity's component, recording the removal at `now`. Returns false if absent.
   virtual bool remove(Entity entity, Tick now) = 0;
+  // Same as remove for each entity, without a virtual call per entity.
+  virtual void remove_many(std::span<const Entity> entities, Tick now) = 0;
 
  protected:
   // Adds the entity to the set, marked as changed at `now`; returns its dense slot. The typed
   // pool appends the component itself.
   std::uint32_t insert(Entity entity, Tick now);
+  // Adds entities that are not in the set yet, marked as changed at `now`, growing each array
+  // once. The typed pool appends their components.
+  void insert_many(std::span<const Entity> entities, Tick now);
+  // Removes the entities' components by one sequential pass that keeps the others in order,
+  // recording each removal at `now`; cheaper than swap-removes once a good share of the pool
+  // goes. Returns the mask of removed slots (by old slot); the typed pool compacts its
+  // component array with it.
+  std::vector<bool> erase_many(std::span<const Entity> entities, Tick now);
   // Swap-removes `slot` from the membership arrays, recording the removal at `now`. The typed
   // pool must do the same swap on its component array.
   void erase(std::uint32_t slot, Tick now);

@@ -161,6 +161,43 @@ void create2_raw(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * entity_count);
 }
 
+void create2_bulk_ecs(benchmark::State& state) {
+  for (auto _ : state) {
+    auto world = std::make_unique<World>();
+    benchmark::DoNotOptimize(
+        world->create_many(entity_count, Position{0.0f, 0.0f, 0.0f}, Velocity{1.0f, 0.0f, -1.0f}));
+    free_untimed(state, world);
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+// The bulk form of create2/raw: sized once, filled with copies.
+void create2_bulk_raw(benchmark::State& state) {
+  for (auto _ : state) {
+    auto raw = std::make_unique<RawArrays>();
+    std::vector<std::uint32_t> ids(entity_count);
+    std::iota(ids.begin(), ids.end(), 0u);
+    raw->positions.assign(entity_count, Position{0.0f, 0.0f, 0.0f});
+    raw->velocities.assign(entity_count, Velocity{1.0f, 0.0f, -1.0f});
+    benchmark::DoNotOptimize(ids.data());
+    free_untimed(state, raw);
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+void destroy_bulk_ecs(benchmark::State& state) {
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::vector<Entity> entities;
+    std::unique_ptr<World> world = make_world(&entities);
+    state.ResumeTiming();
+    world->destroy_many(entities);
+    benchmark::DoNotOptimize(world->entity_count());
+    free_untimed(state, world);
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
 void destroy_ecs(benchmark::State& state) {
   for (auto _ : state) {
     state.PauseTiming();
@@ -403,6 +440,9 @@ BENCHMARK(sparse_iterate_ecs)->Name("sparse_iterate/ecs")->Unit(benchmark::kMicr
 BENCHMARK(sparse_iterate_raw)->Name("sparse_iterate/raw")->Unit(benchmark::kMicrosecond);
 BENCHMARK(create2_ecs)->Name("create2/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_raw)->Name("create2/raw")->Unit(benchmark::kMillisecond);
+BENCHMARK(create2_bulk_ecs)->Name("create2_bulk/ecs")->Unit(benchmark::kMillisecond);
+BENCHMARK(create2_bulk_raw)->Name("create2_bulk/raw")->Unit(benchmark::kMillisecond);
+BENCHMARK(destroy_bulk_ecs)->Name("destroy_bulk/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(destroy_ecs)->Name("destroy/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(destroy_raw)->Name("destroy/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(add_remove_ecs)->Name("add_remove/ecs")->Unit(benchmark::kMillisecond);
