@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "ecs/thread_pool.h"
 #include "ecs/world.h"
 
 namespace sg::ecs {
@@ -62,26 +63,19 @@ class Query {
 
   template <typename Fn>
   void for_each(Fn&& fn) {
-    if (watched_ == nullptr && visits_every_slot()) {
-      for_each_slot(fn);
-      return;
-    }
-    const Tick now = world_->tick();
-    if (watched_ != nullptr) {
-      // Collected first, so writes made by the callback cannot change what this pass visits.
-      std::vector<std::uint32_t> changed;
-      watched_->collect_changed_since(since_, changed);
-      const std::span<const Entity> entities = watched_->entities();
-      for (const std::uint32_t slot : changed) visit(entities[slot], watched_, slot, now, fn);
-      return;
-    }
-    const SparseSet* driver = smallest_pool();
-    const std::span<const Entity> entities = driver->entities();
-    for (std::uint32_t slot = 0; slot < entities.size(); ++slot) {
-      visit(entities[slot], driver, slot, now, fn);
-    }
+    run(fn, nullptr);
   }
 
+  // Same visits and change marks as for_each, split into chunks of consecutive entities that
+  // `threads` runs concurrently. The callback is called from several threads at once, each call
+  // for a different entity, so it may write the components it is passed and read anything no
+  // call writes; it must not call the world's writing functions (add, remove, get_mut, create,
+  // destroy) nor record into a CommandBuffer, which are not thread-safe. Visit order within a
+  // chunk is for_each's; across chunks it is unspecified.
+  template <typename Fn>
+  void for_each_parallel(ThreadPool& threads, Fn&& fn) {
+    run(fn, &threads);
+  }
   // Number of entities for_each would visit (does not mark anything changed).
   std::size_t count() {
     std::size_t visited = 0;
@@ -115,6 +109,55 @@ class Query {
     return pool != nullptr ? pool : &empty;
   }
 
+  // Entities per parallel task: large enough that a task's bookkeeping is noise, small enough
+  // that two to a few dozen threads share a million entities evenly.
+  static constexpr std::size_t entities_per_task = 16384;
+
+  // Runs `range(begin, end)` over [0, count): whole on this thread when `threads` is null or
+  // there is too little to share, else in chunks on `threads`.
+  template <typename Range>
+  static void split(ThreadPool* threads, std::size_t count, const Range& range) {
+    if (threads == nullptr || threads->thread_count() == 1 || count <= entities_per_task) {
+      range(std::size_t{0}, count);
+      return;
+    }
+    threads->run((count + entities_per_task - 1) / entities_per_task, [&](std::size_t task) {
+      range(task * entities_per_task, std::min(count, (task + 1) * entities_per_task));
+    });
+  }
+
+  template <typename Fn>
+  void run(Fn& fn, ThreadPool* threads) {
+    const Tick now = world_->tick();
+    if (watched_ == nullptr && visits_every_slot()) {
+      // Every component is visited, so mutable pools take one bulk mark instead of one per slot.
+      [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ((is_mutable<Components> ? std::get<I>(pools_)->mark_all_changed(now) : void()), ...);
+      }
+      (std::index_sequence_for<Components...>{});
+      split(threads, std::get<0>(pools_)->size(),
+            [&](std::size_t begin, std::size_t end) { for_each_slot(fn, begin, end); });
+      return;
+    }
+    if (watched_ != nullptr) {
+      // Collected first, so writes made by the callback cannot change what this pass visits.
+      std::vector<std::uint32_t> changed;
+      watched_->collect_changed_since(since_, changed);
+      const std::span<const Entity> entities = watched_->entities();
+      split(threads, changed.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) visit(entities[changed[i]], watched_, changed[i], now, fn);
+      });
+      return;
+    }
+    const SparseSet* driver = smallest_pool();
+    const std::span<const Entity> entities = driver->entities();
+    split(threads, entities.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t slot = begin; slot < end; ++slot) {
+        visit(entities[slot], driver, static_cast<std::uint32_t>(slot), now, fn);
+      }
+    });
+  }
+
   // True when slot i of every pool is the same entity and nothing is excluded, so the query is
   // a plain loop over parallel arrays.
   bool visits_every_slot() const {
@@ -125,15 +168,13 @@ class Query {
                                   [](const SparseSet* excluded) { return excluded->size() == 0; });
   }
 
-  // Every component is visited, so mutable pools take one bulk mark instead of one per slot;
-  // with no lookups left, the compiler can vectorise the loop like a hand-written one.
+  // With no lookups left, the compiler can vectorise the loop like a hand-written one.
   template <typename Fn>
-  void for_each_slot(Fn& fn) {
+  void for_each_slot(Fn& fn, std::size_t begin, std::size_t end) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-      ((is_mutable<Components> ? std::get<I>(pools_)->mark_all_changed(world_->tick()) : void()), ...);
       const std::tuple data{std::get<I>(pools_)->data()...};
       const std::span<const Entity> entities = std::get<0>(pools_)->entities();
-      for (std::size_t slot = 0; slot < entities.size(); ++slot) {
+      for (std::size_t slot = begin; slot < end; ++slot) {
         if constexpr (std::is_invocable_v<Fn&, Entity, Components&...>) {
           fn(entities[slot], std::get<I>(data)[slot]...);
         } else {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -70,11 +71,13 @@ class SparseSet {
   // changes structurally, so asking every frame is O(1).
   bool has_same_layout(const SparseSet& other) const;
 
-  // Records a write at `now`, the world's current tick.
+  // Records a write at `now`, the world's current tick. Calls for different slots may run
+  // concurrently (a parallel query): the slot tick is the caller's alone, and neighbours share
+  // summaries, which are written atomically (all with the same `now`, so any order is right).
   void mark_changed(std::uint32_t slot, Tick now) {
     ticks_[slot] = now;
-    block_ticks_[slot / slots_per_block] = now;
-    group_ticks_[slot / slots_per_group] = now;
+    std::atomic_ref(block_ticks_[slot / slots_per_block]).store(now, std::memory_order_relaxed);
+    std::atomic_ref(group_ticks_[slot / slots_per_group]).store(now, std::memory_order_relaxed);
   }
 
   // Records a write at `now` to every component in the pool, in O(1).

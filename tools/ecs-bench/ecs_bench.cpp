@@ -8,15 +8,20 @@
 #include <memory>
 #include <numeric>
 #include <random>
+#include <thread>
 #include <vector>
 
+#include "ecs/thread_pool.h"
+#include "ecs/transform.h"
 #include "ecs/world.h"
 
 namespace {
 
 using sg::ecs::Entity;
+using sg::ecs::LocalTransform;
 using sg::ecs::Tick;
 using sg::ecs::World;
+using sg::ecs::WorldTransform;
 
 constexpr std::uint32_t entity_count = 1'000'000;
 constexpr float dt = 1.0f / 60.0f;
@@ -430,6 +435,56 @@ void sparse_iterate_raw(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * sparse_visited);
 }
 
+// World matrices from local transforms, the per-frame work that parallel iteration is for.
+// Arg: 0 serial, 1 split over a thread pool of one thread per core.
+void transform_update_ecs(benchmark::State& state) {
+  World world;
+  world.create_many(entity_count, LocalTransform{glm::vec3{1.0f, 2.0f, 3.0f}}, WorldTransform{});
+  sg::ecs::ThreadPool threads;
+  const auto update = [](const LocalTransform& local, WorldTransform& world_transform) {
+    world_transform.matrix = sg::ecs::to_matrix(local);
+  };
+  for (auto _ : state) {
+    world.advance_tick();
+    auto query = world.query<const LocalTransform, WorldTransform>();
+    if (state.range(0) == 0) {
+      query.for_each(update);
+    } else {
+      query.for_each_parallel(threads, update);
+    }
+    benchmark::ClobberMemory();
+  }
+  state.counters["threads"] = state.range(0) == 0 ? 1 : threads.thread_count();
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+// Arg: 0 one loop, 1 what a user would write by hand: one std::thread per core each frame,
+// each over its share of the arrays.
+void transform_update_raw(benchmark::State& state) {
+  const std::vector<LocalTransform> locals(entity_count, LocalTransform{glm::vec3{1.0f, 2.0f, 3.0f}});
+  std::vector<WorldTransform> worlds(entity_count);
+  const auto update = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) worlds[i].matrix = sg::ecs::to_matrix(locals[i]);
+  };
+  const std::size_t thread_count =
+      state.range(0) == 0 ? 1 : std::max(1u, std::thread::hardware_concurrency());
+  for (auto _ : state) {
+    if (thread_count == 1) {
+      update(0, entity_count);
+    } else {
+      std::vector<std::thread> threads;
+      for (std::size_t t = 1; t < thread_count; ++t) {
+        threads.emplace_back(update, entity_count * t / thread_count, entity_count * (t + 1) / thread_count);
+      }
+      update(0, entity_count / thread_count);
+      for (std::thread& thread : threads) thread.join();
+    }
+    benchmark::ClobberMemory();
+  }
+  state.counters["threads"] = static_cast<double>(thread_count);
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
 }  // namespace
 
 BENCHMARK(iterate2_ecs)->Name("iterate2/ecs")->Unit(benchmark::kMillisecond);
@@ -438,6 +493,8 @@ BENCHMARK(iterate3_ecs)->Name("iterate3/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(iterate3_raw)->Name("iterate3/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(sparse_iterate_ecs)->Name("sparse_iterate/ecs")->Unit(benchmark::kMicrosecond);
 BENCHMARK(sparse_iterate_raw)->Name("sparse_iterate/raw")->Unit(benchmark::kMicrosecond);
+BENCHMARK(transform_update_ecs)->Name("transform_update/ecs")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(transform_update_raw)->Name("transform_update/raw")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_ecs)->Name("create2/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_raw)->Name("create2/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_bulk_ecs)->Name("create2_bulk/ecs")->Unit(benchmark::kMillisecond);
