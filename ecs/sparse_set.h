@@ -40,6 +40,9 @@ struct Removal {
 class SparseSet {
  public:
   static constexpr std::uint32_t npos = UINT32_MAX;
+  // Change summaries cover this many slots each; 16 ticks fill one cache line.
+  static constexpr std::uint32_t slots_per_block = 16;
+  static constexpr std::uint32_t slots_per_group = 256;
 
   SparseSet() = default;
   SparseSet(const SparseSet&) = delete;
@@ -58,27 +61,42 @@ class SparseSet {
     return slot < dense_.size() && dense_[slot] == entity ? slot : npos;
   }
 
-  // Dense slot of `entity`, or npos, for an entity known to be alive (e.g. read from another
+  // Looks up the dense slot, or npos, of an entity known to be alive (e.g. read from another
   // pool of the same world). One read of the sparse array: removal clears the entry and
   // destroying an entity removes it from every pool, so a live entity's index can only point at
-  // its own slot, and the dense entity array (the generation check) stays untouched.
-  std::uint32_t slot_of_live(Entity entity) const {
-    return entity.index < sparse_.size() ? sparse_[entity.index] : npos;
-  }
+  // its own slot, and the dense entity array (the generation check) stays untouched. Plain
+  // pointers, so a loop can keep them in registers; valid until the next structural change.
+  struct LiveLookup {
+    const std::uint32_t* sparse;
+    std::size_t size;
+    std::uint32_t operator()(Entity entity) const {
+      return entity.index < size ? sparse[entity.index] : npos;
+    }
+  };
+  LiveLookup live_lookup() const { return {sparse_.data(), sparse_.size()}; }
+  std::uint32_t slot_of_live(Entity entity) const { return live_lookup()(entity); }
 
   // True if `other` holds exactly the same entities in the same slots, so slot i of one pool
   // and slot i of the other belong to the same entity. The answer is cached until either pool
   // changes structurally, so asking every frame is O(1).
   bool has_same_layout(const SparseSet& other) const;
 
-  // Records a write at `now`, the world's current tick. Calls for different slots may run
-  // concurrently (a parallel query): the slot tick is the caller's alone, and neighbours share
-  // summaries, which are written atomically (all with the same `now`, so any order is right).
-  void mark_changed(std::uint32_t slot, Tick now) {
-    ticks_[slot] = now;
-    std::atomic_ref(block_ticks_[slot / slots_per_block]).store(now, std::memory_order_relaxed);
-    std::atomic_ref(group_ticks_[slot / slots_per_group]).store(now, std::memory_order_relaxed);
-  }
+  // Records a write at `now`, the world's current tick, to the component in a slot. Calls for
+  // different slots may run concurrently (a parallel query): the slot tick is the caller's
+  // alone, and neighbours share summaries, which are written atomically (all with the same
+  // `now`, so any order is right). Plain pointers like LiveLookup, with the same validity.
+  struct ChangeMarker {
+    Tick* ticks;
+    Tick* block_ticks;
+    Tick* group_ticks;
+    void operator()(std::uint32_t slot, Tick now) const {
+      ticks[slot] = now;
+      std::atomic_ref(block_ticks[slot / slots_per_block]).store(now, std::memory_order_relaxed);
+      std::atomic_ref(group_ticks[slot / slots_per_group]).store(now, std::memory_order_relaxed);
+    }
+  };
+  ChangeMarker change_marker() { return {ticks_.data(), block_ticks_.data(), group_ticks_.data()}; }
+  void mark_changed(std::uint32_t slot, Tick now) { change_marker()(slot, now); }
 
   // Records a write at `now` to every component in the pool, in O(1).
   void mark_all_changed(Tick now) { bulk_tick_ = now; }
@@ -116,8 +134,6 @@ class SparseSet {
   void erase(std::uint32_t slot, Tick now);
 
  private:
-  static constexpr std::uint32_t slots_per_block = 16;  // 16 ticks: one cache line
-  static constexpr std::uint32_t slots_per_group = 256;
   struct LayoutComparison {
     const SparseSet* other;
     std::uint64_t version;
