@@ -114,7 +114,8 @@ class SparseSet {
 
   // Removes the entity's component, recording the removal at `now`. Returns false if absent.
   virtual bool remove(Entity entity, Tick now) = 0;
-  // Same as remove for each entity, without a virtual call per entity.
+  // Same as remove for each entity, without a virtual call per entity; handles that are stale,
+  // repeated or without the component are skipped.
   virtual void remove_many(std::span<const Entity> entities, Tick now) = 0;
 
  protected:

@@ -11,16 +11,14 @@ bool World::destroy(Entity entity) {
 }
 
 std::size_t World::destroy_many(std::span<const Entity> entities) {
-  std::vector<Entity> alive_ones;
-  alive_ones.reserve(entities.size());
-  for (const Entity entity : entities) {
-    // Destroying in the registry first also drops repeats: a second copy is stale by then.
-    if (entities_.destroy(entity)) alive_ones.push_back(entity);
-  }
+  // Pools match handles by generation and drop each slot once, so stale and repeated handles
+  // need no filtering before the registry, which then counts only the live ones.
   for (const std::unique_ptr<SparseSet>& set : pools_) {
-    if (set != nullptr) set->remove_many(alive_ones, tick_);
+    if (set != nullptr) set->remove_many(entities, tick_);
   }
-  return alive_ones.size();
+  std::size_t destroyed = 0;
+  for (const Entity entity : entities) destroyed += entities_.destroy(entity) ? 1 : 0;
+  return destroyed;
 }
 
 void World::forget_removals_before(Tick tick) {
