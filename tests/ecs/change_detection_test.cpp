@@ -236,5 +236,17 @@ TEST(ChangeDetection, PartialWritesOverManyTicksMatchAModel) {
   }
 }
 
+TEST(ChangeDetection, AChangeMovedByARemovalIsStillFound) {
+  World world;
+  std::vector<Entity> entities;
+  for (int i = 0; i < 40; ++i) entities.push_back(test::spawn_still(world));
+  const Tick before = world.tick();
+  world.advance_tick();
+  world.get_mut<Position>(entities.back());
+  // Removing the first swaps the last, just written, into a slot whose neighbours were not.
+  world.remove<Position>(entities.front());
+  EXPECT_EQ(changed_positions(world, before), std::vector<Entity>{entities.back()});
+}
+
 }  // namespace
 }  // namespace sg::ecs

@@ -128,7 +128,9 @@ TEST(Query, AConstQueryOfAnUnknownComponentVisitsNothing) {
 TEST(Query, AReusedIndexDoesNotInheritTheDestroyedEntitysComponents) {
   World world;
   const Entity old = test::spawn_moving(world);
-  test::spawn_moving(world);  // keeps the pools non-empty and their order different
+  test::spawn_moving(world);  // moves into old's Velocity slot when old is destroyed
+  // More Velocities than Positions, so the query walks Positions and looks Velocities up.
+  for (int i = 0; i < 3; ++i) world.add<Velocity>(world.create());
   world.destroy(old);
   const Entity reused = world.create();
   ASSERT_EQ(reused.index, old.index);
