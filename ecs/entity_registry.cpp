@@ -39,6 +39,13 @@ bool EntityRegistry::destroy(Entity entity) {
   return true;
 }
 
+std::size_t EntityRegistry::destroy_many(std::span<const Entity> entities) {
+  free_slots_.reserve(free_slots_.size() + entities.size());
+  std::size_t destroyed = 0;
+  for (const Entity entity : entities) destroyed += destroy(entity) ? 1 : 0;
+  return destroyed;
+}
+
 bool EntityRegistry::alive(Entity entity) const {
   return entity.index < slots_.size() && slots_[entity.index].alive &&
          slots_[entity.index].generation == entity.generation;

@@ -16,9 +16,7 @@ std::size_t World::destroy_many(std::span<const Entity> entities) {
   for (const std::unique_ptr<SparseSet>& set : pools_) {
     if (set != nullptr) set->remove_many(entities, tick_);
   }
-  std::size_t destroyed = 0;
-  for (const Entity entity : entities) destroyed += entities_.destroy(entity) ? 1 : 0;
-  return destroyed;
+  return entities_.destroy_many(entities);
 }
 
 void World::forget_removals_before(Tick tick) {
