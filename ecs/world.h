@@ -38,6 +38,8 @@ class World {
   // order, so later queries over exactly these components take the plain-loop path.
   template <typename... Components>
   std::vector<Entity> create_many(std::size_t count, const Components&... components) {
+    static_assert(((count_of<Components, Components...> == 1) && ...),
+                  "create_many takes each component type once");
     std::vector<Entity> created;
     entities_.create_many(count, created);
     (pool<Components>().emplace_many(created, tick_, components), ...);
@@ -143,6 +145,9 @@ class World {
  private:
   template <typename... Components>
   friend class Query;
+
+  template <typename T, typename... Types>
+  static constexpr std::size_t count_of = (std::size_t{std::is_same_v<T, Types>} + ... + 0);
 
   template <typename T>
   ComponentPool<T>& pool() {
