@@ -42,7 +42,7 @@ class ComponentPool final : public SparseSet {
 
   void remove_many(std::span<const Entity> entities, Tick now) override {
     if (size() == 0) return;
-    // Below a few percent of the pool, swap-removes touch less memory than a full pass.
+    // Below 1/16 of the pool, swap-removes touch less memory than a full pass.
     if (entities.size() * 16 < size()) {
       for (const Entity entity : entities) remove(entity, now);
       return;

@@ -28,7 +28,8 @@ namespace sg::ecs {
 // later (see SparseSet).
 //
 // Do not add or remove components or entities inside the callback (use a CommandBuffer);
-// get_mut on any entity is fine.
+// get_mut on any entity is fine. Queries cache which pools share a layout, so even a const World
+// must not be queried from two threads at once: split one query with for_each_parallel instead.
 template <typename... Components>
 class Query {
   static_assert(sizeof...(Components) > 0, "a query needs at least one component");
@@ -76,6 +77,7 @@ class Query {
   void for_each_parallel(ThreadPool& threads, Fn&& fn) {
     run(fn, &threads);
   }
+
   // Number of entities for_each would visit (does not mark anything changed).
   std::size_t count() {
     std::size_t visited = 0;

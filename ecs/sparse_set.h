@@ -21,17 +21,19 @@ struct Removal {
 // dense slot, and the history of changes and removals.
 //
 // Membership is a classic sparse set: `sparse_[entity.index]` points into the dense arrays, and
-// the dense entity array is checked on every lookup, so stale handles never match. Removal swaps
-// the last element into the hole, which keeps the dense arrays contiguous and every operation
-// O(1).
+// the dense entity array is checked on every lookup by handle, so stale handles never match
+// (queries, whose entities are known to be alive, skip that check: see LiveLookup). Removal
+// swaps the last element into the hole and clears the removed entity's sparse entry, which
+// keeps the dense arrays contiguous and every operation O(1).
 //
 // Change history is a tick per slot, the tick of the component's newest write, plus two levels
 // of summaries: the newest tick in each block of 16 slots and in each group of 256. Ticks only
 // grow, so a write is three plain stores (no branch, no log, nothing to compact later, so no
-// tick ever pays for older ones). Reading "changed since T" skips every group and block whose
-// summary is not after T and reads only the slot ticks of the blocks that are: for scattered
-// changes that is one cache line per change plus 1/16 of the pool's size in summaries read
-// sequentially. Summaries may be stale high after a removal moves a slot; readers check slots.
+// tick ever pays for older ones). Reading "changed since T" reads every group summary, the
+// block summaries of groups written after T and the slot ticks of blocks written after T: for
+// scattered changes about one cache line per change, plus summaries read sequentially (1/256 of
+// the pool's size, up to 1/16 when changes touch every group). Summaries may be stale high
+// after a removal moves a slot; readers check slots.
 //
 // A query that writes every component of the pool records that as one bulk mark instead of a
 // store per component: every component present then changed at `bulk_tick_`, which counts as
