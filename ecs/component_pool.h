@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -16,7 +18,7 @@ class ComponentPool final : public SparseSet {
   T& emplace(Entity entity, Tick now, Args&&... args) {
     if (const std::uint32_t slot = slot_of(entity); slot != npos) {
       components_[slot] = T{std::forward<Args>(args)...};
-      mark_changed(slot, begin_changes(now));
+      mark_changed(slot, now);
       return components_[slot];
     }
     insert(entity, now);
@@ -30,6 +32,27 @@ class ComponentPool final : public SparseSet {
     components_.pop_back();
     erase(slot, now);
     return true;
+  }
+
+  // Adds a copy of `value` for each entity; none of them may have the component yet.
+  void emplace_many(std::span<const Entity> entities, Tick now, const T& value) {
+    insert_many(entities, now);
+    components_.insert(components_.end(), entities.size(), value);
+  }
+
+  void remove_many(std::span<const Entity> entities, Tick now) override {
+    if (size() == 0) return;
+    // Below 1/16 of the pool, swap-removes touch less memory than a full pass.
+    if (entities.size() * 16 < size()) {
+      for (const Entity entity : entities) remove(entity, now);
+      return;
+    }
+    const std::vector<bool> doomed = erase_many(entities, now);
+    std::size_t kept = 0;
+    for (std::size_t slot = 0; slot < components_.size(); ++slot) {
+      if (!doomed[slot]) components_[kept++] = std::move(components_[slot]);
+    }
+    components_.erase(components_.begin() + static_cast<std::ptrdiff_t>(kept), components_.end());
   }
 
   T* data() { return components_.data(); }

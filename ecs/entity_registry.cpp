@@ -20,6 +20,15 @@ Entity EntityRegistry::create() {
   return Entity{index, 0};
 }
 
+void EntityRegistry::create_many(std::size_t count, std::vector<Entity>& out) {
+  out.reserve(out.size() + count);
+  for (; count > 0 && !free_slots_.empty(); --count) out.push_back(create());
+  const auto first = static_cast<std::uint32_t>(slots_.size());
+  slots_.resize(slots_.size() + count, Slot{0, true});
+  for (std::uint32_t index = first; index < slots_.size(); ++index) out.push_back(Entity{index, 0});
+  alive_count_ += count;
+}
+
 bool EntityRegistry::destroy(Entity entity) {
   if (!alive(entity)) return false;
   --alive_count_;
@@ -28,6 +37,13 @@ bool EntityRegistry::destroy(Entity entity) {
   // Bumping now is what makes every old handle stale.
   if (++slot.generation != retired_generation) free_slots_.push_back(entity.index);
   return true;
+}
+
+std::size_t EntityRegistry::destroy_many(std::span<const Entity> entities) {
+  free_slots_.reserve(free_slots_.size() + entities.size());
+  std::size_t destroyed = 0;
+  for (const Entity entity : entities) destroyed += destroy(entity) ? 1 : 0;
+  return destroyed;
 }
 
 bool EntityRegistry::alive(Entity entity) const {

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "ecs/entity.h"
@@ -14,8 +15,12 @@ namespace sg::ecs {
 class EntityRegistry {
  public:
   Entity create();
+  // Appends `count` new handles to `out`, reusing free slots first; grows the slot array once.
+  void create_many(std::size_t count, std::vector<Entity>& out);
   // Returns false (and does nothing) for a stale or null handle.
   bool destroy(Entity entity);
+  // Same as destroy for each handle, growing the free list once; returns how many were alive.
+  std::size_t destroy_many(std::span<const Entity> entities);
   bool alive(Entity entity) const;
   std::size_t alive_count() const { return alive_count_; }
 

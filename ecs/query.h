@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "ecs/thread_pool.h"
 #include "ecs/world.h"
 
 namespace sg::ecs {
@@ -20,12 +21,15 @@ namespace sg::ecs {
 //
 // A `const` component is read-only; every other listed component is marked changed for each
 // entity visited. The callback takes the components in the listed order, optionally preceded
-// by the Entity. Iteration walks the dense array of the smallest pool and looks the entity up in
-// the others (a sequential hit when pools share order), so the loop is fully inlined: no
-// virtual call per entity.
+// by the Entity. Iteration walks the dense array of the smallest pool and pays one read of each
+// other pool's sparse array per entity (no generation check: the entities come from a pool, so
+// they are alive); the loop is fully inlined, no virtual call per entity. Change bookkeeping is
+// touched only for the non-const components: three stores per entity, with no log to compact
+// later (see SparseSet).
 //
 // Do not add or remove components or entities inside the callback (use a CommandBuffer);
-// get_mut on any entity is fine.
+// get_mut on any entity is fine. Queries cache which pools share a layout, so even a const World
+// must not be queried from two threads at once: split one query with for_each_parallel instead.
 template <typename... Components>
 class Query {
   static_assert(sizeof...(Components) > 0, "a query needs at least one component");
@@ -60,29 +64,18 @@ class Query {
 
   template <typename Fn>
   void for_each(Fn&& fn) {
-    if (watched_ == nullptr && visits_every_slot()) {
-      for_each_slot(fn);
-      return;
-    }
-    // Opening this tick's change segments once here keeps mark_changed to one compare.
-    std::array<std::uint64_t, sizeof...(Components)> segment_begins{};
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-      ((segment_begins[I] = is_mutable<Components> ? std::get<I>(pools_)->begin_changes(world_->tick()) : 0),
-       ...);
-    }
-    (std::index_sequence_for<Components...>{});
-    if (watched_ != nullptr) {
-      // Collected first because writes inside the callback append to the log being read.
-      std::vector<Entity> changed;
-      watched_->collect_changed_since(since_, changed);
-      for (const Entity entity : changed) visit(entity, SparseSet::npos, segment_begins, fn);
-      return;
-    }
-    const SparseSet* driver = smallest_pool();
-    const std::span<const Entity> entities = driver->entities();
-    for (std::uint32_t slot = 0; slot < entities.size(); ++slot) {
-      visit(entities[slot], slot, segment_begins, fn);
-    }
+    run(fn, nullptr);
+  }
+
+  // Same visits and change marks as for_each, split into chunks of consecutive entities that
+  // `threads` runs concurrently. The callback is called from several threads at once, each call
+  // for a different entity, so it may write the components it is passed and read anything no
+  // call writes; it must not call the world's writing functions (add, remove, get_mut, create,
+  // destroy) nor record into a CommandBuffer, which are not thread-safe. Visit order within a
+  // chunk is for_each's; across chunks it is unspecified.
+  template <typename Fn>
+  void for_each_parallel(ThreadPool& threads, Fn&& fn) {
+    run(fn, &threads);
   }
 
   // Number of entities for_each would visit (does not mark anything changed).
@@ -118,6 +111,55 @@ class Query {
     return pool != nullptr ? pool : &empty;
   }
 
+  // Entities per parallel task: large enough that a task's bookkeeping is noise, small enough
+  // that two to a few dozen threads share a million entities evenly.
+  static constexpr std::size_t entities_per_task = 16384;
+
+  // Runs `range(begin, end)` over [0, count): whole on this thread when `threads` is null or
+  // there is too little to share, else in chunks on `threads`.
+  template <typename Range>
+  static void split(ThreadPool* threads, std::size_t count, const Range& range) {
+    if (threads == nullptr || threads->thread_count() == 1 || count <= entities_per_task) {
+      range(std::size_t{0}, count);
+      return;
+    }
+    threads->run((count + entities_per_task - 1) / entities_per_task, [&](std::size_t task) {
+      range(task * entities_per_task, std::min(count, (task + 1) * entities_per_task));
+    });
+  }
+
+  template <typename Fn>
+  void run(Fn& fn, ThreadPool* threads) {
+    const Tick now = world_->tick();
+    if (watched_ == nullptr && visits_every_slot()) {
+      // Every component is visited, so mutable pools take one bulk mark instead of one per slot.
+      [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ((is_mutable<Components> ? std::get<I>(pools_)->mark_all_changed(now) : void()), ...);
+      }
+      (std::index_sequence_for<Components...>{});
+      split(threads, std::get<0>(pools_)->size(),
+            [&](std::size_t begin, std::size_t end) { for_each_slot(fn, begin, end); });
+      return;
+    }
+    if (watched_ != nullptr) {
+      // Collected first, so writes made by the callback cannot change what this pass visits.
+      std::vector<std::uint32_t> changed;
+      watched_->collect_changed_since(since_, changed);
+      split(threads, changed.size(), [&](std::size_t begin, std::size_t end) {
+        visit_range(
+            watched_, [&](std::size_t i) { return changed[i]; }, begin, end, now, fn,
+            std::index_sequence_for<Components...>{});
+      });
+      return;
+    }
+    const SparseSet* driver = smallest_pool();
+    split(threads, driver->size(), [&](std::size_t begin, std::size_t end) {
+      visit_range(
+          driver, [](std::size_t i) { return static_cast<std::uint32_t>(i); }, begin, end, now, fn,
+          std::index_sequence_for<Components...>{});
+    });
+  }
+
   // True when slot i of every pool is the same entity and nothing is excluded, so the query is
   // a plain loop over parallel arrays.
   bool visits_every_slot() const {
@@ -128,15 +170,13 @@ class Query {
                                   [](const SparseSet* excluded) { return excluded->size() == 0; });
   }
 
-  // Every component is visited, so mutable pools take one bulk mark instead of one per slot;
-  // with no lookups left, the compiler can vectorise the loop like a hand-written one.
+  // With no lookups left, the compiler can vectorise the loop like a hand-written one.
   template <typename Fn>
-  void for_each_slot(Fn& fn) {
+  void for_each_slot(Fn& fn, std::size_t begin, std::size_t end) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
-      ((is_mutable<Components> ? std::get<I>(pools_)->mark_all_changed(world_->tick()) : void()), ...);
       const std::tuple data{std::get<I>(pools_)->data()...};
       const std::span<const Entity> entities = std::get<0>(pools_)->entities();
-      for (std::size_t slot = 0; slot < entities.size(); ++slot) {
+      for (std::size_t slot = begin; slot < end; ++slot) {
         if constexpr (std::is_invocable_v<Fn&, Entity, Components&...>) {
           fn(entities[slot], std::get<I>(data)[slot]...);
         } else {
@@ -157,26 +197,72 @@ class Query {
     return smallest;
   }
 
-  template <typename Fn>
-  void visit(Entity entity, std::uint32_t hint,
-             const std::array<std::uint64_t, sizeof...(Components)>& segment_begins, Fn& fn) {
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
+  // A lookup is two dependent loads, the sparse entry and then the component, which the
+  // hardware prefetcher cannot follow; so the loop requests the sparse entries of the entity
+  // 2 * prefetch_distance ahead and the components (and change ticks) of the one
+  // prefetch_distance ahead.
+  static constexpr std::size_t prefetch_distance = 32;
+
+  static void prefetch(const void* address) { __builtin_prefetch(address); }
+  static void prefetch_for_write(const void* address) { __builtin_prefetch(address, 1); }
+
+  // Visits, for each i in [begin, end), the entity in slot slot_at(i) of `driver` if it has
+  // every component and none of the excluded ones. Every array is reached through a pointer
+  // held in a local, so the loop body is loads and stores only.
+  template <typename Fn, typename SlotAt, std::size_t... I>
+  void visit_range(const SparseSet* driver, const SlotAt& slot_at, std::size_t begin, std::size_t end,
+                   Tick now, Fn& fn, std::index_sequence<I...>) {
+    const std::span<const Entity> entities = driver->entities();
+    const std::array lookups{std::get<I>(pools_)->live_lookup()...};
+    const std::array is_driver{(std::get<I>(pools_) == driver)...};
+    const std::tuple data{std::get<I>(pools_)->data()...};
+    const std::array markers{std::get<I>(pools_)->change_marker()...};
+    std::vector<SparseSet::LiveLookup> excluded;
+    for (const SparseSet* pool : excluded_) excluded.push_back(pool->live_lookup());
+    const auto prefetch_sparse = [&](std::size_t pool, Entity entity) {
+      if (!is_driver[pool] && entity.index < lookups[pool].size)
+        prefetch(&lookups[pool].sparse[entity.index]);
+    };
+    const auto prefetch_component = [&]<std::size_t J>(std::integral_constant<std::size_t, J>,
+                                                       std::uint32_t slot) {
+      if (slot == SparseSet::npos) return;
+      if constexpr (is_mutable<std::tuple_element_t<J, std::tuple<Components...>>>) {
+        prefetch_for_write(&std::get<J>(data)[slot]);
+        prefetch_for_write(&markers[J].ticks[slot]);
+      } else {
+        prefetch(&std::get<J>(data)[slot]);
+      }
+    };
+    for (std::size_t i = begin; i < end; ++i) {
+      if (i + 2 * prefetch_distance < end) {
+        const Entity ahead = entities[slot_at(i + 2 * prefetch_distance)];
+        (prefetch_sparse(I, ahead), ...);
+      }
+      if (i + prefetch_distance < end) {
+        const std::uint32_t ahead_slot = slot_at(i + prefetch_distance);
+        const Entity ahead = entities[ahead_slot];
+        (prefetch_component(std::integral_constant<std::size_t, I>{},
+                            is_driver[I] ? ahead_slot : lookups[I](ahead)),
+         ...);
+      }
+      const std::uint32_t driver_slot = slot_at(i);
+      const Entity entity = entities[driver_slot];
       std::array<std::uint32_t, sizeof...(Components)> slots{};
       const bool has_all =
-          (((slots[I] = std::get<I>(pools_)->slot_of(entity, hint)) != SparseSet::npos) && ...);
-      if (!has_all) return;
-      for (const SparseSet* excluded : excluded_) {
-        if (excluded->contains(entity)) return;
+          (((slots[I] = is_driver[I] ? driver_slot : lookups[I](entity)) != SparseSet::npos) && ...);
+      if (!has_all) continue;
+      if (std::any_of(excluded.begin(), excluded.end(), [&](const SparseSet::LiveLookup& lookup) {
+            return lookup(entity) != SparseSet::npos;
+          })) {
+        continue;
       }
-      ((is_mutable<Components> ? std::get<I>(pools_)->mark_changed(slots[I], segment_begins[I]) : void()),
-       ...);
+      ((is_mutable<Components> ? markers[I](slots[I], now) : void()), ...);
       if constexpr (std::is_invocable_v<Fn&, Entity, Components&...>) {
-        fn(entity, std::get<I>(pools_)->at(slots[I])...);
+        fn(entity, std::get<I>(data)[slots[I]]...);
       } else {
-        fn(std::get<I>(pools_)->at(slots[I])...);
+        fn(std::get<I>(data)[slots[I]]...);
       }
     }
-    (std::index_sequence_for<Components...>{});
   }
 
   const World* world_;

@@ -4,12 +4,6 @@
 
 namespace sg::ecs {
 
-namespace {
-// Small pools are not worth compacting often; this also keeps tiny pools from compacting on
-// every tick.
-constexpr std::size_t min_log_size_before_compaction = 1024;
-}  // namespace
-
 bool SparseSet::has_same_layout(const SparseSet& other) const {
   if (&other == this) return true;
   if (other.dense_.size() != dense_.size()) return false;
@@ -25,69 +19,36 @@ bool SparseSet::has_same_layout(const SparseSet& other) const {
   return known->same;
 }
 
-std::uint64_t SparseSet::begin_changes(Tick now) {
-  if (!segments_.empty() && segments_.back().tick == now) return segments_.back().begin;
-  if (change_log_.size() > 2 * dense_.size() + min_log_size_before_compaction) {
-    compact_change_log();
-  }
-  segments_.push_back(Segment{now, end_of_log()});
-  return segments_.back().begin;
-}
-
-void SparseSet::mark_all_changed(Tick now) {
-  bulk_tick_ = now;
-  log_base_ = end_of_log();
-  change_log_.clear();
-  segments_.clear();
-}
-
-Tick SparseSet::change_tick(std::uint32_t slot) const {
-  const std::uint64_t position = log_position_[slot];
-  if (position < log_base_) return bulk_tick_;
-  const auto after =
-      std::upper_bound(segments_.begin(), segments_.end(), position,
-                       [](std::uint64_t value, const Segment& segment) { return value < segment.begin; });
-  return std::prev(after)->tick;
-}
-
-bool SparseSet::is_newest_entry(std::uint64_t position) const {
-  const std::uint32_t slot = slot_of(change_log_[position - log_base_]);
-  return slot != npos && log_position_[slot] == position;
-}
-
-void SparseSet::collect_changed_since(Tick since, std::vector<Entity>& out) const {
+void SparseSet::collect_changed_since(Tick since, std::vector<std::uint32_t>& out) const {
   if (bulk_tick_ > since) {
     // Everything present at the bulk mark changed then, and everything added since is newer.
-    out.insert(out.end(), dense_.begin(), dense_.end());
+    for (std::uint32_t slot = 0; slot < dense_.size(); ++slot) out.push_back(slot);
     return;
   }
-  const auto first =
-      std::upper_bound(segments_.begin(), segments_.end(), since,
-                       [](Tick value, const Segment& segment) { return value < segment.tick; });
-  if (first == segments_.end()) return;
-  for (auto position = first->begin; position < end_of_log(); ++position) {
-    if (is_newest_entry(position)) out.push_back(change_log_[position - log_base_]);
-  }
-}
-
-void SparseSet::compact_change_log() {
-  std::size_t kept = 0;
-  std::size_t segments_kept = 0;
-  for (std::size_t s = 0; s < segments_.size(); ++s) {
-    const std::uint64_t end = s + 1 < segments_.size() ? segments_[s + 1].begin : end_of_log();
-    const std::uint64_t new_begin = log_base_ + kept;
-    for (std::uint64_t position = segments_[s].begin; position < end; ++position) {
-      if (!is_newest_entry(position)) continue;
-      const Entity entity = change_log_[position - log_base_];
-      log_position_[slot_of(entity)] = log_base_ + kept;
-      change_log_[kept++] = entity;
-    }
-    if (log_base_ + kept != new_begin) {
-      segments_[segments_kept++] = Segment{segments_[s].tick, new_begin};
+  // Scattered changes make the summary tests unpredictable, so both passes append
+  // unconditionally and advance only on a match instead of branching.
+  std::vector<std::uint32_t> blocks(block_ticks_.size());
+  std::size_t block_count = 0;
+  const std::size_t blocks_per_group = slots_per_group / slots_per_block;
+  for (std::size_t group = 0; group * slots_per_group < dense_.size(); ++group) {
+    if (group_ticks_[group] <= since) continue;
+    const std::size_t end_block = std::min((group + 1) * blocks_per_group, block_ticks_.size());
+    for (std::size_t block = group * blocks_per_group; block < end_block; ++block) {
+      blocks[block_count] = static_cast<std::uint32_t>(block);
+      block_count += block_ticks_[block] > since;
     }
   }
-  change_log_.resize(kept);
-  segments_.resize(segments_kept);
+  std::size_t found = out.size();
+  out.resize(found + block_count * slots_per_block);
+  for (std::size_t i = 0; i < block_count; ++i) {
+    const std::size_t first = std::size_t{blocks[i]} * slots_per_block;
+    const std::size_t end = std::min(dense_.size(), first + slots_per_block);
+    for (std::size_t slot = first; slot < end; ++slot) {
+      out[found] = static_cast<std::uint32_t>(slot);
+      found += ticks_[slot] > since;
+    }
+  }
+  out.resize(found);
 }
 
 std::span<const Removal> SparseSet::removed_since(Tick since) const {
@@ -106,24 +67,77 @@ void SparseSet::forget_removals_before(Tick tick) {
 
 std::uint32_t SparseSet::insert(Entity entity, Tick now) {
   if (entity.index >= sparse_.size()) sparse_.resize(entity.index + std::size_t{1}, npos);
-  begin_changes(now);
   const auto slot = static_cast<std::uint32_t>(dense_.size());
   sparse_[entity.index] = slot;
   dense_.push_back(entity);
-  log_position_.push_back(end_of_log());
-  change_log_.push_back(entity);
+  ticks_.push_back(now);
+  if (slot % slots_per_block == 0 && slot / slots_per_block == block_ticks_.size()) block_ticks_.push_back(0);
+  if (slot % slots_per_group == 0 && slot / slots_per_group == group_ticks_.size()) group_ticks_.push_back(0);
+  mark_changed(slot, now);
   ++layout_version_;
   return slot;
+}
+
+void SparseSet::insert_many(std::span<const Entity> entities, Tick now) {
+  std::uint32_t max_index = 0;
+  for (const Entity entity : entities) max_index = std::max(max_index, entity.index);
+  if (!entities.empty() && max_index >= sparse_.size()) sparse_.resize(max_index + std::size_t{1}, npos);
+  const std::size_t first = dense_.size();
+  const std::size_t size = first + entities.size();
+  dense_.insert(dense_.end(), entities.begin(), entities.end());
+  ticks_.resize(size, now);
+  block_ticks_.resize(std::max(block_ticks_.size(), (size + slots_per_block - 1) / slots_per_block));
+  group_ticks_.resize(std::max(group_ticks_.size(), (size + slots_per_group - 1) / slots_per_group));
+  for (std::size_t slot = first; slot < size; ++slot) {
+    sparse_[dense_[slot].index] = static_cast<std::uint32_t>(slot);
+    block_ticks_[slot / slots_per_block] = now;
+  }
+  for (std::size_t group = first / slots_per_group;
+       group < group_ticks_.size() && group * slots_per_group < size; ++group) {
+    group_ticks_[group] = now;
+  }
+  ++layout_version_;
+}
+
+std::vector<bool> SparseSet::erase_many(std::span<const Entity> entities, Tick now) {
+  std::vector<bool> doomed(dense_.size(), false);
+  removals_.reserve(removals_.size() + entities.size());
+  for (const Entity entity : entities) {
+    const std::uint32_t slot = slot_of(entity);
+    if (slot == npos || doomed[slot]) continue;
+    doomed[slot] = true;
+    sparse_[entity.index] = npos;
+    removals_.push_back(Removal{entity, now});
+  }
+  std::size_t kept = 0;
+  for (std::size_t slot = 0; slot < dense_.size(); ++slot) {
+    if (doomed[slot]) continue;
+    dense_[kept] = dense_[slot];
+    ticks_[kept] = ticks_[slot];
+    sparse_[dense_[kept].index] = static_cast<std::uint32_t>(kept);
+    // Ticks move to lower slots, whose summaries must stay upper bounds.
+    block_ticks_[kept / slots_per_block] = std::max(block_ticks_[kept / slots_per_block], ticks_[kept]);
+    group_ticks_[kept / slots_per_group] = std::max(group_ticks_[kept / slots_per_group], ticks_[kept]);
+    ++kept;
+  }
+  dense_.resize(kept);
+  ticks_.resize(kept);
+  ++layout_version_;
+  return doomed;
 }
 
 void SparseSet::erase(std::uint32_t slot, Tick now) {
   const Entity removed = dense_[slot];
   const Entity last = dense_.back();
   dense_[slot] = last;
-  log_position_[slot] = log_position_.back();
+  ticks_[slot] = ticks_.back();
+  // The moved tick may be older than the hole's block: summaries only need to be upper bounds.
+  block_ticks_[slot / slots_per_block] = std::max(block_ticks_[slot / slots_per_block], ticks_[slot]);
+  group_ticks_[slot / slots_per_group] = std::max(group_ticks_[slot / slots_per_group], ticks_[slot]);
   sparse_[last.index] = slot;
+  sparse_[removed.index] = npos;
   dense_.pop_back();
-  log_position_.pop_back();
+  ticks_.pop_back();
   removals_.push_back(Removal{removed, now});
   ++layout_version_;
 }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -19,25 +21,30 @@ struct Removal {
 // dense slot, and the history of changes and removals.
 //
 // Membership is a classic sparse set: `sparse_[entity.index]` points into the dense arrays, and
-// the dense entity array is checked on every lookup, so stale handles never match. Removal swaps
-// the last element into the hole, which keeps the dense arrays contiguous and every operation
-// O(1).
+// the dense entity array is checked on every lookup by handle, so stale handles never match
+// (queries, whose entities are known to be alive, skip that check: see LiveLookup). Removal
+// swaps the last element into the hole and clears the removed entity's sparse entry, which
+// keeps the dense arrays contiguous and every operation O(1).
 //
-// Change history is a log of entities in tick order, split into one segment per tick that saw a
-// write. Each component remembers where its newest log entry is (`log_position_`); older entries
-// for the same component are simply ignored, so a write costs one compare and, for the first
-// write in a tick, one append. Reading "changed since T" visits only the segments after T, i.e.
-// it costs the number of changes, not the number of components. The log is compacted (stale
-// entries dropped) whenever it grows past twice the pool size, which keeps memory bounded with
-// amortised O(1) cost per write.
+// Change history is a tick per slot, the tick of the component's newest write, plus two levels
+// of summaries: the newest tick in each block of 16 slots and in each group of 256. Ticks only
+// grow, so a write is three plain stores (no branch, no log, nothing to compact later, so no
+// tick ever pays for older ones). Reading "changed since T" reads every group summary, the
+// block summaries of groups written after T and the slot ticks of blocks written after T: for
+// scattered changes about one cache line per change, plus summaries read sequentially (1/256 of
+// the pool's size, up to 1/16 when changes touch every group). Summaries may be stale high
+// after a removal moves a slot; readers check slots.
 //
 // A query that writes every component of the pool records that as one bulk mark instead of a
-// log entry per component: every component present then changed at `bulk_tick_`, so the whole
-// log before it is dropped (log positions are global counters; those before `log_base_` mean
-// "changed at bulk_tick_"). This keeps a full per-frame update as cheap as a plain loop.
+// store per component: every component present then changed at `bulk_tick_`, which counts as
+// the tick of any slot whose own tick is older. This keeps a full per-frame update as cheap as
+// a plain loop.
 class SparseSet {
  public:
   static constexpr std::uint32_t npos = UINT32_MAX;
+  // Change summaries cover this many slots each; 16 ticks fill one cache line.
+  static constexpr std::uint32_t slots_per_block = 16;
+  static constexpr std::uint32_t slots_per_group = 256;
 
   SparseSet() = default;
   SparseSet(const SparseSet&) = delete;
@@ -56,40 +63,52 @@ class SparseSet {
     return slot < dense_.size() && dense_[slot] == entity ? slot : npos;
   }
 
-  // Same as slot_of, but first tries `hint`: when pools hold the same entities in the same order
-  // (the common case for components added together) this is a sequential read instead of a
-  // random one.
-  std::uint32_t slot_of(Entity entity, std::uint32_t hint) const {
-    if (hint < dense_.size() && dense_[hint] == entity) return hint;
-    return slot_of(entity);
-  }
+  // Looks up the dense slot, or npos, of an entity known to be alive (e.g. read from another
+  // pool of the same world). One read of the sparse array: removal clears the entry and
+  // destroying an entity removes it from every pool, so a live entity's index can only point at
+  // its own slot, and the dense entity array (the generation check) stays untouched. Plain
+  // pointers, so a loop can keep them in registers; valid until the next structural change.
+  struct LiveLookup {
+    const std::uint32_t* sparse;
+    std::size_t size;
+    std::uint32_t operator()(Entity entity) const {
+      return entity.index < size ? sparse[entity.index] : npos;
+    }
+  };
+  LiveLookup live_lookup() const { return {sparse_.data(), sparse_.size()}; }
+  std::uint32_t slot_of_live(Entity entity) const { return live_lookup()(entity); }
 
   // True if `other` holds exactly the same entities in the same slots, so slot i of one pool
   // and slot i of the other belong to the same entity. The answer is cached until either pool
   // changes structurally, so asking every frame is O(1).
   bool has_same_layout(const SparseSet& other) const;
 
-  // Opens the change segment of tick `now` if needed and returns the log position where it
-  // starts. A component whose newest entry is before that position has not been written yet in
-  // this tick. Call once before a batch of mark_changed calls with the same `now`.
-  std::uint64_t begin_changes(Tick now);
-
-  // Records a write at the tick `segment_begin` was opened for.
-  void mark_changed(std::uint32_t slot, std::uint64_t segment_begin) {
-    if (log_position_[slot] >= segment_begin) return;
-    log_position_[slot] = log_base_ + change_log_.size();
-    change_log_.push_back(dense_[slot]);
-  }
+  // Records a write at `now`, the world's current tick, to the component in a slot. Calls for
+  // different slots may run concurrently (a parallel query): the slot tick is the caller's
+  // alone, and neighbours share summaries, which are written atomically (all with the same
+  // `now`, so any order is right). Plain pointers like LiveLookup, with the same validity.
+  struct ChangeMarker {
+    Tick* ticks;
+    Tick* block_ticks;
+    Tick* group_ticks;
+    void operator()(std::uint32_t slot, Tick now) const {
+      ticks[slot] = now;
+      std::atomic_ref(block_ticks[slot / slots_per_block]).store(now, std::memory_order_relaxed);
+      std::atomic_ref(group_ticks[slot / slots_per_group]).store(now, std::memory_order_relaxed);
+    }
+  };
+  ChangeMarker change_marker() { return {ticks_.data(), block_ticks_.data(), group_ticks_.data()}; }
+  void mark_changed(std::uint32_t slot, Tick now) { change_marker()(slot, now); }
 
   // Records a write at `now` to every component in the pool, in O(1).
-  void mark_all_changed(Tick now);
+  void mark_all_changed(Tick now) { bulk_tick_ = now; }
 
   // Tick of the newest write to the component of the entity in `slot`.
-  Tick change_tick(std::uint32_t slot) const;
+  Tick change_tick(std::uint32_t slot) const { return std::max(ticks_[slot], bulk_tick_); }
 
-  // Appends to `out` every entity whose component was written after `since`, each once, in the
-  // order of their newest write.
-  void collect_changed_since(Tick since, std::vector<Entity>& out) const;
+  // Appends to `out` the slot of every component written after `since`, each once, in slot
+  // order.
+  void collect_changed_since(Tick since, std::vector<std::uint32_t>& out) const;
 
   // Removals after `since`, oldest first.
   std::span<const Removal> removed_since(Tick since) const;
@@ -97,20 +116,27 @@ class SparseSet {
 
   // Removes the entity's component, recording the removal at `now`. Returns false if absent.
   virtual bool remove(Entity entity, Tick now) = 0;
+  // Same as remove for each entity, without a virtual call per entity; handles that are stale,
+  // repeated or without the component are skipped.
+  virtual void remove_many(std::span<const Entity> entities, Tick now) = 0;
 
  protected:
   // Adds the entity to the set, marked as changed at `now`; returns its dense slot. The typed
   // pool appends the component itself.
   std::uint32_t insert(Entity entity, Tick now);
+  // Adds entities that are not in the set yet, marked as changed at `now`, growing each array
+  // once. The typed pool appends their components.
+  void insert_many(std::span<const Entity> entities, Tick now);
+  // Removes the entities' components by one sequential pass that keeps the others in order,
+  // recording each removal at `now`; cheaper than swap-removes once a good share of the pool
+  // goes. Returns the mask of removed slots (by old slot); the typed pool compacts its
+  // component array with it.
+  std::vector<bool> erase_many(std::span<const Entity> entities, Tick now);
   // Swap-removes `slot` from the membership arrays, recording the removal at `now`. The typed
   // pool must do the same swap on its component array.
   void erase(std::uint32_t slot, Tick now);
 
  private:
-  struct Segment {
-    Tick tick;
-    std::uint64_t begin;  // global log position of this tick's first write
-  };
   struct LayoutComparison {
     const SparseSet* other;
     std::uint64_t version;
@@ -118,19 +144,14 @@ class SparseSet {
     bool same;
   };
 
-  std::uint64_t end_of_log() const { return log_base_ + change_log_.size(); }
-  bool is_newest_entry(std::uint64_t position) const;
-  void compact_change_log();
-
-  std::vector<std::uint32_t> sparse_;        // entity index -> dense slot (may be stale)
-  std::vector<Entity> dense_;                // dense slot -> entity
-  std::vector<std::uint64_t> log_position_;  // dense slot -> global position of newest entry
-  std::vector<Entity> change_log_;           // change_log_[0] is at global position log_base_
-  std::uint64_t log_base_ = 0;
-  Tick bulk_tick_ = 0;                // last mark_all_changed; 0 if never
-  std::vector<Segment> segments_;     // ascending ticks, all after bulk_tick_
-  std::vector<Removal> removals_;     // ascending ticks
-  std::uint64_t layout_version_ = 0;  // bumped by every insert and erase
+  std::vector<std::uint32_t> sparse_;  // entity index -> dense slot, npos when absent
+  std::vector<Entity> dense_;          // dense slot -> entity
+  std::vector<Tick> ticks_;            // dense slot -> tick of the newest write
+  std::vector<Tick> block_ticks_;      // newest tick among slots_per_block slots
+  std::vector<Tick> group_ticks_;      // newest tick among slots_per_group slots
+  Tick bulk_tick_ = 0;                 // last mark_all_changed; 0 if never
+  std::vector<Removal> removals_;      // ascending ticks
+  std::uint64_t layout_version_ = 0;   // bumped by every insert and erase
   mutable std::vector<LayoutComparison> layout_comparisons_;
 };
 

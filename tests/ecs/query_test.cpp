@@ -125,5 +125,23 @@ TEST(Query, AConstQueryOfAnUnknownComponentVisitsNothing) {
   EXPECT_EQ(reader.query<const Position>().without<NeverAdded>().count(), 1u);
 }
 
+TEST(Query, AReusedIndexDoesNotInheritTheDestroyedEntitysComponents) {
+  World world;
+  const Entity old = test::spawn_moving(world);
+  test::spawn_moving(world);  // moves into old's Velocity slot when old is destroyed
+  // More Velocities than Positions, so the query walks Positions and looks Velocities up.
+  for (int i = 0; i < 3; ++i) world.add<Velocity>(world.create());
+  world.destroy(old);
+  const Entity reused = world.create();
+  ASSERT_EQ(reused.index, old.index);
+  world.add<Position>(reused);
+  std::vector<Entity> visited;
+  world.query<const Position, const Velocity>().for_each(
+      [&](Entity entity, const Position&, const Velocity&) { visited.push_back(entity); });
+  EXPECT_EQ(std::count(visited.begin(), visited.end(), reused), 0);
+  EXPECT_EQ(visited.size(), 1u);
+  EXPECT_FALSE(world.has<Velocity>(reused));
+}
+
 }  // namespace
 }  // namespace sg::ecs

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 #include "ecs/world.h"
 #include "test_components.h"
@@ -87,6 +89,76 @@ TEST(World, GetMutWritesThrough) {
   const Entity entity = test::spawn_still(world);
   world.get_mut<Position>(entity).x = 5.0f;
   EXPECT_EQ(world.get<Position>(entity).x, 5.0f);
+}
+
+TEST(World, CreateManyGivesEveryEntityTheComponentsAndReusesFreedSlots) {
+  World world;
+  const Entity freed = world.create();
+  world.destroy(freed);
+  const Tick before = world.tick();
+  world.advance_tick();
+  const std::vector<Entity> created = world.create_many(1000, Position{1.0f, 2.0f}, Velocity{3.0f, 4.0f});
+  ASSERT_EQ(created.size(), 1000u);
+  EXPECT_EQ(created.front().index, freed.index);
+  EXPECT_NE(created.front(), freed);
+  EXPECT_EQ(world.entity_count(), 1000u);
+  std::vector<Entity> visited;
+  world.query<const Position, const Velocity>().changed_since<Position>(before).for_each(
+      [&](Entity entity, const Position& position, const Velocity& velocity) {
+        EXPECT_EQ(position.y, 2.0f);
+        EXPECT_EQ(velocity.x, 3.0f);
+        visited.push_back(entity);
+      });
+  std::sort(visited.begin(), visited.end(), [](Entity a, Entity b) { return a.index < b.index; });
+  EXPECT_EQ(visited, created);
+  // Single creation afterwards continues after the bulk.
+  const Entity next = test::spawn_still(world);
+  EXPECT_TRUE(world.alive(next));
+  EXPECT_EQ(std::count(created.begin(), created.end(), next), 0);
+}
+
+TEST(World, DestroyManySkipsStaleAndRepeatedHandlesAndRecordsRemovals) {
+  World world;
+  const std::vector<Entity> created = world.create_many(10, Position{});
+  const Entity stale = world.create();
+  world.destroy(stale);
+  world.add<Velocity>(created[3]);
+  const Tick before = world.tick();
+  world.advance_tick();
+  const std::vector<Entity> doomed{created[3], created[5], created[3], stale};
+  EXPECT_EQ(world.destroy_many(doomed), 2u);
+  EXPECT_FALSE(world.alive(created[3]));
+  EXPECT_FALSE(world.alive(created[5]));
+  EXPECT_EQ(world.entity_count(), 8u);
+  EXPECT_EQ(world.query<const Position>().count(), 8u);
+  EXPECT_EQ(world.removed_since<Position>(before).size(), 2u);
+  ASSERT_EQ(world.removed_since<Velocity>(before).size(), 1u);
+  EXPECT_EQ(world.removed_since<Velocity>(before)[0].entity, created[3]);
+}
+
+TEST(World, DestroyingMostEntitiesKeepsTheOthersComponentsAndChangeTicks) {
+  World world;
+  const std::vector<Entity> created = world.create_many(100, Position{}, Velocity{});
+  for (const Entity entity : created) world.get_mut<Position>(entity).x = static_cast<float>(entity.index);
+  const Tick before = world.tick();
+  world.advance_tick();
+  // Only late entities are written, and every early one is destroyed, so the written ones move
+  // to slots whose neighbours were not written: their change must still be found.
+  const std::vector<Entity> written{created[70], created[90]};
+  for (const Entity entity : written) world.get_mut<Position>(entity);
+  const std::vector<Entity> doomed(created.begin(), created.begin() + 64);
+  EXPECT_EQ(world.destroy_many(doomed), doomed.size());
+  std::size_t survivors = 0;
+  world.query<const Position, const Velocity>().for_each(
+      [&](Entity entity, const Position& position, const Velocity&) {
+        EXPECT_EQ(position.x, static_cast<float>(entity.index));
+        ++survivors;
+      });
+  std::vector<Entity> changed;
+  world.query<const Position>().changed_since<Position>(before).for_each(
+      [&](Entity entity, const Position&) { changed.push_back(entity); });
+  EXPECT_EQ(survivors, created.size() - doomed.size());
+  EXPECT_EQ(changed, written);
 }
 
 }  // namespace

@@ -3,19 +3,25 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <numeric>
 #include <random>
+#include <thread>
 #include <vector>
 
+#include "ecs/thread_pool.h"
+#include "ecs/transform.h"
 #include "ecs/world.h"
 
 namespace {
 
 using sg::ecs::Entity;
+using sg::ecs::LocalTransform;
 using sg::ecs::Tick;
 using sg::ecs::World;
+using sg::ecs::WorldTransform;
 
 constexpr std::uint32_t entity_count = 1'000'000;
 constexpr float dt = 1.0f / 60.0f;
@@ -156,6 +162,43 @@ void create2_raw(benchmark::State& state) {
     }
     benchmark::DoNotOptimize(ids.data());
     free_untimed(state, raw);
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+void create2_bulk_ecs(benchmark::State& state) {
+  for (auto _ : state) {
+    auto world = std::make_unique<World>();
+    benchmark::DoNotOptimize(
+        world->create_many(entity_count, Position{0.0f, 0.0f, 0.0f}, Velocity{1.0f, 0.0f, -1.0f}));
+    free_untimed(state, world);
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+// The bulk form of create2/raw: sized once, filled with copies.
+void create2_bulk_raw(benchmark::State& state) {
+  for (auto _ : state) {
+    auto raw = std::make_unique<RawArrays>();
+    std::vector<std::uint32_t> ids(entity_count);
+    std::iota(ids.begin(), ids.end(), 0u);
+    raw->positions.assign(entity_count, Position{0.0f, 0.0f, 0.0f});
+    raw->velocities.assign(entity_count, Velocity{1.0f, 0.0f, -1.0f});
+    benchmark::DoNotOptimize(ids.data());
+    free_untimed(state, raw);
+  }
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+void destroy_bulk_ecs(benchmark::State& state) {
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::vector<Entity> entities;
+    std::unique_ptr<World> world = make_world(&entities);
+    state.ResumeTiming();
+    world->destroy_many(entities);
+    benchmark::DoNotOptimize(world->entity_count());
+    free_untimed(state, world);
   }
   state.SetItemsProcessed(state.iterations() * entity_count);
 }
@@ -326,14 +369,151 @@ void changed_since_raw(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * written.size());
 }
 
+// Sparse iteration: every entity has a Position, every tenth also a Velocity. Each pass is
+// timed on its own and reported per visited entity, so a periodic slow pass (work paid inside
+// the query every few ticks) shows up as worst or median far above best.
+constexpr std::uint32_t sparse_stride = 10;
+constexpr std::uint32_t sparse_visited = entity_count / sparse_stride;
+
+class PassTimer {
+ public:
+  void start() { start_ = std::chrono::steady_clock::now(); }
+  void stop() {
+    passes_.push_back(
+        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start_).count());
+  }
+  void report(benchmark::State& state, std::uint32_t visited) {
+    std::sort(passes_.begin(), passes_.end());
+    state.counters["best_ns"] = passes_.front() / visited;
+    state.counters["median_ns"] = passes_[passes_.size() / 2] / visited;
+    state.counters["worst_ns"] = passes_.back() / visited;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+  std::vector<double> passes_;
+};
+
+// Arg: 0 writes Position (so every visit is change-tracked), 1 only reads both.
+void sparse_iterate_ecs(benchmark::State& state) {
+  World world;
+  for (std::uint32_t i = 0; i < entity_count; ++i) {
+    const Entity entity = world.create();
+    world.add<Position>(entity, 0.0f, 0.0f, 0.0f);
+    if (i % sparse_stride == 0) world.add<Velocity>(entity, velocity_of(i));
+  }
+  PassTimer timer;
+  float sum = 0.0f;
+  for (auto _ : state) {
+    world.advance_tick();
+    timer.start();
+    if (state.range(0) == 0) {
+      world.query<Position, const Velocity>().for_each(
+          [](Position& position, const Velocity& velocity) { integrate(position, velocity); });
+    } else {
+      world.query<const Position, const Velocity>().for_each(
+          [&](const Position& position, const Velocity& velocity) { sum += position.x * velocity.x; });
+    }
+    benchmark::ClobberMemory();
+    timer.stop();
+  }
+  benchmark::DoNotOptimize(sum);
+  timer.report(state, sparse_visited);
+  state.SetItemsProcessed(state.iterations() * sparse_visited);
+}
+
+// What a user would write without an ECS: the indices of the entities that move, beside their
+// velocities. Arg as for sparse_iterate/ecs.
+void sparse_iterate_raw(benchmark::State& state) {
+  std::vector<Position> positions(entity_count, Position{0.0f, 0.0f, 0.0f});
+  std::vector<std::uint32_t> moving;
+  std::vector<Velocity> velocities;
+  for (std::uint32_t i = 0; i < entity_count; i += sparse_stride) {
+    moving.push_back(i);
+    velocities.push_back(velocity_of(i));
+  }
+  PassTimer timer;
+  float sum = 0.0f;
+  for (auto _ : state) {
+    timer.start();
+    if (state.range(0) == 0) {
+      for (std::size_t k = 0; k < moving.size(); ++k) integrate(positions[moving[k]], velocities[k]);
+    } else {
+      for (std::size_t k = 0; k < moving.size(); ++k) sum += positions[moving[k]].x * velocities[k].x;
+    }
+    benchmark::ClobberMemory();
+    timer.stop();
+  }
+  benchmark::DoNotOptimize(sum);
+  timer.report(state, sparse_visited);
+  state.SetItemsProcessed(state.iterations() * sparse_visited);
+}
+
+// World matrices from local transforms, the per-frame work that parallel iteration is for.
+// Arg: 0 serial, 1 split over a thread pool of one thread per core.
+void transform_update_ecs(benchmark::State& state) {
+  World world;
+  world.create_many(entity_count, LocalTransform{glm::vec3{1.0f, 2.0f, 3.0f}}, WorldTransform{});
+  sg::ecs::ThreadPool threads;
+  const auto update = [](const LocalTransform& local, WorldTransform& world_transform) {
+    world_transform.matrix = sg::ecs::to_matrix(local);
+  };
+  for (auto _ : state) {
+    world.advance_tick();
+    auto query = world.query<const LocalTransform, WorldTransform>();
+    if (state.range(0) == 0) {
+      query.for_each(update);
+    } else {
+      query.for_each_parallel(threads, update);
+    }
+    benchmark::ClobberMemory();
+  }
+  state.counters["threads"] = state.range(0) == 0 ? 1 : threads.thread_count();
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
+// Arg: 0 one loop, 1 what a user would write by hand: one std::thread per core each frame,
+// each over its share of the arrays.
+void transform_update_raw(benchmark::State& state) {
+  const std::vector<LocalTransform> locals(entity_count, LocalTransform{glm::vec3{1.0f, 2.0f, 3.0f}});
+  std::vector<WorldTransform> worlds(entity_count);
+  const auto update = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) worlds[i].matrix = sg::ecs::to_matrix(locals[i]);
+  };
+  const std::size_t thread_count =
+      state.range(0) == 0 ? 1 : std::max(1u, std::thread::hardware_concurrency());
+  for (auto _ : state) {
+    if (thread_count == 1) {
+      update(0, entity_count);
+    } else {
+      std::vector<std::thread> threads;
+      for (std::size_t t = 1; t < thread_count; ++t) {
+        threads.emplace_back(update, entity_count * t / thread_count, entity_count * (t + 1) / thread_count);
+      }
+      update(0, entity_count / thread_count);
+      for (std::thread& thread : threads) thread.join();
+    }
+    benchmark::ClobberMemory();
+  }
+  state.counters["threads"] = static_cast<double>(thread_count);
+  state.SetItemsProcessed(state.iterations() * entity_count);
+}
+
 }  // namespace
 
 BENCHMARK(iterate2_ecs)->Name("iterate2/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(iterate2_raw)->Name("iterate2/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(iterate3_ecs)->Name("iterate3/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(iterate3_raw)->Name("iterate3/raw")->Unit(benchmark::kMillisecond);
+BENCHMARK(sparse_iterate_ecs)->Name("sparse_iterate/ecs")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(sparse_iterate_raw)->Name("sparse_iterate/raw")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(transform_update_ecs)->Name("transform_update/ecs")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(transform_update_raw)->Name("transform_update/raw")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_ecs)->Name("create2/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_raw)->Name("create2/raw")->Unit(benchmark::kMillisecond);
+BENCHMARK(create2_bulk_ecs)->Name("create2_bulk/ecs")->Unit(benchmark::kMillisecond);
+BENCHMARK(create2_bulk_raw)->Name("create2_bulk/raw")->Unit(benchmark::kMillisecond);
+BENCHMARK(destroy_bulk_ecs)->Name("destroy_bulk/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(destroy_ecs)->Name("destroy/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(destroy_raw)->Name("destroy/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(add_remove_ecs)->Name("add_remove/ecs")->Unit(benchmark::kMillisecond);
