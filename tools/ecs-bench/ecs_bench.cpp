@@ -450,38 +450,37 @@ void sparse_iterate_raw(benchmark::State& state) {
 }
 
 // World matrices from local transforms, the per-frame work that parallel iteration is for.
-// Arg: 0 serial, 1 split over a thread pool of one thread per core.
+// Arg: threads; 1 is the serial for_each, more a thread pool of that many (the caller included).
 void transform_update_ecs(benchmark::State& state) {
   World world;
   world.create_many(entity_count, LocalTransform{glm::vec3{1.0f, 2.0f, 3.0f}}, WorldTransform{});
-  sg::ecs::ThreadPool threads;
+  sg::ecs::ThreadPool threads(static_cast<unsigned>(state.range(0)) - 1);
   const auto update = [](const LocalTransform& local, WorldTransform& world_transform) {
     world_transform.matrix = sg::ecs::to_matrix(local);
   };
   for (auto _ : state) {
     world.advance_tick();
     auto query = world.query<const LocalTransform, WorldTransform>();
-    if (state.range(0) == 0) {
+    if (state.range(0) == 1) {
       query.for_each(update);
     } else {
       query.for_each_parallel(threads, update);
     }
     benchmark::ClobberMemory();
   }
-  state.counters["threads"] = state.range(0) == 0 ? 1 : threads.thread_count();
+  state.counters["threads"] = static_cast<double>(threads.thread_count());
   state.SetItemsProcessed(state.iterations() * entity_count);
 }
 
-// Arg: 0 one loop, 1 what a user would write by hand: one std::thread per core each frame,
-// each over its share of the arrays.
+// Arg: threads; 1 is one loop, more what a user would write by hand: that many std::threads
+// each frame (the caller included), each over its share of the arrays.
 void transform_update_raw(benchmark::State& state) {
   const std::vector<LocalTransform> locals(entity_count, LocalTransform{glm::vec3{1.0f, 2.0f, 3.0f}});
   std::vector<WorldTransform> worlds(entity_count);
   const auto update = [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) worlds[i].matrix = sg::ecs::to_matrix(locals[i]);
   };
-  const std::size_t thread_count =
-      state.range(0) == 0 ? 1 : std::max(1u, std::thread::hardware_concurrency());
+  const auto thread_count = static_cast<std::size_t>(state.range(0));
   for (auto _ : state) {
     if (thread_count == 1) {
       update(0, entity_count);
@@ -507,8 +506,25 @@ BENCHMARK(iterate3_ecs)->Name("iterate3/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(iterate3_raw)->Name("iterate3/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(sparse_iterate_ecs)->Name("sparse_iterate/ecs")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK(sparse_iterate_raw)->Name("sparse_iterate/raw")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
-BENCHMARK(transform_update_ecs)->Name("transform_update/ecs")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(transform_update_raw)->Name("transform_update/raw")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+// Thread counts: 1 to 16, for the lent 16-core machine; this VM has 2 cores.
+BENCHMARK(transform_update_ecs)
+    ->Name("transform_update/ecs")
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(transform_update_raw)
+    ->Name("transform_update/raw")
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(8)
+    ->Arg(16)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_ecs)->Name("create2/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_raw)->Name("create2/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_bulk_ecs)->Name("create2_bulk/ecs")->Unit(benchmark::kMillisecond);
