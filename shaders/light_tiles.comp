@@ -11,10 +11,14 @@
 #include "light_record.glsl"
 #include "light_tiles.glsl"
 
-// 8 x 8 threads, each reading a 2 x 2 block of the tile's depth: few threads and few barriers,
-// which a CPU driver (one coroutine per SIMD batch, switched at every barrier) pays for most.
-layout(local_size_x = 8, local_size_y = 8) in;
-const uint THREADS = 64u;
+// SIDE x SIDE threads, each reading a block of the tile's depth, chosen per device
+// (systems/light_tiles_pass.cpp): a GPU wants threads to test many lights at once; a CPU driver
+// (one coroutine per SIMD batch, switched at every barrier) wants few threads. At least 4, so
+// that every light group has a thread.
+layout(constant_id = 0) const uint SIDE = 8u;
+layout(local_size_x_id = 0, local_size_y_id = 0) in;
+const uint THREADS = SIDE * SIDE;
+const uint BLOCK = LIGHT_TILE_SIZE / SIDE;  // pixels per thread side
 
 layout(std430, set = 0, binding = lights_binding) readonly buffer Lights { Light lights[]; };
 layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
@@ -56,13 +60,14 @@ void main() {
     group_first[local] = 0u;
     group_end[local] = 0u;
   }
-  // Each thread reduces its 2 x 2 block, then one thread the 64 results and the tile's bound:
+  // Each thread reduces its block, then one thread their results and the tile's bound:
   // shared-memory atomics and 64 copies of the same sphere cost a CPU driver more than a short
   // serial loop.
   float nearest = 1.0;
   float farthest = 0.0;
-  for (uint k = 0u; k < 4u; ++k) {
-    ivec2 pixel = ivec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy * 2u + uvec2(k & 1u, k >> 1u));
+  for (uint k = 0u; k < BLOCK * BLOCK; ++k) {
+    ivec2 pixel =
+        ivec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy * BLOCK + uvec2(k % BLOCK, k / BLOCK));
     if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) {
       float depth = texelFetch(scene_depth, pixel, 0).r;
       if (depth < 1.0) {  // background does not bound the tile

