@@ -60,7 +60,7 @@ ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, uint32_t width, uint3
       [&](rg::PassBuilder& b) {
         b.read(maps, rg::Usage::sampled_fragment);
         b.read(cubes, rg::Usage::sampled_fragment);
-        targets.depth = b.write(b.create_image("depth", {width, height, depth_format}),
+        targets.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
                                 rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
         targets.lit_sum =
             b.write(b.create_image("lit sum", {width, height, lit_sum_format}), rg::Usage::colour_attachment,

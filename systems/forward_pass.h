@@ -29,7 +29,6 @@ struct ForwardTargets {
 class ForwardPass {
  public:
   static constexpr rg::Format lit_sum_format = rg::Format::rgba32_sfloat;
-  static constexpr rg::Format depth_format = rg::Format::d32_sfloat;
 
   // `textures` must outlive the pass: its array is bound once.
   ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);

@@ -17,7 +17,6 @@ constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADE
 constexpr rg::Format position_format = rg::Format::rgba32_sfloat;
 constexpr rg::Format normal_format = rg::Format::rgba16_sfloat;
 constexpr rg::Format albedo_format = rg::Format::rgba8_unorm;
-constexpr rg::Format depth_format = rg::Format::d32_sfloat;
 
 }  // namespace
 
@@ -57,8 +56,8 @@ GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t hei
         g.position = target("g-buffer position", position_format, nothing);
         g.normal = target("g-buffer normal", normal_format, nothing);
         g.albedo = target("g-buffer albedo", albedo_format, nothing);
-        g.depth = b.write(b.create_image("depth", {width, height, depth_format}), rg::Usage::depth_attachment,
-                          rg::ClearValue::depth_of(1.0f));
+        g.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
+                          rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
       },
       [this, &scene, slot, constants](const vk::PassRecorder& rec) {
         scene.draw_camera_pass(rec, pipeline_.get(), layout_, slot_sets_.sets[slot], constants, slot);

@@ -32,7 +32,7 @@ vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment
   desc.fragment_spirv = fragment;
   scene_vertex_input(desc, true);
   desc.color_formats = std::move(colour_formats);
-  desc.depth_format = VK_FORMAT_D32_SFLOAT;
+  desc.depth_format = vk::to_vk(camera_depth_format);
   desc.layout = layout;
   desc.name = std::move(name);
   return desc;

@@ -14,6 +14,7 @@
 #include <vulkan/vulkan.h>
 
 #include "ecs/world.h"
+#include "rendergraph/core/resource_types.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/pipeline.h"
@@ -32,8 +33,12 @@ namespace sg {
 // location 0, and with `surface` the normal at 1 and the uv at 2.
 void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface);
 
+// The depth buffer of every pass that draws the scene from the camera.
+inline constexpr rg::Format camera_depth_format = rg::Format::d32_sfloat;
+
 // A pipeline that draws the scene from the camera (shaders/scene.vert, draw_camera_pass) into
-// `colour_formats` with `fragment`, depth-tested against D32; callers may adjust the rest.
+// `colour_formats` with `fragment`, depth-tested against camera_depth_format; callers may
+// adjust the rest.
 vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
                                               std::vector<VkFormat> colour_formats, VkPipelineLayout layout,
                                               std::string name);

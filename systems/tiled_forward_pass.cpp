@@ -37,7 +37,7 @@ TiledForwardPass::TiledForwardPass(vk::VulkanContext& context, const GpuTextures
   vk::GraphicsPipelineDesc desc;
   desc.vertex_spirv = depth_prepass_vert;
   scene_vertex_input(desc, false);
-  desc.depth_format = vk::to_vk(ForwardPass::depth_format);
+  desc.depth_format = vk::to_vk(camera_depth_format);
   desc.layout = depth_layout_.get();
   desc.name = "depth prepass";
   depth_pipeline_ = vk::create_graphics_pipeline(context, desc);
@@ -66,7 +66,7 @@ rg::ImageHandle TiledForwardPass::add_depth_prepass(rg::RenderGraph& graph, uint
   graph.add_pass(
       "depth prepass",
       [&](rg::PassBuilder& b) {
-        depth = b.write(b.create_image("depth", {width, height, ForwardPass::depth_format}),
+        depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
                         rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
       },
       [this, &scene, slot, constants](const vk::PassRecorder& rec) {
