@@ -190,30 +190,29 @@ void create2_bulk_raw(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * entity_count);
 }
 
-void destroy_bulk_ecs(benchmark::State& state) {
+// Destroys every entity of a fresh world with `destroy(world, entities)`, world set-up untimed.
+template <class Destroy>
+void destroy_all(benchmark::State& state, Destroy destroy) {
   for (auto _ : state) {
     state.PauseTiming();
     std::vector<Entity> entities;
     std::unique_ptr<World> world = make_world(&entities);
     state.ResumeTiming();
-    world->destroy_many(entities);
+    destroy(*world, entities);
     benchmark::DoNotOptimize(world->entity_count());
     free_untimed(state, world);
   }
   state.SetItemsProcessed(state.iterations() * entity_count);
 }
 
+void destroy_bulk_ecs(benchmark::State& state) {
+  destroy_all(state, [](World& world, const std::vector<Entity>& entities) { world.destroy_many(entities); });
+}
+
 void destroy_ecs(benchmark::State& state) {
-  for (auto _ : state) {
-    state.PauseTiming();
-    std::vector<Entity> entities;
-    std::unique_ptr<World> world = make_world(&entities);
-    state.ResumeTiming();
-    for (const Entity entity : entities) world->destroy(entity);
-    benchmark::DoNotOptimize(world->entity_count());
-    free_untimed(state, world);
-  }
-  state.SetItemsProcessed(state.iterations() * entity_count);
+  destroy_all(state, [](World& world, const std::vector<Entity>& entities) {
+    for (const Entity entity : entities) world.destroy(entity);
+  });
 }
 
 // Destroying entity i from raw arrays that must stay dense: swap-remove each array through an
