@@ -1,0 +1,347 @@
+#include "systems/shadows/shadow_atlas_planner.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cassert>
+#include <cmath>
+
+namespace sg::shadows {
+namespace {
+
+// Power-of-two sizes, and a quadtree per page of at most 1024 x 1024 leaves.
+AtlasConfig sanitized(AtlasConfig config) {
+  config.page_size = std::bit_floor(std::max(config.page_size, 1u));
+  config.min_resolution = std::bit_ceil(std::clamp(config.min_resolution, 1u, config.page_size));
+  config.min_resolution = std::max(config.min_resolution, std::max(config.page_size >> 10, 1u));
+  return config;
+}
+
+uint32_t tile_count(bool cube) { return cube ? 6 : 1; }
+uint64_t area(uint32_t side) { return uint64_t(side) * side; }
+// Importance as bits that sort as the floats do: NaN and negative importances count as 0.
+uint64_t importance_bits(const ShadowRequest& request) {
+  return std::bit_cast<uint32_t>(request.importance > 0.0f ? request.importance : 0.0f);
+}
+
+// Indices of the requests with a shadow, least important first, ties by key so that the order
+// does not depend on the order of requests. A radix sort: a plan() may sort 100,000 lights.
+std::vector<uint32_t> least_important_first(std::span<const ShadowRequest> requests,
+                                            std::span<const uint32_t> resolutions) {
+  std::vector<uint64_t> order;  // importance bits << 32 | request index
+  for (uint32_t i = 0; i < requests.size(); ++i) {
+    if (resolutions[i] > 0) order.push_back(importance_bits(requests[i]) << 32 | i);
+  }
+  std::vector<uint64_t> sorted(order.size());
+  for (uint32_t shift = 32; shift < 64; shift += 8) {
+    std::array<size_t, 257> starts{};
+    for (const uint64_t value : order) ++starts[((value >> shift) & 0xff) + 1];
+    for (size_t digit = 1; digit < starts.size(); ++digit) starts[digit] += starts[digit - 1];
+    for (const uint64_t value : order) sorted[starts[(value >> shift) & 0xff]++] = value;
+    order.swap(sorted);
+  }
+  const auto key = [&](uint64_t value) { return requests[uint32_t(value)].key; };
+  for (auto run = order.begin(); run != order.end();) {
+    const auto run_end =
+        std::find_if(run, order.end(), [&](uint64_t value) { return value >> 32 != *run >> 32; });
+    if (run_end - run > 1) std::sort(run, run_end, [&](uint64_t a, uint64_t b) { return key(a) < key(b); });
+    run = run_end;
+  }
+  std::vector<uint32_t> indices(order.size());
+  std::transform(order.begin(), order.end(), indices.begin(), [](uint64_t value) { return uint32_t(value); });
+  return indices;
+}
+
+}  // namespace
+
+ShadowAtlasPlanner::ShadowAtlasPlanner(AtlasConfig config)
+    : config_(sanitized(config)), pages_(config_.page_size, config_.min_resolution, config_.max_pages) {}
+
+void ShadowAtlasPlanner::set_config(AtlasConfig config) {
+  const AtlasConfig next = sanitized(config);
+  if (next == config_) return;
+  config_ = next;
+  pages_ = ShadowAtlasPages(config_.page_size, config_.min_resolution, config_.max_pages);
+  repack_pending_ = true;
+}
+
+uint32_t ShadowAtlasPlanner::tier_count() const {
+  return uint32_t(std::countr_zero(config_.page_size / config_.min_resolution)) + 1;
+}
+
+uint32_t ShadowAtlasPlanner::tier_of(uint32_t resolution) const {
+  return uint32_t(std::countr_zero(config_.page_size / resolution));
+}
+
+uint32_t ShadowAtlasPlanner::wanted_resolution(const ShadowRequest& request, uint32_t previous) const {
+  uint32_t cap = request.cube ? config_.page_size / 4 : config_.page_size;
+  if (cap < config_.min_resolution) return 0;  // six faces of the smallest tile do not fit a page
+  if (request.max_resolution != 0) {
+    cap = std::clamp(std::bit_floor(request.max_resolution), config_.min_resolution, cap);
+  }
+  // NaN, negative and tiny importances want the smallest tile, infinite ones the largest.
+  const float importance = std::clamp(request.importance > 1.0f ? request.importance : 1.0f, 1.0f, 0x1p31f);
+  const float tiers = std::log2(importance);
+  if (previous >= config_.min_resolution && previous <= cap &&
+      std::abs(tiers - float(std::countr_zero(previous))) <= hysteresis_tiers) {
+    return previous;
+  }
+  return std::clamp(1u << uint32_t(std::round(tiers)), config_.min_resolution, cap);
+}
+
+void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out) {
+  assert(out.size() == requests.size());
+  ++plans_;
+  match_lights(requests);
+  release_lights_not_requested();
+  fit_budget(requests);
+
+  // Lights whose resolution or kind changed give their tiles back and need new ones; the others
+  // keep theirs.
+  tiles_.resize(requests.size());
+  std::vector<uint32_t> changed;
+  for (uint32_t i = 0; i < requests.size(); ++i) {
+    if (light_of_request_[i] == no_light) continue;
+    const Light& light = lights_[light_of_request_[i]];
+    if (resolution_[i] == light.resolution && requests[i].cube == light.cube) {
+      tiles_[i] = light.tiles;
+      continue;
+    }
+    if (light.resolution > 0 && !repack_pending_) {
+      for (uint32_t k = 0; k < tile_count(light.cube); ++k) pages_.free(light.tiles[k]);
+    }
+    if (resolution_[i] > 0) changed.push_back(i);
+  }
+  if (repack_pending_ || !place_changed_lights(requests, changed)) repack(requests);
+  repack_pending_ = false;
+
+  for (uint32_t i = 0; i < requests.size(); ++i) {
+    ShadowPlacement& placement = out[i];
+    placement = {};
+    if (light_of_request_[i] == no_light) continue;
+    Light& light = lights_[light_of_request_[i]];
+    placement.resolution = resolution_[i];
+    if (placement.resolution > 0) placement.tiles = tiles_[i];
+    placement.moved =
+        placement.resolution > 0 && (placement.resolution != light.resolution ||
+                                     requests[i].cube != light.cube || placement.tiles != light.tiles);
+    light.resolution = placement.resolution;
+    light.cube = requests[i].cube;
+    light.tiles = placement.tiles;
+  }
+  update_stats();
+}
+
+void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests) {
+  light_of_request_.resize(requests.size());
+  resolution_.assign(requests.size(), 0);
+  for (uint32_t i = 0; i < requests.size(); ++i) {
+    const ShadowRequest& request = requests[i];
+    const auto [found, inserted] = light_of_key_.try_emplace(request.key, 0);
+    if (inserted) {
+      if (unused_lights_.empty()) {
+        found->second = uint32_t(lights_.size());
+        lights_.emplace_back();
+      } else {
+        found->second = unused_lights_.back();
+        unused_lights_.pop_back();
+        lights_[found->second] = {};
+      }
+      lights_[found->second].key = request.key;
+    }
+    Light& light = lights_[found->second];
+    if (light.requested_in_plan == plans_) {  // the key's second request
+      light_of_request_[i] = no_light;
+      continue;
+    }
+    light_of_request_[i] = found->second;
+    light.requested_in_plan = plans_;
+    light.wanted = wanted_resolution(request, request.cube == light.cube ? light.wanted : 0);
+    resolution_[i] = light.wanted;
+  }
+}
+
+void ShadowAtlasPlanner::release_lights_not_requested() {
+  for (uint32_t index = 0; index < lights_.size(); ++index) {
+    Light& light = lights_[index];
+    // requested_in_plan is 0 for unused entries: plans count from 1.
+    if (light.requested_in_plan == 0 || light.requested_in_plan == plans_) continue;
+    if (light.resolution > 0 && !repack_pending_) {
+      for (uint32_t k = 0; k < tile_count(light.cube); ++k) pages_.free(light.tiles[k]);
+    }
+    light_of_key_.erase(light.key);
+    light = {};
+    unused_lights_.push_back(index);
+  }
+}
+
+void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests) {
+  maps_per_tier_.assign(tier_count(), 0);
+  cubes_per_tier_.assign(tier_count(), 0);
+  for (uint32_t i = 0; i < requests.size(); ++i) {
+    if (resolution_[i] > 0) ++(requests[i].cube ? cubes_per_tier_ : maps_per_tier_)[tier_of(resolution_[i])];
+  }
+  uint64_t excess = texels_that_do_not_fit();
+  if (excess == 0) return;
+
+  const std::vector<uint32_t> by_importance = least_important_first(requests, resolution_);
+  // Passes from the least important light upward, each demoting every light above the smallest
+  // tier by one; once a pass finds none, lights are dropped from the least important upward.
+  size_t next = 0;
+  bool demoted_in_pass = false;
+  bool dropping = false;
+  // Texels one more step saves; 0 when every light is dropped.
+  const auto take_one_step = [&]() -> uint64_t {
+    for (;;) {
+      if (next == by_importance.size()) {
+        if (dropping) return 0;
+        dropping = !demoted_in_pass;
+        demoted_in_pass = false;
+        next = 0;
+        continue;
+      }
+      const uint32_t i = by_importance[next++];
+      uint32_t& resolution = resolution_[i];
+      std::vector<uint64_t>& per_tier = requests[i].cube ? cubes_per_tier_ : maps_per_tier_;
+      const uint64_t tiles = tile_count(requests[i].cube);
+      if (dropping) {
+        --per_tier[tier_of(resolution)];
+        const uint64_t saved = tiles * area(resolution);
+        resolution = 0;
+        return saved;
+      }
+      if (resolution <= config_.min_resolution) continue;
+      --per_tier[tier_of(resolution)];
+      ++per_tier[tier_of(resolution / 2)];
+      const uint64_t saved = tiles * (area(resolution) - area(resolution / 2));
+      resolution /= 2;
+      demoted_in_pass = true;
+      return saved;
+    }
+  };
+  // Packing is checked only once the steps have saved the area that did not fit, so a plan()
+  // packs a few times, not once a light.
+  while (excess > 0) {
+    for (uint64_t saved = 0; saved < excess;) {
+      const uint64_t step = take_one_step();
+      if (step == 0) return;
+      saved += step;
+    }
+    excess = texels_that_do_not_fit();
+  }
+}
+
+uint64_t ShadowAtlasPlanner::texels_that_do_not_fit() const {
+  // The repack's packing, counted rather than done: largest tier first, cubes before 2D maps,
+  // each on the lowest page with room. Power-of-two squares packed largest first leave no gaps,
+  // so a page's room is its free area, here in tiles of the current tier.
+  std::vector<uint64_t> free_tiles(config_.max_pages, 1);
+  uint64_t unplaced = 0;
+  for (uint32_t tier = 0; tier < tier_count(); ++tier) {
+    if (tier > 0) {
+      for (uint64_t& free : free_tiles) free *= 4;
+    }
+    uint64_t cubes = cubes_per_tier_[tier];
+    uint64_t maps = maps_per_tier_[tier];
+    for (uint64_t& free : free_tiles) {
+      const uint64_t placed = std::min(cubes, free / 6);
+      free -= 6 * placed;
+      cubes -= placed;
+    }
+    for (uint64_t& free : free_tiles) {
+      const uint64_t placed = std::min(maps, free);
+      free -= placed;
+      maps -= placed;
+    }
+    unplaced += (6 * cubes + maps) * area(config_.page_size >> tier);
+  }
+  return unplaced;
+}
+
+std::vector<uint32_t> ShadowAtlasPlanner::largest_first(std::span<const ShadowRequest> requests,
+                                                        std::span<const uint32_t> indices) const {
+  // A counting sort on (tier, 2D after cube): a plan() may place 100,000 lights.
+  const auto bucket = [&](uint32_t i) { return 2 * tier_of(resolution_[i]) + (requests[i].cube ? 0 : 1); };
+  std::vector<uint32_t> starts(2 * tier_count() + 1, 0);
+  for (const uint32_t i : indices) ++starts[bucket(i) + 1];
+  for (size_t b = 1; b < starts.size(); ++b) starts[b] += starts[b - 1];
+  std::vector<uint32_t> ordered(indices.size());
+  for (const uint32_t i : indices) ordered[starts[bucket(i)]++] = i;
+  return ordered;
+}
+
+bool ShadowAtlasPlanner::place_changed_lights(std::span<const ShadowRequest> requests,
+                                              std::span<const uint32_t> changed) {
+  for (const uint32_t i : largest_first(requests, changed)) {
+    tiles_[i] = {};
+    if (!pages_.allocate(resolution_[i], std::span(tiles_[i].data(), tile_count(requests[i].cube)))) {
+      return false;
+    }
+  }
+  return true;
+}
+
+void ShadowAtlasPlanner::repack(std::span<const ShadowRequest> requests) {
+  pages_.clear();
+  std::vector<uint32_t> shadowed;
+  for (uint32_t i = 0; i < requests.size(); ++i) {
+    if (light_of_request_[i] != no_light && resolution_[i] > 0) shadowed.push_back(i);
+  }
+  for (const uint32_t i : largest_first(requests, shadowed)) {
+    tiles_[i] = {};
+    // fit_budget() counted this very packing, so every light fits; were one not to, it would
+    // lose its shadow rather than overlap another.
+    if (!pages_.allocate(resolution_[i], std::span(tiles_[i].data(), tile_count(requests[i].cube)))) {
+      resolution_[i] = 0;
+    }
+  }
+}
+
+void ShadowAtlasPlanner::update_stats() {
+  std::vector<uint32_t> lights_per_tier(tier_count(), 0);
+  stats_.pages_used = 0;
+  stats_.texels_used = 0;
+  stats_.lights_without_shadow = 0;
+  stats_.demoted_by_budget = 0;
+  stats_.dropped_by_budget = 0;
+  for (uint32_t i = 0; i < resolution_.size(); ++i) {
+    const uint32_t resolution = resolution_[i];
+    const Light* light = light_of_request_[i] == no_light ? nullptr : &lights_[light_of_request_[i]];
+    if (resolution == 0) {
+      ++stats_.lights_without_shadow;
+      if (light && light->wanted > 0) ++stats_.dropped_by_budget;
+      continue;
+    }
+    ++lights_per_tier[tier_of(resolution)];
+    stats_.texels_used += tile_count(light->cube) * area(resolution);
+    stats_.pages_used = std::max(stats_.pages_used, light->tiles[0].page + 1);
+    if (resolution < light->wanted) ++stats_.demoted_by_budget;
+  }
+  stats_.lights_per_resolution.clear();
+  for (uint32_t tier = 0; tier < tier_count(); ++tier) {
+    if (lights_per_tier[tier] > 0) {
+      stats_.lights_per_resolution.emplace_back(config_.page_size >> tier, lights_per_tier[tier]);
+    }
+  }
+}
+
+std::optional<std::string> ShadowAtlasPlanner::take_budget_message() {
+  const BudgetEffect effect{stats_.demoted_by_budget, stats_.dropped_by_budget};
+  if (effect == reported_effect_) return std::nullopt;
+  if (last_message_plan_ && plans_ - *last_message_plan_ < budget_message_interval) return std::nullopt;
+  std::string line = "shadow atlas budget (" + std::to_string(config_.max_pages) + " pages of " +
+                     std::to_string(config_.page_size) + "^2): ";
+  if (effect == BudgetEffect{}) {
+    line += "every light has its wanted shadow resolution again";
+  } else {
+    line += std::to_string(effect.demoted) + " lights at a lower resolution, " +
+            std::to_string(effect.dropped) + " without shadow";
+  }
+  line += " (was " + std::to_string(reported_effect_.demoted) + " lower, " +
+          std::to_string(reported_effect_.dropped) + " without)";
+  reported_effect_ = effect;
+  last_message_plan_ = plans_;
+  return line;
+}
+
+}  // namespace sg::shadows

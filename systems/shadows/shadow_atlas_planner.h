@@ -1,0 +1,147 @@
+#pragma once
+// Where every shadow map lives, frame after frame, under a memory budget.
+//
+// Shadow maps are square power-of-two tiles in "pages", the layers of one 2D depth-array image of
+// page_size x page_size texels (D32: 4 bytes a texel). A 2D shadow (spot, directional, cylinder
+// light) takes one tile; a point light takes six tiles of one size on one page, its cube faces.
+// Each plan() decides every shadowed light's resolution and tiles:
+//
+// - Resolution: a light wants its importance rounded to a power of two (to the nearest one in
+//   log2), clamped to [min_resolution, its cap]; the cap is page_size (page_size / 4 for cubes, so
+//   that six faces fit a page) and, when max_resolution is not 0, max_resolution rounded down to a
+//   power of two (but never below min_resolution). Hysteresis: a light keeps last frame's wanted
+//   resolution R while log2(importance) stays within 0.75 of log2(R), so it does not pop between
+//   tiers when its importance hovers at a boundary.
+// - Budget: the tiles must fit max_pages pages. When they do not, the least important light drops
+//   one tier, then the next least important, and so on upward, pass after pass; once every light
+//   is at min_resolution the least important lose their shadow (resolution 0). It never fails,
+//   however many lights. Where cube faces leave gaps a light may be demoted one step more than
+//   strictly needed.
+// - Persistence: a light whose resolution did not change keeps exactly its tiles (moved = false).
+//   New lights and lights whose resolution changed get new tiles (moved = true); lights that are
+//   no longer requested free theirs. When free space is too fragmented for a new tile although the
+//   area fits, everything is repacked from scratch, largest first (which packs power-of-two
+//   squares without gaps), and the lights whose tiles changed are moved.
+//
+// A moved light's map content is invalid: it must be rendered again this frame.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "systems/shadows/shadow_atlas_pages.h"
+
+namespace sg::shadows {
+
+struct AtlasConfig {
+  uint32_t page_size = 4096;  // texels, rounded down to a power of two
+  uint32_t max_pages = 1;     // the budget: the caller derives it from MiB and device limits
+  // The smallest tile, rounded up to a power of two and kept within [page_size / 1024, page_size]
+  // (a page's quadtree has (page_size / min_resolution)^2 * 4/3 nodes of one byte). Below it a
+  // light loses its shadow instead.
+  uint32_t min_resolution = 32;
+
+  friend bool operator==(const AtlasConfig&, const AtlasConfig&) = default;
+};
+
+struct ShadowRequest {
+  uint64_t key = 0;             // the light's identity across frames (its entity); unique within a plan()
+  bool cube = false;            // six faces on one page
+  uint32_t max_resolution = 0;  // an upper bound on the resolution; 0: none of its own
+  // The resolution it should have, in texels before rounding (e.g. the projected screen size of
+  // its volume); the budget demotes the least important lights first.
+  float importance = 0.0f;
+};
+
+struct ShadowPlacement {
+  uint32_t resolution = 0;           // 0: no shadow this frame
+  std::array<AtlasTile, 6> tiles{};  // [0] for 2D maps; +X, -X, +Y, -Y, +Z, -Z faces for cubes
+  bool moved = false;                // tiles differ from last frame's for this key: the map must be rendered
+};
+
+struct AtlasStats {
+  uint32_t pages_used = 0;  // the highest page holding a tile, plus one
+  uint64_t texels_used = 0;
+  std::vector<std::pair<uint32_t, uint32_t>> lights_per_resolution;  // (resolution, lights), largest first
+  uint32_t lights_without_shadow = 0;
+  uint32_t demoted_by_budget = 0;  // shadowed at a lower resolution than they want
+  uint32_t dropped_by_budget = 0;  // without shadow because of the budget
+};
+
+class ShadowAtlasPlanner {
+ public:
+  explicit ShadowAtlasPlanner(AtlasConfig config);
+
+  // Fills out[i] for requests[i]; out.size() must equal requests.size(). Requests need not come
+  // in the same order every frame. A key requested twice in one plan() gets a shadow only once.
+  void plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out);
+  // The last plan()'s.
+  const AtlasStats& stats() const { return stats_; }
+  // A line for the log when the budget's effect (lights demoted or dropped) differs from the last
+  // line's, at most one every budget_message_interval plan() calls, summarising; else nullopt.
+  std::optional<std::string> take_budget_message();
+  // Takes effect at the next plan(), which repacks every tile (tiles may move).
+  void set_config(AtlasConfig config);
+  const AtlasConfig& config() const { return config_; }
+
+  static constexpr uint64_t budget_message_interval = 60;
+  // How far log2(importance) may stray from log2 of the resolution a light has before it changes.
+  static constexpr float hysteresis_tiers = 0.75f;
+
+ private:
+  struct Light {
+    uint64_t key = 0;
+    bool cube = false;
+    uint32_t wanted = 0;      // before the budget, after hysteresis; 0: cannot have a shadow
+    uint32_t resolution = 0;  // as placed
+    std::array<AtlasTile, 6> tiles{};
+    uint64_t requested_in_plan = 0;
+  };
+  struct BudgetEffect {
+    uint32_t demoted = 0;
+    uint32_t dropped = 0;
+    friend bool operator==(const BudgetEffect&, const BudgetEffect&) = default;
+  };
+
+  uint32_t tier_count() const;
+  uint32_t tier_of(uint32_t resolution) const;
+  uint32_t wanted_resolution(const ShadowRequest& request, uint32_t previous) const;
+  void match_lights(std::span<const ShadowRequest> requests);
+  void release_lights_not_requested();
+  void fit_budget(std::span<const ShadowRequest> requests);
+  uint64_t texels_that_do_not_fit() const;
+  // Request indices ordered by decreasing resolution, cubes before 2D maps of the same size.
+  std::vector<uint32_t> largest_first(std::span<const ShadowRequest> requests,
+                                      std::span<const uint32_t> indices) const;
+  bool place_changed_lights(std::span<const ShadowRequest> requests, std::span<const uint32_t> changed);
+  void repack(std::span<const ShadowRequest> requests);
+  void update_stats();
+
+  AtlasConfig config_;
+  ShadowAtlasPages pages_;
+  bool repack_pending_ = false;  // set_config() made the allocator new
+  uint64_t plans_ = 0;
+
+  std::vector<Light> lights_;
+  std::vector<uint32_t> unused_lights_;
+  std::unordered_map<uint64_t, uint32_t> light_of_key_;
+
+  // Per request of the current plan(), kept to reuse their storage.
+  static constexpr uint32_t no_light = ~0u;
+  std::vector<uint32_t> light_of_request_;
+  std::vector<uint32_t> resolution_;
+  std::vector<std::array<AtlasTile, 6>> tiles_;
+  // Per tier (0: page_size, 1: half that, ...): the 2D maps and cubes the budget holds.
+  std::vector<uint64_t> maps_per_tier_;
+  std::vector<uint64_t> cubes_per_tier_;
+
+  AtlasStats stats_;
+  BudgetEffect reported_effect_;
+  std::optional<uint64_t> last_message_plan_;
+};
+
+}  // namespace sg::shadows

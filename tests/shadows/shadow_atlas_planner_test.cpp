@@ -1,0 +1,342 @@
+// The shadow atlas planner: resolutions from importance with hysteresis, the budget, tiles that
+// persist across frames, repacking and the stats.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <vector>
+
+#include "systems/shadows/shadow_atlas_planner.h"
+
+namespace sg::shadows {
+namespace {
+
+std::vector<ShadowPlacement> plan(ShadowAtlasPlanner& planner, const std::vector<ShadowRequest>& requests) {
+  std::vector<ShadowPlacement> out(requests.size());
+  planner.plan(requests, out);
+  return out;
+}
+
+ShadowRequest map_light(uint64_t key, float importance, uint32_t max_resolution = 0) {
+  return {.key = key, .cube = false, .max_resolution = max_resolution, .importance = importance};
+}
+
+ShadowRequest cube_light(uint64_t key, float importance) {
+  return {.key = key, .cube = true, .max_resolution = 0, .importance = importance};
+}
+
+// Every tile inside a page below max_pages, aligned to its size, cube faces on one page, and no
+// two tiles overlapping (checked on a grid of min_resolution cells per page).
+void expect_valid_tiles(const AtlasConfig& config, const std::vector<ShadowRequest>& requests,
+                        const std::vector<ShadowPlacement>& placements) {
+  const uint32_t cells = config.page_size / config.min_resolution;
+  std::vector<uint8_t> used(size_t(config.max_pages) * cells * cells, 0);
+  for (size_t i = 0; i < requests.size(); ++i) {
+    const ShadowPlacement& placement = placements[i];
+    if (placement.resolution == 0) continue;
+    const size_t tiles = requests[i].cube ? 6 : 1;
+    for (size_t k = 0; k < tiles; ++k) {
+      const AtlasTile& tile = placement.tiles[k];
+      ASSERT_EQ(tile.size, placement.resolution);
+      ASSERT_LT(tile.page, config.max_pages);
+      ASSERT_EQ(tile.page, placement.tiles[0].page) << "cube faces share a page";
+      ASSERT_EQ(tile.x % tile.size, 0u);
+      ASSERT_EQ(tile.y % tile.size, 0u);
+      ASSERT_LE(tile.x + tile.size, config.page_size);
+      ASSERT_LE(tile.y + tile.size, config.page_size);
+      for (uint32_t y = tile.y / config.min_resolution; y < (tile.y + tile.size) / config.min_resolution;
+           ++y) {
+        for (uint32_t x = tile.x / config.min_resolution; x < (tile.x + tile.size) / config.min_resolution;
+             ++x) {
+          uint8_t& cell = used[(size_t(tile.page) * cells + y) * cells + x];
+          ASSERT_EQ(cell, 0) << "tiles overlap on page " << tile.page << " at cell " << x << ", " << y;
+          cell = 1;
+        }
+      }
+    }
+  }
+}
+
+TEST(ShadowAtlasPlanner, ResolutionIsImportanceRoundedToAPowerOfTwoWithinLimits) {
+  ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 64, .min_resolution = 32});
+  const std::vector<ShadowRequest> requests{
+      map_light(1, 300.0f),        map_light(2, 400.0f), map_light(3, 2000.0f, 700), map_light(4, 1.0f),
+      map_light(5, 1e9f),          cube_light(6, 1e9f),  map_light(7, 10.0f, 8),     cube_light(8, 100.0f),
+      map_light(9, std::nanf("")), map_light(10, -5.0f)};
+  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  EXPECT_EQ(out[0].resolution, 256u);
+  EXPECT_EQ(out[1].resolution, 512u);
+  EXPECT_EQ(out[2].resolution, 512u) << "max_resolution rounds down to a power of two";
+  EXPECT_EQ(out[3].resolution, 32u) << "never below min_resolution";
+  EXPECT_EQ(out[4].resolution, 4096u) << "never above the page";
+  EXPECT_EQ(out[5].resolution, 1024u) << "six faces must fit one page";
+  EXPECT_EQ(out[6].resolution, 32u) << "min_resolution wins over a smaller max_resolution";
+  EXPECT_EQ(out[7].resolution, 128u);
+  EXPECT_EQ(out[8].resolution, 32u);
+  EXPECT_EQ(out[9].resolution, 32u);
+}
+
+TEST(ShadowAtlasPlanner, SmallImportanceOscillationsKeepTheResolutionLargeOnesChangeIt) {
+  ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 4, .min_resolution = 32});
+  ASSERT_EQ(plan(planner, {map_light(1, 256.0f)})[0].resolution, 256u);
+  // 2^+-0.6 around 256 would round to 512 and 128 without hysteresis.
+  for (int frame = 0; frame < 20; ++frame) {
+    const float importance = 256.0f * std::exp2(frame % 2 ? 0.6f : -0.6f);
+    const ShadowPlacement placement = plan(planner, {map_light(1, importance)})[0];
+    EXPECT_EQ(placement.resolution, 256u) << "frame " << frame;
+    EXPECT_FALSE(placement.moved);
+  }
+  const ShadowPlacement up = plan(planner, {map_light(1, 256.0f * std::exp2(0.8f))})[0];
+  EXPECT_EQ(up.resolution, 512u);
+  EXPECT_TRUE(up.moved);
+  // Now held at 512: 2^-0.6 below it stays, a whole tier down goes.
+  EXPECT_EQ(plan(planner, {map_light(1, 512.0f * std::exp2(-0.6f))})[0].resolution, 512u);
+  EXPECT_EQ(plan(planner, {map_light(1, 256.0f)})[0].resolution, 256u);
+  EXPECT_EQ(plan(planner, {map_light(1, 2048.0f)})[0].resolution, 2048u);
+}
+
+TEST(ShadowAtlasPlanner, OverBudgetTheLeastImportantLightsDropATierFirst) {
+  const AtlasConfig config{.page_size = 1024, .max_pages = 1, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  // Eight lights that want 512 (two pages' worth), light i more important than light i - 1.
+  std::vector<ShadowRequest> requests;
+  for (uint64_t i = 0; i < 8; ++i) requests.push_back(map_light(i, 512.0f + 5.0f * float(i)));
+  std::reverse(requests.begin(), requests.end());  // the order of requests does not matter
+  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  expect_valid_tiles(config, requests, out);
+  for (size_t r = 0; r < requests.size(); ++r) {
+    EXPECT_EQ(out[r].resolution, requests[r].key >= 6 ? 512u : 256u) << "light " << requests[r].key;
+  }
+  const AtlasStats& stats = planner.stats();
+  EXPECT_EQ(stats.pages_used, 1u);
+  EXPECT_EQ(stats.texels_used, 2u * 512u * 512u + 6u * 256u * 256u);
+  EXPECT_EQ(stats.lights_per_resolution, (std::vector<std::pair<uint32_t, uint32_t>>{{512, 2}, {256, 6}}));
+  EXPECT_EQ(stats.demoted_by_budget, 6u);
+  EXPECT_EQ(stats.lights_without_shadow, 0u);
+}
+
+TEST(ShadowAtlasPlanner, OnceAllAreAtTheSmallestTileTheLeastImportantLoseTheirShadow) {
+  const AtlasConfig config{.page_size = 256, .max_pages = 1, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  // 100 lights wanting 64 where the page holds 64 tiles of 32.
+  std::vector<ShadowRequest> requests;
+  for (uint64_t i = 0; i < 100; ++i) requests.push_back(map_light(i, 64.0f + 0.1f * float(i)));
+  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  expect_valid_tiles(config, requests, out);
+  for (size_t i = 0; i < requests.size(); ++i) EXPECT_EQ(out[i].resolution, i < 36 ? 0u : 32u) << i;
+  EXPECT_EQ(planner.stats().lights_without_shadow, 36u);
+  EXPECT_EQ(planner.stats().dropped_by_budget, 36u);
+  EXPECT_EQ(planner.stats().demoted_by_budget, 64u);
+}
+
+TEST(ShadowAtlasPlanner, HundredThousandLightsAreDemotedByImportanceWithoutOverlaps) {
+  const AtlasConfig config{.page_size = 4096, .max_pages = 4, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> tiers(0.0f, 12.0f);
+  std::vector<ShadowRequest> requests;
+  for (uint64_t i = 0; i < 100'000; ++i) {
+    const float importance = std::exp2(tiers(random));
+    requests.push_back(i % 10 == 0 ? cube_light(i, importance) : map_light(i, importance));
+  }
+  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  expect_valid_tiles(config, requests, out);
+  EXPECT_GT(planner.stats().lights_without_shadow, 0u);
+  // A more important light never has a smaller map than a less important one of its kind.
+  for (const bool cube : {false, true}) {
+    std::vector<std::pair<float, uint32_t>> by_importance;
+    for (size_t i = 0; i < requests.size(); ++i) {
+      if (requests[i].cube == cube) by_importance.emplace_back(requests[i].importance, out[i].resolution);
+    }
+    std::sort(by_importance.begin(), by_importance.end());
+    for (size_t k = 1; k < by_importance.size(); ++k) {
+      ASSERT_GE(by_importance[k].second, by_importance[k - 1].second) << "cube " << cube;
+    }
+  }
+  // A second frame with every importance a little different.
+  for (ShadowRequest& request : requests) request.importance *= 1.1f;
+  expect_valid_tiles(config, requests, plan(planner, requests));
+}
+
+TEST(ShadowAtlasPlanner, UnchangedLightsKeepTheirTilesNewAndChangedOnesMove) {
+  const AtlasConfig config{.page_size = 1024, .max_pages = 4, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  std::vector<ShadowRequest> requests{map_light(1, 256.0f), cube_light(2, 64.0f), map_light(3, 512.0f),
+                                      map_light(4, 32.0f)};
+  const std::vector<ShadowPlacement> first = plan(planner, requests);
+  for (const ShadowPlacement& placement : first) EXPECT_TRUE(placement.moved);
+
+  // Reordered, with a new light and light 3 a tier down.
+  std::vector<ShadowRequest> next{map_light(5, 128.0f), map_light(4, 32.0f), map_light(3, 256.0f),
+                                  cube_light(2, 64.0f), map_light(1, 256.0f)};
+  const std::vector<ShadowPlacement> second = plan(planner, next);
+  expect_valid_tiles(config, next, second);
+  EXPECT_TRUE(second[0].moved);
+  EXPECT_FALSE(second[1].moved);
+  EXPECT_EQ(second[1].tiles, first[3].tiles);
+  EXPECT_TRUE(second[2].moved);
+  EXPECT_EQ(second[2].resolution, 256u);
+  EXPECT_FALSE(second[3].moved);
+  EXPECT_EQ(second[3].tiles, first[1].tiles);
+  EXPECT_FALSE(second[4].moved);
+  EXPECT_EQ(second[4].tiles, first[0].tiles);
+}
+
+TEST(ShadowAtlasPlanner, LightsThatVanishFreeTheirTiles) {
+  const AtlasConfig config{.page_size = 256, .max_pages = 1, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  // Four lights of 128 fill the page.
+  std::vector<ShadowRequest> requests;
+  for (uint64_t key = 0; key < 4; ++key) requests.push_back(map_light(key, 128.0f));
+  const std::vector<ShadowPlacement> first = plan(planner, requests);
+  requests[2] = map_light(9, 128.0f);
+  const std::vector<ShadowPlacement> second = plan(planner, requests);
+  EXPECT_EQ(second[2].resolution, 128u);
+  EXPECT_TRUE(second[2].moved);
+  EXPECT_EQ(second[2].tiles[0], first[2].tiles[0]) << "the new light takes the vanished one's tile";
+  for (const size_t i : {0, 1, 3}) {
+    EXPECT_FALSE(second[i].moved);
+    EXPECT_EQ(second[i].tiles, first[i].tiles);
+  }
+}
+
+TEST(ShadowAtlasPlanner, FragmentedFreeSpaceIsRepackedAndTheLightsThatMoveSaySo) {
+  const AtlasConfig config{.page_size = 256, .max_pages = 1, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  // Sixteen lights of 64 fill the page; removing those in the left column of every 128 square
+  // frees half the page, but no 128 square.
+  std::vector<ShadowRequest> requests;
+  for (uint64_t key = 0; key < 16; ++key) requests.push_back(map_light(key, 64.0f));
+  const std::vector<ShadowPlacement> full = plan(planner, requests);
+  std::map<uint64_t, AtlasTile> before;
+  std::vector<ShadowRequest> kept;
+  for (size_t i = 0; i < requests.size(); ++i) {
+    if (full[i].tiles[0].x % 128 != 0) {
+      kept.push_back(requests[i]);
+      before[requests[i].key] = full[i].tiles[0];
+    }
+  }
+  ASSERT_EQ(kept.size(), 8u);
+  ASSERT_EQ(plan(planner, kept).size(), 8u);
+  kept.push_back(map_light(100, 128.0f));
+  const std::vector<ShadowPlacement> repacked = plan(planner, kept);
+  expect_valid_tiles(config, kept, repacked);
+  EXPECT_EQ(repacked.back().resolution, 128u);
+  EXPECT_TRUE(repacked.back().moved);
+  size_t moved = 0;
+  for (size_t i = 0; i + 1 < kept.size(); ++i) {
+    EXPECT_EQ(repacked[i].resolution, 64u);
+    EXPECT_EQ(repacked[i].moved, repacked[i].tiles[0] != before[kept[i].key]) << "light " << kept[i].key;
+    moved += repacked[i].moved;
+  }
+  EXPECT_GT(moved, 0u);
+}
+
+TEST(ShadowAtlasPlanner, RandomChurnNeverOverlapsAndMovedMeansNewTiles) {
+  const AtlasConfig config{.page_size = 1024, .max_pages = 3, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  constexpr uint64_t key_count = 200;
+  std::vector<bool> active(key_count, false);
+  std::vector<float> importance(key_count);
+  for (float& value : importance) value = std::exp2(4.0f + 7.0f * unit(random));
+  std::map<uint64_t, ShadowPlacement> last;
+  size_t kept_tiles = 0;
+  for (int frame = 0; frame < 400; ++frame) {
+    std::vector<ShadowRequest> requests;
+    for (uint64_t key = 0; key < key_count; ++key) {
+      if (unit(random) < 0.03f) active[key] = !active[key];
+      if (!active[key]) continue;
+      // Mostly small drifts, now and then a jump.
+      importance[key] *=
+          unit(random) < 0.02f ? std::exp2(4.0f * unit(random) - 2.0f) : 0.95f + 0.1f * unit(random);
+      importance[key] = std::clamp(importance[key], 1.0f, 4096.0f);
+      requests.push_back({.key = key,
+                          .cube = key % 5 == 0,
+                          .max_resolution = key % 7 == 0 ? 256u : 0u,
+                          .importance = importance[key]});
+    }
+    std::shuffle(requests.begin(), requests.end(), random);
+    const std::vector<ShadowPlacement> out = plan(planner, requests);
+    expect_valid_tiles(config, requests, out);
+    if (HasFatalFailure()) return;
+
+    std::map<uint64_t, ShadowPlacement> now;
+    uint32_t pages_used = 0, without_shadow = 0;
+    uint64_t texels = 0;
+    for (size_t i = 0; i < requests.size(); ++i) {
+      const ShadowPlacement& placement = out[i];
+      now[requests[i].key] = placement;
+      if (placement.resolution == 0) {
+        ++without_shadow;
+        continue;
+      }
+      pages_used = std::max(pages_used, placement.tiles[0].page + 1);
+      texels += (requests[i].cube ? 6u : 1u) * uint64_t(placement.resolution) * placement.resolution;
+      const auto previous = last.find(requests[i].key);
+      const bool same = previous != last.end() && previous->second.resolution == placement.resolution &&
+                        previous->second.tiles == placement.tiles;
+      EXPECT_EQ(placement.moved, !same) << "frame " << frame << " light " << requests[i].key;
+      kept_tiles += same;
+    }
+    EXPECT_EQ(planner.stats().pages_used, pages_used);
+    EXPECT_EQ(planner.stats().texels_used, texels);
+    EXPECT_EQ(planner.stats().lights_without_shadow, without_shadow);
+    last = std::move(now);
+  }
+  EXPECT_GT(kept_tiles, 0u);
+}
+
+TEST(ShadowAtlasPlanner, ANewBudgetRepacksIntoIt) {
+  AtlasConfig config{.page_size = 1024, .max_pages = 4, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  std::vector<ShadowRequest> requests;
+  for (uint64_t i = 0; i < 8; ++i) requests.push_back(map_light(i, 512.0f + 5.0f * float(i)));
+  plan(planner, requests);
+  EXPECT_EQ(planner.stats().pages_used, 2u);
+
+  config.max_pages = 1;
+  planner.set_config(config);
+  const std::vector<ShadowPlacement> shrunk = plan(planner, requests);
+  expect_valid_tiles(config, requests, shrunk);
+  EXPECT_EQ(planner.stats().pages_used, 1u);
+  EXPECT_EQ(shrunk[7].resolution, 512u);
+  EXPECT_EQ(shrunk[0].resolution, 256u);
+
+  config.max_pages = 4;
+  planner.set_config(config);
+  const std::vector<ShadowPlacement> grown = plan(planner, requests);
+  expect_valid_tiles(config, requests, grown);
+  for (const ShadowPlacement& placement : grown) EXPECT_EQ(placement.resolution, 512u);
+}
+
+TEST(ShadowAtlasPlanner, BudgetMessagesAreRateLimitedAndSayWhenShadowsAreRestored) {
+  ShadowAtlasPlanner planner({.page_size = 256, .max_pages = 1, .min_resolution = 32});
+  std::vector<ShadowRequest> many;
+  for (uint64_t i = 0; i < 100; ++i) many.push_back(map_light(i, 32.0f + float(i)));
+  EXPECT_FALSE(planner.take_budget_message()) << "nothing planned yet";
+  plan(planner, many);
+  const std::optional<std::string> first = planner.take_budget_message();
+  ASSERT_TRUE(first);
+  EXPECT_NE(first->find("36 without shadow"), std::string::npos) << *first;
+  EXPECT_FALSE(planner.take_budget_message()) << "nothing changed";
+
+  // The effect changes every frame, but a line comes only once a budget_message_interval.
+  int lines = 0;
+  for (uint64_t frame = 1; frame < ShadowAtlasPlanner::budget_message_interval; ++frame) {
+    many.push_back(map_light(1000 + frame, 1.0f));
+    plan(planner, many);
+    lines += planner.take_budget_message().has_value();
+  }
+  EXPECT_EQ(lines, 0);
+  plan(planner, {map_light(1, 32.0f)});
+  const std::optional<std::string> restored = planner.take_budget_message();
+  ASSERT_TRUE(restored);
+  EXPECT_NE(restored->find("again"), std::string::npos) << *restored;
+}
+
+}  // namespace
+}  // namespace sg::shadows
