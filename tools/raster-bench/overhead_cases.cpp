@@ -42,19 +42,20 @@ void pass_overhead(Bench& bench) {
   for (const VkAttachmentLoadOp load : {VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_LOAD_OP_CLEAR}) {
     const char* op = load == VK_ATTACHMENT_LOAD_OP_LOAD ? "load" : "clear";
     progress("pass overhead: " + std::to_string(passes) + " passes, " + op);
-    bench.emit({"pass overhead",
-                std::string(op) + ", 1 triangle, " + square(size) + " layers of " + std::to_string(layers),
-                passes, "passes", Metric::microseconds_each, "us/pass",
-                time_repetitions(bench.context, bench.sizes.repetitions, setup, [&](VkCommandBuffer cmd) {
-                  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bench.pipelines.layers.get());
-                  bench.pipelines.layers_layout.push(cmd, LayerDepths{});
-                  bind_mesh(cmd, mesh);
-                  for (uint32_t pass = 0; pass < passes; ++pass) {
-                    begin_depth_pass(cmd, views[pass % layers], size, load);
-                    vkCmdDrawIndexed(cmd, 3, 1, 0, 0, 0);
-                    vkCmdEndRendering(cmd);
-                  }
-                })});
+    bench.emit(
+        {"pass overhead",
+         std::string(op) + ", 1 triangle, " + square(size) + " x " + std::to_string(layers) + " layers",
+         passes, "passes", Metric::microseconds_each, "us/pass",
+         time_repetitions(bench.context, bench.sizes.repetitions, setup, [&](VkCommandBuffer cmd) {
+           vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bench.pipelines.layers.get());
+           bench.pipelines.layers_layout.push(cmd, LayerDepths{});
+           bind_mesh(cmd, mesh);
+           for (uint32_t pass = 0; pass < passes; ++pass) {
+             begin_depth_pass(cmd, views[pass % layers], size, load);
+             vkCmdDrawIndexed(cmd, 3, 1, 0, 0, 0);
+             vkCmdEndRendering(cmd);
+           }
+         })});
   }
 }
 

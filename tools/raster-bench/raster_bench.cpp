@@ -32,13 +32,15 @@ int main(int argc, char** argv) {
       "Measures the device's depth-only raster limits: triangle rate, depth fill rate, and "
       "the cost of a pass, a draw and a small view."};
   app.add_option("--device", context_options.device_name,
-                 "Use the Vulkan device whose name contains NAME (case-insensitive)");
+                 "Use the Vulkan device whose name contains NAME (case-insensitive)")
+      ->option_text("NAME");
   app.add_flag("--validation", context_options.validation,
                "Khronos validation layer on (also SHADOWGRAPH_VALIDATION=1); slows every case");
   app.add_flag("--quick", quick, "Small sizes, a few seconds on lavapipe (the smoke test)");
-  app.add_option("--repetitions", repetitions, "Timed repetitions per row, after one warm-up (default 7)")
+  app.add_option("--repetitions", repetitions,
+                 "Timed repetitions per row, after one warm-up (default 7; 3 with --quick)")
       ->check(CLI::Range(1u, 1000u));
-  app.add_option("--csv", csv_path, "Also write the results to this CSV file");
+  app.add_option("--csv", csv_path, "Also write the results to this CSV file")->option_text("FILE");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
