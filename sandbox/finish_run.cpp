@@ -42,7 +42,21 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
     stats.passes = record.gpu_times->pass_summaries();
   }
   if (context.validation_enabled()) stats.validation_errors = context.validation_errors();
-  stats.shadow_map_bytes = frame.renderer().shadow_maps().bytes();
+  const SceneRenderer& renderer = frame.renderer();
+  const ShadowAtlas& atlas = renderer.shadow_atlas();
+  const shadows::ShadowScheduleStats& schedule = renderer.shadow_stats();
+  stats.shadow_map_bytes = atlas.bytes();
+  stats.shadows = {renderer.shadow_views() == shadows::ShadowViewPath::batched ? "batched" : "per-light",
+                   atlas.shape().budget_bytes,
+                   atlas.shape().page_size,
+                   atlas.pages(),
+                   schedule.texels_used * shadows::atlas_texel_bytes,
+                   schedule.lights_per_resolution,
+                   schedule.lights_without_shadow,
+                   schedule.lights_waiting,
+                   summarize(frame.shadow_views_rendered()),
+                   summarize(frame.shadow_views_cached()),
+                   renderer.shadow_caster_draws()};
 
   if (stats.cpu_frame_ms) {
     std::printf("shadowgraph: %llu frames, CPU frame time median %.2f ms (min %.2f, max %.2f)\n",
@@ -77,6 +91,19 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
       std::printf(" (%zu shadow passes %.3f)", shadow_passes, shadow_ms);
     }
     std::printf("\n");
+  }
+  if (stats.shadows.views_rendered) {
+    const RunStats::Shadows& s = stats.shadows;
+    constexpr double mib = 1 << 20;
+    std::printf(
+        "shadowgraph: shadows (%s views): atlas %u pages of %u (%.0f of %.0f MiB budget), tiles %.1f MiB;"
+        " lights per resolution",
+        s.views.c_str(), s.pages, s.page_size, double(stats.shadow_map_bytes) / mib,
+        double(s.budget_bytes) / mib, double(s.used_bytes) / mib);
+    for (const auto& [resolution, lights] : s.lights_per_resolution)
+      std::printf(" %u:%u", resolution, lights);
+    std::printf("; %u without shadow, %u waiting; views per frame rendered %.0f, cached %.0f (medians)\n",
+                s.lights_without_shadow, s.lights_waiting, s.views_rendered->median, s.views_cached->median);
   }
   const vk::MemoryStats memory = context.allocator().stats();
   std::printf("shadowgraph: GPU memory %.1f MiB used in %u blocks (%.1f MiB reserved)\n",

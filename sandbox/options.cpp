@@ -115,9 +115,37 @@ void add_options(CLI::App& app, Options& o) {
            o.cube_shadows =
                value == "six" ? shadows::CubeShadowMode::six_passes : shadows::CubeShadowMode::layered;
          },
-         "Point-light cube maps: layered (one pass, all six faces) or six (one pass per face)")
+         "Per-light shadow passes' point-light cubes: layered (one pass, all six faces) or six (one pass "
+         "per face)")
       ->check(CLI::IsMember({"layered", "six"}))
       ->default_str("layered");
+  app.add_option_function<std::string>(
+         "--shadow-views",
+         [&o](const std::string& value) {
+           o.shadow_views =
+               value == "per-light" ? shadows::ShadowViewPath::per_light : shadows::ShadowViewPath::batched;
+         },
+         "batched: every shadow view due in a frame culled on the GPU and drawn by a few passes; "
+         "per-light: one pass per view, casters culled on the CPU (the baseline)")
+      ->check(CLI::IsMember({"batched", "per-light"}))
+      ->default_str("batched");
+  app.add_option(
+         "--shadow-memory", o.shadow_memory_mib,
+         "Shadow atlas budget in MiB (0: an eighth of the GPU's memory, 64 to 2048); lights beyond it "
+         "lose resolution, then their shadow, least important first")
+      ->check(CLI::Range(0u, 1u << 20))
+      ->capture_default_str();
+  app.add_option("--shadow-updates", o.shadow_updates,
+                 "Shadow views (2D maps, cube faces) redrawn per frame at most, stalest first (0: every "
+                 "view due)")
+      ->check(CLI::Range(0u, 1u << 24))
+      ->capture_default_str();
+  app.add_option_function<std::string>(
+         "--shadow-cache", [&o](const std::string& value) { o.shadow_cache = value == "on"; },
+         "on: a shadow map is redrawn only when its light, or a caster in its reach, moved; off: every "
+         "map every frame")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->default_str("on");
   app.add_option_function<std::string>(
          "--lighting",
          [&o](const std::string& value) {
@@ -131,9 +159,12 @@ void add_options(CLI::App& app, Options& o) {
       ->default_str("auto");
   CLI::Option* naive = app.add_flag(
       "--naive", o.naive,
-      "The source documents' way, as a baseline: six passes per cube, every caster in every shadow "
-      "view, every light at every pixel");
-  naive->excludes("--lighting")->excludes("--cube-shadows");
+      "The source documents' way, as a baseline: a pass per shadow view and six per cube, every map "
+      "every frame, every caster in every shadow view, every light at every pixel");
+  naive->excludes("--lighting")
+      ->excludes("--cube-shadows")
+      ->excludes("--shadow-views")
+      ->excludes("--shadow-cache");
   app.add_option("--exposure", o.exposure, "Multiplies the lit colour before tone mapping")
       ->check(CLI::Range(1e-3f, 1e3f))
       ->capture_default_str();

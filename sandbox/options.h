@@ -9,6 +9,7 @@
 #include "systems/scene/camera.h"
 #include "systems/scene/shadow_settings.h"
 #include "systems/shadows/cube_shadow_mode.h"
+#include "systems/shadows/shadow_view_path.h"
 
 namespace CLI {
 class App;
@@ -37,10 +38,15 @@ struct Options {
   std::optional<scene::ShadowAlgorithm> algorithm;  // --algorithm: every light uses this one
   bool shadows = true;                              // --shadows off: no light casts a shadow
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;  // --cube-shadows layered|six
+  shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;  // --shadow-views
+  uint32_t shadow_memory_mib = 0;  // --shadow-memory: the shadow atlas's budget; 0: the device's default
+  uint32_t shadow_updates = shadows::default_shadow_view_budget;  // --shadow-updates: views redrawn a frame
+  bool shadow_cache = true;                         // --shadow-cache off: redraw every map every frame
   LightingPath lighting = LightingPath::automatic;  // --lighting auto|forward|deferred
   float exposure = 1.0f;                            // --exposure
-  // --naive: what the source documents do, the baseline to measure against: six passes per
-  // cube, every caster in every view, forward lighting of every light at every pixel.
+  // --naive: what the source documents do, the baseline to measure against: a pass per shadow
+  // view and six per cube, every map every frame, every caster in every view, forward lighting of
+  // every light at every pixel.
   bool naive = false;
   std::string dump_shadow_maps;  // --dump-shadow-maps DIR: each light's map as PNG
 };

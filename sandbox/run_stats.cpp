@@ -25,6 +25,11 @@ Json stats_json(const RunStats& stats) {
   for (const PassTime& pass : stats.passes) {
     passes.push_back({{"name", pass.name}, {"gpu_ms", summary_json(pass.gpu_ms)}});
   }
+  const RunStats::Shadows& shadows = stats.shadows;
+  Json per_resolution = Json::object();
+  for (const auto& [resolution, lights] : shadows.lights_per_resolution) {
+    per_resolution[std::to_string(resolution)] = lights;
+  }
   return {{"device", stats.device},
           {"resolution", {{"width", stats.width}, {"height", stats.height}}},
           {"frames", stats.frames},
@@ -45,7 +50,19 @@ Json stats_json(const RunStats& stats) {
           {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},
           {"passes", passes},
           {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},
-          {"shadow_map_bytes", stats.shadow_map_bytes}};
+          {"shadow_map_bytes", stats.shadow_map_bytes},
+          {"shadows",
+           {{"views", shadows.views},
+            {"budget_bytes", shadows.budget_bytes},
+            {"page_size", shadows.page_size},
+            {"pages", shadows.pages},
+            {"used_bytes", shadows.used_bytes},
+            {"lights_per_resolution", per_resolution},
+            {"lights_without_shadow", shadows.lights_without_shadow},
+            {"lights_waiting", shadows.lights_waiting},
+            {"views_rendered", summary_json(shadows.views_rendered)},
+            {"views_cached", summary_json(shadows.views_cached)},
+            {"caster_draws", shadows.caster_draws}}}};
 }
 
 }  // namespace

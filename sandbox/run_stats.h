@@ -22,7 +22,19 @@
 //   "gpu_frame_ms": {"median": ..., "min": ..., "max": ...},  // null without GPU timestamps
 //   "passes": [{"name": "lighting", "gpu_ms": {"median": ..., "min": ..., "max": ...}}],
 //   "validation_errors": 0,                      // null when the validation layer was off
-//   "shadow_map_bytes": 0                        // GPU memory holding shadow maps
+//   "shadow_map_bytes": 0,                       // GPU memory holding shadow maps (the atlas image)
+//   "shadows": {
+//     "views": "batched",                        // batched or per-light (--shadow-views)
+//     "budget_bytes": 1073741824,                // the atlas's budget (--shadow-memory)
+//     "page_size": 4096, "pages": 2,             // the atlas image: pages of page_size texels
+//     "used_bytes": 12345678,                    // what the lights' tiles take, last frame
+//     "lights_per_resolution": {"256": 10, "64": 200},  // last frame, per tile side
+//     "lights_without_shadow": 0,                // last frame: out of sight or over the budget
+//     "lights_waiting": 0,                       // last frame: have a tile, not drawn yet
+//     "views_rendered": {"median": ..., "min": ..., "max": ...},  // per frame
+//     "views_cached": {"median": ..., "min": ..., "max": ...},
+//     "caster_draws": 0                          // caster instances drawn into views, a late frame
+//   }
 // }
 #include <cstdint>
 #include <optional>
@@ -64,6 +76,20 @@ struct RunStats {
   // Unset when the validation layer was off: 0 would claim a check that never ran.
   std::optional<std::uint32_t> validation_errors;
   std::uint64_t shadow_map_bytes = 0;
+
+  struct Shadows {
+    std::string views;
+    std::uint64_t budget_bytes = 0;
+    std::uint32_t page_size = 0;
+    std::uint32_t pages = 0;
+    std::uint64_t used_bytes = 0;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> lights_per_resolution;
+    std::uint32_t lights_without_shadow = 0;
+    std::uint32_t lights_waiting = 0;
+    std::optional<TimeSummary> views_rendered;  // counts, summarized like times
+    std::optional<TimeSummary> views_cached;
+    std::uint64_t caster_draws = 0;
+  } shadows;
 };
 
 // Writes `stats` as the JSON above (indented, one trailing newline), replacing the file.

@@ -53,7 +53,14 @@ RendererSettings renderer_settings(const Options& options) {
   settings.cube_shadows = options.cube_shadows;
   settings.lighting = options.lighting;
   settings.exposure = options.exposure;
+  settings.shadow_views = options.shadow_views;
+  settings.shadow_memory_bytes = uint64_t{options.shadow_memory_mib} << 20;
+  settings.shadow_view_budget = options.shadow_updates;
+  settings.cache_shadows = options.shadow_cache;
   if (options.naive) {
+    settings.shadow_views = shadows::ShadowViewPath::per_light;
+    settings.cache_shadows = false;
+    settings.shadow_view_budget = 0;
     settings.cube_shadows = shadows::CubeShadowMode::six_passes;
     settings.cull_casters = false;
     settings.lighting = LightingPath::every_light;
@@ -80,7 +87,10 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
                           const std::optional<PresentTarget>& present) {
   update(time_seconds);
   renderer_.gather(std::as_const(scene_.scene.world));
-  renderer_.prepare(frame.slot);
+  renderer_.prepare(frame.slot, scene_.pose, scene_.lens, image_.extent().width, image_.extent().height);
+  const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
+  shadow_views_rendered_.push_back(shadows.views_rendered);
+  shadow_views_cached_.push_back(shadows.views_cached);
   declare_passes(frame.slot, present);
   execute(frame);
 }

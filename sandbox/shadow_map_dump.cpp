@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <stdexcept>
 #include <system_error>
 
@@ -43,17 +44,26 @@ void dump_shadow_maps(vk::VulkanContext& context, const SceneRenderer& renderer,
   std::filesystem::create_directories(directory, error);
   if (error) throw std::runtime_error("cannot create " + directory + ": " + error.message());
   const shadows::FrameLights& lights = renderer.lights();
-  const ShadowMapArrays& storage = renderer.shadow_maps();
+  const vk::Image& atlas = renderer.shadow_atlas().image();
   constexpr VkImageLayout sampled = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL;
   int written = 0;
+  // Each page is read once, however many tiles it holds.
+  std::map<uint32_t, vk::DepthImage> pages;
+  const auto page = [&](uint32_t layer) -> const vk::DepthImage& {
+    auto found = pages.find(layer);
+    if (found == pages.end())
+      found = pages.emplace(layer, vk::read_depth_layer(context, atlas, layer, sampled)).first;
+    return found->second;
+  };
 
   for (const shadows::ShadowMapView& map : lights.maps) {
-    const vk::DepthImage depth = vk::read_depth_layer(context, storage.maps(), map.layer, sampled);
+    if (map.resolution == 0) continue;  // no shadow in the last frame
+    const vk::DepthImage& depth = page(map.tile.page);
     const float near = map.view.near, far = map.view.far;
     const bool orthographic = map.view.orthographic;
     const std::string path = directory + "/" + file_stem(map.name) + ".png";
     write_png(path, grey_image(map.resolution, [&](uint32_t x, uint32_t y) {
-                const float d = depth.at(x, y);
+                const float d = depth.at(map.tile.x + x, map.tile.y + y);
                 if (orthographic) return d;
                 // The perspective map's stored depth back to a fraction of near..far.
                 const float view_z = near * far / (far - d * (far - near));
@@ -62,12 +72,14 @@ void dump_shadow_maps(vk::VulkanContext& context, const SceneRenderer& renderer,
     ++written;
   }
   for (const shadows::ShadowCubeView& cube : lights.cubes) {
+    if (cube.resolution == 0) continue;
     for (uint32_t face = 0; face < 6; ++face) {
-      const vk::DepthImage depth =
-          vk::read_depth_layer(context, storage.cubes(), 6 * cube.cube + face, sampled);
+      const shadows::AtlasTile& tile = cube.tiles[face];
+      const vk::DepthImage& depth = page(tile.page);
       const std::string path =
           directory + "/" + file_stem(cube.name) + "_face" + std::to_string(face) + ".png";
-      write_png(path, grey_image(depth.width, [&](uint32_t x, uint32_t y) { return depth.at(x, y); }));
+      write_png(path, grey_image(tile.size,
+                                 [&](uint32_t x, uint32_t y) { return depth.at(tile.x + x, tile.y + y); }));
       ++written;
     }
   }

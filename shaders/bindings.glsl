@@ -10,7 +10,7 @@ const int instances_binding = 0;            // scene_interface.glsl
 const int lights_binding = 1;               // lights_interface.glsl
 const int shadow_maps_binding = 2;          // lights_interface.glsl
 const int shadow_maps_compare_binding = 3;  // lights_interface.glsl
-const int shadow_cubes_binding = 4;         // lights_interface.glsl
+const int shadow_views_binding = 4;         // shadow_views.glsl
 const int cube_faces_binding = 5;           // shadow_cube_layered.vert
 const int view_instances_binding = 6;       // shadow_casters.glsl
 const int material_textures_binding = 7;    // material.glsl
@@ -25,5 +25,14 @@ const int tile_lights_binding = 13;
 const int tile_ranges_binding = 14;
 const int group_tiles_binding = 15;
 const int group_dispatch_binding = 16;
+
+// GPU-driven shadow views (shadow_views.glsl): the casters' bounds, their meshes, the culled
+// (caster, view) pairs, their counts per draw, and the indirect commands built from them.
+const int shadow_casters_binding = 17;
+const int caster_meshes_binding = 18;
+const int culled_pairs_binding = 19;
+const int draw_counts_binding = 20;
+const int shadow_draws_binding = 21;
+const int shadow_feedback_binding = 22;
 
 #endif

@@ -85,6 +85,36 @@ float cube_texel_world_size(float distance, float texel_uv) {
   return 2.0f * distance * texel_uv;
 }
 
+// Vulkan's cube-map addressing ("Cube Map Face Selection" in the specification): the face of
+// `direction`'s major axis and the point's (s, t) on it, as (s, t, face), faces +X, -X, +Y, -Y,
+// +Z, -Z numbered 0..5. Point-light faces are rendered so that this reads the texel rendered in
+// that direction (shadows/light_views.h, CubeViews), and they live as atlas tiles, so the
+// shaders select the face themselves instead of sampling a cube image.
+vec3 cube_face_uv(vec3 direction) {
+  vec3 a = abs(direction);
+  float face;
+  float sc;
+  float tc;
+  float ma;
+  if (a.x >= a.y && a.x >= a.z) {
+    face = direction.x >= 0.0f ? 0.0f : 1.0f;
+    sc = direction.x >= 0.0f ? -direction.z : direction.z;
+    tc = -direction.y;
+    ma = a.x;
+  } else if (a.y >= a.z) {
+    face = direction.y >= 0.0f ? 2.0f : 3.0f;
+    sc = direction.x;
+    tc = direction.y >= 0.0f ? direction.z : -direction.z;
+    ma = a.y;
+  } else {
+    face = direction.z >= 0.0f ? 4.0f : 5.0f;
+    sc = direction.z >= 0.0f ? direction.x : -direction.x;
+    tc = -direction.y;
+    ma = a.z;
+  }
+  return vec3(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f), face);
+}
+
 // PCG-based integer hash (Jarzynski and Olano, "Hash Functions for GPU Rendering", 2020):
 // every output bit depends on every input bit, with no floating-point precision loss.
 uvec3 pcg3d(uvec3 v) {

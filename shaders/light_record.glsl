@@ -29,11 +29,13 @@ struct Light {
   vec4 shadow_color_density;  // rgb: shadow colour sc; a: density
   vec4 shadow_bias;           // x: constant bias b0, y: slope bias b1, z: pcf radius (texels), w: light size (world units)
   uvec4 info;                 // x: type (LIGHT_*); y: falloff (FALLOFF_*); z: algorithm (SHADOW_*);
-                              // w: shadow map index (2D: atlas layer; point: cube index) or NO_SHADOW_MAP
-  vec4 shadow_rect;           // 2D maps: xy uv offset, zw uv scale of the light's square region in its layer
+                              // w: the shadow atlas layer of its map (or of all six cube faces), or NO_SHADOW_MAP
+  vec4 shadow_rect;           // xy: 2D maps' uv offset in the layer; zw: uv scale of its (each face's) tile
   vec4 shadow_depth;          // x: near, y: far, z: texel size in uv of the light's map (1/resolution),
                               // w: 0 perspective, 1 orthographic
-  mat4 shadow_matrix;         // world -> light clip space (Vulkan, depth [0,1]) for 2D maps
+  mat4 shadow_matrix;         // 2D maps: world -> light clip space (Vulkan, depth [0,1]);
+                              // point lights: columns 0..2 hold the uv offsets of faces 0..5, two a
+                              // column, column 3 the position the cube was rendered from (xyz)
 };
 
 #endif

@@ -1,19 +1,23 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Shadow-map depth pass: casters' positions into one light view's clip space. Instances through
-// the view's caster list (shadow_casters.glsl) into Instances (scene_interface.glsl). Push
-// constants: the FrameConstants block of scene_interface.glsl, of which only view_projection (bytes 0..63) is
-// read: the light view's (LightView::view_projection() or one CubeViews face). 2D maps need no
-// fragment shader; cube faces add shadow_cube.frag, which reads the world position.
+// Shadow-map depth pass of one view, one pass per view (the per-light baseline; shadow_batch.vert
+// draws every view at once): casters' positions into the light view's clip space, the pass's
+// viewport being the view's atlas tile. Instances through the view's caster list
+// (shadow_casters.glsl) into Instances (scene_interface.glsl). Push constants: the
+// FrameConstants block of scene_interface.glsl, view_projection the light view's
+// (LightView::view_projection() or one CubeViews face) and, for cube faces, camera_position the
+// light's position and far plane, handed to shadow_cube.frag. 2D maps need no fragment shader.
 #include "scene_interface.glsl"
 #include "shadow_casters.glsl"
 
 layout(location = 0) in vec3 in_position;
 
 layout(location = 0) out vec3 out_world_position;
+layout(location = 1) flat out vec4 out_light_position_far;
 
 void main() {
   vec4 world = instances[view_instances[gl_InstanceIndex]].model * vec4(in_position, 1.0);
   out_world_position = world.xyz;
+  out_light_position_far = frame.camera_position;
   gl_Position = frame.view_projection * world;
 }

@@ -1,6 +1,6 @@
 // The five per-light shadow algorithms of ../shared/ALGORITHMS.md section 4, on 2D maps (spot,
-// directional and cylinder lights: a square region of one shadow_atlas layer) and on point
-// lights' cube maps. Entry point: light_shadow_as(). Every function returns the shadow factor
+// directional and cylinder lights: a square tile of one shadow_atlas layer) and on point
+// lights' cube maps (six tiles of one layer, one per face). Entry point: light_shadow_as(). Every function returns the shadow factor
 // `shade` in [0, 1], 1 = fully shadowed; a point outside the map or beyond its far plane is lit.
 //
 // Depths are compared as *normalized linear depth*, so that a bias means the same distance
@@ -8,8 +8,7 @@
 // light_formulas.glsl), the stored depth itself for orthographic maps (linear over near..far),
 // and distance / far for cube maps, which store exactly that (shadow_cube.frag).
 //
-// Samplers (lights_interface.glsl): shadow_atlas and shadow_cubes plain reads with a NEAREST
-// sampler; shadow_atlas_compare a comparison sampler over the same image with LINEAR filtering
+// Samplers (lights_interface.glsl): shadow_atlas plain reads with a NEAREST sampler; shadow_atlas_compare a comparison sampler over the same image with LINEAR filtering
 // (each fetch is a 2x2 bilinear PCF) and VK_COMPARE_OP_LESS_OR_EQUAL (1 = lit). Every fetch has an
 // explicit level of detail, as lights are evaluated in non-uniform control flow.
 //
@@ -264,9 +263,17 @@ float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algor
 
 // ---- cube maps (point lights) ----
 
-// Stored distance / far in direction `direction` from the light.
+// Stored distance / far in direction `direction` from the light: its face's tile of the atlas
+// (light_record.glsl), held half a texel inside the tile like atlas_coord. Every kernel tap
+// selects its own face, so kernels straddling a cube edge read the neighbouring face's texels.
 float fetch_cube_depth(Light light, vec3 direction) {
-  return textureLod(shadow_cubes, vec4(direction, float(light.info.w)), 0.0).r;
+  vec3 face_uv = cube_face_uv(direction);
+  int face = int(face_uv.z);
+  vec4 pair = light.shadow_matrix[face >> 1];
+  vec2 origin = (face & 1) == 0 ? pair.xy : pair.zw;
+  float half_texel = 0.5 * light.shadow_depth.z;
+  vec2 inside = clamp(face_uv.xy, vec2(half_texel), vec2(1.0 - half_texel));
+  return textureLod(shadow_atlas, vec3(origin + inside * light.shadow_rect.zw, float(light.info.w)), 0.0).r;
 }
 
 float cube_occluded(Light light, vec3 direction, float reference) {
@@ -335,7 +342,8 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, vec3 world_pos)
 
 float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
   CubeReceiver r;
-  r.to_fragment = world_pos - light.position_range.xyz;
+  // From where the cube was rendered, which lags the light while its map is cached.
+  r.to_fragment = world_pos - light.shadow_matrix[3].xyz;
   r.distance = length(r.to_fragment);
   r.normal = normal;
   // A texel holds the distance in the direction of its centre: across one texel a tilted

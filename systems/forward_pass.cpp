@@ -10,7 +10,7 @@
 #include "systems/gpu_textures.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/shader_bindings.h"
-#include "systems/shadow_map_arrays.h"
+#include "systems/shadow_atlas.h"
 
 namespace sg {
 namespace {
@@ -40,26 +40,23 @@ ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
 }
 
 void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer& lights,
-                          const ShadowMapArrays& shadow_maps) {
-  const vk::Image& maps = shadow_maps.maps();
-  const vk::Image& cubes = shadow_maps.cubes();
-  const VkImageView maps_view = maps.views().get({0, 1, 0, maps.array_layers(), VK_IMAGE_VIEW_TYPE_2D_ARRAY});
-  const VkImageView cubes_view =
-      cubes.views().get({0, 1, 0, cubes.array_layers(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY});
+                          const ShadowAtlas& shadow_atlas) {
+  const vk::Image& atlas = shadow_atlas.image();
+  const VkImageView atlas_view =
+      atlas.views().get({0, 1, 0, atlas.array_layers(), VK_IMAGE_VIEW_TYPE_2D_ARRAY});
   vk::DescriptorWriter writer = layout_.write(slot_sets_.sets[slot]);
   writer.buffer(instances_binding, scene.instances(slot).handle());
-  light_resources_.write(writer, lights.handle(), maps_view, cubes_view).update();
+  light_resources_.write(writer, lights.handle(), atlas_view).update();
 }
 
 ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height,
-                                   rg::ImageHandle maps, rg::ImageHandle cubes, const GpuScene& scene,
-                                   uint32_t slot, const FrameConstants& constants) const {
+                                   rg::ImageHandle atlas, const GpuScene& scene, uint32_t slot,
+                                   const FrameConstants& constants) const {
   ForwardTargets targets;
   graph.add_pass(
       "forward",
       [&](rg::PassBuilder& b) {
-        b.read(maps, rg::Usage::sampled_fragment);
-        b.read(cubes, rg::Usage::sampled_fragment);
+        b.read(atlas, rg::Usage::sampled_fragment);
         targets.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
                                 rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
         targets.lit_sum =

@@ -19,7 +19,7 @@ namespace sg {
 
 class GpuScene;
 class GpuTextures;
-class ShadowMapArrays;
+class ShadowAtlas;
 
 struct ForwardTargets {
   rg::ImageHandle lit_sum;  // linear HDR colour (rgba32f), for tone mapping
@@ -36,14 +36,13 @@ class ForwardPass {
   // CPU side of a frame, after FrameRing::begin_frame returned `slot`: points the slot's
   // descriptor set at this frame's instances, light records and shadow images.
   void prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer& lights,
-               const ShadowMapArrays& shadow_maps);
+               const ShadowAtlas& shadow_atlas);
 
-  // Adds the pass: samples `maps` and `cubes` (the shadow images' newest versions), draws every
+  // Adds the pass: samples `atlas` (the shadow atlas's newest version), draws every
   // instance into a new lit sum and depth buffer of `width` x `height`. `scene` is read when the
   // pass records.
-  ForwardTargets add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height, rg::ImageHandle maps,
-                        rg::ImageHandle cubes, const GpuScene& scene, uint32_t slot,
-                        const FrameConstants& constants) const;
+  ForwardTargets add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height, rg::ImageHandle atlas,
+                        const GpuScene& scene, uint32_t slot, const FrameConstants& constants) const;
 
  private:
   LightResources light_resources_;

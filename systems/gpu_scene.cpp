@@ -64,7 +64,8 @@ void GpuScene::gather(const ecs::World& world) {
       [&](ecs::Entity entity, const ecs::WorldTransform& transform, const scene::MeshInstance& mesh) {
         const scene::Material* found = world.try_get<scene::Material>(entity);
         const scene::Material& material = found ? *found : default_material;
-        items_.push_back({mesh.mesh, mesh.casts_shadow, static_cast<uint32_t>(gathered_.size())});
+        items_.push_back({mesh.mesh, mesh.casts_shadow, static_cast<uint32_t>(gathered_.size()),
+                          uint64_t{entity.generation} << 32 | entity.index});
         gathered_.push_back(
             {transform.matrix, glm::inverseTranspose(transform.matrix),
              glm::vec4(glm::vec3(material.base_color), material.specular),
@@ -79,6 +80,7 @@ void GpuScene::gather(const ecs::World& world) {
 
   sorted_.clear();
   bounds_.clear();
+  keys_.clear();
   scene_bounds_ = {};
   commands_.clear();
   caster_groups_.clear();
@@ -94,6 +96,7 @@ void GpuScene::gather(const ecs::World& world) {
       const GpuInstance& instance = gathered_[items_[i].index];
       sorted_.push_back(instance);
       bounds_.push_back(scene::transformed(range.bounds, instance.model));
+      keys_.push_back(items_[i].key);
       scene::grow(scene_bounds_, bounds_.back());
     }
     if (range.index_count > 0) {

@@ -73,6 +73,8 @@ class GpuScene {
   std::span<const VkDrawIndexedIndirectCommand> caster_groups() const { return caster_groups_; }
   // World-space bounds of every instance, in instance-buffer order, and of all of them.
   std::span<const scene::Aabb> instance_bounds() const { return bounds_; }
+  // The entity of every instance, in instance-buffer order, as uint64_t{generation} << 32 | index.
+  std::span<const uint64_t> instance_keys() const { return keys_; }
   const scene::Aabb& bounds() const { return scene_bounds_; }
 
  private:
@@ -87,11 +89,13 @@ class GpuScene {
     uint32_t mesh;
     bool caster;
     uint32_t index;  // into gathered_
+    uint64_t key;
   };
   std::vector<Item> items_;
   std::vector<GpuInstance> gathered_;
   std::vector<GpuInstance> sorted_;
   std::vector<scene::Aabb> bounds_;
+  std::vector<uint64_t> keys_;
   scene::Aabb scene_bounds_;
   std::vector<VkDrawIndexedIndirectCommand> commands_;
   std::vector<VkDrawIndexedIndirectCommand> caster_groups_;

@@ -4,14 +4,14 @@
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "systems/shader_bindings.h"
-#include "systems/shadow_map_arrays.h"
+#include "systems/shadow_atlas.h"
 
 namespace sg {
 namespace {
 
 VkFilter compare_filter(const vk::VulkanContext& context) {
   VkFormatProperties properties;
-  vkGetPhysicalDeviceFormatProperties(context.physical_device(), vk::to_vk(ShadowMapArrays::depth_format),
+  vkGetPhysicalDeviceFormatProperties(context.physical_device(), vk::to_vk(ShadowAtlas::depth_format),
                                       &properties);
   const bool filterable =
       properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
@@ -30,25 +30,21 @@ std::vector<VkDescriptorSetLayoutBinding> LightResources::bindings(
   more.insert(more.begin(),
               {{lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages},
                {shadow_maps_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages},
-               {shadow_maps_compare_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages},
-               {shadow_cubes_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages}});
+               {shadow_maps_compare_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages}});
   return more;
 }
 
-vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBuffer lights, VkImageView maps,
-                                            VkImageView cubes) const {
+vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBuffer lights,
+                                            VkImageView atlas) const {
   using namespace bindings;
   return writer.buffer(lights_binding, lights)
-      .image(shadow_maps_binding, maps, nearest_.get())
-      .image(shadow_maps_compare_binding, maps, compare_.get())
-      .image(shadow_cubes_binding, cubes, nearest_.get());
+      .image(shadow_maps_binding, atlas, nearest_.get())
+      .image(shadow_maps_compare_binding, atlas, compare_.get());
 }
 
 vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBuffer lights,
-                                            const vk::PassRecorder& rec, rg::ImageHandle maps,
-                                            rg::ImageHandle cubes) const {
-  return write(writer, lights, rec.view(maps, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY),
-               rec.view(cubes, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_CUBE_ARRAY));
+                                            const vk::PassRecorder& rec, rg::ImageHandle atlas) const {
+  return write(writer, lights, rec.view(atlas, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY));
 }
 
 }  // namespace sg

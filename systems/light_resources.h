@@ -1,6 +1,6 @@
 #pragma once
 // What every pass that shades lights binds (shaders/lights_interface.glsl): the frame's light
-// records and the shadow images, with the samplers shadow_sampling.glsl expects. Nearest reads,
+// records and the shadow atlas, with the samplers shadow_sampling.glsl expects. Nearest reads,
 // and a comparison sampler whose linear filter makes each fetch a hardware 2x2 PCF (nearest
 // where the device cannot filter the depth format).
 #include <vector>
@@ -26,12 +26,11 @@ class LightResources {
   static std::vector<VkDescriptorSetLayoutBinding> bindings(VkShaderStageFlags stages,
                                                             std::vector<VkDescriptorSetLayoutBinding> more);
 
-  // Writes the records and views of `maps` (a 2D array view) and `cubes` (a cube array view).
-  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBuffer lights, VkImageView maps,
-                              VkImageView cubes) const;
-  // The same inside a pass that declared the shadow images `maps` and `cubes` of its graph.
+  // Writes the records and the shadow atlas (`atlas`, a 2D array view of every page).
+  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBuffer lights, VkImageView atlas) const;
+  // The same inside a pass that declared the shadow atlas `atlas` of its graph.
   vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBuffer lights, const vk::PassRecorder& rec,
-                              rg::ImageHandle maps, rg::ImageHandle cubes) const;
+                              rg::ImageHandle atlas) const;
 
  private:
   vk::UniqueSampler nearest_;

@@ -1,5 +1,7 @@
 #include "systems/scene_renderer.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <span>
 
 #include "systems/camera.h"
@@ -22,10 +24,15 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       lighting_(settings.lighting == LightingPath::automatic ? fastest_lighting : settings.lighting),
       gpu_scene_(context, scene.meshes, frames_in_flight),
       textures_(context, scene.textures),
-      shadow_maps_(context),
-      shadow_passes_(context, frames_in_flight),
+      atlas_(context, settings.shadow_memory_bytes),
+      schedule_({atlas_.shape().page_size, atlas_.shape().max_pages, shadows::min_shadow_resolution}),
       tone_map_(context, frame_format),
       light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light records") {
+  if (settings.shadow_views == shadows::ShadowViewPath::batched && ShadowViewBatch::supported(context)) {
+    batch_.emplace(context, frames_in_flight);
+  } else {
+    per_light_.emplace(context, frames_in_flight);
+  }
   switch (lighting_) {
     case LightingPath::every_light: every_light_.emplace(context, frames_in_flight, textures_); break;
     case LightingPath::forward:
@@ -44,14 +51,44 @@ void SceneRenderer::gather(const ecs::World& world) {
   shadows::gather_lights(world, gpu_scene_.bounds(), settings_.lights, lights_);
 }
 
-void SceneRenderer::prepare(uint32_t slot) {
-  shadow_maps_.fit(shadows::needed_storage(lights_));
-  shadows::place_shadow_maps(lights_, shadow_maps_.size().maps.resolution,
-                             shadow_maps_.size().cubes.resolution);
+void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens,
+                            uint32_t width, uint32_t height) {
+  if (!settings_.cache_shadows) schedule_.invalidate_all();
+  if (batch_ && !batch_->all_casters_kept(slot)) {
+    std::printf(
+        "shadowgraph: shadow views kept more casters than fit; the buffer grows and every map is redrawn\n");
+    schedule_.invalidate_all();
+  }
+  casters_.clear();
+  const std::span<const scene::Aabb> bounds = gpu_scene_.instance_bounds();
+  const std::span<const uint64_t> keys = gpu_scene_.instance_keys();
+  for (const VkDrawIndexedIndirectCommand& group : gpu_scene_.caster_groups()) {
+    for (uint32_t i = group.firstInstance; i < group.firstInstance + group.instanceCount; ++i) {
+      casters_.push_back({keys[i], bounds[i]});
+    }
+  }
+  const float aspect = float(width) / float(std::max(height, 1u));
+  const shadows::ShadowCamera camera{pose.eye, projection_matrix(lens, aspect) * view_matrix(pose),
+                                     float(height) / lens.yfov};
+  schedule_.schedule(lights_, camera, casters_, settings_.shadow_view_budget);
+  if (atlas_.fit(schedule_.pages_used())) {
+    // A new image holds nothing: every map is drawn again, this frame.
+    schedule_.invalidate_all();
+    schedule_.schedule(lights_, camera, casters_, settings_.shadow_view_budget);
+  }
+  if (std::optional<std::string> message = schedule_.take_budget_message()) {
+    std::printf("shadowgraph: %s\n", message->c_str());
+  }
+  shadows::sort_by_group(lights_);
+
   gpu_scene_.upload(slot);
   const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
-  shadow_passes_.prepare(slot, lights_, gpu_scene_, settings_.cube_shadows, settings_.cull_casters);
-  if (every_light_) every_light_->prepare(slot, gpu_scene_, records, shadow_maps_);
+  const uint32_t page_size = atlas_.shape().page_size;
+  if (batch_) batch_->prepare(slot, lights_, gpu_scene_, page_size);
+  if (per_light_) {
+    per_light_->prepare(slot, lights_, gpu_scene_, page_size, settings_.cube_shadows, settings_.cull_casters);
+  }
+  if (every_light_) every_light_->prepare(slot, gpu_scene_, records, atlas_);
   if (tiled_forward_) tiled_forward_->forward.prepare(lights_.group_begin);
   if (deferred_) {
     deferred_->gbuffer.prepare(slot, gpu_scene_);
@@ -62,9 +99,9 @@ void SceneRenderer::prepare(uint32_t slot) {
 RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports& imports,
                                         rg::ImageHandle frame, uint32_t slot, const scene::CameraPose& pose,
                                         const scene::Camera& lens) {
-  ShadowPasses::Targets shadows{imports.import_image(graph, "shadow maps", shadow_maps_.maps(), sampled),
-                                imports.import_image(graph, "shadow cubes", shadow_maps_.cubes(), sampled)};
-  shadows = shadow_passes_.add_to(graph, shadows, lights_, gpu_scene_, slot, settings_.cube_shadows);
+  rg::ImageHandle atlas = imports.import_image(graph, "shadow atlas", atlas_.image(), sampled);
+  atlas = batch_ ? batch_->add_to(graph, atlas, gpu_scene_, slot)
+                 : per_light_->add_to(graph, atlas, lights_, gpu_scene_, slot, settings_.cube_shadows);
 
   const rg::ImageDesc& target = graph.resources()[frame.index].image;
   const glm::mat4 view_projection =
@@ -78,8 +115,8 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
   rg::ImageHandle lit_sum;
   rg::ImageHandle depth;
   if (every_light_) {
-    const ForwardTargets lit = every_light_->add_to(graph, target.width, target.height, shadows.maps,
-                                                    shadows.cubes, gpu_scene_, slot, constants);
+    const ForwardTargets lit =
+        every_light_->add_to(graph, target.width, target.height, atlas, gpu_scene_, slot, constants);
     lit_sum = lit.lit_sum;
     depth = lit.depth;
   } else if (tiled_forward_) {
@@ -87,20 +124,22 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
                                                       constants);
     const LightTiles tiles =
         tiled_forward_->light_tiles.add_to(graph, depth, records, light_count, view_projection);
-    lit_sum =
-        tiled_forward_->forward
-            .add_to(graph, depth, tiles, shadows.maps, shadows.cubes, records, gpu_scene_, slot, constants)
-            .lit_sum;
+    lit_sum = tiled_forward_->forward.add_to(graph, depth, tiles, atlas, records, gpu_scene_, slot, constants)
+                  .lit_sum;
   } else {
     const GBuffer gbuffer =
         deferred_->gbuffer.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
     const LightTiles tiles =
         deferred_->light_tiles.add_to(graph, gbuffer.depth, records, light_count, view_projection);
-    lit_sum = deferred_->lighting.add_to(graph, gbuffer, tiles, shadows.maps, shadows.cubes, records,
-                                         lights_.group_begin, pose.eye);
+    lit_sum =
+        deferred_->lighting.add_to(graph, gbuffer, tiles, atlas, records, lights_.group_begin, pose.eye);
     depth = gbuffer.depth;
   }
   return {tone_map_.add_to(graph, lit_sum, frame, settings_.exposure), depth};
+}
+
+uint64_t SceneRenderer::shadow_caster_draws() const {
+  return batch_ ? batch_->kept_pairs() : per_light_->kept_casters();
 }
 
 }  // namespace sg

@@ -1,15 +1,15 @@
 #pragma once
-// Renders an ECS scene through the render graph: the shadow maps of every shadow-casting light,
-// the lighting (lighting_path.h), then exposure and tone mapping into the frame. It
-// takes three of the frame's phases (SandboxFrame::record names all five):
+// Renders an ECS scene through the render graph: the shadow maps due this frame, the lighting
+// (lighting_path.h), then exposure and tone mapping into the frame. It takes three of the
+// frame's phases (SandboxFrame::record names all five):
 //
-//   renderer.gather(world);          // read the world: drawables and lights, on the CPU
-//   renderer.prepare(slot);          // shadow storage, caster culling, this slot's GPU buffers
+//   renderer.gather(world);                       // read the world: drawables and lights, on the CPU
+//   renderer.prepare(slot, pose, lens, w, h);     // shadow tiles and caching, this slot's GPU buffers
 //   RenderedFrame f = renderer.add_passes(graph, imports, frame, slot, pose, lens);
 //
 // `frame` is any colour image of a format given at construction (imported or transient); the
 // returned handles let later passes (overlays, copies, presentation) read the results. The
-// shadow images are imported through `imports` as "shadow maps" and "shadow cubes".
+// shadow atlas is imported through `imports` as "shadow atlas".
 #include <cstdint>
 #include <optional>
 
@@ -25,10 +25,13 @@
 #include "systems/lighting_path.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
-#include "systems/shadow_map_arrays.h"
+#include "systems/shadow_atlas.h"
 #include "systems/shadow_passes.h"
+#include "systems/shadow_view_batch.h"
 #include "systems/shadows/cube_shadow_mode.h"
 #include "systems/shadows/frame_lights.h"
+#include "systems/shadows/shadow_schedule.h"
+#include "systems/shadows/shadow_view_path.h"
 #include "systems/tiled_forward_pass.h"
 #include "systems/tiled_lighting_pass.h"
 #include "systems/tone_map_pass.h"
@@ -44,7 +47,12 @@ struct RendererSettings {
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
   LightingPath lighting = LightingPath::automatic;
   bool cull_casters = true;  // off: every shadow view draws every caster (the naive baseline)
-  float exposure = 1.0f;     // multiplies the lit sum before tone mapping
+  // Batched falls back to per-light where the device cannot draw views into atlas layers at once.
+  shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;
+  uint64_t shadow_memory_bytes = 0;  // the atlas's budget; 0: the device's default
+  uint32_t shadow_view_budget = shadows::default_shadow_view_budget;  // views redrawn a frame; 0: all due
+  bool cache_shadows = true;  // off: every map is redrawn every frame (within the view budget)
+  float exposure = 1.0f;      // multiplies the lit sum before tone mapping
 };
 
 struct RenderedFrame {
@@ -64,9 +72,12 @@ class SceneRenderer {
 
   // Reads the world's drawables and lights into CPU lists. Transforms must be up to date.
   void gather(const ecs::World& world);
-  // Fits the shadow storage to the gathered lights and writes everything the frame's passes read
-  // into the slot's buffers and descriptor sets. Call after FrameRing::begin_frame gave `slot`.
-  void prepare(uint32_t slot);
+  // Gives the gathered lights their shadow tiles (their importance measured from the camera
+  // `pose` and `lens` on a `width` x `height` frame), decides which maps are redrawn, and writes
+  // everything the frame's passes read into the slot's buffers and descriptor sets. Call after
+  // FrameRing::begin_frame gave `slot`.
+  void prepare(uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens, uint32_t width,
+               uint32_t height);
   // Declares the shadow passes, the lighting and the tone mapping into `frame`.
   RenderedFrame add_passes(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHandle frame,
                            uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens);
@@ -75,7 +86,15 @@ class SceneRenderer {
   LightingPath lighting() const { return lighting_; }
   const GpuScene& gpu_scene() const { return gpu_scene_; }
   const shadows::FrameLights& lights() const { return lights_; }
-  const ShadowMapArrays& shadow_maps() const { return shadow_maps_; }
+  const ShadowAtlas& shadow_atlas() const { return atlas_; }
+  const shadows::ShadowScheduleStats& shadow_stats() const { return schedule_.stats(); }
+  // The path in use: the settings' one, or per-light where batching is not supported.
+  shadows::ShadowViewPath shadow_views() const {
+    return batch_ ? shadows::ShadowViewPath::batched : shadows::ShadowViewPath::per_light;
+  }
+  // Caster instances drawn into shadow views: the batch's count (read back a few frames late) or
+  // the per-light passes' CPU culling.
+  uint64_t shadow_caster_draws() const;
   const RendererSettings& settings() const { return settings_; }
 
  private:
@@ -83,8 +102,11 @@ class SceneRenderer {
   LightingPath lighting_;
   GpuScene gpu_scene_;
   GpuTextures textures_;
-  ShadowMapArrays shadow_maps_;
-  ShadowPasses shadow_passes_;
+  ShadowAtlas atlas_;
+  shadows::ShadowSchedule schedule_;
+  std::optional<ShadowViewBatch> batch_;
+  std::optional<ShadowPasses> per_light_;
+  std::vector<shadows::CasterBounds> casters_;
   // The passes of the path in use only: a CPU driver compiles a pipeline slowly.
   struct TiledForward {
     TiledForwardPass forward;

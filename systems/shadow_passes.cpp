@@ -1,6 +1,8 @@
 #include "systems/shadow_passes.h"
 
+#include <array>
 #include <cstring>
+#include <initializer_list>
 #include <span>
 
 #include "rendergraph/device/context.h"
@@ -13,12 +15,14 @@
 #include "systems/gpu_scene.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/shader_bindings.h"
-#include "systems/shadow_map_arrays.h"
+#include "systems/shadow_atlas.h"
+#include "systems/shadows/atlas_tile_coords.h"
 
 namespace sg {
 namespace {
 
 using namespace bindings;
+using shadows::AtlasTile;
 using shadows::CubeShadowMode;
 using shadows::FrameLights;
 using shadows::ShadowCubeView;
@@ -26,13 +30,30 @@ using shadows::ShadowMapView;
 
 constexpr VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
-// shadow_map.vert reads bytes 0..63 (the view-projection), shadow_cube.frag bytes 64..79.
+// shadow_map.vert reads view_projection; cube faces hand light_position_far to shadow_cube.frag.
 struct PassConstants {
   glm::mat4 view_projection;
   glm::vec4 light_position_far;
 };
 
-constexpr VkDeviceSize cube_faces_bytes = 6 * sizeof(glm::mat4);
+// shadow_cube_layered.vert's CubeFaces block (std140).
+struct CubeFaces {
+  std::array<glm::mat4, 6> view_projection;
+  std::array<glm::vec4, 6> tile;  // clip xy -> the layer's: xy scale, zw offset
+};
+
+VkRect2D tile_rect(const AtlasTile& tile) {
+  return {{int32_t(tile.x), int32_t(tile.y)}, {tile.size, tile.size}};
+}
+
+// Clears `tiles` of the pass's single-layer attachment to the far plane.
+void clear_tiles(VkCommandBuffer cmd, std::initializer_list<AtlasTile> tiles) {
+  const VkClearAttachment far{VK_IMAGE_ASPECT_DEPTH_BIT, 0, {.depthStencil = {1.0f, 0}}};
+  std::array<VkClearRect, 6> rects{};
+  uint32_t count = 0;
+  for (const AtlasTile& tile : tiles) rects[count++] = {tile_rect(tile), 0, 1};
+  vkCmdClearAttachments(cmd, 1, &far, count, rects.data());
+}
 
 }  // namespace
 
@@ -44,13 +65,13 @@ ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight
               vk::push_constants<PassConstants>(stages)),
       slot_sets_(layout_.allocate_sets(frames_in_flight)),
       casters_(context, frames_in_flight),
-      cube_faces_(context, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frames_in_flight, "cube face matrices") {
+      cube_faces_(context, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frames_in_flight, "cube faces") {
   const VkDeviceSize alignment = context.properties().limits.minUniformBufferOffsetAlignment;
-  cube_faces_stride_ = (cube_faces_bytes + alignment - 1) / alignment * alignment;
+  cube_faces_stride_ = (sizeof(CubeFaces) + alignment - 1) / alignment * alignment;
 
   vk::GraphicsPipelineDesc desc;
   scene_vertex_input(desc, false);
-  desc.depth_format = vk::to_vk(ShadowMapArrays::depth_format);
+  desc.depth_format = vk::to_vk(ShadowAtlas::depth_format);
   // Receivers apply each light's own bias (ALGORITHMS.md section 4), so casters are drawn as
   // they are, both faces: thin and open meshes cast too.
   desc.cull_mode = VK_CULL_MODE_NONE;
@@ -61,17 +82,15 @@ ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight
   desc.fragment_spirv = shadow_cube_frag;
   desc.name = "shadow cube face";
   face_pipeline_ = vk::create_graphics_pipeline(context, desc);
-  if (context.optional_features().shader_output_layer) {
-    desc.vertex_spirv = shadow_cube_layered_vert;
-    desc.name = "shadow cube layered";
-    layered_pipeline_ = vk::create_graphics_pipeline(context, desc);
-  }
+  desc.vertex_spirv = shadow_cube_layered_vert;
+  desc.name = "shadow cube layered";
+  layered_pipeline_ = vk::create_graphics_pipeline(context, desc);
 }
 
 void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuScene& scene,
-                           CubeShadowMode mode, bool cull_casters) {
+                           uint32_t page_size, CubeShadowMode mode, bool cull_casters) {
   constexpr glm::vec4 everywhere{0.0f, 0.0f, 0.0f, -1.0f};  // a view with no reach keeps every caster
-  // Grid cells as large as the lights' mean reach (views without one do not use the grid).
+  // Grid cells as large as the rendered lights' mean reach (views without one do not use the grid).
   float reach_sum = 0.0f;
   uint32_t bounded = 0;
   const auto add_reach = [&](const glm::vec4& reach) {
@@ -79,30 +98,41 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
     reach_sum += reach.w;
     ++bounded;
   };
-  for (const ShadowMapView& map : lights.maps) add_reach(map.reach);
-  for (const ShadowCubeView& cube : lights.cubes) add_reach(cube.position_far);
-  casters_.begin_frame(scene, bounded > 0 ? reach_sum / float(bounded) : 0.0f);
-  map_casters_.clear();
   for (const ShadowMapView& map : lights.maps) {
-    map_casters_.push_back(casters_.add_view(scene, cull_casters ? map.reach : everywhere, 1));
+    if (map.render) add_reach(map.reach);
   }
-  const uint32_t copies = mode == CubeShadowMode::layered && layered_supported() ? 6 : 1;
-  cube_casters_.clear();
   for (const ShadowCubeView& cube : lights.cubes) {
-    cube_casters_.push_back(casters_.add_view(scene, cull_casters ? cube.position_far : everywhere, copies));
+    if (cube.render) add_reach(cube.position_far);
+  }
+  casters_.begin_frame(scene, bounded > 0 ? reach_sum / float(bounded) : 0.0f);
+  map_casters_.assign(lights.maps.size(), CasterView{});
+  for (size_t m = 0; m < lights.maps.size(); ++m) {
+    const ShadowMapView& map = lights.maps[m];
+    if (map.render) map_casters_[m] = casters_.add_view(scene, cull_casters ? map.reach : everywhere, 1);
+  }
+  const uint32_t copies = mode == CubeShadowMode::layered ? 6 : 1;
+  cube_casters_.assign(lights.cubes.size(), CasterView{});
+  for (size_t c = 0; c < lights.cubes.size(); ++c) {
+    const ShadowCubeView& cube = lights.cubes[c];
+    if (cube.render) {
+      cube_casters_[c] = casters_.add_view(scene, cull_casters ? cube.position_far : everywhere, copies);
+    }
   }
   casters_.upload(slot);
 
   cube_faces_scratch_.assign(std::max<size_t>(1, lights.cubes.size()) * cube_faces_stride_, std::byte{0});
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
-    std::memcpy(cube_faces_scratch_.data() + c * cube_faces_stride_,
-                lights.cubes[c].views.view_projection.data(), cube_faces_bytes);
+    const ShadowCubeView& cube = lights.cubes[c];
+    if (!cube.render) continue;
+    CubeFaces faces{cube.views.view_projection, {}};
+    for (int f = 0; f < 6; ++f) faces.tile[f] = shadows::tile_clip_transform(cube.tiles[f], page_size);
+    std::memcpy(cube_faces_scratch_.data() + c * cube_faces_stride_, &faces, sizeof(faces));
   }
   const vk::Buffer& faces = cube_faces_.write(slot, std::span<const std::byte>(cube_faces_scratch_));
 
   layout_.write(slot_sets_.sets[slot])
       .buffer(instances_binding, scene.instances(slot).handle())
-      .buffer(cube_faces_binding, faces.handle(), 0, cube_faces_bytes)
+      .buffer(cube_faces_binding, faces.handle(), 0, sizeof(CubeFaces))
       .buffer(view_instances_binding, casters_.ids(slot).handle())
       .update();
 }
@@ -117,59 +147,53 @@ void ShadowPasses::draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline p
   casters_.draw(cmd, slot, view);
 }
 
-ShadowPasses::Targets ShadowPasses::add_to(rg::RenderGraph& graph, Targets targets, const FrameLights& lights,
-                                           const GpuScene& scene, uint32_t slot, CubeShadowMode mode) const {
-  const rg::ClearValue far = rg::ClearValue::depth_of(1.0f);
+rg::ImageHandle ShadowPasses::add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, const FrameLights& lights,
+                                     const GpuScene& scene, uint32_t slot, CubeShadowMode mode) const {
+  // Each pass keeps its layer (other lights' tiles) and clears only its own tiles.
+  const auto write_layer = [&](uint32_t page) {
+    return [&atlas, page](rg::PassBuilder& b) {
+      atlas = b.write(atlas, rg::Usage::depth_attachment, rg::SubresourceRange::layer(page));
+    };
+  };
   for (size_t m = 0; m < lights.maps.size(); ++m) {
     const ShadowMapView& map = lights.maps[m];
-    const CasterView view = map_casters_[m];
-    graph.add_pass(
-        map.name,
-        [&](rg::PassBuilder& b) {
-          targets.maps =
-              b.write(targets.maps, rg::Usage::depth_attachment, far, rg::SubresourceRange::layer(map.layer));
-        },
-        [this, &map, &scene, slot, view](const vk::PassRecorder& rec) {
-          rec.set_viewport({{0, 0}, {map.resolution, map.resolution}});  // the light's square
-          draw_casters(rec.cmd(), slot, map_pipeline_.get(), map.view.view_projection(), glm::vec4(0.0f), 0,
-                       scene, view);
-        });
+    if (!map.render) continue;
+    graph.add_pass(map.name, write_layer(map.tile.page),
+                   [this, &map, &scene, slot, view = map_casters_[m]](const vk::PassRecorder& rec) {
+                     clear_tiles(rec.cmd(), {map.tile});
+                     rec.set_viewport(tile_rect(map.tile));
+                     draw_casters(rec.cmd(), slot, map_pipeline_.get(), map.view.view_projection(),
+                                  glm::vec4(0.0f), 0, scene, view);
+                   });
   }
 
-  const bool layered = mode == CubeShadowMode::layered && layered_supported();
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
     const ShadowCubeView& cube = lights.cubes[c];
+    if (!cube.render) continue;
     const CasterView view = cube_casters_[c];
-    const auto faces_offset = static_cast<uint32_t>(cube.cube * cube_faces_stride_);
-    if (layered) {
-      graph.add_pass(
-          cube.name,
-          [&](rg::PassBuilder& b) {
-            targets.cubes = b.write(targets.cubes, rg::Usage::depth_attachment, far,
-                                    rg::SubresourceRange::cube(cube.cube));
-          },
-          [this, &cube, &scene, slot, faces_offset, view](const vk::PassRecorder& rec) {
-            rec.set_full_viewport();
-            draw_casters(rec.cmd(), slot, layered_pipeline_.get(), glm::mat4(1.0f), cube.position_far,
-                         faces_offset, scene, view);
-          });
+    const auto faces_offset = static_cast<uint32_t>(c * cube_faces_stride_);
+    if (mode == CubeShadowMode::layered) {
+      graph.add_pass(cube.name, write_layer(cube.tiles[0].page),
+                     [this, &cube, &scene, slot, faces_offset, view](const vk::PassRecorder& rec) {
+                       const auto& t = cube.tiles;
+                       clear_tiles(rec.cmd(), {t[0], t[1], t[2], t[3], t[4], t[5]});
+                       rec.set_full_viewport();
+                       draw_casters(rec.cmd(), slot, layered_pipeline_.get(), glm::mat4(1.0f),
+                                    cube.position_far, faces_offset, scene, view);
+                     });
       continue;
     }
     for (uint32_t face = 0; face < 6; ++face) {
-      graph.add_pass(
-          cube.name + " face " + std::to_string(face),
-          [&](rg::PassBuilder& b) {
-            targets.cubes = b.write(targets.cubes, rg::Usage::depth_attachment, far,
-                                    rg::SubresourceRange::cube_face(cube.cube, face));
-          },
-          [this, &cube, &scene, slot, face, faces_offset, view](const vk::PassRecorder& rec) {
-            rec.set_full_viewport();
-            draw_casters(rec.cmd(), slot, face_pipeline_.get(), cube.views.view_projection[face],
-                         cube.position_far, faces_offset, scene, view);
-          });
+      graph.add_pass(cube.name + " face " + std::to_string(face), write_layer(cube.tiles[face].page),
+                     [this, &cube, &scene, slot, face, faces_offset, view](const vk::PassRecorder& rec) {
+                       clear_tiles(rec.cmd(), {cube.tiles[face]});
+                       rec.set_viewport(tile_rect(cube.tiles[face]));
+                       draw_casters(rec.cmd(), slot, face_pipeline_.get(), cube.views.view_projection[face],
+                                    cube.position_far, faces_offset, scene, view);
+                     });
     }
   }
-  return targets;
+  return atlas;
 }
 
 }  // namespace sg

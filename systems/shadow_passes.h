@@ -1,9 +1,11 @@
 #pragma once
-// The shadow-map passes: one per 2D shadow (spot, directional, cylinder light) writing that
-// light's atlas layer, and per point-light shadow either one layered pass writing all six faces
-// of its cube (shadows::CubeShadowMode::layered, needs shaderOutputLayer) or six passes, one per face.
-// Every pass draws the casters within its light's reach (ShadowCasterLists) with one indirect
-// call.
+// The per-light shadow passes, the baseline ShadowViewBatch is measured against
+// (--shadow-views per-light): one pass per 2D shadow (spot, directional, cylinder light) due this
+// frame, drawing into that light's atlas tile, and per point-light shadow either one pass for all
+// six faces (shadows::CubeShadowMode::layered: shadow_cube_layered.vert moves each face into its
+// tile) or six passes, one per face. Each pass clears its tiles and keeps the rest of the atlas
+// layer. Every pass draws the casters within its light's reach (ShadowCasterLists, culled on the
+// CPU) with one indirect call.
 #include <cstdint>
 #include <vector>
 
@@ -28,27 +30,19 @@ class ShadowPasses {
  public:
   ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight);
 
-  // Whether the device can render a cube in one pass.
-  bool layered_supported() const { return layered_pipeline_.get() != VK_NULL_HANDLE; }
-
-  // CPU side of a frame, after FrameRing::begin_frame returned `slot`: culls each view's
-  // casters (or, without cull_casters, gives every view every caster), writes them and the point lights' face
-  // matrices, and points the slot's descriptor set at this frame's buffers. `mode` must be the one add_to
-  // gets.
-  void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene,
+  // CPU side of a frame, after FrameRing::begin_frame returned `slot`: culls the casters of each
+  // view that renders (or, without cull_casters, gives every view every caster), writes them and
+  // the point lights' faces (matrices and tiles in an atlas of `page_size` texels a page), and
+  // points the slot's descriptor set at this frame's buffers. `mode` must be the one add_to gets.
+  void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene, uint32_t page_size,
                shadows::CubeShadowMode mode, bool cull_casters = true);
 
-  struct Targets {
-    rg::ImageHandle maps;
-    rg::ImageHandle cubes;
-  };
-  // Adds the passes for `lights` (as given to prepare) and returns the maps' newest versions.
-  // `lights` and `scene` are read when the passes record. layered falls back to six passes when
-  // the device cannot do it.
+  // Adds the passes of the views of `lights` (as given to prepare) that render, and returns the
+  // atlas's newest version. `lights` and `scene` are read when the passes record.
   //
   // kept_casters() says how many caster instances the views kept after culling.
-  Targets add_to(rg::RenderGraph& graph, Targets targets, const shadows::FrameLights& lights,
-                 const GpuScene& scene, uint32_t slot, shadows::CubeShadowMode mode) const;
+  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, const shadows::FrameLights& lights,
+                         const GpuScene& scene, uint32_t slot, shadows::CubeShadowMode mode) const;
 
   uint64_t kept_casters() const { return casters_.kept_instances(); }
 
@@ -63,9 +57,9 @@ class ShadowPasses {
   vk::UniquePipeline face_pipeline_;
   vk::UniquePipeline layered_pipeline_;
   ShadowCasterLists casters_;
-  std::vector<CasterView> map_casters_;   // per shadows::FrameLights::maps entry
+  std::vector<CasterView> map_casters_;   // per shadows::FrameLights::maps entry (empty unless it renders)
   std::vector<CasterView> cube_casters_;  // per shadows::FrameLights::cubes entry
-  vk::FrameBuffers cube_faces_;           // per point light: six face matrices, at cube_faces_stride_
+  vk::FrameBuffers cube_faces_;           // per point light: its CubeFaces block, at cube_faces_stride_
   VkDeviceSize cube_faces_stride_ = 0;
   std::vector<std::byte> cube_faces_scratch_;
 };

@@ -79,7 +79,7 @@ rg::ImageHandle TiledForwardPass::add_depth_prepass(rg::RenderGraph& graph, uint
 }
 
 ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
-                                        const LightTiles& tiles, rg::ImageHandle maps, rg::ImageHandle cubes,
+                                        const LightTiles& tiles, rg::ImageHandle atlas,
                                         const vk::Buffer& lights, const GpuScene& scene, uint32_t slot,
                                         const FrameConstants& constants) const {
   const rg::ImageDesc& screen = graph.resources()[depth.index].image;
@@ -87,8 +87,7 @@ ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
   graph.add_pass(
       "forward",
       [&](rg::PassBuilder& b) {
-        b.read(maps, rg::Usage::sampled_fragment);
-        b.read(cubes, rg::Usage::sampled_fragment);
+        b.read(atlas, rg::Usage::sampled_fragment);
         b.read(tiles.lights, rg::Usage::storage_fragment);
         b.read(tiles.ranges, rg::Usage::storage_fragment);
         targets.depth = b.write(depth, rg::Usage::depth_attachment);  // tested, not written
@@ -96,15 +95,14 @@ ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
             b.write(b.create_image("lit sum", {screen.width, screen.height, ForwardPass::lit_sum_format}),
                     rg::Usage::colour_attachment, rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
       },
-      [this, &scene, &lights, slot, constants, tiles, maps, cubes,
+      [this, &scene, &lights, slot, constants, tiles, atlas,
        pipeline = pipelines_.at(groups_present_).get()](const vk::PassRecorder& rec) {
         vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
         writer.buffer(instances_binding, scene.instances(slot).handle())
             .image(material_textures_binding, textures_.array().view(), textures_.sampler())
             .buffer(tile_lights_binding, rec.buffer(tiles.lights))
             .buffer(tile_ranges_binding, rec.buffer(tiles.ranges));
-        const VkDescriptorSet set =
-            light_resources_.write(writer, lights.handle(), rec, maps, cubes).update();
+        const VkDescriptorSet set = light_resources_.write(writer, lights.handle(), rec, atlas).update();
         scene.draw_camera_pass(rec, pipeline, layout_, set, constants, slot);
       });
   return targets;

@@ -42,8 +42,8 @@ class TiledForwardPass {
   // Shades every drawable where the prepass left it, into a new lit sum. `constants.counts.y`
   // must be the tiles across the screen. `lights` and `scene` are read when the pass records.
   ForwardTargets add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const LightTiles& tiles,
-                        rg::ImageHandle maps, rg::ImageHandle cubes, const vk::Buffer& lights,
-                        const GpuScene& scene, uint32_t slot, const FrameConstants& constants) const;
+                        rg::ImageHandle atlas, const vk::Buffer& lights, const GpuScene& scene, uint32_t slot,
+                        const FrameConstants& constants) const;
 
  private:
   vk::VulkanContext& context_;

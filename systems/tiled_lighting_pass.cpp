@@ -57,9 +57,8 @@ void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_
 }
 
 rg::ImageHandle TiledLightingPass::add_to(
-    rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles, rg::ImageHandle maps,
-    rg::ImageHandle cubes, const vk::Buffer& lights,
-    const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
+    rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles, rg::ImageHandle atlas,
+    const vk::Buffer& lights, const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
     const glm::vec3& camera_position) const {
   const rg::ImageDesc& screen = graph.resources()[gbuffer.lit_sum.index].image;
   const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
@@ -71,8 +70,7 @@ rg::ImageHandle TiledLightingPass::add_to(
     graph.add_pass(
         "lighting " + group_name(group),
         [&](rg::PassBuilder& b) {
-          for (const rg::ImageHandle image :
-               {maps, cubes, gbuffer.position, gbuffer.normal, gbuffer.albedo}) {
+          for (const rg::ImageHandle image : {atlas, gbuffer.position, gbuffer.normal, gbuffer.albedo}) {
             b.read(image, rg::Usage::sampled_compute);
           }
           b.read(tiles.lights, rg::Usage::storage_compute);
@@ -81,7 +79,7 @@ rg::ImageHandle TiledLightingPass::add_to(
           b.read(tiles.dispatch, rg::Usage::indirect);
           lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
         },
-        [this, group, gbuffer, tiles, maps, cubes, lit_sum, &lights, constants](const vk::PassRecorder& rec) {
+        [this, group, gbuffer, tiles, atlas, lit_sum, &lights, constants](const vk::PassRecorder& rec) {
           const VkSampler nearest = nearest_.get();
           vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
           writer.image(gbuffer_position_binding, rec.view(gbuffer.position), nearest)
@@ -91,8 +89,7 @@ rg::ImageHandle TiledLightingPass::add_to(
               .buffer(tile_lights_binding, rec.buffer(tiles.lights))
               .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
               .buffer(group_tiles_binding, rec.buffer(tiles.tiles));
-          const VkDescriptorSet set =
-              light_resources_.write(writer, lights.handle(), rec, maps, cubes).update();
+          const VkDescriptorSet set = light_resources_.write(writer, lights.handle(), rec, atlas).update();
           vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[group].get());
           layout_.bind_compute(rec.cmd(), set);
           layout_.push(rec.cmd(), constants);

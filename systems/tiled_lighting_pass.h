@@ -34,7 +34,7 @@ class TiledLightingPass {
   // Adds one pass per group with lights (group_begin as in shadows::FrameLights) and returns the
   // lit sum's newest version. `lights` must live until the frame is recorded.
   rg::ImageHandle add_to(rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles,
-                         rg::ImageHandle maps, rg::ImageHandle cubes, const vk::Buffer& lights,
+                         rg::ImageHandle atlas, const vk::Buffer& lights,
                          const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
                          const glm::vec3& camera_position) const;
 

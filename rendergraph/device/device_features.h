@@ -29,8 +29,8 @@ void enable_required_features(DeviceFeatures& out);
 
 // Features the engine uses when present and works around when absent.
 struct OptionalFeatures {
-  // shaderOutputLayer (Vulkan 1.2): gl_Layer from the vertex shader, for single-pass cube
-  // shadow maps; without it point lights render six passes.
+  // shaderOutputLayer (Vulkan 1.2): gl_Layer from the vertex shader, for drawing every shadow
+  // view into its atlas layer at once; without it shadow views render one pass each.
   bool shader_output_layer = false;
 };
 // Sets in `out` the optional features that `supported` has, and says which.

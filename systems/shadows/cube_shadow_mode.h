@@ -2,8 +2,9 @@
 
 namespace sg::shadows {
 
-// How a point light's six cube faces are rendered: in one layered pass (the vertex shader picks
-// the face with gl_Layer; needs shaderOutputLayer) or in six passes, one per face.
+// How the per-light shadow passes (ShadowPasses, --shadow-views per-light) draw a point light's
+// six cube faces: in one pass whose vertex shader moves each copy of a caster into its face's
+// atlas tile (layered), or in six passes, one per face.
 enum class CubeShadowMode { layered, six_passes };
 
 }  // namespace sg::shadows

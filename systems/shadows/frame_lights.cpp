@@ -27,61 +27,56 @@ scene::ShadowSettings with_overrides(scene::ShadowSettings shadow, const LightOv
   return shadow;
 }
 
+uint64_t key_of(ecs::Entity entity) { return uint64_t{entity.generation} << 32 | entity.index; }
+
+// Whether the light's transform, parameters or shadow settings were written since `since`.
+template <class Light>
+bool changed_since(const ecs::World& world, ecs::Entity entity, ecs::Tick since) {
+  return std::max({world.change_tick<ecs::WorldTransform>(entity), world.change_tick<Light>(entity),
+                   world.change_tick<scene::ShadowSettings>(entity)}) >= since;
+}
+
 // Every light of type Light, with a 2D map from view_of(light, transform) when it casts one.
 template <class Light, class ViewOf, class ReachOf>
-void gather_2d(const ecs::World& world, const LightOverrides& overrides, const char* kind, ViewOf view_of,
-               ReachOf reach_of, FrameLights& out) {
+void gather_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick since, const char* kind,
+               ViewOf view_of, ReachOf reach_of, FrameLights& out) {
   world.query<const ecs::WorldTransform, const Light, const scene::ShadowSettings>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform& transform, const Light& light,
           const scene::ShadowSettings& shadow) {
         const scene::ShadowSettings s = with_overrides(shadow, overrides);
         out.records.push_back(pack_light(light, transform, s));
-        out.scratch.groups.push_back(
-            light_group(s.casts_shadow ? ShadowKind::map : ShadowKind::none, s.algorithm));
         if (!s.casts_shadow) return;
-        const auto layer = static_cast<uint32_t>(out.maps.size());
-        out.maps.push_back({static_cast<uint32_t>(out.records.size() - 1), layer,
-                            clamp_resolution(s.resolution, max_map_resolution), view_of(light, transform),
-                            reach_of(light, transform), "shadow " + light_name(world, entity, kind, layer)});
-        out.map_size = std::max(out.map_size, out.maps.back().resolution);
+        ShadowMapView& map = out.maps.emplace_back();
+        map.light = static_cast<uint32_t>(out.records.size() - 1);
+        map.key = key_of(entity);
+        map.requested_resolution = clamp_resolution(s.resolution, max_map_resolution);
+        map.view = view_of(light, transform);
+        map.reach = reach_of(light, transform);
+        map.changed = changed_since<Light>(world, entity, since);
+        map.name = "shadow " + light_name(world, entity, kind, out.maps.size() - 1);
       });
 }
 
-// Orders the records by group (stably, so lights keep the world's order within a group) and
-// points the views at their records' new places.
-void sort_by_group(FrameLights& out) {
-  FrameLights::Scratch& scratch = out.scratch;
-  out.group_begin.fill(0);
-  for (const uint32_t group : scratch.groups) ++out.group_begin[group + 1];
-  for (uint32_t g = 0; g < light_group_count; ++g) out.group_begin[g + 1] += out.group_begin[g];
-  std::array<uint32_t, light_group_count + 1> cursor = out.group_begin;
-  scratch.moved_to.resize(out.records.size());
-  scratch.records.resize(out.records.size());
-  for (size_t i = 0; i < out.records.size(); ++i) {
-    scratch.moved_to[i] = cursor[scratch.groups[i]]++;
-    scratch.records[scratch.moved_to[i]] = out.records[i];
-  }
-  std::swap(out.records, scratch.records);
-  for (ShadowMapView& map : out.maps) map.light = scratch.moved_to[map.light];
-  for (ShadowCubeView& cube : out.cubes) cube.light = scratch.moved_to[cube.light];
+ShadowKind shadow_kind(const GpuLight& record) {
+  if (record.info.w == no_shadow_map) return ShadowKind::none;
+  return record.info.x == static_cast<uint32_t>(GpuLightType::point) ? ShadowKind::cube : ShadowKind::map;
 }
 
 }  // namespace
 
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
                    FrameLights& out) {
+  const ecs::Tick since = out.gathered_at;
+  out.gathered_at = world.tick();
   out.records.clear();
-  out.scratch.groups.clear();
   out.maps.clear();
   out.cubes.clear();
-  out.map_size = min_shadow_resolution;
-  out.cube_size = min_shadow_resolution;
   const scene::Aabb bounds =
       scene_bounds.empty() ? scene::Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)} : scene_bounds;
   const auto no_range = [](const auto&, const ecs::WorldTransform&) { return unbounded_reach; };
 
   gather_2d<scene::SpotLight>(
-      world, overrides, "spot",
+      world, overrides, since, "spot",
       [](const scene::SpotLight& light, const ecs::WorldTransform& transform) {
         return spot_light_view(scene::light_position(transform), scene::light_direction(transform),
                                light.outer_cone, light.range);
@@ -91,13 +86,13 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
       },
       out);
   gather_2d<scene::DirectionalLight>(
-      world, overrides, "directional",
+      world, overrides, since, "directional",
       [&](const scene::DirectionalLight&, const ecs::WorldTransform& transform) {
         return directional_light_view(scene::light_direction(transform), bounds);
       },
       no_range, out);
   gather_2d<scene::CylinderLight>(
-      world, overrides, "cylinder",
+      world, overrides, since, "cylinder",
       [&](const scene::CylinderLight& light, const ecs::WorldTransform& transform) {
         return cylinder_light_view(scene::light_position(transform), scene::light_direction(transform),
                                    light.outer_radius, bounds);
@@ -109,34 +104,37 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
           const scene::ShadowSettings& shadow) {
         const scene::ShadowSettings s = with_overrides(shadow, overrides);
         out.records.push_back(pack_light(light, transform, s));
-        out.scratch.groups.push_back(
-            light_group(s.casts_shadow ? ShadowKind::cube : ShadowKind::none, s.algorithm));
         if (!s.casts_shadow) return;
         const glm::vec3 position = scene::light_position(transform);
-        const auto cube = static_cast<uint32_t>(out.cubes.size());
-        out.cubes.push_back({static_cast<uint32_t>(out.records.size() - 1), cube,
-                             clamp_resolution(s.resolution, max_cube_resolution),
-                             point_light_cube(position, light.range), glm::vec4(position, light.range),
-                             "shadow " + light_name(world, entity, "point", cube)});
-        out.cube_size = std::max(out.cube_size, out.cubes.back().requested_resolution);
+        ShadowCubeView& cube = out.cubes.emplace_back();
+        cube.light = static_cast<uint32_t>(out.records.size() - 1);
+        cube.key = key_of(entity);
+        cube.requested_resolution = clamp_resolution(s.resolution, max_cube_resolution);
+        cube.views = point_light_cube(position, light.range);
+        cube.position_far = glm::vec4(position, light.range);
+        cube.changed = changed_since<scene::PointLight>(world, entity, since);
+        cube.name = "shadow " + light_name(world, entity, "point", out.cubes.size() - 1);
       });
-  sort_by_group(out);
 }
 
-ShadowStorageSize needed_storage(const FrameLights& lights) {
-  return {{lights.map_size, static_cast<uint32_t>(lights.maps.size())},
-          {lights.cube_size, static_cast<uint32_t>(lights.cubes.size())}};
-}
-
-void place_shadow_maps(FrameLights& lights, uint32_t layer_size, uint32_t face_size) {
-  for (const ShadowMapView& map : lights.maps) {
-    const float scale = float(map.resolution) / float(layer_size);
-    set_shadow_map(lights.records[map.light], map.layer, glm::vec4(0.0f, 0.0f, scale, scale), map.resolution,
-                   map.view);
+void sort_by_group(FrameLights& out) {
+  FrameLights::Scratch& scratch = out.scratch;
+  const auto group_of = [](const GpuLight& record) {
+    return light_group(shadow_kind(record), static_cast<scene::ShadowAlgorithm>(record.info.z));
+  };
+  out.group_begin.fill(0);
+  for (const GpuLight& record : out.records) ++out.group_begin[group_of(record) + 1];
+  for (uint32_t g = 0; g < light_group_count; ++g) out.group_begin[g + 1] += out.group_begin[g];
+  std::array<uint32_t, light_group_count + 1> cursor = out.group_begin;
+  scratch.moved_to.resize(out.records.size());
+  scratch.records.resize(out.records.size());
+  for (size_t i = 0; i < out.records.size(); ++i) {
+    scratch.moved_to[i] = cursor[group_of(out.records[i])]++;
+    scratch.records[scratch.moved_to[i]] = out.records[i];
   }
-  for (const ShadowCubeView& cube : lights.cubes) {
-    set_shadow_cube(lights.records[cube.light], cube.cube, face_size, cube.views);
-  }
+  std::swap(out.records, scratch.records);
+  for (ShadowMapView& map : out.maps) map.light = scratch.moved_to[map.light];
+  for (ShadowCubeView& cube : out.cubes) cube.light = scratch.moved_to[cube.light];
 }
 
 }  // namespace sg::shadows

@@ -3,6 +3,7 @@
 // buffer, read by the lighting shaders as `Light lights[]` (shaders/light_record.glsl, whose
 // field comments say what each component holds). tests/shadows/light_record_layout_test.cpp
 // checks every offset against glslang's reflection of the shader declaration.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -64,9 +65,14 @@ GpuLight pack_light(const scene::CylinderLight& light, const ecs::WorldTransform
 void set_shadow_map(GpuLight& light, std::uint32_t atlas_layer, const glm::vec4& uv_rect,
                     std::uint32_t resolution, const LightView& view);
 
-// Gives a point light cube `cube_index` of the cube-map array (layers 6 * cube_index + face),
-// `resolution` texels per face side, rendered with `cube` (point_light_cube).
-void set_shadow_cube(GpuLight& light, std::uint32_t cube_index, std::uint32_t resolution,
-                     const CubeViews& cube);
+// Gives a point light its cube: six square tiles of `resolution` texels, all on atlas layer
+// `atlas_layer`, each `tile_scale` wide in uv of the layer, face f (+X, -X, +Y, -Y, +Z, -Z)
+// with its top-left corner at face_origins[f]; rendered with `cube` (point_light_cube) from
+// `origin` (which may lag the light's position while the map is cached). Point lights need no
+// shadow matrix (the shaders select the face by the major axis), so its first three columns
+// carry the face origins, two faces a column, and the last the origin.
+void set_shadow_cube(GpuLight& light, std::uint32_t atlas_layer, const std::array<glm::vec2, 6>& face_origins,
+                     float tile_scale, std::uint32_t resolution, const CubeViews& cube,
+                     const glm::vec3& origin);
 
 }  // namespace sg::shadows

@@ -21,6 +21,7 @@ float orthographic_penumbra_width(float receiver_depth, float blocker_depth, flo
 float projection_x_scale(glm::mat4 shadow_matrix);
 float map_uv_per_world_unit(float x_scale, float view_depth, bool orthographic);
 float cube_texel_world_size(float distance, float texel_uv);
+glm::vec3 cube_face_uv(glm::vec3 direction);
 glm::uvec3 pcg3d(glm::uvec3 v);
 glm::vec3 surface_random(glm::vec3 world_position, std::uint32_t index);
 glm::vec2 gaussian_pair(glm::vec2 u);

@@ -67,4 +67,8 @@ struct CubeViews {
 
 CubeViews point_light_cube(glm::vec3 position, float range);
 
+// The six planes of a Vulkan view-projection's frustum (depth 0..1): left, right, top, bottom,
+// near, far, each (n, d) with dot(n, p) + d >= 0 inside (not normalized).
+std::array<glm::vec4, 6> frustum_planes(const glm::mat4& view_projection);
+
 }  // namespace sg::shadows

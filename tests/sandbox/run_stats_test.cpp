@@ -78,13 +78,24 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.passes = {{"shadow_atlas", {0.125, 0.0625, 0.25}}, {"lighting", {0.375, 0.25, 0.5}}};
   stats.validation_errors = 4;
   stats.shadow_map_bytes = 67'108'864;
+  stats.shadows = {"batched",
+                   1ull << 30,
+                   4096,
+                   1,
+                   12'345'678,
+                   {{64, 200}, {256, 10}},
+                   3,
+                   2,
+                   TimeSummary{100.0, 50.0, 3584.0},
+                   TimeSummary{20.0, 0.0, 40.0},
+                   98'765};
 
   TempDir dir;
   const std::string path = dir.path("stats.json").string();
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 11u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 12u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);
@@ -110,6 +121,19 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   }
   EXPECT_EQ(json.at("validation_errors"), 4);
   EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
+  const nlohmann::json& shadows = json.at("shadows");
+  EXPECT_EQ(shadows.size(), 11u) << shadows.dump(2);
+  EXPECT_EQ(shadows.at("views"), "batched");
+  EXPECT_EQ(shadows.at("budget_bytes"), 1ull << 30);
+  EXPECT_EQ(shadows.at("page_size"), 4096);
+  EXPECT_EQ(shadows.at("pages"), 1);
+  EXPECT_EQ(shadows.at("used_bytes"), 12'345'678);
+  EXPECT_EQ(shadows.at("lights_per_resolution"), nlohmann::json({{"64", 200}, {"256", 10}}));
+  EXPECT_EQ(shadows.at("lights_without_shadow"), 3);
+  EXPECT_EQ(shadows.at("lights_waiting"), 2);
+  expect_summary(shadows.at("views_rendered"), *stats.shadows.views_rendered);
+  expect_summary(shadows.at("views_cached"), *stats.shadows.views_cached);
+  EXPECT_EQ(shadows.at("caster_draws"), 98'765);
 }
 
 TEST(StatsJson, MissingMeasurementsAreNull) {
@@ -125,6 +149,7 @@ TEST(StatsJson, MissingMeasurementsAreNull) {
   EXPECT_TRUE(json.at("passes").is_array());
   EXPECT_TRUE(json.at("passes").empty());
   EXPECT_EQ(json.at("frames"), 0);
+  EXPECT_TRUE(json.at("shadows").at("views_rendered").is_null());
 }
 
 TEST(StatsJson, ReplacesAnExistingFile) {

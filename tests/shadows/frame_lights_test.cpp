@@ -1,10 +1,13 @@
-// Gathering a frame's lights from the ECS world and placing their maps, without a GPU.
+// Gathering a frame's lights from the ECS world and scheduling their maps, without a GPU.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include "ecs/transform_system.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/scene_builder.h"
+
 #include "systems/shadows/frame_lights.h"
+#include "systems/shadows/shadow_schedule.h"
 
 namespace sg::shadows {
 namespace {
@@ -31,6 +34,15 @@ scene::Scene five_lights() {
   return scene;
 }
 
+// A camera at `eye` looking down -Z with a 90 degree field of view, 1000 pixels high.
+ShadowCamera camera_at(glm::vec3 eye) {
+  const glm::mat4 view = glm::lookAtRH(eye, eye + glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+  const glm::mat4 projection = glm::perspectiveRH_ZO(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f);
+  return {eye, projection * view, 1000.0f / glm::radians(90.0f)};
+}
+
+constexpr AtlasConfig small_atlas{1024, 4, min_shadow_resolution};
+
 TEST(FrameLights, EveryLightGetsARecordAndShadowCastersGetViews) {
   const scene::Scene scene = five_lights();
   FrameLights lights;
@@ -41,30 +53,26 @@ TEST(FrameLights, EveryLightGetsARecordAndShadowCastersGetViews) {
   ASSERT_EQ(lights.cubes.size(), 2u);
   EXPECT_EQ(lights.maps[0].name, "shadow key");
   EXPECT_EQ(lights.maps[1].name, "shadow directional 1");  // unnamed: kind and map index
-  EXPECT_EQ(lights.maps[0].layer, 0u);
-  EXPECT_EQ(lights.maps[1].layer, 1u);
-  EXPECT_EQ(lights.cubes[1].cube, 1u);
+  EXPECT_NE(lights.maps[0].key, lights.maps[1].key);
+  EXPECT_NE(lights.cubes[0].key, lights.cubes[1].key);
   // Each view points at its own record, of its own type.
   EXPECT_EQ(lights.records[lights.maps[1].light].info.x, uint32_t(GpuLightType::directional));
   EXPECT_EQ(lights.records[lights.cubes[0].light].info.x, uint32_t(GpuLightType::point));
   // Views carry the reach casters are culled against: the spot's sphere, none for the sun.
   EXPECT_GT(lights.maps[0].reach.w, 0.0f);
   EXPECT_LT(lights.maps[1].reach.w, 0.0f);
+  // Until scheduled, no record has a map.
+  for (const GpuLight& record : lights.records) EXPECT_EQ(record.info.w, no_shadow_map);
 }
 
-TEST(FrameLights, ResolutionsAreClampedAndTheStorageFitsTheLargest) {
+TEST(FrameLights, RequestedResolutionsAreClamped) {
   const scene::Scene scene = five_lights();
   FrameLights lights;
   gather_lights(scene.world, bounds, {}, lights);
-
-  EXPECT_EQ(lights.maps[0].resolution, 512u);
-  EXPECT_EQ(lights.maps[1].resolution, max_map_resolution);
+  EXPECT_EQ(lights.maps[0].requested_resolution, 512u);
+  EXPECT_EQ(lights.maps[1].requested_resolution, max_map_resolution);
   EXPECT_EQ(lights.cubes[0].requested_resolution, min_shadow_resolution);
-  EXPECT_EQ(lights.map_size, max_map_resolution);
-  EXPECT_EQ(lights.cube_size, 256u);
-  const ShadowStorageSize needed = needed_storage(lights);
-  EXPECT_EQ(needed.maps, (ShadowArraySize{max_map_resolution, 2}));
-  EXPECT_EQ(needed.cubes, (ShadowArraySize{256, 2}));
+  EXPECT_EQ(lights.cubes[1].requested_resolution, 256u);
 }
 
 TEST(FrameLights, OverridesApplyToEveryLight) {
@@ -79,29 +87,81 @@ TEST(FrameLights, OverridesApplyToEveryLight) {
   EXPECT_EQ(lights.records.size(), 5u);
   EXPECT_TRUE(lights.maps.empty());
   EXPECT_TRUE(lights.cubes.empty());
-  EXPECT_EQ(needed_storage(lights).maps.count, 0u);
 }
 
-TEST(FrameLights, PlacingMapsGivesEachRecordItsRegionOfTheStorage) {
+TEST(FrameLights, ChangedFollowsTheEcsChangeTicks) {
+  scene::Scene scene = five_lights();
+  FrameLights lights;
+  gather_lights(scene.world, bounds, {}, lights);
+  EXPECT_TRUE(lights.maps[0].changed);  // everything is new to the first gather
+  // Writes in the tick of a gather count for the next one too (they may have come after it), so
+  // the lights, created in the first gather's tick, are quiet from the third on.
+  scene.world.advance_tick();
+  gather_lights(scene.world, bounds, {}, lights);
+  scene.world.advance_tick();
+  gather_lights(scene.world, bounds, {}, lights);
+  EXPECT_FALSE(lights.maps[0].changed);
+  EXPECT_FALSE(lights.cubes[1].changed);
+
+  scene.world.advance_tick();
+  scene.world.query<scene::PointLight>().for_each([](ecs::Entity, scene::PointLight& light) {
+    light.range *= 2.0f;  // a written component counts, whatever it holds
+  });
+  gather_lights(scene.world, bounds, {}, lights);
+  EXPECT_FALSE(lights.maps[0].changed);
+  EXPECT_TRUE(lights.cubes[0].changed);
+  EXPECT_TRUE(lights.cubes[1].changed);
+}
+
+TEST(ShadowSchedule, GivesEachShadowedRecordItsTiles) {
   const scene::Scene scene = five_lights();
   FrameLights lights;
   gather_lights(scene.world, bounds, {}, lights);
-  for (const GpuLight& record : lights.records) EXPECT_EQ(record.info.w, no_shadow_map);
+  ShadowSchedule schedule(small_atlas);
+  schedule.schedule(lights, camera_at({0.0f, 5.0f, 2.0f}), {}, 0);  // the camera is inside every reach
+  sort_by_group(lights);
 
-  place_shadow_maps(lights, 2048, 512);
-  const GpuLight& key = lights.records[lights.maps[0].light];
-  EXPECT_EQ(key.info.w, 0u);
-  EXPECT_FLOAT_EQ(key.shadow_rect.z, 512.0f / 2048.0f);  // its 512 texels of a 2048 layer
-  EXPECT_FLOAT_EQ(key.shadow_rect.w, 512.0f / 2048.0f);
-  EXPECT_EQ(lights.records[lights.maps[1].light].info.w, 1u);
-  EXPECT_EQ(lights.records[lights.cubes[1].light].info.w, 1u);
-  EXPECT_EQ(lights.records[0].info.w, no_shadow_map);  // "fill" (unshadowed: group 0) has none
+  const ShadowMapView& key = lights.maps[0];
+  ASSERT_EQ(key.resolution, 512u);
+  EXPECT_TRUE(key.render);
+  const GpuLight& record = lights.records[key.light];
+  EXPECT_EQ(record.info.w, key.tile.page);
+  EXPECT_FLOAT_EQ(record.shadow_rect.x, float(key.tile.x) / 1024.0f);
+  EXPECT_FLOAT_EQ(record.shadow_rect.z, 512.0f / 1024.0f);  // its 512 texels of a 1024 page
+  EXPECT_FLOAT_EQ(record.shadow_depth.z, 1.0f / 512.0f);
+  for (const ShadowCubeView& cube : lights.cubes) {
+    ASSERT_GT(cube.resolution, 0u);
+    const GpuLight& point = lights.records[cube.light];
+    for (int f = 0; f < 6; ++f) {
+      EXPECT_EQ(cube.tiles[f].page, point.info.w);
+      EXPECT_FLOAT_EQ(point.shadow_matrix[f / 2][2 * (f % 2)], float(cube.tiles[f].x) / 1024.0f);
+    }
+  }
+  EXPECT_EQ(schedule.stats().views_rendered, 2u + 12u);
+  EXPECT_EQ(schedule.stats().lights_without_shadow, 0u);
+}
+
+TEST(ShadowSchedule, LightsOutOfSightGetNoShadow) {
+  const scene::Scene scene = five_lights();
+  FrameLights lights;
+  gather_lights(scene.world, bounds, {}, lights);
+  ShadowSchedule schedule(small_atlas);
+  // Far away and looking away: no bounded light's reach is in view; the sun still is.
+  schedule.schedule(lights, camera_at({0.0f, 5.0f, -500.0f}), {}, 0);
+  EXPECT_EQ(lights.maps[0].resolution, 0u);
+  EXPECT_GT(lights.maps[1].resolution, 0u);
+  EXPECT_EQ(lights.cubes[0].resolution, 0u);
+  EXPECT_EQ(lights.records[lights.maps[0].light].info.w, no_shadow_map);
+  EXPECT_EQ(schedule.stats().lights_without_shadow, 3u);
 }
 
 TEST(FrameLights, RecordsAreOrderedByLightGroup) {
   const scene::Scene scene = five_lights();
   FrameLights lights;
   gather_lights(scene.world, bounds, {}, lights);
+  ShadowSchedule schedule(small_atlas);
+  schedule.schedule(lights, camera_at({0.0f, 5.0f, 2.0f}), {}, 0);
+  sort_by_group(lights);
   // Every light here uses pcf: "fill" is unshadowed, key and the sun have 2D maps, two cubes.
   const uint32_t map_pcf = light_group(ShadowKind::map, scene::ShadowAlgorithm::pcf);
   const uint32_t cube_pcf = light_group(ShadowKind::cube, scene::ShadowAlgorithm::pcf);

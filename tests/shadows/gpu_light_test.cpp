@@ -100,9 +100,19 @@ TEST(GpuLight, ShadowMapPlacementAndCamera) {
 
 TEST(GpuLight, ShadowCubePlacement) {
   GpuLight record = pack_light(scene::PointLight{}, placed({0, 1, 0}, {0, 0, -1}), test_shadow());
-  set_shadow_cube(record, 5, 256, point_light_cube({0, 1, 0}, 10.0f));
+  const std::array<glm::vec2, 6> faces{glm::vec2(0.0f, 0.0f), glm::vec2(0.25f, 0.0f), glm::vec2(0.5f, 0.0f),
+                                       glm::vec2(0.0f, 0.5f), glm::vec2(0.25f, 0.5f), glm::vec2(0.5f, 0.5f)};
+  set_shadow_cube(record, 5, faces, 0.25f, 256, point_light_cube({0, 1, 0}, 10.0f), {0.0f, 0.5f, 0.0f});
   EXPECT_EQ(record.info.w, 5u);
   EXPECT_EQ(record.shadow_depth, glm::vec4(shadow_near_plane(10.0f), 10.0f, 1.0f / 256.0f, 0.0f));
+  EXPECT_EQ(record.shadow_rect, glm::vec4(0.0f, 0.0f, 0.25f, 0.25f));
+  // The faces' origins two a column, as shadow_sampling.glsl's fetch_cube_depth reads them.
+  for (int f = 0; f < 6; ++f) {
+    const glm::vec4 column = record.shadow_matrix[f / 2];
+    EXPECT_EQ(f % 2 == 0 ? glm::vec2(column.x, column.y) : glm::vec2(column.z, column.w), faces[f]) << f;
+  }
+  // Where the cube was rendered from, which may lag the light while the map is cached.
+  EXPECT_EQ(record.shadow_matrix[3], glm::vec4(0.0f, 0.5f, 0.0f, 1.0f));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "systems/camera.h"
+#include "systems/shadows/light_formulas.h"
 #include "systems/shadows/light_views.h"
 
 namespace sg::shadows {
@@ -107,36 +108,6 @@ TEST(SpotLightView, HemisphereConeIsCappedAtTheWidestMap) {
   EXPECT_NEAR(spot.projection[0][0], 1.0f / std::tan(max_spot_shadow_fov / 2.0f), 1e-5f);
 }
 
-// The Vulkan specification's cube-map face selection ("Cube Map Face Selection" table): the
-// face of the major axis, then s = (sc / |ma| + 1) / 2, t = (tc / |ma| + 1) / 2.
-struct CubeTexel {
-  int face;
-  glm::vec2 st;
-};
-
-CubeTexel vulkan_cube_lookup(glm::vec3 r) {
-  const glm::vec3 a = glm::abs(r);
-  int face;
-  float sc, tc, ma;
-  if (a.x >= a.y && a.x >= a.z) {
-    face = r.x >= 0.0f ? 0 : 1;
-    sc = r.x >= 0.0f ? -r.z : r.z;
-    tc = -r.y;
-    ma = a.x;
-  } else if (a.y >= a.z) {
-    face = r.y >= 0.0f ? 2 : 3;
-    sc = r.x;
-    tc = r.y >= 0.0f ? r.z : -r.z;
-    ma = a.y;
-  } else {
-    face = r.z >= 0.0f ? 4 : 5;
-    sc = r.z >= 0.0f ? r.x : -r.x;
-    tc = -r.y;
-    ma = a.z;
-  }
-  return {face, {(sc / ma + 1.0f) * 0.5f, (tc / ma + 1.0f) * 0.5f}};
-}
-
 TEST(PointLightCube, FaceImagesLineUpWithVulkanCubeLookups) {
   std::mt19937 rng(66);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -146,11 +117,13 @@ TEST(PointLightCube, FaceImagesLineUpWithVulkanCubeLookups) {
   for (int i = 0; i < 2000; ++i) {
     const glm::vec3 direction = random_unit(rng);
     const glm::vec3 point = light + direction * (0.5f + 6.0f * unit(rng));
-    const CubeTexel texel = vulkan_cube_lookup(point - light);
-    const glm::vec3 rendered = map_coords(cube.view_projection[texel.face], point);
-    ASSERT_TRUE(inside_unit_cube(rendered)) << "direction " << i << " face " << texel.face;
-    ASSERT_NEAR(rendered.x, texel.st.x, 1e-4f) << "direction " << i << " face " << texel.face;
-    ASSERT_NEAR(rendered.y, texel.st.y, 1e-4f) << "direction " << i << " face " << texel.face;
+    // The shaders' face selection (light_formulas.glsl), which follows the specification's table.
+    const glm::vec3 texel = glsl::cube_face_uv(point - light);
+    const int face = static_cast<int>(texel.z);
+    const glm::vec3 rendered = map_coords(cube.view_projection[face], point);
+    ASSERT_TRUE(inside_unit_cube(rendered)) << "direction " << i << " face " << face;
+    ASSERT_NEAR(rendered.x, texel.x, 1e-4f) << "direction " << i << " face " << face;
+    ASSERT_NEAR(rendered.y, texel.y, 1e-4f) << "direction " << i << " face " << face;
   }
 }
 

@@ -59,7 +59,15 @@ shadows::FrameLights scattered_lights() {
   ecs::update_world_transforms(scene.world, 0);
   shadows::FrameLights lights;
   shadows::gather_lights(scene.world, {glm::vec3(-20.0f), glm::vec3(20.0f)}, {}, lights);
-  shadows::place_shadow_maps(lights, 1024, 1024);
+  // Every shadow in the same place: culling only reads which group a light is in.
+  for (const shadows::ShadowMapView& map : lights.maps) {
+    shadows::set_shadow_map(lights.records[map.light], 0, {0.0f, 0.0f, 1.0f, 1.0f}, 1024, map.view);
+  }
+  for (const shadows::ShadowCubeView& cube : lights.cubes) {
+    shadows::set_shadow_cube(lights.records[cube.light], 0, {}, 0.25f, 256, cube.views,
+                             glm::vec3(cube.position_far));
+  }
+  shadows::sort_by_group(lights);
   return lights;
 }
 

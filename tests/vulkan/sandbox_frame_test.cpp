@@ -45,15 +45,17 @@ class SandboxFrameTest : public GpuTest {
     }
     frames.wait_idle();
     passes = executed_passes(*frame.plan());
+    shadow_stats = frame.renderer().shadow_stats();
     return vk::read_rgba8(context, frame.image());
   }
 
   std::vector<std::string> passes;
+  shadows::ShadowScheduleStats shadow_stats;  // the last frame's
 };
 
-const std::vector<std::string> default_shadow_passes{"shadow spot west",  "shadow spot east",
-                                                     "shadow sun",        "shadow beam",
-                                                     "shadow warm point", "shadow cool point"};
+// Every shadow view due in a frame: culled, sorted into draws and drawn by these passes.
+const std::vector<std::string> batched_shadow_passes{"shadow cull reset", "shadow cull", "shadow draws",
+                                                     "shadow scatter", "shadow views"};
 
 std::vector<std::string> followed_by(std::vector<std::string> passes, const std::vector<std::string>& more) {
   passes.insert(passes.end(), more.begin(), more.end());
@@ -67,14 +69,24 @@ sandbox::Options lit_by(LightingPath lighting) {
 }
 
 TEST_F(SandboxFrameTest, DefaultSceneRendersThroughTheGraph) {
+  const std::vector<std::string> lighting{"g-buffer",
+                                          "light tiles reset",
+                                          "light tiles",
+                                          "lighting 2d hard",
+                                          "lighting 2d pcf",
+                                          "lighting 2d noise",
+                                          "lighting 2d pcss_noise",
+                                          "lighting cube hard",
+                                          "lighting cube pcss",
+                                          "tone map"};
+  // The first frame draws every shadow view (lavapipe has shaderOutputLayer, so they are
+  // batched), then the G-buffer, light culling, one lighting pass per light group the scene uses
+  // (its six lights use six of the eleven), tone mapping.
+  render(lit_by(LightingPath::deferred), 1);
+  EXPECT_EQ(passes, followed_by(batched_shadow_passes, lighting));
+  // Nothing moves in the default scene: later frames keep every map.
   const vk::Rgba8Image image = render(lit_by(LightingPath::deferred), 3);
-  // One shadow pass per 2D shadow, one layered pass per point light (lavapipe has
-  // shaderOutputLayer), the G-buffer, light culling, one lighting pass per light group the scene
-  // uses (its six lights use six of the eleven), tone mapping.
-  EXPECT_EQ(passes, followed_by(default_shadow_passes,
-                                {"g-buffer", "light tiles reset", "light tiles", "lighting 2d hard",
-                                 "lighting 2d pcf", "lighting 2d noise", "lighting 2d pcss_noise",
-                                 "lighting cube hard", "lighting cube pcss", "tone map"}));
+  EXPECT_EQ(passes, lighting);
   // Something was drawn: the picture is not a single colour.
   const uint8_t* first = image.at(0, 0);
   bool varied = false;
@@ -93,10 +105,9 @@ TEST_F(SandboxFrameTest, MovingStressSceneStaysCleanAcrossFrames) {
   options.scene_params.moving_fraction = 0.5f;
   options.lighting = LightingPath::forward;
   render(options, 4);
-  EXPECT_EQ(passes,
-            (std::vector<std::string>{"shadow spot 0", "shadow spot 1", "shadow spot 2", "shadow sun",
-                                      "shadow point 0", "shadow point 1", "shadow point 2", "depth prepass",
-                                      "light tiles reset", "light tiles", "forward", "tone map"}));
+  // Moving lights redraw their maps every frame.
+  EXPECT_EQ(passes, followed_by(batched_shadow_passes, {"depth prepass", "light tiles reset", "light tiles",
+                                                        "forward", "tone map"}));
   options.lighting = LightingPath::deferred;
   render(options, 4);
   EXPECT_EQ(passes.back(), "tone map");
@@ -118,8 +129,8 @@ TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
   EXPECT_LE(largest_difference(forward, deferred), 2) << "levels of 255 in the worst channel";
 
-  // The naive baseline: six passes per cube, every caster in every view, every light at every
-  // pixel.
+  // The naive baseline: a pass per view and six per cube, every map every frame, every caster in
+  // every view, every light at every pixel.
   sandbox::Options naive;
   naive.naive = true;
   const vk::Rgba8Image baseline = render(naive, 2);
@@ -133,7 +144,8 @@ TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
 
 TEST_F(SandboxFrameTest, SixPassCubesRenderTheSamePictureAsLayeredCubes) {
   sandbox::Options layered;
-  sandbox::Options six;
+  layered.shadow_views = shadows::ShadowViewPath::per_light;
+  sandbox::Options six = layered;
   six.cube_shadows = shadows::CubeShadowMode::six_passes;
   const vk::Rgba8Image a = render(layered, 1);
   const vk::Rgba8Image b = render(six, 1);
@@ -147,6 +159,64 @@ TEST_F(SandboxFrameTest, SixPassCubesRenderTheSamePictureAsLayeredCubes) {
   int differing = 0;
   for (size_t i = 0; i < a.pixels.size(); ++i) differing += std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 1;
   EXPECT_EQ(differing, 0);
+}
+
+// The GPU-driven batch draws each view into its tile by moving clip space; the per-light passes
+// set a viewport on the tile. Both rasterize the same triangles into the same texels.
+TEST_F(SandboxFrameTest, BatchedShadowViewsRenderTheSamePictureAsPerLightPasses) {
+  sandbox::Options per_light;
+  per_light.shadow_views = shadows::ShadowViewPath::per_light;
+  const vk::Rgba8Image a = render(per_light, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "shadow warm point"), 1);
+  const vk::Rgba8Image b = render(sandbox::Options{}, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "shadow views"), 1);
+  EXPECT_LE(largest_difference(a, b), 1);
+}
+
+// A frame whose maps were all kept from earlier frames shows what drawing them again shows.
+TEST_F(SandboxFrameTest, CachedShadowsArePixelIdenticalToShadowsDrawnFromScratch) {
+  for (const shadows::ShadowViewPath views :
+       {shadows::ShadowViewPath::batched, shadows::ShadowViewPath::per_light}) {
+    sandbox::Options cached;
+    cached.shadow_views = views;
+    const vk::Rgba8Image kept = render(cached, 3);
+    EXPECT_EQ(std::count_if(passes.begin(), passes.end(),
+                            [](const std::string& name) { return name.starts_with("shadow"); }),
+              0)
+        << "the third frame draws no shadow view";
+    sandbox::Options fresh = cached;
+    fresh.shadow_cache = false;
+    const vk::Rgba8Image drawn = render(fresh, 3);
+    EXPECT_GT(std::count_if(passes.begin(), passes.end(),
+                            [](const std::string& name) { return name.starts_with("shadow"); }),
+              0);
+    EXPECT_EQ(kept.pixels, drawn.pixels);
+  }
+}
+
+// Issue 11's limit case: 400 point lights (2,400 cube faces, past the 2,048 layers a cube array
+// could hold) and 2,100 spot lights, tiny maps in a small window, clean under validation and
+// synchronization validation; the lights beyond the budget lose resolution, then their shadow.
+TEST_F(SandboxFrameTest, ThousandsOfShadowedLightsStayWithinDeviceLimits) {
+  sandbox::Options options;
+  options.scene = "stress";
+  options.scene_params.triangles = 2000;
+  options.scene_params.point_lights = 400;
+  options.scene_params.spot_lights = 2100;
+  options.scene_params.moving_fraction = 0.0f;
+  options.shadow_memory_mib = 16;  // one page of 2048 x 2048
+  render(options, 2);
+  EXPECT_EQ(passes.back(), "tone map");
+  // The first frame drew as many views as the per-frame budget allows, the second the rest.
+  constexpr uint32_t views = 2100 + 1 + 400 * 6;  // spots, the sun, cube faces
+  EXPECT_EQ(shadow_stats.views_rendered + shadow_stats.views_cached, views);
+  EXPECT_EQ(shadow_stats.views_cached, shadows::default_shadow_view_budget);
+  EXPECT_EQ(shadow_stats.lights_waiting, 0u);
+  // The budget holds 2048^2 texels: most lights got the smallest tiles.
+  EXPECT_EQ(shadow_stats.pages_used, 1u);
+  ASSERT_FALSE(shadow_stats.lights_per_resolution.empty());
+  EXPECT_EQ(shadow_stats.lights_per_resolution.front().first, shadows::min_shadow_resolution);
+  EXPECT_GT(shadow_stats.lights_per_resolution.front().second, 1000u);
 }
 
 // A material's base-colour texture multiplies its base colour: a white floor with a green

@@ -1,0 +1,30 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Keeps every (caster, view) pair whose caster's world bounds meet the view's frustum: one
+// thread per caster, one workgroup row per view. Pairs go to culled_pairs in any order (at most
+// `capacity`; the total counts every kept pair, so the CPU learns when to grow), and each kept
+// pair counts towards its draw (view kind, caster group). Counts start at zero.
+#include "shadow_batch_compute.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = culled_pairs_binding) writeonly buffer Pairs { uvec2 pairs[]; };
+
+void main() {
+  uint caster = gl_GlobalInvocationID.x;
+  uint view = pc.view_base + gl_WorkGroupID.y;
+  if (caster >= pc.caster_count) return;
+  vec3 lo = casters[caster].min_mesh.xyz;
+  vec3 hi = casters[caster].max_instance.xyz;
+  for (int p = 0; p < 6; ++p) {
+    vec4 plane = views[view].planes[p];
+    // The box's corner farthest along the plane's normal.
+    vec3 corner = mix(lo, hi, greaterThanEqual(plane.xyz, vec3(0.0)));
+    if (dot(plane.xyz, corner) + plane.w < 0.0) return;
+  }
+  uint slot = atomicAdd(total, 1u);
+  if (slot >= pc.capacity) return;
+  pairs[slot] = uvec2(caster, view);
+  uint group = floatBitsToUint(casters[caster].min_mesh.w);
+  atomicAdd(counts[views[view].info.y * pc.group_count + group], 1u);
+}

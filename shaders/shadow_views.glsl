@@ -1,0 +1,48 @@
+// The GPU-driven shadow views (systems/shadow_view_batch.h): every shadow view re-rendered this
+// frame (a 2D map or one cube face, each a tile of the shadow atlas) is a ShadowView record;
+// shadow_cull.comp tests every caster against every view and keeps (caster, view) pairs,
+// shadow_draws.comp turns their counts into one indirect draw per (view kind, mesh),
+// shadow_scatter.comp sorts the pairs into those draws' instance ranges, and
+// shadow_batch.vert draws them all into their tiles. Must match systems/shadow_view_batch.cpp.
+#ifndef SG_SHADOW_VIEWS_GLSL
+#define SG_SHADOW_VIEWS_GLSL
+
+#include "bindings.glsl"
+
+const uint VIEW_KIND_MAP = 0u;   // 2D map: depth only
+const uint VIEW_KIND_FACE = 1u;  // cube face: distance / far from shadow_cube.frag
+const uint VIEW_KINDS = 2u;
+
+struct ShadowView {
+  mat4 view_projection;  // world -> the view's clip space
+  vec4 tile;             // the view's clip xy -> the atlas page's: xy scale, zw offset (times w)
+  vec4 position_far;     // cube faces: the light's position and far plane (shadow_cube.frag)
+  vec4 planes[6];        // the view's frustum: dot(plane.xyz, p) + plane.w >= 0 inside
+  uvec4 info;            // x: atlas layer; y: VIEW_KIND_*
+};
+
+struct ShadowCaster {
+  vec4 min_mesh;      // xyz: world bounds' minimum; w: the caster's mesh (caster group), as uint bits
+  vec4 max_instance;  // xyz: world bounds' maximum; w: its index in Instances, as uint bits
+};
+
+// Geometry of caster group g: what its indirect commands draw.
+struct CasterMesh {
+  uint index_count;
+  uint first_index;
+  int vertex_offset;
+  uint unused;
+};
+
+// One indirect draw per (view kind k, caster group g), at k * groups + g.
+struct DrawCommand {
+  uint index_count;
+  uint instance_count;
+  uint first_index;
+  int vertex_offset;
+  uint first_instance;
+};
+
+layout(std430, set = 0, binding = shadow_views_binding) readonly buffer ShadowViews { ShadowView views[]; };
+
+#endif

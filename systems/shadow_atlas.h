@@ -1,0 +1,45 @@
+#pragma once
+// The persistent shadow storage every light shares: one D32 2D-array image whose layers are the
+// atlas pages (shadows/shadow_atlas_shape.h). A 2D shadow is one square tile of a page, a point
+// light's cube six tiles of one page; shadows::ShadowAtlasPlanner says which. The image outlives
+// frames and is imported into each frame's graph.
+//
+// Contract: fit() recreates the image only to hold more pages than it has (never fewer, never
+// more than the shape's max_pages); recreating waits for the GPU to go idle first, because frames
+// in flight may still sample the old image, and loses every tile's contents. The image always
+// exists (at least one page), so the lighting passes' descriptors are always valid.
+#include <cstdint>
+
+#include "rendergraph/core/resource_types.h"
+#include "rendergraph/device/resources.h"
+#include "systems/shadows/shadow_atlas_shape.h"
+
+namespace sg {
+
+class ShadowAtlas {
+ public:
+  static constexpr rg::Format depth_format = rg::Format::d32_sfloat;
+
+  // `budget_bytes` 0: the device's default (shadows::default_shadow_budget).
+  ShadowAtlas(vk::VulkanContext& context, uint64_t budget_bytes);
+
+  // Makes room for `pages` pages (at most shape().max_pages). True when the image was recreated.
+  bool fit(uint32_t pages);
+
+  const vk::Image& image() const { return image_; }
+  const shadows::AtlasShape& shape() const { return shape_; }
+  uint32_t pages() const { return pages_; }
+  // Memory of the image, for --stats' shadow_map_bytes.
+  uint64_t bytes() const;
+
+ private:
+  vk::VulkanContext& context_;
+  shadows::AtlasShape shape_;
+  uint32_t pages_ = 0;
+  vk::Image image_;
+};
+
+// What the device allows the atlas.
+shadows::DeviceShadowLimits shadow_limits(const vk::VulkanContext& context);
+
+}  // namespace sg

@@ -1,0 +1,103 @@
+#pragma once
+// Every shadow view due this frame drawn by a handful of passes, driven by the GPU (DESIGN.md:
+// "shadow views are data, not passes"). The CPU writes one record per view (a 2D map, or one
+// face of a point light's cube: its matrix, its atlas tile and frustum) and one per shadow
+// caster (world bounds, mesh, instance); then
+//
+//   shadow cull      (compute)  every caster against every view's frustum -> (caster, view) pairs
+//   shadow draws     (compute)  counts -> one indirect draw per (view kind, mesh)
+//   shadow scatter   (compute)  the pairs sorted into those draws' instance ranges
+//   shadow views     (raster)   clears the views' tiles, then two multi-draw indirect calls
+//                               (2D maps depth only; cube faces with shadow_cube.frag) draw
+//                               every pair into its tile of its atlas layer
+//
+// so CPU time grows with views and casters, not with their product, and the number of passes is
+// fixed. Needs shaderOutputLayer (gl_Layer from the vertex stage, shaders/shadow_batch.vert);
+// supported() says whether the device has it.
+//
+// Culled pairs live in a buffer of a fixed capacity. The GPU reports how many pairs it kept
+// (read back when the frame slot comes round again); when they did not fit, capacity grows and
+// all_casters_kept() says so, so that the caller re-renders the views that lost casters.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/unique_handle.h"
+#include "systems/gpu_scene.h"
+#include "systems/shadows/frame_lights.h"
+
+namespace sg::vk {
+class VulkanContext;
+}
+
+namespace sg {
+
+class ShadowViewBatch {
+ public:
+  ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight);
+
+  static bool supported(const vk::VulkanContext& context);
+
+  // After FrameRing::begin_frame returned `slot`, before prepare: false when the frame that last
+  // used the slot kept more pairs than it could store, so some of its views missed casters and
+  // must be rendered again (the capacity has grown since).
+  bool all_casters_kept(uint32_t slot);
+  // CPU side of a frame: the records of the views of `lights` that render this frame (`render`),
+  // in an atlas of `page_size` texels a page, and of `scene`'s casters.
+  void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene, uint32_t page_size);
+
+  // Adds the passes (none when no view renders) and returns the atlas's newest version. `scene`
+  // is read when the passes record.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
+                         uint32_t slot) const;
+
+  uint32_t views() const { return static_cast<uint32_t>(views_.size()); }
+  // Pairs (caster, view) the GPU kept in the last frame read back: instances drawn into views.
+  uint64_t kept_pairs() const { return kept_pairs_; }
+
+  // Must match ShadowView of shaders/shadow_views.glsl.
+  struct View {
+    glm::mat4 view_projection;
+    glm::vec4 tile;
+    glm::vec4 position_far;
+    std::array<glm::vec4, 6> planes;
+    glm::uvec4 info;
+  };
+  struct Caster {
+    glm::vec4 min_mesh;
+    glm::vec4 max_instance;
+  };
+
+ private:
+  vk::PipelineLayout cull_layout_;
+  vk::PipelineLayout draws_layout_;
+  vk::PipelineLayout scatter_layout_;
+  vk::PipelineLayout raster_layout_;
+  vk::UniquePipeline cull_pipeline_;
+  vk::UniquePipeline draws_pipeline_;
+  vk::UniquePipeline scatter_pipeline_;
+  vk::UniquePipeline map_pipeline_;
+  vk::UniquePipeline face_pipeline_;
+  uint32_t max_views_per_dispatch_ = 0;
+
+  vk::FrameBuffers view_buffers_;
+  vk::FrameBuffers caster_buffers_;
+  vk::FrameBuffers mesh_buffers_;
+  vk::FrameBuffers feedback_;
+  std::vector<uint64_t> capacity_in_slot_;  // the pair capacity each slot's last frame had
+  uint64_t capacity_limit_ = uint64_t{1} << 22;
+  uint64_t capacity_ = 0;  // this frame's
+  uint64_t kept_pairs_ = 0;
+
+  std::vector<View> views_;
+  std::vector<Caster> casters_;
+  std::vector<glm::uvec4> meshes_;
+  std::vector<VkClearRect> clears_;
+};
+
+}  // namespace sg

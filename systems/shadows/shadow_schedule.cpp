@@ -1,0 +1,145 @@
+#include "systems/shadows/shadow_schedule.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "systems/shadows/atlas_tile_coords.h"
+
+namespace sg::shadows {
+namespace {
+
+constexpr float unbounded_importance = 1.0e9f;
+
+}  // namespace
+
+float light_importance(const glm::vec4& reach, const ShadowCamera& camera) {
+  if (reach.w < 0.0f) return unbounded_importance;
+  const glm::vec3 centre(reach);
+  for (const glm::vec4& plane : frustum_planes(camera.view_projection)) {
+    if (glm::dot(glm::vec3(plane), centre) + plane.w < -reach.w * glm::length(glm::vec3(plane))) return 0.0f;
+  }
+  const float distance = glm::length(centre - camera.eye);
+  if (distance <= reach.w) return unbounded_importance;
+  return 2.0f * std::asin(reach.w / distance) * camera.pixels_per_radian;
+}
+
+ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas) : planner_(atlas), page_size_(atlas.page_size) {}
+
+void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera,
+                              std::span<const CasterBounds> casters, uint32_t view_budget) {
+  // Requests: maps first, then cubes, each in the lights' order. A light whose reach is out of
+  // the camera's sight shades nothing visible: it asks for no tile at all.
+  ++frame_;
+  requests_.clear();
+  request_of_.assign(lights.maps.size() + lights.cubes.size(), no_request);
+  stats_ = {};
+  for (size_t m = 0; m < lights.maps.size(); ++m) {
+    const ShadowMapView& map = lights.maps[m];
+    const float importance = light_importance(map.reach, camera);
+    if (importance <= 0.0f) continue;
+    request_of_[m] = static_cast<uint32_t>(requests_.size());
+    requests_.push_back({map.key, false, map.requested_resolution, importance});
+  }
+  for (size_t c = 0; c < lights.cubes.size(); ++c) {
+    const ShadowCubeView& cube = lights.cubes[c];
+    // A face spans a quarter turn, about half of what the whole sphere covers on screen.
+    const float importance = 0.5f * light_importance(cube.position_far, camera);
+    if (importance <= 0.0f) continue;
+    request_of_[lights.maps.size() + c] = static_cast<uint32_t>(requests_.size());
+    requests_.push_back({cube.key, true, cube.requested_resolution, importance});
+  }
+  placements_.assign(requests_.size(), ShadowPlacement{});
+  planner_.plan(requests_, placements_);
+
+  // The cache sees the lights that have tiles.
+  cache_lights_.clear();
+  cached_request_.clear();
+  const auto add_to_cache = [&](uint32_t request, const glm::vec4& reach, bool changed, uint32_t views) {
+    if (request == no_request || placements_[request].resolution == 0) return;
+    cached_request_.push_back(request);
+    cache_lights_.push_back({requests_[request].key, reach, changed, placements_[request].moved, views});
+  };
+  for (size_t m = 0; m < lights.maps.size(); ++m) {
+    add_to_cache(request_of_[m], lights.maps[m].reach, lights.maps[m].changed, 1);
+  }
+  for (size_t c = 0; c < lights.cubes.size(); ++c) {
+    const ShadowCubeView& cube = lights.cubes[c];
+    add_to_cache(request_of_[lights.maps.size() + c], cube.position_far, cube.changed, 6);
+  }
+  render_.assign(cache_lights_.size(), 0);
+  usable_.assign(cache_lights_.size(), 0);
+  cache_.plan(cache_lights_, caster_changes_.update(casters), view_budget, render_, usable_);
+
+  // Results per request, then onto the views and their records.
+  decision_.assign(requests_.size(), Decision{});
+  for (size_t c = 0; c < cached_request_.size(); ++c) {
+    decision_[cached_request_[c]] = {render_[c] != 0, usable_[c] != 0};
+  }
+  const auto count_resolution = [&](uint32_t resolution) {
+    auto found = std::find_if(stats_.lights_per_resolution.begin(), stats_.lights_per_resolution.end(),
+                              [&](const auto& entry) { return entry.first == resolution; });
+    if (found == stats_.lights_per_resolution.end()) {
+      stats_.lights_per_resolution.emplace_back(resolution, 1);
+    } else {
+      ++found->second;
+    }
+  };
+  const auto apply = [&](uint32_t request, uint32_t views, auto& view, auto&& give_map) {
+    view.resolution = 0;
+    view.render = false;
+    if (request == no_request || placements_[request].resolution == 0) {
+      ++stats_.lights_without_shadow;
+      return;
+    }
+    const ShadowPlacement& placement = placements_[request];
+    count_resolution(placement.resolution);
+    const Decision decision = decision_[request];
+    if (!decision.usable) {
+      ++stats_.lights_waiting;
+      return;
+    }
+    view.resolution = placement.resolution;
+    view.render = decision.render;
+    (decision.render ? stats_.views_rendered : stats_.views_cached) += views;
+    give_map(placement);
+  };
+  // A cached map was rendered from where its light was then: the record samples it with that
+  // view, not the light's present one.
+  for (size_t m = 0; m < lights.maps.size(); ++m) {
+    ShadowMapView& map = lights.maps[m];
+    apply(request_of_[m], 1, map, [&](const ShadowPlacement& placement) {
+      map.tile = placement.tiles[0];
+      RenderedView& rendered = rendered_[map.key];
+      rendered.seen = frame_;
+      if (map.render) rendered.map = map.view;
+      set_shadow_map(lights.records[map.light], map.tile.page, tile_uv_rect(map.tile, page_size_),
+                     map.resolution, rendered.map);
+    });
+  }
+  for (size_t c = 0; c < lights.cubes.size(); ++c) {
+    ShadowCubeView& cube = lights.cubes[c];
+    apply(request_of_[lights.maps.size() + c], 6, cube, [&](const ShadowPlacement& placement) {
+      cube.tiles = placement.tiles;
+      RenderedView& rendered = rendered_[cube.key];
+      rendered.seen = frame_;
+      if (cube.render) {
+        rendered.cube = cube.views;
+        rendered.origin = glm::vec3(cube.position_far);
+      }
+      std::array<glm::vec2, 6> origins;
+      for (int f = 0; f < 6; ++f) origins[f] = glm::vec2(tile_uv_rect(cube.tiles[f], page_size_));
+      set_shadow_cube(lights.records[cube.light], cube.tiles[0].page, origins,
+                      float(cube.resolution) / float(page_size_), cube.resolution, rendered.cube,
+                      rendered.origin);
+    });
+  }
+  // Forget the views of lights that have no tile any more (or no longer exist).
+  if (rendered_.size() > 2 * cache_lights_.size() + 64) {
+    std::erase_if(rendered_, [&](const auto& entry) { return entry.second.seen != frame_; });
+  }
+  std::sort(stats_.lights_per_resolution.begin(), stats_.lights_per_resolution.end());
+  stats_.texels_used = planner_.stats().texels_used;
+  stats_.pages_used = planner_.stats().pages_used;
+}
+
+}  // namespace sg::shadows

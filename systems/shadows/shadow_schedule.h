@@ -1,0 +1,97 @@
+#pragma once
+// Which light gets which shadow, and which shadows render this frame: the atlas planner's tiles
+// (resolution from each light's importance on screen, within the memory budget) and the cache's
+// choice of the views to re-render (what changed, within a per-frame budget of views), applied
+// to a frame's lights. After schedule(), every shadowed view carries its tiles or none, `render`
+// says whether it is drawn this frame, and each record says where its map is; a light whose map
+// holds nothing valid yet (new, moved, or waiting for the budget) is shaded without a shadow.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "systems/shadows/caster_changes.h"
+#include "systems/shadows/frame_lights.h"
+#include "systems/shadows/shadow_atlas_planner.h"
+#include "systems/shadows/shadow_cache.h"
+
+namespace sg::shadows {
+
+// The camera the importance of lights is measured from.
+struct ShadowCamera {
+  glm::vec3 eye{0.0f};
+  glm::mat4 view_projection{1.0f};
+  float pixels_per_radian = 1.0f;  // the screen's height over its vertical field of view, roughly
+};
+
+// The projected size, in pixels, of a light's sphere of reach `reach` seen from `camera`: 0 when
+// the sphere lies wholly outside the camera's frustum (nothing it lights is seen), the sphere's
+// diameter on screen otherwise, unbounded (a large number) when the camera is inside it or the
+// light has no range (w < 0).
+float light_importance(const glm::vec4& reach, const ShadowCamera& camera);
+
+struct ShadowScheduleStats {
+  uint32_t views_rendered = 0;         // 2D maps and cube faces drawn this frame
+  uint32_t views_cached = 0;           // shadowed views kept from an earlier frame
+  uint32_t lights_without_shadow = 0;  // out of sight, or over the memory budget
+  uint32_t lights_waiting = 0;         // have a tile, nothing valid in it yet (the view budget)
+  uint64_t texels_used = 0;
+  uint32_t pages_used = 0;
+  std::vector<std::pair<uint32_t, uint32_t>> lights_per_resolution;  // (resolution, lights)
+};
+
+class ShadowSchedule {
+ public:
+  explicit ShadowSchedule(const AtlasConfig& atlas);
+
+  // Places, caches and records every shadow of `lights` (gathered, not yet sorted). `casters`
+  // are the frame's shadow casters (CasterChangeTracker); view_budget caps the views rendered
+  // (0: no cap).
+  void schedule(FrameLights& lights, const ShadowCamera& camera, std::span<const CasterBounds> casters,
+                uint32_t view_budget);
+  // Every map must be rendered again (the atlas image was recreated).
+  void invalidate_all() { cache_.invalidate_all(); }
+
+  const ShadowScheduleStats& stats() const { return stats_; }
+  uint32_t pages_used() const { return planner_.stats().pages_used; }
+  // A line for the log when the budget's effect changed (ShadowAtlasPlanner), rate limited.
+  std::optional<std::string> take_budget_message() { return planner_.take_budget_message(); }
+
+ private:
+  ShadowAtlasPlanner planner_;
+  ShadowCache cache_;
+  CasterChangeTracker caster_changes_;
+  uint32_t page_size_;
+  ShadowScheduleStats stats_;
+
+  // Per frame, kept so that scheduling allocates nothing once grown.
+  static constexpr uint32_t no_request = UINT32_MAX;
+  struct Decision {
+    bool render = false;
+    bool usable = false;
+  };
+  std::vector<uint32_t> request_of_;  // per view (maps, then cubes): its request or no_request
+  std::vector<ShadowRequest> requests_;
+  std::vector<ShadowPlacement> placements_;
+  std::vector<uint32_t> cached_request_;  // per cache light: its request
+  std::vector<ShadowCacheLight> cache_lights_;
+  std::vector<uint8_t> render_;
+  std::vector<uint8_t> usable_;
+  std::vector<Decision> decision_;  // per request
+
+  // The view each light's map was last rendered with, by key.
+  struct RenderedView {
+    LightView map;
+    CubeViews cube;
+    glm::vec3 origin{0.0f};
+    uint64_t seen = 0;  // the last frame the light had a tile
+  };
+  std::unordered_map<uint64_t, RenderedView> rendered_;
+  uint64_t frame_ = 0;
+};
+
+}  // namespace sg::shadows
