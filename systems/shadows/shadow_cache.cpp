@@ -1,0 +1,131 @@
+#include "systems/shadows/shadow_cache.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
+
+namespace sg::shadows {
+
+void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> changed_casters,
+                       uint32_t view_budget, std::span<uint8_t> render, std::span<uint8_t> usable) {
+  if (render.size() != lights.size() || usable.size() != lights.size()) {
+    throw std::invalid_argument(
+        "sg::shadows::ShadowCache::plan: render and usable need one element per light");
+  }
+  ++frame_;
+  match_states(lights);
+  for (size_t i = 0; i < lights.size(); ++i) {
+    LightState& state = states_[i];
+    if (lights[i].invalid) state.valid = false;
+    state.dirty = state.dirty || lights[i].changed || !state.valid;
+  }
+  mark_dirty_by_casters(lights, changed_casters);
+  choose_renders(lights, view_budget, render);
+
+  stats_ = {};
+  for (size_t i = 0; i < lights.size(); ++i) {
+    LightState& state = states_[i];
+    const uint32_t views = lights[i].views;
+    if (render[i] != 0) {
+      state.rendered_frame = frame_;
+      state.dirty = false;
+      state.valid = true;
+      stats_.views_rendered += views;
+      ++stats_.lights_rendered;
+    } else if (state.valid) {
+      stats_.views_cached += views;
+    }
+    usable[i] = state.valid ? 1 : 0;
+    stats_.lights_waiting += state.dirty ? 1 : 0;
+    stats_.lights_unavailable += state.valid ? 0 : 1;
+  }
+}
+
+void ShadowCache::invalidate_all() {
+  for (LightState& state : states_) state.valid = false;
+}
+
+// Usually the lights are the previous frame's in the same order, and their states are already in
+// place; otherwise each light finds its state by key, and a key not seen before starts afresh.
+void ShadowCache::match_states(std::span<const ShadowCacheLight> lights) {
+  const bool same_lights = std::equal(
+      lights.begin(), lights.end(), states_.begin(), states_.end(),
+      [](const ShadowCacheLight& light, const LightState& state) { return light.key == state.key; });
+  if (same_lights) return;
+  index_of_key_.clear();
+  for (uint32_t i = 0; i < states_.size(); ++i) index_of_key_.emplace(states_[i].key, i);
+  matched_.clear();
+  for (const ShadowCacheLight& light : lights) {
+    const auto found = index_of_key_.find(light.key);
+    matched_.push_back(found == index_of_key_.end() ? LightState{.key = light.key} : states_[found->second]);
+  }
+  std::swap(states_, matched_);
+}
+
+// Only lights not dirty already are worth testing; unbounded ones are dirty on any change.
+void ShadowCache::mark_dirty_by_casters(std::span<const ShadowCacheLight> lights,
+                                        std::span<const scene::Aabb> changed_casters) {
+  if (changed_casters.empty()) return;
+  candidates_.clear();
+  candidate_reach_.clear();
+  for (uint32_t i = 0; i < lights.size(); ++i) {
+    if (states_[i].dirty) continue;
+    if (lights[i].reach.w < 0.0f) {
+      states_[i].dirty = true;
+    } else {
+      candidates_.push_back(i);
+      candidate_reach_.push_back(lights[i].reach);
+    }
+  }
+  candidate_met_.assign(candidates_.size(), 0);
+  spheres_meeting_boxes_.find(candidate_reach_, changed_casters, candidate_met_);
+  for (size_t k = 0; k < candidates_.size(); ++k) {
+    if (candidate_met_[k] != 0) states_[candidates_[k]].dirty = true;
+  }
+}
+
+void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
+                                 std::span<uint8_t> render) {
+  std::fill(render.begin(), render.end(), uint8_t{0});
+  candidates_.clear();
+  uint64_t dirty_views = 0;
+  for (uint32_t i = 0; i < lights.size(); ++i) {
+    if (!states_[i].dirty) continue;
+    candidates_.push_back(i);
+    dirty_views += lights[i].views;
+  }
+  if (view_budget == 0 || dirty_views <= view_budget) {
+    for (const uint32_t i : candidates_) render[i] = 1;
+    return;
+  }
+
+  // Lights without a valid map, then the stalest, ties by key (the header's order).
+  const auto comes_first = [&](uint32_t a, uint32_t b) {
+    const LightState& x = states_[a];
+    const LightState& y = states_[b];
+    return std::tuple(x.valid, x.rendered_frame, x.key) < std::tuple(y.valid, y.rendered_frame, y.key);
+  };
+  uint32_t views_left = view_budget;
+  bool rendered_any = false;
+  const auto take_in_order = [&](auto begin, auto end) {
+    for (auto it = begin; it != end && views_left > 0; ++it) {
+      const uint32_t views = lights[*it].views;
+      if (views > views_left && rendered_any) continue;
+      render[*it] = 1;
+      views_left -= std::min(views, views_left);
+      rendered_any = true;
+    }
+  };
+  // Every light has a view at least, so no more than views_left lights fit: ordering that many
+  // is enough, unless lights were skipped for having more views than were left.
+  const auto head = candidates_.begin() + std::min<ptrdiff_t>(views_left, std::ssize(candidates_));
+  std::partial_sort(candidates_.begin(), head, candidates_.end(), comes_first);
+  take_in_order(candidates_.begin(), head);
+  if (views_left > 0) {
+    std::sort(head, candidates_.end(), comes_first);
+    take_in_order(head, candidates_.end());
+  }
+}
+
+}  // namespace sg::shadows

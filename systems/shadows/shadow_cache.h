@@ -1,0 +1,102 @@
+#pragma once
+// The shadow-map caching policy: which lights re-render their maps this frame. A light's map is
+// kept from frame to frame and re-rendered only when it may be wrong, at most `view_budget` views
+// a frame; a light waiting for its turn is lit with its stale map, or unshadowed when it has no
+// valid map at all. Plain data, no GPU: the renderer records the passes this chooses.
+#include <cstdint>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "systems/scene/aabb.h"
+#include "systems/shadows/spheres_meeting_boxes.h"
+
+namespace sg::shadows {
+
+// One shadowed light of a frame, as the cache sees it.
+struct ShadowCacheLight {
+  uint64_t key = 0;  // stable identity, e.g. the entity's; each key once per frame
+  // The sphere the light's shadow depends on (xyz centre, w radius): casters outside it cannot
+  // change its map. w < 0: unbounded, any caster change affects it.
+  glm::vec4 reach{0.0f, 0.0f, 0.0f, -1.0f};
+  bool changed = false;  // the light itself moved or changed since it was last rendered
+  bool invalid = false;  // its storage is new or moved this frame: the map's contents are garbage
+  uint32_t views = 1;    // views a render costs, at least 1: 1 for a 2D map, 6 for a cube
+};
+
+struct ShadowCacheStats {
+  uint32_t views_rendered = 0;
+  uint32_t views_cached = 0;  // views of lights sampling a map kept from an earlier frame
+  uint32_t lights_rendered = 0;
+  uint32_t lights_waiting = 0;      // dirty but over this frame's budget: rendered in a later frame
+  uint32_t lights_unavailable = 0;  // no valid map this frame: shaded unshadowed
+};
+
+class ShadowCache {
+ public:
+  // Decides which lights render this frame. `changed_casters` are the (non-empty) boxes shadows
+  // may have changed in (CasterChangeTracker::update). `render` and `usable` must have lights.size()
+  // elements (else std::invalid_argument); for each light, in the same order:
+  // - render = 1: render its map this frame;
+  // - usable = 1: after this frame's renders its map holds a valid, maybe stale, picture, so the
+  //   lighting may sample it; 0: shade the light unshadowed this frame.
+  //
+  // A light is dirty when its key was not in the previous call (it is new), it is `changed` or
+  // `invalid`, or a changed caster box meets its reach sphere; it stays dirty until rendered.
+  // Every dirty light renders when view_budget is 0 (unlimited) or their views fit in it.
+  // Otherwise dirty lights are taken in this order until the budget is used: lights without a
+  // valid map first (new, invalid, never rendered into their current storage), then the stalest
+  // (rendered longest ago), ties by key. A light with more views than the budget has left is
+  // skipped for this frame, unless nothing has been rendered yet this frame (so a budget under
+  // 6 views still renders cubes, one a frame). Stalest-first means no light starves: with lights
+  // of one view and no new or invalid ones arriving, a dirty light renders within
+  // ceil(dirty lights / view_budget) frames.
+  //
+  // usable = rendered this frame, or rendered in an earlier frame and not `invalid` (nor
+  // invalidate_all()) since.
+  //
+  // Cost: O(lights), plus, when casters changed, testing each clean bounded light against only
+  // the boxes near it (SpheresMeetingBoxes), plus, when the budget is short, ordering the dirty
+  // lights (O(dirty log budget) usually). A frame allocates nothing once grown, except when the
+  // lights are not the previous frame's keys in the previous frame's order: the key -> state map
+  // is then rebuilt.
+  void plan(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> changed_casters,
+            uint32_t view_budget, std::span<uint8_t> render, std::span<uint8_t> usable);
+
+  // The last plan's counts.
+  const ShadowCacheStats& stats() const { return stats_; }
+
+  // Every map's contents are garbage (e.g. the storage image was recreated): every light is
+  // unusable and dirty until rendered again.
+  void invalidate_all();
+
+ private:
+  struct LightState {
+    uint64_t key = 0;
+    uint64_t rendered_frame = 0;  // the plan that last rendered it; 0: never
+    bool dirty = true;
+    bool valid = false;  // its map holds a picture rendered into its current storage
+  };
+
+  void match_states(std::span<const ShadowCacheLight> lights);
+  void mark_dirty_by_casters(std::span<const ShadowCacheLight> lights,
+                             std::span<const scene::Aabb> changed_casters);
+  void choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
+                      std::span<uint8_t> render);
+
+  uint64_t frame_ = 0;
+  std::vector<LightState> states_;  // parallel to the previous plan's lights
+  ShadowCacheStats stats_;
+
+  // Working storage, kept so that a frame allocates nothing once grown.
+  std::vector<LightState> matched_;
+  std::unordered_map<uint64_t, uint32_t> index_of_key_;
+  std::vector<uint32_t> candidates_;  // lights tested against the caster boxes, then the dirty ones
+  std::vector<glm::vec4> candidate_reach_;
+  std::vector<uint8_t> candidate_met_;
+  SpheresMeetingBoxes spheres_meeting_boxes_;
+};
+
+}  // namespace sg::shadows

@@ -1,0 +1,324 @@
+// The shadow-map caching policy: which lights re-render their maps, and which maps may be sampled.
+#include <algorithm>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "systems/shadows/caster_changes.h"
+#include "systems/shadows/shadow_cache.h"
+#include "systems/shadows/spheres_meeting_boxes.h"
+
+namespace sg::shadows {
+namespace {
+
+ShadowCacheLight spot(uint64_t key, glm::vec3 centre = glm::vec3(0.0f), float radius = 1.0f) {
+  return {key, glm::vec4(centre, radius), false, false, 1};
+}
+
+ShadowCacheLight cube(uint64_t key) {
+  ShadowCacheLight light = spot(key);
+  light.views = 6;
+  return light;
+}
+
+struct Plan {
+  std::vector<uint8_t> render;
+  std::vector<uint8_t> usable;
+};
+
+Plan plan(ShadowCache& cache, std::span<const ShadowCacheLight> lights, uint32_t view_budget = 0,
+          std::span<const scene::Aabb> changed_casters = {}) {
+  Plan out{std::vector<uint8_t>(lights.size()), std::vector<uint8_t>(lights.size())};
+  cache.plan(lights, changed_casters, view_budget, out.render, out.usable);
+  return out;
+}
+
+std::vector<uint8_t> all(size_t count, uint8_t value) { return std::vector<uint8_t>(count, value); }
+
+// A frame's lights with `changed` cleared, as the renderer passes them when nothing happened.
+std::vector<ShadowCacheLight> unchanged(std::vector<ShadowCacheLight> lights) {
+  for (ShadowCacheLight& light : lights) light.changed = light.invalid = false;
+  return lights;
+}
+
+TEST(ShadowCache, NewLightsRenderThenStayCachedWhileNothingChanges) {
+  ShadowCache cache;
+  const std::vector<ShadowCacheLight> lights{spot(1), cube(2), spot(3)};
+  Plan first = plan(cache, lights);
+  EXPECT_EQ(first.render, all(3, 1));
+  EXPECT_EQ(first.usable, all(3, 1));
+  EXPECT_EQ(cache.stats().views_rendered, 8u);
+  EXPECT_EQ(cache.stats().lights_rendered, 3u);
+
+  for (int frame = 0; frame < 3; ++frame) {
+    const Plan next = plan(cache, lights);
+    EXPECT_EQ(next.render, all(3, 0));
+    EXPECT_EQ(next.usable, all(3, 1));
+    EXPECT_EQ(cache.stats().views_rendered, 0u);
+    EXPECT_EQ(cache.stats().views_cached, 8u);
+    EXPECT_EQ(cache.stats().lights_waiting, 0u);
+    EXPECT_EQ(cache.stats().lights_unavailable, 0u);
+  }
+}
+
+TEST(ShadowCache, AChangedLightRendersAlone) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights{spot(1), spot(2), spot(3)};
+  plan(cache, lights);
+  lights[1].changed = true;
+  EXPECT_EQ(plan(cache, lights).render, (std::vector<uint8_t>{0, 1, 0}));
+  EXPECT_EQ(plan(cache, unchanged(lights)).render, all(3, 0));
+}
+
+TEST(ShadowCache, LightsAreKnownByKeyNotByPlace) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights{spot(1), spot(2), spot(3)};
+  plan(cache, lights);
+  std::reverse(lights.begin(), lights.end());
+  EXPECT_EQ(plan(cache, lights).render, all(3, 0));
+
+  // Light 2 gone for a frame, then back: it is new again.
+  const std::vector<ShadowCacheLight> without_2{spot(1), spot(3)};
+  EXPECT_EQ(plan(cache, without_2).render, all(2, 0));
+  const Plan back = plan(cache, lights);
+  EXPECT_EQ(back.render, (std::vector<uint8_t>{0, 1, 0}));
+}
+
+TEST(ShadowCache, AnInvalidLightIsUnusableUntilRendered) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights{spot(1), spot(2)};
+  plan(cache, lights);
+  lights[0].invalid = lights[1].invalid = true;  // e.g. both moved to other atlas places
+  Plan over_budget = plan(cache, lights, 1);
+  EXPECT_EQ(over_budget.render, (std::vector<uint8_t>{1, 0}));  // equally stale: by key
+  EXPECT_EQ(over_budget.usable, (std::vector<uint8_t>{1, 0}));
+  EXPECT_EQ(cache.stats().lights_unavailable, 1u);
+  EXPECT_EQ(cache.stats().lights_waiting, 1u);
+
+  // No longer flagged, but its map was never rendered into its new storage.
+  const Plan next = plan(cache, unchanged(lights), 1);
+  EXPECT_EQ(next.render, (std::vector<uint8_t>{0, 1}));
+  EXPECT_EQ(next.usable, all(2, 1));
+}
+
+TEST(ShadowCache, ALightSkippedByTheBudgetStaysDirtyAndSamplesItsStaleMap) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights{spot(1), spot(2), spot(3)};
+  plan(cache, lights);
+  lights[0].changed = lights[2].changed = true;
+  const Plan changed = plan(cache, lights, 1);
+  EXPECT_EQ(changed.render, (std::vector<uint8_t>{1, 0, 0}));
+  EXPECT_EQ(changed.usable, all(3, 1));
+  EXPECT_EQ(cache.stats().lights_waiting, 1u);
+  EXPECT_EQ(cache.stats().views_cached, 2u);
+
+  // Nothing happens any more, yet light 3 still owes its render.
+  EXPECT_EQ(plan(cache, unchanged(lights), 1).render, (std::vector<uint8_t>{0, 0, 1}));
+  EXPECT_EQ(plan(cache, unchanged(lights), 1).render, all(3, 0));
+}
+
+TEST(ShadowCache, LightsWithoutAValidMapComeBeforeStaleOnes) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights{spot(1), spot(2)};
+  plan(cache, lights);
+  lights[1].changed = true;
+  plan(cache, lights);  // light 2 is now the fresher of the two
+  lights[1].changed = false;
+
+  lights[0].changed = true;
+  lights[1].invalid = true;
+  EXPECT_EQ(plan(cache, lights, 1).render, (std::vector<uint8_t>{0, 1}));
+
+  // A new light, too, comes before the stale one.
+  lights = unchanged(lights);
+  lights.push_back(spot(0));
+  EXPECT_EQ(plan(cache, lights, 1).render, (std::vector<uint8_t>{0, 0, 1}));
+  EXPECT_EQ(plan(cache, lights, 1).render, (std::vector<uint8_t>{1, 0, 0}));
+}
+
+// With keys as the only order, light 9 would never render while the others keep changing.
+TEST(ShadowCache, NoLightStarvesWhenTheBudgetIsShort) {
+  constexpr uint32_t light_count = 10;
+  constexpr uint32_t budget = 3;
+  constexpr int frames_per_round = (light_count + budget - 1) / budget;
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights;
+  for (uint32_t key = 0; key < light_count; ++key) lights.push_back(spot(key));
+  std::vector<int> last_rendered(light_count, 0);
+  for (int frame = 1; frame <= 40; ++frame) {
+    const Plan p = plan(cache, lights, budget);
+    EXPECT_EQ(cache.stats().views_rendered, budget);
+    for (uint32_t i = 0; i < light_count; ++i) {
+      if (p.render[i] != 0) last_rendered[i] = frame;
+      EXPECT_LE(frame - last_rendered[i], frames_per_round - 1) << "light " << i << " frame " << frame;
+    }
+    for (ShadowCacheLight& light : lights) light.changed = true;  // every light changes every frame
+  }
+}
+
+TEST(ShadowCache, EveryDirtyLightRendersWithinTotalOverBudgetFrames) {
+  constexpr uint32_t light_count = 10;
+  constexpr uint32_t budget = 4;
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights;
+  for (uint32_t key = 0; key < light_count; ++key) lights.push_back(spot(key * 7 % light_count));
+  std::vector<uint8_t> rendered(light_count, 0);
+  for (uint32_t frame = 0; frame < (light_count + budget - 1) / budget; ++frame) {
+    const Plan p = plan(cache, lights, budget);
+    for (uint32_t i = 0; i < light_count; ++i) rendered[i] |= p.render[i];
+  }
+  EXPECT_EQ(rendered, all(light_count, 1));
+  EXPECT_EQ(cache.stats().lights_waiting, 0u);
+  EXPECT_EQ(plan(cache, lights, budget).render, all(light_count, 0));
+}
+
+TEST(ShadowCache, ABudgetUnderSixViewsStillRendersCubesOneAFrame) {
+  ShadowCache cache;
+  const std::vector<ShadowCacheLight> cubes{cube(1), cube(2), cube(3)};
+  for (int frame = 0; frame < 3; ++frame) {
+    plan(cache, cubes, 4);
+    EXPECT_EQ(cache.stats().lights_rendered, 1u);
+    EXPECT_EQ(cache.stats().views_rendered, 6u);
+  }
+  EXPECT_EQ(cache.stats().lights_waiting, 0u);
+  EXPECT_EQ(cache.stats().lights_unavailable, 0u);
+}
+
+TEST(ShadowCache, ALightLargerThanTheBudgetLeftWaitsWhileSmallerOnesBehindItRender) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights{spot(1), cube(2), spot(3)};
+  const Plan first = plan(cache, lights, 6);
+  EXPECT_EQ(first.render, (std::vector<uint8_t>{1, 0, 1}));
+  EXPECT_EQ(first.usable, (std::vector<uint8_t>{1, 0, 1}));
+  EXPECT_EQ(cache.stats().views_rendered, 2u);
+
+  // The cube, still without a map, now comes first and takes the whole budget.
+  lights[0].changed = lights[2].changed = true;
+  const Plan second = plan(cache, lights, 6);
+  EXPECT_EQ(second.render, (std::vector<uint8_t>{0, 1, 0}));
+  EXPECT_EQ(cache.stats().lights_waiting, 2u);
+}
+
+TEST(ShadowCache, InvalidateAllMakesEveryMapUnusableUntilRendered) {
+  ShadowCache cache;
+  const std::vector<ShadowCacheLight> lights{spot(1), spot(2), spot(3)};
+  plan(cache, lights);
+  cache.invalidate_all();
+  const Plan p = plan(cache, lights, 2);
+  EXPECT_EQ(p.render, (std::vector<uint8_t>{1, 1, 0}));
+  EXPECT_EQ(p.usable, (std::vector<uint8_t>{1, 1, 0}));
+  EXPECT_EQ(cache.stats().lights_unavailable, 1u);
+  EXPECT_EQ(plan(cache, lights, 2).render, (std::vector<uint8_t>{0, 0, 1}));
+}
+
+TEST(ShadowCache, RenderAndUsableNeedOneElementPerLight) {
+  ShadowCache cache;
+  const std::vector<ShadowCacheLight> lights{spot(1), spot(2)};
+  std::vector<uint8_t> render(2);
+  std::vector<uint8_t> usable(1);
+  EXPECT_THROW(cache.plan(lights, {}, 0, render, usable), std::invalid_argument);
+}
+
+// Lights 10 apart on a 10 x 10 grid in x-z, 5 above the floor, reaching 6: light (i, j) has key
+// 10 * i + j. Caster boxes sit on the floor.
+std::vector<ShadowCacheLight> light_grid() {
+  std::vector<ShadowCacheLight> lights;
+  for (uint64_t i = 0; i < 10; ++i) {
+    for (uint64_t j = 0; j < 10; ++j)
+      lights.push_back(spot(10 * i + j, glm::vec3(10.0f * i, 5.0f, 10.0f * j), 6.0f));
+  }
+  return lights;
+}
+
+CasterBounds caster_at(uint64_t key, float x, float z) {
+  return {key, {glm::vec3(x - 1.0f, 0.0f, z - 1.0f), glm::vec3(x + 1.0f, 2.0f, z + 1.0f)}};
+}
+
+std::vector<uint64_t> rendered_keys(std::span<const ShadowCacheLight> lights, const Plan& p) {
+  std::vector<uint64_t> keys;
+  for (size_t i = 0; i < lights.size(); ++i) {
+    if (p.render[i] != 0) keys.push_back(lights[i].key);
+  }
+  return keys;
+}
+
+TEST(ShadowCache, AMovedCasterRendersExactlyTheLightsWhoseReachItLeftOrEntered) {
+  ShadowCache cache;
+  CasterChangeTracker tracker;
+  std::vector<ShadowCacheLight> lights = light_grid();
+  std::vector<CasterBounds> casters{caster_at(0, 20.0f, 30.0f), caster_at(1, 70.0f, 70.0f)};
+  plan(cache, lights, 0, tracker.update(casters));
+
+  // Under light (2, 3) only, it moves to between lights (2, 3) and (3, 3).
+  casters[0] = caster_at(0, 25.0f, 30.0f);
+  std::span<const scene::Aabb> changes = tracker.update(casters);
+  const Plan moved = plan(cache, lights, 0, changes);
+  EXPECT_EQ(rendered_keys(lights, moved), (std::vector<uint64_t>{23, 33}));
+  for (size_t i = 0; i < lights.size(); ++i) {
+    const bool reached = std::any_of(changes.begin(), changes.end(), [&](const scene::Aabb& box) {
+      return sphere_meets_box(lights[i].reach, box);
+    });
+    EXPECT_EQ(moved.render[i] != 0, reached) << "light " << lights[i].key;
+  }
+
+  // It moves on to under light (5, 5): the lights it left render too.
+  casters[0] = caster_at(0, 50.0f, 50.0f);
+  EXPECT_EQ(rendered_keys(lights, plan(cache, lights, 0, tracker.update(casters))),
+            (std::vector<uint64_t>{23, 33, 55}));
+
+  // Nothing moves: nothing renders.
+  const Plan still = plan(cache, lights, 0, tracker.update(casters));
+  EXPECT_EQ(still.render, all(lights.size(), 0));
+  EXPECT_EQ(still.usable, all(lights.size(), 1));
+}
+
+TEST(ShadowCache, AnUnboundedLightRendersOnAnyCasterChangeOnly) {
+  ShadowCache cache;
+  CasterChangeTracker tracker;
+  std::vector<ShadowCacheLight> lights = light_grid();
+  lights.push_back({1'000, glm::vec4(0.0f, 0.0f, 0.0f, -1.0f), false, false, 1});  // e.g. the sun
+  std::vector<CasterBounds> casters{caster_at(0, 500.0f, 500.0f)};  // far from every bounded light
+  plan(cache, lights, 0, tracker.update(casters));
+
+  EXPECT_TRUE(rendered_keys(lights, plan(cache, lights, 0, tracker.update(casters))).empty());
+  casters[0] = caster_at(0, 510.0f, 500.0f);
+  EXPECT_EQ(rendered_keys(lights, plan(cache, lights, 0, tracker.update(casters))),
+            (std::vector<uint64_t>{1'000}));
+}
+
+// Many lights, many boxes, some lights dirty already and some unbounded: the cache renders
+// exactly the lights a test of every light against every box finds.
+TEST(ShadowCache, ManyChangedCastersRenderExactlyTheLightsTheyReach) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> coordinate(-500.0f, 500.0f);
+  std::uniform_real_distribution<float> radius(0.5f, 15.0f);
+  std::vector<ShadowCacheLight> lights;
+  for (uint64_t key = 0; key < 20'000; ++key) {
+    lights.push_back(spot(key, glm::vec3(coordinate(random), 0.0f, coordinate(random)), radius(random)));
+    if (key % 1'000 == 0) lights.back().reach.w = -1.0f;
+  }
+  std::vector<scene::Aabb> boxes;
+  for (int b = 0; b < 300; ++b) {
+    const glm::vec3 min(coordinate(random), -1.0f, coordinate(random));
+    boxes.push_back({min, min + glm::vec3(3.0f)});
+  }
+
+  ShadowCache cache;
+  plan(cache, lights);
+  for (size_t i = 0; i < lights.size(); i += 7) lights[i].changed = true;
+  const Plan p = plan(cache, lights, 0, boxes);
+  size_t rendered = 0;
+  for (size_t i = 0; i < lights.size(); ++i) {
+    const bool reached = lights[i].reach.w < 0.0f || std::any_of(boxes.begin(), boxes.end(), [&](auto& box) {
+                           return sphere_meets_box(lights[i].reach, box);
+                         });
+    ASSERT_EQ(p.render[i] != 0, reached || lights[i].changed) << "light " << i;
+    rendered += p.render[i];
+  }
+  EXPECT_LT(rendered, lights.size() / 2);  // the test means something: most lights stay cached
+}
+
+}  // namespace
+}  // namespace sg::shadows
