@@ -35,6 +35,9 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
   stats.scene_name = scene.scene.name;
   stats.scene = scene::scene_stats(scene.scene);
   stats.cpu_frame_ms = summarize(record.cpu_frame_ms);
+  const SandboxFrame::PhaseTimes& phases = frame.phase_ms();
+  stats.cpu_phases_ms = {summarize(phases.update), summarize(phases.gather), summarize(phases.prepare),
+                         summarize(phases.declare), summarize(phases.execute)};
   stats.wall_frame_ms = summarize(record.wall_frame_ms);
   stats.lighting = lighting_path_name(frame.renderer().lighting());
   if (record.gpu_times) {
@@ -46,22 +49,32 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
   const ShadowAtlas& atlas = renderer.shadow_atlas();
   const shadows::ShadowScheduleStats& schedule = renderer.shadow_stats();
   stats.shadow_map_bytes = atlas.bytes();
-  stats.shadows = {renderer.shadow_views() == shadows::ShadowViewPath::batched ? "batched" : "per-light",
-                   atlas.shape().budget_bytes,
-                   atlas.shape().page_size,
-                   atlas.pages(),
-                   schedule.texels_used * shadows::atlas_texel_bytes,
-                   schedule.lights_per_resolution,
-                   schedule.lights_without_shadow,
-                   schedule.lights_waiting,
-                   summarize(frame.shadow_views_rendered()),
-                   summarize(frame.shadow_views_cached()),
-                   renderer.shadow_caster_draws()};
+  const std::optional<shadows::ShadowRaster> raster = renderer.shadow_raster();
+  stats.shadows = {
+      renderer.shadow_views() == shadows::ShadowViewPath::batched ? "batched" : "per-light",
+      raster ? std::optional<std::string>(raster == shadows::ShadowRaster::compute ? "compute" : "hardware")
+             : std::nullopt,
+      atlas.shape().budget_bytes,
+      atlas.shape().page_size,
+      atlas.pages(),
+      schedule.texels_used * shadows::atlas_texel_bytes,
+      schedule.lights_per_resolution,
+      schedule.lights_without_shadow,
+      schedule.lights_waiting,
+      summarize(frame.shadow_views_rendered()),
+      summarize(frame.shadow_views_cached()),
+      renderer.shadow_caster_draws()};
 
   if (stats.cpu_frame_ms) {
     std::printf("shadowgraph: %llu frames, CPU frame time median %.2f ms (min %.2f, max %.2f)\n",
                 static_cast<unsigned long long>(stats.frames), stats.cpu_frame_ms->median,
                 stats.cpu_frame_ms->min, stats.cpu_frame_ms->max);
+  }
+  if (const RunStats::CpuPhases& p = stats.cpu_phases_ms; p.update) {
+    std::printf(
+        "shadowgraph: CPU frame by phase (medians): update %.2f, gather %.2f, prepare %.2f, declare %.2f, "
+        "execute %.2f ms\n",
+        p.update->median, p.gather->median, p.prepare->median, p.declare->median, p.execute->median);
   }
   if (stats.wall_frame_ms) {
     std::printf("shadowgraph: wall time per frame median %.2f ms (min %.2f, max %.2f), %s lighting\n",
@@ -95,10 +108,11 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
   if (stats.shadows.views_rendered) {
     const RunStats::Shadows& s = stats.shadows;
     constexpr double mib = 1 << 20;
+    const std::string raster_note = s.raster ? ", " + *s.raster + " raster" : "";
     std::printf(
-        "shadowgraph: shadows (%s views): atlas %u pages of %u (%.0f of %.0f MiB budget), tiles %.1f MiB;"
+        "shadowgraph: shadows (%s views%s): atlas %u pages of %u (%.0f of %.0f MiB budget), tiles %.1f MiB;"
         " lights per resolution",
-        s.views.c_str(), s.pages, s.page_size, double(stats.shadow_map_bytes) / mib,
+        s.views.c_str(), raster_note.c_str(), s.pages, s.page_size, double(stats.shadow_map_bytes) / mib,
         double(s.budget_bytes) / mib, double(s.used_bytes) / mib);
     for (const auto& [resolution, lights] : s.lights_per_resolution)
       std::printf(" %u:%u", resolution, lights);

@@ -129,6 +129,17 @@ void add_options(CLI::App& app, Options& o) {
          "per-light: one pass per view, casters culled on the CPU (the baseline)")
       ->check(CLI::IsMember({"batched", "per-light"}))
       ->default_str("batched");
+  app.add_option_function<std::string>(
+         "--shadow-raster",
+         [&o](const std::string& value) {
+           o.shadow_raster = value == "compute"    ? shadows::ShadowRaster::compute
+                             : value == "hardware" ? shadows::ShadowRaster::hardware
+                                                   : shadows::ShadowRaster::automatic;
+         },
+         "How batched shadow views are rasterized: hardware (multi-draw indirect), compute, or auto "
+         "(compute on GPUs, hardware on CPU devices)")
+      ->check(CLI::IsMember({"auto", "hardware", "compute"}))
+      ->default_str("auto");
   app.add_option(
          "--shadow-memory", o.shadow_memory_mib,
          "Shadow atlas budget in MiB (0: an eighth of the GPU's memory, 64 to 2048); lights beyond it "

@@ -39,6 +39,7 @@ struct Options {
   bool shadows = true;                              // --shadows off: no light casts a shadow
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;  // --cube-shadows layered|six
   shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;  // --shadow-views
+  shadows::ShadowRaster shadow_raster = shadows::ShadowRaster::automatic;   // --shadow-raster
   uint32_t shadow_memory_mib = 0;  // --shadow-memory: the shadow atlas's budget; 0: the device's default
   uint32_t shadow_updates = shadows::default_shadow_view_budget;  // --shadow-updates: views redrawn a frame
   bool shadow_cache = true;                         // --shadow-cache off: redraw every map every frame

@@ -15,6 +15,8 @@
 //   },
 //   "cpu_frame_ms": {"median": 1.5, "min": 1.2, "max": 3.0},  // null when no frame ran; CPU
 //                                                // time per frame without waits for the GPU
+//   "cpu_phases_ms": {"update": {...}, "gather": {...}, "prepare": {...}, "declare": {...},
+//                     "execute": {...}},         // the CPU frame by phase (SandboxFrame::record)
 //   "wall_frame_ms": {...},                      // elapsed time per frame, waits included:
 //                                                // present to present in a window, frame start
 //                                                // to frame start headless; null under 2 frames
@@ -25,6 +27,7 @@
 //   "shadow_map_bytes": 0,                       // GPU memory holding shadow maps (the atlas image)
 //   "shadows": {
 //     "views": "batched",                        // batched or per-light (--shadow-views)
+//     "raster": "compute",                       // batched: compute or hardware; per-light: null
 //     "budget_bytes": 1073741824,                // the atlas's budget (--shadow-memory)
 //     "page_size": 4096, "pages": 2,             // the atlas image: pages of page_size texels
 //     "used_bytes": 12345678,                    // what the lights' tiles take, last frame
@@ -69,6 +72,9 @@ struct RunStats {
   std::string scene_name;
   scene::SceneStats scene;  // scene::scene_stats of the rendered scene
   std::optional<TimeSummary> cpu_frame_ms;
+  struct CpuPhases {
+    std::optional<TimeSummary> update, gather, prepare, declare, execute;
+  } cpu_phases_ms;
   std::optional<TimeSummary> wall_frame_ms;
   std::string lighting;
   std::optional<TimeSummary> gpu_frame_ms;  // unset when the device has no timestamps
@@ -79,6 +85,7 @@ struct RunStats {
 
   struct Shadows {
     std::string views;
+    std::optional<std::string> raster;
     std::uint64_t budget_bytes = 0;
     std::uint32_t page_size = 0;
     std::uint32_t pages = 0;

@@ -1,5 +1,7 @@
 #include "sandbox/sandbox_frame.h"
 
+#include <chrono>
+
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -54,6 +56,7 @@ RendererSettings renderer_settings(const Options& options) {
   settings.lighting = options.lighting;
   settings.exposure = options.exposure;
   settings.shadow_views = options.shadow_views;
+  settings.shadow_raster = options.shadow_raster;
   settings.shadow_memory_bytes = uint64_t{options.shadow_memory_mib} << 20;
   settings.shadow_view_budget = options.shadow_updates;
   settings.cache_shadows = options.shadow_cache;
@@ -85,14 +88,25 @@ void SandboxFrame::resize(VkExtent2D extent) {
 
 void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
                           const std::optional<PresentTarget>& present) {
+  auto mark = std::chrono::steady_clock::now();
+  const auto timed = [&](std::vector<double>& samples) {
+    const auto now = std::chrono::steady_clock::now();
+    samples.push_back(std::chrono::duration<double, std::milli>(now - mark).count());
+    mark = now;
+  };
   update(time_seconds);
+  timed(phase_ms_.update);
   renderer_.gather(std::as_const(scene_.scene.world));
+  timed(phase_ms_.gather);
   renderer_.prepare(frame.slot, scene_.pose, scene_.lens, image_.extent().width, image_.extent().height);
+  timed(phase_ms_.prepare);
   const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
   shadow_views_rendered_.push_back(shadows.views_rendered);
   shadow_views_cached_.push_back(shadows.views_cached);
   declare_passes(frame.slot, present);
+  timed(phase_ms_.declare);
   execute(frame);
+  timed(phase_ms_.execute);
 }
 
 void SandboxFrame::update(double time_seconds) {

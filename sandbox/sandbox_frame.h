@@ -64,6 +64,11 @@ class SandboxFrame {
   const std::shared_ptr<const rg::CompiledPlan>& plan() const { return plan_; }
   vk::GraphExecutor& executor() { return executor_; }
   const vk::GraphExecutor& executor() const { return executor_; }
+  // Per recorded frame: CPU milliseconds of each phase of record().
+  struct PhaseTimes {
+    std::vector<double> update, gather, prepare, declare, execute;
+  };
+  const PhaseTimes& phase_ms() const { return phase_ms_; }
   // Per recorded frame: shadow views (2D maps, cube faces) drawn, and kept from earlier frames.
   const std::vector<double>& shadow_views_rendered() const { return shadow_views_rendered_; }
   const std::vector<double>& shadow_views_cached() const { return shadow_views_cached_; }
@@ -85,6 +90,7 @@ class SandboxFrame {
   ecs::Tick transforms_updated_ = 0;
   rg::RenderGraph graph_;
   std::shared_ptr<const rg::CompiledPlan> plan_;
+  PhaseTimes phase_ms_;
   std::vector<double> shadow_views_rendered_;
   std::vector<double> shadow_views_cached_;
 };

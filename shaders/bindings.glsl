@@ -34,5 +34,9 @@ const int culled_pairs_binding = 19;
 const int draw_counts_binding = 20;
 const int shadow_draws_binding = 21;
 const int shadow_feedback_binding = 22;
+// Compute rasterization of the due views (shadow_raster.comp): their depths, and the geometry.
+const int shadow_depths_binding = 23;
+const int mesh_vertices_binding = 24;
+const int mesh_indices_binding = 25;
 
 #endif

@@ -2,16 +2,7 @@
 #ifndef SG_SCENE_INTERFACE_GLSL
 #define SG_SCENE_INTERFACE_GLSL
 
-#include "bindings.glsl"
-
-struct Instance {
-  mat4 model;
-  mat4 normal_matrix;       // inverse transpose of the model matrix
-  vec4 base_color_specular; // rgb: base colour, a: specular strength kS
-  vec4 material;            // x: Blinn shininess s, y: base colour texture index or -1
-};
-
-layout(std430, set = 0, binding = instances_binding) readonly buffer Instances { Instance instances[]; };
+#include "scene_instances.glsl"
 
 layout(push_constant) uniform FrameConstants {
   mat4 view_projection;

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Turns the culled pairs' counts into the frame's indirect draws: draw k * groups + g draws
+// Turns the culled pairs' counts into the frame's indirect draws and dispatches: draw k * groups + g draws
 // caster group g's mesh once per pair of view kind k, its instances a range of the sorted
 // pairs starting where the previous draw's end. Also writes the scatter's dispatch, its cursors
 // (each draw's first instance), and the total for the CPU (shadow_feedback). One thread: there
@@ -12,6 +12,7 @@ layout(local_size_x = 1) in;
 layout(std430, set = 0, binding = caster_meshes_binding) readonly buffer Meshes { CasterMesh meshes[]; };
 layout(std430, set = 0, binding = shadow_draws_binding) writeonly buffer Draws {
   uvec4 scatter_dispatch;  // x, y, z workgroups of shadow_scatter.comp
+  uvec4 raster_dispatch;   // and of shadow_raster.comp, a workgroup per pair
   DrawCommand draws[];
 };
 layout(std430, set = 0, binding = shadow_feedback_binding) writeonly buffer Feedback { uint kept_pairs; };
@@ -26,6 +27,8 @@ void main() {
     counts[draws_total + d] = first;
     first += n;
   }
-  scatter_dispatch = uvec4(min((min(total, pc.capacity) + 63u) / 64u, 65535u), 1u, 1u, 0u);
+  uint stored = min(total, pc.capacity);
+  scatter_dispatch = uvec4(min((stored + 63u) / 64u, 65535u), 1u, 1u, 0u);
+  raster_dispatch = uvec4(min(stored, 65535u), 1u, 1u, 0u);
   kept_pairs = total;
 }

@@ -43,7 +43,8 @@ GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes,
       instances_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "instances"),
       draws_(context, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, frames_in_flight, "indirect draws") {
   if (meshes.indices.empty()) return;  // nothing to draw, and Vulkan refuses empty buffers
-  constexpr VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  // Storage too: shadow_raster.comp reads the geometry itself.
+  constexpr VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   vertices_ = vk::Buffer(
       context, {meshes.vertices.size() * sizeof(scene::Vertex), dst | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
                 vk::MemoryUsage::gpu_only, "scene vertices"});

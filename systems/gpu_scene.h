@@ -67,6 +67,10 @@ class GpuScene {
                         VkDescriptorSet set, const FrameConstants& constants, uint32_t slot) const;
 
   const vk::Buffer& instances(uint32_t slot) const { return instances_.buffer(slot); }
+  // The mesh library's vertices (scene::Vertex) and 32-bit indices, also readable as storage
+  // buffers; no handle (VK_NULL_HANDLE) when the scene has no geometry.
+  const vk::Buffer& vertices() const { return vertices_; }
+  const vk::Buffer& indices() const { return indices_; }
   uint32_t instance_count() const { return static_cast<uint32_t>(bounds_.size()); }
   // Per mesh with casters: its draw over exactly its casters (firstInstance and instanceCount
   // give their range in the instance buffer).

@@ -29,7 +29,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       tone_map_(context, frame_format),
       light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light records") {
   if (settings.shadow_views == shadows::ShadowViewPath::batched && ShadowViewBatch::supported(context)) {
-    batch_.emplace(context, frames_in_flight);
+    batch_.emplace(context, frames_in_flight, settings.shadow_raster);
   } else {
     per_light_.emplace(context, frames_in_flight);
   }

@@ -49,6 +49,7 @@ struct RendererSettings {
   bool cull_casters = true;  // off: every shadow view draws every caster (the naive baseline)
   // Batched falls back to per-light where the device cannot draw views into atlas layers at once.
   shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;
+  shadows::ShadowRaster shadow_raster = shadows::ShadowRaster::automatic;  // the batched path's
   uint64_t shadow_memory_bytes = 0;  // the atlas's budget; 0: the device's default
   uint32_t shadow_view_budget = shadows::default_shadow_view_budget;  // views redrawn a frame; 0: all due
   bool cache_shadows = true;  // off: every map is redrawn every frame (within the view budget)
@@ -91,6 +92,10 @@ class SceneRenderer {
   // The path in use: the settings' one, or per-light where batching is not supported.
   shadows::ShadowViewPath shadow_views() const {
     return batch_ ? shadows::ShadowViewPath::batched : shadows::ShadowViewPath::per_light;
+  }
+  // The batched path's raster (never automatic); unset on the per-light path.
+  std::optional<shadows::ShadowRaster> shadow_raster() const {
+    return batch_ ? std::optional(batch_->raster()) : std::nullopt;
   }
   // Caster instances drawn into shadow views: the batch's count (read back a few frames late) or
   // the per-light passes' CPU culling.

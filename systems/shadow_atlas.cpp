@@ -35,8 +35,10 @@ bool ShadowAtlas::fit(uint32_t pages) {
       shadows::atlas_pages_to_create(pages_, std::min(pages, shape_.max_pages), shape_.max_pages);
   if (wanted == pages_) return false;
   if (image_.handle() != VK_NULL_HANDLE) vkDeviceWaitIdle(context_.device());
+  // Transfer destination: the compute raster copies its depths in (ShadowViewBatch).
   constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
-                                      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+                                      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                      VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   image_ = vk::Image(context_, {{shape_.page_size, shape_.page_size},
                                 vk::to_vk(depth_format),
                                 usage,

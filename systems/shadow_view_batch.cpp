@@ -4,7 +4,9 @@
 #include <array>
 #include <bit>
 #include <cstring>
+#include <numeric>
 #include <span>
+#include <tuple>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/pipeline.h"
@@ -14,6 +16,7 @@
 #include "shaders/shadow_cube.frag.spv.h"
 #include "shaders/shadow_cull.comp.spv.h"
 #include "shaders/shadow_draws.comp.spv.h"
+#include "shaders/shadow_raster.comp.spv.h"
 #include "shaders/shadow_scatter.comp.spv.h"
 #include "systems/shader_bindings.h"
 #include "systems/shadow_atlas.h"
@@ -40,7 +43,8 @@ struct BatchConstants {
 };
 
 constexpr VkDeviceSize counts_header_bytes = 16;  // total and padding
-constexpr VkDeviceSize draws_header_bytes = 16;   // the scatter's dispatch
+constexpr VkDeviceSize draws_header_bytes = 32;   // the scatter's and the raster's dispatches
+constexpr VkDeviceSize raster_dispatch_offset = 16;
 constexpr VkDeviceSize pair_bytes = 2 * sizeof(uint32_t);
 
 float as_float(uint32_t bits) { return std::bit_cast<float>(bits); }
@@ -49,14 +53,24 @@ VkClearRect tile_clear(const shadows::AtlasTile& tile) {
   return {{{int32_t(tile.x), int32_t(tile.y)}, {tile.size, tile.size}}, tile.page, 1};
 }
 
+// Compute rasterization beats the raster hardware of GPUs on small views (docs/PERFORMANCE.md);
+// a CPU device runs both on the same cores.
+shadows::ShadowRaster resolve(shadows::ShadowRaster raster, const vk::VulkanContext& context) {
+  if (raster != shadows::ShadowRaster::automatic) return raster;
+  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? shadows::ShadowRaster::hardware
+                                                                        : shadows::ShadowRaster::compute;
+}
+
 }  // namespace
 
 bool ShadowViewBatch::supported(const vk::VulkanContext& context) {
   return context.optional_features().shader_output_layer;
 }
 
-ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight)
-    : cull_layout_(context.device(),
+ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight,
+                                 shadows::ShadowRaster raster)
+    : raster_(resolve(raster, context)),
+      cull_layout_(context.device(),
                    {{shadow_views_binding, storage, 1, compute},
                     {shadow_casters_binding, storage, 1, compute},
                     {culled_pairs_binding, storage, 1, compute},
@@ -78,6 +92,17 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
       raster_layout_(context.device(), {{instances_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT},
                                         {shadow_views_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT},
                                         {view_instances_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT}}),
+      compute_raster_layout_(context.device(),
+                             {{instances_binding, storage, 1, compute},
+                              {shadow_views_binding, storage, 1, compute},
+                              {shadow_casters_binding, storage, 1, compute},
+                              {caster_meshes_binding, storage, 1, compute},
+                              {culled_pairs_binding, storage, 1, compute},
+                              {draw_counts_binding, storage, 1, compute},
+                              {shadow_depths_binding, storage, 1, compute},
+                              {mesh_vertices_binding, storage, 1, compute},
+                              {mesh_indices_binding, storage, 1, compute}},
+                             vk::push_constants<BatchConstants>(compute)),
       view_buffers_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow views"),
       caster_buffers_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow casters"),
       mesh_buffers_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow caster meshes"),
@@ -90,7 +115,11 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
       vk::create_compute_pipeline(context, {shadow_draws_comp, {}, draws_layout_.get(), "shadow draws"});
   scatter_pipeline_ = vk::create_compute_pipeline(
       context, {shadow_scatter_comp, {}, scatter_layout_.get(), "shadow scatter"});
-  if (!supported(context)) return;
+  if (raster_ == shadows::ShadowRaster::compute) {
+    compute_raster_pipeline_ = vk::create_compute_pipeline(
+        context, {shadow_raster_comp, {}, compute_raster_layout_.get(), "shadow raster"});
+    return;
+  }
   vk::GraphicsPipelineDesc desc;
   scene_vertex_input(desc, false);
   desc.depth_format = vk::to_vk(ShadowAtlas::depth_format);
@@ -121,6 +150,12 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
                               uint32_t page_size) {
   views_.clear();
   clears_.clear();
+  view_tiles_.clear();
+  const auto add_tile = [&](View& view, const shadows::AtlasTile& tile, uint32_t kind) {
+    view.info = {tile.page, kind, tile.size, 0u};
+    view_tiles_.push_back(tile);
+    clears_.push_back(tile_clear(tile));
+  };
   for (const shadows::ShadowMapView& map : lights.maps) {
     if (!map.render) continue;
     View& view = views_.emplace_back();
@@ -128,8 +163,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     view.tile = shadows::tile_clip_transform(map.tile, page_size);
     view.position_far = glm::vec4(0.0f);
     view.planes = shadows::frustum_planes(view.view_projection);
-    view.info = {map.tile.page, view_kind_map, 0u, 0u};
-    clears_.push_back(tile_clear(map.tile));
+    add_tile(view, map.tile, view_kind_map);
   }
   for (const shadows::ShadowCubeView& cube : lights.cubes) {
     if (!cube.render) continue;
@@ -139,10 +173,11 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
       view.tile = shadows::tile_clip_transform(cube.tiles[face], page_size);
       view.position_far = cube.position_far;
       view.planes = shadows::frustum_planes(view.view_projection);
-      view.info = {cube.tiles[face].page, view_kind_face, 0u, 0u};
-      clears_.push_back(tile_clear(cube.tiles[face]));
+      add_tile(view, cube.tiles[face], view_kind_face);
     }
   }
+
+  if (raster_ == shadows::ShadowRaster::compute) place_depths();
 
   casters_.clear();
   meshes_.clear();
@@ -165,9 +200,53 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
   capacity_in_slot_[slot] = views_.empty() || casters_.empty() ? 0 : capacity_;
 }
 
+// Per-region overhead dominates copying thousands of small squares (docs/PERFORMANCE.md), so
+// due tiles of one size side by side on a row of a page share one region: their depths lie
+// row-major in one rectangle of the buffer, and a frame copies a few rectangles a row of tiles.
+void ShadowViewBatch::place_depths() {
+  by_place_.resize(views_.size());
+  std::iota(by_place_.begin(), by_place_.end(), 0u);
+  std::sort(by_place_.begin(), by_place_.end(), [&](uint32_t a, uint32_t b) {
+    const shadows::AtlasTile& s = view_tiles_[a];
+    const shadows::AtlasTile& t = view_tiles_[b];
+    return std::tie(s.page, s.size, s.y, s.x) < std::tie(t.page, t.size, t.y, t.x);
+  });
+  copies_.clear();
+  depth_texels_ = 0;
+  for (size_t begin = 0; begin < by_place_.size();) {
+    const shadows::AtlasTile& first = view_tiles_[by_place_[begin]];
+    size_t end = begin + 1;
+    while (end < by_place_.size()) {
+      const shadows::AtlasTile& next = view_tiles_[by_place_[end]];
+      if (next.page != first.page || next.size != first.size || next.y != first.y ||
+          next.x != view_tiles_[by_place_[end - 1]].x + first.size) {
+        break;
+      }
+      ++end;
+    }
+    const auto pitch = static_cast<uint32_t>(end - begin) * first.size;
+    for (size_t k = begin; k < end; ++k) {
+      const uint32_t v = by_place_[k];
+      views_[v].raster = {static_cast<uint32_t>(depth_texels_ + (view_tiles_[v].x - first.x)), pitch, 0u, 0u};
+    }
+    VkBufferImageCopy copy{};
+    copy.bufferOffset = depth_texels_ * sizeof(float);
+    copy.bufferRowLength = pitch;
+    copy.bufferImageHeight = first.size;
+    copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, first.page, 1};
+    copy.imageOffset = {int32_t(first.x), int32_t(first.y), 0};
+    copy.imageExtent = {pitch, first.size, 1};
+    copies_.push_back(copy);
+    depth_texels_ += uint64_t{pitch} * first.size;
+    begin = end;
+  }
+}
+
 rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
                                         uint32_t slot) const {
   if (views_.empty()) return atlas;
+  if (casters_.empty()) return add_hardware_raster(graph, atlas, scene, slot, {}, {}, {});
+  const bool compute = raster_ == shadows::ShadowRaster::compute;
   const auto group_count = static_cast<uint32_t>(meshes_.size());
   const BatchConstants constants{static_cast<uint32_t>(casters_.size()), group_count,
                                  static_cast<uint32_t>(capacity_), 0u};
@@ -176,119 +255,185 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
   const VkBuffer caster_buffer = caster_buffers_.buffer(slot).handle();
 
   struct Buffers {
-    rg::BufferHandle counts, pairs, draws, sorted;
+    rg::BufferHandle counts, pairs, draws, depths;
   } b{};
-  if (!casters_.empty()) {
-    graph.add_pass(
-        "shadow cull reset",
-        [&](rg::PassBuilder& p) {
-          b.counts =
-              p.write(p.create_buffer("shadow draw counts", {counts_header_bytes + 2 * draw_count * 4}),
-                      rg::Usage::transfer);
-          return b.counts;
-        },
-        [](rg::BufferHandle counts, const vk::PassRecorder& rec) {
-          vkCmdFillBuffer(rec.cmd(), rec.buffer(counts), 0, VK_WHOLE_SIZE, 0);
-        });
-    graph.add_pass(
-        "shadow cull",
-        [&](rg::PassBuilder& p) {
-          b.counts = p.write(b.counts, rg::Usage::storage_compute);
-          b.pairs = p.write(p.create_buffer("shadow culled pairs", {capacity_ * pair_bytes}),
-                            rg::Usage::storage_compute);
-          return b;
-        },
-        [this, constants, view_buffer, caster_buffer](const Buffers& written, const vk::PassRecorder& rec) {
-          const VkDescriptorSet set = cull_layout_.write(rec.allocate_set(cull_layout_))
-                                          .buffer(shadow_views_binding, view_buffer)
-                                          .buffer(shadow_casters_binding, caster_buffer)
-                                          .buffer(culled_pairs_binding, rec.buffer(written.pairs))
-                                          .buffer(draw_counts_binding, rec.buffer(written.counts))
-                                          .update();
-          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, cull_pipeline_.get());
-          cull_layout_.bind_compute(rec.cmd(), set);
-          const uint32_t columns = (constants.caster_count + 63) / 64;
-          for (uint32_t base = 0; base < views(); base += max_views_per_dispatch_) {
-            BatchConstants chunk = constants;
-            chunk.view_base = base;
-            cull_layout_.push(rec.cmd(), chunk);
-            vkCmdDispatch(rec.cmd(), columns, std::min(max_views_per_dispatch_, views() - base), 1);
-          }
-        });
-    graph.add_pass(
-        "shadow draws",
-        [&](rg::PassBuilder& p) {
-          b.counts = p.write(b.counts, rg::Usage::storage_compute);
-          b.draws = p.write(
-              p.create_buffer("shadow draw commands",
-                              {draws_header_bytes + draw_count * sizeof(VkDrawIndexedIndirectCommand)}),
-              rg::Usage::storage_compute);
-          return b;
-        },
-        [this, constants, slot](const Buffers& written, const vk::PassRecorder& rec) {
-          const VkDescriptorSet set = draws_layout_.write(rec.allocate_set(draws_layout_))
-                                          .buffer(caster_meshes_binding, mesh_buffers_.buffer(slot).handle())
-                                          .buffer(draw_counts_binding, rec.buffer(written.counts))
-                                          .buffer(shadow_draws_binding, rec.buffer(written.draws))
-                                          .buffer(shadow_feedback_binding, feedback_.buffer(slot).handle())
-                                          .update();
-          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, draws_pipeline_.get());
-          draws_layout_.bind_compute(rec.cmd(), set);
-          draws_layout_.push(rec.cmd(), constants);
-          vkCmdDispatch(rec.cmd(), 1, 1, 1);
-        });
+  graph.add_pass(
+      "shadow cull reset",
+      [&](rg::PassBuilder& p) {
+        b.counts = p.write(p.create_buffer("shadow draw counts", {counts_header_bytes + 2 * draw_count * 4}),
+                           rg::Usage::transfer);
+        if (compute) {
+          b.depths =
+              p.write(p.create_buffer("shadow depths", {depth_texels_ * sizeof(float)}), rg::Usage::transfer);
+        }
+        return b;
+      },
+      [](const Buffers& written, const vk::PassRecorder& rec) {
+        vkCmdFillBuffer(rec.cmd(), rec.buffer(written.counts), 0, VK_WHOLE_SIZE, 0);
+        // The far plane, 1.0f: what a cleared tile holds.
+        if (written.depths.valid())
+          vkCmdFillBuffer(rec.cmd(), rec.buffer(written.depths), 0, VK_WHOLE_SIZE, 0x3F800000u);
+      });
+  graph.add_pass(
+      "shadow cull",
+      [&](rg::PassBuilder& p) {
+        b.counts = p.write(b.counts, rg::Usage::storage_compute);
+        b.pairs = p.write(p.create_buffer("shadow culled pairs", {capacity_ * pair_bytes}),
+                          rg::Usage::storage_compute);
+        return b;
+      },
+      [this, constants, view_buffer, caster_buffer](const Buffers& written, const vk::PassRecorder& rec) {
+        const VkDescriptorSet set = cull_layout_.write(rec.allocate_set(cull_layout_))
+                                        .buffer(shadow_views_binding, view_buffer)
+                                        .buffer(shadow_casters_binding, caster_buffer)
+                                        .buffer(culled_pairs_binding, rec.buffer(written.pairs))
+                                        .buffer(draw_counts_binding, rec.buffer(written.counts))
+                                        .update();
+        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, cull_pipeline_.get());
+        cull_layout_.bind_compute(rec.cmd(), set);
+        const uint32_t columns = (constants.caster_count + 63) / 64;
+        for (uint32_t base = 0; base < views(); base += max_views_per_dispatch_) {
+          BatchConstants chunk = constants;
+          chunk.view_base = base;
+          cull_layout_.push(rec.cmd(), chunk);
+          vkCmdDispatch(rec.cmd(), columns, std::min(max_views_per_dispatch_, views() - base), 1);
+        }
+      });
+  graph.add_pass(
+      "shadow draws",
+      [&](rg::PassBuilder& p) {
+        b.counts = p.write(b.counts, rg::Usage::storage_compute);
+        b.draws =
+            p.write(p.create_buffer("shadow draw commands",
+                                    {draws_header_bytes + draw_count * sizeof(VkDrawIndexedIndirectCommand)}),
+                    rg::Usage::storage_compute);
+        return b;
+      },
+      [this, constants, slot](const Buffers& written, const vk::PassRecorder& rec) {
+        const VkDescriptorSet set = draws_layout_.write(rec.allocate_set(draws_layout_))
+                                        .buffer(caster_meshes_binding, mesh_buffers_.buffer(slot).handle())
+                                        .buffer(draw_counts_binding, rec.buffer(written.counts))
+                                        .buffer(shadow_draws_binding, rec.buffer(written.draws))
+                                        .buffer(shadow_feedback_binding, feedback_.buffer(slot).handle())
+                                        .update();
+        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, draws_pipeline_.get());
+        draws_layout_.bind_compute(rec.cmd(), set);
+        draws_layout_.push(rec.cmd(), constants);
+        vkCmdDispatch(rec.cmd(), 1, 1, 1);
+      });
+  return compute ? add_compute_raster(graph, atlas, scene, slot, b.pairs, b.counts, b.draws, b.depths)
+                 : add_hardware_raster(graph, atlas, scene, slot, b.pairs, b.counts, b.draws);
+}
+
+rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg::ImageHandle atlas,
+                                                     const GpuScene& scene, uint32_t slot,
+                                                     rg::BufferHandle pairs, rg::BufferHandle counts,
+                                                     rg::BufferHandle draws) const {
+  const auto group_count = static_cast<uint32_t>(meshes_.size());
+  const BatchConstants constants{static_cast<uint32_t>(casters_.size()), group_count,
+                                 static_cast<uint32_t>(capacity_), 0u};
+  const VkBuffer view_buffer = view_buffers_.buffer(slot).handle();
+  const VkBuffer caster_buffer = caster_buffers_.buffer(slot).handle();
+  rg::BufferHandle sorted;
+  if (draws.valid()) {
+    // Execute gets the sorted pairs from setup: they do not exist before it runs.
     graph.add_pass(
         "shadow scatter",
         [&](rg::PassBuilder& p) {
-          p.read(b.draws, rg::Usage::indirect);
-          p.read(b.pairs, rg::Usage::storage_compute);
-          b.counts = p.write(b.counts, rg::Usage::storage_compute);
-          b.sorted = p.write(p.create_buffer("shadow sorted pairs", {capacity_ * pair_bytes}),
-                             rg::Usage::storage_compute);
-          return b;
+          p.read(draws, rg::Usage::indirect);
+          p.read(pairs, rg::Usage::storage_compute);
+          counts = p.write(counts, rg::Usage::storage_compute);
+          sorted = p.write(p.create_buffer("shadow sorted pairs", {capacity_ * pair_bytes}),
+                           rg::Usage::storage_compute);
+          return sorted;
         },
-        [this, constants, view_buffer, caster_buffer](const Buffers& written, const vk::PassRecorder& rec) {
+        [this, constants, view_buffer, caster_buffer, pairs, counts, draws](rg::BufferHandle sorted,
+                                                                            const vk::PassRecorder& rec) {
           const VkDescriptorSet set = scatter_layout_.write(rec.allocate_set(scatter_layout_))
                                           .buffer(shadow_views_binding, view_buffer)
                                           .buffer(shadow_casters_binding, caster_buffer)
-                                          .buffer(culled_pairs_binding, rec.buffer(written.pairs))
-                                          .buffer(draw_counts_binding, rec.buffer(written.counts))
-                                          .buffer(view_instances_binding, rec.buffer(written.sorted))
+                                          .buffer(culled_pairs_binding, rec.buffer(pairs))
+                                          .buffer(draw_counts_binding, rec.buffer(counts))
+                                          .buffer(view_instances_binding, rec.buffer(sorted))
                                           .update();
           vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, scatter_pipeline_.get());
           scatter_layout_.bind_compute(rec.cmd(), set);
           scatter_layout_.push(rec.cmd(), constants);
-          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(written.draws), 0);
+          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(draws), 0);
         });
   }
-
   graph.add_pass(
       "shadow views",
       [&](rg::PassBuilder& p) {
-        if (!casters_.empty()) {
-          p.read(b.draws, rg::Usage::indirect);
-          p.read(b.sorted, rg::Usage::storage_vertex);
+        if (draws.valid()) {
+          p.read(draws, rg::Usage::indirect);
+          p.read(sorted, rg::Usage::storage_vertex);
         }
         atlas = p.write(atlas, rg::Usage::depth_attachment);  // kept: cached tiles stay
       },
-      [this, &scene, slot, group_count, view_buffer, b](const vk::PassRecorder& rec) {
+      [this, &scene, slot, group_count, view_buffer, draws, sorted](const vk::PassRecorder& rec) {
         const VkClearAttachment far{VK_IMAGE_ASPECT_DEPTH_BIT, 0, {.depthStencil = {1.0f, 0}}};
         vkCmdClearAttachments(rec.cmd(), 1, &far, static_cast<uint32_t>(clears_.size()), clears_.data());
-        if (casters_.empty() || !scene.bind_geometry(rec.cmd())) return;
+        if (!draws.valid() || !scene.bind_geometry(rec.cmd())) return;
         rec.set_full_viewport();
         const VkDescriptorSet set = raster_layout_.write(rec.allocate_set(raster_layout_))
                                         .buffer(instances_binding, scene.instances(slot).handle())
                                         .buffer(shadow_views_binding, view_buffer)
-                                        .buffer(view_instances_binding, rec.buffer(b.sorted))
+                                        .buffer(view_instances_binding, rec.buffer(sorted))
                                         .update();
         raster_layout_.bind(rec.cmd(), set);
-        const VkBuffer draws = rec.buffer(b.draws);
+        const VkBuffer commands = rec.buffer(draws);
         constexpr VkDeviceSize stride = sizeof(VkDrawIndexedIndirectCommand);
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, map_pipeline_.get());
-        vkCmdDrawIndexedIndirect(rec.cmd(), draws, draws_header_bytes, group_count, stride);
+        vkCmdDrawIndexedIndirect(rec.cmd(), commands, draws_header_bytes, group_count, stride);
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, face_pipeline_.get());
-        vkCmdDrawIndexedIndirect(rec.cmd(), draws, draws_header_bytes + group_count * stride, group_count,
+        vkCmdDrawIndexedIndirect(rec.cmd(), commands, draws_header_bytes + group_count * stride, group_count,
                                  stride);
+      });
+  return atlas;
+}
+
+rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas,
+                                                    const GpuScene& scene, uint32_t slot,
+                                                    rg::BufferHandle pairs, rg::BufferHandle counts,
+                                                    rg::BufferHandle draws, rg::BufferHandle depths) const {
+  const BatchConstants constants{static_cast<uint32_t>(casters_.size()),
+                                 static_cast<uint32_t>(meshes_.size()), static_cast<uint32_t>(capacity_), 0u};
+  graph.add_pass(
+      "shadow raster",
+      [&](rg::PassBuilder& p) {
+        p.read(draws, rg::Usage::indirect);
+        p.read(pairs, rg::Usage::storage_compute);
+        p.read(counts, rg::Usage::storage_compute);
+        depths = p.write(depths, rg::Usage::storage_compute);
+      },
+      [this, &scene, slot, constants, pairs, counts, draws, depths](const vk::PassRecorder& rec) {
+        const VkDescriptorSet set = compute_raster_layout_.write(rec.allocate_set(compute_raster_layout_))
+                                        .buffer(instances_binding, scene.instances(slot).handle())
+                                        .buffer(shadow_views_binding, view_buffers_.buffer(slot).handle())
+                                        .buffer(shadow_casters_binding, caster_buffers_.buffer(slot).handle())
+                                        .buffer(caster_meshes_binding, mesh_buffers_.buffer(slot).handle())
+                                        .buffer(culled_pairs_binding, rec.buffer(pairs))
+                                        .buffer(draw_counts_binding, rec.buffer(counts))
+                                        .buffer(shadow_depths_binding, rec.buffer(depths))
+                                        .buffer(mesh_vertices_binding, scene.vertices().handle())
+                                        .buffer(mesh_indices_binding, scene.indices().handle())
+                                        .update();
+        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, compute_raster_pipeline_.get());
+        compute_raster_layout_.bind_compute(rec.cmd(), set);
+        compute_raster_layout_.push(rec.cmd(), constants);
+        vkCmdDispatchIndirect(rec.cmd(), rec.buffer(draws), raster_dispatch_offset);
+      });
+  graph.add_pass(
+      "shadow copy",
+      [&](rg::PassBuilder& p) {
+        p.read(depths, rg::Usage::transfer);
+        atlas = p.write(atlas, rg::Usage::transfer);  // the other tiles keep their contents
+      },
+      [this, depths, atlas](const vk::PassRecorder& rec) {
+        vkCmdCopyBufferToImage(rec.cmd(), rec.buffer(depths), rec.image(atlas),
+                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, static_cast<uint32_t>(copies_.size()),
+                               copies_.data());
       });
   return atlas;
 }

@@ -5,15 +5,20 @@
 // caster (world bounds, mesh, instance); then
 //
 //   shadow cull      (compute)  every caster against every view's frustum -> (caster, view) pairs
-//   shadow draws     (compute)  counts -> one indirect draw per (view kind, mesh)
+//   shadow draws     (compute)  counts -> one indirect draw per (view kind, mesh), and dispatches
+// then, rasterizing with the hardware (shadows::ShadowRaster::hardware):
 //   shadow scatter   (compute)  the pairs sorted into those draws' instance ranges
 //   shadow views     (raster)   clears the views' tiles, then two multi-draw indirect calls
 //                               (2D maps depth only; cube faces with shadow_cube.frag) draw
 //                               every pair into its tile of its atlas layer
+// or in compute (shadows::ShadowRaster::compute):
+//   shadow raster    (compute)  a workgroup per pair writes its triangles' depths into the
+//                               views' squares of a depth buffer (shaders/shadow_raster.comp)
+//   shadow copy      (transfer) the squares into their atlas tiles
 //
 // so CPU time grows with views and casters, not with their product, and the number of passes is
-// fixed. Needs shaderOutputLayer (gl_Layer from the vertex stage, shaders/shadow_batch.vert);
-// supported() says whether the device has it.
+// fixed. The hardware raster needs shaderOutputLayer (gl_Layer from the vertex stage,
+// shaders/shadow_batch.vert); supported() says whether the device has it.
 //
 // Culled pairs live in a buffer of a fixed capacity. The GPU reports how many pairs it kept
 // (read back when the frame slot comes round again); when they did not fit, capacity grows and
@@ -30,6 +35,7 @@
 #include "rendergraph/device/unique_handle.h"
 #include "systems/gpu_scene.h"
 #include "systems/shadows/frame_lights.h"
+#include "systems/shadows/shadow_view_path.h"
 
 namespace sg::vk {
 class VulkanContext;
@@ -39,9 +45,12 @@ namespace sg {
 
 class ShadowViewBatch {
  public:
-  ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight);
+  // `raster` automatic: compute on GPUs, the hardware on CPU devices.
+  ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight, shadows::ShadowRaster raster);
 
   static bool supported(const vk::VulkanContext& context);
+  // The raster in use (never automatic).
+  shadows::ShadowRaster raster() const { return raster_; }
 
   // After FrameRing::begin_frame returned `slot`, before prepare: false when the frame that last
   // used the slot kept more pairs than it could store, so some of its views missed casters and
@@ -67,6 +76,7 @@ class ShadowViewBatch {
     glm::vec4 position_far;
     std::array<glm::vec4, 6> planes;
     glm::uvec4 info;
+    glm::uvec4 raster;
   };
   struct Caster {
     glm::vec4 min_mesh;
@@ -74,15 +84,25 @@ class ShadowViewBatch {
   };
 
  private:
+  rg::ImageHandle add_hardware_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
+                                      uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle counts,
+                                      rg::BufferHandle draws) const;
+  rg::ImageHandle add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
+                                     uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle counts,
+                                     rg::BufferHandle draws, rg::BufferHandle depths) const;
+
+  shadows::ShadowRaster raster_;
   vk::PipelineLayout cull_layout_;
   vk::PipelineLayout draws_layout_;
   vk::PipelineLayout scatter_layout_;
   vk::PipelineLayout raster_layout_;
+  vk::PipelineLayout compute_raster_layout_;
   vk::UniquePipeline cull_pipeline_;
   vk::UniquePipeline draws_pipeline_;
   vk::UniquePipeline scatter_pipeline_;
   vk::UniquePipeline map_pipeline_;
   vk::UniquePipeline face_pipeline_;
+  vk::UniquePipeline compute_raster_pipeline_;
   uint32_t max_views_per_dispatch_ = 0;
 
   vk::FrameBuffers view_buffers_;
@@ -98,6 +118,12 @@ class ShadowViewBatch {
   std::vector<Caster> casters_;
   std::vector<glm::uvec4> meshes_;
   std::vector<VkClearRect> clears_;
+  // Compute raster: where each view's depths go in the depth buffer, and the copies into the atlas.
+  void place_depths();
+  std::vector<shadows::AtlasTile> view_tiles_;  // per view
+  std::vector<uint32_t> by_place_;              // views by page, size, row, column
+  std::vector<VkBufferImageCopy> copies_;
+  uint64_t depth_texels_ = 0;
 };
 
 }  // namespace sg

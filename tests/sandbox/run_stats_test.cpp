@@ -72,6 +72,9 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.scene.cylinder_lights = 2;
   stats.scene.shadow_casting_lights = 60;
   stats.cpu_frame_ms = TimeSummary{1.5, 1.25, 3.75};
+  stats.cpu_phases_ms = {TimeSummary{0.25, 0.125, 0.5}, TimeSummary{0.5, 0.25, 1.0},
+                         TimeSummary{0.375, 0.25, 2.0}, TimeSummary{0.125, 0.0625, 0.25},
+                         TimeSummary{0.25, 0.125, 0.5}};
   stats.wall_frame_ms = TimeSummary{16.5, 16.25, 33.0};
   stats.lighting = "deferred";
   stats.gpu_frame_ms = TimeSummary{0.5, 0.25, 0.875};
@@ -79,6 +82,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.validation_errors = 4;
   stats.shadow_map_bytes = 67'108'864;
   stats.shadows = {"batched",
+                   "compute",
                    1ull << 30,
                    4096,
                    1,
@@ -95,7 +99,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 12u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 13u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);
@@ -110,6 +114,11 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                 {{"point", 32}, {"spot", 31}, {"directional", 1}, {"cylinder", 2}, {"shadow_casting", 60}}));
   expect_summary(json.at("cpu_frame_ms"), *stats.cpu_frame_ms);
   expect_summary(json.at("wall_frame_ms"), *stats.wall_frame_ms);
+  const nlohmann::json& phases = json.at("cpu_phases_ms");
+  EXPECT_EQ(phases.size(), 5u);
+  expect_summary(phases.at("update"), *stats.cpu_phases_ms.update);
+  expect_summary(phases.at("prepare"), *stats.cpu_phases_ms.prepare);
+  expect_summary(phases.at("execute"), *stats.cpu_phases_ms.execute);
   EXPECT_EQ(json.at("lighting"), "deferred");
   expect_summary(json.at("gpu_frame_ms"), *stats.gpu_frame_ms);
   const nlohmann::json& passes = json.at("passes");
@@ -122,8 +131,9 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(json.at("validation_errors"), 4);
   EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
   const nlohmann::json& shadows = json.at("shadows");
-  EXPECT_EQ(shadows.size(), 11u) << shadows.dump(2);
+  EXPECT_EQ(shadows.size(), 12u) << shadows.dump(2);
   EXPECT_EQ(shadows.at("views"), "batched");
+  EXPECT_EQ(shadows.at("raster"), "compute");
   EXPECT_EQ(shadows.at("budget_bytes"), 1ull << 30);
   EXPECT_EQ(shadows.at("page_size"), 4096);
   EXPECT_EQ(shadows.at("pages"), 1);

@@ -1,0 +1,17 @@
+// The scene's instances (systems/scene_gpu_types.h, GpuInstance on the C++ side), for every
+// shader that places meshes in the world.
+#ifndef SG_SCENE_INSTANCES_GLSL
+#define SG_SCENE_INSTANCES_GLSL
+
+#include "bindings.glsl"
+
+struct Instance {
+  mat4 model;
+  mat4 normal_matrix;       // inverse transpose of the model matrix
+  vec4 base_color_specular; // rgb: base colour, a: specular strength kS
+  vec4 material;            // x: Blinn shininess s, y: base colour texture index or -1
+};
+
+layout(std430, set = 0, binding = instances_binding) readonly buffer Instances { Instance instances[]; };
+
+#endif

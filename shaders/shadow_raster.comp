@@ -1,0 +1,200 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Rasterizes the culled (caster, view) pairs in compute, for small views whose triangles the
+// raster hardware of some GPUs sets up far slower than compute can (docs/PERFORMANCE.md): one
+// workgroup per pair, its threads taking the caster's triangles. Each view's depths are a
+// tile-sized square of `depths` (ShadowView::raster, row-major, filled with 1.0 beforehand),
+// written with atomicMin on the float's bits (non-negative floats order as their bits); a copy
+// moves them into the view's atlas tile afterwards. What is stored matches the raster path:
+// projected depth for 2D maps, distance / far for cube faces (shadow_cube.frag), the nearest
+// surface at each texel centre, both faces of every triangle, nothing nearer than the near plane
+// or beyond far.
+//
+// llvmpipe ends every loop of an invocation once it has run 65,535 iterations in all, which a
+// thread rasterizing large tiles passes: on CPU devices use the raster hardware path (the
+// default there) or tiles of at most 512 texels.
+//
+// A triangle reaching out of the view is clipped to its near plane and sides first, so that its
+// corners lie within the tile and edge functions are exact. A thread rasterizes a small triangle
+// alone; one covering more than SMALL_TRIANGLE texels of bounding box goes to a queue that the
+// whole workgroup then rasterizes together, so a floor filling the tile does not hold one thread
+// for thousands of texels. A workgroup is one warp (32): most casters have fewer triangles.
+#include "shadow_batch_compute.glsl"
+#include "scene_instances.glsl"
+
+layout(local_size_x = 32) in;
+
+layout(std430, set = 0, binding = culled_pairs_binding) readonly buffer Pairs { uvec2 pairs[]; };
+layout(std430, set = 0, binding = caster_meshes_binding) readonly buffer Meshes { CasterMesh meshes[]; };
+layout(std430, set = 0, binding = mesh_vertices_binding) readonly buffer Vertices { float vertices[]; };
+layout(std430, set = 0, binding = mesh_indices_binding) readonly buffer Indices { uint indices[]; };
+layout(std430, set = 0, binding = shadow_depths_binding) buffer Depths { uint depths[]; };
+
+const uint VERTEX_FLOATS = 8u;  // scene::Vertex: position, normal, uv
+const float SMALL_TRIANGLE = 64.0;
+// A triangle clipped by the near plane and the view's four sides has at most 3 + 5 corners;
+// one more for rounding, which can make a polygon with nearly coincident corners cross a plane
+// more than twice.
+const uint MAX_CORNERS = 9u;
+// The sides are moved out by this factor of w: a hair beyond the tile, so that clipping never
+// removes a texel centre, and close enough that edge functions stay exact in float.
+const float SIDE_MARGIN = 1.01;
+// Large triangles queued for the workgroup at a time; past it a thread rasterizes its own.
+const uint QUEUE = 3u * gl_WorkGroupSize.x;
+
+// A triangle ready to rasterize: per corner, tile-space x, y (texels), depth (clip z / w) and
+// 1 / w, and its world position (for cube faces).
+struct Triangle {
+  vec4 v[3];
+  vec3 world[3];
+};
+
+shared Triangle queue[QUEUE];
+shared uint queued;
+
+float edge(vec2 a, vec2 b, vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
+
+// Rasterizes texels first, first + stride, ... of `t`'s bounding box (stride 1 for a thread
+// alone, the workgroup size together).
+void rasterize(Triangle t, uint view, uint first, uint stride) {
+  uint size = views[view].info.z;
+  vec4 v0 = t.v[0], v1 = t.v[1], v2 = t.v[2];
+  vec2 lo = max(floor(min(min(v0.xy, v1.xy), v2.xy) - 0.5), vec2(0.0));
+  vec2 hi = min(ceil(max(max(v0.xy, v1.xy), v2.xy) - 0.5), vec2(float(size) - 1.0));
+  if (any(greaterThan(lo, hi))) return;
+  float area = edge(v0.xy, v1.xy, v2.xy);
+  if (area == 0.0) return;
+  bool face = views[view].info.y == VIEW_KIND_FACE;
+  vec4 light = views[view].position_far;
+  uint width = uint(hi.x - lo.x) + 1u;
+  uint texels = width * (uint(hi.y - lo.y) + 1u);
+  uvec2 place = views[view].raster.xy;
+  for (uint i = first; i < texels; i += stride) {
+    vec2 p = lo + vec2(float(i % width), float(i / width)) + 0.5;
+    // Both windings are drawn: dividing by the signed area makes inside positive either way.
+    vec3 bary = vec3(edge(v1.xy, v2.xy, p), edge(v2.xy, v0.xy, p), edge(v0.xy, v1.xy, p)) / area;
+    if (any(lessThan(bary, vec3(0.0)))) continue;
+    float z = dot(bary, vec3(v0.z, v1.z, v2.z));
+    if (z < 0.0 || z > 1.0) continue;  // beyond the far plane (the near one is clipped)
+    float depth = z;
+    if (face) {
+      // The world position under the texel centre, interpolated perspective-correctly.
+      vec3 w = bary * vec3(v0.w, v1.w, v2.w);
+      vec3 world = (w.x * t.world[0] + w.y * t.world[1] + w.z * t.world[2]) / (w.x + w.y + w.z);
+      depth = min(length(world - light.xyz) / light.w, 1.0);
+    }
+    uvec2 texel = uvec2(p);
+    atomicMin(depths[place.x + texel.y * place.y + texel.x], floatBitsToUint(depth));
+  }
+}
+
+vec4 to_tile(vec4 clip, float size) {
+  float inv_w = 1.0 / clip.w;
+  return vec4((clip.xy * inv_w * 0.5 + 0.5) * size, clip.z * inv_w, inv_w);
+}
+
+// Rasterizes the (clipped) triangle with clip positions c0..c2 now if it is small, else queues it
+// for the workgroup (or, with the queue full, rasterizes it anyway).
+void emit(vec4 c0, vec4 c1, vec4 c2, vec3 w0, vec3 w1, vec3 w2, uint view) {
+  float size = float(views[view].info.z);
+  Triangle t;
+  t.v = vec4[](to_tile(c0, size), to_tile(c1, size), to_tile(c2, size));
+  t.world = vec3[](w0, w1, w2);
+  vec2 extent = max(max(t.v[0].xy, t.v[1].xy), t.v[2].xy) - min(min(t.v[0].xy, t.v[1].xy), t.v[2].xy);
+  if (extent.x * extent.y > SMALL_TRIANGLE) {
+    uint slot = atomicAdd(queued, 1u);
+    if (slot < QUEUE) {
+      queue[slot] = t;
+      return;
+    }
+  }
+  rasterize(t, view, 0u, 1u);
+}
+
+vec3 vertex_position(uint index) {
+  uint v = index * VERTEX_FLOATS;
+  return vec3(vertices[v], vertices[v + 1u], vertices[v + 2u]);
+}
+
+bool inside_view(vec4 c) { return c.z >= 0.0 && abs(c.x) <= c.w && abs(c.y) <= c.w; }
+
+// The view's planes a triangle is clipped to, as dot(plane, clip position) >= 0: the near plane
+// and the four sides.
+const vec4 CLIP_PLANES[5] = vec4[](vec4(0.0, 0.0, 1.0, 0.0), vec4(1.0, 0.0, 0.0, SIDE_MARGIN),
+                                   vec4(-1.0, 0.0, 0.0, SIDE_MARGIN), vec4(0.0, 1.0, 0.0, SIDE_MARGIN),
+                                   vec4(0.0, -1.0, 0.0, SIDE_MARGIN));
+
+// Emits the triangle (clip positions c0..c2, world positions w0..w2) as it is when it lies in
+// the view, which most do, else clipped to the view (Sutherland-Hodgman) as a fan.
+void submit(vec4 c0, vec4 c1, vec4 c2, vec3 w0, vec3 w1, vec3 w2, uint view) {
+  if (inside_view(c0) && inside_view(c1) && inside_view(c2)) {
+    emit(c0, c1, c2, w0, w1, w2, view);
+    return;
+  }
+  vec4 c[MAX_CORNERS];
+  vec3 w[MAX_CORNERS];
+  c[0] = c0;
+  c[1] = c1;
+  c[2] = c2;
+  w[0] = w0;
+  w[1] = w1;
+  w[2] = w2;
+  uint n = 3u;
+  for (uint p = 0u; p < 5u && n >= 3u; ++p) {
+    vec4 plane = CLIP_PLANES[p];
+    vec4 kept_c[MAX_CORNERS];
+    vec3 kept_w[MAX_CORNERS];
+    uint m = 0u;
+    for (uint k = 0u; k < n; ++k) {
+      uint next = k + 1u == n ? 0u : k + 1u;
+      float dk = dot(plane, c[k]);
+      float dn = dot(plane, c[next]);
+      if (dk >= 0.0 && m < MAX_CORNERS) {
+        kept_c[m] = c[k];
+        kept_w[m] = w[k];
+        ++m;
+      }
+      // Strictly across: a corner on the plane is kept once, not again as a crossing.
+      if (((dk > 0.0 && dn < 0.0) || (dk < 0.0 && dn > 0.0)) && m < MAX_CORNERS) {
+        float s = dk / (dk - dn);
+        kept_c[m] = mix(c[k], c[next], s);
+        kept_w[m] = mix(w[k], w[next], s);
+        ++m;
+      }
+    }
+    c = kept_c;
+    w = kept_w;
+    n = m;
+  }
+  for (uint k = 1u; k + 1u < n; ++k) emit(c[0], c[k], c[k + 1u], w[0], w[k], w[k + 1u], view);
+}
+
+void main() {
+  uint stored = min(total, pc.capacity);
+  for (uint p = gl_WorkGroupID.x; p < stored; p += gl_NumWorkGroups.x) {
+    uvec2 pair = pairs[p];
+    uint view = pair.y;
+    uint group = floatBitsToUint(casters[pair.x].min_mesh.w);
+    mat4 model = instances[floatBitsToUint(casters[pair.x].max_instance.w)].model;
+    mat4 view_projection = views[view].view_projection;
+    CasterMesh mesh = meshes[group];
+    uint triangles = mesh.index_count / 3u;
+    for (uint chunk = 0u; chunk < triangles; chunk += gl_WorkGroupSize.x) {
+      if (gl_LocalInvocationIndex == 0u) queued = 0u;
+      barrier();
+      uint tri = chunk + gl_LocalInvocationIndex;
+      if (tri < triangles) {
+        uint first = mesh.first_index + 3u * tri;
+        vec3 w0 = (model * vec4(vertex_position(uint(int(indices[first]) + mesh.vertex_offset)), 1.0)).xyz;
+        vec3 w1 = (model * vec4(vertex_position(uint(int(indices[first + 1u]) + mesh.vertex_offset)), 1.0)).xyz;
+        vec3 w2 = (model * vec4(vertex_position(uint(int(indices[first + 2u]) + mesh.vertex_offset)), 1.0)).xyz;
+        submit(view_projection * vec4(w0, 1.0), view_projection * vec4(w1, 1.0), view_projection * vec4(w2, 1.0),
+               w0, w1, w2, view);
+      }
+      barrier();
+      uint count = min(queued, QUEUE);
+      for (uint q = 0u; q < count; ++q) rasterize(queue[q], view, gl_LocalInvocationIndex, gl_WorkGroupSize.x);
+      barrier();
+    }
+  }
+}

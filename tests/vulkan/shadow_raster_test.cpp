@@ -1,0 +1,107 @@
+// The batched shadow views' two rasterizers, the raster hardware (shadow_batch.vert) and compute
+// (shadow_raster.comp), write the same depths into the same tiles, on lavapipe with validation.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "ecs/transform_system.h"
+#include "rendergraph/device/frame_ring.h"
+#include "rendergraph/device/readback.h"
+#include "sandbox/sandbox_frame.h"
+#include "systems/scene/camera.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/primitive_meshes.h"
+#include "systems/scene/scene_builder.h"
+#include "vulkan_test_context.h"
+
+namespace sg::test {
+namespace {
+
+// A floor larger than every map, a crate and a pillar; a beam (orthographic), a spot and a point
+// light whose views clip the floor on every side and the pillar at their near planes.
+sandbox::SandboxScene clipped_scene() {
+  sandbox::SandboxScene scene;
+  scene.scene.name = "clipped";
+  const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
+  const uint32_t column = scene::add_cylinder_mesh(scene.scene.meshes, 16);
+  const scene::Material grey;
+  scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {40.0f, 1.0f, 40.0f}},
+                      grey);
+  scene::add_instance(scene.scene, box, {{1.0f, 0.5f, 0.5f}, glm::quat(1, 0, 0, 0), {1.0f, 1.0f, 1.0f}},
+                      grey);
+  scene::add_instance(scene.scene, column, {{-1.0f, 2.0f, 0.0f}, glm::quat(1, 0, 0, 0), {0.6f, 4.0f, 0.6f}},
+                      grey);
+  scene::ShadowSettings shadow;
+  // 256: llvmpipe caps an invocation's loop iterations (shadow_raster.comp), so larger tiles are
+  // left to GPUs.
+  shadow.resolution = 256;
+  scene::add_light(
+      scene.scene, scene::CylinderLight{glm::vec3(1.0f), 1.0f, 1.0f, 2.0f},
+      {glm::vec3(0.0f, 4.0f, 0.0f), scene::look_rotation({0, 4, 0}, {0.01f, 0, 0}), glm::vec3(1.0f)}, shadow,
+      "beam");
+  scene::SpotLight spot;
+  spot.range = 12.0f;
+  spot.outer_cone = 0.7f;
+  scene::add_light(
+      scene.scene, spot,
+      {glm::vec3(-2.2f, 2.0f, 0.3f), scene::look_rotation({-2.2f, 2, 0.3f}, {3, 0, 0}), glm::vec3(1.0f)},
+      shadow, "spot");
+  scene::PointLight point;
+  point.range = 8.0f;
+  scene::add_light(scene.scene, point, {glm::vec3(-0.2f, 1.5f, 0.9f)}, shadow, "point");
+  ecs::update_world_transforms(scene.scene.world, 0);
+  scene.pose = {{0.0f, 6.0f, 6.0f}, {0.0f, 0.0f, 0.0f}};
+  return scene;
+}
+
+class ShadowRasterTest : public GpuTest {
+ protected:
+  // Every texel of every shadow view, in view order, rendered with `raster`.
+  std::vector<float> depths(shadows::ShadowRaster raster) {
+    sandbox::SandboxScene scene = clipped_scene();
+    sandbox::Options options;
+    options.shadow_raster = raster;
+    vk::FrameRing frames(context);
+    sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
+    frame.resize({64, 48});
+    frame.record(frames.begin_frame(), 0.0);
+    frames.submit();
+    frames.wait_idle();
+    const shadows::FrameLights& lights = frame.renderer().lights();
+    std::vector<float> out;
+    const auto read = [&](const shadows::AtlasTile& tile) {
+      const vk::DepthImage page = vk::read_depth_layer(context, frame.renderer().shadow_atlas().image(),
+                                                       tile.page, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+      for (uint32_t y = 0; y < tile.size; ++y) {
+        for (uint32_t x = 0; x < tile.size; ++x) out.push_back(page.at(tile.x + x, tile.y + y));
+      }
+    };
+    EXPECT_EQ(lights.maps.size(), 2u);
+    EXPECT_EQ(lights.cubes.size(), 1u);
+    for (const shadows::ShadowMapView& map : lights.maps) read(map.tile);
+    for (const shadows::ShadowCubeView& cube : lights.cubes) {
+      for (const shadows::AtlasTile& tile : cube.tiles) read(tile);
+    }
+    return out;
+  }
+};
+
+TEST_F(ShadowRasterTest, ComputeRasterWritesWhatTheHardwareWrites) {
+  const std::vector<float> hardware = depths(shadows::ShadowRaster::hardware);
+  const std::vector<float> compute = depths(shadows::ShadowRaster::compute);
+  ASSERT_EQ(hardware.size(), compute.size());
+  ASSERT_EQ(hardware.size(), 8u * 256 * 256);
+  // Texel centres on a triangle's edge may go either way, and depths differ by rounding.
+  size_t differing = 0;
+  size_t covered = 0;
+  for (size_t i = 0; i < hardware.size(); ++i) {
+    covered += hardware[i] < 1.0f;
+    differing += std::abs(hardware[i] - compute[i]) > 1e-4f;
+  }
+  EXPECT_GT(covered, hardware.size() / 2) << "the floor fills most views";
+  EXPECT_LT(differing, hardware.size() / 200) << differing << " of " << hardware.size() << " texels differ";
+}
+
+}  // namespace
+}  // namespace sg::test
