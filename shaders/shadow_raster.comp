@@ -18,11 +18,13 @@
 // corners lie within the tile and edge functions are exact. A thread rasterizes a small triangle
 // alone; one covering more than SMALL_TRIANGLE texels of bounding box goes to a queue that the
 // whole workgroup then rasterizes together, so a floor filling the tile does not hold one thread
-// for thousands of texels. A workgroup is one warp (32): most casters have fewer triangles.
+// for thousands of texels. 128 threads a workgroup: on the H200 the large triangles' texels
+// outweigh the idle lanes of casters with fewer triangles (6.1 ms against 9.3 with 64 for 1,024
+// lights, docs/PERFORMANCE.md).
 #include "shadow_batch_compute.glsl"
 #include "scene_instances.glsl"
 
-layout(local_size_x = 32) in;
+layout(local_size_x = 128) in;
 
 layout(std430, set = 0, binding = culled_pairs_binding) readonly buffer Pairs { uvec2 pairs[]; };
 layout(std430, set = 0, binding = caster_meshes_binding) readonly buffer Meshes { CasterMesh meshes[]; };
@@ -40,7 +42,7 @@ const uint MAX_CORNERS = 9u;
 // removes a texel centre, and close enough that edge functions stay exact in float.
 const float SIDE_MARGIN = 1.01;
 // Large triangles queued for the workgroup at a time; past it a thread rasterizes its own.
-const uint QUEUE = 3u * gl_WorkGroupSize.x;
+const uint QUEUE = gl_WorkGroupSize.x;
 
 // A triangle ready to rasterize: per corner, tile-space x, y (texels), depth (clip z / w) and
 // 1 / w, and its world position (for cube faces).

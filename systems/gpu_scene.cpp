@@ -75,9 +75,14 @@ void GpuScene::gather(const ecs::World& world) {
                                                                         : float(material.base_color_texture),
                        0.0f, 0.0f)});
       });
-  std::sort(items_.begin(), items_.end(), [](const Item& a, const Item& b) {
-    return a.mesh != b.mesh ? a.mesh < b.mesh : a.caster > b.caster;
-  });
+  // By mesh, casters first within each: a counting sort (meshes are few, instances many).
+  slot_starts_.assign(2 * meshes_.size() + 1, 0);
+  const auto slot_of = [](const Item& item) { return 2 * item.mesh + (item.caster ? 0 : 1); };
+  for (const Item& item : items_) ++slot_starts_[slot_of(item) + 1];
+  for (size_t s = 1; s < slot_starts_.size(); ++s) slot_starts_[s] += slot_starts_[s - 1];
+  sorted_items_.resize(items_.size());
+  for (const Item& item : items_) sorted_items_[slot_starts_[slot_of(item)]++] = item;
+  std::swap(items_, sorted_items_);
 
   sorted_.clear();
   bounds_.clear();

@@ -96,6 +96,8 @@ class GpuScene {
     uint64_t key;
   };
   std::vector<Item> items_;
+  std::vector<Item> sorted_items_;
+  std::vector<uint32_t> slot_starts_;  // counting sort: per (mesh, caster or not)
   std::vector<GpuInstance> gathered_;
   std::vector<GpuInstance> sorted_;
   std::vector<scene::Aabb> bounds_;

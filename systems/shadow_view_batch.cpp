@@ -49,6 +49,11 @@ constexpr VkDeviceSize pair_bytes = 2 * sizeof(uint32_t);
 
 float as_float(uint32_t bits) { return std::bit_cast<float>(bits); }
 
+// The size to declare for a transient buffer needing `bytes`: rounded up to a power of two, so
+// that frames drawing different numbers of views keep the graph's shape, and with it the
+// compiled plan and its memory (rg::PlanCache), instead of recompiling and reallocating.
+uint64_t frame_steady(uint64_t bytes) { return std::bit_ceil(std::max<uint64_t>(bytes, 256)); }
+
 VkClearRect tile_clear(const shadows::AtlasTile& tile) {
   return {{{int32_t(tile.x), int32_t(tile.y)}, {tile.size, tile.size}}, tile.page, 1};
 }
@@ -263,8 +268,8 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
         b.counts = p.write(p.create_buffer("shadow draw counts", {counts_header_bytes + 2 * draw_count * 4}),
                            rg::Usage::transfer);
         if (compute) {
-          b.depths =
-              p.write(p.create_buffer("shadow depths", {depth_texels_ * sizeof(float)}), rg::Usage::transfer);
+          b.depths = p.write(p.create_buffer("shadow depths", {frame_steady(depth_texels_ * sizeof(float))}),
+                             rg::Usage::transfer);
         }
         return b;
       },
@@ -278,7 +283,7 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
       "shadow cull",
       [&](rg::PassBuilder& p) {
         b.counts = p.write(b.counts, rg::Usage::storage_compute);
-        b.pairs = p.write(p.create_buffer("shadow culled pairs", {capacity_ * pair_bytes}),
+        b.pairs = p.write(p.create_buffer("shadow culled pairs", {frame_steady(capacity_ * pair_bytes)}),
                           rg::Usage::storage_compute);
         return b;
       },
@@ -343,7 +348,7 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
           p.read(draws, rg::Usage::indirect);
           p.read(pairs, rg::Usage::storage_compute);
           counts = p.write(counts, rg::Usage::storage_compute);
-          sorted = p.write(p.create_buffer("shadow sorted pairs", {capacity_ * pair_bytes}),
+          sorted = p.write(p.create_buffer("shadow sorted pairs", {frame_steady(capacity_ * pair_bytes)}),
                            rg::Usage::storage_compute);
           return sorted;
         },

@@ -1,6 +1,7 @@
 #include "systems/shadows/frame_lights.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
@@ -14,11 +15,26 @@ uint32_t clamp_resolution(uint32_t requested, uint32_t limit) {
   return std::clamp(requested, min_shadow_resolution, limit);
 }
 
-std::string light_name(const ecs::World& world, ecs::Entity entity, const char* kind, size_t index) {
+// "shadow <name>", or "shadow <kind> <index>" for unnamed lights, into `out`, whose storage
+// is reused from the last frame (thousands of lights would otherwise allocate thousands of
+// strings a frame).
+void name_view(const ecs::World& world, ecs::Entity entity, const char* kind, size_t index,
+               std::string& out) {
+  out.assign("shadow ");
   if (const scene::Name* name = world.try_get<scene::Name>(entity); name && !name->value.empty()) {
-    return name->value;
+    out.append(name->value);
+    return;
   }
-  return std::string(kind) + " " + std::to_string(index);
+  char number[24];
+  std::snprintf(number, sizeof(number), " %zu", index);
+  out.append(kind).append(number);
+}
+
+// The next view of `views`, reusing last frame's element (and its name's storage) when there is one.
+template <class View>
+View& next_view(std::vector<View>& views, size_t& count) {
+  if (count == views.size()) views.emplace_back();
+  return views[count++];
 }
 
 scene::ShadowSettings with_overrides(scene::ShadowSettings shadow, const LightOverrides& overrides) {
@@ -39,21 +55,22 @@ bool changed_since(const ecs::World& world, ecs::Entity entity, ecs::Tick since)
 // Every light of type Light, with a 2D map from view_of(light, transform) when it casts one.
 template <class Light, class ViewOf, class ReachOf>
 void gather_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick since, const char* kind,
-               ViewOf view_of, ReachOf reach_of, FrameLights& out) {
+               ViewOf view_of, ReachOf reach_of, FrameLights& out, size_t& map_count) {
   world.query<const ecs::WorldTransform, const Light, const scene::ShadowSettings>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform& transform, const Light& light,
           const scene::ShadowSettings& shadow) {
         const scene::ShadowSettings s = with_overrides(shadow, overrides);
         out.records.push_back(pack_light(light, transform, s));
         if (!s.casts_shadow) return;
-        ShadowMapView& map = out.maps.emplace_back();
+        const size_t index = map_count;
+        ShadowMapView& map = next_view(out.maps, map_count);
         map.light = static_cast<uint32_t>(out.records.size() - 1);
         map.key = key_of(entity);
         map.requested_resolution = clamp_resolution(s.resolution, max_map_resolution);
         map.view = view_of(light, transform);
         map.reach = reach_of(light, transform);
         map.changed = changed_since<Light>(world, entity, since);
-        map.name = "shadow " + light_name(world, entity, kind, out.maps.size() - 1);
+        name_view(world, entity, kind, index, map.name);
       });
 }
 
@@ -69,8 +86,8 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
   const ecs::Tick since = out.gathered_at;
   out.gathered_at = world.tick();
   out.records.clear();
-  out.maps.clear();
-  out.cubes.clear();
+  size_t map_count = 0;
+  size_t cube_count = 0;
   const scene::Aabb bounds =
       scene_bounds.empty() ? scene::Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)} : scene_bounds;
   const auto no_range = [](const auto&, const ecs::WorldTransform&) { return unbounded_reach; };
@@ -84,20 +101,20 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
       [](const scene::SpotLight& light, const ecs::WorldTransform& transform) {
         return glm::vec4(scene::light_position(transform), light.range);
       },
-      out);
+      out, map_count);
   gather_2d<scene::DirectionalLight>(
       world, overrides, since, "directional",
       [&](const scene::DirectionalLight&, const ecs::WorldTransform& transform) {
         return directional_light_view(scene::light_direction(transform), bounds);
       },
-      no_range, out);
+      no_range, out, map_count);
   gather_2d<scene::CylinderLight>(
       world, overrides, since, "cylinder",
       [&](const scene::CylinderLight& light, const ecs::WorldTransform& transform) {
         return cylinder_light_view(scene::light_position(transform), scene::light_direction(transform),
                                    light.outer_radius, bounds);
       },
-      no_range, out);
+      no_range, out, map_count);
 
   world.query<const ecs::WorldTransform, const scene::PointLight, const scene::ShadowSettings>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform& transform, const scene::PointLight& light,
@@ -106,15 +123,18 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
         out.records.push_back(pack_light(light, transform, s));
         if (!s.casts_shadow) return;
         const glm::vec3 position = scene::light_position(transform);
-        ShadowCubeView& cube = out.cubes.emplace_back();
+        const size_t index = cube_count;
+        ShadowCubeView& cube = next_view(out.cubes, cube_count);
         cube.light = static_cast<uint32_t>(out.records.size() - 1);
         cube.key = key_of(entity);
         cube.requested_resolution = clamp_resolution(s.resolution, max_cube_resolution);
         cube.views = point_light_cube(position, light.range);
         cube.position_far = glm::vec4(position, light.range);
         cube.changed = changed_since<scene::PointLight>(world, entity, since);
-        cube.name = "shadow " + light_name(world, entity, "point", out.cubes.size() - 1);
+        name_view(world, entity, "point", index, cube.name);
       });
+  out.maps.resize(map_count);
+  out.cubes.resize(cube_count);
 }
 
 void sort_by_group(FrameLights& out) {
