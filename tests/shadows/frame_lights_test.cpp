@@ -3,6 +3,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include "ecs/transform_system.h"
+#include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/scene_builder.h"
 
@@ -153,6 +154,77 @@ TEST(ShadowSchedule, LightsOutOfSightGetNoShadow) {
   EXPECT_EQ(lights.cubes[0].resolution, 0u);
   EXPECT_EQ(lights.records[lights.maps[0].light].info.w, no_shadow_map);
   EXPECT_EQ(schedule.stats().lights_without_shadow, 3u);
+}
+
+// Twenty-four spot lights in a row away from the camera, each asking for 1024 texels, in an
+// atlas of one 64-texel page (room for 16 of the smallest tiles): the nearest (largest on
+// screen) keep the most texels, the farthest lose their shadow first.
+TEST(ShadowSchedule, TheBudgetDegradesTheLeastImportantLightsFirst) {
+  scene::Scene scene;
+  for (int i = 0; i < 24; ++i) {
+    const glm::vec3 position(0.0f, 2.0f, -3.0f - 4.0f * float(i));
+    scene::SpotLight spot;
+    spot.range = 3.0f;
+    scene::add_light(
+        scene, spot,
+        {position, scene::look_rotation(position, position + glm::vec3(0, -1, 0)), glm::vec3(1.0f)},
+        shadow_at(1024), "spot " + std::to_string(i));
+  }
+  ecs::update_world_transforms(scene.world, 0);
+  FrameLights lights;
+  gather_lights(scene.world, bounds, {}, lights);
+  ShadowSchedule schedule(AtlasConfig{64, 1, min_shadow_resolution});
+  schedule.schedule(lights, camera_at({0.0f, 2.0f, 0.0f}), {}, 0);
+  ASSERT_EQ(lights.maps.size(), 24u);
+  // Resolutions never grow with distance, and the budget left the farthest without a shadow.
+  for (size_t i = 1; i < lights.maps.size(); ++i) {
+    EXPECT_LE(lights.maps[i].resolution, lights.maps[i - 1].resolution) << "light " << i;
+  }
+  EXPECT_GT(lights.maps.front().resolution, lights.maps.back().resolution);
+  EXPECT_GT(schedule.stats().lights_without_shadow, 0u);
+  EXPECT_EQ(lights.maps.back().resolution, 0u);
+  EXPECT_EQ(lights.records[lights.maps.back().light].info.w, no_shadow_map);
+  uint64_t texels = 0;
+  for (const ShadowMapView& map : lights.maps) texels += uint64_t{map.resolution} * map.resolution;
+  EXPECT_LE(texels, 64u * 64u);
+}
+
+// Spot lights 4 m apart, each reaching 3 m: moving a crate from the first light's reach into the
+// second's redraws exactly those two maps; a frame where nothing moves redraws none.
+TEST(ShadowSchedule, AMovedCasterRedrawsExactlyTheLightsItReaches) {
+  scene::Scene scene;
+  for (int i = 0; i < 6; ++i) {
+    const glm::vec3 position(0.0f, 2.0f, -3.0f - 4.0f * float(i));
+    scene::SpotLight spot;
+    spot.range = 3.0f;
+    scene::add_light(
+        scene, spot,
+        {position, scene::look_rotation(position, position + glm::vec3(0, -1, 0)), glm::vec3(1.0f)},
+        shadow_at(64), "spot " + std::to_string(i));
+  }
+  ecs::update_world_transforms(scene.world, 0);
+  FrameLights lights;
+  ShadowSchedule schedule(small_atlas);
+  const ShadowCamera camera = camera_at({0.0f, 2.0f, 0.0f});
+  const auto crate_at = [](float z) {
+    return std::vector<CasterBounds>{
+        {7, scene::Aabb{glm::vec3(-0.5f, 0.0f, z - 0.5f), glm::vec3(0.5f, 1.0f, z + 0.5f)}}};
+  };
+  const auto frame = [&](const std::vector<CasterBounds>& casters) {
+    scene.world.advance_tick();
+    gather_lights(scene.world, bounds, {}, lights);
+    schedule.schedule(lights, camera, casters, 0);
+    std::vector<int> drawn;
+    for (size_t m = 0; m < lights.maps.size(); ++m) {
+      if (lights.maps[m].render) drawn.push_back(static_cast<int>(m));
+    }
+    return drawn;
+  };
+  EXPECT_EQ(frame(crate_at(-3.0f)).size(), 6u);  // every map is new
+  EXPECT_TRUE(frame(crate_at(-3.0f)).empty());
+  EXPECT_EQ(frame(crate_at(-7.0f)), (std::vector<int>{0, 1}));
+  EXPECT_TRUE(frame(crate_at(-7.0f)).empty());
+  EXPECT_EQ(schedule.stats().views_cached, 6u);
 }
 
 TEST(FrameLights, RecordsAreOrderedByLightGroup) {
