@@ -4,6 +4,7 @@
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/vulkan/plan_translation.h"
+#include "systems/gpu_scene.h"
 
 namespace sg {
 
@@ -21,6 +22,17 @@ shadows::DeviceShadowLimits shadow_limits(const vk::VulkanContext& context) {
       heap = std::max(heap, memory.memoryHeaps[h].size);
   }
   return {limits.maxImageDimension2D, limits.maxImageArrayLayers, maintenance3.maxMemoryAllocationSize, heap};
+}
+
+vk::GraphicsPipelineDesc shadow_pipeline_desc(VkPipelineLayout layout) {
+  vk::GraphicsPipelineDesc desc;
+  scene_vertex_input(desc, false);
+  desc.depth_format = vk::to_vk(ShadowAtlas::depth_format);
+  // Receivers apply each light's own bias (ALGORITHMS.md section 4), so casters are drawn as
+  // they are, both faces: thin and open meshes cast too.
+  desc.cull_mode = VK_CULL_MODE_NONE;
+  desc.layout = layout;
+  return desc;
 }
 
 ShadowAtlas::ShadowAtlas(vk::VulkanContext& context, uint64_t budget_bytes) : context_(context) {

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "rendergraph/core/resource_types.h"
+#include "rendergraph/device/pipeline.h"
 #include "rendergraph/device/resources.h"
 #include "systems/shadows/shadow_atlas_shape.h"
 
@@ -41,5 +42,9 @@ class ShadowAtlas {
 
 // What the device allows the atlas.
 shadows::DeviceShadowLimits shadow_limits(const vk::VulkanContext& context);
+
+// A pipeline that draws casters into the atlas with `layout` (positions only, depth in
+// depth_format, both faces); callers add their shaders.
+vk::GraphicsPipelineDesc shadow_pipeline_desc(VkPipelineLayout layout);
 
 }  // namespace sg

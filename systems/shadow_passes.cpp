@@ -69,13 +69,7 @@ ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight
   const VkDeviceSize alignment = context.properties().limits.minUniformBufferOffsetAlignment;
   cube_faces_stride_ = (sizeof(CubeFaces) + alignment - 1) / alignment * alignment;
 
-  vk::GraphicsPipelineDesc desc;
-  scene_vertex_input(desc, false);
-  desc.depth_format = vk::to_vk(ShadowAtlas::depth_format);
-  // Receivers apply each light's own bias (ALGORITHMS.md section 4), so casters are drawn as
-  // they are, both faces: thin and open meshes cast too.
-  desc.cull_mode = VK_CULL_MODE_NONE;
-  desc.layout = layout_.get();
+  vk::GraphicsPipelineDesc desc = shadow_pipeline_desc(layout_.get());
   desc.vertex_spirv = shadow_map_vert;
   desc.name = "shadow map";
   map_pipeline_ = vk::create_graphics_pipeline(context, desc);

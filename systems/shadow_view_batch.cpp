@@ -125,13 +125,7 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
         context, {shadow_raster_comp, {}, compute_raster_layout_.get(), "shadow raster"});
     return;
   }
-  vk::GraphicsPipelineDesc desc;
-  scene_vertex_input(desc, false);
-  desc.depth_format = vk::to_vk(ShadowAtlas::depth_format);
-  // Receivers apply each light's own bias (ALGORITHMS.md section 4): casters are drawn as they
-  // are, both faces, as in the per-light passes (shadow_passes.cpp).
-  desc.cull_mode = VK_CULL_MODE_NONE;
-  desc.layout = raster_layout_.get();
+  vk::GraphicsPipelineDesc desc = shadow_pipeline_desc(raster_layout_.get());
   desc.vertex_spirv = shadow_batch_vert;
   desc.name = "shadow batch maps";
   map_pipeline_ = vk::create_graphics_pipeline(context, desc);

@@ -156,21 +156,28 @@ TEST(ShadowSchedule, LightsOutOfSightGetNoShadow) {
   EXPECT_EQ(schedule.stats().lights_without_shadow, 3u);
 }
 
-// Twenty-four spot lights in a row away from the camera, each asking for 1024 texels, in an
-// atlas of one 64-texel page (room for 16 of the smallest tiles): the nearest (largest on
-// screen) keep the most texels, the farthest lose their shadow first.
-TEST(ShadowSchedule, TheBudgetDegradesTheLeastImportantLightsFirst) {
+// `count` spot lights looking down, 4 m apart in a row away from camera_at({0, 2, 0}), each
+// reaching 3 m and asking for `resolution` texels.
+scene::Scene spots_in_a_row(int count, uint32_t resolution) {
   scene::Scene scene;
-  for (int i = 0; i < 24; ++i) {
+  for (int i = 0; i < count; ++i) {
     const glm::vec3 position(0.0f, 2.0f, -3.0f - 4.0f * float(i));
     scene::SpotLight spot;
     spot.range = 3.0f;
     scene::add_light(
         scene, spot,
         {position, scene::look_rotation(position, position + glm::vec3(0, -1, 0)), glm::vec3(1.0f)},
-        shadow_at(1024), "spot " + std::to_string(i));
+        shadow_at(resolution), "spot " + std::to_string(i));
   }
   ecs::update_world_transforms(scene.world, 0);
+  return scene;
+}
+
+// Twenty-four spot lights in a row away from the camera, each asking for 1024 texels, in an
+// atlas of one 64-texel page (room for 16 of the smallest tiles): the nearest (largest on
+// screen) keep the most texels, the farthest lose their shadow first.
+TEST(ShadowSchedule, TheBudgetDegradesTheLeastImportantLightsFirst) {
+  const scene::Scene scene = spots_in_a_row(24, 1024);
   FrameLights lights;
   gather_lights(scene.world, bounds, {}, lights);
   ShadowSchedule schedule(AtlasConfig{64, 1, min_shadow_resolution});
@@ -192,17 +199,7 @@ TEST(ShadowSchedule, TheBudgetDegradesTheLeastImportantLightsFirst) {
 // Spot lights 4 m apart, each reaching 3 m: moving a crate from the first light's reach into the
 // second's redraws exactly those two maps; a frame where nothing moves redraws none.
 TEST(ShadowSchedule, AMovedCasterRedrawsExactlyTheLightsItReaches) {
-  scene::Scene scene;
-  for (int i = 0; i < 6; ++i) {
-    const glm::vec3 position(0.0f, 2.0f, -3.0f - 4.0f * float(i));
-    scene::SpotLight spot;
-    spot.range = 3.0f;
-    scene::add_light(
-        scene, spot,
-        {position, scene::look_rotation(position, position + glm::vec3(0, -1, 0)), glm::vec3(1.0f)},
-        shadow_at(64), "spot " + std::to_string(i));
-  }
-  ecs::update_world_transforms(scene.world, 0);
+  scene::Scene scene = spots_in_a_row(6, 64);
   FrameLights lights;
   ShadowSchedule schedule(small_atlas);
   const ShadowCamera camera = camera_at({0.0f, 2.0f, 0.0f});

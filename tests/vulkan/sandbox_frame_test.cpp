@@ -62,6 +62,18 @@ std::vector<std::string> followed_by(std::vector<std::string> passes, const std:
   return passes;
 }
 
+// The stress scene with `triangles`, `points` point and `spots` spot lights, `moving` of them
+// moving.
+sandbox::Options stress(uint64_t triangles, uint32_t points, uint32_t spots, float moving) {
+  sandbox::Options options;
+  options.scene = "stress";
+  options.scene_params.triangles = triangles;
+  options.scene_params.point_lights = points;
+  options.scene_params.spot_lights = spots;
+  options.scene_params.moving_fraction = moving;
+  return options;
+}
+
 sandbox::Options lit_by(LightingPath lighting) {
   sandbox::Options options;
   options.lighting = lighting;
@@ -97,12 +109,7 @@ TEST_F(SandboxFrameTest, DefaultSceneRendersThroughTheGraph) {
 }
 
 TEST_F(SandboxFrameTest, MovingStressSceneStaysCleanAcrossFrames) {
-  sandbox::Options options;
-  options.scene = "stress";
-  options.scene_params.triangles = 3000;
-  options.scene_params.point_lights = 3;
-  options.scene_params.spot_lights = 3;
-  options.scene_params.moving_fraction = 0.5f;
+  sandbox::Options options = stress(3000, 3, 3, 0.5f);
   options.lighting = LightingPath::forward;
   render(options, 4);
   // Moving lights redraw their maps every frame.
@@ -198,12 +205,7 @@ TEST_F(SandboxFrameTest, CachedShadowsArePixelIdenticalToShadowsDrawnFromScratch
 // could hold) and 2,100 spot lights, tiny maps in a small window, clean under validation and
 // synchronization validation; the lights beyond the budget lose resolution, then their shadow.
 TEST_F(SandboxFrameTest, ThousandsOfShadowedLightsStayWithinDeviceLimits) {
-  sandbox::Options options;
-  options.scene = "stress";
-  options.scene_params.triangles = 2000;
-  options.scene_params.point_lights = 400;
-  options.scene_params.spot_lights = 2100;
-  options.scene_params.moving_fraction = 0.0f;
+  sandbox::Options options = stress(2000, 400, 2100, 0.0f);
   options.shadow_memory_mib = 16;  // one page of 2048 x 2048
   render(options, 2);
   EXPECT_EQ(passes.back(), "tone map");
