@@ -57,7 +57,7 @@ GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes,
   upload.submit();
 }
 
-void GpuScene::gather(const ecs::World& world) {
+void GpuScene::gather(const ecs::World& world, ecs::ThreadPool* pool) {
   items_.clear();
   gathered_.clear();
   const scene::Material default_material;
@@ -68,7 +68,7 @@ void GpuScene::gather(const ecs::World& world) {
         items_.push_back({mesh.mesh, mesh.casts_shadow, static_cast<uint32_t>(gathered_.size()),
                           uint64_t{entity.generation} << 32 | entity.index});
         gathered_.push_back(
-            {transform.matrix, glm::inverseTranspose(transform.matrix),
+            {transform.matrix, glm::mat4(1.0f),  // the normal matrix comes below, in parallel
              glm::vec4(glm::vec3(material.base_color), material.specular),
              glm::vec4(material.shininess,
                        material.base_color_texture == scene::no_texture ? -1.0f
@@ -84,31 +84,47 @@ void GpuScene::gather(const ecs::World& world) {
   for (const Item& item : items_) sorted_items_[slot_starts_[slot_of(item)]++] = item;
   std::swap(items_, sorted_items_);
 
-  sorted_.clear();
-  bounds_.clear();
-  keys_.clear();
+  // Per instance, in its sorted place: normal matrix, world bounds, key. The matrix inverses and
+  // the bounds' eight corners are most of a frame's gathering, and independent: chunks of them
+  // run on the pool's threads, each growing its own part of the scene's bounds.
+  const size_t count = items_.size();
+  sorted_.resize(count);
+  bounds_.resize(count);
+  keys_.resize(count);
+  constexpr size_t chunk = 1024;
+  const size_t chunks = (count + chunk - 1) / chunk;
+  chunk_bounds_.assign(chunks, scene::Aabb{});
+  const auto place = [&](size_t c) {
+    for (size_t i = c * chunk; i < std::min(count, (c + 1) * chunk); ++i) {
+      GpuInstance& instance = sorted_[i];
+      instance = gathered_[items_[i].index];
+      instance.normal_matrix = glm::inverseTranspose(instance.model);
+      bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, instance.model);
+      keys_[i] = items_[i].key;
+      scene::grow(chunk_bounds_[c], bounds_[i]);
+    }
+  };
+  if (pool != nullptr && chunks > 1) {
+    pool->run(chunks, place);
+  } else {
+    for (size_t c = 0; c < chunks; ++c) place(c);
+  }
   scene_bounds_ = {};
+  for (const scene::Aabb& part : chunk_bounds_) scene::grow(scene_bounds_, part);
+
   commands_.clear();
   caster_groups_.clear();
   // One command per mesh over its instances, and a caster group over its casters (first).
-  for (size_t begin = 0; begin < items_.size();) {
+  for (size_t begin = 0; begin < count;) {
     const uint32_t mesh = items_[begin].mesh;
     const scene::MeshRange& range = meshes_[mesh];
     size_t end = begin;
     uint32_t casters = 0;
-    for (; end < items_.size() && items_[end].mesh == mesh; ++end) casters += items_[end].caster;
-    const auto first_instance = static_cast<uint32_t>(sorted_.size());
-    for (size_t i = begin; i < end; ++i) {
-      const GpuInstance& instance = gathered_[items_[i].index];
-      sorted_.push_back(instance);
-      bounds_.push_back(scene::transformed(range.bounds, instance.model));
-      keys_.push_back(items_[i].key);
-      scene::grow(scene_bounds_, bounds_.back());
-    }
+    for (; end < count && items_[end].mesh == mesh; ++end) casters += items_[end].caster;
     if (range.index_count > 0) {
       const VkDrawIndexedIndirectCommand command{range.index_count, static_cast<uint32_t>(end - begin),
                                                  range.first_index, static_cast<int32_t>(range.vertex_offset),
-                                                 first_instance};
+                                                 static_cast<uint32_t>(begin)};
       commands_.push_back(command);
       if (casters > 0) {
         VkDrawIndexedIndirectCommand group = command;

@@ -13,6 +13,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "ecs/thread_pool.h"
 #include "ecs/world.h"
 #include "rendergraph/core/resource_types.h"
 #include "rendergraph/device/descriptors.h"
@@ -50,8 +51,8 @@ class GpuScene {
   // Gathers every entity with WorldTransform and MeshInstance (Material when present, the
   // default grey otherwise) into instances and draw lists, on the CPU; bounds() and
   // instance_bounds() describe them from here on. Transforms must be up to date
-  // (ecs::update_world_transforms).
-  void gather(const ecs::World& world);
+  // (ecs::update_world_transforms). With `pool`, the per-instance work runs on its threads.
+  void gather(const ecs::World& world, ecs::ThreadPool* pool = nullptr);
   // Writes what gather() found into the slot's instance and indirect-draw buffers.
   void upload(uint32_t slot);
 
@@ -101,6 +102,7 @@ class GpuScene {
   std::vector<GpuInstance> gathered_;
   std::vector<GpuInstance> sorted_;
   std::vector<scene::Aabb> bounds_;
+  std::vector<scene::Aabb> chunk_bounds_;
   std::vector<uint64_t> keys_;
   scene::Aabb scene_bounds_;
   std::vector<VkDrawIndexedIndirectCommand> commands_;

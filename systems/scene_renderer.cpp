@@ -47,7 +47,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
 }
 
 void SceneRenderer::gather(const ecs::World& world) {
-  gpu_scene_.gather(world);
+  gpu_scene_.gather(world, &workers_);
   shadows::gather_lights(world, gpu_scene_.bounds(), settings_.lights, lights_);
 }
 

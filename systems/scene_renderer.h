@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "ecs/thread_pool.h"
 #include "ecs/world.h"
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/frame_buffers.h"
@@ -105,6 +106,7 @@ class SceneRenderer {
  private:
   RendererSettings settings_;
   LightingPath lighting_;
+  ecs::ThreadPool workers_;  // CPU work of a frame that splits into independent chunks
   GpuScene gpu_scene_;
   GpuTextures textures_;
   ShadowAtlas atlas_;
