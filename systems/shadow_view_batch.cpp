@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstdio>
 #include <cstring>
 #include <numeric>
 #include <span>
@@ -121,6 +122,11 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
   scatter_pipeline_ = vk::create_compute_pipeline(
       context, {shadow_scatter_comp, {}, scatter_layout_.get(), "shadow scatter"});
   if (raster_ == shadows::ShadowRaster::compute) {
+    if (context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+      std::printf(
+          "shadowgraph: compute shadow raster on a CPU device: slow, and llvmpipe stops a shader's loops "
+          "after 65,535 iterations, which can leave tiles over 512 texels incomplete\n");
+    }
     compute_raster_pipeline_ = vk::create_compute_pipeline(
         context, {shadow_raster_comp, {}, compute_raster_layout_.get(), "shadow raster"});
     return;
