@@ -58,22 +58,11 @@ GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes,
 }
 
 void GpuScene::gather(const ecs::World& world, ecs::ThreadPool* pool) {
+  // Only what orders the instances here; their data is read below, in parallel.
   items_.clear();
-  gathered_.clear();
-  const scene::Material default_material;
   world.query<const ecs::WorldTransform, const scene::MeshInstance>().for_each(
-      [&](ecs::Entity entity, const ecs::WorldTransform& transform, const scene::MeshInstance& mesh) {
-        const scene::Material* found = world.try_get<scene::Material>(entity);
-        const scene::Material& material = found ? *found : default_material;
-        items_.push_back({mesh.mesh, mesh.casts_shadow, static_cast<uint32_t>(gathered_.size()),
-                          uint64_t{entity.generation} << 32 | entity.index});
-        gathered_.push_back(
-            {transform.matrix, glm::mat4(1.0f),  // the normal matrix comes below, in parallel
-             glm::vec4(glm::vec3(material.base_color), material.specular),
-             glm::vec4(material.shininess,
-                       material.base_color_texture == scene::no_texture ? -1.0f
-                                                                        : float(material.base_color_texture),
-                       0.0f, 0.0f)});
+      [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance& mesh) {
+        items_.push_back({mesh.mesh, mesh.casts_shadow, entity});
       });
   // By mesh, casters first within each: a counting sort (meshes are few, instances many).
   slot_starts_.assign(2 * meshes_.size() + 1, 0);
@@ -84,9 +73,11 @@ void GpuScene::gather(const ecs::World& world, ecs::ThreadPool* pool) {
   for (const Item& item : items_) sorted_items_[slot_starts_[slot_of(item)]++] = item;
   std::swap(items_, sorted_items_);
 
-  // Per instance, in its sorted place: normal matrix, world bounds, key. The matrix inverses and
-  // the bounds' eight corners are most of a frame's gathering, and independent: chunks of them
-  // run on the pool's threads, each growing its own part of the scene's bounds.
+  // Per instance, in its sorted place: its record (model and normal matrices, material), world
+  // bounds and key. Reading the components, the matrix inverses and the bounds' eight corners
+  // are most of a frame's gathering, and independent: chunks of them run on the pool's threads
+  // (the world is only read), each growing its own part of the scene's bounds.
+  const scene::Material default_material;
   const size_t count = items_.size();
   sorted_.resize(count);
   bounds_.resize(count);
@@ -96,11 +87,17 @@ void GpuScene::gather(const ecs::World& world, ecs::ThreadPool* pool) {
   chunk_bounds_.assign(chunks, scene::Aabb{});
   const auto place = [&](size_t c) {
     for (size_t i = c * chunk; i < std::min(count, (c + 1) * chunk); ++i) {
-      GpuInstance& instance = sorted_[i];
-      instance = gathered_[items_[i].index];
-      instance.normal_matrix = glm::inverseTranspose(instance.model);
-      bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, instance.model);
-      keys_[i] = items_[i].key;
+      const ecs::Entity entity = items_[i].entity;
+      const glm::mat4& model = world.try_get<ecs::WorldTransform>(entity)->matrix;
+      const scene::Material* found = world.try_get<scene::Material>(entity);
+      const scene::Material& material = found ? *found : default_material;
+      const float texture =
+          material.base_color_texture == scene::no_texture ? -1.0f : float(material.base_color_texture);
+      sorted_[i] = {model, glm::inverseTranspose(model),
+                    glm::vec4(glm::vec3(material.base_color), material.specular),
+                    glm::vec4(material.shininess, texture, 0.0f, 0.0f)};
+      bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, model);
+      keys_[i] = uint64_t{entity.generation} << 32 | entity.index;
       scene::grow(chunk_bounds_[c], bounds_[i]);
     }
   };

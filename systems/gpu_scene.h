@@ -93,13 +93,11 @@ class GpuScene {
   struct Item {
     uint32_t mesh;
     bool caster;
-    uint32_t index;  // into gathered_
-    uint64_t key;
+    ecs::Entity entity;
   };
   std::vector<Item> items_;
   std::vector<Item> sorted_items_;
   std::vector<uint32_t> slot_starts_;  // counting sort: per (mesh, caster or not)
-  std::vector<GpuInstance> gathered_;
   std::vector<GpuInstance> sorted_;
   std::vector<scene::Aabb> bounds_;
   std::vector<scene::Aabb> chunk_bounds_;
