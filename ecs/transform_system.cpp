@@ -1,7 +1,6 @@
 #include "ecs/transform_system.h"
 
 #include <algorithm>
-#include <unordered_set>
 #include <vector>
 
 #include "ecs/hierarchy.h"
@@ -38,13 +37,27 @@ std::vector<DirtyRoot> find_dirty(World& world, Tick since) {
   return dirty;
 }
 
+// The entities a frame's update has recomputed, by slot index: a flag per slot rather than a hash
+// set, which cost more than the matrices themselves when thousands of entities move each frame.
+class Visited {
+ public:
+  bool contains(Entity entity) const { return entity.index < seen_.size() && seen_[entity.index] != 0; }
+  void insert(Entity entity) {
+    if (entity.index >= seen_.size()) seen_.resize(std::size_t{entity.index} + entity.index / 2 + 64, 0);
+    seen_[entity.index] = 1;
+  }
+
+ private:
+  std::vector<std::uint8_t> seen_;
+};
+
 glm::mat4 parent_matrix(const World& world, Entity entity) {
   const WorldTransform* parent_world = world.try_get<WorldTransform>(parent_of(world, entity));
   return parent_world == nullptr ? glm::mat4{1.0f} : parent_world->matrix;
 }
 
 // Recomputes `root` and everything below it, recording what it visited in `updated`.
-void update_subtree(World& world, Entity root, std::unordered_set<Entity>& updated) {
+void update_subtree(World& world, Entity root, Visited& updated) {
   std::vector<Entity> pending{root};
   while (!pending.empty()) {
     const Entity entity = pending.back();
@@ -62,7 +75,7 @@ void update_subtree(World& world, Entity root, std::unordered_set<Entity>& updat
 }  // namespace
 
 void update_world_transforms(World& world, Tick since) {
-  std::unordered_set<Entity> updated;
+  Visited updated;
   // Shallowest first: by the time a dirty entity comes up, either an ancestor's subtree pass
   // already recomputed it, or none of its ancestors changed and its parent's matrix is current.
   for (const DirtyRoot& dirty : find_dirty(world, since)) {
