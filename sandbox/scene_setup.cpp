@@ -51,11 +51,7 @@ SandboxScene load_sandbox_scene(const Options& options, float aspect) {
     result.pose = *options.camera;
     result.camera_source = "--camera";
   } else if (camera) {
-    // Cameras follow the lights' convention (lights.h): position = world translation,
-    // forward = world -Z.
-    const auto& world = result.scene.world.get<ecs::WorldTransform>(*camera);
-    result.pose.eye = scene::light_position(world);
-    result.pose.target = result.pose.eye + scene::light_direction(world);
+    result.pose = scene::camera_pose(result.scene.world.get<ecs::WorldTransform>(*camera));
     result.camera_source = scene_camera_source(options, result.scene, *camera);
   } else {
     result.pose = scene::frame_bounds(scene::scene_bounds(result.scene), result.lens.yfov, aspect);

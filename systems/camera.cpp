@@ -5,7 +5,8 @@
 namespace sg {
 
 glm::mat4 view_matrix(const scene::CameraPose& pose) {
-  return glm::lookAtRH(pose.eye, pose.target, glm::vec3(0.0f, 1.0f, 0.0f));
+  const glm::vec3 forward = glm::normalize(pose.target - pose.eye);
+  return glm::lookAtRH(pose.eye, pose.target, scene::camera_up(forward, pose.up));
 }
 
 glm::mat4 projection_matrix(const scene::Camera& lens, float aspect) {

@@ -63,17 +63,32 @@ CameraPose frame_bounds(const Aabb& bounds, float yfov, float aspect) {
   return {center + direction * distance, center};
 }
 
-glm::quat look_rotation(const glm::vec3& eye, const glm::vec3& target) {
+glm::vec3 camera_up(const glm::vec3& forward, const glm::vec3& up) {
+  const float length = glm::length(up);
+  if (length > 0.0f && std::abs(glm::dot(forward, up / length)) < 0.999f) return up / length;
+  // Any axis perpendicular to forward will do; take the world axis least along it.
+  const glm::vec3 a = glm::abs(forward);
+  const glm::vec3 axis = a.x <= a.y && a.x <= a.z ? glm::vec3(1, 0, 0)
+                         : a.y <= a.z             ? glm::vec3(0, 1, 0)
+                                                  : glm::vec3(0, 0, 1);
+  return glm::normalize(axis - forward * glm::dot(axis, forward));
+}
+
+CameraPose camera_pose(const ecs::WorldTransform& world) {
+  const glm::vec3 eye(world.matrix[3]);
+  const glm::vec3 forward = glm::normalize(-glm::vec3(world.matrix[2]));
+  return {eye, eye + forward, glm::normalize(glm::vec3(world.matrix[1]))};
+}
+
+glm::quat look_rotation(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up) {
   const glm::vec3 forward = glm::normalize(target - eye);
-  // Looking straight up or down, +Y cannot serve as "up"; any perpendicular axis will do.
-  const glm::vec3 up = std::abs(forward.y) > 0.999f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
   // lookAt builds the view matrix (world to camera); the entity's rotation is its inverse.
-  return glm::quat_cast(glm::inverse(glm::lookAt(eye, target, up)));
+  return glm::quat_cast(glm::inverse(glm::lookAt(eye, target, camera_up(forward, up))));
 }
 
 ecs::Entity add_camera(ecs::World& world, const CameraPose& pose, const Camera& camera) {
   const ecs::Entity entity = world.create();
-  world.add<ecs::LocalTransform>(entity, pose.eye, look_rotation(pose.eye, pose.target));
+  world.add<ecs::LocalTransform>(entity, pose.eye, look_rotation(pose.eye, pose.target, pose.up));
   world.add<ecs::WorldTransform>(entity);
   world.add<Camera>(entity, camera);
   return entity;

@@ -4,7 +4,11 @@
 #include <cmath>
 #include <string>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include "sandbox/scene_setup.h"
+#include "systems/camera.h"
+#include "systems/scene/camera.h"
 #include "systems/scene/scene_error.h"
 #include "systems/scene/scene_queries.h"
 #include "tests/scene/gltf_writer.h"
@@ -49,6 +53,70 @@ TEST(SandboxScene, UsesTheGltfCamera) {
   EXPECT_FLOAT_EQ(loaded.lens.yfov, 0.7f);
   EXPECT_FLOAT_EQ(loaded.lens.zfar, 50.0f);
   EXPECT_EQ(loaded.scene.name, options.scene);
+}
+
+// A scene whose camera node has rotation `rotation` (x, y, z, w) at (0, 5, 0).
+std::string write_scene_with_camera_rotation(const TempDir& dir, const glm::quat& rotation,
+                                             const char* name) {
+  GltfWriter file;
+  const int mesh = file.add_mesh({{"POSITION", file.add_triangle_positions()}});
+  file.add_node({{"mesh", mesh}});
+  file.document["cameras"] = {
+      {{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 50}}}}};
+  file.add_node({{"camera", 0},
+                 {"translation", {0, 5, 0}},
+                 {"rotation", {rotation.x, rotation.y, rotation.z, rotation.w}}});
+  return file.write_gltf(dir, name).string();
+}
+
+// The sandbox's view matrix of `loaded` sends points where the camera node's own frame puts
+// them: the inverse of its world transform (glTF cameras look down -Z, +Y up, roll included).
+void expect_view_of_camera_node(const SandboxScene& loaded) {
+  const std::optional<ecs::Entity> camera = scene::first_camera(loaded.scene);
+  ASSERT_TRUE(camera.has_value());
+  const glm::mat4 node = loaded.scene.world.get<ecs::WorldTransform>(*camera).matrix;
+  const glm::mat4 expected = glm::inverse(node);
+  const glm::mat4 view = view_matrix(loaded.pose);
+  for (const glm::vec3 point :
+       {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 0, 2), glm::vec3(-1, 3, 1)}) {
+    expect_near(glm::vec3(view * glm::vec4(point, 1.0f)), glm::vec3(expected * glm::vec4(point, 1.0f)));
+  }
+}
+
+TEST(SandboxScene, ARolledGltfCameraKeepsItsRoll) {
+  TempDir dir;
+  Options options;
+  // Looking down -Z, rolled 90 degrees: the picture's top is world -X.
+  options.scene = write_scene_with_camera_rotation(
+      dir, glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 0, 1)), "rolled");
+  const SandboxScene loaded = load_sandbox_scene(options, 1.0f);
+  expect_near(loaded.pose.up, {-1, 0, 0});
+  expect_view_of_camera_node(loaded);
+}
+
+TEST(SandboxScene, AGltfCameraLookingStraightDownIsNotTurned) {
+  TempDir dir;
+  Options options;
+  // Pitched down 90 degrees: looking down world -Y, the picture's top towards world -Z.
+  options.scene =
+      write_scene_with_camera_rotation(dir, glm::angleAxis(glm::radians(-90.0f), glm::vec3(1, 0, 0)), "down");
+  const SandboxScene loaded = load_sandbox_scene(options, 1.0f);
+  expect_near(glm::normalize(loaded.pose.target - loaded.pose.eye), {0, -1, 0});
+  expect_near(loaded.pose.up, {0, 0, -1});
+  expect_view_of_camera_node(loaded);
+}
+
+// --camera looking straight down has no +Y to roll around: the view picks another up and still
+// sees what lies below, instead of a degenerate matrix and a blank picture.
+TEST(SandboxScene, ACommandLineCameraLookingStraightDownSeesTheGround) {
+  const scene::CameraPose pose = scene::parse_camera("0,12,0,0,0,0");
+  const glm::mat4 clip = projection_matrix(scene::Camera{}, 1.0f) * view_matrix(pose);
+  const glm::vec4 below = clip * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  ASSERT_GT(below.w, 0.0f);
+  expect_near(glm::vec3(below) / below.w, {0.0f, 0.0f, glm::vec3(below).z / below.w});  // the centre
+  const glm::vec4 aside = clip * glm::vec4(2.0f, 0.0f, 1.0f, 1.0f);
+  EXPECT_TRUE(std::isfinite(aside.x / aside.w) && std::isfinite(aside.y / aside.w));
+  EXPECT_LT(std::abs(aside.x / aside.w), 1.0f);  // two metres aside, 12 below: in the picture
 }
 
 TEST(SandboxScene, AFileWithoutLightsGetsTheSandboxSun) {
