@@ -179,6 +179,12 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--exposure", o.exposure, "Multiplies the lit colour before tone mapping")
       ->check(CLI::Range(1e-3f, 1e3f))
       ->capture_default_str();
+  app.add_option_function<std::string>(
+         "--animate", [&o](const std::string& value) { o.animate = value == "on"; },
+         "on: play the scene's glTF animations and the stress scene's orbits (headless: a fixed 1/60 s a "
+         "frame); off: everything stays where the scene puts it")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->default_str("on");
   app.add_option("--dump-shadow-maps", o.dump_shadow_maps,
                  "After the run, write each light's shadow map as PNG into this folder");
 }

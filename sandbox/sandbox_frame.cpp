@@ -10,6 +10,7 @@
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "systems/scene/builtin_scenes.h"
+#include "systems/scene/node_animation.h"
 
 namespace sg::sandbox {
 namespace {
@@ -76,6 +77,7 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, cons
     : context_(context),
       scene_(scene),
       depth_overlay_enabled_(options.depth_overlay),
+      animate_(options.animate),
       renderer_(context, scene.scene, frames_in_flight, frame_format, renderer_settings(options)),
       depth_overlay_(context, frame_format),
       executor_(context, frames_in_flight) {}
@@ -111,7 +113,10 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
 
 void SandboxFrame::update(double time_seconds) {
   ecs::World& world = scene_.scene.world;
-  scene::animate_orbits(world, static_cast<float>(time_seconds));
+  if (animate_) {
+    scene::animate_orbits(world, static_cast<float>(time_seconds));
+    scene::animate_nodes(world, static_cast<float>(time_seconds));
+  }
   ecs::update_world_transforms(world, transforms_updated_);
   transforms_updated_ = world.tick();
   world.advance_tick();

@@ -81,6 +81,7 @@ class SandboxFrame {
   vk::VulkanContext& context_;
   SandboxScene& scene_;
   bool depth_overlay_enabled_;
+  bool animate_;
   SceneRenderer renderer_;
   DepthOverlayPass depth_overlay_;
   vk::GraphExecutor executor_;

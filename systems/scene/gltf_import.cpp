@@ -10,6 +10,7 @@
 #include "ecs/transform.h"
 #include "ecs/transform_system.h"
 #include "systems/scene/camera.h"
+#include "systems/scene/gltf_animations.h"
 #include "systems/scene/gltf_json.h"
 #include "systems/scene/gltf_lights.h"
 #include "systems/scene/gltf_materials.h"
@@ -92,9 +93,10 @@ class Importer {
     import_textures(model_, scene_);
     materials_ = import_materials(model_, scene_);
     meshes_ = import_meshes(model_, scene_);
-    if (!model_.skins.empty() || !model_.animations.empty()) {
-      warn(scene_, "skins or animations present: imported in the bind pose, not animated");
+    if (!model_.skins.empty()) {
+      warn(scene_, "skins present: skinned meshes are drawn in their bind pose, not deformed");
     }
+    node_entities_.assign(model_.nodes.size(), ecs::null_entity);
     std::vector<std::pair<int, ecs::Entity>> pending;  // node, parent entity
     const std::vector<int> roots = root_nodes();
     for (auto root = roots.rbegin(); root != roots.rend(); ++root)
@@ -107,6 +109,7 @@ class Importer {
       for (auto child = children.rbegin(); child != children.rend(); ++child)
         pending.emplace_back(*child, entity);
     }
+    import_animations(source_, model_, node_entities_, scene_);
     ecs::update_world_transforms(scene_.world, 0);
   }
 
@@ -135,6 +138,7 @@ class Importer {
     const std::string object = indexed("nodes", index);
     ecs::World& world = scene_.world;
     const ecs::Entity entity = world.create();
+    node_entities_[index] = entity;
     world.add<ecs::LocalTransform>(entity, node_transform(node, object, scene_));
     world.add<ecs::WorldTransform>(entity);
     if (!node.name.empty()) world.add<Name>(entity, node.name);
@@ -182,6 +186,7 @@ class Importer {
   Scene& scene_;
   std::vector<ImportedLight> lights_;
   std::vector<std::optional<std::size_t>> node_lights_;  // by node
+  std::vector<ecs::Entity> node_entities_;               // by node; null when not imported
   std::vector<Material> materials_;
   std::vector<std::vector<ImportedPrimitive>> meshes_;
 };

@@ -10,9 +10,11 @@
 //   an infinite far plane becomes 10,000 * znear);
 // - a node's KHR_lights_punctual light -> PointLight, SpotLight or DirectionalLight with
 //   FalloffMode::gltf_punctual, plus ShadowSettings from the light's extras (gltf_lights.h);
-// - skins and animations: the scene is imported in its bind pose with a warning (a skinned
-//   mesh's vertices are already in bind-pose model space, so its primitive entities are roots
-//   with identity transforms, as the spec ignores a skinned mesh node's own transform).
+// - animations: each channel on a node's translation, rotation or scale -> NodeAnimation on
+//   the node's entity (gltf_animations.h; animate_nodes plays them);
+// - skins: drawn in the bind pose with a warning (a skinned mesh's vertices are already in
+//   bind-pose model space, so its primitive entities are roots with identity transforms, as the
+//   spec ignores a skinned mesh node's own transform).
 //
 // Validation: see gltf_source.h, gltf_preflight.h, gltf_validate.h, gltf_meshes.h and
 // gltf_lights.h. Any refusal is a SceneError naming the file, the object and the problem;

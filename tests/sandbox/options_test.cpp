@@ -78,6 +78,35 @@ TEST(SandboxOptions, ShadowOptions) {
   }
 }
 
+TEST(SandboxOptions, ShadowStorageAndAnimationOptions) {
+  const Options defaults = parse_ok({});
+  EXPECT_EQ(defaults.shadow_views, shadows::ShadowViewPath::batched);
+  EXPECT_EQ(defaults.shadow_raster, shadows::ShadowRaster::automatic);
+  EXPECT_EQ(defaults.shadow_memory_mib, 0u);
+  EXPECT_EQ(defaults.shadow_updates, shadows::default_shadow_view_budget);
+  EXPECT_TRUE(defaults.shadow_cache);
+  EXPECT_TRUE(defaults.animate);
+
+  const Options options =
+      parse_ok({"--shadow-views", "per-light", "--shadow-raster", "compute", "--shadow-memory", "128",
+                "--shadow-updates", "0", "--shadow-cache", "off", "--animate", "off"});
+  EXPECT_EQ(options.shadow_views, shadows::ShadowViewPath::per_light);
+  EXPECT_EQ(options.shadow_raster, shadows::ShadowRaster::compute);
+  EXPECT_EQ(options.shadow_memory_mib, 128u);
+  EXPECT_EQ(options.shadow_updates, 0u);
+  EXPECT_FALSE(options.shadow_cache);
+  EXPECT_FALSE(options.animate);
+
+  for (const std::vector<std::string>& bad : {std::vector<std::string>{"--shadow-views", "some"},
+                                              {"--shadow-raster", "gpu"},
+                                              {"--shadow-memory", "-1"},
+                                              {"--shadow-cache", "maybe"},
+                                              {"--animate", "yes"},
+                                              {"--naive", "--shadow-views", "batched"}}) {
+    EXPECT_EQ(parse(bad).exit_code, 2) << bad[0] << " " << bad[1];
+  }
+}
+
 TEST(SandboxOptions, LightingOptions) {
   const Options defaults = parse_ok({});
   EXPECT_EQ(defaults.lighting, LightingPath::automatic);

@@ -8,12 +8,15 @@
 
 #include "ecs/hierarchy.h"
 #include "ecs/transform.h"
+#include "ecs/transform_system.h"
 #include "gltf_writer.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/gltf_import.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
+#include "systems/scene/node_animation.h"
+#include "systems/scene/scene_error.h"
 #include "systems/scene/scene_queries.h"
 #include "systems/scene/shadow_settings.h"
 
@@ -411,6 +414,61 @@ TEST(GltfImport, SceneBoundsCoverTransformedInstances) {
   EXPECT_EQ(bounds.max, glm::vec3(5, 1, 2));
   EXPECT_EQ(scene_stats(scene).triangles, 2u);
   EXPECT_EQ(scene.meshes.meshes.size(), 1u);  // both nodes instance one library mesh
+}
+
+// A point light's node moved along +X from 0 to 4 over 2 s (LINEAR), and a STEP rotation on
+// another node; `output_keys` values in the translation's output (2 for a well-formed file).
+std::string write_animated(const TempDir& dir, std::size_t output_keys) {
+  GltfWriter file;
+  file.add_light({{"type", "point"}, {"range", 5}});
+  file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  file.add_node({{"name", "turner"}});
+  file.document["extensionsRequired"] = {"KHR_lights_punctual"};
+  const std::vector<float> times{0.0f, 2.0f};
+  std::vector<float> positions{0, 1, 0, 4, 1, 0};
+  positions.resize(output_keys * 3, 0.0f);
+  const std::vector<float> rotations{0, 0, 0, 1, 0, 0.7071068f, 0, 0.7071068f};
+  const int input = file.add_accessor(file.add_view(times), f32, 2, "SCALAR");
+  file.document["accessors"][input]["min"] = {0.0};
+  file.document["accessors"][input]["max"] = {2.0};
+  const int translation = file.add_accessor(file.add_view(positions), f32, output_keys, "VEC3");
+  const int rotation = file.add_accessor(file.add_view(rotations), f32, 2, "VEC4");
+  file.document["animations"] = {{{"samplers",
+                                   {{{"input", input}, {"output", translation}},
+                                    {{"input", input}, {"output", rotation}, {"interpolation", "STEP"}}}},
+                                  {"channels",
+                                   {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}},
+                                    {{"sampler", 1}, {"target", {{"node", 1}, {"path", "rotation"}}}}}}}};
+  return file.write_gltf(dir, "animated").string();
+}
+
+TEST(GltfImport, AnimationsPlayOnTheirNodesLightsIncluded) {
+  TempDir dir;
+  Scene scene = load_gltf(write_animated(dir, 2));
+  EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+  ecs::Entity light;
+  scene.world.query<const PointLight>().for_each([&](ecs::Entity e, const PointLight&) { light = e; });
+  ASSERT_TRUE(scene.world.has<NodeAnimation>(light));
+  EXPECT_FLOAT_EQ(scene.world.get<NodeAnimation>(light).channels[0].duration, 2.0f);
+
+  animate_nodes(scene.world, 0.5f);
+  ecs::update_world_transforms(scene.world, 0);
+  EXPECT_EQ(light_position(scene.world.get<ecs::WorldTransform>(light)), glm::vec3(1, 1, 0));
+  animate_nodes(scene.world, 2.5f);  // looped: half a second into the next round
+  ecs::update_world_transforms(scene.world, 0);
+  EXPECT_EQ(light_position(scene.world.get<ecs::WorldTransform>(light)), glm::vec3(1, 1, 0));
+}
+
+TEST(GltfImport, AnAnimationOutputOfTheWrongCountIsRefused) {
+  TempDir dir;
+  try {
+    load_gltf(write_animated(dir, 3));
+    FAIL() << "a sampler with 3 values for 2 keys was accepted";
+  } catch (const SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("animations[0].samplers[0]: output has 3 values for 2 keys"),
+              std::string::npos)
+        << error.what();
+  }
 }
 
 }  // namespace

@@ -4,9 +4,11 @@
 #include <filesystem>
 #include <string>
 
+#include "ecs/transform_system.h"
 #include "systems/scene/gltf_import.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/material.h"
+#include "systems/scene/node_animation.h"
 #include "systems/scene/scene_queries.h"
 
 namespace sg::scene {
@@ -43,6 +45,20 @@ TEST(SharedAssets, ShadowsSpotHasOneSpotLightWithTheFilesRangeAndCones) {
         EXPECT_EQ(spot.falloff, FalloffMode::gltf_punctual);
         EXPECT_LT(light_direction(world).y, -0.5f);  // the file's light looks down
       });
+  // The file animates its light and the cone mesh around it: both nodes play, and the light
+  // moves with its node.
+  EXPECT_EQ(scene.world.query<const NodeAnimation>().count(), 2u);
+  const auto light_at = [&](float time) {
+    animate_nodes(scene.world, time);
+    ecs::update_world_transforms(scene.world, 0);
+    glm::vec3 position(0.0f);
+    scene.world.query<const SpotLight, const ecs::WorldTransform>().for_each(
+        [&](ecs::Entity, const SpotLight&, const ecs::WorldTransform& world) {
+          position = light_position(world);
+        });
+    return position;
+  };
+  EXPECT_GT(glm::length(light_at(1.0f) - light_at(0.0f)), 0.01f);
 }
 
 TEST(SharedAssets, ShadowsDirectionalHasOneDirectionalLight) {
