@@ -5,7 +5,11 @@
 #include <stdexcept>
 
 #define GLFW_INCLUDE_VULKAN
+#include <utility>
+
 #include <GLFW/glfw3.h>
+
+#include "systems/scene/scene_queries.h"
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/frame_ring.h"
@@ -29,8 +33,16 @@ WindowSession::WindowSession(const Options& options)
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   window_ = glfwCreateWindow(int(options.width), int(options.height), "Shadowgraph", nullptr, nullptr);
   if (!window_) throw std::runtime_error("cannot create a GLFW window");
+  // Key presses and wheel steps arrive as events; held keys and the cursor are polled (fly_input).
+  glfwSetWindowUserPointer(window_, this);
   glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
     if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
+    if (key == GLFW_KEY_F && action == GLFW_PRESS) {
+      static_cast<WindowSession*>(glfwGetWindowUserPointer(w))->frame_scene_ = true;
+    }
+  });
+  glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double steps) {
+    static_cast<WindowSession*>(glfwGetWindowUserPointer(w))->scroll_ += float(steps);
   });
 
   vk::ContextOptions vulkan_options = context_options(options);
@@ -50,6 +62,7 @@ WindowSession::WindowSession(const Options& options)
   frame_ = std::make_unique<SandboxFrame>(*context_, scene_, options, frames_->frames_in_flight());
   ready_ = fit_to_window();
   start_seconds_ = glfwGetTime();
+  last_frame_seconds_ = start_seconds_;
 }
 
 WindowSession::~WindowSession() {
@@ -80,6 +93,23 @@ void WindowSession::finish() {
   }
 }
 
+FlyInput WindowSession::fly_input() {
+  FlyInput input;
+  const auto held = [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS ? 1.0f : 0.0f; };
+  input.move = {held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_E) - held(GLFW_KEY_Q),
+                held(GLFW_KEY_W) - held(GLFW_KEY_S)};
+  double x = 0.0;
+  double y = 0.0;
+  glfwGetCursorPos(window_, &x, &y);
+  const glm::vec2 cursor(x, y);
+  input.look = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+  input.mouse_delta = last_cursor_ ? cursor - *last_cursor_ : glm::vec2(0.0f);
+  last_cursor_ = cursor;
+  input.scroll = std::exchange(scroll_, 0.0f);
+  input.frame_scene = std::exchange(frame_scene_, false);
+  return input;
+}
+
 FrameResult WindowSession::frame() {
   glfwPollEvents();
   if (glfwWindowShouldClose(window_)) return FrameResult::closed;
@@ -102,7 +132,13 @@ FrameResult WindowSession::frame() {
     return FrameResult::swapchain_recreated;
   }
   const auto start = std::chrono::steady_clock::now();  // after the waits for the GPU
-  frame_->record(frame, glfwGetTime() - start_seconds_,
+  const double now = glfwGetTime();
+  const FlyInput input = fly_input();
+  const scene::Aabb bounds = input.frame_scene ? scene::scene_bounds(scene_.scene) : scene::Aabb{};
+  fly(fly_camera_, scene_.pose, input, static_cast<float>(now - last_frame_seconds_), bounds,
+      scene_.lens.yfov);
+  last_frame_seconds_ = now;
+  frame_->record(frame, now - start_seconds_,
                  PresentTarget{swapchain_->image(*image), swapchain_->format(), swapchain_->extent()});
   const vk::SemaphoreWait wait{frame.image_acquired, acquire_wait_stage};
   const VkSemaphore signal = swapchain_->render_finished(*image);

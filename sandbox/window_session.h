@@ -9,6 +9,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "sandbox/fly_camera.h"
 #include "sandbox/gpu_time_log.h"
 #include "sandbox/options.h"
 #include "sandbox/scene_setup.h"
@@ -28,6 +29,7 @@ class SandboxFrame;
 enum class FrameResult { rendered, minimized, swapchain_recreated, closed };
 
 // glfwInit must have succeeded before a session is created.
+// Esc closes the window; the fly camera (fly_camera.h) moves the view.
 class WindowSession {
  public:
   explicit WindowSession(const Options& options);
@@ -50,6 +52,7 @@ class WindowSession {
 
  private:
   bool fit_to_window();
+  FlyInput fly_input();
 
   GLFWwindow* window_ = nullptr;
   SandboxScene scene_;
@@ -59,6 +62,11 @@ class WindowSession {
   std::unique_ptr<SandboxFrame> frame_;
   bool ready_ = false;
   double start_seconds_ = 0.0;
+  double last_frame_seconds_ = 0.0;
+  FlyCamera fly_camera_;
+  std::optional<glm::vec2> last_cursor_;
+  float scroll_ = 0.0f;       // wheel steps since the last frame
+  bool frame_scene_ = false;  // F pressed since the last frame
   std::vector<double> frame_ms_;
   std::vector<double> wall_frame_ms_;
   std::optional<std::chrono::steady_clock::time_point> last_present_;
