@@ -185,6 +185,11 @@ void add_options(CLI::App& app, Options& o) {
          "frame); off: everything stays where the scene puts it")
       ->check(CLI::IsMember({"on", "off"}))
       ->default_str("on");
+  app.add_option_function<std::string>(
+         "--ui", [&o](const std::string& value) { o.ui = value == "on"; },
+         "on: the frame-facts and light-editor panels (Dear ImGui) over the picture; off: the picture "
+         "alone (default: on in a window, off headless)")
+      ->check(CLI::IsMember({"on", "off"}));
   app.add_option("--dump-shadow-maps", o.dump_shadow_maps,
                  "After the run, write each light's shadow map as PNG into this folder");
 }

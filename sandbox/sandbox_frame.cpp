@@ -73,14 +73,23 @@ RendererSettings renderer_settings(const Options& options) {
 }
 
 SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, const Options& options,
-                           uint32_t frames_in_flight)
+                           uint32_t frames_in_flight, GLFWwindow* window)
     : context_(context),
       scene_(scene),
       depth_overlay_enabled_(options.depth_overlay),
       animate_(options.animate),
       renderer_(context, scene.scene, frames_in_flight, frame_format, renderer_settings(options)),
       depth_overlay_(context, frame_format),
-      executor_(context, frames_in_flight) {}
+      executor_(context, frames_in_flight) {
+  if (options.ui.value_or(window != nullptr)) {
+    ui_ = std::make_unique<SandboxUi>(window);
+    ui_pass_ = std::make_unique<UiPass>(context, frame_format, frames_in_flight);
+  }
+}
+
+SandboxFrame::~SandboxFrame() = default;
+
+bool SandboxFrame::ui_wants_input() const { return ui_ && ui_->wants_input(); }
 
 void SandboxFrame::resize(VkExtent2D extent) {
   image_ = vk::Image(context_, {extent, vk::to_vk(frame_format),
@@ -96,11 +105,18 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
     samples.push_back(std::chrono::duration<double, std::milli>(now - mark).count());
     mark = now;
   };
+  const ImDrawData* panels = nullptr;
+  if (ui_) {
+    panels = ui_->build(scene_.scene.world, ui_facts(), image_.extent(),
+                        static_cast<float>(time_seconds - last_time_seconds_));
+  }
+  last_time_seconds_ = time_seconds;
   update(time_seconds);
   timed(phase_ms_.update);
   renderer_.gather(std::as_const(scene_.scene.world));
   timed(phase_ms_.gather);
   renderer_.prepare(frame.slot, scene_.pose, scene_.lens, image_.extent().width, image_.extent().height);
+  if (ui_pass_) ui_pass_->prepare(frame.slot, panels);
   timed(phase_ms_.prepare);
   const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
   shadow_views_rendered_.push_back(shadows.views_rendered);
@@ -109,6 +125,24 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
   timed(phase_ms_.declare);
   execute(frame);
   timed(phase_ms_.execute);
+}
+
+UiFacts SandboxFrame::ui_facts() const {
+  UiFacts facts;
+  const auto last = [](const std::vector<double>& samples) { return samples.empty() ? 0.0 : samples.back(); };
+  facts.cpu_frame_ms = last(phase_ms_.update) + last(phase_ms_.gather) + last(phase_ms_.prepare) +
+                       last(phase_ms_.declare) + last(phase_ms_.execute);
+  if (const std::optional<vk::FrameTimings>& timings = executor_.latest_timings()) {
+    for (const double pass : timings->pass_ms) facts.gpu_frame_ms += pass;
+  }
+  const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
+  facts.views_rendered = shadows.views_rendered;
+  facts.views_cached = shadows.views_cached;
+  facts.lights_without_shadow = shadows.lights_without_shadow;
+  facts.lights = static_cast<uint32_t>(renderer_.lights().records.size());
+  facts.shadow_mib = double(renderer_.shadow_atlas().bytes()) / (1 << 20);
+  facts.lighting = lighting_path_name(renderer_.lighting());
+  return facts;
 }
 
 void SandboxFrame::update(double time_seconds) {
@@ -129,6 +163,7 @@ void SandboxFrame::declare_passes(uint32_t slot, const std::optional<PresentTarg
       renderer_.add_passes(graph_, imports_, frame_image, slot, scene_.pose, scene_.lens);
   rg::ImageHandle colour = targets.colour;
   if (depth_overlay_enabled_) colour = depth_overlay_.add_to(graph_, targets.depth, colour, scene_.lens);
+  if (ui_pass_) colour = ui_pass_->add_to(graph_, colour, slot);
   if (present) add_present(graph_, imports_, colour, *present);
 }
 

@@ -1,11 +1,12 @@
 #pragma once
 // The sandbox's frame. record() runs the frame's five phases, in this order and nowhere else:
 //
-//   1. update   systems that write the world: animation, then world transforms
+//   1. update   systems that write the world: the panels' edits (--ui), animation, then world
+//               transforms
 //   2. gather   read-only systems over a const World: drawables and lights into CPU lists
 //   3. prepare  shadow storage, caster culling, this frame slot's GPU buffers and descriptors
-//   4. declare  the frame graph: shadow passes, forward (SceneRenderer) -> [depth overlay,
-//               --depth-overlay] -> [present, in a window]
+//   4. declare  the frame graph: shadow passes, lighting (SceneRenderer) -> [depth overlay,
+//               --depth-overlay] -> [ui, --ui] -> [present, in a window]
 //   5. execute  compile (plans come from a PlanCache: shapes repeat) and record the commands
 //
 // The picture lands in the persistent "frame" image (imported into each graph, left in
@@ -25,6 +26,8 @@
 #include "sandbox/depth_overlay_pass.h"
 #include "sandbox/options.h"
 #include "sandbox/scene_setup.h"
+#include "sandbox/ui.h"
+#include "sandbox/ui_pass.h"
 #include "systems/scene_renderer.h"
 
 namespace sg::sandbox {
@@ -47,8 +50,10 @@ RendererSettings renderer_settings(const Options& options);
 
 class SandboxFrame {
  public:
+  // `window`: the panels read their input from it (nullptr: headless, panels without input).
   SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, const Options& options,
-               uint32_t frames_in_flight);
+               uint32_t frames_in_flight, GLFWwindow* window = nullptr);
+  ~SandboxFrame();
 
   // (Re)creates the frame image. The GPU must not be using the old one (wait idle first).
   void resize(VkExtent2D extent);
@@ -64,6 +69,9 @@ class SandboxFrame {
   const std::shared_ptr<const rg::CompiledPlan>& plan() const { return plan_; }
   vk::GraphExecutor& executor() { return executor_; }
   const vk::GraphExecutor& executor() const { return executor_; }
+  // Whether the panels take the mouse or keyboard this frame (false without panels).
+  bool ui_wants_input() const;
+
   // Per recorded frame: CPU milliseconds of each phase of record().
   struct PhaseTimes {
     std::vector<double> update, gather, prepare, declare, execute;
@@ -74,6 +82,7 @@ class SandboxFrame {
   const std::vector<double>& shadow_views_cached() const { return shadow_views_cached_; }
 
  private:
+  UiFacts ui_facts() const;
   void update(double time_seconds);
   void declare_passes(uint32_t slot, const std::optional<PresentTarget>& present);
   void execute(const vk::FrameSlot& frame);
@@ -82,8 +91,11 @@ class SandboxFrame {
   SandboxScene& scene_;
   bool depth_overlay_enabled_;
   bool animate_;
+  double last_time_seconds_ = 0.0;
   SceneRenderer renderer_;
   DepthOverlayPass depth_overlay_;
+  std::unique_ptr<SandboxUi> ui_;  // with --ui
+  std::unique_ptr<UiPass> ui_pass_;
   vk::GraphExecutor executor_;
   rg::PlanCache plans_;
   vk::GraphImports imports_;

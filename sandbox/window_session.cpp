@@ -59,7 +59,7 @@ WindowSession::WindowSession(const Options& options)
   swapchain_ = std::make_unique<vk::Swapchain>(
       *context_, surface, options.vsync ? vk::PresentMode::vsync : vk::PresentMode::no_vsync);
   frames_ = std::make_unique<vk::FrameRing>(*context_);
-  frame_ = std::make_unique<SandboxFrame>(*context_, scene_, options, frames_->frames_in_flight());
+  frame_ = std::make_unique<SandboxFrame>(*context_, scene_, options, frames_->frames_in_flight(), window_);
   ready_ = fit_to_window();
   start_seconds_ = glfwGetTime();
   last_frame_seconds_ = start_seconds_;
@@ -133,7 +133,8 @@ FrameResult WindowSession::frame() {
   }
   const auto start = std::chrono::steady_clock::now();  // after the waits for the GPU
   const double now = glfwGetTime();
-  const FlyInput input = fly_input();
+  FlyInput input = fly_input();
+  if (frame_->ui_wants_input()) input = FlyInput{};  // the panels have the mouse or keyboard
   const scene::Aabb bounds = input.frame_scene ? scene::scene_bounds(scene_.scene) : scene::Aabb{};
   fly(fly_camera_, scene_.pose, input, static_cast<float>(now - last_frame_seconds_), bounds,
       scene_.lens.yfov);

@@ -29,6 +29,7 @@ struct GraphicsPipelineDesc {
   bool depth_write = true;
   VkCullModeFlags cull_mode = VK_CULL_MODE_BACK_BIT;
   VkFrontFace front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  bool alpha_blend = false;  // colour = src * src alpha + dst * (1 - src alpha), for overlays
   VkPipelineLayout layout = VK_NULL_HANDLE;
   std::string name;
 };

@@ -221,6 +221,24 @@ TEST_F(SandboxFrameTest, ThousandsOfShadowedLightsStayWithinDeviceLimits) {
   EXPECT_GT(shadow_stats.lights_per_resolution.front().second, 1000u);
 }
 
+// --ui: Dear ImGui's panels drawn by the frame's own "ui" pass, headless (no input), over the
+// picture and under validation; without it the picture is untouched.
+TEST_F(SandboxFrameTest, PanelsDrawOverThePicture) {
+  const vk::Rgba8Image plain = render(sandbox::Options{}, 2);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "ui"), 0);
+  sandbox::Options with_panels;
+  with_panels.ui = true;
+  const vk::Rgba8Image panels = render(with_panels, 2);
+  EXPECT_EQ(passes.back(), "ui");
+  // The frame-facts panel's title bar sits in the top-left corner.
+  int differing = 0;
+  for (uint32_t y = 8; y < 24; ++y) {
+    for (uint32_t x = 8; x < 64; ++x)
+      differing += !std::equal(plain.at(x, y), plain.at(x, y) + 3, panels.at(x, y));
+  }
+  EXPECT_GT(differing, 16 * 56 / 2);
+}
+
 // A material's base-colour texture multiplies its base colour: a white floor with a green
 // texture renders green, the same floor without it grey.
 TEST_F(SandboxFrameTest, MaterialTexturesTintTheBaseColour) {

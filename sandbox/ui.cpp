@@ -1,0 +1,164 @@
+#include "sandbox/ui.h"
+
+#include <string>
+
+#include <backends/imgui_impl_glfw.h>
+#include <imgui.h>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "ecs/transform.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/scene.h"
+#include "systems/scene/shadow_settings.h"
+
+namespace sg::sandbox {
+namespace {
+
+constexpr const char* type_names[] = {"all", "point", "spot", "directional", "cylinder"};
+
+// The light's kind (index into type_names), or 0 when the entity is no light.
+int light_type(const ecs::World& world, ecs::Entity entity) {
+  if (world.has<scene::PointLight>(entity)) return 1;
+  if (world.has<scene::SpotLight>(entity)) return 2;
+  if (world.has<scene::DirectionalLight>(entity)) return 3;
+  if (world.has<scene::CylinderLight>(entity)) return 4;
+  return 0;
+}
+
+std::string label_of(const ecs::World& world, ecs::Entity entity) {
+  const scene::Name* name = world.try_get<scene::Name>(entity);
+  const std::string shown = name && !name->value.empty() ? name->value : "light";
+  return shown + "##" + std::to_string(entity.index);
+}
+
+// Edits `value` of component T of `entity` with `widget`; writes (and so marks it changed) only
+// when the widget changed it.
+template <class T, class Widget>
+void edit(ecs::World& world, ecs::Entity entity, Widget widget) {
+  T copy = world.get<T>(entity);
+  if (widget(copy)) world.get_mut<T>(entity) = copy;
+}
+
+template <class Light>
+void edit_light_parameters(ecs::World& world, ecs::Entity entity) {
+  edit<Light>(world, entity, [](Light& light) {
+    bool changed = ImGui::ColorEdit3("colour", glm::value_ptr(light.color));
+    changed |= ImGui::DragFloat("intensity", &light.intensity, 0.05f, 0.0f, 1e6f);
+    if constexpr (requires { light.range; })
+      changed |= ImGui::DragFloat("range", &light.range, 0.05f, 0.01f, 1e4f);
+    if constexpr (requires { light.outer_cone; }) {
+      changed |=
+          ImGui::SliderAngle("inner cone", &light.inner_cone, 0.0f, glm::degrees(light.outer_cone) - 0.1f);
+      changed |= ImGui::SliderAngle("outer cone", &light.outer_cone, 1.0f, 90.0f);
+    }
+    return changed;
+  });
+}
+
+}  // namespace
+
+SandboxUi::SandboxUi(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  context_ = ImGui::CreateContext();
+  ImGui::SetCurrentContext(context_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini left behind in the user's folder
+  ImGui::StyleColorsDark();
+  if (window != nullptr) glfw_ = ImGui_ImplGlfw_InitForVulkan(window, true);
+}
+
+SandboxUi::~SandboxUi() {
+  ImGui::SetCurrentContext(context_);
+  if (glfw_) ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext(context_);
+}
+
+bool SandboxUi::wants_input() const {
+  const ImGuiIO& io = ImGui::GetIO();
+  return io.WantCaptureMouse || io.WantCaptureKeyboard;
+}
+
+const ImDrawData* SandboxUi::build(ecs::World& world, const UiFacts& facts, VkExtent2D size, float seconds) {
+  ImGui::SetCurrentContext(context_);
+  ImGuiIO& io = ImGui::GetIO();
+  if (glfw_) {
+    ImGui_ImplGlfw_NewFrame();
+  } else {
+    io.DisplaySize = ImVec2(float(size.width), float(size.height));
+  }
+  io.DeltaTime = seconds > 0.0f ? seconds : 1.0f / 60.0f;
+  ImGui::NewFrame();
+  stats_panel(facts);
+  light_panel(world);
+  ImGui::Render();
+  return ImGui::GetDrawData();
+}
+
+void SandboxUi::stats_panel(const UiFacts& facts) {
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Frame");
+  ImGui::Text("CPU %.2f ms   GPU %.2f ms", facts.cpu_frame_ms, facts.gpu_frame_ms);
+  ImGui::Text("%s lighting, %u lights, %u without shadow", facts.lighting.c_str(), facts.lights,
+              facts.lights_without_shadow);
+  ImGui::Text("shadow views drawn %u, kept %u", facts.views_rendered, facts.views_cached);
+  ImGui::Text("shadow atlas %.0f MiB", facts.shadow_mib);
+  ImGui::End();
+}
+
+void SandboxUi::light_panel(ecs::World& world) {
+  ImGui::SetNextWindowPos(ImVec2(8, 110), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(480, 10'000));
+  ImGui::Begin("Lights", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::Combo("type", &type_filter_, type_names, IM_ARRAYSIZE(type_names));
+  if (ImGui::BeginListBox("##lights", ImVec2(-1.0f, 120.0f))) {
+    world.query<const scene::ShadowSettings>().for_each(
+        [&](ecs::Entity entity, const scene::ShadowSettings&) {
+          const int type = light_type(world, entity);
+          if (type == 0 || (type_filter_ != 0 && type != type_filter_)) return;
+          if (selected_ == ecs::null_entity) selected_ = entity;  // the editor starts on the first light
+          if (ImGui::Selectable(label_of(world, entity).c_str(), entity == selected_)) selected_ = entity;
+        });
+    ImGui::EndListBox();
+  }
+  if (selected_ != ecs::null_entity && world.alive(selected_) && light_type(world, selected_) != 0) {
+    ImGui::Separator();
+    ImGui::TextUnformatted(type_names[light_type(world, selected_)]);
+    if (world.has<ecs::LocalTransform>(selected_)) {
+      edit<ecs::LocalTransform>(world, selected_, [](ecs::LocalTransform& local) {
+        return ImGui::DragFloat3("position", glm::value_ptr(local.translation), 0.05f);
+      });
+    }
+    switch (light_type(world, selected_)) {
+      case 1: edit_light_parameters<scene::PointLight>(world, selected_); break;
+      case 2: edit_light_parameters<scene::SpotLight>(world, selected_); break;
+      case 3: edit_light_parameters<scene::DirectionalLight>(world, selected_); break;
+      case 4: edit_light_parameters<scene::CylinderLight>(world, selected_); break;
+    }
+    edit<scene::ShadowSettings>(world, selected_, [](scene::ShadowSettings& shadow) {
+      bool changed = ImGui::Checkbox("casts shadow", &shadow.casts_shadow);
+      int algorithm = static_cast<int>(shadow.algorithm);
+      const char* names[std::size(scene::all_shadow_algorithms)];
+      for (size_t a = 0; a < std::size(names); ++a)
+        names[a] = scene::to_string(scene::all_shadow_algorithms[a]).data();
+      if (ImGui::Combo("algorithm", &algorithm, names, int(std::size(names)))) {
+        shadow.algorithm = static_cast<scene::ShadowAlgorithm>(algorithm);
+        changed = true;
+      }
+      changed |= ImGui::DragFloat("constant bias", &shadow.constant_bias, 0.0001f, 0.0f, 0.1f, "%.4f");
+      changed |= ImGui::DragFloat("slope bias", &shadow.slope_bias, 0.0005f, 0.0f, 0.5f, "%.4f");
+      changed |= ImGui::DragFloat("pcf radius", &shadow.pcf_radius, 0.05f, 0.0f, 16.0f);
+      changed |= ImGui::DragFloat("light size", &shadow.light_size, 0.01f, 0.0f, 10.0f);
+      changed |= ImGui::SliderFloat("density", &shadow.density, 0.0f, 1.0f);
+      changed |= ImGui::ColorEdit3("shadow colour", glm::value_ptr(shadow.shadow_color));
+      int resolution = static_cast<int>(shadow.resolution);
+      if (ImGui::SliderInt("resolution", &resolution, 16, 4096)) {
+        shadow.resolution = static_cast<uint32_t>(resolution);
+        changed = true;
+      }
+      return changed;
+    });
+  }
+  ImGui::End();
+}
+
+}  // namespace sg::sandbox

@@ -1,0 +1,60 @@
+#pragma once
+// The sandbox's panels, with Dear ImGui: frame facts (CPU and GPU time, shadow views drawn and
+// kept, shadow memory) and a light editor (pick a light by type and name; edit its position,
+// colour, intensity, range, cone, and every shadow setting: algorithm, biases, PCF radius, light
+// size, density, shadow colour, resolution). Edits are writes to the ECS world like any system's,
+// so change ticks and the shadow cache see them. UiPass draws the result.
+//
+// One SandboxUi per ImGui context; with a window, ImGui reads its input through GLFW (the
+// installed callbacks chain to the window's own); headless, the panels are drawn without input.
+#include <cstdint>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+#include "ecs/entity.h"
+#include "ecs/world.h"
+
+struct GLFWwindow;
+struct ImDrawData;
+struct ImGuiContext;
+
+namespace sg::sandbox {
+
+// What the stats panel shows; the frame gathers it.
+struct UiFacts {
+  double cpu_frame_ms = 0.0;
+  double gpu_frame_ms = 0.0;  // the newest frame whose timings are back; 0 when unknown
+  uint32_t views_rendered = 0;
+  uint32_t views_cached = 0;
+  uint32_t lights = 0;
+  uint32_t lights_without_shadow = 0;
+  double shadow_mib = 0.0;
+  std::string lighting;
+};
+
+class SandboxUi {
+ public:
+  explicit SandboxUi(GLFWwindow* window);  // nullptr: headless
+  ~SandboxUi();
+  SandboxUi(const SandboxUi&) = delete;
+  SandboxUi& operator=(const SandboxUi&) = delete;
+
+  // Builds this frame's panels for a `size` frame, applying the user's edits to `world`, and
+  // returns what to draw (valid until the next build).
+  const ImDrawData* build(ecs::World& world, const UiFacts& facts, VkExtent2D size, float seconds);
+
+  // Whether the panels take the mouse or keyboard this frame (the fly camera then keeps still).
+  bool wants_input() const;
+
+ private:
+  void stats_panel(const UiFacts& facts);
+  void light_panel(ecs::World& world);
+
+  ImGuiContext* context_ = nullptr;
+  bool glfw_ = false;
+  int type_filter_ = 0;  // 0 all, then point, spot, directional, cylinder
+  ecs::Entity selected_ = ecs::null_entity;
+};
+
+}  // namespace sg::sandbox
