@@ -107,7 +107,7 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
   };
   const ImDrawData* panels = nullptr;
   if (ui_) {
-    panels = ui_->build(scene_.scene.world, ui_facts(), image_.extent(),
+    panels = ui_->build(scene_.scene, scene_.pose, ui_facts(), image_.extent(),
                         static_cast<float>(time_seconds - last_time_seconds_));
   }
   last_time_seconds_ = time_seconds;
@@ -133,7 +133,10 @@ UiFacts SandboxFrame::ui_facts() const {
   facts.cpu_frame_ms = last(phase_ms_.update) + last(phase_ms_.gather) + last(phase_ms_.prepare) +
                        last(phase_ms_.declare) + last(phase_ms_.execute);
   if (const std::optional<vk::FrameTimings>& timings = executor_.latest_timings()) {
-    for (const double pass : timings->pass_ms) facts.gpu_frame_ms += pass;
+    for (size_t p = 0; p < timings->pass_ms.size(); ++p) {
+      facts.gpu_frame_ms += timings->pass_ms[p];
+      facts.passes.emplace_back(timings->plan->passes[p].name, timings->pass_ms[p]);
+    }
   }
   const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
   facts.views_rendered = shadows.views_rendered;

@@ -1,14 +1,19 @@
 #include "sandbox/ui.h"
 
+#include <cfloat>
 #include <string>
 
+#include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "ecs/transform.h"
+#include "systems/scene/builtin_scenes.h"
+#include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
+#include "systems/scene/scene_builder.h"
 #include "systems/scene/shadow_settings.h"
 
 namespace sg::sandbox {
@@ -78,7 +83,8 @@ bool SandboxUi::wants_input() const {
   return io.WantCaptureMouse || io.WantCaptureKeyboard;
 }
 
-const ImDrawData* SandboxUi::build(ecs::World& world, const UiFacts& facts, VkExtent2D size, float seconds) {
+const ImDrawData* SandboxUi::build(scene::Scene& scene, const scene::CameraPose& pose, const UiFacts& facts,
+                                   VkExtent2D size, float seconds) {
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   if (glfw_) {
@@ -88,28 +94,71 @@ const ImDrawData* SandboxUi::build(ecs::World& world, const UiFacts& facts, VkEx
   }
   io.DeltaTime = seconds > 0.0f ? seconds : 1.0f / 60.0f;
   ImGui::NewFrame();
+  // imgui 1.86's GLFW backend indexes io.KeysDown by GLFW key codes.
+  if (glfw_ && ImGui::IsKeyPressed(GLFW_KEY_F1)) help_ = !help_;
   stats_panel(facts);
-  light_panel(world);
+  light_panel(scene, pose);
+  if (help_) help_panel();
   ImGui::Render();
   return ImGui::GetDrawData();
 }
 
 void SandboxUi::stats_panel(const UiFacts& facts) {
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Frame");
+  ImGui::Begin("Frame", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::Text("CPU %.2f ms   GPU %.2f ms", facts.cpu_frame_ms, facts.gpu_frame_ms);
   ImGui::Text("%s lighting, %u lights, %u without shadow", facts.lighting.c_str(), facts.lights,
               facts.lights_without_shadow);
   ImGui::Text("shadow views drawn %u, kept %u", facts.views_rendered, facts.views_cached);
   ImGui::Text("shadow atlas %.0f MiB", facts.shadow_mib);
+  gpu_history_[history_next_] = float(facts.gpu_frame_ms);
+  history_next_ = (history_next_ + 1) % gpu_history_.size();
+  ImGui::PlotLines("GPU ms", gpu_history_.data(), int(gpu_history_.size()), int(history_next_), nullptr, 0.0f,
+                   FLT_MAX, ImVec2(0, 40));
+  if (ImGui::CollapsingHeader("passes")) {
+    for (const auto& [name, ms] : facts.passes) ImGui::Text("%8.3f ms  %s", ms, name.c_str());
+  }
+  ImGui::TextDisabled("F1: help");
   ImGui::End();
 }
 
-void SandboxUi::light_panel(ecs::World& world) {
-  ImGui::SetNextWindowPos(ImVec2(8, 110), ImGuiCond_FirstUseEver);
+void SandboxUi::help_panel() {
+  ImGui::Begin("Help", &help_, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::TextUnformatted(
+      "right mouse + move   look around\n"
+      "W A S D              move\n"
+      "Q E                  down, up\n"
+      "mouse wheel          speed\n"
+      "F                    frame the scene\n"
+      "P                    screenshot (shadowgraph-N.png)\n"
+      "F1                   this help\n"
+      "Esc                  quit");
+  ImGui::End();
+}
+
+void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose) {
+  ecs::World& world = scene.world;
+  ImGui::SetNextWindowPos(ImVec2(360, 8), ImGuiCond_FirstUseEver);  // beside "Frame"
   ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(480, 10'000));
   ImGui::Begin("Lights", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::Combo("type", &type_filter_, type_names, IM_ARRAYSIZE(type_names));
+  // New lights a few metres in front of the camera, spots and beams looking down.
+  const glm::vec3 ahead = pose.eye + 3.0f * glm::normalize(pose.target - pose.eye);
+  const ecs::LocalTransform placed{ahead, scene::look_rotation(ahead, ahead - glm::vec3(0, 1, 0))};
+  const std::string number = std::to_string(world.entity_count());
+  if (ImGui::Button("+ point"))
+    selected_ = scene::add_light(scene, scene::PointLight{}, placed, {}, "point " + number);
+  ImGui::SameLine();
+  if (ImGui::Button("+ spot"))
+    selected_ = scene::add_light(scene, scene::SpotLight{}, placed, {}, "spot " + number);
+  ImGui::SameLine();
+  if (ImGui::Button("+ directional")) {
+    selected_ = scene::add_light(scene, scene::DirectionalLight{}, placed, {}, "directional " + number);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("+ cylinder")) {
+    selected_ = scene::add_light(scene, scene::CylinderLight{}, placed, {}, "cylinder " + number);
+  }
   if (ImGui::BeginListBox("##lights", ImVec2(-1.0f, 120.0f))) {
     world.query<const scene::ShadowSettings>().for_each(
         [&](ecs::Entity entity, const scene::ShadowSettings&) {
@@ -123,6 +172,23 @@ void SandboxUi::light_panel(ecs::World& world) {
   if (selected_ != ecs::null_entity && world.alive(selected_) && light_type(world, selected_) != 0) {
     ImGui::Separator();
     ImGui::TextUnformatted(type_names[light_type(world, selected_)]);
+    if (ImGui::Button("remove")) {
+      world.destroy(selected_);
+      selected_ = ecs::null_entity;
+      ImGui::End();
+      return;
+    }
+    ImGui::SameLine();
+    bool orbits = world.has<scene::OrbitMotion>(selected_);
+    if (ImGui::Checkbox("orbit (with --animate on)", &orbits)) {
+      if (orbits) {
+        const glm::vec3 position = world.get<ecs::LocalTransform>(selected_).translation;
+        world.add<scene::OrbitMotion>(selected_,
+                                      scene::OrbitMotion{position - glm::vec3(1, 0, 0), 1.0f, 1.0f, 0.0f});
+      } else {
+        world.remove<scene::OrbitMotion>(selected_);
+      }
+    }
     if (world.has<ecs::LocalTransform>(selected_)) {
       edit<ecs::LocalTransform>(world, selected_, [](ecs::LocalTransform& local) {
         return ImGui::DragFloat3("position", glm::value_ptr(local.translation), 0.05f);

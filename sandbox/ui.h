@@ -7,13 +7,18 @@
 //
 // One SandboxUi per ImGui context; with a window, ImGui reads its input through GLFW (the
 // installed callbacks chain to the window's own); headless, the panels are drawn without input.
+#include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
 #include "ecs/entity.h"
 #include "ecs/world.h"
+#include "systems/scene/camera.h"
+#include "systems/scene/scene.h"
 
 struct GLFWwindow;
 struct ImDrawData;
@@ -23,6 +28,7 @@ namespace sg::sandbox {
 
 // What the stats panel shows; the frame gathers it.
 struct UiFacts {
+  std::vector<std::pair<std::string, double>> passes;  // GPU ms per pass, newest timed frame
   double cpu_frame_ms = 0.0;
   double gpu_frame_ms = 0.0;  // the newest frame whose timings are back; 0 when unknown
   uint32_t views_rendered = 0;
@@ -40,21 +46,26 @@ class SandboxUi {
   SandboxUi(const SandboxUi&) = delete;
   SandboxUi& operator=(const SandboxUi&) = delete;
 
-  // Builds this frame's panels for a `size` frame, applying the user's edits to `world`, and
-  // returns what to draw (valid until the next build).
-  const ImDrawData* build(ecs::World& world, const UiFacts& facts, VkExtent2D size, float seconds);
+  // Builds this frame's panels for a `size` frame, applying the user's edits to `scene` (new
+  // lights go in front of `pose`), and returns what to draw (valid until the next build).
+  const ImDrawData* build(scene::Scene& scene, const scene::CameraPose& pose, const UiFacts& facts,
+                          VkExtent2D size, float seconds);
 
   // Whether the panels take the mouse or keyboard this frame (the fly camera then keeps still).
   bool wants_input() const;
 
  private:
   void stats_panel(const UiFacts& facts);
-  void light_panel(ecs::World& world);
+  void light_panel(scene::Scene& scene, const scene::CameraPose& pose);
+  void help_panel();
 
   ImGuiContext* context_ = nullptr;
   bool glfw_ = false;
   int type_filter_ = 0;  // 0 all, then point, spot, directional, cylinder
   ecs::Entity selected_ = ecs::null_entity;
+  std::array<float, 120> gpu_history_{};  // ms, a ring
+  size_t history_next_ = 0;
+  bool help_ = false;
 };
 
 }  // namespace sg::sandbox

@@ -9,13 +9,14 @@
 
 #include <GLFW/glfw3.h>
 
-#include "systems/scene/scene_queries.h"
-
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/frame_ring.h"
+#include "rendergraph/device/readback.h"
 #include "rendergraph/device/swapchain.h"
 #include "rendergraph/device/vulkan_error.h"
+#include "sandbox/png.h"
 #include "sandbox/sandbox_frame.h"
+#include "systems/scene/scene_queries.h"
 
 namespace sg::sandbox {
 namespace {
@@ -37,9 +38,9 @@ WindowSession::WindowSession(const Options& options)
   glfwSetWindowUserPointer(window_, this);
   glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
     if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(w, GLFW_TRUE);
-    if (key == GLFW_KEY_F && action == GLFW_PRESS) {
-      static_cast<WindowSession*>(glfwGetWindowUserPointer(w))->frame_scene_ = true;
-    }
+    auto* session = static_cast<WindowSession*>(glfwGetWindowUserPointer(w));
+    if (key == GLFW_KEY_F && action == GLFW_PRESS) session->frame_scene_ = true;
+    if (key == GLFW_KEY_P && action == GLFW_PRESS) session->screenshot_ = true;
   });
   glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double steps) {
     static_cast<WindowSession*>(glfwGetWindowUserPointer(w))->scroll_ += float(steps);
@@ -153,6 +154,12 @@ FrameResult WindowSession::frame() {
   }
   last_present_ = presented;
   gpu_times_.add(frame_->executor().latest_timings());
+  if (std::exchange(screenshot_, false)) {
+    frames_->wait_idle();
+    const std::string path = "shadowgraph-" + std::to_string(++screenshots_) + ".png";
+    write_png(path, vk::read_rgba8(*context_, frame_->image()));
+    std::printf("shadowgraph: wrote %s\n", path.c_str());
+  }
   return FrameResult::rendered;
 }
 

@@ -29,7 +29,8 @@ class SandboxFrame;
 enum class FrameResult { rendered, minimized, swapchain_recreated, closed };
 
 // glfwInit must have succeeded before a session is created.
-// Esc closes the window; the fly camera (fly_camera.h) moves the view.
+// Esc closes the window, P writes shadowgraph-N.png in the working folder; the fly camera
+// (fly_camera.h) moves the view.
 class WindowSession {
  public:
   explicit WindowSession(const Options& options);
@@ -67,6 +68,8 @@ class WindowSession {
   std::optional<glm::vec2> last_cursor_;
   float scroll_ = 0.0f;       // wheel steps since the last frame
   bool frame_scene_ = false;  // F pressed since the last frame
+  bool screenshot_ = false;   // P pressed since the last frame
+  int screenshots_ = 0;
   std::vector<double> frame_ms_;
   std::vector<double> wall_frame_ms_;
   std::optional<std::chrono::steady_clock::time_point> last_present_;
