@@ -116,7 +116,7 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
   renderer_.gather(std::as_const(scene_.scene.world));
   timed(phase_ms_.gather);
   renderer_.prepare(frame.slot, scene_.pose, scene_.lens, image_.extent().width, image_.extent().height);
-  if (ui_pass_) ui_pass_->prepare(frame.slot, panels);
+  if (ui_pass_) ui_pass_->prepare(frame.slot, panels, ui_->depth_views());
   timed(phase_ms_.prepare);
   const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
   shadow_views_rendered_.push_back(shadows.views_rendered);
@@ -145,6 +145,8 @@ UiFacts SandboxFrame::ui_facts() const {
   facts.lights = static_cast<uint32_t>(renderer_.lights().records.size());
   facts.shadow_mib = double(renderer_.shadow_atlas().bytes()) / (1 << 20);
   facts.lighting = lighting_path_name(renderer_.lighting());
+  facts.frame_lights = &renderer_.lights();
+  facts.atlas_page = renderer_.shadow_atlas().shape().page_size;
   return facts;
 }
 
@@ -166,7 +168,7 @@ void SandboxFrame::declare_passes(uint32_t slot, const std::optional<PresentTarg
       renderer_.add_passes(graph_, imports_, frame_image, slot, scene_.pose, scene_.lens);
   rg::ImageHandle colour = targets.colour;
   if (depth_overlay_enabled_) colour = depth_overlay_.add_to(graph_, targets.depth, colour, scene_.lens);
-  if (ui_pass_) colour = ui_pass_->add_to(graph_, colour, slot);
+  if (ui_pass_) colour = ui_pass_->add_to(graph_, colour, targets.shadow_atlas, slot);
   if (present) add_present(graph_, imports_, colour, *present);
 }
 

@@ -71,6 +71,8 @@ class SandboxFrame {
   const vk::GraphExecutor& executor() const { return executor_; }
   // Whether the panels take the mouse or keyboard this frame (false without panels).
   bool ui_wants_input() const;
+  // The panels (nullptr without --ui).
+  SandboxUi* ui() { return ui_.get(); }
 
   // Per recorded frame: CPU milliseconds of each phase of record().
   struct PhaseTimes {

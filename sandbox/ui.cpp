@@ -99,6 +99,8 @@ const ImDrawData* SandboxUi::build(scene::Scene& scene, const scene::CameraPose&
   stats_panel(facts);
   light_panel(scene, pose);
   if (help_) help_panel();
+  depth_views_.clear();
+  if (show_map_) shadow_map_panel(scene.world, facts);
   ImGui::Render();
   return ImGui::GetDrawData();
 }
@@ -119,6 +121,47 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
     for (const auto& [name, ms] : facts.passes) ImGui::Text("%8.3f ms  %s", ms, name.c_str());
   }
   ImGui::TextDisabled("F1: help");
+  ImGui::End();
+}
+
+// The selected light's map as the atlas holds it: one image for a 2D map, six for a cube. The
+// tiles are the last frame's (this frame's lights are gathered after the panels are built).
+void SandboxUi::shadow_map_panel(const ecs::World& world, const UiFacts& facts) {
+  if (facts.frame_lights == nullptr || facts.atlas_page == 0 || selected_ == ecs::null_entity ||
+      !world.alive(selected_)) {
+    return;
+  }
+  const uint64_t key = uint64_t{selected_.generation} << 32 | selected_.index;
+  const float page = float(facts.atlas_page);
+  const auto image = [&](const shadows::AtlasTile& tile, const UiDepthView& view, float side) {
+    depth_views_.push_back(view);
+    const auto id = reinterpret_cast<ImTextureID>(static_cast<intptr_t>(depth_views_.size()));
+    ImGui::Image(id, ImVec2(side, side), ImVec2(float(tile.x) / page, float(tile.y) / page),
+                 ImVec2(float(tile.x + tile.size) / page, float(tile.y + tile.size) / page));
+  };
+  ImGui::SetNextWindowPos(ImVec2(8, 240), ImGuiCond_FirstUseEver);  // below "Frame"
+  ImGui::Begin("Shadow map", &show_map_, ImGuiWindowFlags_AlwaysAutoResize);
+  bool shown = false;
+  for (const shadows::ShadowMapView& map : facts.frame_lights->maps) {
+    if (map.key != key || map.resolution == 0) continue;
+    ImGui::Text("%u x %u texels, layer %u", map.resolution, map.resolution, map.tile.page);
+    image(map.tile, {map.tile.page, map.view.near, map.view.far, map.view.orthographic}, 256.0f);
+    shown = true;
+  }
+  for (const shadows::ShadowCubeView& cube : facts.frame_lights->cubes) {
+    if (cube.key != key || cube.resolution == 0) continue;
+    ImGui::Text("six faces of %u x %u texels, distance / range", cube.resolution, cube.resolution);
+    constexpr const char* faces[] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+    for (int f = 0; f < 6; ++f) {
+      if (f % 3 != 0) ImGui::SameLine();
+      ImGui::BeginGroup();
+      ImGui::TextUnformatted(faces[f]);
+      image(cube.tiles[f], {cube.tiles[f].page, 0.0f, 1.0f, true}, 128.0f);
+      ImGui::EndGroup();
+    }
+    shown = true;
+  }
+  if (!shown) ImGui::TextUnformatted("no shadow map this frame (none cast, out of sight or over budget)");
   ImGui::End();
 }
 
@@ -178,6 +221,8 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose) 
       ImGui::End();
       return;
     }
+    ImGui::SameLine();
+    ImGui::Checkbox("show map", &show_map_);
     ImGui::SameLine();
     bool orbits = world.has<scene::OrbitMotion>(selected_);
     if (ImGui::Checkbox("orbit (with --animate on)", &orbits)) {

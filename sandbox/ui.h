@@ -19,6 +19,7 @@
 #include "ecs/world.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
+#include "systems/shadows/frame_lights.h"
 
 struct GLFWwindow;
 struct ImDrawData;
@@ -26,8 +27,19 @@ struct ImGuiContext;
 
 namespace sg::sandbox {
 
-// What the stats panel shows; the frame gathers it.
+// A shadow map a panel shows: an atlas layer's depth as grey (UiPass), drawn by ImGui::Image
+// with texture id (index in SandboxUi::depth_views() + 1) and the tile as uv rectangle.
+struct UiDepthView {
+  uint32_t layer = 0;
+  float near = 0.0f;  // perspective maps: their depth range, to make depth linear again
+  float far = 1.0f;
+  bool linear = true;  // orthographic maps and cube faces store linear depth already
+};
+
+// What the panels show; the frame gathers it.
 struct UiFacts {
+  const shadows::FrameLights* frame_lights = nullptr;  // the last frame's, for the selected light's map
+  uint32_t atlas_page = 0;                             // texels a side of an atlas layer
   std::vector<std::pair<std::string, double>> passes;  // GPU ms per pass, newest timed frame
   double cpu_frame_ms = 0.0;
   double gpu_frame_ms = 0.0;  // the newest frame whose timings are back; 0 when unknown
@@ -54,10 +66,18 @@ class SandboxUi {
   // Whether the panels take the mouse or keyboard this frame (the fly camera then keeps still).
   bool wants_input() const;
 
+  // What the user would pick in the panels; for tests and scripted runs.
+  void select(ecs::Entity light) { selected_ = light; }
+  void show_map(bool show) { show_map_ = show; }
+
+  // The shadow maps the last build() showed.
+  const std::vector<UiDepthView>& depth_views() const { return depth_views_; }
+
  private:
   void stats_panel(const UiFacts& facts);
   void light_panel(scene::Scene& scene, const scene::CameraPose& pose);
   void help_panel();
+  void shadow_map_panel(const ecs::World& world, const UiFacts& facts);
 
   ImGuiContext* context_ = nullptr;
   bool glfw_ = false;
@@ -66,6 +86,8 @@ class SandboxUi {
   std::array<float, 120> gpu_history_{};  // ms, a ring
   size_t history_next_ = 0;
   bool help_ = false;
+  bool show_map_ = false;
+  std::vector<UiDepthView> depth_views_;
 };
 
 }  // namespace sg::sandbox

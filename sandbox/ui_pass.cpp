@@ -13,16 +13,18 @@
 #include "rendergraph/vulkan/plan_translation.h"
 #include "sandbox_shaders/ui.frag.spv.h"
 #include "sandbox_shaders/ui.vert.spv.h"
+#include "sandbox_shaders/ui_depth.frag.spv.h"
 
 namespace sg::sandbox {
 namespace {
 
 constexpr uint32_t font_binding = 0;
 
-// ui.vert's UiTransform: pixels -> clip space.
-struct UiTransform {
+// ui.vert's UiTransform (pixels -> clip space), then ui_depth.frag's DepthView.
+struct UiConstants {
   glm::vec2 scale;
   glm::vec2 translate;
+  glm::vec4 depth;  // atlas layer, near, far, 1 when linear
 };
 
 vk::Image upload_font_atlas(vk::VulkanContext& context) {
@@ -50,7 +52,7 @@ UiPass::UiPass(vk::VulkanContext& context, rg::Format colour_format, uint32_t fr
       sampler_(vk::create_sampler(context.device(), VK_FILTER_LINEAR)),
       layout_(context.device(),
               {{font_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}},
-              vk::push_constants<UiTransform>(VK_SHADER_STAGE_VERTEX_BIT)),
+              vk::push_constants<UiConstants>(VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT)),
       sets_(layout_.allocate_sets(1)),
       vertices_(context, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, frames_in_flight, "ui vertices"),
       indices_(context, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, frames_in_flight, "ui indices") {
@@ -69,10 +71,15 @@ UiPass::UiPass(vk::VulkanContext& context, rg::Format colour_format, uint32_t fr
   desc.layout = layout_.get();
   desc.name = "ui";
   pipeline_ = vk::create_graphics_pipeline(context, desc);
+  desc.fragment_spirv = ui_depth_frag;
+  desc.name = "ui shadow map";
+  depth_pipeline_ = vk::create_graphics_pipeline(context, desc);
+  nearest_ = vk::create_sampler(context.device(), VK_FILTER_NEAREST);
 }
 
-void UiPass::prepare(uint32_t slot, const ImDrawData* draw_data) {
+void UiPass::prepare(uint32_t slot, const ImDrawData* draw_data, std::span<const UiDepthView> depth_views) {
   draw_data_ = draw_data;
+  depth_views_.assign(depth_views.begin(), depth_views.end());
   vertex_scratch_.clear();
   index_scratch_.clear();
   if (draw_data != nullptr) {
@@ -86,23 +93,48 @@ void UiPass::prepare(uint32_t slot, const ImDrawData* draw_data) {
   indices_.write(slot, std::span<const ImDrawIdx>(index_scratch_));
 }
 
-rg::ImageHandle UiPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colour, uint32_t slot) const {
+rg::ImageHandle UiPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colour, rg::ImageHandle shadow_atlas,
+                               uint32_t slot) const {
   if (draw_data_ == nullptr || draw_data_->TotalIdxCount == 0) return colour;
+  const bool maps = !depth_views_.empty();
   graph.add_pass(
       "ui",
       [&](rg::PassBuilder& b) {
+        if (maps) b.read(shadow_atlas, rg::Usage::sampled_fragment);
         colour = b.write(colour, rg::Usage::colour_attachment);  // no clear: over the frame
       },
-      [this, slot](const vk::PassRecorder& rec) {
+      [this, slot, maps, shadow_atlas](const vk::PassRecorder& rec) {
+        VkDescriptorSet atlas_set = VK_NULL_HANDLE;
+        if (maps) {
+          atlas_set =
+              layout_.write(rec.allocate_set(layout_))
+                  .image(font_binding,
+                         rec.view(shadow_atlas, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY),
+                         nearest_.get())
+                  .update();
+        }
         const ImDrawData& data = *draw_data_;
         const VkExtent2D extent = rec.render_extent();
         rec.set_full_viewport();
-        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
-        layout_.bind(rec.cmd(), font_set_);
         const glm::vec2 scale(2.0f / data.DisplaySize.x, 2.0f / data.DisplaySize.y);
-        layout_.push(
-            rec.cmd(),
-            UiTransform{scale, glm::vec2(-1.0f) - glm::vec2(data.DisplayPos.x, data.DisplayPos.y) * scale});
+        const glm::vec2 translate =
+            glm::vec2(-1.0f) - glm::vec2(data.DisplayPos.x, data.DisplayPos.y) * scale;
+        // Texture id 0 is the font atlas; k > 0 the shadow map depth_views_[k - 1].
+        intptr_t bound = -1;
+        const auto bind = [&](intptr_t texture) {
+          if (texture == bound) return;
+          bound = texture;
+          const bool map = texture > 0 && size_t(texture) <= depth_views_.size();
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS,
+                            map ? depth_pipeline_.get() : pipeline_.get());
+          layout_.bind(rec.cmd(), map ? atlas_set : font_set_);
+          glm::vec4 depth(0.0f);
+          if (map) {
+            const UiDepthView& view = depth_views_[size_t(texture) - 1];
+            depth = {float(view.layer), view.near, view.far, view.linear ? 1.0f : 0.0f};
+          }
+          layout_.push(rec.cmd(), UiConstants{scale, translate, depth});
+        };
         const VkBuffer vertex_buffer = vertices_.buffer(slot).handle();
         const VkDeviceSize zero = 0;
         vkCmdBindVertexBuffers(rec.cmd(), 0, 1, &vertex_buffer, &zero);
@@ -121,6 +153,7 @@ rg::ImageHandle UiPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colour, u
             if (x1 <= x0 || y1 <= y0) continue;
             const VkRect2D scissor{{int32_t(x0), int32_t(y0)}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}};
             vkCmdSetScissor(rec.cmd(), 0, 1, &scissor);
+            bind(reinterpret_cast<intptr_t>(command.TextureId));
             vkCmdDrawIndexed(rec.cmd(), command.ElemCount, 1, index_base + command.IdxOffset,
                              vertex_base + int32_t(command.VtxOffset), 0);
           }

@@ -6,6 +6,7 @@
 // Contract: an ImGui context must exist when the pass is made (its font atlas is uploaded then)
 // and stays the one whose draw data prepare() gets.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <imgui.h>
@@ -15,6 +16,7 @@
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/resources.h"
 #include "rendergraph/device/unique_handle.h"
+#include "sandbox/ui.h"
 
 namespace sg::vk {
 class VulkanContext;
@@ -27,11 +29,14 @@ class UiPass {
   UiPass(vk::VulkanContext& context, rg::Format colour_format, uint32_t frames_in_flight);
 
   // Copies the frame's triangles into the slot's buffers; `draw_data` (ImGui::GetDrawData after
-  // ImGui::Render) is read now and when the pass records.
-  void prepare(uint32_t slot, const ImDrawData* draw_data);
+  // ImGui::Render) and `depth_views` (texture ids 1, 2, ...: SandboxUi::depth_views) are read
+  // now and when the pass records.
+  void prepare(uint32_t slot, const ImDrawData* draw_data, std::span<const UiDepthView> depth_views);
 
-  // Draws over `colour` and returns its new version; nothing when there is nothing to draw.
-  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle colour, uint32_t slot) const;
+  // Draws over `colour`, reading `shadow_atlas` for the shadow maps shown, and returns
+  // `colour`'s new version; nothing when there is nothing to draw.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle colour, rg::ImageHandle shadow_atlas,
+                         uint32_t slot) const;
 
  private:
   vk::Image font_atlas_;
@@ -40,9 +45,12 @@ class UiPass {
   VkDescriptorSet font_set_ = VK_NULL_HANDLE;
   vk::DescriptorSets sets_;
   vk::UniquePipeline pipeline_;
+  vk::UniquePipeline depth_pipeline_;
+  vk::UniqueSampler nearest_;
   vk::FrameBuffers vertices_;
   vk::FrameBuffers indices_;
   const ImDrawData* draw_data_ = nullptr;
+  std::vector<UiDepthView> depth_views_;
   std::vector<ImDrawVert> vertex_scratch_;
   std::vector<ImDrawIdx> index_scratch_;
 };

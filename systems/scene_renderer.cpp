@@ -135,7 +135,7 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
         deferred_->lighting.add_to(graph, gbuffer, tiles, atlas, records, lights_.group_begin, pose.eye);
     depth = gbuffer.depth;
   }
-  return {tone_map_.add_to(graph, lit_sum, frame, settings_.exposure), depth};
+  return {tone_map_.add_to(graph, lit_sum, frame, settings_.exposure), depth, atlas};
 }
 
 uint64_t SceneRenderer::shadow_caster_draws() const {

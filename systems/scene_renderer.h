@@ -58,8 +58,9 @@ struct RendererSettings {
 };
 
 struct RenderedFrame {
-  rg::ImageHandle colour;  // the frame image's newest version: the tone-mapped picture
-  rg::ImageHandle depth;   // the camera's D32 depth buffer (transient)
+  rg::ImageHandle colour;        // the frame image's newest version: the tone-mapped picture
+  rg::ImageHandle depth;         // the camera's D32 depth buffer (transient)
+  rg::ImageHandle shadow_atlas;  // every shadow map, this frame's newest version
 };
 
 class SceneRenderer {

@@ -7,7 +7,7 @@ layout(location = 2) in vec4 in_colour;
 
 layout(push_constant) uniform UiTransform {
   vec2 scale;
-  vec2 translate;
+  vec2 translate;  // then 16 bytes of ui_depth.frag's
 } transform;
 
 layout(location = 0) out vec2 out_uv;

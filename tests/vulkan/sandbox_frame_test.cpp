@@ -239,6 +239,31 @@ TEST_F(SandboxFrameTest, PanelsDrawOverThePicture) {
   EXPECT_GT(differing, 16 * 56 / 2);
 }
 
+// The light editor's map view: the selected point light's six cube faces, read from the shadow
+// atlas by the ui pass (which so depends on this frame's shadow passes), under validation.
+TEST_F(SandboxFrameTest, ThePanelsShowTheSelectedLightsShadowMap) {
+  sandbox::Options options;
+  options.ui = true;
+  sandbox::SandboxScene scene = sandbox::load_sandbox_scene(options, float(width) / height);
+  ecs::Entity point = ecs::null_entity;
+  scene.scene.world.query<const scene::PointLight>().for_each(
+      [&](ecs::Entity entity, const scene::PointLight&) { point = entity; });
+  ASSERT_NE(point, ecs::null_entity);
+  vk::FrameRing frames(context);
+  sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
+  frame.resize({width, height});
+  frame.ui()->select(point);
+  frame.ui()->show_map(true);
+  for (int i = 0; i < 3; ++i) {
+    frame.record(frames.begin_frame(), i / 60.0);
+    frames.submit();
+  }
+  frames.wait_idle();
+  ASSERT_EQ(frame.ui()->depth_views().size(), 6u);
+  for (const sandbox::UiDepthView& view : frame.ui()->depth_views()) EXPECT_TRUE(view.linear);
+  EXPECT_EQ(executed_passes(*frame.plan()).back(), "ui");
+}
+
 // A material's base-colour texture multiplies its base colour: a white floor with a green
 // texture renders green, the same floor without it grey.
 TEST_F(SandboxFrameTest, MaterialTexturesTintTheBaseColour) {
