@@ -17,7 +17,7 @@ double milliseconds(std::chrono::steady_clock::duration elapsed) {
 }  // namespace
 
 RunRecord render_headless_frames(SandboxFrame& frame, vk::FrameRing& ring, uint32_t count,
-                                 GpuTimeLog& gpu_times, bool progress) {
+                                 GpuTimeLog& gpu_times, bool progress, uint64_t first_frame) {
   constexpr double frame_seconds = 1.0 / 60.0;
   RunRecord record{{}, {}, &gpu_times};
   auto previous_start = std::chrono::steady_clock::now();
@@ -27,7 +27,7 @@ RunRecord render_headless_frames(SandboxFrame& frame, vk::FrameRing& ring, uint3
     previous_start = frame_start;
     vk::FrameSlot& slot = ring.begin_frame();
     const auto start = std::chrono::steady_clock::now();  // after the wait for the GPU
-    frame.record(slot, i * frame_seconds);
+    frame.record(slot, double(first_frame + i) * frame_seconds);
     ring.submit();
     gpu_times.add(frame.executor().latest_timings());
     record.cpu_frame_ms.push_back(milliseconds(std::chrono::steady_clock::now() - start));

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   sg::sandbox::Options options = *parsed.options;
 
   try {
+    if (!options.script.empty()) options.headless = true;  // scripted runs are offscreen
     if (!options.headless && !display_available()) {
       std::printf("shadowgraph: no display found (DISPLAY and WAYLAND_DISPLAY unset): rendering headless\n");
       options.headless = true;

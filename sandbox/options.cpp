@@ -185,6 +185,11 @@ void add_options(CLI::App& app, Options& o) {
          "frame); off: everything stays where the scene puts it")
       ->check(CLI::IsMember({"on", "off"}))
       ->default_str("on");
+  app.add_option(
+         "--script", o.script,
+         "Run FILE's commands headless (select NAME, algorithm NAME, resolution N, move X Y Z, camera "
+         "EX,EY,EZ,TX,TY,TZ, wait N, screenshot PATH) instead of --frames")
+      ->excludes("--frames");
   app.add_option_function<std::string>(
          "--ui", [&o](const std::string& value) { o.ui = value == "on"; },
          "on: the frame-facts and light-editor panels (Dear ImGui) over the picture; off: the picture "

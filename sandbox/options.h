@@ -46,6 +46,7 @@ struct Options {
   LightingPath lighting = LightingPath::automatic;  // --lighting auto|forward|deferred
   float exposure = 1.0f;                            // --exposure
   bool animate = true;     // --animate off: glTF animations and the stress scene's orbits stand still
+  std::string script;      // --script FILE: commands instead of --frames (script.h); headless only
   std::optional<bool> ui;  // --ui on|off: the panels; unset: on in a window, off headless
   // --naive: what the source documents do, the baseline to measure against: a pass per shadow
   // view and six per cube, every map every frame, every caster in every view, forward lighting of

@@ -1,14 +1,87 @@
 #include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
 
+#include "ecs/transform.h"
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/frame_ring.h"
+#include "rendergraph/device/readback.h"
 #include "sandbox/gpu_time_log.h"
 #include "sandbox/headless_frames.h"
+#include "sandbox/png.h"
 #include "sandbox/run.h"
 #include "sandbox/sandbox_frame.h"
 #include "sandbox/scene_setup.h"
+#include "sandbox/script.h"
+#include "systems/scene/scene.h"
+#include "systems/scene/shadow_settings.h"
 
 namespace sg::sandbox {
+
+namespace {
+
+// The light named `name` (lights are the entities with ShadowSettings).
+ecs::Entity light_named(const ecs::World& world, const std::string& name, const std::string& where) {
+  ecs::Entity found = ecs::null_entity;
+  world.query<const scene::Name, const scene::ShadowSettings>().for_each(
+      [&](ecs::Entity entity, const scene::Name& light, const scene::ShadowSettings&) {
+        if (light.value == name) found = entity;
+      });
+  if (found == ecs::null_entity) throw std::runtime_error(where + ": no light named \"" + name + "\"");
+  return found;
+}
+
+// Runs `steps` (script.h) on `frame`, rendering where they wait.
+RunRecord run_script(const Options& options, vk::VulkanContext& context, SandboxScene& scene,
+                     SandboxFrame& frame, vk::FrameRing& frames, GpuTimeLog& gpu_times) {
+  const std::vector<ScriptStep> steps = load_script(options.script);
+  ecs::World& world = scene.scene.world;
+  RunRecord record{{}, {}, &gpu_times};
+  uint64_t rendered = 0;
+  ecs::Entity selected = ecs::null_entity;
+  for (const ScriptStep& step : steps) {
+    const std::string where = options.script + ":" + std::to_string(step.line);
+    const auto need_light = [&] {
+      if (selected == ecs::null_entity)
+        throw std::runtime_error(where + ": no light selected (select NAME first)");
+      return selected;
+    };
+    std::visit(
+        [&](const auto& command) {
+          using Command = std::decay_t<decltype(command)>;
+          if constexpr (std::is_same_v<Command, ScriptStep::Select>) {
+            selected = light_named(world, command.name, where);
+          } else if constexpr (std::is_same_v<Command, ScriptStep::Algorithm>) {
+            world.get_mut<scene::ShadowSettings>(need_light()).algorithm = command.algorithm;
+          } else if constexpr (std::is_same_v<Command, ScriptStep::Resolution>) {
+            world.get_mut<scene::ShadowSettings>(need_light()).resolution = command.texels;
+          } else if constexpr (std::is_same_v<Command, ScriptStep::Move>) {
+            world.get_mut<ecs::LocalTransform>(need_light()).translation = command.position;
+          } else if constexpr (std::is_same_v<Command, ScriptStep::Camera>) {
+            scene.pose = command.pose;
+          } else if constexpr (std::is_same_v<Command, ScriptStep::Wait>) {
+            RunRecord part =
+                render_headless_frames(frame, frames, command.frames, gpu_times, false, rendered);
+            rendered += command.frames;
+            record.cpu_frame_ms.insert(record.cpu_frame_ms.end(), part.cpu_frame_ms.begin(),
+                                       part.cpu_frame_ms.end());
+            record.wall_frame_ms.insert(record.wall_frame_ms.end(), part.wall_frame_ms.begin(),
+                                        part.wall_frame_ms.end());
+          } else if constexpr (std::is_same_v<Command, ScriptStep::Screenshot>) {
+            if (rendered == 0) throw std::runtime_error(where + ": nothing rendered yet (wait N first)");
+            write_png(command.path, vk::read_rgba8(context, frame.image()));
+            std::printf("shadowgraph: wrote %s\n", command.path.c_str());
+          }
+        },
+        step.command);
+  }
+  return record;
+}
+
+}  // namespace
 
 int run_headless(const Options& options) {
   SandboxScene scene = load_sandbox_scene(options, float(options.width) / float(options.height));
@@ -20,7 +93,10 @@ int run_headless(const Options& options) {
   SandboxFrame frame(context, scene, options, frames.frames_in_flight());
   frame.resize({options.width, options.height});
   GpuTimeLog gpu_times;
-  const RunRecord record = render_headless_frames(frame, frames, options.frames.value_or(3), gpu_times, true);
+  const RunRecord record =
+      options.script.empty()
+          ? render_headless_frames(frame, frames, options.frames.value_or(3), gpu_times, true)
+          : run_script(options, context, scene, frame, frames, gpu_times);
   return finish_run(options, context, scene, frame, record);
 }
 

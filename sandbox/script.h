@@ -1,0 +1,59 @@
+#pragma once
+// Scripted sandbox runs (--script FILE), so that what a person would do in the window can be
+// done, and tested, without one. One command a line; `#` starts a comment:
+//
+//   select NAME              the light named NAME (its scene name) becomes the selected one
+//   algorithm NAME           its shadow algorithm: hard, pcf, noise, pcss, pcss_noise
+//   resolution N             its requested shadow resolution, texels
+//   move X Y Z               its position
+//   camera EX,EY,EZ,TX,TY,TZ the view, as --camera
+//   wait N                   render N frames (1/60 s each)
+//   screenshot PATH          write the last frame as PNG
+//
+// Edits are ECS writes, as the panels' are. Errors name the file and line.
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "systems/scene/camera.h"
+#include "systems/scene/shadow_settings.h"
+
+namespace sg::sandbox {
+
+struct ScriptStep {
+  struct Select {
+    std::string name;
+  };
+  struct Algorithm {
+    scene::ShadowAlgorithm algorithm;
+  };
+  struct Resolution {
+    uint32_t texels;
+  };
+  struct Move {
+    glm::vec3 position;
+  };
+  struct Camera {
+    scene::CameraPose pose;
+  };
+  struct Wait {
+    uint32_t frames;
+  };
+  struct Screenshot {
+    std::string path;
+  };
+  std::variant<Select, Algorithm, Resolution, Move, Camera, Wait, Screenshot> command;
+  int line = 0;
+};
+
+// Parses `text` (from file `path`, for messages). Throws std::runtime_error
+// "PATH:LINE: problem" for an unknown command or a malformed argument.
+std::vector<ScriptStep> parse_script(const std::string& text, const std::string& path);
+
+// Reads and parses the file; a missing or unreadable file is a std::runtime_error naming it.
+std::vector<ScriptStep> load_script(const std::string& path);
+
+}  // namespace sg::sandbox
