@@ -185,10 +185,17 @@ void add_options(CLI::App& app, Options& o) {
          "frame); off: everything stays where the scene puts it")
       ->check(CLI::IsMember({"on", "off"}))
       ->default_str("on");
+  o.sidecar = true;  // the command line's default
+  app.add_option_function<std::string>(
+         "--sidecar", [&o](const std::string& value) { o.sidecar = value == "on"; },
+         "on: start from the lights and camera saved beside the scene (SCENE.shadowgraph.json, written by "
+         "the panels' save button or a script's save); off: the scene as it is")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->default_str("on");
   app.add_option(
          "--script", o.script,
          "Run FILE's commands headless (select NAME, algorithm NAME, resolution N, move X Y Z, camera "
-         "EX,EY,EZ,TX,TY,TZ, wait N, screenshot PATH) instead of --frames")
+         "EX,EY,EZ,TX,TY,TZ, wait N, screenshot PATH, save) instead of --frames")
       ->excludes("--frames");
   app.add_option_function<std::string>(
          "--ui", [&o](const std::string& value) { o.ui = value == "on"; },

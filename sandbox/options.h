@@ -45,7 +45,11 @@ struct Options {
   bool shadow_cache = true;                         // --shadow-cache off: redraw every map every frame
   LightingPath lighting = LightingPath::automatic;  // --lighting auto|forward|deferred
   float exposure = 1.0f;                            // --exposure
-  bool animate = true;     // --animate off: glTF animations and the stress scene's orbits stand still
+  bool animate = true;  // --animate off: glTF animations and the stress scene's orbits stand still
+  // --sidecar on|off: start from <scene>.shadowgraph.json (the saved edits). On from the command
+  // line; off for programs that build Options themselves (tests, tools), so a stray file in their
+  // working folder cannot change what they render.
+  bool sidecar = false;
   std::string script;      // --script FILE: commands instead of --frames (script.h); headless only
   std::optional<bool> ui;  // --ui on|off: the panels; unset: on in a window, off headless
   // --naive: what the source documents do, the baseline to measure against: a pass per shadow

@@ -1,6 +1,8 @@
 #include "sandbox/sandbox_frame.h"
 
 #include <chrono>
+#include <cstdio>
+#include <filesystem>
 
 #include <stdexcept>
 #include <string>
@@ -9,6 +11,7 @@
 #include "ecs/transform_system.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
+#include "sandbox/scene_sidecar.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/node_animation.h"
 
@@ -78,6 +81,7 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, cons
       scene_(scene),
       depth_overlay_enabled_(options.depth_overlay),
       animate_(options.animate),
+      scene_name_(options.scene),
       renderer_(context, scene.scene, frames_in_flight, frame_format, renderer_settings(options)),
       depth_overlay_(context, frame_format),
       executor_(context, frames_in_flight) {
@@ -111,6 +115,7 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
                         static_cast<float>(time_seconds - last_time_seconds_));
   }
   last_time_seconds_ = time_seconds;
+  if (ui_ && ui_->take_save_request()) save_edits();
   update(time_seconds);
   timed(phase_ms_.update);
   renderer_.gather(std::as_const(scene_.scene.world));
@@ -125,6 +130,12 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
   timed(phase_ms_.declare);
   execute(frame);
   timed(phase_ms_.execute);
+}
+
+void SandboxFrame::save_edits() const {
+  const std::filesystem::path path = sidecar_path(scene_name_);
+  save_sidecar(path, scene_.scene, scene_.pose);
+  std::printf("shadowgraph: saved the lights and camera to %s\n", path.string().c_str());
 }
 
 UiFacts SandboxFrame::ui_facts() const {

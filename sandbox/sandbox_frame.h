@@ -71,6 +71,8 @@ class SandboxFrame {
   const vk::GraphExecutor& executor() const { return executor_; }
   // Whether the panels take the mouse or keyboard this frame (false without panels).
   bool ui_wants_input() const;
+  // Writes the lights and camera beside the scene (scene_sidecar.h), as the panels' save does.
+  void save_edits() const;
   // The panels (nullptr without --ui).
   SandboxUi* ui() { return ui_.get(); }
 
@@ -93,6 +95,7 @@ class SandboxFrame {
   SandboxScene& scene_;
   bool depth_overlay_enabled_;
   bool animate_;
+  std::string scene_name_;  // --scene: where the sidecar of saved edits goes
   double last_time_seconds_ = 0.0;
   SceneRenderer renderer_;
   DepthOverlayPass depth_overlay_;

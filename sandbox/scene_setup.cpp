@@ -1,5 +1,10 @@
 #include "sandbox/scene_setup.h"
 
+#include <cstdio>
+#include <filesystem>
+
+#include "sandbox/scene_sidecar.h"
+
 #include <algorithm>
 
 #include "ecs/transform.h"
@@ -56,6 +61,18 @@ SandboxScene load_sandbox_scene(const Options& options, float aspect) {
   } else {
     result.pose = scene::frame_bounds(scene::scene_bounds(result.scene), result.lens.yfov, aspect);
     result.camera_source = "framed bounds";
+  }
+  // The user's saved edits, unless the command line names the camera or asks for the scene as is.
+  const std::filesystem::path sidecar = sidecar_path(options.scene);
+  if (options.sidecar && std::filesystem::exists(sidecar)) {
+    scene::CameraPose pose = result.pose;
+    apply_sidecar(sidecar, result.scene, pose);
+    if (!options.camera) {
+      result.pose = pose;
+      result.camera_source = sidecar.string();
+    }
+    std::printf("shadowgraph: lights%s from %s (--sidecar off ignores it)\n",
+                options.camera ? "" : " and camera", sidecar.string().c_str());
   }
   return result;
 }

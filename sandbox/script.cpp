@@ -63,6 +63,9 @@ std::vector<ScriptStep> parse_script(const std::string& text, const std::string&
       }
     } else if (command == "wait") {
       step.command = ScriptStep::Wait{number("a whole number of frames, 1 to 100,000", 1, 100'000)};
+    } else if (command == "save") {
+      if (!rest.empty()) fail(path, line, "save takes nothing, got \"" + rest + "\"");
+      step.command = ScriptStep::Save{};
     } else if (command == "screenshot") {
       if (rest.empty()) fail(path, line, "screenshot takes a PNG path");
       step.command = ScriptStep::Screenshot{rest};

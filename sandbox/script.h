@@ -9,6 +9,8 @@
 //   camera EX,EY,EZ,TX,TY,TZ the view, as --camera
 //   wait N                   render N frames (1/60 s each)
 //   screenshot PATH          write the last frame as PNG
+//   save                     write the lights and camera beside the scene (scene_sidecar.h)
+//   save                     write the lights and camera beside the scene (scene_sidecar.h)
 //
 // Edits are ECS writes, as the panels' are. Errors name the file and line.
 #include <cstdint>
@@ -45,7 +47,8 @@ struct ScriptStep {
   struct Screenshot {
     std::string path;
   };
-  std::variant<Select, Algorithm, Resolution, Move, Camera, Wait, Screenshot> command;
+  struct Save {};
+  std::variant<Select, Algorithm, Resolution, Move, Camera, Wait, Screenshot, Save> command;
   int line = 0;
 };
 

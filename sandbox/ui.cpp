@@ -202,6 +202,10 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose) 
   if (ImGui::Button("+ cylinder")) {
     selected_ = scene::add_light(scene, scene::CylinderLight{}, placed, {}, "cylinder " + number);
   }
+  ImGui::SameLine();
+  if (ImGui::Button("save")) save_requested_ = true;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the lights and camera, beside the scene (SCENE.shadowgraph.json)");
   if (ImGui::BeginListBox("##lights", ImVec2(-1.0f, 120.0f))) {
     world.query<const scene::ShadowSettings>().for_each(
         [&](ecs::Entity entity, const scene::ShadowSettings&) {

@@ -66,6 +66,9 @@ class SandboxUi {
   // Whether the panels take the mouse or keyboard this frame (the fly camera then keeps still).
   bool wants_input() const;
 
+  // True once after the user pressed "save" (the frame writes the sidecar, scene_sidecar.h).
+  bool take_save_request() { return std::exchange(save_requested_, false); }
+
   // What the user would pick in the panels; for tests and scripted runs.
   void select(ecs::Entity light) { selected_ = light; }
   void show_map(bool show) { show_map_ = show; }
@@ -87,6 +90,7 @@ class SandboxUi {
   size_t history_next_ = 0;
   bool help_ = false;
   bool show_map_ = false;
+  bool save_requested_ = false;
   std::vector<UiDepthView> depth_views_;
 };
 
