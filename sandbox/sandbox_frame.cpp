@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "ecs/transform_system.h"
+#include "rendergraph/device/context.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "sandbox/scene_sidecar.h"
@@ -158,6 +159,8 @@ UiFacts SandboxFrame::ui_facts() const {
   facts.lighting = lighting_path_name(renderer_.lighting());
   facts.frame_lights = &renderer_.lights();
   facts.atlas_page = renderer_.shadow_atlas().shape().page_size;
+  facts.atlas_pages = renderer_.shadow_atlas().pages();
+  if (context_.validation_enabled()) facts.validation_errors = context_.validation_errors();
   return facts;
 }
 

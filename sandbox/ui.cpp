@@ -1,5 +1,6 @@
 #include "sandbox/ui.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <string>
 
@@ -96,10 +97,10 @@ const ImDrawData* SandboxUi::build(scene::Scene& scene, const scene::CameraPose&
   ImGui::NewFrame();
   // imgui 1.86's GLFW backend indexes io.KeysDown by GLFW key codes.
   if (glfw_ && ImGui::IsKeyPressed(GLFW_KEY_F1)) help_ = !help_;
+  depth_views_.clear();
   stats_panel(facts);
   light_panel(scene, pose);
   if (help_) help_panel();
-  depth_views_.clear();
   if (show_map_) shadow_map_panel(scene.world, facts);
   ImGui::Render();
   return ImGui::GetDrawData();
@@ -117,8 +118,24 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
   history_next_ = (history_next_ + 1) % gpu_history_.size();
   ImGui::PlotLines("GPU ms", gpu_history_.data(), int(gpu_history_.size()), int(history_next_), nullptr, 0.0f,
                    FLT_MAX, ImVec2(0, 40));
+  if (facts.validation_errors) {
+    ImGui::Text("validation layer: %u errors", *facts.validation_errors);
+  } else {
+    ImGui::TextDisabled("validation layer off (--validation)");
+  }
   if (ImGui::CollapsingHeader("passes")) {
     for (const auto& [name, ms] : facts.passes) ImGui::Text("%8.3f ms  %s", ms, name.c_str());
+  }
+  // The atlas's occupancy: each page whole, tiles grey to black, free texels white (depth 1).
+  if (ImGui::CollapsingHeader("shadow atlas")) {
+    constexpr uint32_t shown_pages = 4;
+    for (uint32_t page = 0; page < std::min(facts.atlas_pages, shown_pages); ++page) {
+      if (page % 2 != 0) ImGui::SameLine();
+      depth_views_.push_back({page, 0.0f, 1.0f, true});
+      ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(depth_views_.size())),
+                   ImVec2(160, 160));
+    }
+    if (facts.atlas_pages > shown_pages) ImGui::Text("(%u more pages)", facts.atlas_pages - shown_pages);
   }
   ImGui::TextDisabled("F1: help");
   ImGui::End();

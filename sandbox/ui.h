@@ -9,6 +9,7 @@
 // installed callbacks chain to the window's own); headless, the panels are drawn without input.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,6 +41,8 @@ struct UiDepthView {
 struct UiFacts {
   const shadows::FrameLights* frame_lights = nullptr;  // the last frame's, for the selected light's map
   uint32_t atlas_page = 0;                             // texels a side of an atlas layer
+  uint32_t atlas_pages = 0;                            // layers of the atlas
+  std::optional<uint32_t> validation_errors;           // unset with the validation layer off
   std::vector<std::pair<std::string, double>> passes;  // GPU ms per pass, newest timed frame
   double cpu_frame_ms = 0.0;
   double gpu_frame_ms = 0.0;  // the newest frame whose timings are back; 0 when unknown
