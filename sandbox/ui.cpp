@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <string>
+#include <unordered_map>
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -99,7 +100,7 @@ const ImDrawData* SandboxUi::build(scene::Scene& scene, const scene::CameraPose&
   if (glfw_ && ImGui::IsKeyPressed(GLFW_KEY_F1)) help_ = !help_;
   depth_views_.clear();
   stats_panel(facts);
-  light_panel(scene, pose);
+  light_panel(scene, pose, facts);
   if (help_) help_panel();
   if (show_map_) shadow_map_panel(scene.world, facts);
   ImGui::Render();
@@ -196,7 +197,7 @@ void SandboxUi::help_panel() {
   ImGui::End();
 }
 
-void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose) {
+void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, const UiFacts& facts) {
   ecs::World& world = scene.world;
   ImGui::SetNextWindowPos(ImVec2(360, 8), ImGuiCond_FirstUseEver);  // beside "Frame"
   ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(480, 10'000));
@@ -223,14 +224,36 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose) 
   if (ImGui::Button("save")) save_requested_ = true;
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("the lights and camera, beside the scene (SCENE.shadowgraph.json)");
+  constexpr const char* orders[] = {"scene order", "by name", "by importance"};
+  ImGui::Combo("order", &order_, orders, IM_ARRAYSIZE(orders));
+  // Importance as the shadow schedule measured it last frame (lights without shadows: 0).
+  std::unordered_map<uint64_t, float> importance;
+  if (facts.frame_lights != nullptr) {
+    for (const shadows::ShadowMapView& map : facts.frame_lights->maps) importance[map.key] = map.importance;
+    for (const shadows::ShadowCubeView& cube : facts.frame_lights->cubes)
+      importance[cube.key] = cube.importance;
+  }
+  listed_.clear();
+  world.query<const scene::ShadowSettings>().for_each([&](ecs::Entity entity, const scene::ShadowSettings&) {
+    const int type = light_type(world, entity);
+    if (type == 0 || (type_filter_ != 0 && type != type_filter_)) return;
+    const auto found = importance.find(uint64_t{entity.generation} << 32 | entity.index);
+    listed_.emplace_back(entity, found == importance.end() ? 0.0f : found->second);
+  });
+  if (order_ == 1) {
+    std::stable_sort(listed_.begin(), listed_.end(), [&](const auto& a, const auto& b) {
+      return label_of(world, a.first) < label_of(world, b.first);
+    });
+  } else if (order_ == 2) {
+    std::stable_sort(listed_.begin(), listed_.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+  }
+  if (selected_ == ecs::null_entity && !listed_.empty())
+    selected_ = listed_.front().first;  // the editor starts on one
   if (ImGui::BeginListBox("##lights", ImVec2(-1.0f, 120.0f))) {
-    world.query<const scene::ShadowSettings>().for_each(
-        [&](ecs::Entity entity, const scene::ShadowSettings&) {
-          const int type = light_type(world, entity);
-          if (type == 0 || (type_filter_ != 0 && type != type_filter_)) return;
-          if (selected_ == ecs::null_entity) selected_ = entity;  // the editor starts on the first light
-          if (ImGui::Selectable(label_of(world, entity).c_str(), entity == selected_)) selected_ = entity;
-        });
+    for (const auto& [entity, _] : listed_) {
+      if (ImGui::Selectable(label_of(world, entity).c_str(), entity == selected_)) selected_ = entity;
+    }
     ImGui::EndListBox();
   }
   if (selected_ != ecs::null_entity && world.alive(selected_) && light_type(world, selected_) != 0) {

@@ -81,13 +81,15 @@ class SandboxUi {
 
  private:
   void stats_panel(const UiFacts& facts);
-  void light_panel(scene::Scene& scene, const scene::CameraPose& pose);
+  void light_panel(scene::Scene& scene, const scene::CameraPose& pose, const UiFacts& facts);
   void help_panel();
   void shadow_map_panel(const ecs::World& world, const UiFacts& facts);
 
   ImGuiContext* context_ = nullptr;
   bool glfw_ = false;
   int type_filter_ = 0;  // 0 all, then point, spot, directional, cylinder
+  int order_ = 0;        // 0 the scene's, 1 by name, 2 by importance (largest on screen first)
+  std::vector<std::pair<ecs::Entity, float>> listed_;  // this frame's list, with importance
   ecs::Entity selected_ = ecs::null_entity;
   std::array<float, 120> gpu_history_{};  // ms, a ring
   size_t history_next_ = 0;

@@ -49,7 +49,9 @@ struct ShadowMapView {
   // Its transform, light or shadow settings were written in or after the last gather's tick (a
   // write in that tick may have come after the gather). Systems advance the tick before gathering.
   bool changed = false;
-  // From ShadowSchedule: its tile (resolution 0: no shadow this frame) and whether it renders.
+  // From ShadowSchedule: its importance (light_importance: pixels on screen, 0 out of sight), its
+  // tile (resolution 0: no shadow this frame) and whether it renders.
+  float importance = 0.0f;
   uint32_t resolution = 0;
   AtlasTile tile;
   bool render = false;
@@ -63,6 +65,7 @@ struct ShadowCubeView {
   CubeViews views;
   glm::vec4 position_far{0.0f};  // shadow_cube.frag's light position and far plane, and its reach
   bool changed = false;
+  float importance = 0.0f;           // as ShadowMapView's
   uint32_t resolution = 0;           // each face's side; 0: no shadow this frame
   std::array<AtlasTile, 6> tiles{};  // faces +X, -X, +Y, -Y, +Z, -Z, all on one layer
   bool render = false;

@@ -34,16 +34,18 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera,
   request_of_.assign(lights.maps.size() + lights.cubes.size(), no_request);
   stats_ = {};
   for (size_t m = 0; m < lights.maps.size(); ++m) {
-    const ShadowMapView& map = lights.maps[m];
+    ShadowMapView& map = lights.maps[m];
     const float importance = light_importance(map.reach, camera);
+    map.importance = importance;
     if (importance <= 0.0f) continue;
     request_of_[m] = static_cast<uint32_t>(requests_.size());
     requests_.push_back({map.key, false, map.requested_resolution, importance});
   }
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
-    const ShadowCubeView& cube = lights.cubes[c];
+    ShadowCubeView& cube = lights.cubes[c];
     // A face spans a quarter turn, about half of what the whole sphere covers on screen.
     const float importance = 0.5f * light_importance(cube.position_far, camera);
+    cube.importance = importance;
     if (importance <= 0.0f) continue;
     request_of_[lights.maps.size() + c] = static_cast<uint32_t>(requests_.size());
     requests_.push_back({cube.key, true, cube.requested_resolution, importance});

@@ -150,6 +150,7 @@ TEST(ShadowSchedule, LightsOutOfSightGetNoShadow) {
   // Far away and looking away: no bounded light's reach is in view; the sun still is.
   schedule.schedule(lights, camera_at({0.0f, 5.0f, -500.0f}), {}, 0);
   EXPECT_EQ(lights.maps[0].resolution, 0u);
+  EXPECT_EQ(lights.maps[0].importance, 0.0f);
   EXPECT_GT(lights.maps[1].resolution, 0u);
   EXPECT_EQ(lights.cubes[0].resolution, 0u);
   EXPECT_EQ(lights.records[lights.maps[0].light].info.w, no_shadow_map);
@@ -183,8 +184,10 @@ TEST(ShadowSchedule, TheBudgetDegradesTheLeastImportantLightsFirst) {
   ShadowSchedule schedule(AtlasConfig{64, 1, min_shadow_resolution});
   schedule.schedule(lights, camera_at({0.0f, 2.0f, 0.0f}), {}, 0);
   ASSERT_EQ(lights.maps.size(), 24u);
-  // Resolutions never grow with distance, and the budget left the farthest without a shadow.
+  // Importance (size on screen) falls with distance; resolutions never grow with it, and the
+  // budget left the farthest without a shadow.
   for (size_t i = 1; i < lights.maps.size(); ++i) {
+    EXPECT_LT(lights.maps[i].importance, lights.maps[i - 1].importance) << "light " << i;
     EXPECT_LE(lights.maps[i].resolution, lights.maps[i - 1].resolution) << "light " << i;
   }
   EXPECT_GT(lights.maps.front().resolution, lights.maps.back().resolution);
