@@ -63,6 +63,9 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("!--no-vsync", o.vsync, "Present without waiting for vertical blank");
   app.add_flag("--depth-overlay", o.depth_overlay,
                "Show the depth buffer in the bottom-right quarter (the render graph's extension example)");
+  app.add_flag("--light-heatmap", o.light_heatmap,
+               "Colour each 16x16 screen tile by the lights it shades (tiled lighting's lists; white: a full "
+               "list)");
 
   app.add_option("--scene", o.scene, "Scene: default, stress, or a .gltf/.glb file")->capture_default_str();
   app.add_option_function<std::string>(

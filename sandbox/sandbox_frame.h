@@ -24,6 +24,7 @@
 #include "rendergraph/vulkan/graph_executor.h"
 #include "rendergraph/vulkan/graph_imports.h"
 #include "sandbox/depth_overlay_pass.h"
+#include "sandbox/light_heatmap_pass.h"
 #include "sandbox/options.h"
 #include "sandbox/scene_setup.h"
 #include "sandbox/ui.h"
@@ -99,7 +100,8 @@ class SandboxFrame {
   double last_time_seconds_ = 0.0;
   SceneRenderer renderer_;
   DepthOverlayPass depth_overlay_;
-  std::unique_ptr<SandboxUi> ui_;  // with --ui
+  std::optional<LightHeatmapPass> light_heatmap_;  // with --light-heatmap
+  std::unique_ptr<SandboxUi> ui_;                  // with --ui
   std::unique_ptr<UiPass> ui_pass_;
   vk::GraphExecutor executor_;
   rg::PlanCache plans_;

@@ -114,6 +114,7 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
 
   rg::ImageHandle lit_sum;
   rg::ImageHandle depth;
+  std::optional<LightTiles> light_tiles;
   if (every_light_) {
     const ForwardTargets lit =
         every_light_->add_to(graph, target.width, target.height, atlas, gpu_scene_, slot, constants);
@@ -126,6 +127,7 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
         tiled_forward_->light_tiles.add_to(graph, depth, records, light_count, view_projection);
     lit_sum = tiled_forward_->forward.add_to(graph, depth, tiles, atlas, records, gpu_scene_, slot, constants)
                   .lit_sum;
+    light_tiles = tiles;
   } else {
     const GBuffer gbuffer =
         deferred_->gbuffer.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
@@ -134,8 +136,9 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
     lit_sum =
         deferred_->lighting.add_to(graph, gbuffer, tiles, atlas, records, lights_.group_begin, pose.eye);
     depth = gbuffer.depth;
+    light_tiles = tiles;
   }
-  return {tone_map_.add_to(graph, lit_sum, frame, settings_.exposure), depth, atlas};
+  return {tone_map_.add_to(graph, lit_sum, frame, settings_.exposure), depth, atlas, light_tiles};
 }
 
 uint64_t SceneRenderer::shadow_caster_draws() const {

@@ -61,6 +61,8 @@ struct RenderedFrame {
   rg::ImageHandle colour;        // the frame image's newest version: the tone-mapped picture
   rg::ImageHandle depth;         // the camera's D32 depth buffer (transient)
   rg::ImageHandle shadow_atlas;  // every shadow map, this frame's newest version
+  // The tiled paths' light lists (invalid handles with --naive's every-light forward).
+  std::optional<LightTiles> light_tiles;
 };
 
 class SceneRenderer {

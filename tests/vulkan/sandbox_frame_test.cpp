@@ -264,6 +264,21 @@ TEST_F(SandboxFrameTest, ThePanelsShowTheSelectedLightsShadowMap) {
   EXPECT_EQ(executed_passes(*frame.plan()).back(), "ui");
 }
 
+// --light-heatmap colours the tiles by how many lights light culling kept for them: the default
+// scene's floor is lit everywhere, so most of the picture changes; every-light forward (--naive)
+// has no tiles and so no heat map.
+TEST_F(SandboxFrameTest, TheLightHeatMapColoursTheLitTiles) {
+  const vk::Rgba8Image plain = render(sandbox::Options{}, 1);
+  sandbox::Options heat;
+  heat.light_heatmap = true;
+  const vk::Rgba8Image coloured = render(heat, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "light heat map"), 1);
+  EXPECT_GT(largest_difference(plain, coloured), 40);
+  heat.naive = true;
+  render(heat, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "light heat map"), 0);
+}
+
 // A material's base-colour texture multiplies its base colour: a white floor with a green
 // texture renders green, the same floor without it grey.
 TEST_F(SandboxFrameTest, MaterialTexturesTintTheBaseColour) {

@@ -1,0 +1,29 @@
+#pragma once
+// A debug view: how many lights each 16x16 screen tile shades, as colour over the picture, read
+// from light culling's lists (LightTiles::ranges). Like the depth overlay, a pass no engine
+// file knows.
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/unique_handle.h"
+#include "systems/light_tiles_pass.h"
+
+namespace sg::vk {
+class VulkanContext;
+}
+
+namespace sg::sandbox {
+
+class LightHeatmapPass {
+ public:
+  LightHeatmapPass(vk::VulkanContext& context, rg::Format colour_format);
+
+  // Draws over `colour` (the frame, whose size the tiles were culled at) and returns its new
+  // version.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, const LightTiles& tiles, rg::ImageHandle colour) const;
+
+ private:
+  vk::PipelineLayout layout_;
+  vk::UniquePipeline pipeline_;
+};
+
+}  // namespace sg::sandbox
