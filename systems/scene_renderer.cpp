@@ -48,7 +48,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
 
 void SceneRenderer::gather(const ecs::World& world) {
   gpu_scene_.gather(world, &workers_);
-  shadows::gather_lights(world, gpu_scene_.bounds(), settings_.lights, lights_);
+  shadows::gather_lights(world, gpu_scene_.bounds(), settings_.lights, lights_, &workers_);
 }
 
 void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <type_traits>
 
 #include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
@@ -30,13 +31,6 @@ void name_view(const ecs::World& world, ecs::Entity entity, const char* kind, si
   out.append(kind).append(number);
 }
 
-// The next view of `views`, reusing last frame's element (and its name's storage) when there is one.
-template <class View>
-View& next_view(std::vector<View>& views, size_t& count) {
-  if (count == views.size()) views.emplace_back();
-  return views[count++];
-}
-
 scene::ShadowSettings with_overrides(scene::ShadowSettings shadow, const LightOverrides& overrides) {
   if (overrides.algorithm) shadow.algorithm = *overrides.algorithm;
   shadow.casts_shadow = shadow.casts_shadow && overrides.shadows;
@@ -52,26 +46,67 @@ bool changed_since(const ecs::World& world, ecs::Entity entity, ecs::Tick since)
                    world.change_tick<scene::ShadowSettings>(entity)}) >= since;
 }
 
-// Every light of type Light, with a 2D map from view_of(light, transform) when it casts one.
-template <class Light, class ViewOf, class ReachOf>
-void gather_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick since, const char* kind,
-               ViewOf view_of, ReachOf reach_of, FrameLights& out, size_t& map_count) {
+// Every light of the frame, in the order the records take: spot, directional, cylinder, point
+// lights, each in the world's order. A shadowed light's `view` indexes maps (or cubes).
+template <class Light>
+void collect(const ecs::World& world, const LightOverrides& overrides, GatheredLight::Kind kind,
+             std::vector<GatheredLight>& gathered, uint32_t& views) {
   world.query<const ecs::WorldTransform, const Light, const scene::ShadowSettings>().for_each(
-      [&](ecs::Entity entity, const ecs::WorldTransform& transform, const Light& light,
-          const scene::ShadowSettings& shadow) {
-        const scene::ShadowSettings s = with_overrides(shadow, overrides);
-        out.records.push_back(pack_light(light, transform, s));
-        if (!s.casts_shadow) return;
-        const size_t index = map_count;
-        ShadowMapView& map = next_view(out.maps, map_count);
-        map.light = static_cast<uint32_t>(out.records.size() - 1);
-        map.key = key_of(entity);
-        map.requested_resolution = clamp_resolution(s.resolution, max_map_resolution);
-        map.view = view_of(light, transform);
-        map.reach = reach_of(light, transform);
-        map.changed = changed_since<Light>(world, entity, since);
-        name_view(world, entity, kind, index, map.name);
+      [&](ecs::Entity entity, const ecs::WorldTransform&, const Light&, const scene::ShadowSettings& shadow) {
+        const bool shadowed = with_overrides(shadow, overrides).casts_shadow;
+        gathered.push_back({entity, kind, shadowed, shadowed ? views++ : 0u});
       });
+}
+
+// Record `index` and, for a shadowed light, its view, from the entity's components.
+template <class Light>
+void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick since,
+             const scene::Aabb& bounds, const GatheredLight& light, uint32_t index, FrameLights& out) {
+  const ecs::WorldTransform& transform = *world.try_get<ecs::WorldTransform>(light.entity);
+  const Light& parameters = *world.try_get<Light>(light.entity);
+  const scene::ShadowSettings s =
+      with_overrides(*world.try_get<scene::ShadowSettings>(light.entity), overrides);
+  out.records[index] = pack_light(parameters, transform, s);
+  if (!light.shadowed) return;
+  ShadowMapView& map = out.maps[light.view];
+  map.light = index;
+  map.key = key_of(light.entity);
+  map.requested_resolution = clamp_resolution(s.resolution, max_map_resolution);
+  const glm::vec3 position = scene::light_position(transform);
+  const glm::vec3 direction = scene::light_direction(transform);
+  if constexpr (std::is_same_v<Light, scene::SpotLight>) {
+    map.view = spot_light_view(position, direction, parameters.outer_cone, parameters.range);
+    map.reach = glm::vec4(position, parameters.range);
+    name_view(world, light.entity, "spot", light.view, map.name);
+  } else if constexpr (std::is_same_v<Light, scene::DirectionalLight>) {
+    map.view = directional_light_view(direction, bounds);
+    map.reach = unbounded_reach;
+    name_view(world, light.entity, "directional", light.view, map.name);
+  } else {
+    map.view = cylinder_light_view(position, direction, parameters.outer_radius, bounds);
+    map.reach = unbounded_reach;
+    name_view(world, light.entity, "cylinder", light.view, map.name);
+  }
+  map.changed = changed_since<Light>(world, light.entity, since);
+}
+
+void fill_point(const ecs::World& world, const LightOverrides& overrides, ecs::Tick since,
+                const GatheredLight& light, uint32_t index, FrameLights& out) {
+  const ecs::WorldTransform& transform = *world.try_get<ecs::WorldTransform>(light.entity);
+  const scene::PointLight& parameters = *world.try_get<scene::PointLight>(light.entity);
+  const scene::ShadowSettings s =
+      with_overrides(*world.try_get<scene::ShadowSettings>(light.entity), overrides);
+  out.records[index] = pack_light(parameters, transform, s);
+  if (!light.shadowed) return;
+  const glm::vec3 position = scene::light_position(transform);
+  ShadowCubeView& cube = out.cubes[light.view];
+  cube.light = index;
+  cube.key = key_of(light.entity);
+  cube.requested_resolution = clamp_resolution(s.resolution, max_cube_resolution);
+  cube.views = point_light_cube(position, parameters.range);
+  cube.position_far = glm::vec4(position, parameters.range);
+  cube.changed = changed_since<scene::PointLight>(world, light.entity, since);
+  name_view(world, light.entity, "point", light.view, cube.name);
 }
 
 ShadowKind shadow_kind(const GpuLight& record) {
@@ -82,59 +117,50 @@ ShadowKind shadow_kind(const GpuLight& record) {
 }  // namespace
 
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
-                   FrameLights& out) {
+                   FrameLights& out, ecs::ThreadPool* pool) {
   const ecs::Tick since = out.gathered_at;
   out.gathered_at = world.tick();
-  out.records.clear();
-  size_t map_count = 0;
-  size_t cube_count = 0;
   const scene::Aabb bounds =
       scene_bounds.empty() ? scene::Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)} : scene_bounds;
-  const auto no_range = [](const auto&, const ecs::WorldTransform&) { return unbounded_reach; };
 
-  gather_2d<scene::SpotLight>(
-      world, overrides, since, "spot",
-      [](const scene::SpotLight& light, const ecs::WorldTransform& transform) {
-        return spot_light_view(scene::light_position(transform), scene::light_direction(transform),
-                               light.outer_cone, light.range);
-      },
-      [](const scene::SpotLight& light, const ecs::WorldTransform& transform) {
-        return glm::vec4(scene::light_position(transform), light.range);
-      },
-      out, map_count);
-  gather_2d<scene::DirectionalLight>(
-      world, overrides, since, "directional",
-      [&](const scene::DirectionalLight&, const ecs::WorldTransform& transform) {
-        return directional_light_view(scene::light_direction(transform), bounds);
-      },
-      no_range, out, map_count);
-  gather_2d<scene::CylinderLight>(
-      world, overrides, since, "cylinder",
-      [&](const scene::CylinderLight& light, const ecs::WorldTransform& transform) {
-        return cylinder_light_view(scene::light_position(transform), scene::light_direction(transform),
-                                   light.outer_radius, bounds);
-      },
-      no_range, out, map_count);
+  // The order and places first, on this thread; then each light's record and view, which are
+  // independent (packing, view matrices, change ticks, names), in chunks on the pool.
+  std::vector<GatheredLight>& gathered = out.scratch.gathered;
+  gathered.clear();
+  uint32_t maps = 0;
+  uint32_t cubes = 0;
+  collect<scene::SpotLight>(world, overrides, GatheredLight::spot, gathered, maps);
+  collect<scene::DirectionalLight>(world, overrides, GatheredLight::directional, gathered, maps);
+  collect<scene::CylinderLight>(world, overrides, GatheredLight::cylinder, gathered, maps);
+  collect<scene::PointLight>(world, overrides, GatheredLight::point, gathered, cubes);
+  out.records.resize(gathered.size());
+  out.maps.resize(maps);  // shrinking keeps the survivors' name storage for reuse
+  out.cubes.resize(cubes);
 
-  world.query<const ecs::WorldTransform, const scene::PointLight, const scene::ShadowSettings>().for_each(
-      [&](ecs::Entity entity, const ecs::WorldTransform& transform, const scene::PointLight& light,
-          const scene::ShadowSettings& shadow) {
-        const scene::ShadowSettings s = with_overrides(shadow, overrides);
-        out.records.push_back(pack_light(light, transform, s));
-        if (!s.casts_shadow) return;
-        const glm::vec3 position = scene::light_position(transform);
-        const size_t index = cube_count;
-        ShadowCubeView& cube = next_view(out.cubes, cube_count);
-        cube.light = static_cast<uint32_t>(out.records.size() - 1);
-        cube.key = key_of(entity);
-        cube.requested_resolution = clamp_resolution(s.resolution, max_cube_resolution);
-        cube.views = point_light_cube(position, light.range);
-        cube.position_far = glm::vec4(position, light.range);
-        cube.changed = changed_since<scene::PointLight>(world, entity, since);
-        name_view(world, entity, "point", index, cube.name);
-      });
-  out.maps.resize(map_count);
-  out.cubes.resize(cube_count);
+  constexpr size_t chunk = 256;
+  const size_t chunks = (gathered.size() + chunk - 1) / chunk;
+  const auto fill = [&](size_t c) {
+    for (size_t i = c * chunk; i < std::min(gathered.size(), (c + 1) * chunk); ++i) {
+      const auto index = static_cast<uint32_t>(i);
+      switch (gathered[i].kind) {
+        case GatheredLight::spot:
+          fill_2d<scene::SpotLight>(world, overrides, since, bounds, gathered[i], index, out);
+          break;
+        case GatheredLight::directional:
+          fill_2d<scene::DirectionalLight>(world, overrides, since, bounds, gathered[i], index, out);
+          break;
+        case GatheredLight::cylinder:
+          fill_2d<scene::CylinderLight>(world, overrides, since, bounds, gathered[i], index, out);
+          break;
+        case GatheredLight::point: fill_point(world, overrides, since, gathered[i], index, out); break;
+      }
+    }
+  };
+  if (pool != nullptr && chunks > 1) {
+    pool->run(chunks, fill);
+  } else {
+    for (size_t c = 0; c < chunks; ++c) fill(c);
+  }
 }
 
 void sort_by_group(FrameLights& out) {

@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "ecs/thread_pool.h"
 #include "ecs/world.h"
 #include "systems/scene/aabb.h"
 #include "systems/scene/shadow_settings.h"
@@ -72,6 +73,16 @@ struct ShadowCubeView {
   std::string name;
 };
 
+// One light as gather_lights first lists it: its record's place is its place in that list; a
+// shadowed light's `view` indexes FrameLights::maps (or cubes, for point lights).
+struct GatheredLight {
+  enum Kind : uint8_t { spot, directional, cylinder, point };
+  ecs::Entity entity;
+  Kind kind = spot;
+  bool shadowed = false;
+  uint32_t view = 0;
+};
+
 struct FrameLights {
   // After sort_by_group, ordered by light group (light_groups.h): the records of group g are
   // [group_begin[g], group_begin[g + 1]), so a pass that shades one group reads one range.
@@ -85,15 +96,18 @@ struct FrameLights {
   struct Scratch {
     std::vector<uint32_t> moved_to;
     std::vector<GpuLight> records;
+    std::vector<GatheredLight> gathered;
   } scratch;
 };
 
 // Fills `out` (reusing its storage) from every light entity of `world`, in the world's order.
 // Directional and cylinder maps are fitted around `scene_bounds`. Lights whose
 // ShadowSettings::casts_shadow is false, and every light with overrides.shadows off, get no
-// view. The records have no shadow map yet (ShadowSchedule gives them theirs).
+// view. The records have no shadow map yet (ShadowSchedule gives them theirs). With a pool, the
+// records and views are filled in chunks on it (the result is the same); `world` must not change
+// meanwhile.
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
-                   FrameLights& out);
+                   FrameLights& out, ecs::ThreadPool* pool = nullptr);
 
 // Orders the records by light group (stably, so lights keep the world's order within a group),
 // from each record's type, algorithm and whether it has a shadow map, and points the views at

@@ -1,6 +1,8 @@
 // Gathering a frame's lights from the ECS world and scheduling their maps, without a GPU.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include "ecs/transform_system.h"
 #include "systems/scene/camera.h"
@@ -64,6 +66,40 @@ TEST(FrameLights, EveryLightGetsARecordAndShadowCastersGetViews) {
   EXPECT_LT(lights.maps[1].reach.w, 0.0f);
   // Until scheduled, no record has a map.
   for (const GpuLight& record : lights.records) EXPECT_EQ(record.info.w, no_shadow_map);
+}
+
+// Gathering on a thread pool splits the lights into chunks; the result must not depend on it.
+TEST(FrameLights, AThreadPoolGathersTheSameLights) {
+  scene::Scene scene;
+  for (int i = 0; i < 700; ++i) {  // several chunks, every kind, some without a shadow
+    const ecs::LocalTransform at{glm::vec3(float(i % 40), 3.0f, float(i / 40))};
+    const scene::ShadowSettings shadow = shadow_at(64u << (i % 4), i % 7 != 0);
+    if (i % 3 == 0) scene::add_light(scene, scene::PointLight{}, at, shadow, i % 2 ? "p" : "");
+    if (i % 3 == 1) scene::add_light(scene, scene::SpotLight{}, at, shadow, "");
+    if (i % 3 == 2) scene::add_light(scene, scene::CylinderLight{}, at, shadow, "c");
+  }
+  ecs::update_world_transforms(scene.world, 0);
+  FrameLights serial;
+  FrameLights pooled;
+  ecs::ThreadPool pool(3);
+  gather_lights(scene.world, bounds, {}, serial);
+  gather_lights(scene.world, bounds, {}, pooled, &pool);
+
+  ASSERT_EQ(pooled.records.size(), 700u);
+  ASSERT_EQ(pooled.maps.size(), serial.maps.size());
+  ASSERT_EQ(pooled.cubes.size(), serial.cubes.size());
+  EXPECT_EQ(std::memcmp(pooled.records.data(), serial.records.data(), 700 * sizeof(GpuLight)), 0);
+  for (size_t m = 0; m < serial.maps.size(); ++m) {
+    EXPECT_EQ(pooled.maps[m].light, serial.maps[m].light);
+    EXPECT_EQ(pooled.maps[m].key, serial.maps[m].key);
+    EXPECT_EQ(pooled.maps[m].name, serial.maps[m].name);
+    EXPECT_EQ(pooled.maps[m].view.view_projection(), serial.maps[m].view.view_projection());
+  }
+  for (size_t c = 0; c < serial.cubes.size(); ++c) {
+    EXPECT_EQ(pooled.cubes[c].light, serial.cubes[c].light);
+    EXPECT_EQ(pooled.cubes[c].name, serial.cubes[c].name);
+    EXPECT_EQ(pooled.cubes[c].position_far, serial.cubes[c].position_far);
+  }
 }
 
 TEST(FrameLights, RequestedResolutionsAreClamped) {
