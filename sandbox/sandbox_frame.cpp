@@ -89,6 +89,7 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, cons
   if (options.light_heatmap) light_heatmap_.emplace(context, frame_format);
   if (options.ui.value_or(window != nullptr)) {
     ui_ = std::make_unique<SandboxUi>(window);
+    ui_->set_playing(options.animate);
     ui_pass_ = std::make_unique<UiPass>(context, frame_format, frames_in_flight);
   }
 }
@@ -111,14 +112,13 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
     samples.push_back(std::chrono::duration<double, std::milli>(now - mark).count());
     mark = now;
   };
-  const ImDrawData* panels = nullptr;
-  if (ui_) {
-    panels = ui_->build(scene_.scene, scene_.pose, ui_facts(), image_.extent(),
-                        static_cast<float>(time_seconds - last_time_seconds_));
-  }
+  const double seconds = time_seconds - last_time_seconds_;  // since the last frame
   last_time_seconds_ = time_seconds;
+  const ImDrawData* panels = nullptr;
+  if (ui_)
+    panels = ui_->build(scene_.scene, scene_.pose, ui_facts(), image_.extent(), static_cast<float>(seconds));
   if (ui_ && ui_->take_save_request()) save_edits();
-  update(time_seconds);
+  update(seconds);
   timed(phase_ms_.update);
   renderer_.gather(std::as_const(scene_.scene.world));
   timed(phase_ms_.gather);
@@ -165,11 +165,15 @@ UiFacts SandboxFrame::ui_facts() const {
   return facts;
 }
 
-void SandboxFrame::update(double time_seconds) {
+void SandboxFrame::update(double seconds) {
   ecs::World& world = scene_.scene.world;
-  if (animate_) {
-    scene::animate_orbits(world, static_cast<float>(time_seconds));
-    scene::animate_nodes(world, static_cast<float>(time_seconds));
+  // Paused, nothing is written, so cached shadow maps stay valid.
+  if (ui_ ? ui_->playing() : animate_) {
+    animation_seconds_ += seconds;
+    const auto time = static_cast<float>(animation_seconds_);
+    scene::animate_orbits(world, time);
+    scene::animate_bobs(world, time);
+    scene::animate_nodes(world, time);
   }
   ecs::update_world_transforms(world, transforms_updated_);
   transforms_updated_ = world.tick();

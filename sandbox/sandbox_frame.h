@@ -88,15 +88,17 @@ class SandboxFrame {
 
  private:
   UiFacts ui_facts() const;
-  void update(double time_seconds);
+  // Advances the animation clock by `seconds` while animation plays, then runs the systems.
+  void update(double seconds);
   void declare_passes(uint32_t slot, const std::optional<PresentTarget>& present);
   void execute(const vk::FrameSlot& frame);
 
   vk::VulkanContext& context_;
   SandboxScene& scene_;
   bool depth_overlay_enabled_;
-  bool animate_;
-  std::string scene_name_;  // --scene: where the sidecar of saved edits goes
+  bool animate_;                    // --animate; the panels' "play" decides when they exist
+  double animation_seconds_ = 0.0;  // advances only while animation plays
+  std::string scene_name_;          // --scene: where the sidecar of saved edits goes
   double last_time_seconds_ = 0.0;
   SceneRenderer renderer_;
   DepthOverlayPass depth_overlay_;

@@ -62,6 +62,30 @@ void edit_light_parameters(ecs::World& world, ecs::Entity entity) {
   });
 }
 
+enum class Motion { orbit, bob };
+
+// Starts or stops a motion (motions.h) of a light from where it stands: an orbit of 1 m around a
+// point 1 m to its -X, a bob of 0.5 m around its height. Lights keep their place when stopped.
+void set_motion(ecs::World& world, ecs::Entity entity, Motion motion, bool on) {
+  const ecs::LocalTransform* local = world.try_get<ecs::LocalTransform>(entity);
+  if (local == nullptr) return;
+  const glm::vec3 position = local->translation;
+  if (motion == Motion::orbit) {
+    if (!on) {
+      world.remove<scene::OrbitMotion>(entity);
+    } else if (!world.has<scene::OrbitMotion>(entity)) {
+      world.add<scene::OrbitMotion>(entity,
+                                    scene::OrbitMotion{position - glm::vec3(1, 0, 0), 1.0f, 1.0f, 0.0f});
+    }
+  } else {
+    if (!on) {
+      world.remove<scene::BobMotion>(entity);
+    } else if (!world.has<scene::BobMotion>(entity)) {
+      world.add<scene::BobMotion>(entity, scene::BobMotion{position.y, 0.5f, 2.0f, 0.0f});
+    }
+  }
+}
+
 }  // namespace
 
 SandboxUi::SandboxUi(GLFWwindow* window) {
@@ -256,6 +280,21 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
     }
     ImGui::EndListBox();
   }
+  // Every light listed (the type filter applies).
+  for (const auto& [label, motion, on] :
+       {std::tuple{"orbit all", Motion::orbit, true}, std::tuple{"bob all", Motion::bob, true},
+        std::tuple{"stop all", Motion::orbit, false}}) {
+    if (ImGui::Button(label)) {
+      for (const auto& [entity, _] : listed_) {
+        set_motion(world, entity, motion, on);
+        if (!on) set_motion(world, entity, Motion::bob, false);
+      }
+    }
+    ImGui::SameLine();
+  }
+  ImGui::Checkbox("play", &playing_);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("glTF animations, orbits and bobs (--animate sets the start)");
   if (selected_ != ecs::null_entity && world.alive(selected_) && light_type(world, selected_) != 0) {
     ImGui::Separator();
     ImGui::TextUnformatted(type_names[light_type(world, selected_)]);
@@ -269,15 +308,10 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
     ImGui::Checkbox("show map", &show_map_);
     ImGui::SameLine();
     bool orbits = world.has<scene::OrbitMotion>(selected_);
-    if (ImGui::Checkbox("orbit (with --animate on)", &orbits)) {
-      if (orbits) {
-        const glm::vec3 position = world.get<ecs::LocalTransform>(selected_).translation;
-        world.add<scene::OrbitMotion>(selected_,
-                                      scene::OrbitMotion{position - glm::vec3(1, 0, 0), 1.0f, 1.0f, 0.0f});
-      } else {
-        world.remove<scene::OrbitMotion>(selected_);
-      }
-    }
+    if (ImGui::Checkbox("orbit", &orbits)) set_motion(world, selected_, Motion::orbit, orbits);
+    ImGui::SameLine();
+    bool bobs = world.has<scene::BobMotion>(selected_);
+    if (ImGui::Checkbox("bob", &bobs)) set_motion(world, selected_, Motion::bob, bobs);
     if (world.has<ecs::LocalTransform>(selected_)) {
       edit<ecs::LocalTransform>(world, selected_, [](ecs::LocalTransform& local) {
         return ImGui::DragFloat3("position", glm::value_ptr(local.translation), 0.05f);

@@ -2,7 +2,8 @@
 // The sandbox's panels, with Dear ImGui: frame facts (CPU and GPU time, shadow views drawn and
 // kept, shadow memory) and a light editor (pick a light by type and name; edit its position,
 // colour, intensity, range, cone, and every shadow setting: algorithm, biases, PCF radius, light
-// size, density, shadow colour, resolution). Edits are writes to the ECS world like any system's,
+// size, density, shadow colour, resolution; add and remove lights; orbit or bob them; play or
+// pause animation). Edits are writes to the ECS world like any system's,
 // so change ticks and the shadow cache see them. UiPass draws the result.
 //
 // One SandboxUi per ImGui context; with a window, ImGui reads its input through GLFW (the
@@ -76,6 +77,10 @@ class SandboxUi {
   void select(ecs::Entity light) { selected_ = light; }
   void show_map(bool show) { show_map_ = show; }
 
+  // Whether animation plays (the panel's "play"; the frame starts it from --animate).
+  bool playing() const { return playing_; }
+  void set_playing(bool playing) { playing_ = playing; }
+
   // The shadow maps the last build() showed.
   const std::vector<UiDepthView>& depth_views() const { return depth_views_; }
 
@@ -96,6 +101,7 @@ class SandboxUi {
   bool help_ = false;
   bool show_map_ = false;
   bool save_requested_ = false;
+  bool playing_ = true;
   std::vector<UiDepthView> depth_views_;
 };
 

@@ -19,6 +19,7 @@
 #include <glm/glm.hpp>
 
 #include "ecs/world.h"
+#include "systems/scene/motions.h"  // the stress scene's moving entities carry OrbitMotion
 #include "systems/scene/scene.h"
 
 namespace sg::scene {
@@ -39,19 +40,5 @@ Scene build_scene(std::string_view name, const BuiltinSceneParams& params = {});
 
 // A built-in scene when `name_or_path` is one of builtin_scene_names, otherwise load_gltf.
 Scene load_scene(std::string_view name_or_path, const BuiltinSceneParams& params = {});
-
-// Motion of an entity that circles `center` in the horizontal plane (the stress scene's moving
-// lights and crates; any scene may add it).
-struct OrbitMotion {
-  glm::vec3 center{0.0f};
-  float radius = 1.0f;
-  float angular_speed = 1.0f;  // radians per second
-  float phase = 0.0f;          // radians at time 0
-};
-
-// Per-frame system: sets every OrbitMotion entity's LocalTransform translation for `time`
-// seconds (rotation untouched), marking LocalTransform changed so shadow caches see the move.
-// Run ecs::update_world_transforms afterwards.
-void animate_orbits(ecs::World& world, float time);
 
 }  // namespace sg::scene

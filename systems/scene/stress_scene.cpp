@@ -148,12 +148,4 @@ Scene build_stress_scene(const BuiltinSceneParams& params) {
   return scene;
 }
 
-void animate_orbits(ecs::World& world, float time) {
-  world.query<ecs::LocalTransform, const OrbitMotion>().for_each(
-      [time](ecs::LocalTransform& local, const OrbitMotion& orbit) {
-        const float angle = orbit.phase + orbit.angular_speed * time;
-        local.translation = orbit.center + orbit.radius * glm::vec3(std::cos(angle), 0.0f, std::sin(angle));
-      });
-}
-
 }  // namespace sg::scene

@@ -1,6 +1,7 @@
 // Built-in scenes: content, parameters, determinism, animation.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <vector>
 
@@ -123,6 +124,28 @@ TEST(BuiltinScenes, AnimationMovesOnlyOrbitingEntitiesAndMarksThemChanged) {
       });
   EXPECT_GT(changed, 5u);  // moving lights and crates
   EXPECT_EQ(changed, orbiting);
+}
+
+// A bob moves only the height, so it combines with an orbit that sets the rest.
+TEST(Motions, ABobOnAnOrbitMovesTheHeightOnly) {
+  ecs::World world;
+  const ecs::Entity both = world.create();
+  world.add<ecs::LocalTransform>(both, ecs::LocalTransform{glm::vec3(0.0f, 2.0f, 0.0f)});
+  world.add<OrbitMotion>(both, OrbitMotion{glm::vec3(1.0f, 2.0f, 1.0f), 2.0f, 1.0f, 0.0f});
+  world.add<BobMotion>(both, BobMotion{2.0f, 0.5f, 3.0f, 0.25f});
+  const ecs::Entity still = world.create();
+  world.add<ecs::LocalTransform>(still, ecs::LocalTransform{glm::vec3(5.0f)});
+  const ecs::Tick before = world.tick();
+  world.advance_tick();
+  animate_orbits(world, 0.5f);
+  animate_bobs(world, 0.5f);
+  const glm::vec3 at = world.get<ecs::LocalTransform>(both).translation;
+  EXPECT_NEAR(at.x, 1.0f + 2.0f * std::cos(0.5f), 1e-5f);
+  EXPECT_NEAR(at.z, 1.0f + 2.0f * std::sin(0.5f), 1e-5f);
+  EXPECT_NEAR(at.y, 2.0f + 0.5f * std::sin(0.25f + 3.0f * 0.5f), 1e-5f);
+  EXPECT_GE(world.change_tick<ecs::LocalTransform>(both), before + 1);
+  EXPECT_EQ(world.get<ecs::LocalTransform>(still).translation, glm::vec3(5.0f));
+  EXPECT_LT(world.change_tick<ecs::LocalTransform>(still), before + 1);
 }
 
 TEST(BuiltinScenes, UnknownNameAndBadFractionAreRefused) {

@@ -264,6 +264,31 @@ TEST_F(SandboxFrameTest, ThePanelsShowTheSelectedLightsShadowMap) {
   EXPECT_EQ(executed_passes(*frame.plan()).back(), "ui");
 }
 
+// The panels' "play": paused, the moving stress scene writes nothing, so every shadow map is kept.
+TEST_F(SandboxFrameTest, PausedAnimationRedrawsNoShadowMap) {
+  sandbox::Options options = stress(3000, 3, 3, 1.0f);
+  options.ui = true;
+  sandbox::SandboxScene scene = sandbox::load_sandbox_scene(options, float(width) / height);
+  vk::FrameRing frames(context);
+  sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
+  frame.resize({width, height});
+  ASSERT_TRUE(frame.ui()->playing());  // from --animate, on by default
+  int at = 0;
+  const auto views_drawn = [&] {
+    frame.record(frames.begin_frame(), at++ / 60.0);
+    frames.submit();
+    return frame.renderer().shadow_stats().views_rendered;
+  };
+  views_drawn();
+  EXPECT_GT(views_drawn(), 0u);  // every light moves
+  frame.ui()->set_playing(false);
+  views_drawn();
+  EXPECT_EQ(views_drawn(), 0u);
+  frame.ui()->set_playing(true);
+  EXPECT_GT(views_drawn(), 0u);
+  frames.wait_idle();
+}
+
 // --light-heatmap colours the tiles by how many lights light culling kept for them: the default
 // scene's floor is lit everywhere, so most of the picture changes; every-light forward (--naive)
 // has no tiles and so no heat map.

@@ -1,0 +1,24 @@
+#include "systems/scene/motions.h"
+
+#include <cmath>
+
+#include "ecs/transform.h"
+
+namespace sg::scene {
+
+void animate_orbits(ecs::World& world, float time) {
+  world.query<ecs::LocalTransform, const OrbitMotion>().for_each(
+      [time](ecs::LocalTransform& local, const OrbitMotion& orbit) {
+        const float angle = orbit.phase + orbit.angular_speed * time;
+        local.translation = orbit.center + orbit.radius * glm::vec3(std::cos(angle), 0.0f, std::sin(angle));
+      });
+}
+
+void animate_bobs(ecs::World& world, float time) {
+  world.query<ecs::LocalTransform, const BobMotion>().for_each([time](ecs::LocalTransform& local,
+                                                                      const BobMotion& bob) {
+    local.translation.y = bob.base_height + bob.amplitude * std::sin(bob.phase + bob.angular_speed * time);
+  });
+}
+
+}  // namespace sg::scene
