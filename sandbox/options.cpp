@@ -167,8 +167,8 @@ void add_options(CLI::App& app, Options& o) {
                         : value == "deferred" ? LightingPath::deferred
                                               : LightingPath::automatic;
          },
-         "forward: every light at every pixel in one pass; deferred: light lists per screen tile and "
-         "a compute pass per light group; auto: the faster on this kind of device")
+         "Both cull lights per 16x16 screen tile. forward: a depth prepass and one forward pass; "
+         "deferred: a G-buffer and a compute pass per light group; auto: the faster on this kind of device")
       ->check(CLI::IsMember({"auto", "forward", "deferred"}))
       ->default_str("auto");
   CLI::Option* naive = app.add_flag(
@@ -179,6 +179,15 @@ void add_options(CLI::App& app, Options& o) {
       ->excludes("--cube-shadows")
       ->excludes("--shadow-views")
       ->excludes("--shadow-cache");
+  app.add_option_function<std::string>(
+         "--view",
+         [&o](const std::string& value) {
+           o.view = value == "shadows" ? LightingView::shadows : LightingView::lit;
+         },
+         "lit: the picture; shadows: a debug view of white diffuse surfaces under white lights, shadows "
+         "at full density, no ambient")
+      ->check(CLI::IsMember({"lit", "shadows"}))
+      ->default_str("lit");
   app.add_option("--exposure", o.exposure, "Multiplies the lit colour before tone mapping")
       ->check(CLI::Range(1e-3f, 1e3f))
       ->capture_default_str();
@@ -198,7 +207,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option(
          "--script", o.script,
          "Run FILE's commands headless (select NAME, algorithm NAME, resolution N, move X Y Z, camera "
-         "EX,EY,EZ,TX,TY,TZ, wait N, screenshot PATH, save) instead of --frames")
+         "EX,EY,EZ,TX,TY,TZ, view lit|shadows, wait N, screenshot PATH, save) instead of --frames")
       ->excludes("--frames");
   app.add_option_function<std::string>(
          "--ui", [&o](const std::string& value) { o.ui = value == "on"; },

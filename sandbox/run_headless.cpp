@@ -70,6 +70,8 @@ RunRecord run_script(const Options& options, vk::VulkanContext& context, Sandbox
                                        part.cpu_frame_ms.end());
             record.wall_frame_ms.insert(record.wall_frame_ms.end(), part.wall_frame_ms.begin(),
                                         part.wall_frame_ms.end());
+          } else if constexpr (std::is_same_v<Command, ScriptStep::View>) {
+            frame.set_view(command.view);
           } else if constexpr (std::is_same_v<Command, ScriptStep::Save>) {
             frame.save_edits();
           } else if constexpr (std::is_same_v<Command, ScriptStep::Screenshot>) {

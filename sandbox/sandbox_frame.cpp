@@ -60,6 +60,7 @@ RendererSettings renderer_settings(const Options& options) {
   settings.cube_shadows = options.cube_shadows;
   settings.lighting = options.lighting;
   settings.exposure = options.exposure;
+  settings.view = options.view;
   settings.shadow_views = options.shadow_views;
   settings.shadow_raster = options.shadow_raster;
   settings.shadow_memory_bytes = uint64_t{options.shadow_memory_mib} << 20;
@@ -90,6 +91,7 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, cons
   if (options.ui.value_or(window != nullptr)) {
     ui_ = std::make_unique<SandboxUi>(window);
     ui_->set_playing(options.animate);
+    ui_->set_view(options.view);
     ui_pass_ = std::make_unique<UiPass>(context, frame_format, frames_in_flight);
   }
 }
@@ -118,6 +120,7 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
   if (ui_)
     panels = ui_->build(scene_.scene, scene_.pose, ui_facts(), image_.extent(), static_cast<float>(seconds));
   if (ui_ && ui_->take_save_request()) save_edits();
+  if (ui_) renderer_.set_view(ui_->view());
   update(seconds);
   timed(phase_ms_.update);
   renderer_.gather(std::as_const(scene_.scene.world));
@@ -132,6 +135,11 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
   timed(phase_ms_.declare);
   execute(frame);
   timed(phase_ms_.execute);
+}
+
+void SandboxFrame::set_view(LightingView view) {
+  renderer_.set_view(view);
+  if (ui_) ui_->set_view(view);
 }
 
 void SandboxFrame::save_edits() const {

@@ -72,6 +72,8 @@ class SandboxFrame {
   const vk::GraphExecutor& executor() const { return executor_; }
   // Whether the panels take the mouse or keyboard this frame (false without panels).
   bool ui_wants_input() const;
+  // Lit picture or shadow-only view, from the next record() on (the panels' "view" follows).
+  void set_view(LightingView view);
   // Writes the lights and camera beside the scene (scene_sidecar.h), as the panels' save does.
   void save_edits() const;
   // The panels (nullptr without --ui).

@@ -63,6 +63,10 @@ std::vector<ScriptStep> parse_script(const std::string& text, const std::string&
       }
     } else if (command == "wait") {
       step.command = ScriptStep::Wait{number("a whole number of frames, 1 to 100,000", 1, 100'000)};
+    } else if (command == "view") {
+      if (rest != "lit" && rest != "shadows")
+        fail(path, line, "view takes lit or shadows, got \"" + rest + "\"");
+      step.command = ScriptStep::View{rest == "shadows" ? LightingView::shadows : LightingView::lit};
     } else if (command == "save") {
       if (!rest.empty()) fail(path, line, "save takes nothing, got \"" + rest + "\"");
       step.command = ScriptStep::Save{};

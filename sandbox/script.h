@@ -9,7 +9,7 @@
 //   camera EX,EY,EZ,TX,TY,TZ the view, as --camera
 //   wait N                   render N frames (1/60 s each)
 //   screenshot PATH          write the last frame as PNG
-//   save                     write the lights and camera beside the scene (scene_sidecar.h)
+//   view lit|shadows         the picture, or the shadow-only debug view (--view)
 //   save                     write the lights and camera beside the scene (scene_sidecar.h)
 //
 // Edits are ECS writes, as the panels' are. Errors name the file and line.
@@ -20,6 +20,7 @@
 
 #include <glm/glm.hpp>
 
+#include "systems/lighting_path.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/shadow_settings.h"
 
@@ -47,8 +48,11 @@ struct ScriptStep {
   struct Screenshot {
     std::string path;
   };
+  struct View {
+    LightingView view;
+  };
   struct Save {};
-  std::variant<Select, Algorithm, Resolution, Move, Camera, Wait, Screenshot, Save> command;
+  std::variant<Select, Algorithm, Resolution, Move, Camera, Wait, Screenshot, View, Save> command;
   int line = 0;
 };
 

@@ -139,6 +139,8 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
               facts.lights_without_shadow);
   ImGui::Text("shadow views drawn %u, kept %u", facts.views_rendered, facts.views_cached);
   ImGui::Text("shadow atlas %.0f MiB", facts.shadow_mib);
+  constexpr const char* views[] = {"lit", "shadows only"};
+  ImGui::Combo("view", &view_, views, IM_ARRAYSIZE(views));
   gpu_history_[history_next_] = float(facts.gpu_frame_ms);
   history_next_ = (history_next_ + 1) % gpu_history_.size();
   ImGui::PlotLines("GPU ms", gpu_history_.data(), int(gpu_history_.size()), int(history_next_), nullptr, 0.0f,

@@ -19,6 +19,7 @@
 
 #include "ecs/entity.h"
 #include "ecs/world.h"
+#include "systems/lighting_path.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
 #include "systems/shadows/frame_lights.h"
@@ -77,6 +78,10 @@ class SandboxUi {
   void select(ecs::Entity light) { selected_ = light; }
   void show_map(bool show) { show_map_ = show; }
 
+  // The picture the panel's "view" asks for (the frame starts it from --view).
+  LightingView view() const { return static_cast<LightingView>(view_); }
+  void set_view(LightingView view) { view_ = static_cast<int>(view); }
+
   // Whether animation plays (the panel's "play"; the frame starts it from --animate).
   bool playing() const { return playing_; }
   void set_playing(bool playing) { playing_ = playing; }
@@ -102,6 +107,7 @@ class SandboxUi {
   bool show_map_ = false;
   bool save_requested_ = false;
   bool playing_ = true;
+  int view_ = 0;  // a LightingView
   std::vector<UiDepthView> depth_views_;
 };
 

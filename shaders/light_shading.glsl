@@ -9,6 +9,12 @@
 #include "lights_interface.glsl"
 #include "shadow_sampling.glsl"
 
+// The shadow-only debug view (LightingView::shadows): white surfaces under white lights, diffuse
+// only, each light's shadow at full density and no shadow colour: the algorithm's shade as it
+// falls, without textures, colours or highlights in the way.
+// constant_id 0 is left to the including shader's own constant.
+layout(constant_id = 1) const bool SHADOW_ONLY_VIEW = false;
+
 // One light at world_pos. `reach` folds the light's falloff, spot cone and cylinder lambda
 // into its radiance; where it is zero the light adds nothing (not even shadow colour) and its
 // shadow map is not read. The shadow colour term is weighted by lambda as section 2's formula
@@ -45,6 +51,9 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
   if (reach <= 0.0) return vec3(0.0);
 
   float shade = light_shadow_as(light, world_pos, p.normal, dot(p.normal, to_light), shadow_kind, algorithm);
+  if (SHADOW_ONLY_VIEW) {
+    return vec3((1.0 - shade) * light.color_intensity.a * reach * max(dot(p.normal, to_light), 0.0));
+  }
   vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * reach;
   return blinn_light(p, to_light, radiance, shade, light.shadow_color_density.a,
                      lambda * light.shadow_color_density.rgb);

@@ -22,7 +22,8 @@ constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 }  // namespace
 
 ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures)
-    : light_resources_(context),
+    : context_(context),
+      light_resources_(context),
       layout_(context.device(),
               LightResources::bindings(
                   fragment,
@@ -34,13 +35,18 @@ ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
   for (const VkDescriptorSet set : slot_sets_.sets) {
     layout_.write(set).image(material_textures_binding, textures.array().view(), textures.sampler()).update();
   }
-
-  pipeline_ = vk::create_graphics_pipeline(
-      context, camera_pipeline_desc(scene_frag, {vk::to_vk(lit_sum_format)}, layout_.get(), "forward"));
 }
 
 void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer& lights,
-                          const ShadowAtlas& shadow_atlas) {
+                          const ShadowAtlas& shadow_atlas, LightingView view) {
+  view_ = view;
+  vk::UniquePipeline& pipeline = pipelines_[static_cast<uint32_t>(view)];
+  if (!pipeline) {
+    vk::GraphicsPipelineDesc desc =
+        camera_pipeline_desc(scene_frag, {vk::to_vk(lit_sum_format)}, layout_.get(), "forward");
+    desc.fragment_specialization = {0, static_cast<uint32_t>(view)};  // light_shading.glsl's constant 1
+    pipeline = vk::create_graphics_pipeline(context_, desc);
+  }
   const vk::Image& atlas = shadow_atlas.image();
   const VkImageView atlas_view =
       atlas.views().get({0, 1, 0, atlas.array_layers(), VK_IMAGE_VIEW_TYPE_2D_ARRAY});
@@ -63,8 +69,9 @@ ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, uint32_t width, uint3
             b.write(b.create_image("lit sum", {width, height, lit_sum_format}), rg::Usage::colour_attachment,
                     rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
       },
-      [this, &scene, slot, constants](const vk::PassRecorder& rec) {
-        scene.draw_camera_pass(rec, pipeline_.get(), layout_, slot_sets_.sets[slot], constants, slot);
+      [this, &scene, slot, constants,
+       pipeline = pipelines_[static_cast<uint32_t>(view_)].get()](const vk::PassRecorder& rec) {
+        scene.draw_camera_pass(rec, pipeline, layout_, slot_sets_.sets[slot], constants, slot);
       });
   return targets;
 }

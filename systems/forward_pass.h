@@ -2,12 +2,14 @@
 // Forward lighting: every drawable of the GpuScene shaded by ambient plus every light of the
 // frame at every pixel, each light with its own shadow algorithm and parameters
 // (shaders/scene.frag, shaders/light_shading.glsl), into a lit sum and a depth buffer it creates.
+#include <array>
 #include <cstdint>
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/light_resources.h"
+#include "systems/lighting_path.h"
 #include "systems/scene_gpu_types.h"
 
 namespace sg::vk {
@@ -34,9 +36,10 @@ class ForwardPass {
   ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);
 
   // CPU side of a frame, after FrameRing::begin_frame returned `slot`: points the slot's
-  // descriptor set at this frame's instances, light records and shadow images.
+  // descriptor set at this frame's instances, light records and shadow images, and makes the
+  // pipeline for `view` if it has not yet.
   void prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer& lights,
-               const ShadowAtlas& shadow_atlas);
+               const ShadowAtlas& shadow_atlas, LightingView view);
 
   // Adds the pass: samples `atlas` (the shadow atlas's newest version), draws every
   // instance into a new lit sum and depth buffer of `width` x `height`. `scene` is read when the
@@ -45,10 +48,12 @@ class ForwardPass {
                         const GpuScene& scene, uint32_t slot, const FrameConstants& constants) const;
 
  private:
+  vk::VulkanContext& context_;
   LightResources light_resources_;
   vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;
-  vk::UniquePipeline pipeline_;
+  std::array<vk::UniquePipeline, 2> pipelines_;  // by LightingView
+  LightingView view_ = LightingView::lit;
 };
 
 }  // namespace sg

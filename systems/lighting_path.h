@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <string_view>
 
 namespace sg {
@@ -11,6 +12,10 @@ namespace sg {
 // - every_light: one forward pass with every light at every pixel (the --naive baseline);
 // - automatic: whichever measured faster on the device's kind (SceneRenderer says which).
 enum class LightingPath { automatic, forward, deferred, every_light };
+
+// What the lighting writes: the lit picture, or the shadow-only debug view (white diffuse surfaces
+// under white lights of the same intensities, shadows at full density, no ambient).
+enum class LightingView : uint32_t { lit = 0, shadows = 1 };
 
 constexpr std::string_view lighting_path_name(LightingPath path) {
   switch (path) {

@@ -88,11 +88,11 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   if (per_light_) {
     per_light_->prepare(slot, lights_, gpu_scene_, page_size, settings_.cube_shadows, settings_.cull_casters);
   }
-  if (every_light_) every_light_->prepare(slot, gpu_scene_, records, atlas_);
-  if (tiled_forward_) tiled_forward_->forward.prepare(lights_.group_begin);
+  if (every_light_) every_light_->prepare(slot, gpu_scene_, records, atlas_, settings_.view);
+  if (tiled_forward_) tiled_forward_->forward.prepare(lights_.group_begin, settings_.view);
   if (deferred_) {
     deferred_->gbuffer.prepare(slot, gpu_scene_);
-    deferred_->lighting.prepare(lights_.group_begin);
+    deferred_->lighting.prepare(lights_.group_begin, settings_.view);
   }
 }
 
@@ -108,7 +108,8 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
       projection_matrix(lens, float(target.width) / float(target.height)) * view_matrix(pose);
   const auto light_count = static_cast<uint32_t>(lights_.records.size());
   const LightTileGrid grid = LightTileGrid::of(target.width, target.height);
-  const FrameConstants constants{view_projection, glm::vec4(pose.eye, ambient),
+  const float ambient_term = settings_.view == LightingView::lit ? ambient : 0.0f;
+  const FrameConstants constants{view_projection, glm::vec4(pose.eye, ambient_term),
                                  glm::uvec4(light_count, grid.across, 0, 0)};
   const vk::Buffer& records = light_records_.buffer(slot);
 

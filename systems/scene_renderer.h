@@ -55,6 +55,7 @@ struct RendererSettings {
   uint32_t shadow_view_budget = shadows::default_shadow_view_budget;  // views redrawn a frame; 0: all due
   bool cache_shadows = true;  // off: every map is redrawn every frame (within the view budget)
   float exposure = 1.0f;      // multiplies the lit sum before tone mapping
+  LightingView view = LightingView::lit;
 };
 
 struct RenderedFrame {
@@ -105,6 +106,8 @@ class SceneRenderer {
   // the per-light passes' CPU culling.
   uint64_t shadow_caster_draws() const;
   const RendererSettings& settings() const { return settings_; }
+  // Switches the picture between lit and shadow-only from the next prepare() on.
+  void set_view(LightingView view) { settings_.view = view; }
 
  private:
   RendererSettings settings_;

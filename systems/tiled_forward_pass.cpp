@@ -17,6 +17,11 @@ using namespace bindings;
 constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 
+// Groups take the low light_group_count bits.
+uint32_t pipeline_key(uint32_t groups_present, LightingView view) {
+  return groups_present | static_cast<uint32_t>(view) << 16;
+}
+
 }  // namespace
 
 TiledForwardPass::TiledForwardPass(vk::VulkanContext& context, const GpuTextures& textures)
@@ -43,16 +48,18 @@ TiledForwardPass::TiledForwardPass(vk::VulkanContext& context, const GpuTextures
   depth_pipeline_ = vk::create_graphics_pipeline(context, desc);
 }
 
-void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin) {
+void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
+                               LightingView view) {
+  view_ = view;
   groups_present_ = 0;
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     if (group_begin[group + 1] > group_begin[group]) groups_present_ |= 1u << group;
   }
-  vk::UniquePipeline& pipeline = pipelines_[groups_present_];
+  vk::UniquePipeline& pipeline = pipelines_[pipeline_key(groups_present_, view)];
   if (pipeline) return;
   vk::GraphicsPipelineDesc desc = camera_pipeline_desc(
       scene_tiled_frag, {vk::to_vk(ForwardPass::lit_sum_format)}, layout_.get(), "tiled forward");
-  desc.fragment_specialization = {groups_present_};
+  desc.fragment_specialization = {groups_present_, static_cast<uint32_t>(view)};
   // depth_prepass.vert computed the same positions: draw only what the prepass kept.
   desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
   desc.depth_write = false;
@@ -96,7 +103,7 @@ ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
                     rg::Usage::colour_attachment, rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
       },
       [this, &scene, &lights, slot, constants, tiles, atlas,
-       pipeline = pipelines_.at(groups_present_).get()](const vk::PassRecorder& rec) {
+       pipeline = pipelines_.at(pipeline_key(groups_present_, view_)).get()](const vk::PassRecorder& rec) {
         vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
         writer.buffer(instances_binding, scene.instances(slot).handle())
             .image(material_textures_binding, textures_.array().view(), textures_.sampler())

@@ -13,6 +13,7 @@
 #include "systems/forward_pass.h"
 #include "systems/light_resources.h"
 #include "systems/light_tiles_pass.h"
+#include "systems/lighting_path.h"
 #include "systems/scene_gpu_types.h"
 #include "systems/shadows/light_groups.h"
 
@@ -31,8 +32,9 @@ class TiledForwardPass {
   // `textures` must outlive the pass.
   TiledForwardPass(vk::VulkanContext& context, const GpuTextures& textures);
 
-  // Makes the pipeline for the groups that have lights (group_begin as in shadows::FrameLights).
-  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin);
+  // Makes the pipeline for the groups that have lights (group_begin as in shadows::FrameLights)
+  // and `view`.
+  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view);
 
   // The depth prepass: every drawable's depth into a new D32 image of `width` x `height`.
   rg::ImageHandle add_depth_prepass(rg::RenderGraph& graph, uint32_t width, uint32_t height,
@@ -53,8 +55,9 @@ class TiledForwardPass {
   // The prepass binds only the instances: a set with unwritten descriptors is not bindable.
   vk::PipelineLayout depth_layout_;
   vk::UniquePipeline depth_pipeline_;
-  std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;  // by groups present
+  std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;  // by pipeline_key
   uint32_t groups_present_ = 0;
+  LightingView view_ = LightingView::lit;
 };
 
 }  // namespace sg

@@ -48,11 +48,16 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context)
                             {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}}),
               vk::push_constants<LightingConstants>(compute)) {}
 
-void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin) {
+void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
+                                LightingView view) {
+  view_ = view;
+  auto& pipelines = pipelines_[static_cast<uint32_t>(view)];
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
-    if (group_begin[group + 1] == group_begin[group] || pipelines_[group]) continue;
-    pipelines_[group] = vk::create_compute_pipeline(
-        context_, {tiled_lighting_comp, {group}, layout_.get(), "tiled lighting " + group_name(group)});
+    if (group_begin[group + 1] == group_begin[group] || pipelines[group]) continue;
+    pipelines[group] = vk::create_compute_pipeline(context_, {tiled_lighting_comp,
+                                                              {group, static_cast<uint32_t>(view)},
+                                                              layout_.get(),
+                                                              "tiled lighting " + group_name(group)});
   }
 }
 
@@ -79,7 +84,8 @@ rg::ImageHandle TiledLightingPass::add_to(
           b.read(tiles.dispatch, rg::Usage::indirect);
           lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
         },
-        [this, group, gbuffer, tiles, atlas, lit_sum, &lights, constants](const vk::PassRecorder& rec) {
+        [this, group, gbuffer, tiles, atlas, lit_sum, &lights, constants,
+         pipeline = pipelines_[static_cast<uint32_t>(view_)][group].get()](const vk::PassRecorder& rec) {
           const VkSampler nearest = nearest_.get();
           vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
           writer.image(gbuffer_position_binding, rec.view(gbuffer.position), nearest)
@@ -90,7 +96,7 @@ rg::ImageHandle TiledLightingPass::add_to(
               .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
               .buffer(group_tiles_binding, rec.buffer(tiles.tiles));
           const VkDescriptorSet set = light_resources_.write(writer, lights.handle(), rec, atlas).update();
-          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[group].get());
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
           layout_.bind_compute(rec.cmd(), set);
           layout_.push(rec.cmd(), constants);
           vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.dispatch), group * sizeof(glm::uvec4));

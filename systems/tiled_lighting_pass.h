@@ -13,6 +13,7 @@
 #include "systems/gbuffer_pass.h"
 #include "systems/light_resources.h"
 #include "systems/light_tiles_pass.h"
+#include "systems/lighting_path.h"
 #include "systems/shadows/light_groups.h"
 
 namespace sg::vk {
@@ -29,7 +30,8 @@ class TiledLightingPass {
   // Compiles the pipelines of the groups that have lights (group_begin as in
   // shadows::FrameLights) and that it has not compiled yet: each holds one algorithm's shadow
   // code, and a scene rarely uses all eleven.
-  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin);
+  // The pipelines are made for `view`, which add_to then uses.
+  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view);
 
   // Adds one pass per group with lights (group_begin as in shadows::FrameLights) and returns the
   // lit sum's newest version. `lights` must live until the frame is recorded.
@@ -43,7 +45,9 @@ class TiledLightingPass {
   LightResources light_resources_;
   vk::UniqueSampler nearest_;  // G-buffer reads
   vk::PipelineLayout layout_;
-  std::array<vk::UniquePipeline, shadows::light_group_count> pipelines_;
+  // By LightingView, then group.
+  std::array<std::array<vk::UniquePipeline, shadows::light_group_count>, 2> pipelines_;
+  LightingView view_ = LightingView::lit;
 };
 
 }  // namespace sg

@@ -19,9 +19,10 @@ TEST(Script, ParsesEveryCommandAndSkipsCommentsAndBlankLines) {
       "move 1 2.5 -3\n"
       "camera 0,12,0,0,0,0\n"
       "wait 5\n"
-      "screenshot out dir/shot.png\n",
+      "screenshot out dir/shot.png\n"
+      "view shadows\n",
       "test.txt");
-  ASSERT_EQ(steps.size(), 7u);
+  ASSERT_EQ(steps.size(), 8u);
   EXPECT_EQ(std::get<ScriptStep::Select>(steps[0].command).name, "spot east");
   EXPECT_EQ(steps[0].line, 2);
   EXPECT_EQ(std::get<ScriptStep::Algorithm>(steps[1].command).algorithm, scene::ShadowAlgorithm::pcss_noise);
@@ -31,6 +32,7 @@ TEST(Script, ParsesEveryCommandAndSkipsCommentsAndBlankLines) {
   EXPECT_EQ(std::get<ScriptStep::Wait>(steps[5].command).frames, 5u);
   EXPECT_EQ(std::get<ScriptStep::Screenshot>(steps[6].command).path, "out dir/shot.png");
   EXPECT_EQ(steps[6].line, 9);
+  EXPECT_EQ(std::get<ScriptStep::View>(steps[7].command).view, LightingView::shadows);
 }
 
 TEST(Script, ErrorsNameTheFileAndLine) {
@@ -51,6 +53,7 @@ TEST(Script, ErrorsNameTheFileAndLine) {
             "run.txt:1: resolution takes a whole number of texels, 16 to 4096, got \"8\"");
   EXPECT_EQ(error_of("move 1 2"), "run.txt:1: move takes three numbers, got \"1 2\"");
   EXPECT_EQ(error_of("select"), "run.txt:1: select takes a light's name");
+  EXPECT_EQ(error_of("view depth"), "run.txt:1: view takes lit or shadows, got \"depth\"");
   EXPECT_NE(error_of("camera 1,2,3,1,2,3").find("run.txt:1: "), std::string::npos);
   EXPECT_THROW(load_script("/nonexistent/script.txt"), std::runtime_error);
 }

@@ -149,6 +149,32 @@ TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
   EXPECT_LE(largest_difference(baseline, deferred), 2);
 }
 
+// The shadow-only view: white surfaces under white light, so every pixel is grey but the
+// background (the clear colour, as in the top-left corner), on every lighting path alike, and
+// unlike the lit picture.
+TEST_F(SandboxFrameTest, TheShadowOnlyViewIsGreyOnEveryLightingPath) {
+  const auto grey_fraction = [](const vk::Rgba8Image& image) {
+    size_t grey = 0;
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+      const int r = image.pixels[i], g = image.pixels[i + 1], b = image.pixels[i + 2];
+      grey += (std::abs(r - g) <= 1 && std::abs(g - b) <= 1) ||
+              std::equal(&image.pixels[i], &image.pixels[i + 3], image.at(0, 0));
+    }
+    return double(grey) / double(image.pixels.size() / 4);
+  };
+  const vk::Rgba8Image lit = render(lit_by(LightingPath::deferred), 1);
+  std::vector<vk::Rgba8Image> views;
+  for (const LightingPath path : {LightingPath::deferred, LightingPath::forward, LightingPath::every_light}) {
+    sandbox::Options options = lit_by(path);
+    options.view = LightingView::shadows;
+    views.push_back(render(options, 1));
+  }
+  EXPECT_EQ(grey_fraction(views[0]), 1.0);
+  EXPECT_LT(grey_fraction(lit), 0.5);
+  EXPECT_LE(largest_difference(views[0], views[1]), 2);
+  EXPECT_LE(largest_difference(views[0], views[2]), 2);
+}
+
 TEST_F(SandboxFrameTest, SixPassCubesRenderTheSamePictureAsLayeredCubes) {
   sandbox::Options layered;
   layered.shadow_views = shadows::ShadowViewPath::per_light;
