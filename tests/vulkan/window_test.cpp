@@ -52,6 +52,33 @@ TEST_F(WindowTest, SwapchainFollowsWindowResize) {
   EXPECT_EQ(session.context().validation_errors(), 0u);
 }
 
+// The sandbox's window as a person treats it: resized smaller and larger, minimized and
+// restored, with the panels on, every frame under validation. Without a window manager (plain
+// Xvfb, as in CI) iconifying does nothing, so there the minimized state is covered by the
+// zero-sized swapchain test below.
+TEST_F(WindowTest, TheSandboxSurvivesResizeMinimizeAndRestore) {
+  sandbox::Options options;
+  options.width = 200;
+  options.height = 150;
+  options.validation = true;
+  options.ui = true;
+  sandbox::WindowSession session(options);
+  ASSERT_EQ(render_until_rendered(session), sandbox::FrameResult::rendered);
+  for (const auto& [w, h] : {std::pair{120, 90}, std::pair{333, 211}, std::pair{64, 300}}) {
+    glfwSetWindowSize(session.window(), w, h);
+    for (int i = 0; i < 50 && session.swapchain_extent().width != uint32_t(w); ++i) session.frame();
+    EXPECT_EQ(session.swapchain_extent().width, uint32_t(w));
+    EXPECT_EQ(session.swapchain_extent().height, uint32_t(h));
+    EXPECT_EQ(render_until_rendered(session), sandbox::FrameResult::rendered);
+  }
+  glfwIconifyWindow(session.window());
+  for (int i = 0; i < 5; ++i) session.frame();
+  glfwRestoreWindow(session.window());
+  EXPECT_EQ(render_until_rendered(session), sandbox::FrameResult::rendered);
+  session.finish();
+  EXPECT_EQ(session.context().validation_errors(), 0u);
+}
+
 // A minimized window has a zero-sized framebuffer: the swapchain must go away rather than
 // fail, and come back when the window does.
 TEST_F(WindowTest, ZeroExtentDropsTheSwapchainUntilRestored) {
