@@ -1,7 +1,7 @@
 #pragma once
 // The window's fly camera: right mouse to look, W A S D to move, Q E down and up, the wheel for
-// speed, F to frame the scene. Plain data and a function over it, so it is tested without a
-// window; WindowSession reads the input from GLFW.
+// speed, F to frame a box (the selected light's reach, or the scene). Plain data and a function over it, so
+// it is tested without a window; WindowSession reads the input from GLFW.
 #include <glm/glm.hpp>
 
 #include "systems/scene/aabb.h"
@@ -15,7 +15,7 @@ struct FlyInput {
   glm::vec2 mouse_delta{0.0f};  // pixels the cursor moved since the last frame (y down)
   glm::vec3 move{0.0f};         // each in -1..1: x right (D - A), y up (E - Q), z forward (W - S)
   float scroll = 0.0f;          // wheel steps since the last frame (up: faster)
-  bool frame_scene = false;     // F was pressed
+  bool frame_scene = false;     // F was pressed: frame the box fly() is given
 };
 
 struct FlyCamera {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <string>
 #include <unordered_map>
 
@@ -60,6 +61,23 @@ void edit_light_parameters(ecs::World& world, ecs::Entity entity) {
     }
     return changed;
   });
+}
+
+// A light's direction as yaw (about +Y, from -Z) and pitch (from the horizon), in degrees: two
+// numbers a person can drag. It rewrites the local rotation, keeping the light's up upright.
+void edit_direction(ecs::World& world, ecs::Entity entity) {
+  edit<ecs::LocalTransform>(world, entity, [](ecs::LocalTransform& local) {
+    const glm::vec3 d = local.rotation * glm::vec3(0.0f, 0.0f, -1.0f);
+    glm::vec2 angles(glm::degrees(std::atan2(d.x, -d.z)),
+                     glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f))));
+    if (!ImGui::DragFloat2("direction", glm::value_ptr(angles), 0.5f)) return false;
+    const float yaw = glm::radians(angles.x);
+    const float pitch = glm::radians(std::clamp(angles.y, -90.0f, 90.0f));
+    const glm::vec3 to(std::sin(yaw) * std::cos(pitch), std::sin(pitch), -std::cos(yaw) * std::cos(pitch));
+    local.rotation = scene::look_rotation(local.translation, local.translation + to);
+    return true;
+  });
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("yaw and pitch, degrees");
 }
 
 enum class Motion { orbit, bob };
@@ -216,7 +234,7 @@ void SandboxUi::help_panel() {
       "W A S D              move\n"
       "Q E                  down, up\n"
       "mouse wheel          speed\n"
-      "F                    frame the scene\n"
+      "F                    frame the selected light, or the scene\n"
       "P                    screenshot (shadowgraph-N.png)\n"
       "F1                   this help\n"
       "Esc                  quit");
@@ -319,6 +337,8 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
         return ImGui::DragFloat3("position", glm::value_ptr(local.translation), 0.05f);
       });
     }
+    if (light_type(world, selected_) > 1 && world.has<ecs::LocalTransform>(selected_))
+      edit_direction(world, selected_);  // every light but the point light has one
     switch (light_type(world, selected_)) {
       case 1: edit_light_parameters<scene::PointLight>(world, selected_); break;
       case 2: edit_light_parameters<scene::SpotLight>(world, selected_); break;
@@ -350,6 +370,18 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
     });
   }
   ImGui::End();
+}
+
+scene::Aabb SandboxUi::selection_bounds(const ecs::World& world) const {
+  if (selected_ == ecs::null_entity || !world.alive(selected_)) return {};
+  const ecs::WorldTransform* transform = world.try_get<ecs::WorldTransform>(selected_);
+  if (transform == nullptr) return {};
+  float reach = 1.0f;
+  if (const auto* point = world.try_get<scene::PointLight>(selected_)) reach = point->range;
+  if (const auto* spot = world.try_get<scene::SpotLight>(selected_)) reach = spot->range;
+  const glm::vec3 centre = scene::light_position(*transform);
+  const glm::vec3 half(std::clamp(reach, 1.0f, 10.0f));
+  return {centre - half, centre + half};
 }
 
 }  // namespace sg::sandbox

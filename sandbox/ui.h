@@ -20,6 +20,7 @@
 #include "ecs/entity.h"
 #include "ecs/world.h"
 #include "systems/lighting_path.h"
+#include "systems/scene/aabb.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
 #include "systems/shadows/frame_lights.h"
@@ -85,6 +86,10 @@ class SandboxUi {
   // Whether animation plays (the panel's "play"; the frame starts it from --animate).
   bool playing() const { return playing_; }
   void set_playing(bool playing) { playing_ = playing; }
+
+  // What F frames: the selected light's reach (range clamped to 1..10 m, 1 m without one), or
+  // an empty box when no light is selected.
+  scene::Aabb selection_bounds(const ecs::World& world) const;
 
   // The shadow maps the last build() showed.
   const std::vector<UiDepthView>& depth_views() const { return depth_views_; }

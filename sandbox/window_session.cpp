@@ -136,7 +136,11 @@ FrameResult WindowSession::frame() {
   const double now = glfwGetTime();
   FlyInput input = fly_input();
   if (frame_->ui_wants_input()) input = FlyInput{};  // the panels have the mouse or keyboard
-  const scene::Aabb bounds = input.frame_scene ? scene::scene_bounds(scene_.scene) : scene::Aabb{};
+  scene::Aabb bounds;
+  if (input.frame_scene) {
+    if (frame_->ui() != nullptr) bounds = frame_->ui()->selection_bounds(scene_.scene.world);
+    if (bounds.empty()) bounds = scene::scene_bounds(scene_.scene);
+  }
   fly(fly_camera_, scene_.pose, input, static_cast<float>(now - last_frame_seconds_), bounds,
       scene_.lens.yfov);
   last_frame_seconds_ = now;

@@ -30,7 +30,7 @@ enum class FrameResult { rendered, minimized, swapchain_recreated, closed };
 
 // glfwInit must have succeeded before a session is created.
 // Esc closes the window, P writes shadowgraph-N.png in the working folder; the fly camera
-// (fly_camera.h) moves the view.
+// (fly_camera.h) moves the view, and F frames the light selected in the panels, or the scene.
 class WindowSession {
  public:
   explicit WindowSession(const Options& options);
