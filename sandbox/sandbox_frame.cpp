@@ -87,11 +87,14 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, cons
       renderer_(context, scene.scene, frames_in_flight, frame_format, renderer_settings(options)),
       depth_overlay_(context, frame_format),
       executor_(context, frames_in_flight) {
-  if (options.light_heatmap) light_heatmap_.emplace(context, frame_format);
-  if (options.ui.value_or(window != nullptr)) {
+  // The panels switch the heat map on and off, so with them it is always ready.
+  const bool panels = options.ui.value_or(window != nullptr);
+  if (options.light_heatmap || panels) light_heatmap_.emplace(context, frame_format);
+  if (panels) {
     ui_ = std::make_unique<SandboxUi>(window);
     ui_->set_playing(options.animate);
     ui_->set_view(options.view);
+    ui_->set_light_heatmap(options.light_heatmap);
     ui_pass_ = std::make_unique<UiPass>(context, frame_format, frames_in_flight);
   }
 }
@@ -195,8 +198,8 @@ void SandboxFrame::declare_passes(uint32_t slot, const std::optional<PresentTarg
       renderer_.add_passes(graph_, imports_, frame_image, slot, scene_.pose, scene_.lens);
   rg::ImageHandle colour = targets.colour;
   if (depth_overlay_enabled_) colour = depth_overlay_.add_to(graph_, targets.depth, colour, scene_.lens);
-  if (light_heatmap_ && targets.light_tiles)
-    colour = light_heatmap_->add_to(graph_, *targets.light_tiles, colour);
+  const bool heatmap = ui_ ? ui_->light_heatmap() : light_heatmap_.has_value();
+  if (heatmap && targets.light_tiles) colour = light_heatmap_->add_to(graph_, *targets.light_tiles, colour);
   if (ui_pass_) colour = ui_pass_->add_to(graph_, colour, targets.shadow_atlas, slot);
   if (present) add_present(graph_, imports_, colour, *present);
 }

@@ -104,7 +104,7 @@ class SandboxFrame {
   double last_time_seconds_ = 0.0;
   SceneRenderer renderer_;
   DepthOverlayPass depth_overlay_;
-  std::optional<LightHeatmapPass> light_heatmap_;  // with --light-heatmap
+  std::optional<LightHeatmapPass> light_heatmap_;  // with --light-heatmap or the panels
   std::unique_ptr<SandboxUi> ui_;                  // with --ui
   std::unique_ptr<UiPass> ui_pass_;
   vk::GraphExecutor executor_;

@@ -83,6 +83,10 @@ class SandboxUi {
   LightingView view() const { return static_cast<LightingView>(view_); }
   void set_view(LightingView view) { view_ = static_cast<int>(view); }
 
+  // Whether the light-count heat map is drawn (the panel's checkbox; from --light-heatmap).
+  bool light_heatmap() const { return light_heatmap_; }
+  void set_light_heatmap(bool on) { light_heatmap_ = on; }
+
   // Whether animation plays (the panel's "play"; the frame starts it from --animate).
   bool playing() const { return playing_; }
   void set_playing(bool playing) { playing_ = playing; }
@@ -113,6 +117,7 @@ class SandboxUi {
   bool save_requested_ = false;
   bool playing_ = true;
   int view_ = 0;  // a LightingView
+  bool light_heatmap_ = false;
   std::vector<UiDepthView> depth_views_;
 };
 
