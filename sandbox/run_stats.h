@@ -16,7 +16,9 @@
 //   "cpu_frame_ms": {"median": 1.5, "min": 1.2, "max": 3.0},  // null when no frame ran; CPU
 //                                                // time per frame without waits for the GPU
 //   "cpu_phases_ms": {"update": {...}, "gather": {...}, "prepare": {...}, "declare": {...},
-//                     "execute": {...}},         // the CPU frame by phase (SandboxFrame::record)
+//                     "execute": {...},          // the CPU frame by phase (SandboxFrame::record)
+//                     "gather_instances": {...}, "gather_lights": {...},  // within gather
+//                     "prepare_schedule": {...}, "prepare_upload": {...}},  // within prepare
 //   "wall_frame_ms": {...},                      // elapsed time per frame, waits included:
 //                                                // present to present in a window, frame start
 //                                                // to frame start headless; null under 2 frames
@@ -74,6 +76,8 @@ struct RunStats {
   std::optional<TimeSummary> cpu_frame_ms;
   struct CpuPhases {
     std::optional<TimeSummary> update, gather, prepare, declare, execute;
+    // Within gather and prepare (SceneRenderer::CpuSteps).
+    std::optional<TimeSummary> instances, lights, schedule, upload;
   } cpu_phases_ms;
   std::optional<TimeSummary> wall_frame_ms;
   std::string lighting;

@@ -131,6 +131,11 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
   renderer_.prepare(frame.slot, scene_.pose, scene_.lens, image_.extent().width, image_.extent().height);
   if (ui_pass_) ui_pass_->prepare(frame.slot, panels, ui_->depth_views());
   timed(phase_ms_.prepare);
+  const SceneRenderer::CpuSteps& steps = renderer_.cpu_steps();
+  phase_ms_.instances.push_back(steps.instances);
+  phase_ms_.lights.push_back(steps.lights);
+  phase_ms_.schedule.push_back(steps.schedule);
+  phase_ms_.upload.push_back(steps.upload);
   const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
   shadow_views_rendered_.push_back(shadows.views_rendered);
   shadow_views_cached_.push_back(shadows.views_cached);

@@ -79,9 +79,11 @@ class SandboxFrame {
   // The panels (nullptr without --ui).
   SandboxUi* ui() { return ui_.get(); }
 
-  // Per recorded frame: CPU milliseconds of each phase of record().
+  // Per recorded frame: CPU milliseconds of each phase of record(), and of the renderer's steps
+  // within gather and prepare (SceneRenderer::CpuSteps).
   struct PhaseTimes {
     std::vector<double> update, gather, prepare, declare, execute;
+    std::vector<double> instances, lights, schedule, upload;
   };
   const PhaseTimes& phase_ms() const { return phase_ms_; }
   // Per recorded frame: shadow views (2D maps, cube faces) drawn, and kept from earlier frames.

@@ -1,8 +1,10 @@
 #include "systems/scene_renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <span>
+#include <utility>
 
 #include "systems/camera.h"
 
@@ -15,6 +17,12 @@ constexpr rg::ResourceState sampled{rg::PipelineStage::fragment_shader | rg::Pip
 
 // Tiled deferred measured fastest on both lavapipe and the H200 (docs/PERFORMANCE.md).
 constexpr LightingPath fastest_lighting = LightingPath::deferred;
+
+// Milliseconds since `mark`, which moves to now.
+double lap(std::chrono::steady_clock::time_point& mark) {
+  const auto now = std::chrono::steady_clock::now();
+  return std::chrono::duration<double, std::milli>(now - std::exchange(mark, now)).count();
+}
 
 }  // namespace
 
@@ -47,12 +55,16 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
 }
 
 void SceneRenderer::gather(const ecs::World& world) {
+  auto mark = std::chrono::steady_clock::now();
   gpu_scene_.gather(world, &workers_);
+  cpu_steps_.instances = lap(mark);
   shadows::gather_lights(world, gpu_scene_.bounds(), settings_.lights, lights_, &workers_);
+  cpu_steps_.lights = lap(mark);
 }
 
 void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens,
                             uint32_t width, uint32_t height) {
+  auto mark = std::chrono::steady_clock::now();
   if (!settings_.cache_shadows) schedule_.invalidate_all();
   if (batch_ && !batch_->all_casters_kept(slot)) {
     std::printf(
@@ -80,6 +92,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     std::printf("shadowgraph: %s\n", message->c_str());
   }
   shadows::sort_by_group(lights_);
+  cpu_steps_.schedule = lap(mark);
 
   gpu_scene_.upload(slot);
   const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
@@ -94,6 +107,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     deferred_->gbuffer.prepare(slot, gpu_scene_);
     deferred_->lighting.prepare(lights_.group_begin, settings_.view);
   }
+  cpu_steps_.upload = lap(mark);
 }
 
 RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports& imports,

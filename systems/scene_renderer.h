@@ -109,6 +109,15 @@ class SceneRenderer {
   // Switches the picture between lit and shadow-only from the next prepare() on.
   void set_view(LightingView view) { settings_.view = view; }
 
+  // CPU milliseconds of the last gather() and prepare(), by step: where a CPU frame goes.
+  struct CpuSteps {
+    double instances = 0.0;  // gather: drawables (GpuScene::gather)
+    double lights = 0.0;     // gather: light records and shadow views (gather_lights)
+    double schedule = 0.0;   // prepare: caster boxes, tiles, caching, sorting by light group
+    double upload = 0.0;     // prepare: buffers, batches and descriptor sets of the slot
+  };
+  const CpuSteps& cpu_steps() const { return cpu_steps_; }
+
  private:
   RendererSettings settings_;
   LightingPath lighting_;
@@ -120,6 +129,7 @@ class SceneRenderer {
   std::optional<ShadowViewBatch> batch_;
   std::optional<ShadowPasses> per_light_;
   std::vector<shadows::CasterBounds> casters_;
+  CpuSteps cpu_steps_;
   // The passes of the path in use only: a CPU driver compiles a pipeline slowly.
   struct TiledForward {
     TiledForwardPass forward;
