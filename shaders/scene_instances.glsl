@@ -7,7 +7,6 @@
 
 struct Instance {
   mat4 model;
-  mat4 normal_matrix;       // inverse transpose of the model matrix
   vec4 base_color_specular; // rgb: base colour, a: specular strength kS
   vec4 material;            // x: Blinn shininess s, y: base colour texture index or -1
 };

@@ -53,8 +53,9 @@ class GpuScene {
   // instance_bounds() describe them from here on. Transforms must be up to date
   // (ecs::update_world_transforms). With `pool`, the per-instance work runs on its threads.
   void gather(const ecs::World& world, ecs::ThreadPool* pool = nullptr);
-  // Writes what gather() found into the slot's instance and indirect-draw buffers.
-  void upload(uint32_t slot);
+  // Writes what gather() found into the slot's instance and indirect-draw buffers (with `pool`,
+  // the copy runs on its threads).
+  void upload(uint32_t slot, ecs::ThreadPool* pool = nullptr);
 
   // Binds the vertex and index buffers (scene::Vertex at binding 0, 32-bit indices); false when
   // the scene has no geometry, and nothing may be drawn.

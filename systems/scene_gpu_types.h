@@ -6,12 +6,11 @@
 namespace sg {
 
 struct GpuInstance {
-  glm::mat4 model;
-  glm::mat4 normal_matrix;
+  glm::mat4 model;  // the normal matrix is derived from it where needed (scene.vert)
   glm::vec4 base_color_specular;
   glm::vec4 material;  // x: shininess, y: base colour texture index or -1
 };
-static_assert(sizeof(GpuInstance) == 160);
+static_assert(sizeof(GpuInstance) == 96);
 
 struct FrameConstants {
   glm::mat4 view_projection;

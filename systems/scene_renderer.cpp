@@ -94,7 +94,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   shadows::sort_by_group(lights_);
   cpu_steps_.schedule = lap(mark);
 
-  gpu_scene_.upload(slot);
+  gpu_scene_.upload(slot, &workers_);
   const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
   const uint32_t page_size = atlas_.shape().page_size;
   if (batch_) batch_->prepare(slot, lights_, gpu_scene_, page_size);

@@ -32,9 +32,11 @@ class FrameBuffers {
 
   const Buffer& buffer(uint32_t slot) const { return buffers_[slot]; }
 
- private:
+  // The slot's buffer, grown to at least `bytes` (never empty); what it holds is undefined until
+  // written through mapped(). For callers that fill it themselves, say from several threads.
   const Buffer& reserve(uint32_t slot, VkDeviceSize bytes);
 
+ private:
   VulkanContext& context_;
   VkBufferUsageFlags usage_;
   std::string name_;
