@@ -32,8 +32,10 @@ std::vector<DirtyRoot> find_dirty(World& world, Tick since) {
     const Parent* parent = world.try_get<Parent>(entity);
     dirty.push_back(DirtyRoot{parent == nullptr ? 0 : parent->depth, entity});
   }
-  std::sort(dirty.begin(), dirty.end(),
-            [](const DirtyRoot& a, const DirtyRoot& b) { return a.depth < b.depth; });
+  const auto shallower = [](const DirtyRoot& a, const DirtyRoot& b) { return a.depth < b.depth; };
+  // Mostly roots (depth 0) moving, already in order.
+  if (!std::is_sorted(dirty.begin(), dirty.end(), shallower))
+    std::sort(dirty.begin(), dirty.end(), shallower);
   return dirty;
 }
 
@@ -56,9 +58,11 @@ glm::mat4 parent_matrix(const World& world, Entity entity) {
   return parent_world == nullptr ? glm::mat4{1.0f} : parent_world->matrix;
 }
 
-// Recomputes `root` and everything below it, recording what it visited in `updated`.
-void update_subtree(World& world, Entity root, Visited& updated) {
-  std::vector<Entity> pending{root};
+// Recomputes `root` and everything below it, recording what it visited in `updated`. `pending`
+// is working storage, empty on entry and on return: one vector for a frame's thousands of
+// subtrees, most of them a single entity.
+void update_subtree(World& world, Entity root, Visited& updated, std::vector<Entity>& pending) {
+  pending.push_back(root);
   while (!pending.empty()) {
     const Entity entity = pending.back();
     pending.pop_back();
@@ -76,10 +80,11 @@ void update_subtree(World& world, Entity root, Visited& updated) {
 
 void update_world_transforms(World& world, Tick since) {
   Visited updated;
+  std::vector<Entity> pending;
   // Shallowest first: by the time a dirty entity comes up, either an ancestor's subtree pass
   // already recomputed it, or none of its ancestors changed and its parent's matrix is current.
   for (const DirtyRoot& dirty : find_dirty(world, since)) {
-    if (!updated.contains(dirty.entity)) update_subtree(world, dirty.entity, updated);
+    if (!updated.contains(dirty.entity)) update_subtree(world, dirty.entity, updated, pending);
   }
 }
 
