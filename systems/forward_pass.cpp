@@ -67,7 +67,7 @@ ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, uint32_t width, uint3
                                 rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
         targets.lit_sum =
             b.write(b.create_image("lit sum", {width, height, lit_sum_format}), rg::Usage::colour_attachment,
-                    rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
+                    rg::ClearValue::colour_of(background_colour.r, background_colour.g, background_colour.b));
       },
       [this, &scene, slot, constants,
        pipeline = pipelines_[static_cast<uint32_t>(view_)].get()](const vk::PassRecorder& rec) {

@@ -31,10 +31,10 @@ GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
     layout_.write(set).image(material_textures_binding, textures.array().view(), textures.sampler()).update();
   }
   pipeline_ = vk::create_graphics_pipeline(
-      context, camera_pipeline_desc(gbuffer_frag,
-                                    {vk::to_vk(lit_sum_format), vk::to_vk(position_format),
-                                     vk::to_vk(normal_format), vk::to_vk(albedo_format)},
-                                    layout_.get(), "g-buffer"));
+      context,
+      camera_pipeline_desc(gbuffer_frag,
+                           {vk::to_vk(position_format), vk::to_vk(normal_format), vk::to_vk(albedo_format)},
+                           layout_.get(), "g-buffer"));
 }
 
 void GBufferPass::prepare(uint32_t slot, const GpuScene& scene) {
@@ -51,8 +51,6 @@ GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t hei
         const auto target = [&](const char* name, rg::Format format, rg::ClearValue clear) {
           return b.write(b.create_image(name, {width, height, format}), rg::Usage::colour_attachment, clear);
         };
-        // The background's colour, the forward pass's clear colour, so both paths agree.
-        g.lit_sum = target("lit sum", lit_sum_format, rg::ClearValue::colour_of(0.02f, 0.02f, 0.03f));
         g.position = target("g-buffer position", position_format, nothing);
         g.normal = target("g-buffer normal", normal_format, nothing);
         g.albedo = target("g-buffer albedo", albedo_format, nothing);

@@ -1,7 +1,7 @@
 #pragma once
 // The G-buffer of tiled deferred lighting (shaders/gbuffer.frag): every drawable of the GpuScene
-// rasterized once into what the lighting needs per pixel, plus the ambient term as the start of
-// the lit sum. All targets are transients of the frame's size.
+// rasterized once into what the lighting needs per pixel. All targets are transients of the
+// frame's size.
 #include <cstdint>
 
 #include "rendergraph/core/render_graph.h"
@@ -19,7 +19,6 @@ class GpuScene;
 class GpuTextures;
 
 struct GBuffer {
-  rg::ImageHandle lit_sum;   // HDR (rgba16f): ambient so far
   rg::ImageHandle position;  // rgba32f: world position, shininess
   rg::ImageHandle normal;    // rgba16f: unit normal, specular strength
   rg::ImageHandle albedo;    // rgba8: base colour, 1 where a surface was drawn
@@ -28,8 +27,6 @@ struct GBuffer {
 
 class GBufferPass {
  public:
-  static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
-
   // `textures` must outlive the pass: its array is bound once.
   GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);
 

@@ -12,6 +12,9 @@ struct GpuInstance {
 };
 static_assert(sizeof(GpuInstance) == 96);
 
+// Where no surface is drawn: every lighting path's lit sum starts from it.
+inline constexpr glm::vec3 background_colour{0.02f, 0.02f, 0.03f};
+
 struct FrameConstants {
   glm::mat4 view_projection;
   glm::vec4 camera_position;  // w: ambient term kA * IA

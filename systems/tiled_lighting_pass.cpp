@@ -6,7 +6,9 @@
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/lighting_ambient.comp.spv.h"
 #include "shaders/tiled_lighting.comp.spv.h"
+#include "systems/scene_gpu_types.h"
 #include "systems/shader_bindings.h"
 
 namespace sg {
@@ -14,6 +16,11 @@ namespace {
 
 using namespace bindings;
 constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+
+struct AmbientConstants {
+  glm::vec4 background_ambient;  // rgb: the background colour; w: the ambient term
+  glm::uvec4 screen;             // width, height
+};
 
 struct LightingConstants {
   glm::vec4 camera_position;
@@ -37,6 +44,12 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context)
     : context_(context),
       light_resources_(context),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
+      ambient_layout_(context.device(),
+                      {{gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+                       {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute}},
+                      vk::push_constants<AmbientConstants>(compute)),
+      ambient_pipeline_(vk::create_compute_pipeline(
+          context, {lighting_ambient_comp, {}, ambient_layout_.get(), "lighting ambient"})),
       layout_(context.device(),
               LightResources::bindings(
                   compute, {{gbuffer_position_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
@@ -64,12 +77,35 @@ void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_
 rg::ImageHandle TiledLightingPass::add_to(
     rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles, rg::ImageHandle atlas,
     const vk::Buffer& lights, const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-    const glm::vec3& camera_position) const {
-  const rg::ImageDesc& screen = graph.resources()[gbuffer.lit_sum.index].image;
+    const glm::vec3& camera_position, float ambient) const {
+  // A copy: declaring images may move the graph's resource list.
+  const rg::ImageDesc screen = graph.resources()[gbuffer.albedo.index].image;
   const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
   const LightingConstants constants{glm::vec4(camera_position, 0.0f),
                                     {screen.width, screen.height, grid.across, grid.count()}};
-  rg::ImageHandle lit_sum = gbuffer.lit_sum;
+  rg::ImageHandle lit_sum;
+  graph.add_pass(
+      "lighting ambient",
+      [&](rg::PassBuilder& b) {
+        b.read(gbuffer.albedo, rg::Usage::sampled_compute);
+        lit_sum = b.write(b.create_image("lit sum", {screen.width, screen.height, lit_sum_format}),
+                          rg::Usage::storage_compute);
+        return lit_sum;
+      },
+      [this, albedo = gbuffer.albedo,
+       constants =
+           AmbientConstants{glm::vec4(background_colour, ambient), {screen.width, screen.height, 0, 0}}](
+          rg::ImageHandle lit_sum, const vk::PassRecorder& rec) {
+        const VkDescriptorSet set =
+            ambient_layout_.write(rec.allocate_set(ambient_layout_))
+                .image(gbuffer_albedo_binding, rec.view(albedo), nearest_.get())
+                .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL)
+                .update();
+        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, ambient_pipeline_.get());
+        ambient_layout_.bind_compute(rec.cmd(), set);
+        ambient_layout_.push(rec.cmd(), constants);
+        vkCmdDispatch(rec.cmd(), (constants.screen.x + 15) / 16, (constants.screen.y + 15) / 16, 1);
+      });
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     if (group_begin[group + 1] == group_begin[group]) continue;  // no light of the group this frame
     graph.add_pass(

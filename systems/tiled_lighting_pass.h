@@ -1,7 +1,9 @@
 #pragma once
-// Tiled deferred lighting (shaders/tiled_lighting.comp): for each light group that has lights,
-// one compute pass with that group's shadow code compiled in, over the tiles that have lights of
-// the group (an indirect dispatch from LightTilesPass), adding them to the lit sum.
+// Tiled deferred lighting: a compute pass starting the lit sum from the ambient term and the
+// background (shaders/lighting_ambient.comp), then for each light group that has lights one
+// compute pass with that group's shadow code compiled in (shaders/tiled_lighting.comp), over the
+// tiles that have lights of the group (an indirect dispatch from LightTilesPass), adding them to
+// the lit sum.
 #include <array>
 #include <cstdint>
 
@@ -33,17 +35,22 @@ class TiledLightingPass {
   // The pipelines are made for `view`, which add_to then uses.
   void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view);
 
-  // Adds one pass per group with lights (group_begin as in shadows::FrameLights) and returns the
-  // lit sum's newest version. `lights` must live until the frame is recorded.
+  static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
+
+  // Adds the ambient pass, which creates the lit sum, and one pass per group with lights
+  // (group_begin as in shadows::FrameLights); returns the lit sum's newest version. `lights` must
+  // live until the frame is recorded. `ambient` is the ambient term kA * IA.
   rg::ImageHandle add_to(rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles,
                          rg::ImageHandle atlas, const vk::Buffer& lights,
                          const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-                         const glm::vec3& camera_position) const;
+                         const glm::vec3& camera_position, float ambient) const;
 
  private:
   vk::VulkanContext& context_;
   LightResources light_resources_;
   vk::UniqueSampler nearest_;  // G-buffer reads
+  vk::PipelineLayout ambient_layout_;
+  vk::UniquePipeline ambient_pipeline_;
   vk::PipelineLayout layout_;
   // By LightingView, then group.
   std::array<std::array<vk::UniquePipeline, shadows::light_group_count>, 2> pipelines_;
