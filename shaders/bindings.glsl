@@ -16,7 +16,6 @@ const int view_instances_binding = 6;       // shadow_casters.glsl
 const int material_textures_binding = 7;    // material.glsl
 
 // Tiled deferred lighting (light_tiles.glsl): the G-buffer, the sum being lit, the tile lists.
-const int gbuffer_position_binding = 8;
 const int gbuffer_normal_binding = 9;
 const int gbuffer_albedo_binding = 10;
 const int hdr_binding = 11;  // the lit sum: a storage image while lighting, sampled by tone mapping

@@ -129,11 +129,12 @@ uvec3 pcg3d(uvec3 v) {
   return v;
 }
 
-// Three uniform numbers in (0, 1] for sample `index` at a surface point. Hashing the bits of
-// the world position makes the pattern a property of the surface: a static view gets the same
-// numbers every frame, and no time enters.
-vec3 surface_random(vec3 world_position, uint index) {
-  uvec3 h = pcg3d(floatBitsToUint(world_position) + uvec3(index));
+// Three uniform numbers in (0, 1] for sample `index` at a pixel: a pattern per pixel, which
+// ALGORITHMS.md section 4 allows. Every lighting path shades a pixel with the same numbers
+// (deferred lighting has the position from the depth buffer, not the rasterizer's bits), and a
+// static view gets the same numbers every frame: no time enters.
+vec3 pixel_random(uvec2 pixel, uint index) {
+  uvec3 h = pcg3d(uvec3(pixel, index));
   return (vec3(h >> 8u) + 1.0f) / 16777216.0f;  // 24 bits, exact in a float
 }
 

@@ -50,7 +50,8 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
   }
   if (reach <= 0.0) return vec3(0.0);
 
-  float shade = light_shadow_as(light, world_pos, p.normal, dot(p.normal, to_light), shadow_kind, algorithm);
+  float shade =
+      light_shadow_as(light, world_pos, p.normal, dot(p.normal, to_light), shadow_kind, algorithm, p.pixel);
   if (SHADOW_ONLY_VIEW) {
     return vec3((1.0 - shade) * light.color_intensity.a * reach * max(dot(p.normal, to_light), 0.0));
   }

@@ -9,6 +9,7 @@
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(set = 0, binding = gbuffer_albedo_binding) uniform sampler2D gbuffer_albedo;
+layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
 layout(set = 0, binding = hdr_binding, rgba16f) uniform writeonly image2D hdr;
 
 layout(push_constant) uniform Constants {
@@ -19,7 +20,8 @@ layout(push_constant) uniform Constants {
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(frame.screen.x) || pixel.y >= int(frame.screen.y)) return;
-  vec4 albedo = texelFetch(gbuffer_albedo, pixel, 0);
-  vec3 colour = albedo.a == 0.0 ? frame.background_ambient.rgb : frame.background_ambient.w * albedo.rgb;
+  bool background = texelFetch(scene_depth, pixel, 0).r >= 1.0;
+  vec3 colour = background ? frame.background_ambient.rgb
+                           : frame.background_ambient.w * texelFetch(gbuffer_albedo, pixel, 0).rgb;
   imageStore(hdr, pixel, vec4(colour, 1.0));
 }

@@ -1,6 +1,6 @@
 // The surface a fragment of an instance shows: base colour from the material's factor and
 // texture, specular strength and shininess (scene_interface.glsl's Instance). Shared by the
-// forward and G-buffer passes, so both light the same surface.
+// forward and G-buffer passes, so both light the same surface. Fragment shaders only.
 #ifndef SG_MATERIAL_GLSL
 #define SG_MATERIAL_GLSL
 
@@ -23,6 +23,7 @@ SurfacePoint instance_surface(uint instance, vec3 world_position, vec3 normal, v
   }
   p.specular = inst.base_color_specular.a;
   p.shininess = inst.material.x;
+  p.pixel = uvec2(gl_FragCoord.xy);
   return p;
 }
 

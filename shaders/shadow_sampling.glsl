@@ -48,18 +48,18 @@ const vec3 CUBE_OFFSETS[20] = vec3[](
     vec3(1, 0, 1), vec3(-1, 0, 1), vec3(1, 0, -1), vec3(-1, 0, -1),
     vec3(0, 1, 1), vec3(0, -1, 1), vec3(0, -1, -1), vec3(0, 1, -1));
 
-// ---- randomness, stable per surface point (light_formulas.glsl: surface_random) ----
+// ---- randomness, stable per pixel (light_formulas.glsl: pixel_random) ----
 
-mat2 random_rotation_2d(vec3 world_pos) {
-  float angle = 6.28318531 * surface_random(world_pos, 1000u).x;
+mat2 random_rotation_2d(uvec2 pixel) {
+  float angle = 6.28318531 * pixel_random(pixel, 1000u).x;
   float c = cos(angle), s = sin(angle);
   return mat2(c, s, -s, c);
 }
 
 // A uniformly random rotation, as a unit quaternion from four Gaussian numbers.
-vec4 random_rotation_3d(vec3 world_pos) {
-  vec3 u = surface_random(world_pos, 1000u);
-  vec3 w = surface_random(world_pos, 1001u);
+vec4 random_rotation_3d(uvec2 pixel) {
+  vec3 u = pixel_random(pixel, 1000u);
+  vec3 w = pixel_random(pixel, 1001u);
   return normalize(vec4(gaussian_pair(u.xy), gaussian_pair(vec2(u.z, w.x))));
 }
 
@@ -204,11 +204,11 @@ float shadow_2d_pcf(Light light, MapPoint point, float bias) {
 }
 
 // 4.3: like pcf with Gaussian offsets (r1, r2) * sigma, sigma = pcfRadius texels.
-float shadow_2d_noise(Light light, MapPoint point, float bias, vec3 world_pos) {
+float shadow_2d_noise(Light light, MapPoint point, float bias, uvec2 pixel) {
   float sigma_uv = light.shadow_bias.z * light.shadow_depth.z;
   float sum = 0.0;
   for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
-    vec2 offset = gaussian_pair(surface_random(world_pos, i).xy) * sigma_uv;
+    vec2 offset = gaussian_pair(pixel_random(pixel, i).xy) * sigma_uv;
     sum += compare_plane(light, point, offset, bias);
   }
   return sum / float(NOISE_SAMPLES);
@@ -220,12 +220,12 @@ float shadow_2d_noise(Light light, MapPoint point, float bias, vec3 world_pos) {
 // thirds of the way to a perspective light (zBlocker >= zReceiver / 3); nearer blockers would need
 // most of the map searched. The filter radius is half the penumbra width, so the transition
 // from lit to shadowed is w wide, and at least one texel, so contact shadows stay antialiased.
-float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, vec3 world_pos) {
+float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, uvec2 pixel) {
   bool orthographic = map_is_orthographic(light);
   float light_size = light.shadow_bias.w;
   float uv_per_unit = map_uv_per_world_unit(projection_x_scale(light.shadow_matrix),
                                             point.view_depth, orthographic);
-  mat2 rotation = jitter ? random_rotation_2d(world_pos) : mat2(1.0);
+  mat2 rotation = jitter ? random_rotation_2d(pixel) : mat2(1.0);
 
   float search_uv = light_size * uv_per_unit;
   float blocker_sum = 0.0;
@@ -252,13 +252,13 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, vec3 
   return sum / float(PCSS_FILTER_SAMPLES);
 }
 
-float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
+float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm, uvec2 pixel) {
   MapPoint point;
   if (!project_to_map(light, world_pos, normal, point)) return 0.0;
   if (algorithm == SHADOW_HARD) return shadow_2d_hard(light, point, bias);
   if (algorithm == SHADOW_PCF) return shadow_2d_pcf(light, point, bias);
-  if (algorithm == SHADOW_NOISE) return shadow_2d_noise(light, point, bias, world_pos);
-  return shadow_2d_pcss(light, point, bias, algorithm == SHADOW_PCSS_NOISE, world_pos);
+  if (algorithm == SHADOW_NOISE) return shadow_2d_noise(light, point, bias, pixel);
+  return shadow_2d_pcss(light, point, bias, algorithm == SHADOW_PCSS_NOISE, pixel);
 }
 
 // ---- cube maps (point lights) ----
@@ -313,10 +313,10 @@ vec3 cube_offset(uint k, bool jitter, vec4 rotation) {
 // PCSS on a cube map with shadow_2d_pcss's radii, in world units directly: an offset moves the
 // lookup direction by its part perpendicular to fragToLight (the part along it only changes the
 // length, which a cube lookup ignores), so radii act at the receiver's distance.
-float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, vec3 world_pos) {
+float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, uvec2 pixel) {
   float far = light.shadow_depth.y;
   float light_size = light.shadow_bias.w;
-  vec4 rotation = jitter ? random_rotation_3d(world_pos) : vec4(0.0, 0.0, 0.0, 1.0);
+  vec4 rotation = jitter ? random_rotation_3d(pixel) : vec4(0.0, 0.0, 0.0, 1.0);
 
   float blocker_sum = 0.0;
   float blockers = 0.0;
@@ -340,7 +340,7 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, vec3 world_pos)
   return sum / float(CUBE_OFFSET_COUNT);
 }
 
-float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
+float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm, uvec2 pixel) {
   CubeReceiver r;
   // From where the cube was rendered, which lags the light while its map is cached.
   r.to_fragment = world_pos - light.shadow_matrix[3].xyz;
@@ -367,14 +367,14 @@ float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint alg
   if (algorithm == SHADOW_NOISE) {
     float sum = 0.0;
     for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
-      vec3 u = surface_random(world_pos, 2u * i);
-      vec3 w = surface_random(world_pos, 2u * i + 1u);
+      vec3 u = pixel_random(pixel, 2u * i);
+      vec3 w = pixel_random(pixel, 2u * i + 1u);
       vec3 gaussian = vec3(gaussian_pair(u.xy), gaussian_pair(vec2(u.z, w.x)).x);
       sum += cube_sample(light, r, gaussian * radius);
     }
     return sum / float(NOISE_SAMPLES);
   }
-  return shadow_cube_pcss(light, r, algorithm == SHADOW_PCSS_NOISE, world_pos);
+  return shadow_cube_pcss(light, r, algorithm == SHADOW_PCSS_NOISE, pixel);
 }
 
 // ---- entry points ----
@@ -388,13 +388,13 @@ uint light_shadow_kind(Light light) {
 // `light`'s shadow factor at world_pos; `normal` is the receiver's unit normal and n_dot_l is
 // dot(N, L) for the slope-scaled bias. `shadow_kind` and `algorithm` must be the light's own
 // (light_shadow_kind, info.z): passed in, they can be compile-time constants, which leaves only
-// that algorithm's code in the shader.
+// that algorithm's code in the shader. `pixel` seeds the noise algorithms (pixel_random).
 float light_shadow_as(Light light, vec3 world_pos, vec3 normal, float n_dot_l, uint shadow_kind,
-                      uint algorithm) {
+                      uint algorithm, uvec2 pixel) {
   if (shadow_kind == SHADOW_KIND_NONE) return 0.0;
   float bias = shadow_bias(n_dot_l, light.shadow_bias.x, light.shadow_bias.y);
-  if (shadow_kind == SHADOW_KIND_CUBE) return shadow_cube(light, world_pos, normal, bias, algorithm);
-  return shadow_2d(light, world_pos, normal, bias, algorithm);
+  if (shadow_kind == SHADOW_KIND_CUBE) return shadow_cube(light, world_pos, normal, bias, algorithm, pixel);
+  return shadow_2d(light, world_pos, normal, bias, algorithm, pixel);
 }
 
 #endif

@@ -12,7 +12,7 @@
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(constant_id = 0) const uint LIGHT_GROUP = 0u;
 
-layout(set = 0, binding = gbuffer_position_binding) uniform sampler2D gbuffer_position;
+layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
 layout(set = 0, binding = gbuffer_normal_binding) uniform sampler2D gbuffer_normal;
 layout(set = 0, binding = gbuffer_albedo_binding) uniform sampler2D gbuffer_albedo;
 layout(set = 0, binding = hdr_binding, rgba16f) uniform image2D hdr;
@@ -21,6 +21,7 @@ layout(std430, set = 0, binding = tile_ranges_binding) readonly buffer TileRange
 layout(std430, set = 0, binding = group_tiles_binding) readonly buffer GroupTiles { uint group_tiles[]; };
 
 layout(push_constant) uniform Constants {
+  mat4 inverse_view_projection;  // the camera's: positions from the depth buffer
   vec4 camera_position;
   uvec4 screen;  // x width, y height, z tiles across, w tiles in all
 } frame;
@@ -30,16 +31,20 @@ void main() {
   uvec2 tile_xy = uvec2(tile % frame.screen.z, tile / frame.screen.z);
   ivec2 pixel = ivec2(tile_xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy);
   if (pixel.x >= int(frame.screen.x) || pixel.y >= int(frame.screen.y)) return;
+  float depth = texelFetch(scene_depth, pixel, 0).r;
+  if (depth >= 1.0) return;  // background
+  vec2 ndc = (vec2(pixel) + 0.5) / vec2(frame.screen.xy) * 2.0 - 1.0;
+  vec4 world = frame.inverse_view_projection * vec4(ndc, depth, 1.0);
+  vec3 position = world.xyz / world.w;
   vec4 albedo = texelFetch(gbuffer_albedo, pixel, 0);
-  if (albedo.a == 0.0) return;  // background
-  vec4 position = texelFetch(gbuffer_position, pixel, 0);
   vec4 normal = texelFetch(gbuffer_normal, pixel, 0);
   SurfacePoint p;
   p.normal = normal.xyz;
-  p.to_viewer = normalize(frame.camera_position.xyz - position.xyz);
+  p.to_viewer = normalize(frame.camera_position.xyz - position);
   p.base_color = albedo.rgb;
-  p.specular = normal.w;
-  p.shininess = position.w;
+  p.specular = albedo.a;
+  p.shininess = normal.w;
+  p.pixel = uvec2(pixel);
 
   // The tile has at least one light of the group (or it would not be dispatched), and a
   // do-while runs its body exactly that often on a CPU driver too.
@@ -49,7 +54,7 @@ void main() {
   vec3 color = vec3(0.0);
   uint j = 0u;
   do {
-    color += shade_light_as(lights[tile_lights[range.x + j]], p, position.xyz, kind, algorithm);
+    color += shade_light_as(lights[tile_lights[range.x + j]], p, position, kind, algorithm);
     ++j;
   } while (j < range.y);
   imageStore(hdr, pixel, imageLoad(hdr, pixel) + vec4(color, 0.0));

@@ -14,7 +14,6 @@ namespace {
 
 using namespace bindings;
 constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr rg::Format position_format = rg::Format::rgba32_sfloat;
 constexpr rg::Format normal_format = rg::Format::rgba16_sfloat;
 constexpr rg::Format albedo_format = rg::Format::rgba8_unorm;
 
@@ -31,10 +30,8 @@ GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
     layout_.write(set).image(material_textures_binding, textures.array().view(), textures.sampler()).update();
   }
   pipeline_ = vk::create_graphics_pipeline(
-      context,
-      camera_pipeline_desc(gbuffer_frag,
-                           {vk::to_vk(position_format), vk::to_vk(normal_format), vk::to_vk(albedo_format)},
-                           layout_.get(), "g-buffer"));
+      context, camera_pipeline_desc(gbuffer_frag, {vk::to_vk(normal_format), vk::to_vk(albedo_format)},
+                                    layout_.get(), "g-buffer"));
 }
 
 void GBufferPass::prepare(uint32_t slot, const GpuScene& scene) {
@@ -51,7 +48,6 @@ GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t hei
         const auto target = [&](const char* name, rg::Format format, rg::ClearValue clear) {
           return b.write(b.create_image(name, {width, height, format}), rg::Usage::colour_attachment, clear);
         };
-        g.position = target("g-buffer position", position_format, nothing);
         g.normal = target("g-buffer normal", normal_format, nothing);
         g.albedo = target("g-buffer albedo", albedo_format, nothing);
         g.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),

@@ -19,10 +19,9 @@ class GpuScene;
 class GpuTextures;
 
 struct GBuffer {
-  rg::ImageHandle position;  // rgba32f: world position, shininess
-  rg::ImageHandle normal;    // rgba16f: unit normal, specular strength
-  rg::ImageHandle albedo;    // rgba8: base colour, 1 where a surface was drawn
-  rg::ImageHandle depth;     // D32
+  rg::ImageHandle normal;  // rgba16f: unit normal, shininess
+  rg::ImageHandle albedo;  // rgba8: base colour, specular strength
+  rg::ImageHandle depth;   // D32: 1 where no surface was drawn; world positions come back from it
 };
 
 class GBufferPass {

@@ -23,6 +23,7 @@ struct AmbientConstants {
 };
 
 struct LightingConstants {
+  glm::mat4 inverse_view_projection;
   glm::vec4 camera_position;
   glm::uvec4 screen;  // width, height, tiles across, tiles in all
 };
@@ -46,13 +47,14 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context)
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       ambient_layout_(context.device(),
                       {{gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+                       {scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
                        {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute}},
                       vk::push_constants<AmbientConstants>(compute)),
       ambient_pipeline_(vk::create_compute_pipeline(
           context, {lighting_ambient_comp, {}, ambient_layout_.get(), "lighting ambient"})),
       layout_(context.device(),
               LightResources::bindings(
-                  compute, {{gbuffer_position_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
+                  compute, {{scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
                             {gbuffer_normal_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
                             {gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
                             {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute},
@@ -77,28 +79,31 @@ void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_
 rg::ImageHandle TiledLightingPass::add_to(
     rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles, rg::ImageHandle atlas,
     const vk::Buffer& lights, const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-    const glm::vec3& camera_position, float ambient) const {
+    const glm::mat4& view_projection, const glm::vec3& camera_position, float ambient) const {
   // A copy: declaring images may move the graph's resource list.
   const rg::ImageDesc screen = graph.resources()[gbuffer.albedo.index].image;
   const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
-  const LightingConstants constants{glm::vec4(camera_position, 0.0f),
+  const LightingConstants constants{glm::inverse(view_projection),
+                                    glm::vec4(camera_position, 0.0f),
                                     {screen.width, screen.height, grid.across, grid.count()}};
   rg::ImageHandle lit_sum;
   graph.add_pass(
       "lighting ambient",
       [&](rg::PassBuilder& b) {
         b.read(gbuffer.albedo, rg::Usage::sampled_compute);
+        b.read(gbuffer.depth, rg::Usage::sampled_compute);
         lit_sum = b.write(b.create_image("lit sum", {screen.width, screen.height, lit_sum_format}),
                           rg::Usage::storage_compute);
         return lit_sum;
       },
-      [this, albedo = gbuffer.albedo,
+      [this, albedo = gbuffer.albedo, depth = gbuffer.depth,
        constants =
            AmbientConstants{glm::vec4(background_colour, ambient), {screen.width, screen.height, 0, 0}}](
           rg::ImageHandle lit_sum, const vk::PassRecorder& rec) {
         const VkDescriptorSet set =
             ambient_layout_.write(rec.allocate_set(ambient_layout_))
                 .image(gbuffer_albedo_binding, rec.view(albedo), nearest_.get())
+                .image(scene_depth_binding, rec.view(depth), nearest_.get())
                 .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL)
                 .update();
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, ambient_pipeline_.get());
@@ -111,7 +116,7 @@ rg::ImageHandle TiledLightingPass::add_to(
     graph.add_pass(
         "lighting " + group_name(group),
         [&](rg::PassBuilder& b) {
-          for (const rg::ImageHandle image : {atlas, gbuffer.position, gbuffer.normal, gbuffer.albedo}) {
+          for (const rg::ImageHandle image : {atlas, gbuffer.depth, gbuffer.normal, gbuffer.albedo}) {
             b.read(image, rg::Usage::sampled_compute);
           }
           b.read(tiles.lights, rg::Usage::storage_compute);
@@ -124,7 +129,7 @@ rg::ImageHandle TiledLightingPass::add_to(
          pipeline = pipelines_[static_cast<uint32_t>(view_)][group].get()](const vk::PassRecorder& rec) {
           const VkSampler nearest = nearest_.get();
           vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
-          writer.image(gbuffer_position_binding, rec.view(gbuffer.position), nearest)
+          writer.image(scene_depth_binding, rec.view(gbuffer.depth), nearest)
               .image(gbuffer_normal_binding, rec.view(gbuffer.normal), nearest)
               .image(gbuffer_albedo_binding, rec.view(gbuffer.albedo), nearest)
               .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL)

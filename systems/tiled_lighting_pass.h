@@ -39,11 +39,13 @@ class TiledLightingPass {
 
   // Adds the ambient pass, which creates the lit sum, and one pass per group with lights
   // (group_begin as in shadows::FrameLights); returns the lit sum's newest version. `lights` must
-  // live until the frame is recorded. `ambient` is the ambient term kA * IA.
+  // live until the frame is recorded. Positions come from the depth buffer through the camera's
+  // `view_projection`; `ambient` is the ambient term kA * IA.
   rg::ImageHandle add_to(rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles,
                          rg::ImageHandle atlas, const vk::Buffer& lights,
                          const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-                         const glm::vec3& camera_position, float ambient) const;
+                         const glm::mat4& view_projection, const glm::vec3& camera_position,
+                         float ambient) const;
 
  private:
   vk::VulkanContext& context_;

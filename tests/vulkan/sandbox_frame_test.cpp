@@ -121,14 +121,34 @@ int largest_difference(const vk::Rgba8Image& a, const vk::Rgba8Image& b) {
   return largest;
 }
 
-// Every lighting path lights the same surfaces with the same formulas. They differ only by the
-// G-buffer's 16-bit normals and 8-bit base colours, and by floating-point order.
+// The share of pixels whose worst channel differs by more than `levels` of 255.
+double share_differing(const vk::Rgba8Image& a, const vk::Rgba8Image& b, int levels) {
+  size_t differing = 0;
+  for (size_t i = 0; i < a.pixels.size(); i += 4) {
+    int largest = 0;
+    for (size_t c = 0; c < 3; ++c)
+      largest = std::max(largest, std::abs(int(a.pixels[i + c]) - int(b.pixels[i + c])));
+    differing += largest > levels;
+  }
+  return double(differing) / double(a.pixels.size() / 4);
+}
+
+// Deferred lighting against a forward path: the same formulas, but the G-buffer has 16-bit
+// normals and 8-bit base colours, and deferred takes positions back from the depth buffer, a
+// hair from the rasterizer's: a pixel on a shadow's very edge may fall on the other side.
+void expect_same_but_edges(const vk::Rgba8Image& forward, const vk::Rgba8Image& deferred) {
+  EXPECT_LE(share_differing(forward, deferred, 2), 0.001) << "pixels more than 2 levels of 255 apart";
+}
+
+// Every lighting path lights the same surfaces with the same formulas (the forward paths with the
+// same positions, so they agree everywhere), and the noise algorithms draw their numbers per
+// pixel, so every path draws the same.
 TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
   const vk::Rgba8Image forward = render(lit_by(LightingPath::forward), 2);
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "depth prepass"), 1);
   const vk::Rgba8Image deferred = render(lit_by(LightingPath::deferred), 2);
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
-  EXPECT_LE(largest_difference(forward, deferred), 2) << "levels of 255 in the worst channel";
+  expect_same_but_edges(forward, deferred);
 
   // The naive baseline: a pass per view and six per cube, every map every frame, every caster in
   // every view, every light at every pixel.
@@ -139,8 +159,8 @@ TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
                           [](const std::string& name) { return name.find(" face ") != std::string::npos; }),
             12);
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "light tiles"), 0);
-  EXPECT_LE(largest_difference(baseline, forward), 2);
-  EXPECT_LE(largest_difference(baseline, deferred), 2);
+  EXPECT_LE(largest_difference(baseline, forward), 2) << "levels of 255 in the worst channel";
+  expect_same_but_edges(baseline, deferred);
 }
 
 // The shadow-only view: white surfaces under white light, so every pixel is grey but the
@@ -165,8 +185,8 @@ TEST_F(SandboxFrameTest, TheShadowOnlyViewIsGreyOnEveryLightingPath) {
   }
   EXPECT_EQ(grey_fraction(views[0]), 1.0);
   EXPECT_LT(grey_fraction(lit), 0.5);
-  EXPECT_LE(largest_difference(views[0], views[1]), 2);
-  EXPECT_LE(largest_difference(views[0], views[2]), 2);
+  expect_same_but_edges(views[1], views[0]);
+  EXPECT_LE(largest_difference(views[1], views[2]), 2);
 }
 
 TEST_F(SandboxFrameTest, SixPassCubesRenderTheSamePictureAsLayeredCubes) {
