@@ -263,14 +263,20 @@ float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algor
 
 // ---- cube maps (point lights) ----
 
+// The uv offset of cube face `face`'s tile in the atlas layer (light_record.glsl: two faces a
+// column of shadow_matrix). Chosen with selects, not shadow_matrix[face >> 1]: llvmpipe indexes
+// a local array with a per-lane index through memory, which cost a sixth of the cube pcss pass.
+vec2 cube_face_origin(Light light, int face) {
+  vec4 pair = face < 2 ? light.shadow_matrix[0] : (face < 4 ? light.shadow_matrix[1] : light.shadow_matrix[2]);
+  return (face & 1) == 0 ? pair.xy : pair.zw;
+}
+
 // Stored distance / far in direction `direction` from the light: its face's tile of the atlas
 // (light_record.glsl), held half a texel inside the tile like atlas_coord. Every kernel tap
 // selects its own face, so kernels straddling a cube edge read the neighbouring face's texels.
 float fetch_cube_depth(Light light, vec3 direction) {
   vec3 face_uv = cube_face_uv(direction);
-  int face = int(face_uv.z);
-  vec4 pair = light.shadow_matrix[face >> 1];
-  vec2 origin = (face & 1) == 0 ? pair.xy : pair.zw;
+  vec2 origin = cube_face_origin(light, int(face_uv.z));
   float half_texel = 0.5 * light.shadow_depth.z;
   vec2 inside = clamp(face_uv.xy, vec2(half_texel), vec2(1.0 - half_texel));
   return textureLod(shadow_atlas, vec3(origin + inside * light.shadow_rect.zw, float(light.info.w)), 0.0).r;
