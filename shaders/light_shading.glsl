@@ -60,7 +60,7 @@ vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
 vec3 shade_lights(SurfacePoint p, vec3 world_pos, uint light_count) {
   vec3 color = vec3(0.0);
   for (uint i = 0u; i < light_count; ++i) {
-    color += shade_light(lights[i], p, world_pos);
+    color += shade_light(light_at(i), p, world_pos);
   }
   return color;
 }
