@@ -23,7 +23,9 @@ layout(constant_id = 1) const bool SHADOW_ONLY_VIEW = false;
 // `shadow_kind` and `algorithm` are the light's own (light_shadow_kind, info.z); shade_light
 // reads them from the record, a pass that shades one light group passes its constants.
 vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kind, uint algorithm) {
-  uint type = light.info.x;
+  // Only point lights have cube maps: with a constant shadow_kind the other types' branches
+  // drop out of a cube group's shader (a CPU driver computes every branch, taken or not).
+  uint type = shadow_kind == SHADOW_KIND_CUBE ? LIGHT_POINT : light.info.x;
   vec3 to_light;
   float reach = 1.0;
   float lambda = 1.0;
@@ -68,7 +70,7 @@ vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
 vec3 shade_lights(SurfacePoint p, vec3 world_pos, uint light_count) {
   vec3 color = vec3(0.0);
   for (uint i = 0u; i < light_count; ++i) {
-    color += shade_light(lights[i], p, world_pos);
+    color += shade_light(light_at(i), p, world_pos);
   }
   return color;
 }

@@ -5,8 +5,32 @@
 #include "bindings.glsl"
 #include "light_record.glsl"
 
-// Every light of the frame (sg::shadows::GpuLight on the C++ side).
-layout(std430, set = 0, binding = lights_binding) readonly buffer Lights { Light lights[]; };
+// Every light of the frame (sg::shadows::GpuLight on the C++ side), its 208 bytes as 13 texels
+// of a uniform texel buffer (light_resources.h says why not a storage buffer). light_at(i) is the
+// i-th record; its members lie at the offsets of Light's std430 layout, 16 bytes a texel.
+layout(set = 0, binding = lights_binding) uniform usamplerBuffer light_records;
+
+const int LIGHT_RECORD_TEXELS = 13;
+
+Light light_at(uint index) {
+  int first = int(index) * LIGHT_RECORD_TEXELS;
+  Light light;
+  light.position_range = uintBitsToFloat(texelFetch(light_records, first));
+  light.direction_type = uintBitsToFloat(texelFetch(light_records, first + 1));
+  light.color_intensity = uintBitsToFloat(texelFetch(light_records, first + 2));
+  light.shape = uintBitsToFloat(texelFetch(light_records, first + 3));
+  light.shadow_color_density = uintBitsToFloat(texelFetch(light_records, first + 4));
+  light.shadow_bias = uintBitsToFloat(texelFetch(light_records, first + 5));
+  light.info = texelFetch(light_records, first + 6);
+  light.shadow_rect = uintBitsToFloat(texelFetch(light_records, first + 7));
+  light.shadow_depth = uintBitsToFloat(texelFetch(light_records, first + 8));
+  light.shadow_matrix[0] = uintBitsToFloat(texelFetch(light_records, first + 9));
+  light.shadow_matrix[1] = uintBitsToFloat(texelFetch(light_records, first + 10));
+  light.shadow_matrix[2] = uintBitsToFloat(texelFetch(light_records, first + 11));
+  light.shadow_matrix[3] = uintBitsToFloat(texelFetch(light_records, first + 12));
+  return light;
+}
+
 // Every shadow map: one depth array of atlas pages; a 2D map is the tile shadow_rect of layer
 // info.w, a point light's cube six tiles of that layer (light_record.glsl).
 layout(set = 0, binding = shadow_maps_binding) uniform sampler2DArray shadow_atlas;

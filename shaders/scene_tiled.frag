@@ -25,7 +25,7 @@ vec3 shade_group(uint group, uint tile, SurfacePoint p) {
   if ((GROUPS_PRESENT & (1u << group)) == 0u) return color;
   uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + group];
   for (uint j = 0u; j < range.y; ++j) {
-    color += shade_light_as(lights[tile_lights[range.x + j]], p, in_world_position, group_shadow_kind(group),
+    color += shade_light_as(light_at(tile_lights[range.x + j]), p, in_world_position, group_shadow_kind(group),
                             group_algorithm(group));
   }
   return color;

@@ -14,9 +14,14 @@
 //
 // Kernels: pcf a 3x3 grid (the source's), noise 16 Gaussian offsets, pcss 16 blocker-search and
 // 32 filter samples of a Poisson disk on 2D maps and the 20 directions of section 4 on cube maps;
-// pcss_noise the same kernels rotated randomly per surface point.
+// pcss_noise the same kernels rotated randomly per surface point. Every kernel loop is marked
+// [[unroll]]: left to itself the compiler kept the 32-tap pcss filter a loop, whose Poisson disk
+// lookups with the loop counter llvmpipe does through memory, lane by lane (a fifth of the 2D
+// pcss_noise pass); unrolled, the table entries are constants.
 #ifndef SG_SHADOW_SAMPLING_GLSL
 #define SG_SHADOW_SAMPLING_GLSL
+
+#extension GL_EXT_control_flow_attributes : require
 
 #include "light_formulas.glsl"
 #include "light_groups.glsl"
@@ -194,8 +199,8 @@ float compare_plane(Light light, MapPoint point, vec2 offset, float bias) {
 float shadow_2d_pcf(Light light, MapPoint point, float bias) {
   float step_uv = light.shadow_bias.z * light.shadow_depth.z;
   float sum = 0.0;
-  for (int y = -PCF_HALF_WIDTH; y <= PCF_HALF_WIDTH; ++y) {
-    for (int x = -PCF_HALF_WIDTH; x <= PCF_HALF_WIDTH; ++x) {
+  [[unroll]] for (int y = -PCF_HALF_WIDTH; y <= PCF_HALF_WIDTH; ++y) {
+    [[unroll]] for (int x = -PCF_HALF_WIDTH; x <= PCF_HALF_WIDTH; ++x) {
       sum += compare_plane(light, point, vec2(x, y) * step_uv, bias);
     }
   }
@@ -207,7 +212,7 @@ float shadow_2d_pcf(Light light, MapPoint point, float bias) {
 float shadow_2d_noise(Light light, MapPoint point, float bias, uvec2 pixel) {
   float sigma_uv = light.shadow_bias.z * light.shadow_depth.z;
   float sum = 0.0;
-  for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
+  [[unroll]] for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
     vec2 offset = gaussian_pair(pixel_random(pixel, i).xy) * sigma_uv;
     sum += compare_plane(light, point, offset, bias);
   }
@@ -230,7 +235,7 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, uvec2
   float search_uv = light_size * uv_per_unit;
   float blocker_sum = 0.0;
   float blockers = 0.0;
-  for (uint i = 0u; i < PCSS_BLOCKER_SAMPLES; ++i) {
+  [[unroll]] for (uint i = 0u; i < PCSS_BLOCKER_SAMPLES; ++i) {
     vec2 offset = rotation * POISSON_DISK[i] * search_uv;
     float depth = fetch_linear_depth(light, point.uv + offset);
     if (depth < plane_reference(point, offset + to_texel_centre(light, point.uv + offset), bias)) {
@@ -246,7 +251,7 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, uvec2
                     : pcss_penumbra_width(point.view_depth, blocker, light_size);
   float radius_uv = max(0.5 * width * uv_per_unit, light.shadow_depth.z);
   float sum = 0.0;
-  for (uint i = 0u; i < PCSS_FILTER_SAMPLES; ++i) {
+  [[unroll]] for (uint i = 0u; i < PCSS_FILTER_SAMPLES; ++i) {
     sum += compare_plane(light, point, rotation * POISSON_DISK[i] * radius_uv, bias);
   }
   return sum / float(PCSS_FILTER_SAMPLES);
@@ -263,14 +268,20 @@ float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algor
 
 // ---- cube maps (point lights) ----
 
+// The uv offset of cube face `face`'s tile in the atlas layer (light_record.glsl: two faces a
+// column of shadow_matrix). Chosen with selects, not shadow_matrix[face >> 1]: llvmpipe indexes
+// a local array with a per-lane index through memory, which cost a sixth of the cube pcss pass.
+vec2 cube_face_origin(Light light, int face) {
+  vec4 pair = face < 2 ? light.shadow_matrix[0] : (face < 4 ? light.shadow_matrix[1] : light.shadow_matrix[2]);
+  return (face & 1) == 0 ? pair.xy : pair.zw;
+}
+
 // Stored distance / far in direction `direction` from the light: its face's tile of the atlas
 // (light_record.glsl), held half a texel inside the tile like atlas_coord. Every kernel tap
 // selects its own face, so kernels straddling a cube edge read the neighbouring face's texels.
 float fetch_cube_depth(Light light, vec3 direction) {
   vec3 face_uv = cube_face_uv(direction);
-  int face = int(face_uv.z);
-  vec4 pair = light.shadow_matrix[face >> 1];
-  vec2 origin = (face & 1) == 0 ? pair.xy : pair.zw;
+  vec2 origin = cube_face_origin(light, int(face_uv.z));
   float half_texel = 0.5 * light.shadow_depth.z;
   vec2 inside = clamp(face_uv.xy, vec2(half_texel), vec2(1.0 - half_texel));
   return textureLod(shadow_atlas, vec3(origin + inside * light.shadow_rect.zw, float(light.info.w)), 0.0).r;
@@ -320,7 +331,7 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, uvec2 pixel) {
 
   float blocker_sum = 0.0;
   float blockers = 0.0;
-  for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
+  [[unroll]] for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
     vec3 direction = r.to_fragment + cube_offset(k, jitter, rotation) * light_size;
     float depth = fetch_cube_depth(light, direction);
     if (depth < cube_reference(light, r, direction)) {
@@ -334,7 +345,7 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, uvec2 pixel) {
   float width = pcss_penumbra_width(r.distance, blocker, light_size);
   float radius = max(0.5 * width, cube_texel_world_size(r.distance, light.shadow_depth.z));
   float sum = 0.0;
-  for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
+  [[unroll]] for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
     sum += cube_sample(light, r, cube_offset(k, jitter, rotation) * radius);
   }
   return sum / float(CUBE_OFFSET_COUNT);
@@ -361,12 +372,12 @@ float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint alg
   float radius = light.shadow_bias.z * texel_world;
   if (algorithm == SHADOW_PCF) {
     float sum = 0.0;
-    for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) sum += cube_sample(light, r, CUBE_OFFSETS[k] * radius);
+    [[unroll]] for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) sum += cube_sample(light, r, CUBE_OFFSETS[k] * radius);
     return sum / float(CUBE_OFFSET_COUNT);
   }
   if (algorithm == SHADOW_NOISE) {
     float sum = 0.0;
-    for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
+    [[unroll]] for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
       vec3 u = pixel_random(pixel, 2u * i);
       vec3 w = pixel_random(pixel, 2u * i + 1u);
       vec3 gaussian = vec3(gaussian_pair(u.xy), gaussian_pair(vec2(u.z, w.x)).x);

@@ -54,7 +54,7 @@ void main() {
   vec3 color = vec3(0.0);
   uint j = 0u;
   do {
-    color += shade_light_as(lights[tile_lights[range.x + j]], p, position, kind, algorithm);
+    color += shade_light_as(light_at(tile_lights[range.x + j]), p, position, kind, algorithm);
     ++j;
   } while (j < range.y);
   imageStore(hdr, pixel, imageLoad(hdr, pixel) + vec4(color, 0.0));

@@ -28,21 +28,21 @@ std::vector<VkDescriptorSetLayoutBinding> LightResources::bindings(
     VkShaderStageFlags stages, std::vector<VkDescriptorSetLayoutBinding> more) {
   using namespace bindings;
   more.insert(more.begin(),
-              {{lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages},
+              {{lights_binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1, stages},
                {shadow_maps_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages},
                {shadow_maps_compare_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages}});
   return more;
 }
 
-vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBuffer lights,
+vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBufferView lights,
                                             VkImageView atlas) const {
   using namespace bindings;
-  return writer.buffer(lights_binding, lights)
+  return writer.texel_buffer(lights_binding, lights)
       .image(shadow_maps_binding, atlas, nearest_.get())
       .image(shadow_maps_compare_binding, atlas, compare_.get());
 }
 
-vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBuffer lights,
+vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBufferView lights,
                                             const vk::PassRecorder& rec, rg::ImageHandle atlas) const {
   return write(writer, lights, rec.view(atlas, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY));
 }

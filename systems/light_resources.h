@@ -18,6 +18,11 @@ class VulkanContext;
 
 namespace sg {
 
+// The lighting shaders read the records through a uniform texel buffer, a record being 16-byte
+// texels (lights_interface.glsl): llvmpipe fetches texels for all lanes at once, where it loads
+// storage-buffer words lane by lane, one loop per load.
+inline constexpr VkFormat light_record_texel_format = VK_FORMAT_R32G32B32A32_UINT;
+
 class LightResources {
  public:
   explicit LightResources(const vk::VulkanContext& context);
@@ -26,10 +31,11 @@ class LightResources {
   static std::vector<VkDescriptorSetLayoutBinding> bindings(VkShaderStageFlags stages,
                                                             std::vector<VkDescriptorSetLayoutBinding> more);
 
-  // Writes the records and the shadow atlas (`atlas`, a 2D array view of every page).
-  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBuffer lights, VkImageView atlas) const;
+  // Writes the records (`lights`, the texel view of the records' buffer, texel format
+  // light_record_texel_format) and the shadow atlas (`atlas`, a 2D array view of every page).
+  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBufferView lights, VkImageView atlas) const;
   // The same inside a pass that declared the shadow atlas `atlas` of its graph.
-  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBuffer lights, const vk::PassRecorder& rec,
+  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBufferView lights, const vk::PassRecorder& rec,
                               rg::ImageHandle atlas) const;
 
  private:

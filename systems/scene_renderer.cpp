@@ -4,9 +4,13 @@
 #include <chrono>
 #include <cstdio>
 #include <span>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
+#include "rendergraph/device/context.h"
 #include "systems/camera.h"
+#include "systems/light_resources.h"
 
 namespace sg {
 namespace {
@@ -35,7 +39,10 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       atlas_(context, settings.shadow_memory_bytes),
       schedule_({atlas_.shape().page_size, atlas_.shape().max_pages, shadows::min_shadow_resolution}),
       tone_map_(context, frame_format),
-      light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light records") {
+      light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                     frames_in_flight, "light records", light_record_texel_format),
+      max_light_records_(context.properties().limits.maxTexelBufferElements /
+                         (sizeof(shadows::GpuLight) / 16)) {
   if (settings.shadow_views == shadows::ShadowViewPath::batched && ShadowViewBatch::supported(context)) {
     batch_.emplace(context, frames_in_flight, settings.shadow_raster);
   } else {
@@ -95,6 +102,11 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   cpu_steps_.schedule = lap(mark);
 
   gpu_scene_.upload(slot, &workers_);
+  if (lights_.records.size() > max_light_records_) {
+    throw std::runtime_error(std::to_string(lights_.records.size()) +
+                             " lights, but this device's texel buffers hold " +
+                             std::to_string(max_light_records_) + " light records");
+  }
   const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
   const uint32_t page_size = atlas_.shape().page_size;
   if (batch_) batch_->prepare(slot, lights_, gpu_scene_, page_size);

@@ -10,6 +10,7 @@
 // `frame` is any colour image of a format given at construction (imported or transient); the
 // returned handles let later passes (overlays, copies, presentation) read the results. The
 // shadow atlas is imported through `imports` as "shadow atlas".
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 
@@ -145,6 +146,7 @@ class SceneRenderer {
   std::optional<Deferred> deferred_;
   ToneMapPass tone_map_;
   vk::FrameBuffers light_records_;
+  std::size_t max_light_records_;  // what the device's texel buffers hold (maxTexelBufferElements)
   shadows::FrameLights lights_;
 };
 

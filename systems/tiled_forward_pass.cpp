@@ -110,7 +110,7 @@ ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
             .image(material_textures_binding, textures_.array().view(), textures_.sampler())
             .buffer(tile_lights_binding, rec.buffer(tiles.lights))
             .buffer(tile_ranges_binding, rec.buffer(tiles.ranges));
-        const VkDescriptorSet set = light_resources_.write(writer, lights.handle(), rec, atlas).update();
+        const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
         scene.draw_camera_pass(rec, pipeline, layout_, set, constants, slot);
       });
   return targets;

@@ -136,7 +136,8 @@ rg::ImageHandle TiledLightingPass::add_to(
               .buffer(tile_lights_binding, rec.buffer(tiles.lights))
               .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
               .buffer(group_tiles_binding, rec.buffer(tiles.tiles));
-          const VkDescriptorSet set = light_resources_.write(writer, lights.handle(), rec, atlas).update();
+          const VkDescriptorSet set =
+              light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
           vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
           layout_.bind_compute(rec.cmd(), set);
           layout_.push(rec.cmd(), constants);

@@ -14,6 +14,10 @@ bool is_image(VkDescriptorType type) {
          type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE || type == VK_DESCRIPTOR_TYPE_SAMPLER;
 }
 
+bool is_texel_buffer(VkDescriptorType type) {
+  return type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER || type == VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
+}
+
 }  // namespace
 
 PipelineLayout::PipelineLayout(VkDevice device, std::vector<VkDescriptorSetLayoutBinding> bindings,
@@ -90,16 +94,26 @@ void PipelineLayout::push_bytes(VkCommandBuffer cmd, const void* data, uint32_t 
 DescriptorWriter::Write& DescriptorWriter::add(uint32_t binding) {
   if (count_ == max_writes) throw std::logic_error("more descriptor writes than DescriptorWriter holds");
   Write& write = writes_[count_++];
-  write = {binding, {}, {}};
+  write = {binding, {}, {}, VK_NULL_HANDLE};
   return write;
 }
 
 DescriptorWriter& DescriptorWriter::buffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset,
                                            VkDeviceSize range) {
-  if (is_image(layout_.type_of(binding))) {
-    throw std::logic_error("descriptor binding " + std::to_string(binding) + " takes an image, not a buffer");
+  const VkDescriptorType type = layout_.type_of(binding);
+  if (is_image(type) || is_texel_buffer(type)) {
+    throw std::logic_error("descriptor binding " + std::to_string(binding) +
+                           " takes an image or a texel buffer view, not a buffer");
   }
   add(binding).buffer = {buffer, offset, range};
+  return *this;
+}
+
+DescriptorWriter& DescriptorWriter::texel_buffer(uint32_t binding, VkBufferView view) {
+  if (!is_texel_buffer(layout_.type_of(binding))) {
+    throw std::logic_error("descriptor binding " + std::to_string(binding) + " takes no texel buffer view");
+  }
+  add(binding).texel_view = view;
   return *this;
 }
 
@@ -124,6 +138,8 @@ VkDescriptorSet DescriptorWriter::update() {
     out.descriptorType = layout_.type_of(write.binding);
     if (is_image(out.descriptorType)) {
       out.pImageInfo = &write.image;
+    } else if (is_texel_buffer(out.descriptorType)) {
+      out.pTexelBufferView = &write.texel_view;
     } else {
       out.pBufferInfo = &write.buffer;
     }

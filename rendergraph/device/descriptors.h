@@ -87,6 +87,8 @@ class DescriptorWriter {
  public:
   DescriptorWriter& buffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset = 0,
                            VkDeviceSize range = VK_WHOLE_SIZE);
+  // A view of a buffer made with a texel_format (Buffer::texel_view).
+  DescriptorWriter& texel_buffer(uint32_t binding, VkBufferView view);
   // The layout is the one the render graph gives sampled images.
   DescriptorWriter& image(uint32_t binding, VkImageView view, VkSampler sampler,
                           VkImageLayout layout = VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
@@ -101,6 +103,7 @@ class DescriptorWriter {
     uint32_t binding;
     VkDescriptorBufferInfo buffer;
     VkDescriptorImageInfo image;
+    VkBufferView texel_view;
   };
   Write& add(uint32_t binding);
 

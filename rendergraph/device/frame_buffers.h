@@ -19,7 +19,9 @@ namespace sg::vk {
 
 class FrameBuffers {
  public:
-  FrameBuffers(VulkanContext& context, VkBufferUsageFlags usage, uint32_t frames_in_flight, std::string name);
+  // `texel_format`: each slot's buffer also has a texel view in that format (Buffer::texel_view).
+  FrameBuffers(VulkanContext& context, VkBufferUsageFlags usage, uint32_t frames_in_flight, std::string name,
+               VkFormat texel_format = VK_FORMAT_UNDEFINED);
 
   // Copies `items` to the start of the slot's buffer, growing it when needed. An empty span
   // leaves a small buffer, so descriptors always have something valid to point at.
@@ -39,6 +41,7 @@ class FrameBuffers {
  private:
   VulkanContext& context_;
   VkBufferUsageFlags usage_;
+  VkFormat texel_format_;
   std::string name_;
   std::vector<Buffer> buffers_;
 };

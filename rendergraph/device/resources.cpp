@@ -39,6 +39,18 @@ Buffer::Buffer(VulkanContext& context, const BufferDesc& desc) : context_(&conte
   if (!desc.name.empty()) {
     context.set_name(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<uint64_t>(buffer_), desc.name.c_str());
   }
+  if (desc.texel_format != VK_FORMAT_UNDEFINED) {
+    VkBufferViewCreateInfo view{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+    view.buffer = buffer_;
+    view.format = desc.texel_format;
+    view.range = VK_WHOLE_SIZE;
+    const VkResult result = vkCreateBufferView(context.device(), &view, nullptr, &texel_view_);
+    if (result != VK_SUCCESS) {
+      texel_view_ = VK_NULL_HANDLE;
+      reset();
+    }
+    check(result, "vkCreateBufferView " + desc.name);
+  }
 }
 
 Buffer::~Buffer() { reset(); }
@@ -46,6 +58,7 @@ Buffer::~Buffer() { reset(); }
 Buffer::Buffer(Buffer&& other) noexcept
     : context_(std::exchange(other.context_, nullptr)),
       buffer_(std::exchange(other.buffer_, VK_NULL_HANDLE)),
+      texel_view_(std::exchange(other.texel_view_, VK_NULL_HANDLE)),
       allocation_(std::exchange(other.allocation_, {})),
       size_(std::exchange(other.size_, 0)) {}
 
@@ -54,6 +67,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
     reset();
     context_ = std::exchange(other.context_, nullptr);
     buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
+    texel_view_ = std::exchange(other.texel_view_, VK_NULL_HANDLE);
     allocation_ = std::exchange(other.allocation_, {});
     size_ = std::exchange(other.size_, 0);
   }
@@ -62,6 +76,8 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
 
 void Buffer::reset() {
   if (buffer_ == VK_NULL_HANDLE) return;
+  if (texel_view_ != VK_NULL_HANDLE) vkDestroyBufferView(context_->device(), texel_view_, nullptr);
+  texel_view_ = VK_NULL_HANDLE;
   vkDestroyBuffer(context_->device(), buffer_, nullptr);
   context_->allocator().free(allocation_);
   buffer_ = VK_NULL_HANDLE;

@@ -19,6 +19,9 @@ struct BufferDesc {
   VkBufferUsageFlags usage = 0;
   MemoryUsage memory = MemoryUsage::gpu_only;
   std::string name;  // debug name, shown by validation messages and capture tools
+  // Not VK_FORMAT_UNDEFINED: a view of the whole buffer as texels of this format (texel_view),
+  // for a texel-buffer usage.
+  VkFormat texel_format = VK_FORMAT_UNDEFINED;
 };
 
 class Buffer {
@@ -30,6 +33,8 @@ class Buffer {
   Buffer& operator=(Buffer&& other) noexcept;
 
   VkBuffer handle() const { return buffer_; }
+  // VK_NULL_HANDLE unless the buffer was made with a texel_format.
+  VkBufferView texel_view() const { return texel_view_; }
   VkDeviceSize size() const { return size_; }
   // Host address of the buffer's first byte; null for gpu_only memory.
   void* mapped() const { return allocation_.mapped; }
@@ -39,6 +44,7 @@ class Buffer {
 
   VulkanContext* context_ = nullptr;
   VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkBufferView texel_view_ = VK_NULL_HANDLE;
   Allocation allocation_;
   VkDeviceSize size_ = 0;
 };

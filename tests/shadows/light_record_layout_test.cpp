@@ -71,6 +71,30 @@ TEST(LightRecordLayout, EveryMemberSitsWhereTheShaderReadsIt) {
   EXPECT_EQ(reflection.array_stride, long(sizeof(GpuLight)));
 }
 
+// light_at's `light.<member>[column] = ...(texelFetch(light_records, first + N))` lines of
+// lights_interface.glsl, as member -> byte offset 16 * N (a member's first texel).
+std::map<std::string, long> parse_texel_reads(const std::string& text) {
+  std::map<std::string, long> offsets;
+  const std::regex read(R"(light\.(\w+)(?:\[\d\])? = .*texelFetch\(light_records, first(?: \+ (\d+))?\))");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), read); it != std::sregex_iterator(); ++it) {
+    const long offset = 16 * ((*it)[2].matched ? std::stol((*it)[2]) : 0);
+    offsets.emplace((*it)[1], offset);  // a matrix at its first column
+  }
+  return offsets;
+}
+
+TEST(LightRecordLayout, TheTexelReaderReadsEveryMemberWhereTheLayoutPutsIt) {
+  const Reflection reflection = parse_reflection(read_text(SHADOWGRAPH_LIGHT_REFLECTION));
+  const std::string text = read_text(SHADOWGRAPH_LIGHTS_INTERFACE_GLSL);
+  EXPECT_EQ(parse_texel_reads(text), reflection.member_offsets);
+  // Every texel of the record read once: 13 texels, the last the matrix's fourth column.
+  EXPECT_NE(text.find("const int LIGHT_RECORD_TEXELS = " + std::to_string(sizeof(GpuLight) / 16) + ";"),
+            std::string::npos);
+  EXPECT_NE(text.find("light.shadow_matrix[3] = uintBitsToFloat(texelFetch(light_records, first + " +
+                      std::to_string(sizeof(GpuLight) / 16 - 1) + "))"),
+            std::string::npos);
+}
+
 // `const uint NAME = VALUEu;` lines of light_record.glsl.
 std::map<std::string, unsigned long> parse_constants(const std::string& text) {
   std::map<std::string, unsigned long> constants;

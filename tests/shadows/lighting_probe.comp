@@ -3,12 +3,14 @@
 // Built, never run: compiles light_shading.glsl (with shadow_sampling.glsl and the light
 // resources) the way a lighting shader uses it, and glslang's reflection of this shader
 // (glslangValidator -q) gives the std430 layout of `Light` that light_record_layout_test.cpp
-// compares with sg::shadows::GpuLight.
+// compares with sg::shadows::GpuLight: the layout light_tiles.comp reads from a storage buffer,
+// and whose 16-byte texels light_at (lights_interface.glsl) reads from the texel buffer.
 #include "light_shading.glsl"
 
 layout(local_size_x = 1) in;
 
 layout(std430, set = 1, binding = 0) writeonly buffer Result { vec4 color; } result;
+layout(std430, set = 1, binding = 1) readonly buffer Lights { Light lights[]; };
 
 void main() {
   SurfacePoint p;
