@@ -21,6 +21,15 @@ unsigned ThreadPool::default_workers() {
   return hardware > 1 ? hardware - 1 : 0;
 }
 
+void ThreadPool::wake() {
+  if (threads_.empty()) return;
+  {
+    const std::lock_guard lock(mutex_);
+    ++wakes_;
+  }
+  batch_started_.notify_all();
+}
+
 void ThreadPool::run(std::size_t count, const std::function<void(std::size_t)>& task) {
   if (count == 0) return;
   std::size_t batch = 0;
@@ -60,16 +69,26 @@ void ThreadPool::drain(std::size_t batch) {
   }
 }
 
+void ThreadPool::spin_for_batch(std::size_t seen) const {
+  const auto until = std::chrono::steady_clock::now() + spin_time;
+  while (batch_.load() == seen && !stopping_.load() && std::chrono::steady_clock::now() < until) {
+    std::this_thread::yield();
+  }
+}
+
 void ThreadPool::work() {
   std::size_t seen = 0;
-  std::unique_lock lock(mutex_);
+  std::size_t seen_wakes = 0;
   for (;;) {
-    batch_started_.wait(lock, [&] { return stopping_ || batch_ != seen; });
+    spin_for_batch(seen);
+    std::unique_lock lock(mutex_);
+    batch_started_.wait(lock, [&] { return stopping_ || batch_ != seen || wakes_ != seen_wakes; });
     if (stopping_) return;
+    seen_wakes = wakes_;
+    if (batch_ == seen) continue;  // woken ahead of a batch: spin for it
     seen = batch_;
     lock.unlock();
     drain(seen);
-    lock.lock();
   }
 }
 

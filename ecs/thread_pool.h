@@ -1,5 +1,7 @@
 #pragma once
 
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
@@ -20,6 +22,9 @@ namespace sg::ecs {
 // - One batch at a time: run is not reentrant and must not be called from a task, nor from two
 //   threads at once.
 // - If tasks throw, the remaining tasks still run and run rethrows the first exception.
+// - After a batch, and after wake(), workers wait for the next batch spinning (yielding) for
+//   spin_time before they sleep: a frame runs its batches back to back, and waking a sleeping
+//   thread can take longer than its share of a batch.
 class ThreadPool {
  public:
   // `workers` threads besides the caller; 0 runs everything on the calling thread.
@@ -33,11 +38,19 @@ class ThreadPool {
 
   void run(std::size_t count, const std::function<void(std::size_t)>& task);
 
+  // A hint that a batch is coming soon: sleeping workers wake now and wait for it briefly, so a
+  // caller with serial work to do first hides the threads' wake-up behind it. Optional.
+  void wake();
+
   // One worker per hardware thread besides the caller.
   static unsigned default_workers();
 
+  static constexpr std::chrono::microseconds spin_time{200};
+
  private:
   void work();
+  // Returns once batch_ differs from `seen`, the pool is stopping, or spin_time has passed.
+  void spin_for_batch(std::size_t seen) const;
   // Claims and runs tasks of batch number `batch` until none are left or another batch began.
   void drain(std::size_t batch);
 
@@ -48,9 +61,12 @@ class ThreadPool {
   std::size_t count_ = 0;
   std::size_t next_ = 0;        // first unclaimed task of the batch
   std::size_t unfinished_ = 0;  // claimed or unclaimed tasks not returned yet
-  std::size_t batch_ = 0;       // number of the current batch; workers join each once
+  // Number of the current batch; workers join each once. Written under mutex_, read by spinning
+  // workers without it.
+  std::atomic<std::size_t> batch_{0};
+  std::size_t wakes_ = 0;  // wake() calls
   std::exception_ptr error_;
-  bool stopping_ = false;
+  std::atomic<bool> stopping_{false};
   std::vector<std::thread> threads_;
 };
 

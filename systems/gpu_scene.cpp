@@ -81,7 +81,7 @@ void GpuScene::gather(const ecs::World& world, ecs::ThreadPool* pool) {
   sorted_.resize(count);
   bounds_.resize(count);
   keys_.resize(count);
-  constexpr size_t chunk = 1024;
+  constexpr size_t chunk = 256;  // small, so threads that wake late still find work
   const size_t chunks = (count + chunk - 1) / chunk;
   chunk_bounds_.assign(chunks, scene::Aabb{});
   const auto place = [&](size_t c) {

@@ -63,6 +63,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
 
 void SceneRenderer::gather(const ecs::World& world) {
   auto mark = std::chrono::steady_clock::now();
+  workers_.wake();  // they wake while the instances are put in order, which is serial
   gpu_scene_.gather(world, &workers_);
   cpu_steps_.instances = lap(mark);
   shadows::gather_lights(world, gpu_scene_.bounds(), settings_.lights, lights_, &workers_);

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "ecs/thread_pool.h"
@@ -18,6 +19,23 @@ TEST(ThreadPool, RunsEveryTaskOnceInEveryBatch) {
     threads.run(runs.size(), [&](std::size_t task) { runs[task].fetch_add(1); });
     for (const std::atomic<int>& count : runs) ASSERT_EQ(count.load(), 1) << "batch " << batch;
   }
+}
+
+// wake() is only a hint: batches after it, before it, with or without a pause (workers asleep
+// again), and a pool destroyed right after one, all behave as without it.
+TEST(ThreadPool, WakeBeforeABatchChangesNothingButTiming) {
+  ThreadPool threads(3);
+  for (int round = 0; round < 50; ++round) {
+    threads.wake();
+    if (round % 10 == 0) std::this_thread::sleep_for(2 * ThreadPool::spin_time);
+    std::vector<std::atomic<int>> runs(29);
+    threads.run(runs.size(), [&](std::size_t task) { runs[task].fetch_add(1); });
+    for (const std::atomic<int>& count : runs) ASSERT_EQ(count.load(), 1) << "round " << round;
+  }
+  ThreadPool woken_then_gone(2);
+  woken_then_gone.wake();
+  ThreadPool without_workers(0);
+  without_workers.wake();
 }
 
 TEST(ThreadPool, WithoutWorkersRunsOnTheCaller) {
