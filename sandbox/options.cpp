@@ -140,7 +140,8 @@ void add_options(CLI::App& app, Options& o) {
                                                    : shadows::ShadowRaster::automatic;
          },
          "How batched shadow views are rasterized: hardware (multi-draw indirect), compute, or auto "
-         "(compute on GPUs, hardware on CPU devices)")
+         "(on GPUs each frame: compute for many small views, hardware for a few with large tiles; "
+         "hardware on CPU devices)")
       ->check(CLI::IsMember({"auto", "hardware", "compute"}))
       ->default_str("auto");
   app.add_option(

@@ -59,12 +59,12 @@ VkClearRect tile_clear(const shadows::AtlasTile& tile) {
   return {{{int32_t(tile.x), int32_t(tile.y)}, {tile.size, tile.size}}, tile.page, 1};
 }
 
-// Compute rasterization beats the raster hardware of GPUs on small views (docs/PERFORMANCE.md);
-// a CPU device runs both on the same cores.
+// A CPU device runs both rasters on the same cores, and the hardware path measured faster there
+// (docs/PERFORMANCE.md); on a GPU automatic stays, to be chosen per frame.
 shadows::ShadowRaster resolve(shadows::ShadowRaster raster, const vk::VulkanContext& context) {
   if (raster != shadows::ShadowRaster::automatic) return raster;
   return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? shadows::ShadowRaster::hardware
-                                                                        : shadows::ShadowRaster::compute;
+                                                                        : shadows::ShadowRaster::automatic;
 }
 
 }  // namespace
@@ -75,7 +75,8 @@ bool ShadowViewBatch::supported(const vk::VulkanContext& context) {
 
 ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight,
                                  shadows::ShadowRaster raster)
-    : raster_(resolve(raster, context)),
+    : setting_(resolve(raster, context)),
+      raster_(setting_ == shadows::ShadowRaster::automatic ? shadows::ShadowRaster::compute : setting_),
       cull_layout_(context.device(),
                    {{shadow_views_binding, storage, 1, compute},
                     {shadow_casters_binding, storage, 1, compute},
@@ -121,7 +122,7 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
       vk::create_compute_pipeline(context, {shadow_draws_comp, {}, draws_layout_.get(), "shadow draws"});
   scatter_pipeline_ = vk::create_compute_pipeline(
       context, {shadow_scatter_comp, {}, scatter_layout_.get(), "shadow scatter"});
-  if (raster_ == shadows::ShadowRaster::compute) {
+  if (setting_ != shadows::ShadowRaster::hardware) {
     if (context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
       std::printf(
           "shadowgraph: compute shadow raster on a CPU device: slow, and llvmpipe stops a shader's loops "
@@ -129,7 +130,7 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
     }
     compute_raster_pipeline_ = vk::create_compute_pipeline(
         context, {shadow_raster_comp, {}, compute_raster_layout_.get(), "shadow raster"});
-    return;
+    if (setting_ == shadows::ShadowRaster::compute) return;
   }
   vk::GraphicsPipelineDesc desc = shadow_pipeline_desc(raster_layout_.get());
   desc.vertex_spirv = shadow_batch_vert;
@@ -182,6 +183,13 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     }
   }
 
+  if (setting_ == shadows::ShadowRaster::automatic) {
+    uint64_t large_texels = 0;
+    for (const shadows::AtlasTile& tile : view_tiles_) {
+      if (tile.size >= shadows::large_tile) large_texels += uint64_t{tile.size} * tile.size;
+    }
+    raster_ = shadows::raster_for_views(views(), large_texels);
+  }
   if (raster_ == shadows::ShadowRaster::compute) place_depths();
 
   casters_.clear();

@@ -45,11 +45,12 @@ namespace sg {
 
 class ShadowViewBatch {
  public:
-  // `raster` automatic: compute on GPUs, the hardware on CPU devices.
+  // `raster` automatic: the hardware on CPU devices; on GPUs, each frame's choice of
+  // shadows::raster_for_views.
   ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight, shadows::ShadowRaster raster);
 
   static bool supported(const vk::VulkanContext& context);
-  // The raster in use (never automatic).
+  // The raster of the last prepared frame (never automatic).
   shadows::ShadowRaster raster() const { return raster_; }
 
   // After FrameRing::begin_frame returned `slot`, before prepare: false when the frame that last
@@ -91,7 +92,8 @@ class ShadowViewBatch {
                                      uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle counts,
                                      rg::BufferHandle draws, rg::BufferHandle depths) const;
 
-  shadows::ShadowRaster raster_;
+  shadows::ShadowRaster setting_;  // hardware, compute, or automatic: chosen per frame
+  shadows::ShadowRaster raster_;   // this frame's
   vk::PipelineLayout cull_layout_;
   vk::PipelineLayout draws_layout_;
   vk::PipelineLayout scatter_layout_;

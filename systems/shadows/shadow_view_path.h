@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 
 namespace sg::shadows {
 
@@ -9,9 +10,22 @@ enum class ShadowViewPath { batched, per_light };
 
 // How the batched path rasterizes the views: with the raster hardware (one multi-draw indirect
 // pass), or in compute (shaders/shadow_raster.comp), which is faster where the hardware sets up
-// the small views' triangles slowly. automatic: compute on GPUs, hardware on CPU devices
-// (measured in docs/PERFORMANCE.md).
+// the small views' triangles slowly. automatic: on CPU devices the hardware; on GPUs chosen each
+// frame by raster_for_views (measured in docs/PERFORMANCE.md).
 enum class ShadowRaster { automatic, hardware, compute };
+
+// automatic's choice on a GPU for a frame's due `views`, `large_tile_texels` the area of those
+// of large_tile texels a side or more: whichever a cost model fitted to the H200 predicts is
+// cheaper (docs/PERFORMANCE.md). The raster hardware pays about 13 us a view, for setting up small
+// views' triangles, plus 0.5 ms; compute about 2 us a view, plus 2.5 ns a texel of large tiles,
+// whose large triangles a workgroup per caster and view fills slowly (one 2048-texel spot map of
+// 54k triangles took 7.1 ms in compute, 0.34 ms on the hardware).
+inline constexpr std::uint32_t large_tile = 512;
+inline ShadowRaster raster_for_views(std::uint32_t views, std::uint64_t large_tile_texels) {
+  const double hardware_ms = 0.5 + 0.013 * views;
+  const double compute_ms = 0.002 * views + 2.5e-6 * double(large_tile_texels);
+  return hardware_ms < compute_ms ? ShadowRaster::hardware : ShadowRaster::compute;
+}
 
 // The default budget of views (2D maps and cube faces) re-rendered in one frame.
 inline constexpr unsigned default_shadow_view_budget = 4096;
