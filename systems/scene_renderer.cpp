@@ -51,7 +51,8 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
   switch (lighting_) {
     case LightingPath::every_light: every_light_.emplace(context, frames_in_flight, textures_); break;
     case LightingPath::forward:
-      tiled_forward_.emplace(TiledForwardPass(context, textures_), LightTilesPass(context));
+      tiled_forward_.emplace(DepthPrepass(context), TiledForwardPass(context, textures_),
+                             LightTilesPass(context));
       break;
     case LightingPath::automatic:  // resolved above
     case LightingPath::deferred:
@@ -149,8 +150,7 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
     lit_sum = lit.lit_sum;
     depth = lit.depth;
   } else if (tiled_forward_) {
-    depth = tiled_forward_->forward.add_depth_prepass(graph, target.width, target.height, gpu_scene_, slot,
-                                                      constants);
+    depth = tiled_forward_->prepass.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
     const LightTiles tiles =
         tiled_forward_->light_tiles.add_to(graph, depth, records, light_count, view_projection);
     lit_sum = tiled_forward_->forward.add_to(graph, depth, tiles, atlas, records, gpu_scene_, slot, constants)

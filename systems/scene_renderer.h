@@ -19,6 +19,7 @@
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/vulkan/graph_imports.h"
+#include "systems/depth_prepass.h"
 #include "systems/forward_pass.h"
 #include "systems/gbuffer_pass.h"
 #include "systems/gpu_scene.h"
@@ -133,6 +134,7 @@ class SceneRenderer {
   CpuSteps cpu_steps_;
   // The passes of the path in use only: a CPU driver compiles a pipeline slowly.
   struct TiledForward {
+    DepthPrepass prepass;
     TiledForwardPass forward;
     LightTilesPass light_tiles;
   };

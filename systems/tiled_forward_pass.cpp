@@ -4,7 +4,6 @@
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
-#include "shaders/depth_prepass.vert.spv.h"
 #include "shaders/scene_tiled.frag.spv.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
@@ -35,18 +34,7 @@ TiledForwardPass::TiledForwardPass(vk::VulkanContext& context, const GpuTextures
                          {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
                          {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment},
                          {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment}}),
-          vk::push_constants<FrameConstants>(both_stages)),
-      depth_layout_(context.device(),
-                    {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages}},
-                    vk::push_constants<FrameConstants>(both_stages)) {
-  vk::GraphicsPipelineDesc desc;
-  desc.vertex_spirv = depth_prepass_vert;
-  scene_vertex_input(desc, false);
-  desc.depth_format = vk::to_vk(camera_depth_format);
-  desc.layout = depth_layout_.get();
-  desc.name = "depth prepass";
-  depth_pipeline_ = vk::create_graphics_pipeline(context, desc);
-}
+          vk::push_constants<FrameConstants>(both_stages)) {}
 
 void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
                                LightingView view) {
@@ -64,25 +52,6 @@ void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_c
   desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
   desc.depth_write = false;
   pipeline = vk::create_graphics_pipeline(context_, desc);
-}
-
-rg::ImageHandle TiledForwardPass::add_depth_prepass(rg::RenderGraph& graph, uint32_t width, uint32_t height,
-                                                    const GpuScene& scene, uint32_t slot,
-                                                    const FrameConstants& constants) const {
-  rg::ImageHandle depth;
-  graph.add_pass(
-      "depth prepass",
-      [&](rg::PassBuilder& b) {
-        depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
-                        rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
-      },
-      [this, &scene, slot, constants](const vk::PassRecorder& rec) {
-        const VkDescriptorSet set = depth_layout_.write(rec.allocate_set(depth_layout_))
-                                        .buffer(instances_binding, scene.instances(slot).handle())
-                                        .update();
-        scene.draw_camera_pass(rec, depth_pipeline_.get(), depth_layout_, set, constants, slot);
-      });
-  return depth;
 }
 
 ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,

@@ -1,8 +1,8 @@
 #pragma once
-// Tiled forward lighting (shaders/scene_tiled.frag): a depth prepass, light culling on it
-// (LightTilesPass), then every drawable shaded once with the lights of its pixel's tile, group by
-// group. The pipeline is specialized on the light groups the frame has (bit g for group g), so it
-// holds only their shadow code; one is compiled per set of groups, when first needed.
+// Tiled forward lighting (shaders/scene_tiled.frag): after a depth prepass (DepthPrepass) and
+// light culling on it (LightTilesPass), every drawable shaded once with the lights of its pixel's tile, group
+// by group. The pipeline is specialized on the light groups the frame has (bit g for group g), so it holds
+// only their shadow code; one is compiled per set of groups, when first needed.
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -36,11 +36,6 @@ class TiledForwardPass {
   // and `view`.
   void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view);
 
-  // The depth prepass: every drawable's depth into a new D32 image of `width` x `height`.
-  rg::ImageHandle add_depth_prepass(rg::RenderGraph& graph, uint32_t width, uint32_t height,
-                                    const GpuScene& scene, uint32_t slot,
-                                    const FrameConstants& constants) const;
-
   // Shades every drawable where the prepass left it, into a new lit sum. `constants.counts.y`
   // must be the tiles across the screen. `lights` and `scene` are read when the pass records.
   ForwardTargets add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const LightTiles& tiles,
@@ -52,9 +47,6 @@ class TiledForwardPass {
   const GpuTextures& textures_;
   LightResources light_resources_;
   vk::PipelineLayout layout_;
-  // The prepass binds only the instances: a set with unwritten descriptors is not bindable.
-  vk::PipelineLayout depth_layout_;
-  vk::UniquePipeline depth_pipeline_;
   std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;  // by pipeline_key
   uint32_t groups_present_ = 0;
   LightingView view_ = LightingView::lit;
