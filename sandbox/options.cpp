@@ -166,11 +166,14 @@ void add_options(CLI::App& app, Options& o) {
          [&o](const std::string& value) {
            o.lighting = value == "forward"    ? LightingPath::forward
                         : value == "deferred" ? LightingPath::deferred
+                        : value == "fused"    ? LightingPath::fused
                                               : LightingPath::automatic;
          },
-         "Both cull lights per 16x16 screen tile. forward: a depth prepass and one forward pass; "
-         "deferred: a G-buffer and a compute pass per light group; auto: the faster on this kind of device")
-      ->check(CLI::IsMember({"auto", "forward", "deferred"}))
+         "forward: a depth prepass, light lists per 16x16 screen tile, one forward pass; deferred: a "
+         "G-buffer, light lists, a compute pass per light group; fused: a depth prepass and one forward "
+         "pass of every light that tone-maps too (a few lights on CPU devices); auto: the fastest for "
+         "this kind of device")
+      ->check(CLI::IsMember({"auto", "forward", "deferred", "fused"}))
       ->default_str("auto");
   CLI::Option* naive = app.add_flag(
       "--naive", o.naive,

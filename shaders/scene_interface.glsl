@@ -7,7 +7,7 @@
 layout(push_constant) uniform FrameConstants {
   mat4 view_projection;
   vec4 camera_position;  // xyz; w: the ambient term kA * IA
-  uvec4 counts;          // x: lights in the Lights buffer; y: light tiles across the screen
+  uvec4 counts;          // x: lights; y: light tiles across the screen; z: exposure's bits (fused)
 } frame;
 
 #endif

@@ -10,8 +10,21 @@ namespace sg {
 // - deferred: G-buffer, light culling, a compute pass per light group (each holding one
 //   algorithm's code);
 // - every_light: one forward pass with every light at every pixel (the --naive baseline);
-// - automatic: whichever measured faster on the device's kind (SceneRenderer says which).
-enum class LightingPath { automatic, forward, deferred, every_light };
+// - fused: depth prepass, then one forward pass with every light at every pixel, holding only
+//   the frame's light groups' code, that tone-maps into the frame: the fewest full-screen passes,
+//   for a few lights on CPU devices;
+// - automatic: on GPUs deferred; on CPU devices each frame cpu_lighting_for's choice
+//   (SceneRenderer::lighting says which).
+enum class LightingPath { automatic, forward, deferred, every_light, fused };
+
+// automatic's choice on a CPU device for a frame of `lights` lights in `groups` light groups:
+// fused while its cost, every light times the code of every group present at every pixel, stays
+// small; deferred, whose passes cost more but a pixel only its tile's lights, otherwise. On
+// lavapipe at 1280x720 (docs/PERFORMANCE.md): one light, fused 12.4 against deferred 27.3 ms a
+// frame; two lights of two groups 20.0 against 35.7 ms; six of six 1,300 against 202 ms.
+constexpr LightingPath cpu_lighting_for(uint32_t lights, uint32_t groups) {
+  return lights * groups <= 4 ? LightingPath::fused : LightingPath::deferred;
+}
 
 // What the lighting writes: the lit picture, or the shadow-only debug view (white diffuse surfaces
 // under white lights of the same intensities, shadows at full density, no ambient).
@@ -23,6 +36,7 @@ constexpr std::string_view lighting_path_name(LightingPath path) {
     case LightingPath::forward: return "forward";
     case LightingPath::deferred: return "deferred";
     case LightingPath::every_light: return "every light";
+    case LightingPath::fused: return "fused";
   }
   return "unknown";
 }

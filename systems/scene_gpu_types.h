@@ -18,7 +18,8 @@ inline constexpr glm::vec3 background_colour{0.02f, 0.02f, 0.03f};
 struct FrameConstants {
   glm::mat4 view_projection;
   glm::vec4 camera_position;  // w: ambient term kA * IA
-  glm::uvec4 counts;          // x: lights; y: light tiles across the screen (tiled forward)
+  // x: lights; y: light tiles across the screen (tiled forward); z: the exposure's bits (fused)
+  glm::uvec4 counts;
 };
 static_assert(sizeof(FrameConstants) <= 128, "Vulkan guarantees only 128 bytes of push constants");
 

@@ -1,6 +1,7 @@
 #include "systems/scene_renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstdio>
 #include <span>
@@ -19,7 +20,8 @@ namespace {
 constexpr rg::ResourceState sampled{rg::PipelineStage::fragment_shader | rg::PipelineStage::compute_shader,
                                     rg::Access::shader_sampled_read, rg::ImageLayout::read_only_optimal};
 
-// Tiled deferred measured fastest on both lavapipe and the H200 (docs/PERFORMANCE.md).
+// Tiled deferred measured fastest on the H200 (docs/PERFORMANCE.md), and on lavapipe for more
+// than a few lights; automatic starts there.
 constexpr LightingPath fastest_lighting = LightingPath::deferred;
 
 // Milliseconds since `mark`, which moves to now.
@@ -34,6 +36,8 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
                              rg::Format frame_format, const RendererSettings& settings)
     : settings_(settings),
       lighting_(settings.lighting == LightingPath::automatic ? fastest_lighting : settings.lighting),
+      lighting_per_frame_(settings.lighting == LightingPath::automatic &&
+                          context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU),
       gpu_scene_(context, scene.meshes, frames_in_flight),
       textures_(context, scene.textures),
       atlas_(context, settings.shadow_memory_bytes),
@@ -54,12 +58,17 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       tiled_forward_.emplace(DepthPrepass(context), TiledForwardPass(context, textures_),
                              LightTilesPass(context));
       break;
+    case LightingPath::fused:
+      fused_.emplace(DepthPrepass(context), FusedForwardPass(context, textures_, frame_format));
+      break;
     case LightingPath::automatic:  // resolved above
     case LightingPath::deferred:
       deferred_.emplace(GBufferPass(context, frames_in_flight, textures_), LightTilesPass(context),
                         TiledLightingPass(context));
       break;
   }
+  if (lighting_per_frame_)
+    fused_.emplace(DepthPrepass(context), FusedForwardPass(context, textures_, frame_format));
 }
 
 void SceneRenderer::gather(const ecs::World& world) {
@@ -115,11 +124,21 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   if (per_light_) {
     per_light_->prepare(slot, lights_, gpu_scene_, page_size, settings_.cube_shadows, settings_.cull_casters);
   }
-  if (every_light_) every_light_->prepare(slot, gpu_scene_, records, atlas_, settings_.view);
-  if (tiled_forward_) tiled_forward_->forward.prepare(lights_.group_begin, settings_.view);
-  if (deferred_) {
-    deferred_->gbuffer.prepare(slot, gpu_scene_);
-    deferred_->lighting.prepare(lights_.group_begin, settings_.view);
+  if (lighting_per_frame_) {
+    lighting_ = cpu_lighting_for(static_cast<uint32_t>(lights_.records.size()),
+                                 std::popcount(shadows::groups_present(lights_.group_begin)));
+  }
+  switch (lighting_) {
+    case LightingPath::every_light:
+      every_light_->prepare(slot, gpu_scene_, records, atlas_, settings_.view);
+      break;
+    case LightingPath::forward: tiled_forward_->forward.prepare(lights_.group_begin, settings_.view); break;
+    case LightingPath::fused: fused_->forward.prepare(lights_.group_begin, settings_.view); break;
+    case LightingPath::automatic:  // resolved
+    case LightingPath::deferred:
+      deferred_->gbuffer.prepare(slot, gpu_scene_);
+      deferred_->lighting.prepare(lights_.group_begin, settings_.view);
+      break;
   }
   cpu_steps_.upload = lap(mark);
 }
@@ -141,15 +160,22 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
                                  glm::uvec4(light_count, grid.across, 0, 0)};
   const vk::Buffer& records = light_records_.buffer(slot);
 
+  if (lighting_ == LightingPath::fused) {  // lights and tone-maps in one pass, straight into the frame
+    const rg::ImageHandle prepass =
+        fused_->prepass.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
+    const FusedTargets fused = fused_->forward.add_to(graph, prepass, frame, atlas, records, gpu_scene_, slot,
+                                                      constants, settings_.exposure);
+    return {fused.frame, fused.depth, atlas, std::nullopt};
+  }
   rg::ImageHandle lit_sum;
   rg::ImageHandle depth;
   std::optional<LightTiles> light_tiles;
-  if (every_light_) {
+  if (lighting_ == LightingPath::every_light) {
     const ForwardTargets lit =
         every_light_->add_to(graph, target.width, target.height, atlas, gpu_scene_, slot, constants);
     lit_sum = lit.lit_sum;
     depth = lit.depth;
-  } else if (tiled_forward_) {
+  } else if (lighting_ == LightingPath::forward) {
     depth = tiled_forward_->prepass.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
     const LightTiles tiles =
         tiled_forward_->light_tiles.add_to(graph, depth, records, light_count, view_projection);

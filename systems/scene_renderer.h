@@ -21,6 +21,7 @@
 #include "rendergraph/vulkan/graph_imports.h"
 #include "systems/depth_prepass.h"
 #include "systems/forward_pass.h"
+#include "systems/fused_forward_pass.h"
 #include "systems/gbuffer_pass.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
@@ -91,6 +92,7 @@ class SceneRenderer {
                            uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens);
 
   // The lighting path in use: the settings' one, or for automatic the one chosen for the device.
+  // The last prepared frame's (automatic resolved).
   LightingPath lighting() const { return lighting_; }
   const GpuScene& gpu_scene() const { return gpu_scene_; }
   const shadows::FrameLights& lights() const { return lights_; }
@@ -123,6 +125,7 @@ class SceneRenderer {
  private:
   RendererSettings settings_;
   LightingPath lighting_;
+  bool lighting_per_frame_;  // automatic on a CPU device: cpu_lighting_for each frame
   ecs::ThreadPool workers_;  // CPU work of a frame that splits into independent chunks
   GpuScene gpu_scene_;
   GpuTextures textures_;
@@ -138,6 +141,10 @@ class SceneRenderer {
     TiledForwardPass forward;
     LightTilesPass light_tiles;
   };
+  struct Fused {
+    DepthPrepass prepass;
+    FusedForwardPass forward;
+  };
   struct Deferred {
     GBufferPass gbuffer;
     LightTilesPass light_tiles;
@@ -146,6 +153,7 @@ class SceneRenderer {
   std::optional<ForwardPass> every_light_;
   std::optional<TiledForward> tiled_forward_;
   std::optional<Deferred> deferred_;
+  std::optional<Fused> fused_;
   ToneMapPass tone_map_;
   vk::FrameBuffers light_records_;
   std::size_t max_light_records_;  // what the device's texel buffers hold (maxTexelBufferElements)

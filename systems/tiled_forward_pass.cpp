@@ -39,10 +39,7 @@ TiledForwardPass::TiledForwardPass(vk::VulkanContext& context, const GpuTextures
 void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
                                LightingView view) {
   view_ = view;
-  groups_present_ = 0;
-  for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
-    if (group_begin[group + 1] > group_begin[group]) groups_present_ |= 1u << group;
-  }
+  groups_present_ = shadows::groups_present(group_begin);
   vk::UniquePipeline& pipeline = pipelines_[pipeline_key(groups_present_, view)];
   if (pipeline) return;
   vk::GraphicsPipelineDesc desc = camera_pipeline_desc(

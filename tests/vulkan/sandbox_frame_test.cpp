@@ -161,6 +161,25 @@ TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "light tiles"), 0);
   EXPECT_LE(largest_difference(baseline, forward), 2) << "levels of 255 in the worst channel";
   expect_same_but_edges(baseline, deferred);
+
+  // Every light at every pixel again, tone mapped in the same pass.
+  const vk::Rgba8Image fused = render(lit_by(LightingPath::fused), 2);
+  EXPECT_EQ(passes.back(), "fused forward");
+  EXPECT_LE(largest_difference(fused, forward), 2);
+}
+
+// automatic on a CPU device, each frame: the fused forward pass for a light or two (fewest
+// full-screen passes), deferred for more; the default scene has six lights of six groups.
+TEST_F(SandboxFrameTest, AutomaticLightingFusesAFewLightsOnACpuDevice) {
+  render(sandbox::Options{}, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
+  sandbox::Options one_light = stress(3000, 1, 0, 0.0f);  // a point light and the sun, 2 groups
+  render(one_light, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "fused forward"), 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "tone map"), 0);
+  sandbox::Options three_lights = stress(3000, 1, 1, 0.0f);  // and a spot light: 3 lights, 2 groups
+  render(three_lights, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
 }
 
 // The shadow-only view: white surfaces under white light, so every pixel is grey but the
@@ -178,7 +197,8 @@ TEST_F(SandboxFrameTest, TheShadowOnlyViewIsGreyOnEveryLightingPath) {
   };
   const vk::Rgba8Image lit = render(lit_by(LightingPath::deferred), 1);
   std::vector<vk::Rgba8Image> views;
-  for (const LightingPath path : {LightingPath::deferred, LightingPath::forward, LightingPath::every_light}) {
+  for (const LightingPath path :
+       {LightingPath::deferred, LightingPath::forward, LightingPath::every_light, LightingPath::fused}) {
     sandbox::Options options = lit_by(path);
     options.view = LightingView::shadows;
     views.push_back(render(options, 1));
@@ -187,6 +207,7 @@ TEST_F(SandboxFrameTest, TheShadowOnlyViewIsGreyOnEveryLightingPath) {
   EXPECT_LT(grey_fraction(lit), 0.5);
   expect_same_but_edges(views[1], views[0]);
   EXPECT_LE(largest_difference(views[1], views[2]), 2);
+  EXPECT_LE(largest_difference(views[1], views[3]), 2);
 }
 
 TEST_F(SandboxFrameTest, SixPassCubesRenderTheSamePictureAsLayeredCubes) {

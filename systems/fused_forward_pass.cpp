@@ -1,0 +1,82 @@
+#include "systems/fused_forward_pass.h"
+
+#include <bit>
+
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/pipeline.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/scene_fused.frag.spv.h"
+#include "systems/gpu_scene.h"
+#include "systems/gpu_textures.h"
+#include "systems/shader_bindings.h"
+
+namespace sg {
+namespace {
+
+// The tone curve of shaders/tone_map.glsl, compiled here as C++, for the background's clear colour.
+namespace glsl {
+using namespace glm;
+#include "shaders/tone_map.glsl"
+}  // namespace glsl
+
+using namespace bindings;
+constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+
+}  // namespace
+
+FusedForwardPass::FusedForwardPass(vk::VulkanContext& context, const GpuTextures& textures,
+                                   rg::Format frame_format)
+    : context_(context),
+      textures_(textures),
+      frame_format_(frame_format),
+      light_resources_(context),
+      layout_(context.device(),
+              LightResources::bindings(
+                  fragment,
+                  {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
+                   {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment}}),
+              vk::push_constants<FrameConstants>(both_stages)) {}
+
+void FusedForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
+                               LightingView view) {
+  const uint32_t groups = shadows::groups_present(group_begin);
+  key_ = groups | static_cast<uint32_t>(view) << 16;  // groups take the low light_group_count bits
+  vk::UniquePipeline& pipeline = pipelines_[key_];
+  if (pipeline) return;
+  vk::GraphicsPipelineDesc desc =
+      camera_pipeline_desc(scene_fused_frag, {vk::to_vk(frame_format_)}, layout_.get(), "fused forward");
+  desc.fragment_specialization = {groups, static_cast<uint32_t>(view)};
+  // depth_prepass.vert computed the same positions: draw only what the prepass kept.
+  desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+  desc.depth_write = false;
+  pipeline = vk::create_graphics_pipeline(context_, desc);
+}
+
+FusedTargets FusedForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth, rg::ImageHandle frame,
+                                      rg::ImageHandle atlas, const vk::Buffer& lights, const GpuScene& scene,
+                                      uint32_t slot, FrameConstants constants, float exposure) const {
+  constants.counts.z = std::bit_cast<uint32_t>(exposure);
+  const glm::vec3 background = glsl::tone_map(background_colour, exposure);
+  FusedTargets targets;
+  graph.add_pass(
+      "fused forward",
+      [&](rg::PassBuilder& b) {
+        b.read(atlas, rg::Usage::sampled_fragment);
+        targets.depth = b.write(depth, rg::Usage::depth_attachment);  // tested, not written
+        targets.frame = b.write(frame, rg::Usage::colour_attachment,
+                                rg::ClearValue::colour_of(background.r, background.g, background.b));
+      },
+      [this, &scene, &lights, slot, constants, atlas,
+       pipeline = pipelines_.at(key_).get()](const vk::PassRecorder& rec) {
+        vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
+        writer.buffer(instances_binding, scene.instances(slot).handle())
+            .image(material_textures_binding, textures_.array().view(), textures_.sampler());
+        const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+        scene.draw_camera_pass(rec, pipeline, layout_, set, constants, slot);
+      });
+  return targets;
+}
+
+}  // namespace sg
