@@ -17,19 +17,13 @@ namespace {
 
 using namespace bindings;
 constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 
 }  // namespace
 
 ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures)
     : context_(context),
       light_resources_(context),
-      layout_(context.device(),
-              LightResources::bindings(
-                  fragment,
-                  {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
-                   {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment}}),
-              vk::push_constants<FrameConstants>(both_stages)),
+      layout_(context.device(), lit_camera_bindings(), vk::push_constants<FrameConstants>(both_stages)),
       slot_sets_(layout_.allocate_sets(frames_in_flight)) {
   // The textures never change: bind them once in every slot's set.
   for (const VkDescriptorSet set : slot_sets_.sets) {

@@ -22,7 +22,6 @@ using namespace glm;
 
 using namespace bindings;
 constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 
 }  // namespace
 
@@ -32,12 +31,7 @@ FusedForwardPass::FusedForwardPass(vk::VulkanContext& context, const GpuTextures
       textures_(textures),
       frame_format_(frame_format),
       light_resources_(context),
-      layout_(context.device(),
-              LightResources::bindings(
-                  fragment,
-                  {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
-                   {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment}}),
-              vk::push_constants<FrameConstants>(both_stages)) {}
+      layout_(context.device(), lit_camera_bindings(), vk::push_constants<FrameConstants>(both_stages)) {}
 
 void FusedForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
                                LightingView view) {

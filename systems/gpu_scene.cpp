@@ -7,8 +7,10 @@
 #include "rendergraph/device/upload.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/scene.vert.spv.h"
+#include "systems/light_resources.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
+#include "systems/shader_bindings.h"
 
 namespace sg {
 
@@ -21,6 +23,16 @@ void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface) {
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, normal))});
   desc.vertex_attributes.push_back(
       {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, uv))});
+}
+
+std::vector<VkDescriptorSetLayoutBinding> lit_camera_bindings(
+    std::vector<VkDescriptorSetLayoutBinding> more) {
+  constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+  more.insert(more.begin(), {{bindings::instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                              VK_SHADER_STAGE_VERTEX_BIT | fragment, nullptr},
+                             {bindings::material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                              1, fragment, nullptr}});
+  return LightResources::bindings(fragment, std::move(more));
 }
 
 vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,

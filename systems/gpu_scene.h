@@ -37,6 +37,12 @@ void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface);
 // The depth buffer of every pass that draws the scene from the camera.
 inline constexpr rg::Format camera_depth_format = rg::Format::d32_sfloat;
 
+// The descriptor bindings of a pass that draws the scene from the camera and lights its surfaces
+// in the fragment shader (material.glsl, light_shading.glsl): the light resources, the instances
+// and the material textures, then `more`.
+std::vector<VkDescriptorSetLayoutBinding> lit_camera_bindings(
+    std::vector<VkDescriptorSetLayoutBinding> more = {});
+
 // A pipeline that draws the scene from the camera (shaders/scene.vert, draw_camera_pass) into
 // `colour_formats` with `fragment`, depth-tested against camera_depth_format; callers may
 // adjust the rest.

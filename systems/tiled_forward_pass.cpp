@@ -27,14 +27,11 @@ TiledForwardPass::TiledForwardPass(vk::VulkanContext& context, const GpuTextures
     : context_(context),
       textures_(textures),
       light_resources_(context),
-      layout_(
-          context.device(),
-          LightResources::bindings(
-              fragment, {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
-                         {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fragment},
-                         {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment},
-                         {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment}}),
-          vk::push_constants<FrameConstants>(both_stages)) {}
+      layout_(context.device(),
+              lit_camera_bindings(
+                  {{tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment, nullptr},
+                   {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment, nullptr}}),
+              vk::push_constants<FrameConstants>(both_stages)) {}
 
 void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
                                LightingView view) {
