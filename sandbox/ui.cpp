@@ -160,6 +160,10 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
   constexpr const char* views[] = {"lit", "shadows only"};
   ImGui::Combo("view", &view_, views, IM_ARRAYSIZE(views));
   ImGui::Checkbox("lights per tile (heat map)", &light_heatmap_);
+  if (light_heatmap_ && (facts.lighting == "fused" || facts.lighting == "every light")) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(no light lists on this path)");
+  }
   gpu_history_[history_next_] = float(facts.gpu_frame_ms);
   history_next_ = (history_next_ + 1) % gpu_history_.size();
   ImGui::PlotLines("GPU ms", gpu_history_.data(), int(gpu_history_.size()), int(history_next_), nullptr, 0.0f,
