@@ -160,7 +160,8 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
   constexpr const char* views[] = {"lit", "shadows only"};
   ImGui::Combo("view", &view_, views, IM_ARRAYSIZE(views));
   ImGui::Checkbox("lights per tile (heat map)", &light_heatmap_);
-  if (light_heatmap_ && (facts.lighting == "fused" || facts.lighting == "every light")) {
+  if (light_heatmap_ && (facts.lighting == lighting_path_name(LightingPath::fused) ||
+                         facts.lighting == lighting_path_name(LightingPath::every_light))) {
     ImGui::SameLine();
     ImGui::TextDisabled("(no light lists on this path)");
   }
