@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 #include "ecs/transform.h"
 #include "rendergraph/device/upload.h"
@@ -13,6 +14,11 @@
 #include "systems/shader_bindings.h"
 
 namespace sg {
+namespace {
+
+const scene::Material default_material;  // what an instance without a Material looks like
+
+}  // namespace
 
 void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface) {
   desc.vertex_bindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
@@ -52,7 +58,8 @@ vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment
 GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes, uint32_t frames_in_flight)
     : meshes_(meshes.meshes),
       instances_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "instances"),
-      draws_(context, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, frames_in_flight, "indirect draws") {
+      draws_(context, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, frames_in_flight, "indirect draws"),
+      uploaded_at_(frames_in_flight, 0) {
   if (meshes.indices.empty()) return;  // nothing to draw, and Vulkan refuses empty buffers
   // Storage too: shadow_raster.comp reads the geometry itself.
   constexpr VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
@@ -69,6 +76,80 @@ GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes,
 }
 
 void GpuScene::gather(const ecs::World& world, ecs::ThreadPool* pool) {
+  // The frame's writes carry the tick the previous gather ran at (the frame loop advances the
+  // tick just before gathering), so "new" means written at or after it.
+  const ecs::Tick since = gathered_at_ == 0 ? 0 : gathered_at_ - 1;
+  gathered_at_ = world.tick();
+  ++gathers_;
+  if (gathers_ == 1 || !gather_changes(world, since, pool)) gather_all(world, pool);
+}
+
+void GpuScene::place(const ecs::World& world, size_t i) {
+  const ecs::Entity entity = items_[i].entity;
+  const glm::mat4& model = world.try_get<ecs::WorldTransform>(entity)->matrix;
+  const scene::Material* found = world.try_get<scene::Material>(entity);
+  const scene::Material& material = found ? *found : default_material;
+  const float texture =
+      material.base_color_texture == scene::no_texture ? -1.0f : float(material.base_color_texture);
+  sorted_[i] = {model, glm::vec4(glm::vec3(material.base_color), material.specular),
+                glm::vec4(material.shininess, texture, 0.0f, 0.0f)};
+  bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, model);
+  keys_[i] = uint64_t{entity.generation} << 32 | entity.index;
+}
+
+bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::ThreadPool* pool) {
+  // Anything that adds, removes or reorders instances is rare (editing, streaming): it regathers
+  // everything. Moves and material edits touch only their instances.
+  if (!world.removed_since<scene::MeshInstance>(since).empty() ||
+      !world.removed_since<ecs::WorldTransform>(since).empty() ||
+      !world.removed_since<scene::Material>(since).empty()) {
+    return false;
+  }
+  bool reordered = false;
+  world.query<const scene::MeshInstance>().changed_since<scene::MeshInstance>(since).for_each(
+      [&](const scene::MeshInstance&) { reordered = true; });
+  if (reordered) return false;
+
+  changed_.clear();
+  bool unknown = false;
+  const auto note = [&](ecs::Entity entity) {
+    const uint32_t at = entity.index < place_of_.size() ? place_of_[entity.index] : ecs::SparseSet::npos;
+    if (at == ecs::SparseSet::npos || items_[at].entity != entity) {
+      unknown = true;  // it became an instance by gaining a component
+    } else if (written_at_[at] != gathers_) {
+      written_at_[at] = gathers_;
+      changed_.push_back(at);
+    }
+  };
+  world.query<const ecs::WorldTransform, const scene::MeshInstance>()
+      .changed_since<ecs::WorldTransform>(since)
+      .for_each(
+          [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance&) { note(entity); });
+  world.query<const scene::Material, const ecs::WorldTransform, const scene::MeshInstance>()
+      .changed_since<scene::Material>(since)
+      .for_each([&](ecs::Entity entity, const scene::Material&, const ecs::WorldTransform&,
+                    const scene::MeshInstance&) { note(entity); });
+  if (unknown) return false;
+
+  constexpr size_t chunk = 256;
+  const size_t chunks = (changed_.size() + chunk - 1) / chunk;
+  const auto replace = [&](size_t c) {
+    for (size_t k = c * chunk; k < std::min(changed_.size(), (c + 1) * chunk); ++k) place(world, changed_[k]);
+  };
+  if (pool != nullptr && chunks > 1) {
+    pool->run(chunks, replace);
+  } else {
+    for (size_t c = 0; c < chunks; ++c) replace(c);
+  }
+  // Moved instances can shrink the scene's bounds as well as grow them.
+  if (!changed_.empty()) {
+    scene_bounds_ = {};
+    for (const scene::Aabb& box : bounds_) scene::grow(scene_bounds_, box);
+  }
+  return true;
+}
+
+void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   // Only what orders the instances here; their data is read below, in parallel.
   items_.clear();
   world.query<const ecs::WorldTransform, const scene::MeshInstance>().for_each(
@@ -84,37 +165,36 @@ void GpuScene::gather(const ecs::World& world, ecs::ThreadPool* pool) {
   for (const Item& item : items_) sorted_items_[slot_starts_[slot_of(item)]++] = item;
   std::swap(items_, sorted_items_);
 
-  // Per instance, in its sorted place: its record (model and normal matrices, material), world
-  // bounds and key. Reading the components, the matrix inverses and the bounds' eight corners
-  // are most of a frame's gathering, and independent: chunks of them run on the pool's threads
-  // (the world is only read), each growing its own part of the scene's bounds.
-  const scene::Material default_material;
   const size_t count = items_.size();
+  place_of_.assign(place_of_.size(), ecs::SparseSet::npos);
+  for (size_t i = 0; i < count; ++i) {
+    const uint32_t index = items_[i].entity.index;
+    if (index >= place_of_.size()) place_of_.resize(size_t{index} + 1, ecs::SparseSet::npos);
+    place_of_[index] = static_cast<uint32_t>(i);
+  }
+  written_at_.assign(count, 0);
+  laid_out_at_ = gathers_;
+
+  // Per instance, in its sorted place: its record, world bounds and key. Reading the components
+  // and the bounds' eight corners are most of a full gather, and independent: chunks of them run
+  // on the pool's threads (the world is only read), each growing its own part of the scene's
+  // bounds.
   sorted_.resize(count);
   bounds_.resize(count);
   keys_.resize(count);
   constexpr size_t chunk = 256;  // small, so threads that wake late still find work
   const size_t chunks = (count + chunk - 1) / chunk;
   chunk_bounds_.assign(chunks, scene::Aabb{});
-  const auto place = [&](size_t c) {
+  const auto place_chunk = [&](size_t c) {
     for (size_t i = c * chunk; i < std::min(count, (c + 1) * chunk); ++i) {
-      const ecs::Entity entity = items_[i].entity;
-      const glm::mat4& model = world.try_get<ecs::WorldTransform>(entity)->matrix;
-      const scene::Material* found = world.try_get<scene::Material>(entity);
-      const scene::Material& material = found ? *found : default_material;
-      const float texture =
-          material.base_color_texture == scene::no_texture ? -1.0f : float(material.base_color_texture);
-      sorted_[i] = {model, glm::vec4(glm::vec3(material.base_color), material.specular),
-                    glm::vec4(material.shininess, texture, 0.0f, 0.0f)};
-      bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, model);
-      keys_[i] = uint64_t{entity.generation} << 32 | entity.index;
+      place(world, i);
       scene::grow(chunk_bounds_[c], bounds_[i]);
     }
   };
   if (pool != nullptr && chunks > 1) {
-    pool->run(chunks, place);
+    pool->run(chunks, place_chunk);
   } else {
-    for (size_t c = 0; c < chunks; ++c) place(c);
+    for (size_t c = 0; c < chunks; ++c) place_chunk(c);
   }
   scene_bounds_ = {};
   for (const scene::Aabb& part : chunk_bounds_) scene::grow(scene_bounds_, part);
@@ -144,16 +224,27 @@ void GpuScene::gather(const ecs::World& world, ecs::ThreadPool* pool) {
 }
 
 void GpuScene::upload(uint32_t slot, ecs::ThreadPool* pool) {
-  // Megabytes a frame with many instances: copied in chunks on the pool, as writes into mapped
-  // GPU memory go faster from several cores.
+  // Megabytes a frame with many instances, so a slot gets only the records written since it was
+  // last uploaded, unless the layout changed or its buffer is new. Copies run in chunks on the
+  // pool, as writes into mapped GPU memory go faster from several cores.
   const std::span<const GpuInstance> instances(sorted_);
+  const bool grows = instances_.buffer(slot).size() < instances.size_bytes();
   const vk::Buffer& buffer = instances_.reserve(slot, instances.size_bytes());
+  auto* mapped = static_cast<GpuInstance*>(buffer.mapped());
+  const uint64_t uploaded_at = std::exchange(uploaded_at_[slot], gathers_);
+  const bool everything = grows || uploaded_at < laid_out_at_;
   constexpr size_t chunk = 4096;
   const size_t chunks = (instances.size() + chunk - 1) / chunk;
   const auto copy = [&](size_t c) {
-    const std::span<const GpuInstance> part =
-        instances.subspan(c * chunk, std::min(chunk, instances.size() - c * chunk));
-    std::memcpy(static_cast<GpuInstance*>(buffer.mapped()) + c * chunk, part.data(), part.size_bytes());
+    const size_t begin = c * chunk;
+    const size_t end = std::min(instances.size(), begin + chunk);
+    if (everything) {
+      std::memcpy(mapped + begin, instances.data() + begin, (end - begin) * sizeof(GpuInstance));
+      return;
+    }
+    for (size_t i = begin; i < end; ++i) {
+      if (written_at_[i] > uploaded_at) mapped[i] = instances[i];
+    }
   };
   if (pool != nullptr && chunks > 1) {
     pool->run(chunks, copy);

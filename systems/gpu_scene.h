@@ -58,9 +58,16 @@ class GpuScene {
   // default grey otherwise) into instances and draw lists, on the CPU; bounds() and
   // instance_bounds() describe them from here on. Transforms must be up to date
   // (ecs::update_world_transforms). With `pool`, the per-instance work runs on its threads.
+  //
+  // Incremental: after the first call, only instances whose WorldTransform or Material was
+  // written at or after the tick of the previous call are read again, unless a MeshInstance was
+  // written or one of the three components removed (then everything is). So always pass the
+  // same world, and let its tick advance between frames (ecs::World::advance_tick) so that a
+  // frame's writes are told from the previous frame's.
   void gather(const ecs::World& world, ecs::ThreadPool* pool = nullptr);
-  // Writes what gather() found into the slot's instance and indirect-draw buffers (with `pool`,
-  // the copy runs on its threads).
+  // Writes what gather() found into the slot's instance and indirect-draw buffers: only the
+  // instances gathered since the slot was last written, unless the order changed or the buffer
+  // had to grow (with `pool`, the copy runs on its threads).
   void upload(uint32_t slot, ecs::ThreadPool* pool = nullptr);
 
   // Binds the vertex and index buffers (scene::Vertex at binding 0, 32-bit indices); false when
@@ -102,6 +109,21 @@ class GpuScene {
     bool caster;
     ecs::Entity entity;
   };
+
+  // Instance i's record, bounds and key, from its entity (items_[i]).
+  void place(const ecs::World& world, size_t i);
+  // Re-places the instances written at or after `since`; false, having changed nothing, when
+  // instances were added, removed or reordered.
+  bool gather_changes(const ecs::World& world, ecs::Tick since, ecs::ThreadPool* pool);
+  void gather_all(const ecs::World& world, ecs::ThreadPool* pool);
+
+  ecs::Tick gathered_at_ = 0;          // the world's tick at the last gather
+  uint64_t gathers_ = 0;               // gather() calls so far
+  uint64_t laid_out_at_ = 0;           // the call that last ordered every instance
+  std::vector<uint32_t> place_of_;     // by entity index: its instance, or SparseSet::npos
+  std::vector<uint64_t> written_at_;   // by instance: the call that last placed it (0: the layout's)
+  std::vector<uint32_t> changed_;      // the instances the current call re-places
+  std::vector<uint64_t> uploaded_at_;  // by slot: the call whose instances it holds
   std::vector<Item> items_;
   std::vector<Item> sorted_items_;
   std::vector<uint32_t> slot_starts_;  // counting sort: per (mesh, caster or not)

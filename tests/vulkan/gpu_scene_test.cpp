@@ -1,0 +1,118 @@
+// GpuScene's incremental gathering: after any sequence of moves, material edits, additions and
+// removals, what a long-lived GpuScene holds and uploads must equal what a fresh one gathers
+// from scratch.
+#include <algorithm>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "ecs/transform_system.h"
+#include "systems/gpu_scene.h"
+#include "systems/scene/builtin_scenes.h"
+#include "systems/scene/material.h"
+#include "systems/scene/mesh_instance.h"
+#include "systems/scene/primitive_meshes.h"
+#include "systems/scene/scene.h"
+#include "systems/scene/scene_builder.h"
+#include "vulkan_test_context.h"
+
+namespace sg::test {
+namespace {
+
+std::vector<ecs::Entity> instances_of(ecs::World& world) {
+  std::vector<ecs::Entity> found;
+  world.query<const ecs::WorldTransform, const scene::MeshInstance>().for_each(
+      [&](ecs::Entity e, const ecs::WorldTransform&, const scene::MeshInstance&) { found.push_back(e); });
+  return found;
+}
+
+void expect_same_boxes(std::span<const scene::Aabb> a, std::span<const scene::Aabb> b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].min, b[i].min) << "instance " << i;
+    ASSERT_EQ(a[i].max, b[i].max) << "instance " << i;
+  }
+}
+
+class GpuSceneTest : public GpuTest {};
+
+TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
+  scene::BuiltinSceneParams params;
+  params.triangles = 4000;
+  params.point_lights = 0;
+  params.spot_lights = 0;
+  scene::Scene s = scene::build_scene("stress", params);
+  ecs::World& world = s.world;
+  constexpr uint32_t slots = 2;
+  GpuScene kept(context, s.meshes, slots);
+  std::mt19937 random(7);
+  ecs::Tick transforms_at = 0;
+
+  for (uint32_t frame = 0; frame < 12; ++frame) {
+    std::vector<ecs::Entity> all = instances_of(world);
+    ASSERT_GT(all.size(), 20u);
+    // Most frames move a few instances and recolour one; some change the instance set.
+    for (int m = 0; m < 5; ++m) {
+      ecs::LocalTransform& local = world.get_mut<ecs::LocalTransform>(all[random() % all.size()]);
+      local.translation.x += 0.5f;
+    }
+    world.get_mut<scene::Material>(all[random() % all.size()]).base_color.r = float(frame) / 12.0f;
+    if (frame == 3) scene::add_instance(s, 0, {{1.0f, 2.0f, 3.0f}}, scene::Material{});
+    if (frame == 5) world.destroy(all[random() % all.size()]);
+    if (frame == 7) world.get_mut<scene::MeshInstance>(all[random() % all.size()]).casts_shadow = false;
+    if (frame == 9) world.remove<scene::Material>(all[random() % all.size()]);
+    ecs::update_world_transforms(world, transforms_at);
+    transforms_at = world.tick();
+    world.advance_tick();
+
+    const uint32_t slot = frame % slots;
+    kept.gather(world);
+    kept.upload(slot);
+    GpuScene fresh(context, s.meshes, 1);
+    fresh.gather(world);
+    fresh.upload(0);
+
+    SCOPED_TRACE("frame " + std::to_string(frame));
+    expect_same_boxes(kept.instance_bounds(), fresh.instance_bounds());
+    ASSERT_EQ(kept.bounds().min, fresh.bounds().min);
+    ASSERT_EQ(kept.bounds().max, fresh.bounds().max);
+    ASSERT_TRUE(std::ranges::equal(kept.instance_keys(), fresh.instance_keys()));
+    ASSERT_EQ(kept.caster_groups().size(), fresh.caster_groups().size());
+    for (size_t g = 0; g < kept.caster_groups().size(); ++g) {
+      EXPECT_EQ(kept.caster_groups()[g].firstInstance, fresh.caster_groups()[g].firstInstance);
+      EXPECT_EQ(kept.caster_groups()[g].instanceCount, fresh.caster_groups()[g].instanceCount);
+    }
+    const size_t bytes = size_t{fresh.instance_count()} * sizeof(GpuInstance);
+    EXPECT_EQ(std::memcmp(kept.instances(slot).mapped(), fresh.instances(0).mapped(), bytes), 0)
+        << "slot " << slot << " holds other instance records than a fresh upload";
+  }
+}
+
+TEST_F(GpuSceneTest, AFrameWithoutWritesKeepsEveryInstance) {
+  scene::Scene s;
+  const uint32_t box = scene::add_box_mesh(s.meshes);
+  const ecs::Entity moved = scene::add_instance(s, box, {{0.0f, 0.0f, 0.0f}}, scene::Material{});
+  scene::add_instance(s, box, {{4.0f, 0.0f, 0.0f}}, scene::Material{});
+  ecs::update_world_transforms(s.world, 0);
+  s.world.advance_tick();
+  GpuScene gpu(context, s.meshes, 1);
+  gpu.gather(s.world);
+  const scene::Aabb before = gpu.instance_bounds()[0];
+
+  s.world.advance_tick();
+  gpu.gather(s.world);
+  EXPECT_EQ(gpu.instance_bounds()[0].min, before.min);
+
+  const ecs::Tick since = s.world.tick();
+  s.world.get_mut<ecs::LocalTransform>(moved).translation.y = 2.0f;
+  ecs::update_world_transforms(s.world, since - 1);
+  s.world.advance_tick();
+  gpu.gather(s.world);
+  EXPECT_FLOAT_EQ(gpu.instance_bounds()[0].min.y, before.min.y + 2.0f) << "a move is seen the next frame";
+  EXPECT_FLOAT_EQ(gpu.bounds().max.y, before.max.y + 2.0f) << "and grows the scene's bounds";
+}
+
+}  // namespace
+}  // namespace sg::test
