@@ -19,8 +19,11 @@ struct DirtyRoot {
 // in the hierarchy did (new parent, new depth, or no parent any more).
 std::vector<DirtyRoot> find_dirty(World& world, Tick since) {
   std::vector<Entity> changed;
+  // Entities outside any hierarchy are done by update_world_transforms' own pass.
   world.query<const LocalTransform>().changed_since<LocalTransform>(since).for_each(
-      [&](Entity entity, const LocalTransform&) { changed.push_back(entity); });
+      [&](Entity entity, const LocalTransform&) {
+        if (world.has<Parent>(entity) || world.has<Children>(entity)) changed.push_back(entity);
+      });
   world.query<const Parent>().changed_since<Parent>(since).for_each(
       [&](Entity entity, const Parent&) { changed.push_back(entity); });
   for (const Removal& removal : world.removed_since<Parent>(since)) {
@@ -78,7 +81,21 @@ void update_subtree(World& world, Entity root, Visited& updated, std::vector<Ent
 
 }  // namespace
 
-void update_world_transforms(World& world, Tick since) {
+void update_world_transforms(World& world, Tick since, ThreadPool* threads) {
+  // Most moving things (crates, lights) have neither parent nor children: their world matrix is
+  // their local one, with none of a subtree's lookups and in any order, so in parallel.
+  auto standalone = world.query<const LocalTransform, WorldTransform>()
+                        .without<Parent, Children>()
+                        .changed_since<LocalTransform>(since);
+  const auto update = [](const LocalTransform& local, WorldTransform& world_transform) {
+    world_transform.matrix = to_matrix(local);
+  };
+  if (threads != nullptr) {
+    standalone.for_each_parallel(*threads, update);
+  } else {
+    standalone.for_each(update);
+  }
+
   Visited updated;
   std::vector<Entity> pending;
   // Shallowest first: by the time a dirty entity comes up, either an ancestor's subtree pass

@@ -10,7 +10,8 @@ namespace sg::ecs {
 // where nothing changed are not visited. An entity whose parent is gone is treated as a root.
 //
 // Run it once per frame after the systems that move things, passing the tick of its previous
-// run (0 the first time, to compute everything).
-void update_world_transforms(World& world, Tick since);
+// run (0 the first time, to compute everything). With `threads`, entities outside any hierarchy
+// (no Parent, no Children) are computed on them.
+void update_world_transforms(World& world, Tick since, ThreadPool* threads = nullptr);
 
 }  // namespace sg::ecs

@@ -191,7 +191,7 @@ void SandboxFrame::update(double seconds) {
     scene::animate_bobs(world, time);
     scene::animate_nodes(world, time);
   }
-  ecs::update_world_transforms(world, transforms_updated_);
+  ecs::update_world_transforms(world, transforms_updated_, &renderer_.workers());
   transforms_updated_ = world.tick();
   world.advance_tick();
 }

@@ -110,6 +110,9 @@ class SceneRenderer {
   // the per-light passes' CPU culling.
   uint64_t shadow_caster_draws() const;
   const RendererSettings& settings() const { return settings_; }
+  // The threads gather() and prepare() split their work over, idle in between: the frame's
+  // systems that run before gather() (the transform update) may use them too.
+  ecs::ThreadPool& workers() { return workers_; }
   // Switches the picture between lit and shadow-only from the next prepare() on.
   void set_view(LightingView view) { settings_.view = view; }
 

@@ -1,3 +1,5 @@
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -106,6 +108,43 @@ TEST(TransformSystem, ReparentingAndUnparentingRecomputeSubtree) {
   update_world_transforms(world, last_run);
   EXPECT_EQ(world_position(world, child), glm::vec3(0.0f, 1.0f, 0.0f));
   EXPECT_EQ(world_position(world, grandchild), glm::vec3(0.0f, 1.0f, 1.0f));
+}
+
+// Standalone entities take the parallel pass, the others the hierarchy's: mixed, moved and
+// updated with threads, every matrix must equal a serial update from scratch.
+TEST(TransformSystem, ThreadsGiveTheSerialResult) {
+  World world;
+  std::vector<Entity> standalone;
+  for (int i = 0; i < 40000; ++i) standalone.push_back(spawn(world, {float(i), 0.0f, 0.0f}));
+  const Entity root = spawn(world, {0.0f, 5.0f, 0.0f});
+  const Entity child = spawn(world, {1.0f, 0.0f, 0.0f});
+  const Entity lone_child = spawn(world, {0.0f, 0.0f, 2.0f});
+  set_parent(world, child, root);
+  set_parent(world, lone_child, standalone[6]);  // standalone[6] becomes a parent
+  ThreadPool threads(1);
+  update_world_transforms(world, 0, &threads);
+
+  const Tick last_run = world.tick();
+  world.advance_tick();
+  // More than one parallel task's worth of changes.
+  for (size_t i = 0; i < standalone.size(); ++i) {
+    if (i % 5 != 4) world.get_mut<LocalTransform>(standalone[i]).translation.y = 1;
+  }
+  world.get_mut<LocalTransform>(root).translation.x = 4.0f;
+  update_world_transforms(world, last_run, &threads);
+
+  World& moved = world;
+  std::vector<glm::mat4> threaded;
+  moved.query<const WorldTransform>().for_each(
+      [&](const WorldTransform& t) { threaded.push_back(t.matrix); });
+  update_world_transforms(moved, 0);  // everything again, serially
+  std::vector<glm::mat4> serial;
+  moved.query<const WorldTransform>().for_each([&](const WorldTransform& t) { serial.push_back(t.matrix); });
+  EXPECT_EQ(threaded, serial);
+  EXPECT_EQ(world_position(world, standalone[3]), glm::vec3(3.0f, 1.0f, 0.0f));
+  EXPECT_EQ(world_position(world, standalone[4]), glm::vec3(4.0f, 0.0f, 0.0f));
+  EXPECT_EQ(world_position(world, lone_child), glm::vec3(6.0f, 1.0f, 2.0f));
+  EXPECT_EQ(world_position(world, child), glm::vec3(5.0f, 5.0f, 0.0f));
 }
 
 }  // namespace
