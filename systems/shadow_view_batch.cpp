@@ -5,9 +5,7 @@
 #include <bit>
 #include <cstdio>
 #include <cstring>
-#include <numeric>
 #include <span>
-#include <tuple>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/pipeline.h"
@@ -217,29 +215,31 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
 // due tiles of one size side by side on a row of a page share one region: their depths lie
 // row-major in one rectangle of the buffer, and a frame copies a few rectangles a row of tiles.
 void ShadowViewBatch::place_depths() {
-  by_place_.resize(views_.size());
-  std::iota(by_place_.begin(), by_place_.end(), 0u);
-  std::sort(by_place_.begin(), by_place_.end(), [&](uint32_t a, uint32_t b) {
-    const shadows::AtlasTile& s = view_tiles_[a];
-    const shadows::AtlasTile& t = view_tiles_[b];
-    return std::tie(s.page, s.size, s.y, s.x) < std::tie(t.page, t.size, t.y, t.x);
-  });
+  // By page, size, row, column: one integer each (every field is below 2^16), which sorts
+  // thousands of views several times faster than comparing the fields in turn.
+  placed_.resize(views_.size());
+  for (size_t v = 0; v < views_.size(); ++v) {
+    const shadows::AtlasTile& t = view_tiles_[v];
+    placed_[v] = {uint64_t{t.page} << 48 | uint64_t{t.size} << 32 | uint64_t{t.y} << 16 | t.x,
+                  static_cast<uint32_t>(v)};
+  }
+  std::sort(placed_.begin(), placed_.end(), [](const Placed& a, const Placed& b) { return a.key < b.key; });
   copies_.clear();
   depth_texels_ = 0;
-  for (size_t begin = 0; begin < by_place_.size();) {
-    const shadows::AtlasTile& first = view_tiles_[by_place_[begin]];
+  for (size_t begin = 0; begin < placed_.size();) {
+    const shadows::AtlasTile& first = view_tiles_[placed_[begin].view];
     size_t end = begin + 1;
-    while (end < by_place_.size()) {
-      const shadows::AtlasTile& next = view_tiles_[by_place_[end]];
+    while (end < placed_.size()) {
+      const shadows::AtlasTile& next = view_tiles_[placed_[end].view];
       if (next.page != first.page || next.size != first.size || next.y != first.y ||
-          next.x != view_tiles_[by_place_[end - 1]].x + first.size) {
+          next.x != view_tiles_[placed_[end - 1].view].x + first.size) {
         break;
       }
       ++end;
     }
     const auto pitch = static_cast<uint32_t>(end - begin) * first.size;
     for (size_t k = begin; k < end; ++k) {
-      const uint32_t v = by_place_[k];
+      const uint32_t v = placed_[k].view;
       views_[v].raster = {static_cast<uint32_t>(depth_texels_ + (view_tiles_[v].x - first.x)), pitch, 0u, 0u};
     }
     VkBufferImageCopy copy{};

@@ -123,7 +123,11 @@ class ShadowViewBatch {
   // Compute raster: where each view's depths go in the depth buffer, and the copies into the atlas.
   void place_depths();
   std::vector<shadows::AtlasTile> view_tiles_;  // per view
-  std::vector<uint32_t> by_place_;              // views by page, size, row, column
+  struct Placed {
+    uint64_t key;  // page, size, row, column, 16 bits each
+    uint32_t view;
+  };
+  std::vector<Placed> placed_;  // the views by page, size, row, column
   std::vector<VkBufferImageCopy> copies_;
   uint64_t depth_texels_ = 0;
 };

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <tuple>
 #include <utility>
 
 namespace sg::shadows {
@@ -100,40 +99,44 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
     return;
   }
 
-  // Lights without a valid map, then the stalest, ties by key (the header's order).
-  const auto comes_first = [&](uint32_t a, uint32_t b) {
-    const LightState& x = states_[a];
-    const LightState& y = states_[b];
-    return std::tuple(x.valid, x.rendered_frame, x.key) < std::tuple(y.valid, y.rendered_frame, y.key);
+  // Lights without a valid map, then the stalest, ties by key (the header's order): sort keys
+  // side by side rather than looked up through the lights, so thousands of them sort quickly.
+  order_.clear();
+  for (const uint32_t i : candidates_) {
+    const LightState& state = states_[i];
+    order_.push_back({(state.valid ? uint64_t{1} << 63 : 0) | state.rendered_frame, state.key, i});
+  }
+  const auto comes_first = [](const Ordered& a, const Ordered& b) {
+    return a.stale < b.stale || (a.stale == b.stale && a.key < b.key);
   };
   uint32_t views_left = view_budget;
   bool rendered_any = false;
   const auto take_in_order = [&](auto begin, auto end) {
     for (auto it = begin; it != end && views_left > 0; ++it) {
-      const uint32_t views = lights[*it].views;
+      const uint32_t views = lights[it->light].views;
       if (views > views_left && rendered_any) continue;
-      render[*it] = 1;
+      render[it->light] = 1;
       views_left -= std::min(views, views_left);
       rendered_any = true;
     }
   };
   // Every light has a view at least, so no more than views_left lights fit: ordering that many
   // is enough, unless lights were skipped for having more views than were left.
-  const auto head = candidates_.begin() + std::min<ptrdiff_t>(views_left, std::ssize(candidates_));
-  std::partial_sort(candidates_.begin(), head, candidates_.end(), comes_first);
-  take_in_order(candidates_.begin(), head);
+  const auto head = order_.begin() + std::min<ptrdiff_t>(views_left, std::ssize(order_));
+  std::partial_sort(order_.begin(), head, order_.end(), comes_first);
+  take_in_order(order_.begin(), head);
   // Then fewer views are left than the skipped light had, a handful: the stalest of the rest that
   // still fits, one scan each, costs less than sorting the rest (100,000 lights).
   while (views_left > 0) {
-    auto next = candidates_.end();
-    for (auto it = head; it != candidates_.end(); ++it) {
-      if (render[*it] == 0 && lights[*it].views <= views_left &&
-          (next == candidates_.end() || comes_first(*it, *next)))
+    auto next = order_.end();
+    for (auto it = head; it != order_.end(); ++it) {
+      if (render[it->light] == 0 && lights[it->light].views <= views_left &&
+          (next == order_.end() || comes_first(*it, *next)))
         next = it;
     }
-    if (next == candidates_.end()) break;
-    render[*next] = 1;
-    views_left -= lights[*next].views;
+    if (next == order_.end()) break;
+    render[next->light] = 1;
+    views_left -= lights[next->light].views;
   }
 }
 

@@ -93,6 +93,12 @@ class ShadowCache {
   // Working storage, kept so that a frame allocates nothing once grown.
   std::vector<LightState> matched_;
   std::unordered_map<uint64_t, uint32_t> index_of_key_;
+  struct Ordered {
+    uint64_t stale;  // valid in the top bit, then the frame it was last rendered
+    uint64_t key;
+    uint32_t light;
+  };
+  std::vector<Ordered> order_;        // the dirty lights, in the order they get renders
   std::vector<uint32_t> candidates_;  // lights tested against the caster boxes, then the dirty ones
   std::vector<glm::vec4> candidate_reach_;
   std::vector<uint8_t> candidate_met_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "systems/shadows/atlas_tile_coords.h"
 
@@ -9,6 +10,26 @@ namespace sg::shadows {
 namespace {
 
 constexpr float unbounded_importance = 1.0e9f;
+
+// Reorders `rendered` (one entry per key) to follow `views`: an entry per view, carried over
+// from the same key, or new. Lights that are gone lose theirs; a light never has a cached map
+// without its entry, since the cache forgets lights that leave the list too.
+template <class Views, class Rendered>
+void match_by_key(const Views& views, std::vector<Rendered>& rendered,
+                  std::unordered_map<uint64_t, uint32_t>& index_of_key) {
+  const bool same = std::equal(views.begin(), views.end(), rendered.begin(), rendered.end(),
+                               [](const auto& v, const Rendered& r) { return v.key == r.key; });
+  if (same) return;
+  index_of_key.clear();
+  for (uint32_t i = 0; i < rendered.size(); ++i) index_of_key.emplace(rendered[i].key, i);
+  std::vector<Rendered> matched;
+  matched.reserve(views.size());
+  for (const auto& view : views) {
+    const auto found = index_of_key.find(view.key);
+    matched.push_back(found == index_of_key.end() ? Rendered{.key = view.key} : rendered[found->second]);
+  }
+  rendered = std::move(matched);
+}
 
 }  // namespace
 
@@ -29,7 +50,6 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera,
                               std::span<const CasterBounds> casters, uint32_t view_budget) {
   // Requests: maps first, then cubes, each in the lights' order. A light whose reach is out of
   // the camera's sight shades nothing visible: it asks for no tile at all.
-  ++frame_;
   requests_.clear();
   request_of_.assign(lights.maps.size() + lights.cubes.size(), no_request);
   stats_ = {};
@@ -107,37 +127,33 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera,
   };
   // A cached map was rendered from where its light was then: the record samples it with that
   // view, not the light's present one.
+  match_by_key(lights.maps, rendered_maps_, index_of_key_);
   for (size_t m = 0; m < lights.maps.size(); ++m) {
     ShadowMapView& map = lights.maps[m];
     apply(request_of_[m], 1, map, [&](const ShadowPlacement& placement) {
       map.tile = placement.tiles[0];
-      RenderedView& rendered = rendered_[map.key];
-      rendered.seen = frame_;
-      if (map.render) rendered.map = map.view;
+      RenderedMap& rendered = rendered_maps_[m];
+      if (map.render) rendered.view = map.view;
       set_shadow_map(lights.records[map.light], map.tile.page, tile_uv_rect(map.tile, page_size_),
-                     map.resolution, rendered.map);
+                     map.resolution, rendered.view);
     });
   }
+  match_by_key(lights.cubes, rendered_cubes_, index_of_key_);
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
     ShadowCubeView& cube = lights.cubes[c];
     apply(request_of_[lights.maps.size() + c], 6, cube, [&](const ShadowPlacement& placement) {
       cube.tiles = placement.tiles;
-      RenderedView& rendered = rendered_[cube.key];
-      rendered.seen = frame_;
+      RenderedCube& rendered = rendered_cubes_[c];
       if (cube.render) {
-        rendered.cube = cube.views;
+        rendered.views = cube.views;
         rendered.origin = glm::vec3(cube.position_far);
       }
       std::array<glm::vec2, 6> origins;
       for (int f = 0; f < 6; ++f) origins[f] = glm::vec2(tile_uv_rect(cube.tiles[f], page_size_));
       set_shadow_cube(lights.records[cube.light], cube.tiles[0].page, origins,
-                      float(cube.resolution) / float(page_size_), cube.resolution, rendered.cube,
+                      float(cube.resolution) / float(page_size_), cube.resolution, rendered.views,
                       rendered.origin);
     });
-  }
-  // Forget the views of lights that have no tile any more (or no longer exist).
-  if (rendered_.size() > 2 * cache_lights_.size() + 64) {
-    std::erase_if(rendered_, [&](const auto& entry) { return entry.second.seen != frame_; });
   }
   std::sort(stats_.lights_per_resolution.begin(), stats_.lights_per_resolution.end());
   stats_.texels_used = planner_.stats().texels_used;

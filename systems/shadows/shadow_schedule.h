@@ -83,15 +83,20 @@ class ShadowSchedule {
   std::vector<uint8_t> usable_;
   std::vector<Decision> decision_;  // per request
 
-  // The view each light's map was last rendered with, by key.
-  struct RenderedView {
-    LightView map;
-    CubeViews cube;
-    glm::vec3 origin{0.0f};
-    uint64_t seen = 0;  // the last frame the light had a tile
+  // The view each light's map was last rendered with, in the order of the frame's maps and
+  // cubes: usually the previous frame's lights in the same order, so nothing is looked up.
+  struct RenderedMap {
+    uint64_t key = 0;
+    LightView view;
   };
-  std::unordered_map<uint64_t, RenderedView> rendered_;
-  uint64_t frame_ = 0;
+  struct RenderedCube {
+    uint64_t key = 0;
+    CubeViews views;
+    glm::vec3 origin{0.0f};
+  };
+  std::vector<RenderedMap> rendered_maps_;
+  std::vector<RenderedCube> rendered_cubes_;
+  std::unordered_map<uint64_t, uint32_t> index_of_key_;  // scratch for matching
 };
 
 }  // namespace sg::shadows
