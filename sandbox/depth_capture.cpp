@@ -18,8 +18,10 @@ void DepthCapture::add_to(vk::VulkanContext& context, rg::RenderGraph& graph, vk
   const rg::ImageDesc& source = graph.resources()[depth.index].image;
   const VkExtent2D extent{source.width, source.height};
   if (!image_ || image_->extent().width != extent.width || image_->extent().height != extent.height) {
+    // Only copies touch it, but vk::Image makes a view, and a view needs a usage that views have.
     image_.emplace(context, vk::ImageDesc{extent, VK_FORMAT_D32_SFLOAT,
-                                          VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                          VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                              VK_IMAGE_USAGE_SAMPLED_BIT,
                                           1, 1, VK_IMAGE_VIEW_TYPE_2D, "captured depth"});
   }
   rg::ImageHandle copy = imports.import_image(graph, "captured depth", *image_, transfer_source);
