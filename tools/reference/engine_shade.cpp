@@ -27,10 +27,25 @@ constexpr float min_light = 0.03f;
 // the tone curve's knee, where the picture is still linear.
 constexpr float target_peak = 0.7f;
 constexpr float peak_quantile = 0.995f;
+constexpr float saturated_step = 1.0f / 16.0f;
+constexpr int max_exposure_attempts = 8;
 
 float srgb_to_linear(uint8_t srgb) {
   const float c = float(srgb) / 255.0f;
   return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+// The peak_quantile of the lit surface pixels of `picture` (0 if none is lit). Surfaces only: the
+// background's clear colour is no light's.
+float bright_quantile(const std::vector<float>& picture, const vk::DepthImage& depth) {
+  std::vector<float> lit;
+  for (size_t i = 0; i < picture.size(); ++i) {
+    if (depth.depths[i] < 1.0f && picture[i] > 0.0f) lit.push_back(picture[i]);
+  }
+  if (lit.empty()) return 0.0f;
+  const auto quantile = lit.begin() + std::ptrdiff_t(double(lit.size() - 1) * peak_quantile);
+  std::nth_element(lit.begin(), quantile, lit.end());
+  return *quantile;
 }
 
 // Calls fn with the entity's light component, whichever type it is.
@@ -121,19 +136,19 @@ void EngineShade::isolate(const ReferenceLight& light) {
   scene::ShadowSettings& shadow = world.get_mut<scene::ShadowSettings>(light.entity);
   shadow.casts_shadow = false;
   set_intensity(world, light.entity, intensity);
-  unshadowed_ = render();
   // Scale the light so that its brightest pixels sit below the knee: the ratio of two pictures is
-  // only the visibility where the tone curve is the identity.
-  std::vector<float> lit;
-  for (const float value : unshadowed_) {
-    if (value > 0.0f) lit.push_back(value);
+  // only the visibility where the tone curve is the identity. A saturated picture says nothing of
+  // how far above the knee it is, so that case steps down by a fixed factor and looks again.
+  float scale = 1.0f;
+  for (int attempt = 0;; ++attempt) {
+    unshadowed_ = render();
+    const float peak = bright_quantile(unshadowed_, frame_->read_captured_depth());
+    if (peak <= 0.0f || attempt == max_exposure_attempts) break;
+    const float factor = peak >= glsl::TONE_KNEE ? saturated_step : target_peak / peak;
+    if (factor > 0.8f && factor < 1.25f) break;
+    scale *= factor;
+    set_intensity(world, light.entity, intensity * scale);
   }
-  if (lit.empty()) return;
-  const auto quantile = lit.begin() + std::ptrdiff_t(double(lit.size() - 1) * peak_quantile);
-  std::nth_element(lit.begin(), quantile, lit.end());
-  // A compressed value stands for a larger linear one: the scale then undershoots, never over.
-  set_intensity(world, light.entity, intensity * target_peak / std::max(*quantile, 1e-6f));
-  unshadowed_ = render();
 }
 
 const scene::ShadowSettings& EngineShade::isolated_settings() const {

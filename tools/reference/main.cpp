@@ -46,6 +46,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 64))
       ->capture_default_str();
   app.add_option("--light", settings.light_filter, "Only lights whose name contains this text");
+  app.add_option("--no-shadow-from", settings.no_shadow_from,
+                 "Meshes (or glTF nodes) whose name contains this cast no shadow, in the render and the "
+                 "reference: a marker mesh around a light (repeatable)");
   app.add_option("--max-lights", settings.max_lights, "At most this many lights, in scene order (0: all)")
       ->capture_default_str();
   app.add_option("--images", settings.image_folder, "Folder for the PNGs per light (empty: none)")

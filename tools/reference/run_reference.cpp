@@ -85,6 +85,12 @@ ReferenceReport run_reference(vk::VulkanContext& context, const sandbox::Options
                               const std::function<void(const std::string&)>& progress) {
   sandbox::SandboxScene scene =
       sandbox::load_sandbox_scene(options, float(options.width) / float(options.height));
+  for (const std::string& name : settings.no_shadow_from) {
+    if (stop_casting(scene.scene, name) == 0) {
+      throw std::runtime_error("scene '" + scene.scene.name + "' has no shadow-casting mesh named like '" +
+                               name + "'");
+    }
+  }
   const std::vector<ReferenceLight> lights = chosen_lights(scene.scene, settings);
   if (!settings.image_folder.empty()) std::filesystem::create_directories(settings.image_folder);
 

@@ -31,12 +31,13 @@ struct ReferenceSettings {
   std::vector<uint32_t> resolutions;   // requested map sizes to try; empty: each light's own
   std::optional<float> constant_bias;  // replaces every light's own
   std::optional<float> slope_bias;
-  uint32_t soft_samples = 64;  // rays per pixel of the soft reference
-  int edge_band = 2;           // pixels each side of the hard reference's edge
-  std::string light_filter;    // only lights whose name contains this
-  uint32_t max_lights = 0;     // at most this many lights (0: all), in scene order
-  std::string image_folder;    // PNGs per light go here; empty: none
-  uint32_t cost_frames = 0;    // frames per algorithm for the GPU cost; 0: not measured
+  uint32_t soft_samples = 64;               // rays per pixel of the soft reference
+  int edge_band = 2;                        // pixels each side of the hard reference's edge
+  std::string light_filter;                 // only lights whose name contains this
+  std::vector<std::string> no_shadow_from;  // meshes named like these cast no shadow (stop_casting)
+  uint32_t max_lights = 0;                  // at most this many lights (0: all), in scene order
+  std::string image_folder;                 // PNGs per light go here; empty: none
+  uint32_t cost_frames = 0;                 // frames per algorithm for the GPU cost; 0: not measured
 };
 
 struct AlgorithmRun {

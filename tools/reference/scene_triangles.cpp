@@ -1,5 +1,8 @@
 #include "tools/reference/scene_triangles.h"
 
+#include <utility>
+
+#include "ecs/hierarchy.h"
 #include "ecs/transform.h"
 #include "systems/scene/mesh_instance.h"
 
@@ -20,6 +23,23 @@ SceneTriangles scene_triangles(const scene::Scene& scene) {
         }
       });
   return out;
+}
+
+uint32_t stop_casting(scene::Scene& scene, std::string_view name) {
+  ecs::World& world = scene.world;
+  const auto named = [&](ecs::Entity entity) {
+    const scene::Name* found = world.try_get<scene::Name>(entity);
+    return found && found->value.find(name) != std::string::npos;
+  };
+  std::vector<ecs::Entity> matches;
+  std::as_const(world).query<const scene::MeshInstance>().for_each(
+      [&](ecs::Entity entity, const scene::MeshInstance& instance) {
+        if (!instance.casts_shadow) return;
+        const ecs::Entity parent = ecs::parent_of(world, entity);
+        if (named(entity) || (world.alive(parent) && named(parent))) matches.push_back(entity);
+      });
+  for (const ecs::Entity entity : matches) world.get_mut<scene::MeshInstance>(entity).casts_shadow = false;
+  return static_cast<uint32_t>(matches.size());
 }
 
 }  // namespace sg::reference
