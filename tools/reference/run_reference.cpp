@@ -1,5 +1,6 @@
 #include "tools/reference/run_reference.h"
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>

@@ -1,5 +1,6 @@
 #include "tools/reference/scene_triangles.h"
 
+#include <string>
 #include <utility>
 
 #include "ecs/hierarchy.h"

@@ -1,6 +1,7 @@
 #include "tools/reference/surface_points.h"
 
-#include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include "systems/camera.h"
 

@@ -1,5 +1,6 @@
 #include "tools/reference/visibility.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
