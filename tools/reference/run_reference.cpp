@@ -57,6 +57,58 @@ scene::ShadowSettings run_settings(scene::ShadowSettings shadow, const Reference
   return shadow;
 }
 
+// The light's references traced from `points`, then its render for each resolution and
+// algorithm of `settings` measured against them (and pictured, with an image folder).
+LightReport compare_light(EngineShade& engine, const SurfacePoints& points, const RayScene& casters,
+                          const ReferenceLight& light, const ReferenceSettings& settings,
+                          ecs::ThreadPool& pool, const std::function<void(const std::string&)>& progress) {
+  LightReport result{light.name, light.type, 0.0, {}};
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<float> hard = hard_visibility(casters, points, light, pool);
+  const std::vector<float> soft = soft_visibility(casters, points, light, settings.soft_samples, pool);
+  result.trace_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char line[160];
+  std::snprintf(line, sizeof(line), "  references traced in %.2f s", result.trace_seconds);
+  say(progress, line);
+
+  engine.isolate(light);
+  const scene::ShadowSettings own = engine.isolated_settings();
+  const std::vector<uint32_t> resolutions =
+      settings.resolutions.empty() ? std::vector<uint32_t>{own.resolution} : settings.resolutions;
+  const uint32_t w = points.width;
+  const uint32_t h = points.height;
+  const std::string stem = settings.image_folder + "/" + file_stem(light.name);
+  for (const uint32_t resolution : resolutions) {
+    for (const scene::ShadowAlgorithm algorithm : settings.algorithms) {
+      const EngineVisibility render = engine.visibility(run_settings(own, settings, algorithm, resolution));
+      ShadowImages images{w, h, render.measured, hard, soft, render.visibility};
+      for (size_t i = 0; i < images.measured.size(); ++i) {
+        images.measured[i] = images.measured[i] && points.points[i].valid;
+      }
+      const ShadowMetrics metrics = shadow_metrics(images, settings.edge_band);
+      result.runs.push_back({algorithm, resolution, render.resolution, metrics});
+      const std::string name(scene::to_string(algorithm));
+      std::snprintf(line, sizeof(line),
+                    "  %-10s map %4u: misclassified %.2f%%, penumbra MAE %.3f, acne %.2f%%", name.c_str(),
+                    render.resolution, 100.0 * metrics.misclassified, metrics.penumbra.mean_absolute,
+                    100.0 * metrics.acne);
+      say(progress, line);
+      if (settings.image_folder.empty()) continue;
+      if (result.runs.size() == 1) {
+        sandbox::write_png(stem + "_reference_hard.png", visibility_image(w, h, hard, images.measured));
+        sandbox::write_png(stem + "_reference_soft.png", visibility_image(w, h, soft, images.measured));
+      }
+      const std::string run = stem + "_" + name + "_" + std::to_string(resolution);
+      sandbox::write_png(run + "_engine.png", visibility_image(w, h, render.visibility, images.measured));
+      // Hard shadows are compared with the hard reference, the filtered ones with the soft.
+      const std::vector<float>& truth = algorithm == scene::ShadowAlgorithm::hard ? hard : soft;
+      sandbox::write_png(run + "_difference.png",
+                         difference_image(w, h, render.visibility, truth, images.measured));
+    }
+  }
+  return result;
+}
+
 std::vector<AlgorithmCost> measure_costs(vk::VulkanContext& context, const sandbox::Options& options,
                                          const ReferenceSettings& settings,
                                          const std::function<void(const std::string&)>& progress) {
@@ -112,56 +164,10 @@ ReferenceReport run_reference(vk::VulkanContext& context, const sandbox::Options
   {
     EngineShade engine(context, scene, options);
     const SurfacePoints points = surface_points(engine.depth(), scene.pose, scene.lens, surfaces, pool);
-    const uint32_t w = points.width;
-    const uint32_t h = points.height;
     for (size_t l = 0; l < lights.size(); ++l) {
-      const ReferenceLight& light = lights[l];
-      LightReport result{light.name, light.type, 0.0, {}};
-      const auto start = std::chrono::steady_clock::now();
-      const std::vector<float> hard = hard_visibility(casters, points, light, pool);
-      const std::vector<float> soft = soft_visibility(casters, points, light, settings.soft_samples, pool);
-      result.trace_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       say(progress, "light " + std::to_string(l + 1) + "/" + std::to_string(lights.size()) + " '" +
-                        light.name + "' (" + std::string(to_string(light.type)) + "): traced in " +
-                        std::to_string(result.trace_seconds) + " s");
-      engine.isolate(light);
-      const scene::ShadowSettings own = engine.isolated_settings();
-      const std::vector<uint32_t> resolutions =
-          settings.resolutions.empty() ? std::vector<uint32_t>{own.resolution} : settings.resolutions;
-      const std::string stem = settings.image_folder + "/" + file_stem(light.name);
-      bool references_written = false;
-      for (const uint32_t resolution : resolutions) {
-        for (const scene::ShadowAlgorithm algorithm : settings.algorithms) {
-          const EngineVisibility render =
-              engine.visibility(run_settings(own, settings, algorithm, resolution));
-          ShadowImages images{w, h, render.measured, hard, soft, render.visibility};
-          for (size_t i = 0; i < images.measured.size(); ++i) {
-            images.measured[i] = images.measured[i] && points.points[i].valid;
-          }
-          const ShadowMetrics metrics = shadow_metrics(images, settings.edge_band);
-          result.runs.push_back({algorithm, resolution, render.resolution, metrics});
-          char line[160];
-          std::snprintf(line, sizeof(line),
-                        "  %-10s map %4u: misclassified %.2f%%, penumbra MAE %.3f, acne %.2f%%",
-                        std::string(scene::to_string(algorithm)).c_str(), render.resolution,
-                        100.0 * metrics.misclassified, metrics.penumbra.mean_absolute, 100.0 * metrics.acne);
-          say(progress, line);
-          if (settings.image_folder.empty()) continue;
-          if (!references_written) {
-            sandbox::write_png(stem + "_reference_hard.png", visibility_image(w, h, hard, images.measured));
-            sandbox::write_png(stem + "_reference_soft.png", visibility_image(w, h, soft, images.measured));
-            references_written = true;
-          }
-          const std::string run =
-              stem + "_" + std::string(scene::to_string(algorithm)) + "_" + std::to_string(resolution);
-          sandbox::write_png(run + "_engine.png", visibility_image(w, h, render.visibility, images.measured));
-          // Hard shadows are compared with the hard reference, the filtered ones with the soft.
-          const std::vector<float>& truth = algorithm == scene::ShadowAlgorithm::hard ? hard : soft;
-          sandbox::write_png(run + "_difference.png",
-                             difference_image(w, h, render.visibility, truth, images.measured));
-        }
-      }
-      report.lights.push_back(std::move(result));
+                        lights[l].name + "' (" + std::string(to_string(lights[l].type)) + ")");
+      report.lights.push_back(compare_light(engine, points, casters, lights[l], settings, pool, progress));
     }
   }
   if (settings.cost_frames > 0) report.costs = measure_costs(context, options, settings, progress);
