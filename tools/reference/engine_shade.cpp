@@ -27,6 +27,8 @@ constexpr float min_light = 0.03f;
 // the tone curve's knee, where the picture is still linear.
 constexpr float target_peak = 0.7f;
 constexpr float peak_quantile = 0.995f;
+// A saturated picture is dimmed by this and looked at again, at most this many times (16^8
+// covers any intensity a scene file can hold).
 constexpr float saturated_step = 1.0f / 16.0f;
 constexpr int max_exposure_attempts = 8;
 
@@ -114,8 +116,7 @@ std::vector<float> EngineShade::render() {
   ring_.wait_idle();
   const vk::Rgba8Image image = vk::read_rgba8(context_, frame_->image());
   std::vector<float> out(size_t{image.width} * image.height);
-  // White light on white surfaces: every channel holds the same value; green has the most bits
-  // in no format, but any channel will do.
+  // White light on white surfaces: every channel holds the same value.
   for (size_t i = 0; i < out.size(); ++i) out[i] = srgb_to_linear(image.pixels[i * 4 + 1]);
   return out;
 }
