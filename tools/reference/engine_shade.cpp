@@ -27,8 +27,8 @@ constexpr float min_light = 0.03f;
 // the tone curve's knee, where the picture is still linear.
 constexpr float target_peak = 0.7f;
 constexpr float peak_quantile = 0.995f;
-// A saturated picture is dimmed by this and looked at again, at most this many times (16^8
-// covers any intensity a scene file can hold).
+// A saturated picture is dimmed by this and looked at again, at most this many times: over nine
+// orders of magnitude, beyond any scene's lights seen so far.
 constexpr float saturated_step = 1.0f / 16.0f;
 constexpr int max_exposure_attempts = 8;
 
