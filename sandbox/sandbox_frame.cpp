@@ -156,6 +156,12 @@ void SandboxFrame::save_edits() const {
   std::printf("shadowgraph: saved the lights and camera to %s\n", path.string().c_str());
 }
 
+vk::DepthImage SandboxFrame::read_captured_depth() const {
+  if (!depth_capture_)
+    throw std::logic_error("SandboxFrame::read_captured_depth: capture_depth() was not called");
+  return depth_capture_->read(context_);
+}
+
 UiFacts SandboxFrame::ui_facts() const {
   UiFacts facts;
   const auto last = [](const std::vector<double>& samples) { return samples.empty() ? 0.0 : samples.back(); };
@@ -201,6 +207,7 @@ void SandboxFrame::declare_passes(uint32_t slot, const std::optional<PresentTarg
   const rg::ImageHandle frame_image = imports_.import_image(graph_, "frame", image_, transfer_source);
   const RenderedFrame targets =
       renderer_.add_passes(graph_, imports_, frame_image, slot, scene_.pose, scene_.lens);
+  if (depth_capture_) depth_capture_->add_to(context_, graph_, imports_, targets.depth);
   rg::ImageHandle colour = targets.colour;
   if (depth_overlay_enabled_) colour = depth_overlay_.add_to(graph_, targets.depth, colour, scene_.lens);
   const bool heatmap = ui_ ? ui_->light_heatmap() : light_heatmap_.has_value();

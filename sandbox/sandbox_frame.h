@@ -23,6 +23,7 @@
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/graph_executor.h"
 #include "rendergraph/vulkan/graph_imports.h"
+#include "sandbox/depth_capture.h"
 #include "sandbox/depth_overlay_pass.h"
 #include "sandbox/light_heatmap_pass.h"
 #include "sandbox/options.h"
@@ -78,6 +79,11 @@ class SandboxFrame {
   void save_edits() const;
   // The panels (nullptr without --ui).
   SandboxUi* ui() { return ui_.get(); }
+  // From the next record() on, each frame also copies the camera's depth buffer into an image
+  // kept after the frame (depth_capture.h), which read_captured_depth returns once the frame's
+  // commands have completed.
+  void capture_depth() { depth_capture_.emplace(); }
+  vk::DepthImage read_captured_depth() const;
 
   // Per recorded frame: CPU milliseconds of each phase of record(), and of the renderer's steps
   // within gather and prepare (SceneRenderer::CpuSteps).
@@ -109,6 +115,7 @@ class SandboxFrame {
   std::optional<LightHeatmapPass> light_heatmap_;  // with --light-heatmap or the panels
   std::unique_ptr<SandboxUi> ui_;                  // with --ui
   std::unique_ptr<UiPass> ui_pass_;
+  std::optional<DepthCapture> depth_capture_;  // after capture_depth()
   vk::GraphExecutor executor_;
   rg::PlanCache plans_;
   vk::GraphImports imports_;

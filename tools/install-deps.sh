@@ -9,6 +9,7 @@ packages=(
   mesa-vulkan-drivers vulkan-validationlayers  # lavapipe CPU device, Khronos validation
   libglfw3-dev libglm-dev libtinygltf-dev libimgui-dev libstb-dev
   nlohmann-json3-dev libcli11-dev
+  libembree-dev                              # Intel Embree: ray-traced shadow reference (tools/reference)
   libgtest-dev libbenchmark-dev              # tests and benchmarks
   xvfb xauth                                 # a virtual display for the window tests
 )

@@ -37,8 +37,6 @@ scene::ShadowSettings with_overrides(scene::ShadowSettings shadow, const LightOv
   return shadow;
 }
 
-uint64_t key_of(ecs::Entity entity) { return uint64_t{entity.generation} << 32 | entity.index; }
-
 // Whether the light's transform, parameters or shadow settings were written since `since`.
 template <class Light>
 bool changed_since(const ecs::World& world, ecs::Entity entity, ecs::Tick since) {
@@ -70,7 +68,7 @@ void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick
   if (!light.shadowed) return;
   ShadowMapView& map = out.maps[light.view];
   map.light = index;
-  map.key = key_of(light.entity);
+  map.key = light_key(light.entity);
   map.requested_resolution = clamp_resolution(s.resolution, max_map_resolution);
   const glm::vec3 position = scene::light_position(transform);
   const glm::vec3 direction = scene::light_direction(transform);
@@ -101,7 +99,7 @@ void fill_point(const ecs::World& world, const LightOverrides& overrides, ecs::T
   const glm::vec3 position = scene::light_position(transform);
   ShadowCubeView& cube = out.cubes[light.view];
   cube.light = index;
-  cube.key = key_of(light.entity);
+  cube.key = light_key(light.entity);
   cube.requested_resolution = clamp_resolution(s.resolution, max_cube_resolution);
   cube.views = point_light_cube(position, parameters.range);
   cube.position_far = glm::vec4(position, parameters.range);
@@ -115,6 +113,8 @@ ShadowKind shadow_kind(const GpuLight& record) {
 }
 
 }  // namespace
+
+uint64_t light_key(ecs::Entity entity) { return uint64_t{entity.generation} << 32 | entity.index; }
 
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
                    FrameLights& out, ecs::ThreadPool* pool) {

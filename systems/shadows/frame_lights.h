@@ -39,6 +39,10 @@ inline constexpr uint32_t min_shadow_resolution = 16;
 inline constexpr uint32_t max_map_resolution = 4096;
 inline constexpr uint32_t max_cube_resolution = 2048;
 
+// The key of a light's shadow views (ShadowMapView::key, ShadowCubeView::key): its entity, the
+// same from frame to frame.
+uint64_t light_key(ecs::Entity entity);
+
 struct ShadowMapView {
   uint32_t light = 0;                 // index into FrameLights::records
   uint64_t key = 0;                   // the light's entity, the same from frame to frame

@@ -1,6 +1,6 @@
 // The five shadow algorithms on lavapipe against a CPU ray-cast reference (issue 6): a floor, a
-// box and one light, built here; every render goes through the sandbox's frame graph with
-// validation and synchronization validation on.
+// box and one light (tests/support/floor_box_scene.h); every render goes through the sandbox's frame graph
+// with validation and synchronization validation on.
 //
 // The shadow factor of each pixel is measured, not guessed from colours: the scene is rendered
 // with shadows (S), without (U) and with the light off (D), and in linear light
@@ -21,6 +21,7 @@
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"
+#include "tests/support/floor_box_scene.h"
 #include "tests/support/shadow_reference.h"
 #include "vulkan_test_context.h"
 
@@ -29,88 +30,22 @@ namespace {
 
 constexpr uint32_t width = 160;
 constexpr uint32_t height = 120;
-constexpr float floor_half_extent = 10.0f;
 // Pixels where the light adds less than this (linear) to the floor are not measured.
 constexpr float min_light = 0.08f;
-
-enum class LightKind { spot, point };
-
-struct ShadowScene {
-  LightKind kind = LightKind::spot;
-  glm::vec3 light_position{-3.0f, 6.0f, -2.0f};  // off to the side: the shadow falls toward the camera
-  scene::ShadowSettings shadow;
-  float box_bottom = 1.0f;  // height of the occluder's underside above the floor
-  float intensity = 1.6f;
-  bool with_box = true;
-  glm::vec3 aim{0.0f, -1.0f, 0.001f};  // the spot's direction
-};
-
-// The occluder: a 1.6 x 0.5 x 1.2 m box turned 0.5 rad about +Y, its underside at box_bottom.
-ecs::LocalTransform box_placement(const ShadowScene& s) {
-  const glm::vec3 size{1.6f, 0.5f, 1.2f};
-  return {{0.0f, s.box_bottom + size.y / 2, 0.0f}, glm::angleAxis(0.5f, glm::vec3(0, 1, 0)), size};
-}
-
-// Lights shine down their local -Z, the way cameras look.
-ecs::LocalTransform aimed_light(glm::vec3 position, glm::vec3 direction) {
-  return {position, scene::look_rotation(position, position + direction), glm::vec3(1.0f)};
-}
 
 ecs::LocalTransform downward_light(glm::vec3 position) {
   return aimed_light(position, glm::vec3(0.0f, -1.0f, 0.001f));
 }
 
-scene::Material grey_floor() {
-  scene::Material floor;
-  floor.base_color = {0.6f, 0.6f, 0.6f, 1.0f};
-  floor.specular = 0.0f;  // keeps shade measurable: no highlight to clip
-  return floor;
-}
+CameraImage camera() { return floor_camera({width, height}); }
 
-CameraImage camera() {
-  CameraImage c;
-  c.pose = {{0.0f, 11.0f, 6.0f}, {0.0f, 0.0f, 0.0f}};
-  c.lens = scene::Camera{};
-  c.size = {width, height};
-  return c;
-}
-
-// A scene with the grey floor (its top at y = 0) and the box mesh, for the tests to fill.
-sandbox::SandboxScene floor_scene(const char* name, uint32_t& box) {
-  sandbox::SandboxScene out;
-  out.scene.name = name;
-  box = scene::add_box_mesh(out.scene.meshes);
-  scene::add_instance(
-      out.scene, box,
-      {{0.0f, -0.1f, 0.0f}, glm::quat(1, 0, 0, 0), {2 * floor_half_extent, 0.2f, 2 * floor_half_extent}},
-      grey_floor());
-  out.camera_source = "test";
+sandbox::SandboxScene sandbox_scene(scene::Scene scene) {
+  sandbox::SandboxScene out{std::move(scene), camera().pose, camera().lens, "test"};
   return out;
 }
 
 sandbox::SandboxScene build(const ShadowScene& s, float intensity) {
-  uint32_t box = 0;
-  sandbox::SandboxScene out = floor_scene("shadow test", box);
-  scene::Scene& scene = out.scene;
-  if (s.with_box) scene::add_instance(scene, box, box_placement(s), scene::Material{});
-  const ecs::LocalTransform aim = aimed_light(s.light_position, s.aim);
-  if (s.kind == LightKind::spot) {
-    scene::SpotLight light;
-    light.intensity = intensity;
-    light.range = 20.0f;
-    light.inner_cone = glm::radians(55.0f);
-    light.outer_cone = glm::radians(65.0f);
-    scene::add_light(scene, light, aim, s.shadow, "spot");
-  } else {
-    scene::PointLight light;
-    light.intensity = intensity;
-    light.range = 20.0f;
-    scene::add_light(scene, light, aim, s.shadow, "point");
-  }
-  ecs::update_world_transforms(scene.world, 0);
-  out.pose = camera().pose;
-  out.lens = camera().lens;
-  return out;
+  return sandbox_scene(build_shadow_scene(s, intensity));
 }
 
 float linear(uint8_t srgb) {
@@ -163,12 +98,7 @@ class ShadowAlgorithms : public GpuTest {
     return out;
   }
 
-  FloorPixels reference(const ShadowScene& s, int band) {
-    const Box box{ecs::to_matrix(box_placement(s))};
-    return with_edge_band(classify_floor(camera(), floor_half_extent, s.light_position,
-                                         std::span<const Box>(&box, s.with_box ? 1 : 0)),
-                          band);
-  }
+  FloorPixels reference(const ShadowScene& s, int band) { return floor_reference(s, {width, height}, band); }
 
   std::vector<uint8_t> last_pixels;
 };
@@ -331,7 +261,7 @@ TEST_F(ShadowAlgorithms, FiveLightsEachRenderWithTheirOwnAlgorithm) {
   constexpr float spacing = 4.0f;
   const auto build_row = [&]() {
     uint32_t box = 0;
-    sandbox::SandboxScene out = floor_scene("five lights", box);
+    sandbox::SandboxScene out = sandbox_scene(floor_scene("five lights", box));
     scene::Scene& scene = out.scene;
     for (int i = 0; i < 5; ++i) {
       const float x = (i - 2) * spacing;

@@ -2,9 +2,10 @@
 // sandbox scene (issue 6's comparison of the five algorithms).
 //
 // For each algorithm it renders the scene with every light forced to it (--algorithm), and once
-// with shadows off; the lighting pass's extra time over "off", divided by the lights that cast a
-// shadow, is the algorithm's cost per light at that resolution. Shadow-map passes do not depend
-// on the algorithm and are reported once. Prints a Markdown table; every sandbox option applies.
+// with shadows off; the lighting passes' extra time over "off" (every pass but the shadow maps),
+// divided by the lights that cast a shadow, is the algorithm's cost per light at that resolution. Shadow-map
+// passes do not depend on the algorithm and are reported once. Prints a Markdown table; every sandbox option
+// applies.
 #include <cstdio>
 #include <exception>
 #include <optional>
@@ -14,45 +15,11 @@
 #include <CLI/CLI.hpp>
 
 #include "rendergraph/device/context.h"
-#include "rendergraph/device/frame_ring.h"
-#include "sandbox/gpu_time_log.h"
-#include "sandbox/headless_frames.h"
+#include "sandbox/frame_cost.h"
 #include "sandbox/options.h"
-#include "sandbox/sandbox_frame.h"
-#include "sandbox/scene_setup.h"
 
-namespace {
-
+using sg::sandbox::FrameCost;
 using sg::sandbox::Options;
-using sg::sandbox::PassTime;
-
-struct Measurement {
-  double forward_ms = 0.0;  // median of the lighting pass
-  double shadow_ms = 0.0;   // median per frame of all shadow-map passes
-  double frame_ms = 0.0;
-  uint32_t shadowed_lights = 0;
-};
-
-Measurement measure(sg::vk::VulkanContext& context, const Options& options, uint32_t frames) {
-  sg::sandbox::SandboxScene scene =
-      sg::sandbox::load_sandbox_scene(options, float(options.width) / float(options.height));
-  sg::vk::FrameRing ring(context);
-  sg::sandbox::SandboxFrame frame(context, scene, options, ring.frames_in_flight());
-  frame.resize({options.width, options.height});
-  sg::sandbox::GpuTimeLog log;
-  sg::sandbox::render_headless_frames(frame, ring, frames, log);
-  Measurement m;
-  for (const PassTime& pass : log.pass_summaries()) {
-    if (pass.name == "forward") m.forward_ms = pass.gpu_ms.median;
-    if (pass.name.rfind("shadow", 0) == 0) m.shadow_ms += pass.gpu_ms.median;
-  }
-  if (const auto frame_ms = sg::sandbox::summarize(log.frame_ms())) m.frame_ms = frame_ms->median;
-  const sg::shadows::FrameLights& lights = frame.renderer().lights();
-  m.shadowed_lights = static_cast<uint32_t>(lights.maps.size() + lights.cubes.size());
-  return m;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   Options options;
@@ -73,20 +40,20 @@ int main(int argc, char** argv) {
                 options.width, options.height, options.scene.c_str(), frames);
     Options off = options;
     off.shadows = false;
-    const Measurement base = measure(context, off, frames);
+    const FrameCost base = sg::sandbox::measure_frame_cost(context, off, frames);
     std::printf(
-        "| algorithm | lighting pass (ms) | over shadows off (ms) | per shadowed light (ms) | shadow maps "
+        "| algorithm | lighting passes (ms) | over shadows off (ms) | per shadowed light (ms) | shadow maps "
         "(ms) | GPU frame (ms) |\n");
     std::printf("|---|---:|---:|---:|---:|---:|\n");
-    std::printf("| off | %.3f | - | - | - | %.3f |\n", base.forward_ms, base.frame_ms);
+    std::printf("| off | %.3f | - | - | - | %.3f |\n", base.lighting_ms, base.frame_ms);
     for (const sg::scene::ShadowAlgorithm algorithm : sg::scene::all_shadow_algorithms) {
       Options run = options;
       run.algorithm = algorithm;
-      const Measurement m = measure(context, run, frames);
-      const double extra = m.forward_ms - base.forward_ms;
+      const FrameCost m = sg::sandbox::measure_frame_cost(context, run, frames);
+      const double extra = m.lighting_ms - base.lighting_ms;
       std::printf("| %s | %.3f | %.3f | %.4f | %.3f | %.3f |\n",
-                  std::string(sg::scene::to_string(algorithm)).c_str(), m.forward_ms, extra,
-                  m.shadowed_lights ? extra / m.shadowed_lights : 0.0, m.shadow_ms, m.frame_ms);
+                  std::string(sg::scene::to_string(algorithm)).c_str(), m.lighting_ms, extra,
+                  m.shadowed_lights ? extra / m.shadowed_lights : 0.0, m.shadow_maps_ms, m.frame_ms);
       std::fflush(stdout);
     }
     if (context.validation_enabled() && context.validation_errors() > 0) return 3;

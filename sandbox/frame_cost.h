@@ -1,0 +1,24 @@
+#pragma once
+// The GPU cost of the sandbox's frame under given options, split into shadow-map passes and the
+// rest: what the algorithm-costs and reference tools compare between shadow algorithms.
+#include <cstdint>
+
+#include "sandbox/options.h"
+
+namespace sg::vk {
+class VulkanContext;
+}
+
+namespace sg::sandbox {
+
+struct FrameCost {
+  double lighting_ms = 0.0;      // the median per frame of every pass but the shadow-map passes
+  double shadow_maps_ms = 0.0;   // the median per frame of the passes named "shadow ..."
+  double frame_ms = 0.0;         // the median GPU frame
+  uint32_t shadowed_lights = 0;  // lights with a shadow map in the last frame
+};
+
+// Loads options.scene and renders `frames` headless frames of it (render_headless_frames).
+FrameCost measure_frame_cost(vk::VulkanContext& context, const Options& options, uint32_t frames);
+
+}  // namespace sg::sandbox

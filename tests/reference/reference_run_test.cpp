@@ -1,0 +1,61 @@
+// Whole runs of the reference tool on lavapipe, on the default scene at a small size: a
+// deliberately broken configuration must come out worse than the scene's own settings.
+#include <gtest/gtest.h>
+
+#include "tools/reference/run_reference.h"
+#include "vulkan_test_context.h"
+
+namespace sg::test {
+namespace {
+
+class ReferenceRun : public GpuTest {
+ protected:
+  reference::ReferenceReport run(const reference::ReferenceSettings& settings) {
+    sandbox::Options options;
+    options.width = 160;
+    options.height = 90;
+    return reference::run_reference(context, options, settings);
+  }
+
+  static reference::ReferenceSettings one_light() {
+    reference::ReferenceSettings settings;
+    settings.algorithms = {scene::ShadowAlgorithm::hard};
+    settings.light_filter = "spot west";
+    settings.soft_samples = 4;
+    return settings;
+  }
+};
+
+TEST_F(ReferenceRun, ZeroBiasAtResolution32IsWorseThanTheDefault) {
+  const reference::ReferenceReport good = run(one_light());
+  reference::ReferenceSettings broken_settings = one_light();
+  broken_settings.constant_bias = 0.0f;
+  broken_settings.slope_bias = 0.0f;
+  broken_settings.resolutions = {32};
+  const reference::ReferenceReport broken = run(broken_settings);
+
+  ASSERT_EQ(good.lights.size(), 1u);
+  ASSERT_EQ(broken.lights.size(), 1u);
+  const reference::AlgorithmRun& g = good.lights[0].runs.at(0);
+  const reference::AlgorithmRun& b = broken.lights[0].runs.at(0);
+  ASSERT_GT(g.metrics.measured, 1000u);
+  ASSERT_GT(g.metrics.shadowed, 50u) << "the light must cast a visible shadow";
+  EXPECT_EQ(b.resolution, 32u);
+  EXPECT_LT(g.metrics.misclassified, 0.01);
+  EXPECT_GT(b.metrics.misclassified, g.metrics.misclassified + 0.01);
+  EXPECT_GT(b.metrics.acne, g.metrics.acne);
+}
+
+TEST_F(ReferenceRun, ASceneWithoutMatchingLightsIsAClearError) {
+  reference::ReferenceSettings settings = one_light();
+  settings.light_filter = "no such light";
+  try {
+    run(settings);
+    FAIL() << "expected an error";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("no such light"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace sg::test

@@ -1,0 +1,51 @@
+#include "tools/reference/reference_lights.h"
+
+#include "ecs/transform.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/shadow_settings.h"
+
+namespace sg::reference {
+namespace {
+
+template <typename Light>
+void collect(const scene::Scene& scene, LightType type, std::vector<ReferenceLight>& out) {
+  scene.world.query<const ecs::WorldTransform, const Light, const scene::ShadowSettings>().for_each(
+      [&](ecs::Entity entity, const ecs::WorldTransform& world, const Light&,
+          const scene::ShadowSettings& shadow) {
+        if (!shadow.casts_shadow) return;
+        ReferenceLight light;
+        light.entity = entity;
+        const scene::Name* name = scene.world.try_get<scene::Name>(entity);
+        light.name = name && !name->value.empty()
+                         ? name->value
+                         : std::string(to_string(type)) + " " + std::to_string(out.size());
+        light.type = type;
+        light.position = scene::light_position(world);
+        light.direction = scene::light_direction(world);
+        light.light_size = shadow.light_size;
+        out.push_back(std::move(light));
+      });
+}
+
+}  // namespace
+
+std::string_view to_string(LightType type) {
+  switch (type) {
+    case LightType::point: return "point";
+    case LightType::spot: return "spot";
+    case LightType::directional: return "directional";
+    case LightType::cylinder: return "cylinder";
+  }
+  return "?";
+}
+
+std::vector<ReferenceLight> shadowed_lights(const scene::Scene& scene) {
+  std::vector<ReferenceLight> out;
+  collect<scene::SpotLight>(scene, LightType::spot, out);
+  collect<scene::DirectionalLight>(scene, LightType::directional, out);
+  collect<scene::CylinderLight>(scene, LightType::cylinder, out);
+  collect<scene::PointLight>(scene, LightType::point, out);
+  return out;
+}
+
+}  // namespace sg::reference

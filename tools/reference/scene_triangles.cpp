@@ -1,0 +1,46 @@
+#include "tools/reference/scene_triangles.h"
+
+#include <string>
+#include <utility>
+
+#include "ecs/hierarchy.h"
+#include "ecs/transform.h"
+#include "systems/scene/mesh_instance.h"
+
+namespace sg::reference {
+
+SceneTriangles scene_triangles(const scene::Scene& scene) {
+  SceneTriangles out;
+  const scene::MeshLibrary& library = scene.meshes;
+  scene.world.query<const ecs::WorldTransform, const scene::MeshInstance>().for_each(
+      [&](ecs::Entity, const ecs::WorldTransform& world, const scene::MeshInstance& instance) {
+        const scene::MeshRange& mesh = library.meshes.at(instance.mesh);
+        for (uint32_t i = 0; i < mesh.index_count; ++i) {
+          const uint32_t vertex = mesh.vertex_offset + library.indices[mesh.first_index + i];
+          const glm::vec3 corner =
+              glm::vec3(world.matrix * glm::vec4(library.vertices[vertex].position, 1.0f));
+          out.surfaces.push_back(corner);
+          if (instance.casts_shadow) out.casters.push_back(corner);
+        }
+      });
+  return out;
+}
+
+uint32_t stop_casting(scene::Scene& scene, std::string_view name) {
+  ecs::World& world = scene.world;
+  const auto named = [&](ecs::Entity entity) {
+    const scene::Name* found = world.try_get<scene::Name>(entity);
+    return found && found->value.find(name) != std::string::npos;
+  };
+  std::vector<ecs::Entity> matches;
+  std::as_const(world).query<const scene::MeshInstance>().for_each(
+      [&](ecs::Entity entity, const scene::MeshInstance& instance) {
+        if (!instance.casts_shadow) return;
+        const ecs::Entity parent = ecs::parent_of(world, entity);
+        if (named(entity) || (world.alive(parent) && named(parent))) matches.push_back(entity);
+      });
+  for (const ecs::Entity entity : matches) world.get_mut<scene::MeshInstance>(entity).casts_shadow = false;
+  return static_cast<uint32_t>(matches.size());
+}
+
+}  // namespace sg::reference
