@@ -316,9 +316,15 @@ float cube_sample(Light light, CubeReceiver r, vec3 offset) {
   return cube_occluded(light, direction, cube_reference(light, r, direction));
 }
 
-// The k-th kernel offset of pcf and pcss, optionally rotated (pcss_noise).
-vec3 cube_offset(uint k, bool jitter, vec4 rotation) {
-  return jitter ? rotate(rotation, CUBE_OFFSETS[k]) : CUBE_OFFSETS[k];
+// PCSS's k-th kernel offset, optionally rotated (pcss_noise). Section 4's directions have
+// lengths sqrt(2) and sqrt(3), which as they are would spread the kernel across fragToLight
+// about 1.8 times as far as shadow_2d_pcss's Poisson disk of the same radius, and so draw
+// penumbrae about twice as wide as a spot light's (measured against the ray-traced reference,
+// docs/QUALITY.md). Scaled to length sqrt(3)/2 they spread as far as a uniform unit disk (RMS
+// distance from the axis sqrt(1/2): a unit vector's is sqrt(2/3) on average over directions).
+vec3 cube_pcss_offset(uint k, bool jitter, vec4 rotation) {
+  vec3 offset = CUBE_OFFSETS[k] * (k < 8u ? 0.5 : 0.61237244);  // sqrt(3)/2 / |offset|
+  return jitter ? rotate(rotation, offset) : offset;
 }
 
 // PCSS on a cube map with shadow_2d_pcss's radii, in world units directly: an offset moves the
@@ -332,7 +338,7 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, uvec2 pixel) {
   float blocker_sum = 0.0;
   float blockers = 0.0;
   [[unroll]] for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
-    vec3 direction = r.to_fragment + cube_offset(k, jitter, rotation) * light_size;
+    vec3 direction = r.to_fragment + cube_pcss_offset(k, jitter, rotation) * light_size;
     float depth = fetch_cube_depth(light, direction);
     if (depth < cube_reference(light, r, direction)) {
       blocker_sum += depth;
@@ -346,7 +352,7 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, uvec2 pixel) {
   float radius = max(0.5 * width, cube_texel_world_size(r.distance, light.shadow_depth.z));
   float sum = 0.0;
   [[unroll]] for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
-    sum += cube_sample(light, r, cube_offset(k, jitter, rotation) * radius);
+    sum += cube_sample(light, r, cube_pcss_offset(k, jitter, rotation) * radius);
   }
   return sum / float(CUBE_OFFSET_COUNT);
 }

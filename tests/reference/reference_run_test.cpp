@@ -1,5 +1,6 @@
 // Whole runs of the reference tool on lavapipe, on the default scene at a small size: a
-// deliberately broken configuration must come out worse than the scene's own settings.
+// deliberately broken configuration must come out worse than the scene's own settings, and the
+// algorithms must stay as close to the references as they were measured to be.
 #include <gtest/gtest.h>
 
 #include "tools/reference/run_reference.h"
@@ -44,6 +45,30 @@ TEST_F(ReferenceRun, ZeroBiasAtResolution32IsWorseThanTheDefault) {
   EXPECT_LT(g.metrics.misclassified, 0.01);
   EXPECT_GT(b.metrics.misclassified, g.metrics.misclassified + 0.01);
   EXPECT_GT(b.metrics.acne, g.metrics.acne);
+}
+
+// Point-light PCSS once drew penumbrae about twice the reference's width (its kernel's
+// unnormalized directions): it must now be about as close to the soft reference as spot PCSS.
+TEST_F(ReferenceRun, PointLightPcssIsAsCloseToTheSoftReferenceAsSpotPcss) {
+  const auto pcss_of = [&](const char* light) {
+    reference::ReferenceSettings settings;
+    settings.algorithms = {scene::ShadowAlgorithm::pcss};
+    settings.light_filter = light;
+    settings.soft_samples = 16;
+    sandbox::Options options;
+    options.width = 320;
+    options.height = 180;
+    const reference::ReferenceReport report = reference::run_reference(context, options, settings);
+    EXPECT_EQ(report.lights.size(), 1u);
+    return report.lights.at(0).runs.at(0).metrics;
+  };
+  const reference::ShadowMetrics point = pcss_of("cool point");
+  const reference::ShadowMetrics spot = pcss_of("spot west");
+  ASSERT_GT(point.penumbra.pixels, 500u);
+  ASSERT_GT(spot.penumbra.pixels, 500u);
+  EXPECT_LT(point.penumbra.mean_absolute, 1.4 * spot.penumbra.mean_absolute)
+      << "point " << point.penumbra.mean_absolute << ", spot " << spot.penumbra.mean_absolute;
+  EXPECT_LT(point.acne, 0.005);
 }
 
 TEST_F(ReferenceRun, ASceneWithoutMatchingLightsIsAClearError) {
