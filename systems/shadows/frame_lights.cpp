@@ -166,7 +166,7 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
 void sort_by_group(FrameLights& out) {
   FrameLights::Scratch& scratch = out.scratch;
   const auto group_of = [](const GpuLight& record) {
-    return light_group(shadow_kind(record), static_cast<scene::ShadowAlgorithm>(record.info.z));
+    return light_group(shadow_kind(record), algorithm_of(record));
   };
   out.group_begin.fill(0);
   for (const GpuLight& record : out.records) ++out.group_begin[group_of(record) + 1];

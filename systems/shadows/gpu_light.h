@@ -45,6 +45,11 @@ static_assert(offsetof(GpuLight, shadow_rect) == 112);
 static_assert(offsetof(GpuLight, shadow_depth) == 128);
 static_assert(offsetof(GpuLight, shadow_matrix) == 144);
 
+// The shadow algorithm a record was packed with (info.z).
+inline scene::ShadowAlgorithm algorithm_of(const GpuLight& light) {
+  return static_cast<scene::ShadowAlgorithm>(light.info.z);
+}
+
 // A light's record from its components: position and direction from its world transform
 // (scene::light_position, scene::light_direction), parameters from the light, the shadow
 // algorithm and its parameters from `shadow`. The record has no shadow map

@@ -185,17 +185,20 @@ void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests) {
   if (excess == 0) return;
 
   const std::vector<uint32_t> by_importance = least_important_first(requests, resolution_);
-  // Passes from the least important light upward, each demoting every light above the smallest
-  // tier by one; once a pass finds none, lights are dropped from the least important upward.
+  // Passes from the least important light upward, each demoting every light above its floor by
+  // one tier: the quality floor while any light is above it, then the smallest tier; once a pass
+  // finds none, lights are dropped from the least important upward.
+  enum class Stage { to_quality_floor, to_smallest_tier, dropping };
+  Stage stage = Stage::to_quality_floor;
   size_t next = 0;
   bool demoted_in_pass = false;
-  bool dropping = false;
   // Texels one more step saves; 0 when every light is dropped.
   const auto take_one_step = [&]() -> uint64_t {
     for (;;) {
       if (next == by_importance.size()) {
-        if (dropping) return 0;
-        dropping = !demoted_in_pass;
+        if (stage == Stage::dropping) return 0;
+        if (!demoted_in_pass)
+          stage = stage == Stage::to_quality_floor ? Stage::to_smallest_tier : Stage::dropping;
         demoted_in_pass = false;
         next = 0;
         continue;
@@ -204,13 +207,16 @@ void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests) {
       uint32_t& resolution = resolution_[i];
       std::vector<uint64_t>& per_tier = requests[i].cube ? cubes_per_tier_ : maps_per_tier_;
       const uint64_t tiles = tile_count(requests[i].cube);
-      if (dropping) {
+      if (stage == Stage::dropping) {
         --per_tier[tier_of(resolution)];
         const uint64_t saved = tiles * area(resolution);
         resolution = 0;
         return saved;
       }
-      if (resolution <= config_.min_resolution) continue;
+      const uint32_t floor = stage == Stage::to_quality_floor
+                                 ? std::max(config_.min_resolution, requests[i].quality_floor)
+                                 : config_.min_resolution;
+      if (resolution / 2 < floor) continue;
       --per_tier[tier_of(resolution)];
       ++per_tier[tier_of(resolution / 2)];
       const uint64_t saved = tiles * (area(resolution) - area(resolution / 2));

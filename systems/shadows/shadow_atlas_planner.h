@@ -13,8 +13,9 @@
 //   resolution R while log2(importance) stays within 0.75 of log2(R), so it does not pop between
 //   tiers when its importance hovers at a boundary.
 // - Budget: the tiles must fit max_pages pages. When they do not, the least important light drops
-//   one tier, then the next least important, and so on upward, pass after pass; once every light
-//   is at min_resolution the least important lose their shadow (resolution 0). It never fails,
+//   one tier, then the next least important, and so on upward, pass after pass, first only lights
+//   above their quality floor (down to it), then all of them; once every light is at
+//   min_resolution the least important lose their shadow (resolution 0). It never fails,
 //   however many lights. Where cube faces leave gaps a light may be demoted one step more than
 //   strictly needed.
 // - Persistence: a light whose resolution did not change keeps exactly its tiles (moved = false).
@@ -55,6 +56,9 @@ struct ShadowRequest {
   // The resolution it should have, in texels before rounding (e.g. the projected screen size of
   // its volume); the budget demotes the least important lights first.
   float importance = 0.0f;
+  // The smallest resolution at which its shadow stays accurate (quality_floor); 0: none. The
+  // budget takes every light down to its floor before it takes any light below its own.
+  uint32_t quality_floor = 0;
 };
 
 struct ShadowPlacement {

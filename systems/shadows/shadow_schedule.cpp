@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "systems/shadows/atlas_tile_coords.h"
+#include "systems/shadows/quality_floor.h"
 
 namespace sg::shadows {
 namespace {
@@ -59,7 +60,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera,
     map.importance = importance;
     if (importance <= 0.0f) continue;
     request_of_[m] = static_cast<uint32_t>(requests_.size());
-    requests_.push_back({map.key, false, map.requested_resolution, importance});
+    requests_.push_back({map.key, false, map.requested_resolution, importance,
+                         quality_floor(algorithm_of(lights.records[map.light]))});
   }
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
     ShadowCubeView& cube = lights.cubes[c];
@@ -68,7 +70,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera,
     cube.importance = importance;
     if (importance <= 0.0f) continue;
     request_of_[lights.maps.size() + c] = static_cast<uint32_t>(requests_.size());
-    requests_.push_back({cube.key, true, cube.requested_resolution, importance});
+    requests_.push_back({cube.key, true, cube.requested_resolution, importance,
+                         quality_floor(algorithm_of(lights.records[cube.light]))});
   }
   placements_.assign(requests_.size(), ShadowPlacement{});
   planner_.plan(requests_, placements_);

@@ -117,6 +117,39 @@ TEST(ShadowAtlasPlanner, OverBudgetTheLeastImportantLightsDropATierFirst) {
   EXPECT_EQ(stats.lights_without_shadow, 0u);
 }
 
+TEST(ShadowAtlasPlanner, OverBudgetLightsAboveTheirQualityFloorDropFirst) {
+  const AtlasConfig config{.page_size = 1024, .max_pages = 1, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  // Four lights wanting 512 fill the page; the least important light wants 256 and its
+  // algorithm needs all of it. Without floors it would drop to 128 first.
+  std::vector<ShadowRequest> requests{map_light(0, 256.0f)};
+  requests[0].quality_floor = 256;
+  for (uint64_t i = 1; i <= 4; ++i) {
+    requests.push_back(map_light(i, 512.0f + 5.0f * float(i)));
+    requests.back().quality_floor = 64;
+  }
+  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  expect_valid_tiles(config, requests, out);
+  EXPECT_EQ(out[0].resolution, 256u) << "kept at its floor";
+  EXPECT_EQ(out[1].resolution, 256u) << "the least important of the lights above their floors";
+  for (size_t r = 2; r < requests.size(); ++r) EXPECT_EQ(out[r].resolution, 512u) << "light " << r;
+}
+
+TEST(ShadowAtlasPlanner, WhenEveryLightIsAtItsFloorTheBudgetStillFits) {
+  const AtlasConfig config{.page_size = 1024, .max_pages = 1, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  // Eight lights that want 512 and need 512: two pages' worth, so floors give way, least
+  // important first, as without them.
+  std::vector<ShadowRequest> requests;
+  for (uint64_t i = 0; i < 8; ++i) {
+    requests.push_back(map_light(i, 512.0f + 5.0f * float(i)));
+    requests.back().quality_floor = 512;
+  }
+  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  expect_valid_tiles(config, requests, out);
+  for (size_t r = 0; r < requests.size(); ++r) EXPECT_EQ(out[r].resolution, r >= 6 ? 512u : 256u) << r;
+}
+
 TEST(ShadowAtlasPlanner, OnceAllAreAtTheSmallestTileTheLeastImportantLoseTheirShadow) {
   const AtlasConfig config{.page_size = 256, .max_pages = 1, .min_resolution = 32};
   ShadowAtlasPlanner planner(config);
