@@ -18,7 +18,8 @@ struct FrameCost {
   uint32_t shadowed_lights = 0;  // lights with a shadow map in the last frame
 };
 
-// Loads options.scene and renders `frames` headless frames of it (render_headless_frames).
+// Loads options.scene and renders `frames` headless frames of it (render_headless_frames), after
+// half as many (at least 2) that warm the device up and are not counted.
 FrameCost measure_frame_cost(vk::VulkanContext& context, const Options& options, uint32_t frames);
 
 }  // namespace sg::sandbox
