@@ -131,10 +131,14 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
                     const scene::MeshInstance&) { note(entity); });
   if (unknown) return false;
 
+  bounds_before_.resize(changed_.size());
   constexpr size_t chunk = 256;
   const size_t chunks = (changed_.size() + chunk - 1) / chunk;
   const auto replace = [&](size_t c) {
-    for (size_t k = c * chunk; k < std::min(changed_.size(), (c + 1) * chunk); ++k) place(world, changed_[k]);
+    for (size_t k = c * chunk; k < std::min(changed_.size(), (c + 1) * chunk); ++k) {
+      bounds_before_[k] = bounds_[changed_[k]];
+      place(world, changed_[k]);
+    }
   };
   if (pool != nullptr && chunks > 1) {
     pool->run(chunks, replace);
@@ -174,6 +178,8 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   }
   written_at_.assign(count, 0);
   laid_out_at_ = gathers_;
+  changed_.clear();
+  bounds_before_.clear();
 
   // Per instance, in its sorted place: its record, world bounds and key. Reading the components
   // and the bounds' eight corners are most of a full gather, and independent: chunks of them run

@@ -96,6 +96,14 @@ class GpuScene {
   std::span<const uint64_t> instance_keys() const { return keys_; }
   const scene::Aabb& bounds() const { return scene_bounds_; }
 
+  // What the last gather() did: ordered every instance anew (new, removed or re-meshed ones), or
+  // re-placed only the instances written since the gather before, listed by replaced(), with the
+  // bounds they had before it in replaced_bounds_before() (same order).
+  bool laid_out_in_last_gather() const { return laid_out_at_ == gathers_; }
+  std::span<const uint32_t> replaced() const { return changed_; }
+  std::span<const scene::Aabb> replaced_bounds_before() const { return bounds_before_; }
+  bool casts_shadow(uint32_t instance) const { return items_[instance].caster; }
+
  private:
   vk::Buffer vertices_;
   vk::Buffer indices_;
@@ -117,13 +125,14 @@ class GpuScene {
   bool gather_changes(const ecs::World& world, ecs::Tick since, ecs::ThreadPool* pool);
   void gather_all(const ecs::World& world, ecs::ThreadPool* pool);
 
-  ecs::Tick gathered_at_ = 0;          // the world's tick at the last gather
-  uint64_t gathers_ = 0;               // gather() calls so far
-  uint64_t laid_out_at_ = 0;           // the call that last ordered every instance
-  std::vector<uint32_t> place_of_;     // by entity index: its instance, or SparseSet::npos
-  std::vector<uint64_t> written_at_;   // by instance: the call that last placed it (0: the layout's)
-  std::vector<uint32_t> changed_;      // the instances the current call re-places
-  std::vector<uint64_t> uploaded_at_;  // by slot: the call whose instances it holds
+  ecs::Tick gathered_at_ = 0;               // the world's tick at the last gather
+  uint64_t gathers_ = 0;                    // gather() calls so far
+  uint64_t laid_out_at_ = 0;                // the call that last ordered every instance
+  std::vector<uint32_t> place_of_;          // by entity index: its instance, or SparseSet::npos
+  std::vector<uint64_t> written_at_;        // by instance: the call that last placed it (0: the layout's)
+  std::vector<uint32_t> changed_;           // the instances the current call re-places
+  std::vector<scene::Aabb> bounds_before_;  // their bounds before it
+  std::vector<uint64_t> uploaded_at_;       // by slot: the call whose instances it holds
   std::vector<Item> items_;
   std::vector<Item> sorted_items_;
   std::vector<uint32_t> slot_starts_;  // counting sort: per (mesh, caster or not)

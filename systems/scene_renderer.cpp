@@ -89,22 +89,15 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
         "shadowgraph: shadow views kept more casters than fit; the buffer grows and every map is redrawn\n");
     schedule_.invalidate_all();
   }
-  casters_.clear();
-  const std::span<const scene::Aabb> bounds = gpu_scene_.instance_bounds();
-  const std::span<const uint64_t> keys = gpu_scene_.instance_keys();
-  for (const VkDrawIndexedIndirectCommand& group : gpu_scene_.caster_groups()) {
-    for (uint32_t i = group.firstInstance; i < group.firstInstance + group.instanceCount; ++i) {
-      casters_.push_back({keys[i], bounds[i]});
-    }
-  }
+  const shadows::CasterUpdate casters = caster_update();
   const float aspect = float(width) / float(std::max(height, 1u));
   const shadows::ShadowCamera camera{pose.eye, projection_matrix(lens, aspect) * view_matrix(pose),
                                      float(height) / lens.yfov};
-  schedule_.schedule(lights_, camera, casters_, settings_.shadow_view_budget);
+  schedule_.schedule(lights_, camera, casters, settings_.shadow_view_budget);
   if (atlas_.fit(schedule_.pages_used())) {
     // A new image holds nothing: every map is drawn again, this frame.
     schedule_.invalidate_all();
-    schedule_.schedule(lights_, camera, casters_, settings_.shadow_view_budget);
+    schedule_.schedule(lights_, camera, casters, settings_.shadow_view_budget);
   }
   if (std::optional<std::string> message = schedule_.take_budget_message()) {
     std::printf("shadowgraph: %s\n", message->c_str());
@@ -141,6 +134,34 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
       break;
   }
   cpu_steps_.upload = lap(mark);
+}
+
+shadows::CasterUpdate SceneRenderer::caster_update() {
+  // After the instances were ordered anew, the schedule compares every caster with the frame
+  // before; otherwise GpuScene knows which moved, and from where.
+  if (gpu_scene_.laid_out_in_last_gather()) {
+    casters_.clear();
+    const std::span<const scene::Aabb> bounds = gpu_scene_.instance_bounds();
+    const std::span<const uint64_t> keys = gpu_scene_.instance_keys();
+    for (const VkDrawIndexedIndirectCommand& group : gpu_scene_.caster_groups()) {
+      for (uint32_t i = group.firstInstance; i < group.firstInstance + group.instanceCount; ++i) {
+        casters_.push_back({keys[i], bounds[i]});
+      }
+    }
+    return shadows::CasterUpdate(casters_);
+  }
+  moved_casters_.clear();
+  const std::span<const uint32_t> replaced = gpu_scene_.replaced();
+  const std::span<const scene::Aabb> before = gpu_scene_.replaced_bounds_before();
+  for (size_t k = 0; k < replaced.size(); ++k) {
+    const scene::Aabb& now = gpu_scene_.instance_bounds()[replaced[k]];
+    if (!gpu_scene_.casts_shadow(replaced[k]) || (now.min == before[k].min && now.max == before[k].max))
+      continue;
+    for (const scene::Aabb& box : {before[k], now}) {
+      if (!box.empty()) moved_casters_.push_back(box);
+    }
+  }
+  return shadows::CasterUpdate::changes(moved_casters_);
 }
 
 RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports& imports,

@@ -136,7 +136,10 @@ class SceneRenderer {
   shadows::ShadowSchedule schedule_;
   std::optional<ShadowViewBatch> batch_;
   std::optional<ShadowPasses> per_light_;
+  // The frame's casters for the schedule: all of them after a new layout, else what moved.
+  shadows::CasterUpdate caster_update();
   std::vector<shadows::CasterBounds> casters_;
+  std::vector<scene::Aabb> moved_casters_;
   CpuSteps cpu_steps_;
   // The passes of the path in use only: a CPU driver compiles a pipeline slowly.
   struct TiledForward {

@@ -47,8 +47,8 @@ float light_importance(const glm::vec4& reach, const ShadowCamera& camera) {
 
 ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas) : planner_(atlas), page_size_(atlas.page_size) {}
 
-void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera,
-                              std::span<const CasterBounds> casters, uint32_t view_budget) {
+void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
+                              uint32_t view_budget) {
   // Requests: maps first, then cubes, each in the lights' order. A light whose reach is out of
   // the camera's sight shades nothing visible: it asks for no tile at all.
   requests_.clear();
@@ -93,7 +93,9 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera,
   }
   render_.assign(cache_lights_.size(), 0);
   usable_.assign(cache_lights_.size(), 0);
-  cache_.plan(cache_lights_, caster_changes_.update(casters), view_budget, render_, usable_);
+  const std::span<const scene::Aabb> changed_casters =
+      casters.changes_only ? casters.changed : caster_changes_.update(casters.all);
+  cache_.plan(cache_lights_, changed_casters, view_budget, render_, usable_);
 
   // Results per request, then onto the views and their records.
   decision_.assign(requests_.size(), Decision{});

@@ -44,14 +44,33 @@ struct ShadowScheduleStats {
   std::vector<std::pair<uint32_t, uint32_t>> lights_per_resolution;  // (resolution, lights)
 };
 
+// The frame's shadow casters, as schedule() takes them: every caster, which it compares with
+// the previous call's (CasterChangeTracker), or, from a caller that knows what moved, just the
+// boxes a shadow could have changed in since the previous call (a moved caster's old and new box,
+// an added or removed one's box). A caller may mix the two from frame to frame: the tracker then
+// compares with the last frame it saw whole and reports at worst more boxes than moved.
+struct CasterUpdate {
+  CasterUpdate(std::span<const CasterBounds> all = {}) : all(all) {}
+  static CasterUpdate changes(std::span<const scene::Aabb> boxes) {
+    CasterUpdate update;
+    update.changed = boxes;
+    update.changes_only = true;
+    return update;
+  }
+
+  std::span<const CasterBounds> all;
+  std::span<const scene::Aabb> changed;
+  bool changes_only = false;
+};
+
 class ShadowSchedule {
  public:
   explicit ShadowSchedule(const AtlasConfig& atlas);
 
   // Places, caches and records every shadow of `lights` (gathered, not yet sorted). `casters`
-  // are the frame's shadow casters (CasterChangeTracker); view_budget caps the views rendered
-  // (0: no cap).
-  void schedule(FrameLights& lights, const ShadowCamera& camera, std::span<const CasterBounds> casters,
+  // are the frame's shadow casters or their changes (CasterUpdate); view_budget caps the views
+  // rendered (0: no cap).
+  void schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
                 uint32_t view_budget);
   // Every map must be rendered again (the atlas image was recreated).
   void invalidate_all() { cache_.invalidate_all(); }

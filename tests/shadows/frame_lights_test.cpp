@@ -249,7 +249,7 @@ TEST(ShadowSchedule, AMovedCasterRedrawsExactlyTheLightsItReaches) {
   const auto frame = [&](const std::vector<CasterBounds>& casters) {
     scene.world.advance_tick();
     gather_lights(scene.world, bounds, {}, lights);
-    schedule.schedule(lights, camera, casters, 0);
+    schedule.schedule(lights, camera, std::span<const CasterBounds>(casters), 0);
     std::vector<int> drawn;
     for (size_t m = 0; m < lights.maps.size(); ++m) {
       if (lights.maps[m].render) drawn.push_back(static_cast<int>(m));
@@ -261,6 +261,37 @@ TEST(ShadowSchedule, AMovedCasterRedrawsExactlyTheLightsItReaches) {
   EXPECT_EQ(frame(crate_at(-7.0f)), (std::vector<int>{0, 1}));
   EXPECT_TRUE(frame(crate_at(-7.0f)).empty());
   EXPECT_EQ(schedule.stats().views_cached, 6u);
+}
+
+// The same move told as the boxes that changed (a caller that knows what moved) redraws the
+// same two maps; and a later frame told whole only reports what changed since it last saw all.
+TEST(ShadowSchedule, ChangedBoxesRedrawWhatTheWholeListWould) {
+  scene::Scene scene = spots_in_a_row(6, 64);
+  FrameLights lights;
+  ShadowSchedule schedule(small_atlas);
+  const ShadowCamera camera = camera_at({0.0f, 2.0f, 0.0f});
+  const auto box_at = [](float z) {
+    return scene::Aabb{glm::vec3(-0.5f, 0.0f, z - 0.5f), glm::vec3(0.5f, 1.0f, z + 0.5f)};
+  };
+  const auto frame = [&](const CasterUpdate& casters) {
+    scene.world.advance_tick();
+    gather_lights(scene.world, bounds, {}, lights);
+    schedule.schedule(lights, camera, casters, 0);
+    std::vector<int> drawn;
+    for (size_t m = 0; m < lights.maps.size(); ++m) {
+      if (lights.maps[m].render) drawn.push_back(static_cast<int>(m));
+    }
+    return drawn;
+  };
+  const std::vector<CasterBounds> at_first{{7, box_at(-3.0f)}};
+  EXPECT_EQ(frame(std::span<const CasterBounds>(at_first)).size(), 6u);  // every map is new
+  const std::vector<scene::Aabb> moved{box_at(-3.0f), box_at(-7.0f)};
+  EXPECT_EQ(frame(CasterUpdate::changes(moved)), (std::vector<int>{0, 1}));
+  EXPECT_TRUE(frame(CasterUpdate::changes({})).empty());
+  const std::vector<CasterBounds> at_second{{7, box_at(-7.0f)}};
+  EXPECT_EQ(frame(std::span<const CasterBounds>(at_second)), (std::vector<int>{0, 1}))
+      << "the tracker last saw the crate at the first place: it reports the move again";
+  EXPECT_TRUE(frame(std::span<const CasterBounds>(at_second)).empty());
 }
 
 TEST(FrameLights, RecordsAreOrderedByLightGroup) {

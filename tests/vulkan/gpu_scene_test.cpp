@@ -1,6 +1,6 @@
 // GpuScene's incremental gathering: after any sequence of moves, material edits, additions and
 // removals, what a long-lived GpuScene holds and uploads must equal what a fresh one gathers
-// from scratch.
+// from scratch, and what it says it re-placed must cover every move.
 #include <algorithm>
 #include <cstring>
 #include <random>
@@ -68,6 +68,7 @@ TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
     world.advance_tick();
 
     const uint32_t slot = frame % slots;
+    const std::vector<scene::Aabb> before(kept.instance_bounds().begin(), kept.instance_bounds().end());
     kept.gather(world);
     kept.upload(slot);
     GpuScene fresh(context, s.meshes, 1);
@@ -83,6 +84,21 @@ TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
     for (size_t g = 0; g < kept.caster_groups().size(); ++g) {
       EXPECT_EQ(kept.caster_groups()[g].firstInstance, fresh.caster_groups()[g].firstInstance);
       EXPECT_EQ(kept.caster_groups()[g].instanceCount, fresh.caster_groups()[g].instanceCount);
+    }
+    // What moved, and from where: every instance whose box changed is listed, with its old box.
+    if (!kept.laid_out_in_last_gather()) {
+      ASSERT_EQ(kept.replaced().size(), kept.replaced_bounds_before().size());
+      std::vector<bool> listed(kept.instance_count(), false);
+      for (size_t k = 0; k < kept.replaced().size(); ++k) {
+        const uint32_t i = kept.replaced()[k];
+        listed[i] = true;
+        EXPECT_EQ(kept.replaced_bounds_before()[k].min, before[i].min);
+        EXPECT_EQ(kept.replaced_bounds_before()[k].max, before[i].max);
+      }
+      for (uint32_t i = 0; i < kept.instance_count(); ++i) {
+        const bool moved = kept.instance_bounds()[i].min != before[i].min;
+        EXPECT_TRUE(!moved || listed[i]) << "instance " << i;
+      }
     }
     const size_t bytes = size_t{fresh.instance_count()} * sizeof(GpuInstance);
     EXPECT_EQ(std::memcmp(kept.instances(slot).mapped(), fresh.instances(0).mapped(), bytes), 0)
