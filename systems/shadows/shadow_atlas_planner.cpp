@@ -133,28 +133,35 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
 }
 
 void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests) {
+  const size_t previous_requests = light_of_request_.size();
   light_of_request_.resize(requests.size());
   resolution_.assign(requests.size(), 0);
   for (uint32_t i = 0; i < requests.size(); ++i) {
     const ShadowRequest& request = requests[i];
-    const auto [found, inserted] = light_of_key_.try_emplace(request.key, 0);
-    if (inserted) {
-      if (unused_lights_.empty()) {
-        found->second = uint32_t(lights_.size());
-        lights_.emplace_back();
-      } else {
-        found->second = unused_lights_.back();
-        unused_lights_.pop_back();
-        lights_[found->second] = {};
+    // Usually the requests come in the last plan's order: request i is the light it was then,
+    // found without a lookup by key.
+    uint32_t index = i < previous_requests ? light_of_request_[i] : no_light;
+    if (index == no_light || lights_[index].key != request.key || lights_[index].requested_in_plan == 0) {
+      const auto [found, inserted] = light_of_key_.try_emplace(request.key, 0);
+      if (inserted) {
+        if (unused_lights_.empty()) {
+          found->second = uint32_t(lights_.size());
+          lights_.emplace_back();
+        } else {
+          found->second = unused_lights_.back();
+          unused_lights_.pop_back();
+          lights_[found->second] = {};
+        }
+        lights_[found->second].key = request.key;
       }
-      lights_[found->second].key = request.key;
+      index = found->second;
     }
-    Light& light = lights_[found->second];
+    Light& light = lights_[index];
     if (light.requested_in_plan == plans_) {  // the key's second request
       light_of_request_[i] = no_light;
       continue;
     }
-    light_of_request_[i] = found->second;
+    light_of_request_[i] = index;
     light.requested_in_plan = plans_;
     light.wanted = wanted_resolution(request, request.cube == light.cube ? light.wanted : 0);
     resolution_[i] = light.wanted;

@@ -123,7 +123,11 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
   // Every light has a view at least, so no more than views_left lights fit: ordering that many
   // is enough, unless lights were skipped for having more views than were left.
   const auto head = order_.begin() + std::min<ptrdiff_t>(views_left, std::ssize(order_));
-  std::partial_sort(order_.begin(), head, order_.end(), comes_first);
+  if (head == order_.end()) {
+    std::sort(order_.begin(), order_.end(), comes_first);  // partial_sort would heap-sort them all
+  } else {
+    std::partial_sort(order_.begin(), head, order_.end(), comes_first);
+  }
   take_in_order(order_.begin(), head);
   // Then fewer views are left than the skipped light had, a handful: the stalest of the rest that
   // still fits, one scan each, costs less than sorting the rest (100,000 lights).

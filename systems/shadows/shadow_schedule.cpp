@@ -1,6 +1,7 @@
 #include "systems/shadows/shadow_schedule.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -32,17 +33,30 @@ void match_by_key(const Views& views, std::vector<Rendered>& rendered,
   rendered = std::move(matched);
 }
 
-}  // namespace
+// The camera's frustum planes, normalized, computed once for all of a frame's lights.
+struct CameraFrustum {
+  std::array<glm::vec4, 6> planes;
 
-float light_importance(const glm::vec4& reach, const ShadowCamera& camera) {
+  explicit CameraFrustum(const ShadowCamera& camera) : planes(frustum_planes(camera.view_projection)) {
+    for (glm::vec4& plane : planes) plane /= glm::length(glm::vec3(plane));
+  }
+};
+
+float importance_in(const glm::vec4& reach, const ShadowCamera& camera, const CameraFrustum& frustum) {
   if (reach.w < 0.0f) return unbounded_importance;
   const glm::vec3 centre(reach);
-  for (const glm::vec4& plane : frustum_planes(camera.view_projection)) {
-    if (glm::dot(glm::vec3(plane), centre) + plane.w < -reach.w * glm::length(glm::vec3(plane))) return 0.0f;
+  for (const glm::vec4& plane : frustum.planes) {
+    if (glm::dot(glm::vec3(plane), centre) + plane.w < -reach.w) return 0.0f;
   }
   const float distance = glm::length(centre - camera.eye);
   if (distance <= reach.w) return unbounded_importance;
   return 2.0f * std::asin(reach.w / distance) * camera.pixels_per_radian;
+}
+
+}  // namespace
+
+float light_importance(const glm::vec4& reach, const ShadowCamera& camera) {
+  return importance_in(reach, camera, CameraFrustum(camera));
 }
 
 ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas) : planner_(atlas), page_size_(atlas.page_size) {}
@@ -51,12 +65,13 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
                               uint32_t view_budget) {
   // Requests: maps first, then cubes, each in the lights' order. A light whose reach is out of
   // the camera's sight shades nothing visible: it asks for no tile at all.
+  const CameraFrustum frustum(camera);
   requests_.clear();
   request_of_.assign(lights.maps.size() + lights.cubes.size(), no_request);
   stats_ = {};
   for (size_t m = 0; m < lights.maps.size(); ++m) {
     ShadowMapView& map = lights.maps[m];
-    const float importance = light_importance(map.reach, camera);
+    const float importance = importance_in(map.reach, camera, frustum);
     map.importance = importance;
     if (importance <= 0.0f) continue;
     request_of_[m] = static_cast<uint32_t>(requests_.size());
@@ -66,7 +81,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
     ShadowCubeView& cube = lights.cubes[c];
     // A face spans a quarter turn, about half of what the whole sphere covers on screen.
-    const float importance = 0.5f * light_importance(cube.position_far, camera);
+    const float importance = 0.5f * importance_in(cube.position_far, camera, frustum);
     cube.importance = importance;
     if (importance <= 0.0f) continue;
     request_of_[lights.maps.size() + c] = static_cast<uint32_t>(requests_.size());
