@@ -235,31 +235,38 @@ TEST(ShadowSchedule, TheBudgetDegradesTheLeastImportantLightsFirst) {
   EXPECT_LE(texels, 64u * 64u);
 }
 
+// A crate's box, 1 m wide, centred at z on the row of spots_in_a_row.
+scene::Aabb crate_at(float z) {
+  return scene::Aabb{glm::vec3(-0.5f, 0.0f, z - 0.5f), glm::vec3(0.5f, 1.0f, z + 0.5f)};
+}
+
+// One frame: the lights gathered and scheduled with `casters`; the maps drawn.
+std::vector<int> maps_drawn(scene::Scene& scene, FrameLights& lights, ShadowSchedule& schedule,
+                            const CasterUpdate& casters) {
+  scene.world.advance_tick();
+  gather_lights(scene.world, bounds, {}, lights);
+  schedule.schedule(lights, camera_at({0.0f, 2.0f, 0.0f}), casters, 0);
+  std::vector<int> drawn;
+  for (size_t m = 0; m < lights.maps.size(); ++m) {
+    if (lights.maps[m].render) drawn.push_back(static_cast<int>(m));
+  }
+  return drawn;
+}
+
 // Spot lights 4 m apart, each reaching 3 m: moving a crate from the first light's reach into the
 // second's redraws exactly those two maps; a frame where nothing moves redraws none.
 TEST(ShadowSchedule, AMovedCasterRedrawsExactlyTheLightsItReaches) {
   scene::Scene scene = spots_in_a_row(6, 64);
   FrameLights lights;
   ShadowSchedule schedule(small_atlas);
-  const ShadowCamera camera = camera_at({0.0f, 2.0f, 0.0f});
-  const auto crate_at = [](float z) {
-    return std::vector<CasterBounds>{
-        {7, scene::Aabb{glm::vec3(-0.5f, 0.0f, z - 0.5f), glm::vec3(0.5f, 1.0f, z + 0.5f)}}};
+  const auto frame = [&](float crate_z) {
+    const std::vector<CasterBounds> casters{{7, crate_at(crate_z)}};
+    return maps_drawn(scene, lights, schedule, std::span<const CasterBounds>(casters));
   };
-  const auto frame = [&](const std::vector<CasterBounds>& casters) {
-    scene.world.advance_tick();
-    gather_lights(scene.world, bounds, {}, lights);
-    schedule.schedule(lights, camera, std::span<const CasterBounds>(casters), 0);
-    std::vector<int> drawn;
-    for (size_t m = 0; m < lights.maps.size(); ++m) {
-      if (lights.maps[m].render) drawn.push_back(static_cast<int>(m));
-    }
-    return drawn;
-  };
-  EXPECT_EQ(frame(crate_at(-3.0f)).size(), 6u);  // every map is new
-  EXPECT_TRUE(frame(crate_at(-3.0f)).empty());
-  EXPECT_EQ(frame(crate_at(-7.0f)), (std::vector<int>{0, 1}));
-  EXPECT_TRUE(frame(crate_at(-7.0f)).empty());
+  EXPECT_EQ(frame(-3.0f).size(), 6u);  // every map is new
+  EXPECT_TRUE(frame(-3.0f).empty());
+  EXPECT_EQ(frame(-7.0f), (std::vector<int>{0, 1}));
+  EXPECT_TRUE(frame(-7.0f).empty());
   EXPECT_EQ(schedule.stats().views_cached, 6u);
 }
 
@@ -269,29 +276,17 @@ TEST(ShadowSchedule, ChangedBoxesRedrawWhatTheWholeListWould) {
   scene::Scene scene = spots_in_a_row(6, 64);
   FrameLights lights;
   ShadowSchedule schedule(small_atlas);
-  const ShadowCamera camera = camera_at({0.0f, 2.0f, 0.0f});
-  const auto box_at = [](float z) {
-    return scene::Aabb{glm::vec3(-0.5f, 0.0f, z - 0.5f), glm::vec3(0.5f, 1.0f, z + 0.5f)};
+  const auto whole = [&](float crate_z) {
+    const std::vector<CasterBounds> casters{{7, crate_at(crate_z)}};
+    return maps_drawn(scene, lights, schedule, std::span<const CasterBounds>(casters));
   };
-  const auto frame = [&](const CasterUpdate& casters) {
-    scene.world.advance_tick();
-    gather_lights(scene.world, bounds, {}, lights);
-    schedule.schedule(lights, camera, casters, 0);
-    std::vector<int> drawn;
-    for (size_t m = 0; m < lights.maps.size(); ++m) {
-      if (lights.maps[m].render) drawn.push_back(static_cast<int>(m));
-    }
-    return drawn;
-  };
-  const std::vector<CasterBounds> at_first{{7, box_at(-3.0f)}};
-  EXPECT_EQ(frame(std::span<const CasterBounds>(at_first)).size(), 6u);  // every map is new
-  const std::vector<scene::Aabb> moved{box_at(-3.0f), box_at(-7.0f)};
-  EXPECT_EQ(frame(CasterUpdate::changes(moved)), (std::vector<int>{0, 1}));
-  EXPECT_TRUE(frame(CasterUpdate::changes({})).empty());
-  const std::vector<CasterBounds> at_second{{7, box_at(-7.0f)}};
-  EXPECT_EQ(frame(std::span<const CasterBounds>(at_second)), (std::vector<int>{0, 1}))
+  EXPECT_EQ(whole(-3.0f).size(), 6u);  // every map is new
+  const std::vector<scene::Aabb> moved{crate_at(-3.0f), crate_at(-7.0f)};
+  EXPECT_EQ(maps_drawn(scene, lights, schedule, CasterUpdate::changes(moved)), (std::vector<int>{0, 1}));
+  EXPECT_TRUE(maps_drawn(scene, lights, schedule, CasterUpdate::changes({})).empty());
+  EXPECT_EQ(whole(-7.0f), (std::vector<int>{0, 1}))
       << "the tracker last saw the crate at the first place: it reports the move again";
-  EXPECT_TRUE(frame(std::span<const CasterBounds>(at_second)).empty());
+  EXPECT_TRUE(whole(-7.0f).empty());
 }
 
 TEST(FrameLights, RecordsAreOrderedByLightGroup) {
