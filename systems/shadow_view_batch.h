@@ -128,6 +128,7 @@ class ShadowViewBatch {
     uint32_t view;
   };
   std::vector<Placed> placed_;  // the views by page, size, row, column
+  std::vector<Placed> placed_scratch_;
   std::vector<VkBufferImageCopy> copies_;
   uint64_t depth_texels_ = 0;
 };

@@ -6,6 +6,8 @@
 #include <cassert>
 #include <cmath>
 
+#include "systems/shadows/radix_sort.h"
+
 namespace sg::shadows {
 namespace {
 
@@ -32,14 +34,9 @@ std::vector<uint32_t> least_important_first(std::span<const ShadowRequest> reque
   for (uint32_t i = 0; i < requests.size(); ++i) {
     if (resolutions[i] > 0) order.push_back(importance_bits(requests[i]) << 32 | i);
   }
-  std::vector<uint64_t> sorted(order.size());
-  for (uint32_t shift = 32; shift < 64; shift += 8) {
-    std::array<size_t, 257> starts{};
-    for (const uint64_t value : order) ++starts[((value >> shift) & 0xff) + 1];
-    for (size_t digit = 1; digit < starts.size(); ++digit) starts[digit] += starts[digit - 1];
-    for (const uint64_t value : order) sorted[starts[(value >> shift) & 0xff]++] = value;
-    order.swap(sorted);
-  }
+  std::vector<uint64_t> scratch;
+  radix_sort(
+      order, scratch, [](uint64_t value) { return value >> 32; }, 32);
   const auto key = [&](uint64_t value) { return requests[uint32_t(value)].key; };
   for (auto run = order.begin(); run != order.end();) {
     const auto run_end =
