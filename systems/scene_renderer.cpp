@@ -113,7 +113,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   }
   const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
   const uint32_t page_size = atlas_.shape().page_size;
-  if (batch_) batch_->prepare(slot, lights_, gpu_scene_, page_size);
+  if (batch_) batch_->prepare(slot, lights_, gpu_scene_, page_size, &workers_);
   if (per_light_) {
     per_light_->prepare(slot, lights_, gpu_scene_, page_size, settings_.cube_shadows, settings_.cull_casters);
   }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <span>
+#include <utility>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/pipeline.h"
@@ -152,34 +153,56 @@ bool ShadowViewBatch::all_casters_kept(uint32_t slot) {
 }
 
 void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene,
-                              uint32_t page_size) {
-  views_.clear();
-  clears_.clear();
-  view_tiles_.clear();
-  const auto add_tile = [&](View& view, const shadows::AtlasTile& tile, uint32_t kind) {
-    view.info = {tile.page, kind, tile.size, 0u};
-    view_tiles_.push_back(tile);
-    clears_.push_back(tile_clear(tile));
-  };
-  for (const shadows::ShadowMapView& map : lights.maps) {
-    if (!map.render) continue;
-    View& view = views_.emplace_back();
-    view.view_projection = map.view.view_projection();
-    view.tile = shadows::tile_clip_transform(map.tile, page_size);
-    view.position_far = glm::vec4(0.0f);
-    view.planes = shadows::frustum_planes(view.view_projection);
-    add_tile(view, map.tile, view_kind_map);
+                              uint32_t page_size, ecs::ThreadPool* pool) {
+  // Where each drawn view goes, a flag a light, on this thread; then the views themselves
+  // (matrices, frustum planes), independent, in chunks on the pool.
+  constexpr uint32_t not_drawn = UINT32_MAX;
+  const size_t light_count = lights.maps.size() + lights.cubes.size();
+  first_view_.resize(light_count);
+  uint32_t count = 0;
+  for (size_t m = 0; m < lights.maps.size(); ++m)
+    first_view_[m] = lights.maps[m].render ? count++ : not_drawn;
+  for (size_t c = 0; c < lights.cubes.size(); ++c) {
+    first_view_[lights.maps.size() + c] =
+        lights.cubes[c].render ? std::exchange(count, count + 6) : not_drawn;
   }
-  for (const shadows::ShadowCubeView& cube : lights.cubes) {
-    if (!cube.render) continue;
-    for (uint32_t face = 0; face < 6; ++face) {
-      View& view = views_.emplace_back();
-      view.view_projection = cube.views.view_projection[face];
-      view.tile = shadows::tile_clip_transform(cube.tiles[face], page_size);
-      view.position_far = cube.position_far;
-      view.planes = shadows::frustum_planes(view.view_projection);
-      add_tile(view, cube.tiles[face], view_kind_face);
+  views_.resize(count);
+  view_tiles_.resize(count);
+  clears_.resize(count);
+  const auto place_view = [&](uint32_t v, const glm::mat4& view_projection, const shadows::AtlasTile& tile,
+                              const glm::vec4& position_far, uint32_t kind) {
+    View& view = views_[v];
+    view.view_projection = view_projection;
+    view.tile = shadows::tile_clip_transform(tile, page_size);
+    view.position_far = position_far;
+    view.planes = shadows::frustum_planes(view_projection);
+    view.info = {tile.page, kind, tile.size, 0u};
+    view.raster = glm::uvec4(0u);
+    view_tiles_[v] = tile;
+    clears_[v] = tile_clear(tile);
+  };
+  constexpr size_t chunk = 256;
+  const auto place_chunk = [&](size_t c) {
+    for (size_t i = c * chunk; i < std::min(light_count, (c + 1) * chunk); ++i) {
+      const uint32_t first = first_view_[i];
+      if (first == not_drawn) continue;
+      if (i < lights.maps.size()) {
+        const shadows::ShadowMapView& map = lights.maps[i];
+        place_view(first, map.view.view_projection(), map.tile, glm::vec4(0.0f), view_kind_map);
+        continue;
+      }
+      const shadows::ShadowCubeView& cube = lights.cubes[i - lights.maps.size()];
+      for (uint32_t face = 0; face < 6; ++face) {
+        place_view(first + face, cube.views.view_projection[face], cube.tiles[face], cube.position_far,
+                   view_kind_face);
+      }
     }
+  };
+  const size_t chunks = (light_count + chunk - 1) / chunk;
+  if (pool != nullptr && chunks > 1) {
+    pool->run(chunks, place_chunk);
+  } else {
+    for (size_t c = 0; c < chunks; ++c) place_chunk(c);
   }
 
   if (setting_ == shadows::ShadowRaster::automatic) {

@@ -29,6 +29,7 @@
 
 #include <glm/glm.hpp>
 
+#include "ecs/thread_pool.h"
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/frame_buffers.h"
@@ -58,8 +59,10 @@ class ShadowViewBatch {
   // must be rendered again (the capacity has grown since).
   bool all_casters_kept(uint32_t slot);
   // CPU side of a frame: the records of the views of `lights` that render this frame (`render`),
-  // in an atlas of `page_size` texels a page, and of `scene`'s casters.
-  void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene, uint32_t page_size);
+  // in an atlas of `page_size` texels a page, and of `scene`'s casters. With `pool`, the view
+  // records are made on its threads.
+  void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene, uint32_t page_size,
+               ecs::ThreadPool* pool = nullptr);
 
   // Adds the passes (none when no view renders) and returns the atlas's newest version. `scene`
   // is read when the passes record.
@@ -127,7 +130,8 @@ class ShadowViewBatch {
     uint64_t key;  // page, size, row, column, 16 bits each
     uint32_t view;
   };
-  std::vector<Placed> placed_;  // the views by page, size, row, column
+  std::vector<uint32_t> first_view_;  // per light (maps, then cubes): its first view, if drawn
+  std::vector<Placed> placed_;        // the views by page, size, row, column
   std::vector<Placed> placed_scratch_;
   std::vector<VkBufferImageCopy> copies_;
   uint64_t depth_texels_ = 0;
