@@ -62,8 +62,9 @@ class GpuScene {
   // Incremental: after the first call, only instances whose WorldTransform or Material was
   // written at or after the tick of the previous call are read again, unless a MeshInstance was
   // written or one of the three components removed (then everything is). So always pass the
-  // same world, and let its tick advance between frames (ecs::World::advance_tick) so that a
-  // frame's writes are told from the previous frame's.
+  // same world, let its tick advance between frames (ecs::World::advance_tick) so that a
+  // frame's writes are told from the previous frame's, and keep its removal history back to the
+  // previous call (ecs::World::forget_removals_before).
   void gather(const ecs::World& world, ecs::ThreadPool* pool = nullptr);
   // Writes what gather() found into the slot's instance and indirect-draw buffers: only the
   // instances gathered since the slot was last written, unless the order changed or the buffer
