@@ -4,8 +4,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "systems/shadows/radix_sort.h"
-
 namespace sg::shadows {
 
 void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> changed_casters,
@@ -101,26 +99,48 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
     return;
   }
 
-  // Lights without a valid map, then the stalest, ties by key (the header's order): two stable
-  // radix sorts, by key and then by staleness, of keys kept side by side (thousands of dirty
-  // lights a frame when the budget is short).
+  // Lights without a valid map, then the stalest, ties by key (the header's order): sort keys
+  // side by side rather than looked up through the lights, so thousands of them sort quickly.
   order_.clear();
   for (const uint32_t i : candidates_) {
     const LightState& state = states_[i];
     order_.push_back({(state.valid ? uint64_t{1} << 63 : 0) | state.rendered_frame, state.key, i});
   }
-  radix_sort(order_, order_scratch_, [](const Ordered& o) { return o.key; });
-  radix_sort(order_, order_scratch_, [](const Ordered& o) { return o.stale; });
-  // Taken in that order while views are left; a light needing more views than are left is
-  // skipped, unless nothing was taken yet.
+  const auto comes_first = [](const Ordered& a, const Ordered& b) {
+    return a.stale < b.stale || (a.stale == b.stale && a.key < b.key);
+  };
   uint32_t views_left = view_budget;
   bool rendered_any = false;
-  for (auto it = order_.begin(); it != order_.end() && views_left > 0; ++it) {
-    const uint32_t views = lights[it->light].views;
-    if (views > views_left && rendered_any) continue;
-    render[it->light] = 1;
-    views_left -= std::min(views, views_left);
-    rendered_any = true;
+  const auto take_in_order = [&](auto begin, auto end) {
+    for (auto it = begin; it != end && views_left > 0; ++it) {
+      const uint32_t views = lights[it->light].views;
+      if (views > views_left && rendered_any) continue;
+      render[it->light] = 1;
+      views_left -= std::min(views, views_left);
+      rendered_any = true;
+    }
+  };
+  // Every light has a view at least, so no more than views_left lights fit: ordering that many
+  // is enough, unless lights were skipped for having more views than were left.
+  const auto head = order_.begin() + std::min<ptrdiff_t>(views_left, std::ssize(order_));
+  if (head == order_.end()) {
+    std::sort(order_.begin(), order_.end(), comes_first);  // partial_sort would heap-sort them all
+  } else {
+    std::partial_sort(order_.begin(), head, order_.end(), comes_first);
+  }
+  take_in_order(order_.begin(), head);
+  // Then fewer views are left than the skipped light had, a handful: the stalest of the rest that
+  // still fits, one scan each, costs less than sorting the rest (100,000 lights).
+  while (views_left > 0) {
+    auto next = order_.end();
+    for (auto it = head; it != order_.end(); ++it) {
+      if (render[it->light] == 0 && lights[it->light].views <= views_left &&
+          (next == order_.end() || comes_first(*it, *next)))
+        next = it;
+    }
+    if (next == order_.end()) break;
+    render[next->light] = 1;
+    views_left -= lights[next->light].views;
   }
 }
 

@@ -59,9 +59,9 @@ class ShadowCache {
   //
   // Cost: O(lights), plus, when casters changed, testing each clean bounded light against only
   // the boxes near it (SpheresMeetingBoxes), plus, when the budget is short, ordering the dirty
-  // lights (a radix sort: O(dirty) passes over the bytes in which their keys differ). A frame allocates
-  // nothing once grown, except when the lights are not the previous frame's keys in the previous frame's
-  // order: the key -> state map is then rebuilt.
+  // lights (O(dirty log budget) usually). A frame allocates nothing once grown, except when the
+  // lights are not the previous frame's keys in the previous frame's order: the key -> state map
+  // is then rebuilt.
   void plan(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> changed_casters,
             uint32_t view_budget, std::span<uint8_t> render, std::span<uint8_t> usable);
 
@@ -98,8 +98,7 @@ class ShadowCache {
     uint64_t key;
     uint32_t light;
   };
-  std::vector<Ordered> order_;  // the dirty lights, in the order they get renders
-  std::vector<Ordered> order_scratch_;
+  std::vector<Ordered> order_;        // the dirty lights, in the order they get renders
   std::vector<uint32_t> candidates_;  // lights tested against the caster boxes, then the dirty ones
   std::vector<glm::vec4> candidate_reach_;
   std::vector<uint8_t> candidate_met_;
