@@ -13,17 +13,19 @@ namespace {
 
 constexpr float unbounded_importance = 1.0e9f;
 
-// Reorders `rendered` (one entry per key) to follow `views`: an entry per view, carried over
-// from the same key, or new. Lights that are gone lose theirs; a light never has a cached map
-// without its entry, since the cache forgets lights that leave the list too.
+// The entry of `views[i]` in `rendered`, which holds one entry per view in the order of an
+// earlier frame's views. Usually that order is this frame's and entry i is the one; otherwise
+// `rendered` is first reordered to follow `views`: each entry carried over from the same key, or
+// new. Lights that are gone lose theirs; a light never has a cached map without its entry, since
+// the cache forgets lights that leave the list too. Checked one view at a time, where the caller
+// reads the view anyway: thousands of views are large and a separate pass over them is not free.
 template <class Views, class Rendered>
-void match_by_key(const Views& views, std::vector<Rendered>& rendered,
-                  std::unordered_map<uint64_t, uint32_t>& index_of_key) {
-  const bool same = std::equal(views.begin(), views.end(), rendered.begin(), rendered.end(),
-                               [](const auto& v, const Rendered& r) { return v.key == r.key; });
-  if (same) return;
+Rendered& entry_for(const Views& views, size_t i, std::vector<Rendered>& rendered,
+                    std::unordered_map<uint64_t, uint32_t>& index_of_key) {
+  if (i < rendered.size() && rendered.size() == views.size() && rendered[i].key == views[i].key)
+    return rendered[i];
   index_of_key.clear();
-  for (uint32_t i = 0; i < rendered.size(); ++i) index_of_key.emplace(rendered[i].key, i);
+  for (uint32_t k = 0; k < rendered.size(); ++k) index_of_key.emplace(rendered[k].key, k);
   std::vector<Rendered> matched;
   matched.reserve(views.size());
   for (const auto& view : views) {
@@ -31,6 +33,7 @@ void match_by_key(const Views& views, std::vector<Rendered>& rendered,
     matched.push_back(found == index_of_key.end() ? Rendered{.key = view.key} : rendered[found->second]);
   }
   rendered = std::move(matched);
+  return rendered[i];
 }
 
 // The camera's frustum planes, normalized, computed once for all of a frame's lights.
@@ -147,23 +150,21 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   };
   // A cached map was rendered from where its light was then: the record samples it with that
   // view, not the light's present one.
-  match_by_key(lights.maps, rendered_maps_, index_of_key_);
   for (size_t m = 0; m < lights.maps.size(); ++m) {
     ShadowMapView& map = lights.maps[m];
     apply(request_of_[m], 1, map, [&](const ShadowPlacement& placement) {
       map.tile = placement.tiles[0];
-      RenderedMap& rendered = rendered_maps_[m];
+      RenderedMap& rendered = entry_for(lights.maps, m, rendered_maps_, index_of_key_);
       if (map.render) rendered.view = map.view;
       set_shadow_map(lights.records[map.light], map.tile.page, tile_uv_rect(map.tile, page_size_),
                      map.resolution, rendered.view);
     });
   }
-  match_by_key(lights.cubes, rendered_cubes_, index_of_key_);
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
     ShadowCubeView& cube = lights.cubes[c];
     apply(request_of_[lights.maps.size() + c], 6, cube, [&](const ShadowPlacement& placement) {
       cube.tiles = placement.tiles;
-      RenderedCube& rendered = rendered_cubes_[c];
+      RenderedCube& rendered = entry_for(lights.cubes, c, rendered_cubes_, index_of_key_);
       if (cube.render) {
         rendered.views = cube.views;
         rendered.origin = glm::vec3(cube.position_far);
