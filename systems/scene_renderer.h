@@ -79,7 +79,9 @@ class SceneRenderer {
   SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene, uint32_t frames_in_flight,
                 rg::Format frame_format, const RendererSettings& settings = {});
 
-  // Reads the world's drawables and lights into CPU lists. Transforms must be up to date.
+  // Reads the world's drawables and lights into CPU lists. Transforms must be up to date. Once a
+  // frame, each followed by prepare(): the shadow schedule learns what moved from the last gather
+  // alone.
   void gather(const ecs::World& world);
   // Gives the gathered lights their shadow tiles (their importance measured from the camera
   // `pose` and `lens` on a `width` x `height` frame), decides which maps are redrawn, and writes
