@@ -64,7 +64,7 @@ class Query {
 
   template <typename Fn>
   void for_each(Fn&& fn) {
-    run(fn, nullptr);
+    run(fn, nullptr, default_entities_per_task);
   }
 
   // Same visits and change marks as for_each, split into chunks of consecutive entities that
@@ -73,9 +73,14 @@ class Query {
   // call writes; it must not call the world's writing functions (add, remove, get_mut, create,
   // destroy) nor record into a CommandBuffer, which are not thread-safe. Visit order within a
   // chunk is for_each's; across chunks it is unspecified.
+  //
+  // `entities_per_task`: the default suits cheap callbacks over many entities; a callback that
+  // costs tens of nanoseconds (a matrix, a sine) pays for its tasks' bookkeeping with fewer
+  // entities, and thousands of them already share well in tasks of about a thousand.
   template <typename Fn>
-  void for_each_parallel(ThreadPool& threads, Fn&& fn) {
-    run(fn, &threads);
+  void for_each_parallel(ThreadPool& threads, Fn&& fn,
+                         std::size_t entities_per_task = default_entities_per_task) {
+    run(fn, &threads, entities_per_task);
   }
 
   // Number of entities for_each would visit (does not mark anything changed).
@@ -111,14 +116,16 @@ class Query {
     return pool != nullptr ? pool : &empty;
   }
 
-  // Entities per parallel task: large enough that a task's bookkeeping is noise, small enough
-  // that two to a few dozen threads share a million entities evenly.
-  static constexpr std::size_t entities_per_task = 16384;
+  // Entities per parallel task by default: large enough that a task's bookkeeping is noise,
+  // small enough that two to a few dozen threads share a million entities evenly.
+  static constexpr std::size_t default_entities_per_task = 16384;
 
   // Runs `range(begin, end)` over [0, count): whole on this thread when `threads` is null or
-  // there is too little to share, else in chunks on `threads`.
+  // there is too little to share, else in chunks of entities_per_task on `threads`.
   template <typename Range>
-  static void split(ThreadPool* threads, std::size_t count, const Range& range) {
+  static void split(ThreadPool* threads, std::size_t count, std::size_t entities_per_task,
+                    const Range& range) {
+    entities_per_task = std::max<std::size_t>(entities_per_task, 1);
     if (threads == nullptr || threads->thread_count() == 1 || count <= entities_per_task) {
       range(std::size_t{0}, count);
       return;
@@ -129,7 +136,7 @@ class Query {
   }
 
   template <typename Fn>
-  void run(Fn& fn, ThreadPool* threads) {
+  void run(Fn& fn, ThreadPool* threads, std::size_t entities_per_task) {
     const Tick now = world_->tick();
     if (watched_ == nullptr && visits_every_slot()) {
       // Every component is visited, so mutable pools take one bulk mark instead of one per slot.
@@ -137,7 +144,7 @@ class Query {
         ((is_mutable<Components> ? std::get<I>(pools_)->mark_all_changed(now) : void()), ...);
       }
       (std::index_sequence_for<Components...>{});
-      split(threads, std::get<0>(pools_)->size(),
+      split(threads, std::get<0>(pools_)->size(), entities_per_task,
             [&](std::size_t begin, std::size_t end) { for_each_slot(fn, begin, end); });
       return;
     }
@@ -145,7 +152,7 @@ class Query {
       // Collected first, so writes made by the callback cannot change what this pass visits.
       std::vector<std::uint32_t> changed;
       watched_->collect_changed_since(since_, changed);
-      split(threads, changed.size(), [&](std::size_t begin, std::size_t end) {
+      split(threads, changed.size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
         visit_range(
             watched_, [&](std::size_t i) { return changed[i]; }, begin, end, now, fn,
             std::index_sequence_for<Components...>{});
@@ -153,7 +160,7 @@ class Query {
       return;
     }
     const SparseSet* driver = smallest_pool();
-    split(threads, driver->size(), [&](std::size_t begin, std::size_t end) {
+    split(threads, driver->size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
       visit_range(
           driver, [](std::size_t i) { return static_cast<std::uint32_t>(i); }, begin, end, now, fn,
           std::index_sequence_for<Components...>{});

@@ -91,7 +91,7 @@ void update_world_transforms(World& world, Tick since, ThreadPool* threads) {
     world_transform.matrix = to_matrix(local);
   };
   if (threads != nullptr) {
-    standalone.for_each_parallel(*threads, update);
+    standalone.for_each_parallel(*threads, update, motion_entities_per_task);
   } else {
     standalone.for_each(update);
   }

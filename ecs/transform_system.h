@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+
 #include "ecs/world.h"
 
 namespace sg::ecs {
@@ -13,5 +15,9 @@ namespace sg::ecs {
 // run (0 the first time, to compute everything). With `threads`, entities outside any hierarchy
 // (no Parent, no Children) are computed on them.
 void update_world_transforms(World& world, Tick since, ThreadPool* threads = nullptr);
+
+// Entities per parallel task of a per-entity update that costs tens of nanoseconds (a matrix, a
+// sine): a frame's few thousand moving things then share the threads.
+inline constexpr std::size_t motion_entities_per_task = 1024;
 
 }  // namespace sg::ecs

@@ -193,8 +193,8 @@ void SandboxFrame::update(double seconds) {
   if (ui_ ? ui_->playing() : animate_) {
     animation_seconds_ += seconds;
     const auto time = static_cast<float>(animation_seconds_);
-    scene::animate_orbits(world, time);
-    scene::animate_bobs(world, time);
+    scene::animate_orbits(world, time, &renderer_.workers());
+    scene::animate_bobs(world, time, &renderer_.workers());
     scene::animate_nodes(world, time);
   }
   ecs::update_world_transforms(world, transforms_updated_, &renderer_.workers());

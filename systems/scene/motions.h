@@ -26,10 +26,11 @@ struct BobMotion {
   float phase = 0.0f;          // radians at time 0
 };
 
-// Sets every OrbitMotion entity's translation for `time` (rotation untouched).
-void animate_orbits(ecs::World& world, float time);
+// Sets every OrbitMotion entity's translation for `time` (rotation untouched); with `threads`,
+// on them.
+void animate_orbits(ecs::World& world, float time, ecs::ThreadPool* threads = nullptr);
 
-// Sets every BobMotion entity's height for `time`.
-void animate_bobs(ecs::World& world, float time);
+// Sets every BobMotion entity's height for `time`; with `threads`, on them.
+void animate_bobs(ecs::World& world, float time, ecs::ThreadPool* threads = nullptr);
 
 }  // namespace sg::scene

@@ -43,24 +43,29 @@ std::vector<Entity> visit_serially(Query query) {
 }
 
 template <typename Query>
-std::vector<Entity> visit_in_parallel(Query query, ThreadPool& threads) {
+std::vector<Entity> visit_in_parallel(Query query, ThreadPool& threads, std::size_t entities_per_task) {
   std::mutex mutex;
   std::vector<Entity> visited;
-  query.for_each_parallel(threads, [&](Entity entity, auto&...) {
-    const std::lock_guard lock(mutex);
-    visited.push_back(entity);
-  });
+  query.for_each_parallel(
+      threads,
+      [&](Entity entity, auto&...) {
+        const std::lock_guard lock(mutex);
+        visited.push_back(entity);
+      },
+      entities_per_task);
   return visited;
 }
 
 TEST(ParallelQuery, VisitsTheSameEntitiesAsSerialIteration) {
   World world = make_world();
   ThreadPool threads(3);
+  // The default tasks, and small uneven ones (many tasks, the last one short).
   const auto check = [&](auto query) {
     const std::vector<Entity> serial = visit_serially(query);
-    const std::vector<Entity> parallel = sorted(visit_in_parallel(query, threads));
     EXPECT_GT(serial.size(), 0u);
-    EXPECT_EQ(sorted(serial), parallel);
+    for (const std::size_t per_task : {std::size_t{16384}, std::size_t{1000}, std::size_t{7}}) {
+      EXPECT_EQ(sorted(serial), sorted(visit_in_parallel(query, threads, per_task))) << per_task;
+    }
   };
   check(world.query<const Position>());                    // every slot
   check(world.query<const Position, const Velocity>());    // sparse lookups
@@ -85,7 +90,7 @@ TEST(ParallelQuery, WritesAndChangeMarksMatchSerialIteration) {
   serial_world.advance_tick();
   parallel_world.advance_tick();
   serial_world.query<Position, const Velocity>().for_each(move);
-  parallel_world.query<Position, const Velocity>().for_each_parallel(threads, move);
+  parallel_world.query<Position, const Velocity>().for_each_parallel(threads, move, 1000);
   for (std::uint32_t i = 0; i < entity_count; ++i) {
     const Entity entity{i, 0};
     ASSERT_EQ(serial_world.get<Position>(entity).x, parallel_world.get<Position>(entity).x);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ecs/transform.h"
+#include "ecs/transform_system.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
@@ -146,6 +147,30 @@ TEST(Motions, ABobOnAnOrbitMovesTheHeightOnly) {
   EXPECT_GE(world.change_tick<ecs::LocalTransform>(both), before + 1);
   EXPECT_EQ(world.get<ecs::LocalTransform>(still).translation, glm::vec3(5.0f));
   EXPECT_LT(world.change_tick<ecs::LocalTransform>(still), before + 1);
+}
+
+// On threads, in many small tasks, the motions write what they write serially.
+TEST(Motions, ThreadsMoveEverythingAsSerialCallsDo) {
+  BuiltinSceneParams params = small_stress();
+  params.triangles = 200000;  // about 1,800 crates
+  params.moving_fraction = 1.0f;
+  Scene serial = build_scene("stress", params);
+  Scene threaded = build_scene("stress", params);
+  ecs::ThreadPool threads(2);
+  animate_orbits(serial.world, 2.5f);
+  animate_bobs(serial.world, 2.5f);
+  animate_orbits(threaded.world, 2.5f, &threads);
+  animate_bobs(threaded.world, 2.5f, &threads);
+  std::vector<glm::vec3> a;
+  std::vector<glm::vec3> b;
+  serial.world.query<const ecs::LocalTransform>().for_each(
+      [&](const ecs::LocalTransform& local) { a.push_back(local.translation); });
+  threaded.world.query<const ecs::LocalTransform>().for_each(
+      [&](const ecs::LocalTransform& local) { b.push_back(local.translation); });
+  std::uint32_t orbiting = 0;
+  threaded.world.query<const OrbitMotion>().for_each([&](const OrbitMotion&) { ++orbiting; });
+  EXPECT_GT(orbiting, ecs::motion_entities_per_task) << "enough for several tasks";
+  EXPECT_EQ(a, b);
 }
 
 TEST(BuiltinScenes, UnknownNameAndBadFractionAreRefused) {
