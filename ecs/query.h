@@ -137,6 +137,9 @@ class Query {
 
   template <typename Fn>
   void run(Fn& fn, ThreadPool* threads, std::size_t entities_per_task) {
+    // An entity must have every component: one empty pool leaves nothing to visit (and no
+    // change history to collect).
+    if (std::apply([](const auto*... pools) { return ((pools->size() == 0) || ...); }, pools_)) return;
     const Tick now = world_->tick();
     if (watched_ == nullptr && visits_every_slot()) {
       // Every component is visited, so mutable pools take one bulk mark instead of one per slot.

@@ -19,11 +19,13 @@ struct DirtyRoot {
 // in the hierarchy did (new parent, new depth, or no parent any more).
 std::vector<DirtyRoot> find_dirty(World& world, Tick since) {
   std::vector<Entity> changed;
-  // Entities outside any hierarchy are done by update_world_transforms' own pass.
-  world.query<const LocalTransform>().changed_since<LocalTransform>(since).for_each(
-      [&](Entity entity, const LocalTransform&) {
-        if (world.has<Parent>(entity) || world.has<Children>(entity)) changed.push_back(entity);
-      });
+  // Entities outside any hierarchy are done by update_world_transforms' own pass; the queries
+  // look each change up in the hierarchy's pools directly (an entity with both is listed twice,
+  // and visited once).
+  world.query<const LocalTransform, const Parent>().changed_since<LocalTransform>(since).for_each(
+      [&](Entity entity, const LocalTransform&, const Parent&) { changed.push_back(entity); });
+  world.query<const LocalTransform, const Children>().changed_since<LocalTransform>(since).for_each(
+      [&](Entity entity, const LocalTransform&, const Children&) { changed.push_back(entity); });
   world.query<const Parent>().changed_since<Parent>(since).for_each(
       [&](Entity entity, const Parent&) { changed.push_back(entity); });
   for (const Removal& removal : world.removed_since<Parent>(since)) {
