@@ -23,11 +23,17 @@ struct Entity {
 // Refers to no entity; never returned by World::create.
 inline constexpr Entity null_entity{};
 
+// The handle as one integer, generation << 32 | index: a key that, like the handle, never
+// matches an entity that reuses the slot (the low 32 bits still index per-slot storage).
+constexpr std::uint64_t entity_key(Entity entity) {
+  return std::uint64_t{entity.generation} << 32 | entity.index;
+}
+
 }  // namespace sg::ecs
 
 template <>
 struct std::hash<sg::ecs::Entity> {
   std::size_t operator()(const sg::ecs::Entity& entity) const noexcept {
-    return std::hash<std::uint64_t>{}(std::uint64_t{entity.generation} << 32 | entity.index);
+    return std::hash<std::uint64_t>{}(sg::ecs::entity_key(entity));
   }
 };

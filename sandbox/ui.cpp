@@ -199,7 +199,7 @@ void SandboxUi::shadow_map_panel(const ecs::World& world, const UiFacts& facts) 
       !world.alive(selected_)) {
     return;
   }
-  const uint64_t key = uint64_t{selected_.generation} << 32 | selected_.index;
+  const uint64_t key = ecs::entity_key(selected_);
   const float page = float(facts.atlas_page);
   const auto image = [&](const shadows::AtlasTile& tile, const UiDepthView& view, float side) {
     depth_views_.push_back(view);
@@ -287,7 +287,7 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
   world.query<const scene::ShadowSettings>().for_each([&](ecs::Entity entity, const scene::ShadowSettings&) {
     const int type = light_type(world, entity);
     if (type == 0 || (type_filter_ != 0 && type != type_filter_)) return;
-    const auto found = importance.find(uint64_t{entity.generation} << 32 | entity.index);
+    const auto found = importance.find(ecs::entity_key(entity));
     listed_.emplace_back(entity, found == importance.end() ? 0.0f : found->second);
   });
   if (order_ == 1) {

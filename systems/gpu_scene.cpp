@@ -94,7 +94,7 @@ void GpuScene::place(const ecs::World& world, size_t i) {
   sorted_[i] = {model, glm::vec4(glm::vec3(material.base_color), material.specular),
                 glm::vec4(material.shininess, texture, 0.0f, 0.0f)};
   bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, model);
-  keys_[i] = uint64_t{entity.generation} << 32 | entity.index;
+  keys_[i] = ecs::entity_key(entity);
 }
 
 bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::ThreadPool* pool) {

@@ -93,7 +93,7 @@ class GpuScene {
   std::span<const VkDrawIndexedIndirectCommand> caster_groups() const { return caster_groups_; }
   // World-space bounds of every instance, in instance-buffer order, and of all of them.
   std::span<const scene::Aabb> instance_bounds() const { return bounds_; }
-  // The entity of every instance, in instance-buffer order, as uint64_t{generation} << 32 | index.
+  // The entity of every instance, in instance-buffer order, as ecs::entity_key.
   std::span<const uint64_t> instance_keys() const { return keys_; }
   const scene::Aabb& bounds() const { return scene_bounds_; }
 

@@ -10,8 +10,8 @@
 
 namespace sg::shadows {
 
-// One shadow caster of a frame. `key` is its entity's identity,
-// uint64_t{entity.generation} << 32 | entity.index: the low 32 bits index the tracker's storage
+// One shadow caster of a frame. `key` is its entity's identity, ecs::entity_key(entity)
+// (generation << 32 | index): the low 32 bits index the tracker's storage
 // (so it grows to the largest slot index seen), the high 32 bits tell a destroyed entity from
 // the one that reuses its slot.
 struct CasterBounds {

@@ -114,7 +114,7 @@ ShadowKind shadow_kind(const GpuLight& record) {
 
 }  // namespace
 
-uint64_t light_key(ecs::Entity entity) { return uint64_t{entity.generation} << 32 | entity.index; }
+uint64_t light_key(ecs::Entity entity) { return ecs::entity_key(entity); }
 
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
                    FrameLights& out, ecs::ThreadPool* pool) {
