@@ -1,5 +1,6 @@
 #include "rendergraph/device/readback.h"
 
+#include <cmath>
 #include <cstring>
 #include <span>
 #include <utility>
@@ -10,6 +11,12 @@
 #include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
+
+float srgb_to_linear(uint8_t encoded) {
+  const float c = float(encoded) / 255.0f;
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
 namespace {
 
 bool is_bgra(VkFormat format) {

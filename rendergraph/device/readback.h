@@ -19,6 +19,10 @@ struct Rgba8Image {
   const uint8_t* at(uint32_t x, uint32_t y) const { return &pixels[(size_t{y} * width + x) * 4]; }
 };
 
+// The linear value of one 8-bit sRGB-encoded channel (IEC 61966-2-1), as read_rgba8 returns the
+// channels of an SRGB image: for measuring light in a rendered picture.
+float srgb_to_linear(uint8_t encoded);
+
 // Reads mip 0, layer 0 of an 8-bit RGBA or BGRA image (UNORM or SRGB: the stored bytes are
 // returned as they are). The image must be in TRANSFER_SRC_OPTIMAL with its writes made
 // available to transfer reads by an earlier barrier on the same queue. Waits for the copy.

@@ -48,11 +48,6 @@ sandbox::SandboxScene build(const ShadowScene& s, float intensity) {
   return sandbox_scene(build_shadow_scene(s, intensity));
 }
 
-float linear(uint8_t srgb) {
-  const float c = srgb / 255.0f;
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
 class ShadowAlgorithms : public GpuTest {
  protected:
   // Linear green channel of the last of `frames` frames.
@@ -80,7 +75,7 @@ class ShadowAlgorithms : public GpuTest {
     const vk::Rgba8Image image = vk::read_rgba8(context, frame.image());
     last_pixels = image.pixels;
     for (uint32_t y = 0; y < height; ++y) {
-      for (uint32_t x = 0; x < width; ++x) out[size_t{y} * width + x] = linear(image.at(x, y)[1]);
+      for (uint32_t x = 0; x < width; ++x) out[size_t{y} * width + x] = vk::srgb_to_linear(image.at(x, y)[1]);
     }
     return out;
   }

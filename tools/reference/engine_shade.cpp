@@ -32,11 +32,6 @@ constexpr float peak_quantile = 0.995f;
 constexpr float saturated_step = 1.0f / 16.0f;
 constexpr int max_exposure_attempts = 8;
 
-float srgb_to_linear(uint8_t srgb) {
-  const float c = float(srgb) / 255.0f;
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
 // The peak_quantile of the lit surface pixels of `picture` (0 if none is lit). Surfaces only: the
 // background's clear colour is no light's.
 float bright_quantile(const std::vector<float>& picture, const vk::DepthImage& depth) {
@@ -117,7 +112,7 @@ std::vector<float> EngineShade::render() {
   const vk::Rgba8Image image = vk::read_rgba8(context_, frame_->image());
   std::vector<float> out(size_t{image.width} * image.height);
   // White light on white surfaces: every channel holds the same value.
-  for (size_t i = 0; i < out.size(); ++i) out[i] = srgb_to_linear(image.pixels[i * 4 + 1]);
+  for (size_t i = 0; i < out.size(); ++i) out[i] = vk::srgb_to_linear(image.pixels[i * 4 + 1]);
   return out;
 }
 
