@@ -82,6 +82,12 @@ class Query {
                          std::size_t entities_per_task = default_entities_per_task) {
     run(fn, &threads, entities_per_task);
   }
+  // The same on `threads`, or for_each when it is null (systems that take an optional pool).
+  template <typename Fn>
+  void for_each_parallel(ThreadPool* threads, Fn&& fn,
+                         std::size_t entities_per_task = default_entities_per_task) {
+    run(fn, threads, entities_per_task);
+  }
 
   // Number of entities for_each would visit (does not mark anything changed).
   std::size_t count() {
@@ -120,21 +126,6 @@ class Query {
   // small enough that two to a few dozen threads share a million entities evenly.
   static constexpr std::size_t default_entities_per_task = 16384;
 
-  // Runs `range(begin, end)` over [0, count): whole on this thread when `threads` is null or
-  // there is too little to share, else in chunks of entities_per_task on `threads`.
-  template <typename Range>
-  static void split(ThreadPool* threads, std::size_t count, std::size_t entities_per_task,
-                    const Range& range) {
-    entities_per_task = std::max<std::size_t>(entities_per_task, 1);
-    if (threads == nullptr || threads->thread_count() == 1 || count <= entities_per_task) {
-      range(std::size_t{0}, count);
-      return;
-    }
-    threads->run((count + entities_per_task - 1) / entities_per_task, [&](std::size_t task) {
-      range(task * entities_per_task, std::min(count, (task + 1) * entities_per_task));
-    });
-  }
-
   template <typename Fn>
   void run(Fn& fn, ThreadPool* threads, std::size_t entities_per_task) {
     // An entity must have every component: one empty pool leaves nothing to visit (and no
@@ -147,15 +138,15 @@ class Query {
         ((is_mutable<Components> ? std::get<I>(pools_)->mark_all_changed(now) : void()), ...);
       }
       (std::index_sequence_for<Components...>{});
-      split(threads, std::get<0>(pools_)->size(), entities_per_task,
-            [&](std::size_t begin, std::size_t end) { for_each_slot(fn, begin, end); });
+      run_in_pieces(threads, std::get<0>(pools_)->size(), entities_per_task,
+                    [&](std::size_t begin, std::size_t end) { for_each_slot(fn, begin, end); });
       return;
     }
     if (watched_ != nullptr) {
       // Collected first, so writes made by the callback cannot change what this pass visits.
       std::vector<std::uint32_t> changed;
       watched_->collect_changed_since(since_, changed);
-      split(threads, changed.size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
+      run_in_pieces(threads, changed.size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
         visit_range(
             watched_, [&](std::size_t i) { return changed[i]; }, begin, end, now, fn,
             std::index_sequence_for<Components...>{});
@@ -163,7 +154,7 @@ class Query {
       return;
     }
     const SparseSet* driver = smallest_pool();
-    split(threads, driver->size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
+    run_in_pieces(threads, driver->size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
       visit_range(
           driver, [](std::size_t i) { return static_cast<std::uint32_t>(i); }, begin, end, now, fn,
           std::index_sequence_for<Components...>{});

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -69,5 +70,21 @@ class ThreadPool {
   std::atomic<bool> stopping_{false};
   std::vector<std::thread> threads_;
 };
+
+// Runs chunk(begin, end) over [0, count) cut into pieces of `piece_size` entries (the last may
+// be shorter) on `pool`, when there is one with workers and more than one piece; otherwise once,
+// over all of [0, count), on this thread. Pieces run concurrently, so they must not write the
+// same data.
+template <class Chunk>
+void run_in_pieces(ThreadPool* pool, std::size_t count, std::size_t piece_size, const Chunk& chunk) {
+  piece_size = std::max<std::size_t>(piece_size, 1);
+  const std::size_t pieces = (count + piece_size - 1) / piece_size;
+  if (pool == nullptr || pool->thread_count() == 1 || pieces <= 1) {
+    chunk(std::size_t{0}, count);
+    return;
+  }
+  pool->run(pieces,
+            [&](std::size_t piece) { chunk(piece * piece_size, std::min(count, (piece + 1) * piece_size)); });
+}
 
 }  // namespace sg::ecs

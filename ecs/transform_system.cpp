@@ -86,17 +86,15 @@ void update_subtree(World& world, Entity root, Visited& updated, std::vector<Ent
 void update_world_transforms(World& world, Tick since, ThreadPool* threads) {
   // Most moving things (crates, lights) have neither parent nor children: their world matrix is
   // their local one, with none of a subtree's lookups and in any order, so in parallel.
-  auto standalone = world.query<const LocalTransform, WorldTransform>()
-                        .without<Parent, Children>()
-                        .changed_since<LocalTransform>(since);
-  const auto update = [](const LocalTransform& local, WorldTransform& world_transform) {
-    world_transform.matrix = to_matrix(local);
-  };
-  if (threads != nullptr) {
-    standalone.for_each_parallel(*threads, update, motion_entities_per_task);
-  } else {
-    standalone.for_each(update);
-  }
+  world.query<const LocalTransform, WorldTransform>()
+      .without<Parent, Children>()
+      .changed_since<LocalTransform>(since)
+      .for_each_parallel(
+          threads,
+          [](const LocalTransform& local, WorldTransform& world_transform) {
+            world_transform.matrix = to_matrix(local);
+          },
+          motion_entities_per_task);
 
   Visited updated;
   std::vector<Entity> pending;

@@ -132,19 +132,12 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   if (unknown) return false;
 
   bounds_before_.resize(changed_.size());
-  constexpr size_t chunk = 256;
-  const size_t chunks = (changed_.size() + chunk - 1) / chunk;
-  const auto replace = [&](size_t c) {
-    for (size_t k = c * chunk; k < std::min(changed_.size(), (c + 1) * chunk); ++k) {
+  ecs::run_in_pieces(pool, changed_.size(), 256, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
       bounds_before_[k] = bounds_[changed_[k]];
       place(world, changed_[k]);
     }
-  };
-  if (pool != nullptr && chunks > 1) {
-    pool->run(chunks, replace);
-  } else {
-    for (size_t c = 0; c < chunks; ++c) replace(c);
-  }
+  });
   // Moved instances can shrink the scene's bounds as well as grow them.
   if (!changed_.empty()) {
     scene_bounds_ = {};
@@ -188,20 +181,15 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   sorted_.resize(count);
   bounds_.resize(count);
   keys_.resize(count);
-  constexpr size_t chunk = 256;  // small, so threads that wake late still find work
-  const size_t chunks = (count + chunk - 1) / chunk;
-  chunk_bounds_.assign(chunks, scene::Aabb{});
-  const auto place_chunk = [&](size_t c) {
-    for (size_t i = c * chunk; i < std::min(count, (c + 1) * chunk); ++i) {
+  constexpr size_t piece = 256;  // small, so threads that wake late still find work
+  chunk_bounds_.assign((count + piece - 1) / piece, scene::Aabb{});
+  ecs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
+    scene::Aabb& part = chunk_bounds_[begin / piece];
+    for (size_t i = begin; i < end; ++i) {
       place(world, i);
-      scene::grow(chunk_bounds_[c], bounds_[i]);
+      scene::grow(part, bounds_[i]);
     }
-  };
-  if (pool != nullptr && chunks > 1) {
-    pool->run(chunks, place_chunk);
-  } else {
-    for (size_t c = 0; c < chunks; ++c) place_chunk(c);
-  }
+  });
   scene_bounds_ = {};
   for (const scene::Aabb& part : chunk_bounds_) scene::grow(scene_bounds_, part);
 
@@ -239,11 +227,7 @@ void GpuScene::upload(uint32_t slot, ecs::ThreadPool* pool) {
   auto* mapped = static_cast<GpuInstance*>(buffer.mapped());
   const uint64_t uploaded_at = std::exchange(uploaded_at_[slot], gathers_);
   const bool everything = grows || uploaded_at < laid_out_at_;
-  constexpr size_t chunk = 4096;
-  const size_t chunks = (instances.size() + chunk - 1) / chunk;
-  const auto copy = [&](size_t c) {
-    const size_t begin = c * chunk;
-    const size_t end = std::min(instances.size(), begin + chunk);
+  ecs::run_in_pieces(pool, instances.size(), 4096, [&](size_t begin, size_t end) {
     if (everything) {
       std::memcpy(mapped + begin, instances.data() + begin, (end - begin) * sizeof(GpuInstance));
       return;
@@ -251,12 +235,7 @@ void GpuScene::upload(uint32_t slot, ecs::ThreadPool* pool) {
     for (size_t i = begin; i < end; ++i) {
       if (written_at_[i] > uploaded_at) mapped[i] = instances[i];
     }
-  };
-  if (pool != nullptr && chunks > 1) {
-    pool->run(chunks, copy);
-  } else {
-    for (size_t c = 0; c < chunks; ++c) copy(c);
-  }
+  });
   draws_.write(slot, std::span<const VkDrawIndexedIndirectCommand>(commands_));
 }
 

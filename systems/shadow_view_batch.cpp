@@ -181,9 +181,8 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     view_tiles_[v] = tile;
     clears_[v] = tile_clear(tile);
   };
-  constexpr size_t chunk = 256;
-  const auto place_chunk = [&](size_t c) {
-    for (size_t i = c * chunk; i < std::min(light_count, (c + 1) * chunk); ++i) {
+  ecs::run_in_pieces(pool, light_count, 256, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
       const uint32_t first = first_view_[i];
       if (first == not_drawn) continue;
       if (i < lights.maps.size()) {
@@ -197,13 +196,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
                    view_kind_face);
       }
     }
-  };
-  const size_t chunks = (light_count + chunk - 1) / chunk;
-  if (pool != nullptr && chunks > 1) {
-    pool->run(chunks, place_chunk);
-  } else {
-    for (size_t c = 0; c < chunks; ++c) place_chunk(c);
-  }
+  });
 
   if (setting_ == shadows::ShadowRaster::automatic) {
     uint64_t large_texels = 0;

@@ -137,10 +137,8 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
   out.maps.resize(maps);  // shrinking keeps the survivors' name storage for reuse
   out.cubes.resize(cubes);
 
-  constexpr size_t chunk = 256;
-  const size_t chunks = (gathered.size() + chunk - 1) / chunk;
-  const auto fill = [&](size_t c) {
-    for (size_t i = c * chunk; i < std::min(gathered.size(), (c + 1) * chunk); ++i) {
+  ecs::run_in_pieces(pool, gathered.size(), 256, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
       const auto index = static_cast<uint32_t>(i);
       switch (gathered[i].kind) {
         case GatheredLight::spot:
@@ -155,12 +153,7 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
         case GatheredLight::point: fill_point(world, overrides, since, gathered[i], index, out); break;
       }
     }
-  };
-  if (pool != nullptr && chunks > 1) {
-    pool->run(chunks, fill);
-  } else {
-    for (size_t c = 0; c < chunks; ++c) fill(c);
-  }
+  });
 }
 
 void sort_by_group(FrameLights& out) {
