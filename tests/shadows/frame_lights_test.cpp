@@ -240,53 +240,52 @@ scene::Aabb crate_at(float z) {
   return scene::Aabb{glm::vec3(-0.5f, 0.0f, z - 0.5f), glm::vec3(0.5f, 1.0f, z + 0.5f)};
 }
 
-// One frame: the lights gathered and scheduled with `casters`; the maps drawn.
-std::vector<int> maps_drawn(scene::Scene& scene, FrameLights& lights, ShadowSchedule& schedule,
-                            const CasterUpdate& casters) {
-  scene.world.advance_tick();
-  gather_lights(scene.world, bounds, {}, lights);
-  schedule.schedule(lights, camera_at({0.0f, 2.0f, 0.0f}), casters, 0);
-  std::vector<int> drawn;
-  for (size_t m = 0; m < lights.maps.size(); ++m) {
-    if (lights.maps[m].render) drawn.push_back(static_cast<int>(m));
-  }
-  return drawn;
-}
-
-// Spot lights 4 m apart, each reaching 3 m: moving a crate from the first light's reach into the
-// second's redraws exactly those two maps; a frame where nothing moves redraws none.
-TEST(ShadowSchedule, AMovedCasterRedrawsExactlyTheLightsItReaches) {
+// Six spot lights 4 m apart, each reaching 3 m, scheduled frame after frame.
+struct SpotsInARow {
   scene::Scene scene = spots_in_a_row(6, 64);
   FrameLights lights;
-  ShadowSchedule schedule(small_atlas);
-  const auto frame = [&](float crate_z) {
-    const std::vector<CasterBounds> casters{{7, crate_at(crate_z)}};
-    return maps_drawn(scene, lights, schedule, std::span<const CasterBounds>(casters));
-  };
-  EXPECT_EQ(frame(-3.0f).size(), 6u);  // every map is new
-  EXPECT_TRUE(frame(-3.0f).empty());
-  EXPECT_EQ(frame(-7.0f), (std::vector<int>{0, 1}));
-  EXPECT_TRUE(frame(-7.0f).empty());
-  EXPECT_EQ(schedule.stats().views_cached, 6u);
+  ShadowSchedule schedule{small_atlas};
+
+  // One frame: the lights gathered and scheduled with `casters`; the maps drawn.
+  std::vector<int> maps_drawn(const CasterUpdate& casters) {
+    scene.world.advance_tick();
+    gather_lights(scene.world, bounds, {}, lights);
+    schedule.schedule(lights, camera_at({0.0f, 2.0f, 0.0f}), casters, 0);
+    std::vector<int> drawn;
+    for (size_t m = 0; m < lights.maps.size(); ++m) {
+      if (lights.maps[m].render) drawn.push_back(static_cast<int>(m));
+    }
+    return drawn;
+  }
+  // The same with the frame's one caster, a crate at z, told whole.
+  std::vector<int> maps_drawn_with_crate_at(float z) {
+    const std::vector<CasterBounds> casters{{7, crate_at(z)}};
+    return maps_drawn(std::span<const CasterBounds>(casters));
+  }
+};
+
+// Moving a crate from the first light's reach into the second's redraws exactly those two maps;
+// a frame where nothing moves redraws none.
+TEST(ShadowSchedule, AMovedCasterRedrawsExactlyTheLightsItReaches) {
+  SpotsInARow row;
+  EXPECT_EQ(row.maps_drawn_with_crate_at(-3.0f).size(), 6u);  // every map is new
+  EXPECT_TRUE(row.maps_drawn_with_crate_at(-3.0f).empty());
+  EXPECT_EQ(row.maps_drawn_with_crate_at(-7.0f), (std::vector<int>{0, 1}));
+  EXPECT_TRUE(row.maps_drawn_with_crate_at(-7.0f).empty());
+  EXPECT_EQ(row.schedule.stats().views_cached, 6u);
 }
 
 // The same move told as the boxes that changed (a caller that knows what moved) redraws the
 // same two maps; and a later frame told whole only reports what changed since it last saw all.
 TEST(ShadowSchedule, ChangedBoxesRedrawWhatTheWholeListWould) {
-  scene::Scene scene = spots_in_a_row(6, 64);
-  FrameLights lights;
-  ShadowSchedule schedule(small_atlas);
-  const auto whole = [&](float crate_z) {
-    const std::vector<CasterBounds> casters{{7, crate_at(crate_z)}};
-    return maps_drawn(scene, lights, schedule, std::span<const CasterBounds>(casters));
-  };
-  EXPECT_EQ(whole(-3.0f).size(), 6u);  // every map is new
+  SpotsInARow row;
+  EXPECT_EQ(row.maps_drawn_with_crate_at(-3.0f).size(), 6u);  // every map is new
   const std::vector<scene::Aabb> moved{crate_at(-3.0f), crate_at(-7.0f)};
-  EXPECT_EQ(maps_drawn(scene, lights, schedule, CasterUpdate::changes(moved)), (std::vector<int>{0, 1}));
-  EXPECT_TRUE(maps_drawn(scene, lights, schedule, CasterUpdate::changes({})).empty());
-  EXPECT_EQ(whole(-7.0f), (std::vector<int>{0, 1}))
+  EXPECT_EQ(row.maps_drawn(CasterUpdate::changes(moved)), (std::vector<int>{0, 1}));
+  EXPECT_TRUE(row.maps_drawn(CasterUpdate::changes({})).empty());
+  EXPECT_EQ(row.maps_drawn_with_crate_at(-7.0f), (std::vector<int>{0, 1}))
       << "the tracker last saw the crate at the first place: it reports the move again";
-  EXPECT_TRUE(whole(-7.0f).empty());
+  EXPECT_TRUE(row.maps_drawn_with_crate_at(-7.0f).empty());
 }
 
 TEST(FrameLights, RecordsAreOrderedByLightGroup) {
