@@ -30,7 +30,7 @@ LightHeatmapPass::LightHeatmapPass(vk::VulkanContext& context, rg::Format colour
                                                        .fragment_spirv = light_heatmap_frag,
                                                        .color_formats = {vk::to_vk(colour_format)},
                                                        .cull_mode = VK_CULL_MODE_NONE,
-                                                       .alpha_blend = true,
+                                                       .blend = vk::Blend::alpha,
                                                        .layout = layout_.get(),
                                                        .name = "light heat map"})) {}
 

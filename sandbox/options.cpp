@@ -170,16 +170,30 @@ void add_options(CLI::App& app, Options& o) {
                                               : LightingPath::automatic;
          },
          "forward: a depth prepass, light lists per 16x16 screen tile, one forward pass; deferred: a "
-         "G-buffer, light lists, a compute pass per light group; fused: a depth prepass and one forward "
+         "G-buffer, light lists, a pass per light group (--deferred-passes); fused: a depth prepass and one "
+         "forward "
          "pass of every light that tone-maps too (a few lights on CPU devices); auto: the fastest for "
          "this kind of device")
       ->check(CLI::IsMember({"auto", "forward", "deferred", "fused"}))
+      ->default_str("auto");
+  app.add_option_function<std::string>(
+         "--deferred-passes",
+         [&o](const std::string& value) {
+           o.deferred_passes = value == "compute"    ? DeferredPasses::compute
+                               : value == "fragment" ? DeferredPasses::fragment
+                                                     : DeferredPasses::automatic;
+         },
+         "How deferred lighting's per-pixel passes run: compute dispatches, fragment passes over the "
+         "tiles with lights that blend into the lit sum, or auto (fragment on CPU devices, compute on "
+         "GPUs)")
+      ->check(CLI::IsMember({"auto", "compute", "fragment"}))
       ->default_str("auto");
   CLI::Option* naive = app.add_flag(
       "--naive", o.naive,
       "The source documents' way, as a baseline: a pass per shadow view and six per cube, every map "
       "every frame, every caster in every shadow view, every light at every pixel");
   naive->excludes("--lighting")
+      ->excludes("--deferred-passes")
       ->excludes("--cube-shadows")
       ->excludes("--shadow-views")
       ->excludes("--shadow-cache");

@@ -45,8 +45,9 @@ struct Options {
   uint32_t shadow_updates = shadows::default_shadow_view_budget;  // --shadow-updates: views redrawn a frame
   bool shadow_cache = true;                         // --shadow-cache off: redraw every map every frame
   LightingPath lighting = LightingPath::automatic;  // --lighting auto|forward|deferred
-  float exposure = 1.0f;                            // --exposure
-  LightingView view = LightingView::lit;            // --view lit|shadows
+  DeferredPasses deferred_passes = DeferredPasses::automatic;  // --deferred-passes auto|compute|fragment
+  float exposure = 1.0f;                                       // --exposure
+  LightingView view = LightingView::lit;                       // --view lit|shadows
   bool animate = true;  // --animate off: glTF animations and the stress scene's orbits stand still
   // --sidecar on|off: start from <scene>.shadowgraph.json (the saved edits). On from the command
   // line; off for programs that build Options themselves (tests, tools), so a stray file in their

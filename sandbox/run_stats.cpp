@@ -57,6 +57,7 @@ Json stats_json(const RunStats& stats) {
             {"prepare_upload", summary_json(stats.cpu_phases_ms.upload)}}},
           {"wall_frame_ms", summary_json(stats.wall_frame_ms)},
           {"lighting", stats.lighting},
+          {"deferred_passes", stats.deferred_passes ? Json(*stats.deferred_passes) : Json()},
           {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},
           {"passes", passes},
           {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},

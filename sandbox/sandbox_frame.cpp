@@ -59,6 +59,7 @@ RendererSettings renderer_settings(const Options& options) {
   settings.lights.shadows = options.shadows;
   settings.cube_shadows = options.cube_shadows;
   settings.lighting = options.lighting;
+  settings.deferred_passes = options.deferred_passes;
   settings.exposure = options.exposure;
   settings.view = options.view;
   settings.shadow_views = options.shadow_views;

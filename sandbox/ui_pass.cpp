@@ -67,7 +67,7 @@ UiPass::UiPass(vk::VulkanContext& context, rg::Format colour_format, uint32_t fr
                             {2, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(ImDrawVert, col)}};
   desc.color_formats = {vk::to_vk(colour_format)};
   desc.cull_mode = VK_CULL_MODE_NONE;
-  desc.alpha_blend = true;
+  desc.blend = vk::Blend::alpha;
   desc.layout = layout_.get();
   desc.name = "ui";
   pipeline_ = vk::create_graphics_pipeline(context, desc);

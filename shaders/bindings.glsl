@@ -23,7 +23,7 @@ const int scene_depth_binding = 12;
 const int tile_lights_binding = 13;
 const int tile_ranges_binding = 14;
 const int group_tiles_binding = 15;
-const int group_dispatch_binding = 16;
+const int group_commands_binding = 16;
 
 // GPU-driven shadow views (shadow_views.glsl): the casters' bounds, their meshes, the culled
 // (caster, view) pairs, their counts per draw, and the indirect commands built from them.

@@ -5,7 +5,8 @@
 // light that reaches it in light-index order, and, since the records are sorted by light group
 // (systems/shadows/frame_lights.h), finds each group's range in that list. Every tile with
 // lights of a group is appended to that group's tile list, whose length is the group's
-// indirect dispatch (tiled_lighting.comp).
+// indirect dispatch (tiled_lighting.comp) and the instance count of its indirect draw
+// (tiled_lighting.vert).
 #include "bindings.glsl"
 #include "light_groups.glsl"
 #include "light_record.glsl"
@@ -27,8 +28,10 @@ layout(std430, set = 0, binding = tile_lights_binding) writeonly buffer TileLigh
 layout(std430, set = 0, binding = tile_ranges_binding) writeonly buffer TileRanges { uvec2 tile_ranges[]; };
 // Per group, tile_count slots: the tiles that have lights of the group, in no particular order.
 layout(std430, set = 0, binding = group_tiles_binding) writeonly buffer GroupTiles { uint group_tiles[]; };
-// Per group: VkDispatchIndirectCommand (x counts the group's tiles; y = z = 1), 16-byte stride.
-layout(std430, set = 0, binding = group_dispatch_binding) buffer GroupDispatch { uvec4 group_dispatch[]; };
+// Per group a VkDispatchIndirectCommand (x counts the group's tiles; y = z = 1), then per group a
+// VkDrawIndirectCommand (y counts them; 6 vertices, first instance the group's first slot in
+// group_tiles), all at a 16-byte stride.
+layout(std430, set = 0, binding = group_commands_binding) buffer GroupCommands { uvec4 group_commands[]; };
 
 layout(push_constant) uniform Constants {
   mat4 inverse_view_projection;
@@ -136,7 +139,8 @@ void main() {
     uint count = group_end[local] - group_first[local];
     tile_ranges[tile * LIGHT_GROUP_COUNT + local] = uvec2(tile * MAX_LIGHTS_PER_TILE + group_first[local], count);
     if (count > 0u) {
-      uint k = atomicAdd(group_dispatch[local].x, 1u);
+      uint k = atomicAdd(group_commands[local].x, 1u);
+      atomicAdd(group_commands[LIGHT_GROUP_COUNT + local].y, 1u);
       group_tiles[local * frame.screen.w + k] = tile;
     }
   }

@@ -23,10 +23,14 @@ struct CullConstants {
   glm::uvec4 counts;  // lights
 };
 
-// Every group's dispatch starts at zero workgroups (the culling counts them) of height and depth 1.
-std::array<glm::uvec4, light_group_count> empty_dispatches() {
-  std::array<glm::uvec4, light_group_count> commands;
-  commands.fill(glm::uvec4(0u, 1u, 1u, 0u));
+// Every group's dispatch starts at zero workgroups (the culling counts them) of height and depth
+// 1, its draw at zero instances (counted too) of six vertices, from its slots in the tile lists.
+std::array<glm::uvec4, 2 * light_group_count> empty_commands(LightTileGrid grid) {
+  std::array<glm::uvec4, 2 * light_group_count> commands;
+  for (uint32_t group = 0; group < light_group_count; ++group) {
+    commands[group] = glm::uvec4(0u, 1u, 1u, 0u);
+    commands[light_group_count + group] = glm::uvec4(6u, 0u, 0u, group * grid.count());
+  }
   return commands;
 }
 
@@ -53,7 +57,11 @@ uint64_t LightTilesPass::ranges_bytes(LightTileGrid grid) {
 uint64_t LightTilesPass::tiles_bytes(LightTileGrid grid) {
   return uint64_t{grid.count()} * light_group_count * sizeof(uint32_t);
 }
-uint64_t LightTilesPass::dispatch_bytes() { return light_group_count * sizeof(glm::uvec4); }
+uint64_t LightTilesPass::commands_bytes() { return 2 * light_group_count * sizeof(glm::uvec4); }
+uint64_t LightTilesPass::dispatch_offset(uint32_t group) { return group * sizeof(glm::uvec4); }
+uint64_t LightTilesPass::draw_offset(uint32_t group) {
+  return (light_group_count + group) * sizeof(glm::uvec4);
+}
 
 LightTilesPass::LightTilesPass(vk::VulkanContext& context)
     : nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
@@ -63,7 +71,7 @@ LightTilesPass::LightTilesPass(vk::VulkanContext& context)
                {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
                {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
                {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-               {group_dispatch_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}},
+               {group_commands_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}},
               vk::push_constants<CullConstants>(compute)),
       pipeline_(vk::create_compute_pipeline(
           context, {light_tiles_comp, {threads_per_side(context)}, layout_.get(), "light tiles"})) {}
@@ -73,21 +81,21 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
                                   const LightTiles* outputs) const {
   const rg::ImageDesc& screen = graph.resources()[depth.index].image;
   const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
-  const rg::BufferHandle reset_dispatch = [&] {
-    rg::BufferHandle dispatch;
+  const rg::BufferHandle reset_commands = [&] {
+    rg::BufferHandle commands;
     graph.add_pass(
         "light tiles reset",
         [&](rg::PassBuilder& b) {
-          dispatch =
-              b.write(outputs ? outputs->dispatch : b.create_buffer("tile dispatch", {dispatch_bytes()}),
+          commands =
+              b.write(outputs ? outputs->commands : b.create_buffer("tile commands", {commands_bytes()}),
                       rg::Usage::transfer);
-          return dispatch;
+          return commands;
         },
-        [](rg::BufferHandle written, const vk::PassRecorder& rec) {
-          const auto commands = empty_dispatches();
+        [grid](rg::BufferHandle written, const vk::PassRecorder& rec) {
+          const auto commands = empty_commands(grid);
           vkCmdUpdateBuffer(rec.cmd(), rec.buffer(written), 0, sizeof(commands), commands.data());
         });
-    return dispatch;
+    return commands;
   }();
   LightTiles out;
   graph.add_pass(
@@ -100,7 +108,7 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
         out.lights = output(outputs ? &outputs->lights : nullptr, "tile lights", lights_bytes(grid));
         out.ranges = output(outputs ? &outputs->ranges : nullptr, "tile ranges", ranges_bytes(grid));
         out.tiles = output(outputs ? &outputs->tiles : nullptr, "group tiles", tiles_bytes(grid));
-        out.dispatch = b.write(reset_dispatch, rg::Usage::storage_compute);
+        out.commands = b.write(reset_commands, rg::Usage::storage_compute);
         return out;
       },
       [this, depth, grid, &lights, light_count, screen, inverse = glm::inverse(view_projection)](
@@ -111,7 +119,7 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
                                         .buffer(tile_lights_binding, rec.buffer(written.lights))
                                         .buffer(tile_ranges_binding, rec.buffer(written.ranges))
                                         .buffer(group_tiles_binding, rec.buffer(written.tiles))
-                                        .buffer(group_dispatch_binding, rec.buffer(written.dispatch))
+                                        .buffer(group_commands_binding, rec.buffer(written.commands))
                                         .update();
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
         layout_.bind_compute(rec.cmd(), set);

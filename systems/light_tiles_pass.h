@@ -1,7 +1,7 @@
 #pragma once
 // Light culling for tiled lighting (shaders/light_tiles.comp): per screen tile of
 // LIGHT_TILE_SIZE pixels, the lights that reach the tile's visible surfaces, grouped by light
-// group, and per group the tiles to shade with their indirect dispatch.
+// group, and per group the tiles to shade with their indirect dispatch and draw.
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -24,10 +24,12 @@ using uint = std::uint32_t;
 
 // The culling's outputs, laid out as shaders/light_tiles.comp documents.
 struct LightTiles {
-  rg::BufferHandle lights;    // per tile, MAX_LIGHTS_PER_TILE light indices
-  rg::BufferHandle ranges;    // per tile and group: first entry, count
-  rg::BufferHandle tiles;     // per group, the tiles that have its lights
-  rg::BufferHandle dispatch;  // per group, a VkDispatchIndirectCommand at a 16-byte stride
+  rg::BufferHandle lights;  // per tile, MAX_LIGHTS_PER_TILE light indices
+  rg::BufferHandle ranges;  // per tile and group: first entry, count
+  rg::BufferHandle tiles;   // per group, the tiles that have its lights
+  // Per group a VkDispatchIndirectCommand (a workgroup per tile), then per group a
+  // VkDrawIndirectCommand (a six-vertex instance per tile), all at a 16-byte stride.
+  rg::BufferHandle commands;
 };
 
 struct LightTileGrid {
@@ -45,7 +47,10 @@ class LightTilesPass {
   static uint64_t lights_bytes(LightTileGrid grid);
   static uint64_t ranges_bytes(LightTileGrid grid);
   static uint64_t tiles_bytes(LightTileGrid grid);
-  static uint64_t dispatch_bytes();
+  static uint64_t commands_bytes();
+  // Offsets in `commands` of `group`'s dispatch and draw.
+  static uint64_t dispatch_offset(uint32_t group);
+  static uint64_t draw_offset(uint32_t group);
 
   // Culls the first `light_count` records of `lights` (sorted by group) against the tiles of
   // `depth` (the scene's D32 depth, rendered with `view_projection`). Writes into `outputs`

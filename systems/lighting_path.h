@@ -26,6 +26,14 @@ constexpr LightingPath cpu_lighting_for(uint32_t lights, uint32_t groups) {
   return lights * groups <= 4 ? LightingPath::fused : LightingPath::deferred;
 }
 
+// How deferred lighting's per-pixel passes run (the lit sum's ambient start, then one pass per
+// light group): compute dispatches writing a storage image, or fragment passes (a full-screen
+// triangle, then one quad per tile with lights of the group) adding into the lit sum by
+// blending. On lavapipe a fragment pass costs about a third of a compute dispatch over the same
+// pixels; GPUs with little raster hardware are faster in compute (docs/PERFORMANCE.md).
+// automatic: fragment on CPU devices, compute otherwise.
+enum class DeferredPasses { automatic, compute, fragment };
+
 // What the lighting writes: the lit picture, or the shadow-only debug view (white diffuse surfaces
 // under white lights of the same intensities, shadows at full density, no ambient).
 enum class LightingView : uint32_t { lit = 0, shadows = 1 };

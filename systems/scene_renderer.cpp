@@ -64,7 +64,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
     case LightingPath::automatic:  // resolved above
     case LightingPath::deferred:
       deferred_.emplace(GBufferPass(context, frames_in_flight, textures_), LightTilesPass(context),
-                        TiledLightingPass(context));
+                        TiledLightingPass(context, settings.deferred_passes));
       break;
   }
   if (lighting_per_frame_)

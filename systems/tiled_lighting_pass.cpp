@@ -1,13 +1,18 @@
 #include "systems/tiled_lighting_pass.h"
 
 #include <string>
+#include <vector>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/fullscreen.vert.spv.h"
 #include "shaders/lighting_ambient.comp.spv.h"
+#include "shaders/lighting_ambient.frag.spv.h"
 #include "shaders/tiled_lighting.comp.spv.h"
+#include "shaders/tiled_lighting.frag.spv.h"
+#include "shaders/tiled_lighting.vert.spv.h"
 #include "systems/scene_gpu_types.h"
 #include "systems/shader_bindings.h"
 
@@ -15,7 +20,6 @@ namespace sg {
 namespace {
 
 using namespace bindings;
-constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
 
 struct AmbientConstants {
   glm::vec4 background_ambient;  // rgb: the background colour; w: the ambient term
@@ -39,29 +43,62 @@ std::string group_name(uint32_t group) {
   return "group " + std::to_string(group);
 }
 
+DeferredPasses resolve(DeferredPasses passes, const vk::VulkanContext& context) {
+  if (passes != DeferredPasses::automatic) return passes;
+  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? DeferredPasses::fragment
+                                                                        : DeferredPasses::compute;
+}
+
+VkShaderStageFlags stages_of(DeferredPasses passes) {
+  return passes == DeferredPasses::compute ? VK_SHADER_STAGE_COMPUTE_BIT
+                                           : VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+}
+
+// `bindings`, and in compute the lit sum as a storage image (fragment passes write it as their
+// colour attachment).
+std::vector<VkDescriptorSetLayoutBinding> with_lit_sum(std::vector<VkDescriptorSetLayoutBinding> bindings,
+                                                       DeferredPasses passes) {
+  if (passes == DeferredPasses::compute) {
+    bindings.push_back({hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT});
+  }
+  return bindings;
+}
+
 }  // namespace
 
-TiledLightingPass::TiledLightingPass(vk::VulkanContext& context)
+TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses passes)
     : context_(context),
+      passes_(resolve(passes, context)),
+      stages_(stages_of(passes_)),
       light_resources_(context),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
-      ambient_layout_(context.device(),
-                      {{gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-                       {scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-                       {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute}},
-                      vk::push_constants<AmbientConstants>(compute)),
-      ambient_pipeline_(vk::create_compute_pipeline(
-          context, {lighting_ambient_comp, {}, ambient_layout_.get(), "lighting ambient"})),
-      layout_(context.device(),
-              LightResources::bindings(
-                  compute, {{scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-                            {gbuffer_normal_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-                            {gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-                            {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute},
-                            {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-                            {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-                            {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}}),
-              vk::push_constants<LightingConstants>(compute)) {}
+      ambient_layout_(
+          context.device(),
+          with_lit_sum({{gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages_},
+                        {scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages_}},
+                       passes_),
+          vk::push_constants<AmbientConstants>(stages_)),
+      ambient_pipeline_(
+          in_compute() ? vk::create_compute_pipeline(
+                             context, {lighting_ambient_comp, {}, ambient_layout_.get(), "lighting ambient"})
+                       : vk::create_graphics_pipeline(context, {.vertex_spirv = fullscreen_vert,
+                                                                .fragment_spirv = lighting_ambient_frag,
+                                                                .color_formats = {vk::to_vk(lit_sum_format)},
+                                                                .cull_mode = VK_CULL_MODE_NONE,
+                                                                .layout = ambient_layout_.get(),
+                                                                .name = "lighting ambient"})),
+      layout_(
+          context.device(),
+          LightResources::bindings(
+              stages_,
+              with_lit_sum({{scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages_},
+                            {gbuffer_normal_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages_},
+                            {gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages_},
+                            {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages_},
+                            {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages_},
+                            {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages_}},
+                           passes_)),
+          vk::push_constants<LightingConstants>(stages_)) {}
 
 void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
                                 LightingView view) {
@@ -69,10 +106,19 @@ void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_
   auto& pipelines = pipelines_[static_cast<uint32_t>(view)];
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     if (group_begin[group + 1] == group_begin[group] || pipelines[group]) continue;
-    pipelines[group] = vk::create_compute_pipeline(context_, {tiled_lighting_comp,
-                                                              {group, static_cast<uint32_t>(view)},
-                                                              layout_.get(),
-                                                              "tiled lighting " + group_name(group)});
+    const std::vector<uint32_t> constants{group, static_cast<uint32_t>(view)};
+    const std::string name = "tiled lighting " + group_name(group);
+    pipelines[group] =
+        in_compute()
+            ? vk::create_compute_pipeline(context_, {tiled_lighting_comp, constants, layout_.get(), name})
+            : vk::create_graphics_pipeline(context_, {.vertex_spirv = tiled_lighting_vert,
+                                                      .fragment_spirv = tiled_lighting_frag,
+                                                      .fragment_specialization = constants,
+                                                      .color_formats = {vk::to_vk(lit_sum_format)},
+                                                      .cull_mode = VK_CULL_MODE_NONE,
+                                                      .blend = vk::Blend::add,
+                                                      .layout = layout_.get(),
+                                                      .name = name});
   }
 }
 
@@ -86,30 +132,42 @@ rg::ImageHandle TiledLightingPass::add_to(
   const LightingConstants constants{glm::inverse(view_projection),
                                     glm::vec4(camera_position, 0.0f),
                                     {screen.width, screen.height, grid.across, grid.count()}};
+  const bool compute = in_compute();
+  const rg::Usage sampled = compute ? rg::Usage::sampled_compute : rg::Usage::sampled_fragment;
+  const rg::Usage storage = compute ? rg::Usage::storage_compute : rg::Usage::storage_fragment;
+  // Fragment passes add to the lit sum by blending; every pixel of it is written by the first.
+  const rg::Usage lit_sum_usage = compute ? rg::Usage::storage_compute : rg::Usage::colour_attachment;
   rg::ImageHandle lit_sum;
   graph.add_pass(
       "lighting ambient",
       [&](rg::PassBuilder& b) {
-        b.read(gbuffer.albedo, rg::Usage::sampled_compute);
-        b.read(gbuffer.depth, rg::Usage::sampled_compute);
-        lit_sum = b.write(b.create_image("lit sum", {screen.width, screen.height, lit_sum_format}),
-                          rg::Usage::storage_compute);
+        b.read(gbuffer.albedo, sampled);
+        b.read(gbuffer.depth, sampled);
+        lit_sum =
+            b.write(b.create_image("lit sum", {screen.width, screen.height, lit_sum_format}), lit_sum_usage);
         return lit_sum;
       },
-      [this, albedo = gbuffer.albedo, depth = gbuffer.depth,
+      [this, compute, albedo = gbuffer.albedo, depth = gbuffer.depth,
        constants =
            AmbientConstants{glm::vec4(background_colour, ambient), {screen.width, screen.height, 0, 0}}](
           rg::ImageHandle lit_sum, const vk::PassRecorder& rec) {
-        const VkDescriptorSet set =
-            ambient_layout_.write(rec.allocate_set(ambient_layout_))
-                .image(gbuffer_albedo_binding, rec.view(albedo), nearest_.get())
-                .image(scene_depth_binding, rec.view(depth), nearest_.get())
-                .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL)
-                .update();
-        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, ambient_pipeline_.get());
-        ambient_layout_.bind_compute(rec.cmd(), set);
+        vk::DescriptorWriter writer = ambient_layout_.write(rec.allocate_set(ambient_layout_));
+        writer.image(gbuffer_albedo_binding, rec.view(albedo), nearest_.get())
+            .image(scene_depth_binding, rec.view(depth), nearest_.get());
+        if (compute) writer.image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
+        const VkDescriptorSet set = writer.update();
+        if (compute) {
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, ambient_pipeline_.get());
+          ambient_layout_.bind_compute(rec.cmd(), set);
+          ambient_layout_.push(rec.cmd(), constants);
+          vkCmdDispatch(rec.cmd(), (constants.screen.x + 15) / 16, (constants.screen.y + 15) / 16, 1);
+          return;
+        }
+        rec.set_full_viewport();
+        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, ambient_pipeline_.get());
+        ambient_layout_.bind(rec.cmd(), set);
         ambient_layout_.push(rec.cmd(), constants);
-        vkCmdDispatch(rec.cmd(), (constants.screen.x + 15) / 16, (constants.screen.y + 15) / 16, 1);
+        vkCmdDraw(rec.cmd(), 3, 1, 0, 0);
       });
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     if (group_begin[group + 1] == group_begin[group]) continue;  // no light of the group this frame
@@ -117,31 +175,41 @@ rg::ImageHandle TiledLightingPass::add_to(
         "lighting " + group_name(group),
         [&](rg::PassBuilder& b) {
           for (const rg::ImageHandle image : {atlas, gbuffer.depth, gbuffer.normal, gbuffer.albedo}) {
-            b.read(image, rg::Usage::sampled_compute);
+            b.read(image, sampled);
           }
-          b.read(tiles.lights, rg::Usage::storage_compute);
-          b.read(tiles.ranges, rg::Usage::storage_compute);
-          b.read(tiles.tiles, rg::Usage::storage_compute);
-          b.read(tiles.dispatch, rg::Usage::indirect);
-          lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
+          b.read(tiles.lights, storage);
+          b.read(tiles.ranges, storage);
+          b.read(tiles.tiles, compute ? storage : rg::Usage::storage_vertex);
+          b.read(tiles.commands, rg::Usage::indirect);
+          lit_sum = b.write(lit_sum, lit_sum_usage);
         },
-        [this, group, gbuffer, tiles, atlas, lit_sum, &lights, constants,
+        [this, compute, group, gbuffer, tiles, atlas, lit_sum, &lights, constants,
          pipeline = pipelines_[static_cast<uint32_t>(view_)][group].get()](const vk::PassRecorder& rec) {
           const VkSampler nearest = nearest_.get();
           vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
           writer.image(scene_depth_binding, rec.view(gbuffer.depth), nearest)
               .image(gbuffer_normal_binding, rec.view(gbuffer.normal), nearest)
               .image(gbuffer_albedo_binding, rec.view(gbuffer.albedo), nearest)
-              .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL)
               .buffer(tile_lights_binding, rec.buffer(tiles.lights))
               .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
               .buffer(group_tiles_binding, rec.buffer(tiles.tiles));
+          if (compute) writer.image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
           const VkDescriptorSet set =
               light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
-          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-          layout_.bind_compute(rec.cmd(), set);
+          if (compute) {
+            vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+            layout_.bind_compute(rec.cmd(), set);
+            layout_.push(rec.cmd(), constants);
+            vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.commands),
+                                  LightTilesPass::dispatch_offset(group));
+            return;
+          }
+          rec.set_full_viewport();
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+          layout_.bind(rec.cmd(), set);
           layout_.push(rec.cmd(), constants);
-          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.dispatch), group * sizeof(glm::uvec4));
+          vkCmdDrawIndirect(rec.cmd(), rec.buffer(tiles.commands), LightTilesPass::draw_offset(group), 1,
+                            sizeof(VkDrawIndirectCommand));
         });
   }
   return lit_sum;

@@ -1,9 +1,9 @@
 #pragma once
-// Tiled deferred lighting: a compute pass starting the lit sum from the ambient term and the
-// background (shaders/lighting_ambient.comp), then for each light group that has lights one
-// compute pass with that group's shadow code compiled in (shaders/tiled_lighting.comp), over the
-// tiles that have lights of the group (an indirect dispatch from LightTilesPass), adding them to
-// the lit sum.
+// Tiled deferred lighting: a pass starting the lit sum from the ambient term and the background
+// (shaders/lighting_ambient.glsl), then for each light group that has lights one pass with that
+// group's shadow code compiled in (shaders/tiled_lighting.glsl), over the tiles that have lights
+// of the group (an indirect dispatch or draw from LightTilesPass), adding them to the lit sum.
+// The passes are compute dispatches or fragment passes (DeferredPasses, lighting_path.h).
 #include <array>
 #include <cstdint>
 
@@ -27,7 +27,8 @@ namespace sg {
 
 class TiledLightingPass {
  public:
-  explicit TiledLightingPass(vk::VulkanContext& context);
+  // `passes` automatic is resolved for the context's device (passes() says how).
+  TiledLightingPass(vk::VulkanContext& context, DeferredPasses passes);
 
   // Compiles the pipelines of the groups that have lights (group_begin as in
   // shadows::FrameLights) and that it has not compiled yet: each holds one algorithm's shadow
@@ -47,8 +48,15 @@ class TiledLightingPass {
                          const glm::mat4& view_projection, const glm::vec3& camera_position,
                          float ambient) const;
 
+  // compute or fragment.
+  DeferredPasses passes() const { return passes_; }
+
  private:
+  bool in_compute() const { return passes_ == DeferredPasses::compute; }
+
   vk::VulkanContext& context_;
+  DeferredPasses passes_;
+  VkShaderStageFlags stages_;  // what reads the passes' resources
   LightResources light_resources_;
   vk::UniqueSampler nearest_;  // G-buffer reads
   vk::PipelineLayout ambient_layout_;

@@ -85,13 +85,21 @@ UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPi
   for (VkPipelineColorBlendAttachmentState& a : blend_attachments) {
     a.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
                        VK_COLOR_COMPONENT_A_BIT;
-    if (desc.alpha_blend) {
+    if (desc.blend == Blend::alpha) {
       a.blendEnable = VK_TRUE;
       a.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
       a.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
       a.colorBlendOp = VK_BLEND_OP_ADD;
       a.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
       a.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+      a.alphaBlendOp = VK_BLEND_OP_ADD;
+    } else if (desc.blend == Blend::add) {
+      a.blendEnable = VK_TRUE;
+      a.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
+      a.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+      a.colorBlendOp = VK_BLEND_OP_ADD;
+      a.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+      a.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
       a.alphaBlendOp = VK_BLEND_OP_ADD;
     }
   }

@@ -16,6 +16,13 @@ class VulkanContext;
 
 UniqueShaderModule create_shader_module(VulkanContext& context, std::span<const uint32_t> spirv);
 
+// How a fragment's colour meets the attachment's.
+enum class Blend {
+  none,   // replaces it
+  alpha,  // colour = src * src alpha + dst * (1 - src alpha), for overlays
+  add,    // colour = src + dst, for sums built pass by pass
+};
+
 struct GraphicsPipelineDesc {
   std::span<const uint32_t> vertex_spirv;
   std::span<const uint32_t> fragment_spirv;  // empty for depth-only pipelines
@@ -29,7 +36,7 @@ struct GraphicsPipelineDesc {
   bool depth_write = true;
   VkCullModeFlags cull_mode = VK_CULL_MODE_BACK_BIT;
   VkFrontFace front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  bool alpha_blend = false;  // colour = src * src alpha + dst * (1 - src alpha), for overlays
+  Blend blend = Blend::none;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   std::string name;
 };

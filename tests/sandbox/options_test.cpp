@@ -113,14 +113,19 @@ TEST(SandboxOptions, ShadowStorageAndAnimationOptions) {
 TEST(SandboxOptions, LightingOptions) {
   const Options defaults = parse_ok({});
   EXPECT_EQ(defaults.lighting, LightingPath::automatic);
+  EXPECT_EQ(defaults.deferred_passes, DeferredPasses::automatic);
   EXPECT_EQ(defaults.exposure, 1.0f);
   EXPECT_FALSE(defaults.naive);
   EXPECT_EQ(parse_ok({"--lighting", "forward"}).lighting, LightingPath::forward);
+  EXPECT_EQ(parse_ok({"--deferred-passes", "compute"}).deferred_passes, DeferredPasses::compute);
+  EXPECT_EQ(parse_ok({"--deferred-passes", "fragment"}).deferred_passes, DeferredPasses::fragment);
   EXPECT_EQ(parse_ok({"--lighting", "deferred", "--exposure", "0.5"}).exposure, 0.5f);
   EXPECT_TRUE(parse_ok({"--naive"}).naive);
   for (const std::vector<std::string>& bad : {std::vector<std::string>{"--lighting", "raytraced"},
                                               {"--exposure", "0"},
                                               {"--naive", "--lighting", "deferred"},
+                                              {"--deferred-passes", "vertex"},
+                                              {"--naive", "--deferred-passes", "compute"},
                                               {"--naive", "--cube-shadows", "layered"}}) {
     EXPECT_EQ(parse(bad).exit_code, 2) << bad[0] << " " << bad[1];
   }

@@ -78,6 +78,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
       TimeSummary{0.375, 0.25, 0.75},   TimeSummary{0.25, 0.125, 1.5}, TimeSummary{0.125, 0.0625, 0.5}};
   stats.wall_frame_ms = TimeSummary{16.5, 16.25, 33.0};
   stats.lighting = "deferred";
+  stats.deferred_passes = "fragment";
   stats.gpu_frame_ms = TimeSummary{0.5, 0.25, 0.875};
   stats.passes = {{"shadow_atlas", {0.125, 0.0625, 0.25}}, {"lighting", {0.375, 0.25, 0.5}}};
   stats.validation_errors = 4;
@@ -100,7 +101,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 13u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 14u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);
@@ -123,6 +124,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   expect_summary(phases.at("gather_lights"), *stats.cpu_phases_ms.lights);
   expect_summary(phases.at("prepare_upload"), *stats.cpu_phases_ms.upload);
   EXPECT_EQ(json.at("lighting"), "deferred");
+  EXPECT_EQ(json.at("deferred_passes"), "fragment");
   expect_summary(json.at("gpu_frame_ms"), *stats.gpu_frame_ms);
   const nlohmann::json& passes = json.at("passes");
   ASSERT_EQ(passes.size(), 2u);

@@ -146,8 +146,8 @@ TEST_F(LightTilesTest, ListsMatchABruteForceCpuAssignment) {
   const vk::Buffer tile_lights = readable(context, LightTilesPass::lights_bytes(grid), 0);
   const vk::Buffer tile_ranges = readable(context, LightTilesPass::ranges_bytes(grid), 0);
   const vk::Buffer group_tiles = readable(context, LightTilesPass::tiles_bytes(grid), 0);
-  const vk::Buffer dispatch =
-      readable(context, LightTilesPass::dispatch_bytes(), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+  const vk::Buffer group_commands =
+      readable(context, LightTilesPass::commands_bytes(), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
 
   rg::RenderGraph graph;
   const rg::ResourceState sampled{rg::PipelineStage::all_commands, rg::Access::shader_sampled_read,
@@ -165,7 +165,7 @@ TEST_F(LightTilesTest, ListsMatchABruteForceCpuAssignment) {
     return handle;
   };
   const LightTiles outputs{import("tile lights", tile_lights), import("tile ranges", tile_ranges),
-                           import("group tiles", group_tiles), import("dispatch", dispatch)};
+                           import("group tiles", group_tiles), import("commands", group_commands)};
   LightTilesPass pass(context);
   pass.add_to(graph, depth_handle, records, uint32_t(lights.records.size()), view_projection, &outputs);
   const rg::CompileResult compiled = rg::compile(graph);
@@ -180,7 +180,7 @@ TEST_F(LightTilesTest, ListsMatchABruteForceCpuAssignment) {
   const std::vector<uint32_t> entries = contents<uint32_t>(tile_lights);
   const std::vector<glm::uvec2> ranges = contents<glm::uvec2>(tile_ranges);
   const std::vector<uint32_t> tiles_of_group = contents<uint32_t>(group_tiles);
-  const std::vector<glm::uvec4> commands = contents<glm::uvec4>(dispatch);
+  const std::vector<glm::uvec4> commands = contents<glm::uvec4>(group_commands);
   const std::vector<TileLightSets> reference =
       reference_light_tiles(depth, width, height, view_projection, lights.records);
   ASSERT_EQ(reference.size(), grid.count());
@@ -239,13 +239,19 @@ TEST_F(LightTilesTest, ListsMatchABruteForceCpuAssignment) {
   // The scene is meant to exercise the culling: many listings, few lights on a tile's boundary.
   EXPECT_GT(listed, 200u);
   EXPECT_LT(undecided, listed / 50 + 1);
-  // Each group dispatches exactly the tiles that have its lights; the sky corner has none.
+  // Each group dispatches and draws exactly the tiles that have its lights (its draw from its own
+  // slots of the tile lists); the sky corner has none.
   for (uint32_t group = 0; group < groups; ++group) {
     uint32_t with_lights = 0;
     for (uint32_t tile = 0; tile < grid.count(); ++tile) with_lights += ranges[tile * groups + group].y > 0;
     EXPECT_EQ(commands[group].x, with_lights);
     EXPECT_EQ(commands[group].y, 1u);
     EXPECT_EQ(commands[group].z, 1u);
+    const glm::uvec4 draw = commands[groups + group];
+    EXPECT_EQ(draw.x, 6u);
+    EXPECT_EQ(draw.y, with_lights);
+    EXPECT_EQ(draw.z, 0u);
+    EXPECT_EQ(draw.w, group * grid.count());
   }
   EXPECT_EQ(ranges[0].y + ranges[1].y, 0u) << "the sky tile (0, 0) lists no lights";
 }

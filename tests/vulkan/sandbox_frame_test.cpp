@@ -168,6 +168,20 @@ TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
   EXPECT_LE(largest_difference(fused, forward), 2);
 }
 
+// Deferred lighting's passes as compute dispatches or as fragment passes blending into the lit sum:
+// the same shading code over the same tiles, so the same picture (to rounding of the 16-bit sum).
+TEST_F(SandboxFrameTest, DeferredLightingInFragmentPassesMatchesCompute) {
+  sandbox::Options options = lit_by(LightingPath::deferred);
+  options.deferred_passes = DeferredPasses::compute;
+  const vk::Rgba8Image compute = render(options, 2);
+  const std::vector<std::string> compute_passes = passes;
+  options.deferred_passes = DeferredPasses::fragment;
+  const vk::Rgba8Image fragment = render(options, 2);
+  EXPECT_EQ(passes, compute_passes);
+  EXPECT_LE(largest_difference(compute, fragment), 1) << "levels of 255 in the worst channel";
+  EXPECT_LT(share_differing(compute, fragment, 0), 0.01);
+}
+
 // automatic on a CPU device, each frame: the fused forward pass for a light or two (fewest
 // full-screen passes), deferred for more; the default scene has six lights of six groups.
 TEST_F(SandboxFrameTest, AutomaticLightingFusesAFewLightsOnACpuDevice) {

@@ -1,0 +1,61 @@
+// Tiled deferred lighting of one light group (light_groups.glsl), shared by its two shapes: a
+// compute dispatch of one workgroup per tile (tiled_lighting.comp, GPUs) and a raster pass of one
+// quad per tile, added to the lit sum by blending (tiled_lighting.vert/.frag, CPU drivers, where a
+// fragment pass costs about a third of a compute dispatch over the same pixels). The group is a
+// specialization constant, so a pipeline contains that group's shadow code and no other: a pixel
+// pays for the lights of its tile and for the algorithm each uses.
+#ifndef SG_TILED_LIGHTING_GLSL
+#define SG_TILED_LIGHTING_GLSL
+
+#include "bindings.glsl"
+#include "light_shading.glsl"
+#include "light_tiles.glsl"
+
+layout(constant_id = 0) const uint LIGHT_GROUP = 0u;
+
+layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
+layout(set = 0, binding = gbuffer_normal_binding) uniform sampler2D gbuffer_normal;
+layout(set = 0, binding = gbuffer_albedo_binding) uniform sampler2D gbuffer_albedo;
+layout(std430, set = 0, binding = tile_lights_binding) readonly buffer TileLights { uint tile_lights[]; };
+layout(std430, set = 0, binding = tile_ranges_binding) readonly buffer TileRanges { uvec2 tile_ranges[]; };
+
+layout(push_constant) uniform Constants {
+  mat4 inverse_view_projection;  // the camera's: positions from the depth buffer
+  vec4 camera_position;
+  uvec4 screen;  // x width, y height, z tiles across, w tiles in all
+} frame;
+
+// The G-buffer's surface at `pixel` and its world position; false for the background.
+bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {
+  float depth = texelFetch(scene_depth, pixel, 0).r;
+  if (depth >= 1.0) return false;
+  vec2 ndc = (vec2(pixel) + 0.5) / vec2(frame.screen.xy) * 2.0 - 1.0;
+  vec4 world = frame.inverse_view_projection * vec4(ndc, depth, 1.0);
+  position = world.xyz / world.w;
+  vec4 albedo = texelFetch(gbuffer_albedo, pixel, 0);
+  vec4 normal = texelFetch(gbuffer_normal, pixel, 0);
+  p.normal = normal.xyz;
+  p.to_viewer = normalize(frame.camera_position.xyz - position);
+  p.base_color = albedo.rgb;
+  p.specular = albedo.a;
+  p.shininess = normal.w;
+  p.pixel = uvec2(pixel);
+  return true;
+}
+
+// The light group's lights of `tile` at the surface point. The tile has at least one (or it
+// would not be drawn), and a do-while runs its body exactly that often on a CPU driver too.
+vec3 shade_tile_group(uint tile, SurfacePoint p, vec3 position) {
+  uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + LIGHT_GROUP];
+  uint kind = group_shadow_kind(LIGHT_GROUP);
+  uint algorithm = group_algorithm(LIGHT_GROUP);
+  vec3 color = vec3(0.0);
+  uint j = 0u;
+  do {
+    color += shade_light_as(light_at(tile_lights[range.x + j]), p, position, kind, algorithm);
+    ++j;
+  } while (j < range.y);
+  return color;
+}
+
+#endif
