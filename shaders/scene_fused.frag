@@ -1,9 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Forward lighting and tone mapping in one pass, for frames of a few lights: every light at
-// every pixel (no light lists), with only the shadow code of the light groups the frame has
-// (GROUPS_PRESENT, bit g for group g, a specialization constant), the picture written straight
-// into the frame. On a CPU driver every full-screen pass costs milliseconds, and this path has
+// every pixel (no light lists), each with its own group's shadow code, the shader holding only
+// the code of the light groups the frame has (GROUPS_PRESENT, bit g for group g, a
+// specialization constant), the picture written straight into the frame. On a CPU driver every full-screen pass costs milliseconds, and this path has
 // two: the depth prepass and this one (docs/PERFORMANCE.md).
 #include "light_shading.glsl"
 #include "material.glsl"
@@ -18,30 +18,40 @@ layout(location = 3) in vec2 in_uv;
 
 layout(location = 0) out vec4 out_color;
 
-// `light` of group `light_group_index`, shaded if that is `group`; called with literal groups so
-// that each call's shadow code is resolved at compile time, and absent groups compile to nothing.
-vec3 shade_if_in(uint group, uint light_group_index, Light light, SurfacePoint p) {
-  if ((GROUPS_PRESENT & (1u << group)) == 0u || light_group_index != group) return vec3(0.0);
-  return shade_light_as(light, p, in_world_position, group_shadow_kind(group), group_algorithm(group));
+// The lights of `group`, which are the records from `next` on: the records are sorted by group
+// (systems/shadows/frame_lights.h) and the groups are visited in order. Called with literal
+// groups, so each call's shadow code is resolved at compile time and absent groups compile to
+// nothing. A present group has at least one light, and a do-while runs its body exactly that
+// often on a CPU driver too (a for loop runs one more, masked, pass over the body), so a pixel
+// pays each light's own algorithm once, not every present group's code for every light.
+vec3 shade_group(uint group, inout uint next, SurfacePoint p) {
+  vec3 color = vec3(0.0);
+  if ((GROUPS_PRESENT & (1u << group)) == 0u) return color;
+  uint kind = group_shadow_kind(group);
+  uint algorithm = group_algorithm(group);
+  Light light = light_at(next);
+  do {
+    color += shade_light_as(light, p, in_world_position, kind, algorithm);
+    ++next;
+    light = light_at(min(next, frame.counts.x - 1u));
+  } while (next < frame.counts.x && light_group(light_shadow_kind(light), light.info.z) == group);
+  return color;
 }
 
 void main() {
   SurfacePoint p = instance_surface(in_instance, in_world_position, in_normal, in_uv);
   vec3 color = frame.camera_position.w * p.base_color;
-  for (uint i = 0u; i < frame.counts.x; ++i) {
-    Light light = light_at(i);
-    uint g = light_group(light_shadow_kind(light), light.info.z);
-    color += shade_if_in(0u, g, light, p);
-    color += shade_if_in(1u, g, light, p);
-    color += shade_if_in(2u, g, light, p);
-    color += shade_if_in(3u, g, light, p);
-    color += shade_if_in(4u, g, light, p);
-    color += shade_if_in(5u, g, light, p);
-    color += shade_if_in(6u, g, light, p);
-    color += shade_if_in(7u, g, light, p);
-    color += shade_if_in(8u, g, light, p);
-    color += shade_if_in(9u, g, light, p);
-    color += shade_if_in(10u, g, light, p);
-  }
+  uint next = 0u;
+  color += shade_group(0u, next, p);
+  color += shade_group(1u, next, p);
+  color += shade_group(2u, next, p);
+  color += shade_group(3u, next, p);
+  color += shade_group(4u, next, p);
+  color += shade_group(5u, next, p);
+  color += shade_group(6u, next, p);
+  color += shade_group(7u, next, p);
+  color += shade_group(8u, next, p);
+  color += shade_group(9u, next, p);
+  color += shade_group(10u, next, p);
   out_color = vec4(tone_map(color, uintBitsToFloat(frame.counts.z)), 1.0);  // the sRGB frame encodes
 }

@@ -17,13 +17,14 @@ namespace sg {
 //   (SceneRenderer::lighting says which).
 enum class LightingPath { automatic, forward, deferred, every_light, fused };
 
-// automatic's choice on a CPU device for a frame of `lights` lights in `groups` light groups:
-// fused while its cost, every light times the code of every group present at every pixel, stays
-// small; deferred, whose passes cost more but a pixel only its tile's lights, otherwise. On
-// lavapipe at 1280x720 (docs/PERFORMANCE.md): one light, fused 12.4 against deferred 27.3 ms a
-// frame; two lights of two groups 20.0 against 35.7 ms; six of six 1,300 against 202 ms.
-constexpr LightingPath cpu_lighting_for(uint32_t lights, uint32_t groups) {
-  return lights * groups <= 4 ? LightingPath::fused : LightingPath::deferred;
+// automatic's choice on a CPU device for a frame of `lights` lights: fused while its cost, every
+// light at every pixel, stays below deferred's, whose passes cost more but a pixel only its
+// tile's lights. On lavapipe at 1280x720, stress scene of 4.8k triangles with the sun, maps
+// cached: 3 lights fused 23.4 against deferred 41.9 ms a frame, 4 lights 42.5 against 50.1, 5
+// lights 70.6 against 53.9; the default scene (6 lights) about 250 against 200
+// (docs/PERFORMANCE.md).
+constexpr LightingPath cpu_lighting_for(uint32_t lights) {
+  return lights <= 4 ? LightingPath::fused : LightingPath::deferred;
 }
 
 // How deferred lighting's per-pixel passes run (the lit sum's ambient start, then one pass per

@@ -1,7 +1,6 @@
 #include "systems/scene_renderer.h"
 
 #include <algorithm>
-#include <bit>
 #include <chrono>
 #include <cstdio>
 #include <span>
@@ -118,8 +117,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     per_light_->prepare(slot, lights_, gpu_scene_, page_size, settings_.cube_shadows, settings_.cull_casters);
   }
   if (lighting_per_frame_) {
-    lighting_ = cpu_lighting_for(static_cast<uint32_t>(lights_.records.size()),
-                                 std::popcount(shadows::groups_present(lights_.group_begin)));
+    lighting_ = cpu_lighting_for(static_cast<uint32_t>(lights_.records.size()));
   }
   switch (lighting_) {
     case LightingPath::every_light:
