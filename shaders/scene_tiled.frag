@@ -20,14 +20,20 @@ layout(location = 3) in vec2 in_uv;
 
 layout(location = 0) out vec4 out_color;
 
+// The tile's lights of `group`. A CPU driver runs the loop body at least once, masked where
+// the tile has none of the group's lights, and a for loop once more than its count: a do-while
+// runs it max(count, 1) times. The masked pass reads a valid record (index clamped).
 vec3 shade_group(uint group, uint tile, SurfacePoint p) {
   vec3 color = vec3(0.0);
   if ((GROUPS_PRESENT & (1u << group)) == 0u) return color;
   uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + group];
-  for (uint j = 0u; j < range.y; ++j) {
-    color += shade_light_as(light_at(tile_lights[range.x + j]), p, in_world_position, group_shadow_kind(group),
-                            group_algorithm(group));
-  }
+  if (range.y == 0u) return color;
+  uint j = 0u;
+  do {
+    uint light = min(tile_lights[range.x + j], frame.counts.x - 1u);
+    color += shade_light_as(light_at(light), p, in_world_position, group_shadow_kind(group), group_algorithm(group));
+    ++j;
+  } while (j < range.y);
   return color;
 }
 
