@@ -3,9 +3,9 @@
 // lights: after a depth prepass (DepthPrepass), every drawable shaded once with every light of
 // the frame, no light lists, and the tone-mapped picture written into the frame. The pipeline is
 // specialized on the light groups the frame has, so it holds only their shadow code; one is
-// compiled per set of groups (and view), when first needed. A pixel pays for every light and
-// every group present, so this suits a handful of lights, on CPU devices where each full-screen
-// pass costs milliseconds (LightingPath::fused).
+// compiled per set of groups (and view), when first needed. A pixel pays for every light, each
+// with its own group's code, so this suits a handful of lights, on CPU devices where each
+// full-screen pass costs milliseconds (LightingPath::fused).
 #include <array>
 #include <cstdint>
 #include <unordered_map>

@@ -7,8 +7,8 @@ namespace sg {
 // How the frame is lit. Both tiled paths cull lights per 16x16 screen tile and shade a pixel
 // only with its tile's lights, each with its own algorithm:
 // - forward: depth prepass, light culling, one forward pass;
-// - deferred: G-buffer, light culling, a compute pass per light group (each holding one
-//   algorithm's code);
+// - deferred: G-buffer, light culling, a pass per light group (each holding one algorithm's
+//   code; DeferredPasses says whether compute or fragment);
 // - every_light: one forward pass with every light at every pixel (the --naive baseline);
 // - fused: depth prepass, then one forward pass with every light at every pixel, holding only
 //   the frame's light groups' code, that tone-maps into the frame: the fewest full-screen passes,
