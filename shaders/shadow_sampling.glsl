@@ -12,9 +12,10 @@
 // (each fetch is a 2x2 bilinear PCF) and VK_COMPARE_OP_LESS_OR_EQUAL (1 = lit). Every fetch has an
 // explicit level of detail, as lights are evaluated in non-uniform control flow.
 //
-// Kernels: pcf a 3x3 grid (the source's), noise 16 Gaussian offsets, pcss 16 blocker-search and
-// 32 filter samples of a Poisson disk on 2D maps and the 20 directions of section 4 on cube maps;
-// pcss_noise the same kernels rotated randomly per surface point. Every kernel loop is marked
+// Kernels: pcf a 3x3 grid (the source's), noise 16 Gaussian offsets (a stratified pattern turned
+// randomly per pixel), pcss 16 blocker-search and 32 filter samples of a Poisson disk on 2D maps
+// and the 20 directions of section 4 on cube maps; pcss_noise the same kernels rotated randomly
+// per surface point. Every kernel loop is marked
 // [[unroll]]: left to itself the compiler kept the 32-tap pcss filter a loop, whose Poisson disk
 // lookups with the loop counter llvmpipe does through memory, lane by lane (a fifth of the 2D
 // pcss_noise pass); unrolled, the table entries are constants.
@@ -43,6 +44,27 @@ const vec2 POISSON_DISK[32] = vec2[](
     vec2(-0.4298, 0.7374), vec2(-0.3782, -0.9227), vec2(0.8772, 0.4355), vec2(-0.9085, -0.3986),
     vec2(0.0279, 0.2665), vec2(-0.3129, 0.0729), vec2(-0.2628, -0.3027), vec2(0.3059, -0.1001),
     vec2(-0.9655, 0.2401), vec2(-0.5435, 0.4605), vec2(0.7017, 0.2276), vec2(0.3719, 0.4599));
+
+// NOISE_SAMPLES points of a 2D standard normal distribution, stratified: the k-th at the radius
+// where the Rayleigh distribution's CDF is (k + 0.5) / 16, sqrt(-2 ln(1 - (k + 0.5) / 16)), and
+// k golden angles around (mean squared radius 1.96 against the distribution's 2).
+const vec2 GAUSSIAN_DISK[16] = vec2[](
+    vec2(0.2520, 0.0000), vec2(-0.3272, 0.2997), vec2(0.0510, -0.5807), vec2(0.4275, 0.5576),
+    vec2(-0.8003, -0.1416), vec2(0.7744, -0.4926), vec2(-0.2651, 0.9861), vec2(-0.5184, -0.9982),
+    vec2(1.1563, 0.4223), vec2(-1.2407, 0.5121), vec2(0.6194, -1.3236), vec2(0.4767, 1.5198),
+    vec2(-1.5085, -0.8742), vec2(1.8819, -0.4137), vec2(-1.2514, 1.7800), vec2(-0.3383, -2.6109));
+
+// NOISE_SAMPLES points of a 3D standard normal distribution, stratified likewise: the k-th at the
+// radius where the chi distribution's CDF (3 degrees of freedom) is (k + 0.5) / 16, in the
+// direction of point 7k mod 16 of a 16-point Fibonacci sphere (mean squared radius 2.95 against
+// the distribution's 3).
+const vec3 GAUSSIAN_BALL[16] = vec3[](
+    vec3(0.1748, 0.0000, 0.4708), vec3(-0.3432, -0.6609, 0.0466), vec3(-0.3043, 0.4329, -0.7375),
+    vec3(0.8340, -0.5305, 0.3252), vec3(-0.8293, -0.4806, -0.6521), vec3(0.6391, 0.8336, 0.7146),
+    vec3(0.5547, -1.1855, -0.4306), vec3(-0.6381, 0.5845, 1.2061), vec3(1.4930, 0.5453, -0.0995),
+    vec3(-0.0762, -0.5884, -1.5983), vec3(-0.4652, 1.7305, 0.3421), vec3(1.3867, -0.3049, -1.3442),
+    vec3(-1.8634, -0.3296, 0.9207), vec3(0.6150, 1.9607, -0.9998), vec3(0.1606, -1.8299, 1.7391),
+    vec3(-2.7022, 1.1154, -0.5580));
 
 // Section 4's offsets around fragToLight for cube maps.
 const uint CUBE_OFFSET_COUNT = 20u;
@@ -208,13 +230,16 @@ float shadow_2d_pcf(Light light, MapPoint point, float bias) {
   return sum / taps;
 }
 
-// 4.3: like pcf with Gaussian offsets (r1, r2) * sigma, sigma = pcfRadius texels.
+// 4.3: like pcf with Gaussian offsets (r1, r2) * sigma, sigma = pcfRadius texels: the
+// standard normal pattern GAUSSIAN_DISK turned by a random angle per pixel (section 4.3 allows a
+// pattern rotated per pixel). Drawing each offset with Box-Muller cost a logarithm, a square
+// root, a sine and a cosine per tap.
 float shadow_2d_noise(Light light, MapPoint point, float bias, uvec2 pixel) {
   float sigma_uv = light.shadow_bias.z * light.shadow_depth.z;
+  mat2 rotation = random_rotation_2d(pixel) * sigma_uv;
   float sum = 0.0;
   [[unroll]] for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
-    vec2 offset = gaussian_pair(pixel_random(pixel, i).xy) * sigma_uv;
-    sum += compare_plane(light, point, offset, bias);
+    sum += compare_plane(light, point, rotation * GAUSSIAN_DISK[i], bias);
   }
   return sum / float(NOISE_SAMPLES);
 }
@@ -382,12 +407,11 @@ float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint alg
     return sum / float(CUBE_OFFSET_COUNT);
   }
   if (algorithm == SHADOW_NOISE) {
+    // GAUSSIAN_BALL turned by a random rotation per pixel, as shadow_2d_noise does in 2D.
+    vec4 rotation = random_rotation_3d(pixel);
     float sum = 0.0;
     [[unroll]] for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
-      vec3 u = pixel_random(pixel, 2u * i);
-      vec3 w = pixel_random(pixel, 2u * i + 1u);
-      vec3 gaussian = vec3(gaussian_pair(u.xy), gaussian_pair(vec2(u.z, w.x)).x);
-      sum += cube_sample(light, r, gaussian * radius);
+      sum += cube_sample(light, r, rotate(rotation, GAUSSIAN_BALL[i]) * radius);
     }
     return sum / float(NOISE_SAMPLES);
   }
