@@ -48,6 +48,10 @@ class ComponentPool final : public SparseSet {
       return;
     }
     const std::vector<bool> doomed = erase_many(entities, now);
+    if (size() == 0) {
+      components_.clear();
+      return;
+    }
     std::size_t kept = 0;
     for (std::size_t slot = 0; slot < components_.size(); ++slot) {
       if (!doomed[slot]) components_[kept++] = std::move(components_[slot]);

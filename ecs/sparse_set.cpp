@@ -102,12 +102,20 @@ void SparseSet::insert_many(std::span<const Entity> entities, Tick now) {
 std::vector<bool> SparseSet::erase_many(std::span<const Entity> entities, Tick now) {
   std::vector<bool> doomed(dense_.size(), false);
   removals_.reserve(removals_.size() + entities.size());
+  std::size_t doomed_count = 0;
   for (const Entity entity : entities) {
     const std::uint32_t slot = slot_of(entity);
     if (slot == npos || doomed[slot]) continue;
     doomed[slot] = true;
     sparse_[entity.index] = npos;
     removals_.push_back(Removal{entity, now});
+    ++doomed_count;
+  }
+  if (doomed_count == dense_.size()) {  // all of them, as when a scene is unloaded: nothing to keep
+    dense_.clear();
+    ticks_.clear();
+    ++layout_version_;
+    return doomed;
   }
   std::size_t kept = 0;
   for (std::size_t slot = 0; slot < dense_.size(); ++slot) {
