@@ -38,7 +38,8 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
   const SandboxFrame::PhaseTimes& phases = frame.phase_ms();
   stats.cpu_phases_ms = {summarize(phases.update),  summarize(phases.gather),   summarize(phases.prepare),
                          summarize(phases.declare), summarize(phases.execute),  summarize(phases.instances),
-                         summarize(phases.lights),  summarize(phases.schedule), summarize(phases.upload)};
+                         summarize(phases.lights),  summarize(phases.schedule), summarize(phases.upload),
+                         summarize(phases.views)};
   stats.wall_frame_ms = summarize(record.wall_frame_ms);
   stats.lighting = lighting_path_name(frame.renderer().lighting());
   if (const std::optional<DeferredPasses> passes = frame.renderer().deferred_passes()) {
@@ -77,9 +78,9 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
   if (const RunStats::CpuPhases& p = stats.cpu_phases_ms; p.update) {
     std::printf(
         "shadowgraph: CPU frame by phase (medians): update %.2f, gather %.2f (instances %.2f, lights %.2f), "
-        "prepare %.2f (schedule %.2f, upload %.2f), declare %.2f, execute %.2f ms\n",
+        "prepare %.2f (schedule %.2f, upload %.2f, views %.2f), declare %.2f, execute %.2f ms\n",
         p.update->median, p.gather->median, p.instances->median, p.lights->median, p.prepare->median,
-        p.schedule->median, p.upload->median, p.declare->median, p.execute->median);
+        p.schedule->median, p.upload->median, p.views->median, p.declare->median, p.execute->median);
   }
   if (stats.wall_frame_ms) {
     std::printf("shadowgraph: wall time per frame median %.2f ms (min %.2f, max %.2f), %s lighting\n",

@@ -18,7 +18,8 @@
 //   "cpu_phases_ms": {"update": {...}, "gather": {...}, "prepare": {...}, "declare": {...},
 //                     "execute": {...},          // the CPU frame by phase (SandboxFrame::record)
 //                     "gather_instances": {...}, "gather_lights": {...},  // within gather
-//                     "prepare_schedule": {...}, "prepare_upload": {...}},  // within prepare
+//                     "prepare_schedule": {...}, "prepare_upload": {...},  // within prepare
+//                     "prepare_views": {...}},
 //   "wall_frame_ms": {...},                      // elapsed time per frame, waits included:
 //                                                // present to present in a window, frame start
 //                                                // to frame start headless; null under 2 frames
@@ -78,7 +79,7 @@ struct RunStats {
   struct CpuPhases {
     std::optional<TimeSummary> update, gather, prepare, declare, execute;
     // Within gather and prepare (SceneRenderer::CpuSteps).
-    std::optional<TimeSummary> instances, lights, schedule, upload;
+    std::optional<TimeSummary> instances, lights, schedule, upload, views;
   } cpu_phases_ms;
   std::optional<TimeSummary> wall_frame_ms;
   std::string lighting;

@@ -137,6 +137,7 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
   phase_ms_.lights.push_back(steps.lights);
   phase_ms_.schedule.push_back(steps.schedule);
   phase_ms_.upload.push_back(steps.upload);
+  phase_ms_.views.push_back(steps.views);
   const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
   shadow_views_rendered_.push_back(shadows.views_rendered);
   shadow_views_cached_.push_back(shadows.views_cached);

@@ -89,7 +89,7 @@ class SandboxFrame {
   // within gather and prepare (SceneRenderer::CpuSteps).
   struct PhaseTimes {
     std::vector<double> update, gather, prepare, declare, execute;
-    std::vector<double> instances, lights, schedule, upload;
+    std::vector<double> instances, lights, schedule, upload, views;
   };
   const PhaseTimes& phase_ms() const { return phase_ms_; }
   // Per recorded frame: shadow views (2D maps, cube faces) drawn, and kept from earlier frames.

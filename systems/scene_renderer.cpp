@@ -111,6 +111,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
                              std::to_string(max_light_records_) + " light records");
   }
   const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
+  cpu_steps_.upload = lap(mark);
   const uint32_t page_size = atlas_.shape().page_size;
   if (batch_) batch_->prepare(slot, lights_, gpu_scene_, page_size, &workers_);
   if (per_light_) {
@@ -131,7 +132,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
       deferred_->lighting.prepare(lights_.group_begin, settings_.view);
       break;
   }
-  cpu_steps_.upload = lap(mark);
+  cpu_steps_.views = lap(mark);
 }
 
 shadows::CasterUpdate SceneRenderer::caster_update() {

@@ -128,7 +128,8 @@ class SceneRenderer {
     double instances = 0.0;  // gather: drawables (GpuScene::gather)
     double lights = 0.0;     // gather: light records and shadow views (gather_lights)
     double schedule = 0.0;   // prepare: caster boxes, tiles, caching, sorting by light group
-    double upload = 0.0;     // prepare: buffers, batches and descriptor sets of the slot
+    double upload = 0.0;     // prepare: instance and light buffers of the slot
+    double views = 0.0;      // prepare: the shadow views' records, casters and batches; lighting pipelines
   };
   const CpuSteps& cpu_steps() const { return cpu_steps_; }
 

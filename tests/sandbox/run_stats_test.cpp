@@ -72,10 +72,11 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.scene.cylinder_lights = 2;
   stats.scene.shadow_casting_lights = 60;
   stats.cpu_frame_ms = TimeSummary{1.5, 1.25, 3.75};
-  stats.cpu_phases_ms = {
-      TimeSummary{0.25, 0.125, 0.5},    TimeSummary{0.5, 0.25, 1.0},   TimeSummary{0.375, 0.25, 2.0},
-      TimeSummary{0.125, 0.0625, 0.25}, TimeSummary{0.25, 0.125, 0.5}, TimeSummary{0.125, 0.0625, 0.25},
-      TimeSummary{0.375, 0.25, 0.75},   TimeSummary{0.25, 0.125, 1.5}, TimeSummary{0.125, 0.0625, 0.5}};
+  stats.cpu_phases_ms = {TimeSummary{0.25, 0.125, 0.5},   TimeSummary{0.5, 0.25, 1.0},
+                         TimeSummary{0.375, 0.25, 2.0},   TimeSummary{0.125, 0.0625, 0.25},
+                         TimeSummary{0.25, 0.125, 0.5},   TimeSummary{0.125, 0.0625, 0.25},
+                         TimeSummary{0.375, 0.25, 0.75},  TimeSummary{0.25, 0.125, 1.5},
+                         TimeSummary{0.125, 0.0625, 0.5}, TimeSummary{0.0625, 0.03125, 0.125}};
   stats.wall_frame_ms = TimeSummary{16.5, 16.25, 33.0};
   stats.lighting = "deferred";
   stats.deferred_passes = "fragment";
@@ -117,12 +118,13 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   expect_summary(json.at("cpu_frame_ms"), *stats.cpu_frame_ms);
   expect_summary(json.at("wall_frame_ms"), *stats.wall_frame_ms);
   const nlohmann::json& phases = json.at("cpu_phases_ms");
-  EXPECT_EQ(phases.size(), 9u);
+  EXPECT_EQ(phases.size(), 10u);
   expect_summary(phases.at("update"), *stats.cpu_phases_ms.update);
   expect_summary(phases.at("prepare"), *stats.cpu_phases_ms.prepare);
   expect_summary(phases.at("execute"), *stats.cpu_phases_ms.execute);
   expect_summary(phases.at("gather_lights"), *stats.cpu_phases_ms.lights);
   expect_summary(phases.at("prepare_upload"), *stats.cpu_phases_ms.upload);
+  expect_summary(phases.at("prepare_views"), *stats.cpu_phases_ms.views);
   EXPECT_EQ(json.at("lighting"), "deferred");
   EXPECT_EQ(json.at("deferred_passes"), "fragment");
   expect_summary(json.at("gpu_frame_ms"), *stats.gpu_frame_ms);
