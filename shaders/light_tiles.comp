@@ -1,43 +1,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Light culling: one workgroup per screen tile of LIGHT_TILE_SIZE pixels. It bounds the tile's
-// visible surfaces (nearest to farthest depth, background excluded) by a sphere, lists every
-// light that reaches it in light-index order, and, since the records are sorted by light group
-// (systems/shadows/frame_lights.h), finds each group's range in that list. Every tile with
-// lights of a group is appended to that group's tile list, whose length is the group's
-// indirect dispatch (tiled_lighting.comp) and the instance count of its indirect draw
-// (tiled_lighting.vert).
-#include "bindings.glsl"
-#include "light_groups.glsl"
-#include "light_record.glsl"
+// Light culling on GPUs (light_tiles_interface.glsl says what it writes): one workgroup per
+// screen tile, its threads reading the tile's depths and testing the lights side by side.
+#include "light_tiles_interface.glsl"
 #include "light_tiles.glsl"
 
-// SIDE x SIDE threads, each reading a block of the tile's depth, chosen per device
-// (systems/light_tiles_pass.cpp): a GPU wants threads to test many lights at once; a CPU driver
-// (one coroutine per SIMD batch, switched at every barrier) wants few threads. At least 4, so
-// that every light group has a thread.
+// SIDE x SIDE threads, each reading a block of the tile's depth: a GPU wants threads to test many
+// lights at once. At least 4, so that every light group has a thread.
 layout(constant_id = 0) const uint SIDE = 8u;
 layout(local_size_x_id = 0, local_size_y_id = 0) in;
 const uint THREADS = SIDE * SIDE;
 const uint BLOCK = LIGHT_TILE_SIZE / SIDE;  // pixels per thread side
-
-layout(std430, set = 0, binding = lights_binding) readonly buffer Lights { Light lights[]; };
-layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
-layout(std430, set = 0, binding = tile_lights_binding) writeonly buffer TileLights { uint tile_lights[]; };
-// Per tile and group: x the first entry in tile_lights, y how many.
-layout(std430, set = 0, binding = tile_ranges_binding) writeonly buffer TileRanges { uvec2 tile_ranges[]; };
-// Per group, tile_count slots: the tiles that have lights of the group, in no particular order.
-layout(std430, set = 0, binding = group_tiles_binding) writeonly buffer GroupTiles { uint group_tiles[]; };
-// Per group a VkDispatchIndirectCommand (x counts the group's tiles; y = z = 1), then per group a
-// VkDrawIndirectCommand (y counts them; 6 vertices, first instance the group's first slot in
-// group_tiles), all at a 16-byte stride.
-layout(std430, set = 0, binding = group_commands_binding) buffer GroupCommands { uvec4 group_commands[]; };
-
-layout(push_constant) uniform Constants {
-  mat4 inverse_view_projection;
-  uvec4 screen;  // x width, y height, z tiles across, w tiles in all
-  uvec4 counts;  // x lights
-} frame;
 
 shared float thread_nearest[THREADS];
 shared float thread_farthest[THREADS];
@@ -48,13 +21,6 @@ shared uint total;
 shared uint entries[MAX_LIGHTS_PER_TILE];
 shared uint group_first[LIGHT_GROUP_COUNT];
 shared uint group_end[LIGHT_GROUP_COUNT];
-
-uint group_of(uint light) {
-  Light l = lights[light];
-  uint kind = l.info.w == NO_SHADOW_MAP ? SHADOW_KIND_NONE
-                                        : (l.info.x == LIGHT_POINT ? SHADOW_KIND_CUBE : SHADOW_KIND_MAP);
-  return light_group(kind, l.info.z);
-}
 
 void main() {
   uint local = gl_LocalInvocationIndex;

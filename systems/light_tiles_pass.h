@@ -39,9 +39,16 @@ struct LightTileGrid {
   static LightTileGrid of(uint32_t width, uint32_t height);
 };
 
+// How the culling runs: a workgroup per tile, its threads side by side (shaders/light_tiles.comp,
+// GPUs), or an invocation per tile with no barriers (shaders/light_tiles_serial.comp, CPU drivers,
+// which switch between SIMD batches at every barrier). Both write the same lists; automatic picks
+// by device type.
+enum class LightCullingShape { automatic, workgroup_per_tile, thread_per_tile };
+
 class LightTilesPass {
  public:
-  LightTilesPass(vk::VulkanContext& context);
+  explicit LightTilesPass(vk::VulkanContext& context, LightCullingShape shape = LightCullingShape::automatic);
+  LightCullingShape shape() const { return shape_; }
 
   // Bytes of each output for `grid`, for callers that provide their own buffers.
   static uint64_t lights_bytes(LightTileGrid grid);
@@ -61,6 +68,7 @@ class LightTilesPass {
                     const LightTiles* outputs = nullptr) const;
 
  private:
+  LightCullingShape shape_;
   vk::UniqueSampler nearest_;
   vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;

@@ -121,9 +121,21 @@ bool lights_point(const shadows::GpuLight& light, const glm::vec3& point) {
   return false;
 }
 
-class LightTilesTest : public GpuTest {};
+class LightTilesTest : public GpuTest {
+ protected:
+  void expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape);
+};
 
+// Both shapes of the culling, whatever the device would pick.
 TEST_F(LightTilesTest, ListsMatchABruteForceCpuAssignment) {
+  expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::workgroup_per_tile);
+}
+
+TEST_F(LightTilesTest, ListsOfAnInvocationPerTileMatchABruteForceCpuAssignment) {
+  expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::thread_per_tile);
+}
+
+void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape) {
   const shadows::FrameLights lights = scattered_lights();
   const glm::mat4 view_projection =
       projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
@@ -166,7 +178,8 @@ TEST_F(LightTilesTest, ListsMatchABruteForceCpuAssignment) {
   };
   const LightTiles outputs{import("tile lights", tile_lights), import("tile ranges", tile_ranges),
                            import("group tiles", group_tiles), import("commands", group_commands)};
-  LightTilesPass pass(context);
+  LightTilesPass pass(context, shape);
+  ASSERT_EQ(pass.shape(), shape);
   pass.add_to(graph, depth_handle, records, uint32_t(lights.records.size()), view_projection, &outputs);
   const rg::CompileResult compiled = rg::compile(graph);
   ASSERT_TRUE(compiled.ok()) << compiled.errors.front().message;

@@ -1,0 +1,61 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Light culling on CPU drivers (light_tiles_interface.glsl says what it writes): one invocation
+// per tile, eight tiles a workgroup, no shared memory and no barriers. A CPU driver runs a
+// workgroup's invocations as the lanes of SIMD batches and switches between batches at every
+// barrier, which was most of light_tiles.comp's cost there; here each lane walks its own tile's
+// depths and then the lights in order, which also gives the list its order for free.
+#include "light_tiles_interface.glsl"
+#include "light_tiles.glsl"
+
+layout(local_size_x = 8) in;
+
+void main() {
+  uint tile = gl_GlobalInvocationID.x;
+  if (tile >= frame.screen.w) return;
+  uvec2 tile_xy = uvec2(tile % frame.screen.z, tile / frame.screen.z);
+  ivec2 origin = ivec2(tile_xy * LIGHT_TILE_SIZE);
+  ivec2 end = min(origin + int(LIGHT_TILE_SIZE), ivec2(frame.screen.xy));
+  float nearest = 1.0;
+  float farthest = 0.0;
+  for (int y = origin.y; y < end.y; ++y) {
+    for (int x = origin.x; x < end.x; ++x) {
+      float depth = texelFetch(scene_depth, ivec2(x, y), 0).r;
+      if (depth < 1.0) {  // background does not bound the tile
+        nearest = min(nearest, depth);
+        farthest = max(farthest, depth);
+      }
+    }
+  }
+
+  uint group_first[LIGHT_GROUP_COUNT];
+  uint group_count[LIGHT_GROUP_COUNT];
+  for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) {
+    group_first[g] = 0u;
+    group_count[g] = 0u;
+  }
+  uint first = tile * MAX_LIGHTS_PER_TILE;
+  uint count = 0u;
+  if (farthest > 0.0) {
+    vec2 texel = 2.0 / vec2(frame.screen.xy);
+    vec2 ndc_min = vec2(origin) * texel - 1.0;
+    vec2 ndc_max = min(vec2(origin + int(LIGHT_TILE_SIZE)) * texel - 1.0, vec2(1.0));
+    vec4 sphere = tile_bounding_sphere(frame.inverse_view_projection, ndc_min, ndc_max, nearest, farthest);
+    for (uint i = 0u; i < frame.counts.x && count < MAX_LIGHTS_PER_TILE; ++i) {
+      if (!light_reaches_sphere(lights[i], sphere)) continue;
+      tile_lights[first + count] = i;
+      uint group = group_of(i);
+      if (group_count[group] == 0u) group_first[group] = count;
+      ++group_count[group];
+      ++count;
+    }
+  }
+  for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) {
+    tile_ranges[tile * LIGHT_GROUP_COUNT + g] = uvec2(first + group_first[g], group_count[g]);
+    if (group_count[g] > 0u) {
+      uint k = atomicAdd(group_commands[g].x, 1u);
+      atomicAdd(group_commands[LIGHT_GROUP_COUNT + g].y, 1u);
+      group_tiles[g * frame.screen.w + k] = tile;
+    }
+  }
+}
