@@ -1,21 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// The G-buffer of tiled deferred lighting: what lighting_ambient.comp, light_tiles.comp and
-// tiled_lighting.comp need of each visible surface point.
-#include "material.glsl"
+// The G-buffer (gbuffer.glsl); the lit sum starts in a pass of its own (lighting_ambient.glsl).
+#include "gbuffer.glsl"
 
-layout(location = 0) in vec3 in_world_position;
-layout(location = 1) in vec3 in_normal;
-layout(location = 2) flat in uint in_instance;
-layout(location = 3) in vec2 in_uv;
-
-// Positions come back from the depth buffer: every byte a pixel writes here costs raster
-// hardware time on GPUs that have little of it (docs/PERFORMANCE.md).
-layout(location = 0) out vec4 out_normal;  // xyz: unit normal; w: Blinn shininess s
-layout(location = 1) out vec4 out_albedo;  // rgb: base colour; a: specular strength kS
-
-void main() {
-  SurfacePoint p = instance_surface(in_instance, in_world_position, in_normal, in_uv);
-  out_normal = vec4(p.normal, p.shininess);
-  out_albedo = vec4(p.base_color, p.specular);
-}
+void main() { write_gbuffer(); }

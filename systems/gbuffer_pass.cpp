@@ -5,9 +5,11 @@
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/gbuffer.frag.spv.h"
+#include "shaders/gbuffer_lit_sum.frag.spv.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
 #include "systems/shader_bindings.h"
+#include "systems/tiled_lighting_pass.h"
 
 namespace sg {
 namespace {
@@ -19,8 +21,10 @@ constexpr rg::Format albedo_format = rg::Format::rgba8_unorm;
 
 }  // namespace
 
-GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures)
-    : layout_(context.device(),
+GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures,
+                         bool writes_lit_sum)
+    : writes_lit_sum_(writes_lit_sum),
+      layout_(context.device(),
               {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
                {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                 VK_SHADER_STAGE_FRAGMENT_BIT}},
@@ -29,9 +33,12 @@ GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
   for (const VkDescriptorSet set : slot_sets_.sets) {
     layout_.write(set).image(material_textures_binding, textures.array().view(), textures.sampler()).update();
   }
+  std::vector<VkFormat> formats{vk::to_vk(normal_format), vk::to_vk(albedo_format)};
+  if (writes_lit_sum) formats.push_back(vk::to_vk(TiledLightingPass::lit_sum_format));
   pipeline_ = vk::create_graphics_pipeline(
-      context, camera_pipeline_desc(gbuffer_frag, {vk::to_vk(normal_format), vk::to_vk(albedo_format)},
-                                    layout_.get(), "g-buffer"));
+      context, camera_pipeline_desc(writes_lit_sum ? std::span<const uint32_t>(gbuffer_lit_sum_frag)
+                                                   : std::span<const uint32_t>(gbuffer_frag),
+                                    std::move(formats), layout_.get(), "g-buffer"));
 }
 
 void GBufferPass::prepare(uint32_t slot, const GpuScene& scene) {
@@ -50,6 +57,11 @@ GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t hei
         };
         g.normal = target("g-buffer normal", normal_format, nothing);
         g.albedo = target("g-buffer albedo", albedo_format, nothing);
+        if (writes_lit_sum_) {
+          g.lit_sum = target(
+              "lit sum", TiledLightingPass::lit_sum_format,
+              rg::ClearValue::colour_of(background_colour.r, background_colour.g, background_colour.b, 1.0f));
+        }
         g.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
                           rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
       },

@@ -1,7 +1,8 @@
 #pragma once
-// The G-buffer of tiled deferred lighting (shaders/gbuffer.frag): every drawable of the GpuScene
-// rasterized once into what the lighting needs per pixel. All targets are transients of the
-// frame's size.
+// The G-buffer of tiled deferred lighting (shaders/gbuffer.glsl): every drawable of the GpuScene
+// rasterized once into what the lighting needs per pixel, and optionally the start of the lit
+// sum too (shaders/gbuffer_lit_sum.frag), which otherwise a pass of its own writes
+// (TiledLightingPass). All targets are transients of the frame's size.
 #include <cstdint>
 
 #include "rendergraph/core/render_graph.h"
@@ -22,12 +23,17 @@ struct GBuffer {
   rg::ImageHandle normal;  // rgba16f: unit normal, shininess
   rg::ImageHandle albedo;  // rgba8: base colour, specular strength
   rg::ImageHandle depth;   // D32: 1 where no surface was drawn; world positions come back from it
+  // The lit sum's start (TiledLightingPass::lit_sum_format): the ambient term times the base
+  // colour, the background colour where no surface was drawn. Invalid unless the pass writes it.
+  rg::ImageHandle lit_sum;
 };
 
 class GBufferPass {
  public:
-  // `textures` must outlive the pass: its array is bound once.
-  GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);
+  // `textures` must outlive the pass: its array is bound once. With `writes_lit_sum` the pass
+  // also starts the lit sum (GBuffer::lit_sum), from FrameConstants' ambient term.
+  GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures,
+              bool writes_lit_sum = false);
 
   // Points the slot's descriptor set at this frame's instances.
   void prepare(uint32_t slot, const GpuScene& scene);
@@ -36,6 +42,7 @@ class GBufferPass {
                  uint32_t slot, const FrameConstants& constants) const;
 
  private:
+  bool writes_lit_sum_;
   vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;
   vk::UniquePipeline pipeline_;

@@ -61,10 +61,13 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       fused_.emplace(DepthPrepass(context), FusedForwardPass(context, textures_, frame_format));
       break;
     case LightingPath::automatic:  // resolved above
-    case LightingPath::deferred:
-      deferred_.emplace(GBufferPass(context, frames_in_flight, textures_), LightTilesPass(context),
-                        TiledLightingPass(context, settings.deferred_passes));
+    case LightingPath::deferred: {
+      TiledLightingPass lighting(context, settings.deferred_passes);
+      const bool lit_sum_from_gbuffer = lighting.lit_sum_from_gbuffer();
+      deferred_.emplace(GBufferPass(context, frames_in_flight, textures_, lit_sum_from_gbuffer),
+                        LightTilesPass(context), std::move(lighting));
       break;
+    }
   }
   if (lighting_per_frame_)
     fused_.emplace(DepthPrepass(context), FusedForwardPass(context, textures_, frame_format));

@@ -1,5 +1,6 @@
 #include "systems/tiled_lighting_pass.h"
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -7,9 +8,7 @@
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
-#include "shaders/fullscreen.vert.spv.h"
 #include "shaders/lighting_ambient.comp.spv.h"
-#include "shaders/lighting_ambient.frag.spv.h"
 #include "shaders/tiled_lighting.comp.spv.h"
 #include "shaders/tiled_lighting.frag.spv.h"
 #include "shaders/tiled_lighting.vert.spv.h"
@@ -20,6 +19,7 @@ namespace sg {
 namespace {
 
 using namespace bindings;
+constexpr VkShaderStageFlags compute_stage = VK_SHADER_STAGE_COMPUTE_BIT;
 
 struct AmbientConstants {
   glm::vec4 background_ambient;  // rgb: the background colour; w: the ambient term
@@ -72,21 +72,15 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses 
       stages_(stages_of(passes_)),
       light_resources_(context),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
-      ambient_layout_(
-          context.device(),
-          with_lit_sum({{gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages_},
-                        {scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages_}},
-                       passes_),
-          vk::push_constants<AmbientConstants>(stages_)),
+      ambient_layout_(context.device(),
+                      {{gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
+                       {scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
+                       {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute_stage}},
+                      vk::push_constants<AmbientConstants>(compute_stage)),
       ambient_pipeline_(
           in_compute() ? vk::create_compute_pipeline(
                              context, {lighting_ambient_comp, {}, ambient_layout_.get(), "lighting ambient"})
-                       : vk::create_graphics_pipeline(context, {.vertex_spirv = fullscreen_vert,
-                                                                .fragment_spirv = lighting_ambient_frag,
-                                                                .color_formats = {vk::to_vk(lit_sum_format)},
-                                                                .cull_mode = VK_CULL_MODE_NONE,
-                                                                .layout = ambient_layout_.get(),
-                                                                .name = "lighting ambient"})),
+                       : vk::UniquePipeline{}),
       layout_(
           context.device(),
           LightResources::bindings(
@@ -137,38 +131,36 @@ rg::ImageHandle TiledLightingPass::add_to(
   const rg::Usage storage = compute ? rg::Usage::storage_compute : rg::Usage::storage_fragment;
   // Fragment passes add to the lit sum by blending; every pixel of it is written by the first.
   const rg::Usage lit_sum_usage = compute ? rg::Usage::storage_compute : rg::Usage::colour_attachment;
-  rg::ImageHandle lit_sum;
-  graph.add_pass(
-      "lighting ambient",
-      [&](rg::PassBuilder& b) {
-        b.read(gbuffer.albedo, sampled);
-        b.read(gbuffer.depth, sampled);
-        lit_sum =
-            b.write(b.create_image("lit sum", {screen.width, screen.height, lit_sum_format}), lit_sum_usage);
-        return lit_sum;
-      },
-      [this, compute, albedo = gbuffer.albedo, depth = gbuffer.depth,
-       constants =
-           AmbientConstants{glm::vec4(background_colour, ambient), {screen.width, screen.height, 0, 0}}](
-          rg::ImageHandle lit_sum, const vk::PassRecorder& rec) {
-        vk::DescriptorWriter writer = ambient_layout_.write(rec.allocate_set(ambient_layout_));
-        writer.image(gbuffer_albedo_binding, rec.view(albedo), nearest_.get())
-            .image(scene_depth_binding, rec.view(depth), nearest_.get());
-        if (compute) writer.image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
-        const VkDescriptorSet set = writer.update();
-        if (compute) {
+  rg::ImageHandle lit_sum = gbuffer.lit_sum;
+  if (!compute && !lit_sum.valid()) {
+    throw std::logic_error("TiledLightingPass: fragment passes add to the lit sum the G-buffer starts");
+  }
+  if (!lit_sum.valid()) {
+    graph.add_pass(
+        "lighting ambient",
+        [&](rg::PassBuilder& b) {
+          b.read(gbuffer.albedo, rg::Usage::sampled_compute);
+          b.read(gbuffer.depth, rg::Usage::sampled_compute);
+          lit_sum = b.write(b.create_image("lit sum", {screen.width, screen.height, lit_sum_format}),
+                            rg::Usage::storage_compute);
+          return lit_sum;
+        },
+        [this, albedo = gbuffer.albedo, depth = gbuffer.depth,
+         constants =
+             AmbientConstants{glm::vec4(background_colour, ambient), {screen.width, screen.height, 0, 0}}](
+            rg::ImageHandle lit_sum, const vk::PassRecorder& rec) {
+          const VkDescriptorSet set =
+              ambient_layout_.write(rec.allocate_set(ambient_layout_))
+                  .image(gbuffer_albedo_binding, rec.view(albedo), nearest_.get())
+                  .image(scene_depth_binding, rec.view(depth), nearest_.get())
+                  .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL)
+                  .update();
           vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, ambient_pipeline_.get());
           ambient_layout_.bind_compute(rec.cmd(), set);
           ambient_layout_.push(rec.cmd(), constants);
           vkCmdDispatch(rec.cmd(), (constants.screen.x + 15) / 16, (constants.screen.y + 15) / 16, 1);
-          return;
-        }
-        rec.set_full_viewport();
-        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, ambient_pipeline_.get());
-        ambient_layout_.bind(rec.cmd(), set);
-        ambient_layout_.push(rec.cmd(), constants);
-        vkCmdDraw(rec.cmd(), 3, 1, 0, 0);
-      });
+        });
+  }
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     if (group_begin[group + 1] == group_begin[group]) continue;  // no light of the group this frame
     graph.add_pass(

@@ -1,9 +1,10 @@
 #pragma once
-// Tiled deferred lighting: a pass starting the lit sum from the ambient term and the background
-// (shaders/lighting_ambient.glsl), then for each light group that has lights one pass with that
-// group's shadow code compiled in (shaders/tiled_lighting.glsl), over the tiles that have lights
-// of the group (an indirect dispatch or draw from LightTilesPass), adding them to the lit sum.
-// The passes are compute dispatches or fragment passes (DeferredPasses, lighting_path.h).
+// Tiled deferred lighting: the lit sum starts from the ambient term and the background (a
+// compute pass, shaders/lighting_ambient.comp, or the G-buffer pass itself), then for each light
+// group that has lights one pass with that group's shadow code compiled in
+// (shaders/tiled_lighting.glsl), over the tiles that have lights of the group (an indirect
+// dispatch or draw from LightTilesPass), adding them to the lit sum. The group passes are compute
+// dispatches or fragment passes (DeferredPasses, lighting_path.h).
 #include <array>
 #include <cstdint>
 
@@ -38,7 +39,8 @@ class TiledLightingPass {
 
   static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
 
-  // Adds the ambient pass, which creates the lit sum, and one pass per group with lights
+  // Adds the ambient pass, which creates the lit sum (unless the G-buffer pass started it:
+  // GBuffer::lit_sum, which fragment passes require), and one pass per group with lights
   // (group_begin as in shadows::FrameLights); returns the lit sum's newest version. `lights` must
   // live until the frame is recorded. Positions come from the depth buffer through the camera's
   // `view_projection`; `ambient` is the ambient term kA * IA.
@@ -50,6 +52,11 @@ class TiledLightingPass {
 
   // compute or fragment.
   DeferredPasses passes() const { return passes_; }
+  // Whether the G-buffer pass must start the lit sum (GBufferPass's writes_lit_sum): with fragment
+  // passes, where one more G-buffer target costs less than one more full-screen pass (lavapipe,
+  // 1280x720: the G-buffer 18.6-20.2 ms with it, against 13.7-17.8 plus an ambient pass of
+  // 6.2-8.6 ms).
+  bool lit_sum_from_gbuffer() const { return passes_ == DeferredPasses::fragment; }
 
  private:
   bool in_compute() const { return passes_ == DeferredPasses::compute; }
@@ -60,7 +67,7 @@ class TiledLightingPass {
   LightResources light_resources_;
   vk::UniqueSampler nearest_;  // G-buffer reads
   vk::PipelineLayout ambient_layout_;
-  vk::UniquePipeline ambient_pipeline_;
+  vk::UniquePipeline ambient_pipeline_;  // compute only
   vk::PipelineLayout layout_;
   // By LightingView, then group.
   std::array<std::array<vk::UniquePipeline, shadows::light_group_count>, 2> pipelines_;

@@ -81,13 +81,20 @@ sandbox::Options lit_by(LightingPath lighting) {
 }
 
 TEST_F(SandboxFrameTest, DefaultSceneRendersThroughTheGraph) {
-  const std::vector<std::string> lighting{
-      "g-buffer",           "light tiles reset",  "light tiles",       "lighting ambient",
-      "lighting 2d hard",   "lighting 2d pcf",    "lighting 2d noise", "lighting 2d pcss_noise",
-      "lighting cube hard", "lighting cube pcss", "tone map"};
+  const std::vector<std::string> lighting{"g-buffer",
+                                          "light tiles reset",
+                                          "light tiles",
+                                          "lighting 2d hard",
+                                          "lighting 2d pcf",
+                                          "lighting 2d noise",
+                                          "lighting 2d pcss_noise",
+                                          "lighting cube hard",
+                                          "lighting cube pcss",
+                                          "tone map"};
   // The first frame draws every shadow view (lavapipe has shaderOutputLayer, so they are
-  // batched), then the G-buffer, light culling, the ambient term, one lighting pass per light group
-  // the scene uses (its six lights use six of the eleven), tone mapping.
+  // batched), then the G-buffer (which starts the lit sum with the ambient term on a CPU device),
+  // light culling, one lighting pass per light group the scene uses (its six lights use six of the
+  // eleven), tone mapping.
   render(lit_by(LightingPath::deferred), 1);
   EXPECT_EQ(passes, followed_by(batched_shadow_passes, lighting));
   // Nothing moves in the default scene: later frames keep every map.
@@ -169,7 +176,8 @@ TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
 }
 
 // Deferred lighting's passes as compute dispatches or as fragment passes blending into the lit sum:
-// the same shading code over the same tiles, so the same picture (to rounding of the 16-bit sum).
+// the same shading code over the same tiles, so the same picture to rounding (the 16-bit sum, and
+// the G-buffer's ambient term takes the base colour before its 8-bit storage).
 TEST_F(SandboxFrameTest, DeferredLightingInFragmentPassesMatchesCompute) {
   sandbox::Options options = lit_by(LightingPath::deferred);
   options.deferred_passes = DeferredPasses::compute;
@@ -177,9 +185,13 @@ TEST_F(SandboxFrameTest, DeferredLightingInFragmentPassesMatchesCompute) {
   const std::vector<std::string> compute_passes = passes;
   options.deferred_passes = DeferredPasses::fragment;
   const vk::Rgba8Image fragment = render(options, 2);
-  EXPECT_EQ(passes, compute_passes);
+  // In compute the lit sum starts in a pass of its own; fragment passes add to the G-buffer's.
+  std::vector<std::string> with_ambient_pass = passes;
+  with_ambient_pass.insert(std::find(with_ambient_pass.begin(), with_ambient_pass.end(), "lighting 2d hard"),
+                           "lighting ambient");
+  EXPECT_EQ(compute_passes, with_ambient_pass);
   EXPECT_LE(largest_difference(compute, fragment), 1) << "levels of 255 in the worst channel";
-  EXPECT_LT(share_differing(compute, fragment, 0), 0.01);
+  EXPECT_LT(share_differing(compute, fragment, 0), 0.05);
 }
 
 // automatic on a CPU device, each frame: the fused forward pass for up to four lights (fewest
