@@ -10,6 +10,10 @@
 
 // Every material texture of the scene, one per layer (systems/gpu_textures.h).
 layout(set = 0, binding = material_textures_binding) uniform sampler2DArray base_color_textures;
+// False for a scene without images: a CPU driver samples the texture for every fragment
+// whatever the branch says (it runs both sides of every branch), so the sampling code is left
+// out at compile time. constant_id 0 and 1 are the including shaders' own.
+layout(constant_id = 2) const bool MATERIAL_TEXTURES = true;
 
 SurfacePoint instance_surface(uint instance, vec3 world_position, vec3 normal, vec2 uv) {
   Instance inst = instances[instance];
@@ -18,7 +22,7 @@ SurfacePoint instance_surface(uint instance, vec3 world_position, vec3 normal, v
   p.to_viewer = normalize(frame.camera_position.xyz - world_position);
   p.base_color = inst.base_color_specular.rgb;
   int texture_index = int(inst.material.y);
-  if (texture_index >= 0) {
+  if (MATERIAL_TEXTURES && texture_index >= 0) {
     p.base_color *= texture(base_color_textures, vec3(uv, float(texture_index))).rgb;
   }
   p.specular = inst.base_color_specular.a;

@@ -22,6 +22,7 @@ constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADE
 
 ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures)
     : context_(context),
+      textures_(textures),
       light_resources_(context),
       layout_(context.device(), lit_camera_bindings(), vk::push_constants<FrameConstants>(both_stages)),
       slot_sets_(layout_.allocate_sets(frames_in_flight)) {
@@ -38,7 +39,8 @@ void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer
   if (!pipeline) {
     vk::GraphicsPipelineDesc desc =
         camera_pipeline_desc(scene_frag, {vk::to_vk(lit_sum_format)}, layout_.get(), "forward");
-    desc.fragment_specialization = {0, static_cast<uint32_t>(view)};  // light_shading.glsl's constant 1
+    // light_shading.glsl's constant 1
+    desc.fragment_specialization = material_pass_constants(0, static_cast<uint32_t>(view), textures_);
     pipeline = vk::create_graphics_pipeline(context_, desc);
   }
   const vk::Image& atlas = shadow_atlas.image();

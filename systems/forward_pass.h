@@ -49,6 +49,7 @@ class ForwardPass {
 
  private:
   vk::VulkanContext& context_;
+  const GpuTextures& textures_;
   LightResources light_resources_;
   vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;

@@ -35,10 +35,12 @@ GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
   }
   std::vector<VkFormat> formats{vk::to_vk(normal_format), vk::to_vk(albedo_format)};
   if (writes_lit_sum) formats.push_back(vk::to_vk(TiledLightingPass::lit_sum_format));
-  pipeline_ = vk::create_graphics_pipeline(
-      context, camera_pipeline_desc(writes_lit_sum ? std::span<const uint32_t>(gbuffer_lit_sum_frag)
-                                                   : std::span<const uint32_t>(gbuffer_frag),
-                                    std::move(formats), layout_.get(), "g-buffer"));
+  vk::GraphicsPipelineDesc desc =
+      camera_pipeline_desc(writes_lit_sum ? std::span<const uint32_t>(gbuffer_lit_sum_frag)
+                                          : std::span<const uint32_t>(gbuffer_frag),
+                           std::move(formats), layout_.get(), "g-buffer");
+  desc.fragment_specialization = material_pass_constants(0, 0, textures);
+  pipeline_ = vk::create_graphics_pipeline(context, desc);
 }
 
 void GBufferPass::prepare(uint32_t slot, const GpuScene& scene) {

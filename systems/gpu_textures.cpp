@@ -22,6 +22,7 @@ GpuTextures::GpuTextures(vk::VulkanContext& context, const scene::TextureLibrary
   }
   size = std::min(std::bit_ceil(size), max_layer_size);
   layers_ = std::max<uint32_t>(1, static_cast<uint32_t>(textures.textures.size()));
+  has_images_ = !textures.textures.empty();
 
   const size_t layer_bytes = size_t{size} * size * 4;
   std::vector<uint8_t> texels(layer_bytes * layers_, 255);  // white when there is no texture

@@ -6,6 +6,7 @@
 // two and at most max_layer_size; smaller or non-square images are resampled to it, which
 // keeps their uv mapping. A scene without textures gets one white layer, so the array exists.
 #include <cstdint>
+#include <vector>
 
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/resources.h"
@@ -23,11 +24,22 @@ class GpuTextures {
   // Linear filtering with glTF's default wrapping (repeat).
   VkSampler sampler() const { return sampler_.get(); }
   uint32_t layers() const { return layers_; }
+  // Whether the scene has any image (else the array is the one white layer): the
+  // MATERIAL_TEXTURES specialization constant of shaders/material.glsl.
+  bool has_images() const { return has_images_; }
 
  private:
   vk::Image array_;
   vk::UniqueSampler sampler_;
   uint32_t layers_ = 0;
+  bool has_images_ = false;
 };
+
+// The fragment specialization of a pass that draws materials (shaders/material.glsl): the
+// shader's own constants 0 and 1, then MATERIAL_TEXTURES from `textures`.
+inline std::vector<uint32_t> material_pass_constants(uint32_t constant0, uint32_t constant1,
+                                                     const GpuTextures& textures) {
+  return {constant0, constant1, textures.has_images() ? 1u : 0u};
+}
 
 }  // namespace sg

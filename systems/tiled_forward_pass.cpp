@@ -41,7 +41,8 @@ void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_c
   if (pipeline) return;
   vk::GraphicsPipelineDesc desc = camera_pipeline_desc(
       scene_tiled_frag, {vk::to_vk(ForwardPass::lit_sum_format)}, layout_.get(), "tiled forward");
-  desc.fragment_specialization = {groups_present_, static_cast<uint32_t>(view)};
+  desc.fragment_specialization =
+      material_pass_constants(groups_present_, static_cast<uint32_t>(view), textures_);
   // depth_prepass.vert computed the same positions: draw only what the prepass kept.
   desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
   desc.depth_write = false;
