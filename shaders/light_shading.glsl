@@ -25,7 +25,7 @@ layout(constant_id = 1) const bool SHADOW_ONLY_VIEW = false;
 vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kind, uint algorithm) {
   // Only point lights have cube maps: with a constant shadow_kind the other types' branches
   // drop out of a cube group's shader (a CPU driver computes every branch, taken or not).
-  uint type = shadow_kind == SHADOW_KIND_CUBE ? LIGHT_POINT : light.info.x;
+  uint type = shadow_kind == SHADOW_KIND_CUBE ? LIGHT_POINT : light_type(light);
   vec3 to_light;
   float reach = 1.0;
   float lambda = 1.0;

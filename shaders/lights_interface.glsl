@@ -5,6 +5,20 @@
 #include "bindings.glsl"
 #include "light_record.glsl"
 
+// Bit t set where lights of type t (LIGHT_*) may be shaded: a pass that knows the types of its
+// lights compiles only their code (a CPU driver runs every branch a shader holds). constant_id
+// 0 to 2 are the including shaders' own and material.glsl's.
+layout(constant_id = 3) const uint LIGHT_TYPES = 0xFu;
+
+// Light `light`'s type, a constant where LIGHT_TYPES admits one type only.
+uint light_type(Light light) {
+  if (LIGHT_TYPES == (1u << LIGHT_POINT)) return LIGHT_POINT;
+  if (LIGHT_TYPES == (1u << LIGHT_SPOT)) return LIGHT_SPOT;
+  if (LIGHT_TYPES == (1u << LIGHT_DIRECTIONAL)) return LIGHT_DIRECTIONAL;
+  if (LIGHT_TYPES == (1u << LIGHT_CYLINDER)) return LIGHT_CYLINDER;
+  return light.info.x;
+}
+
 // Every light of the frame (sg::shadows::GpuLight on the C++ side), its 208 bytes as 13 texels
 // of a uniform texel buffer (light_resources.h says why not a storage buffer). light_at(i) is the
 // i-th record; its members lie at the offsets of Light's std430 layout, 16 bytes a texel.

@@ -104,7 +104,14 @@ struct MapPoint {
   float texel_slack; // the most depth can change across one texel of that plane
 };
 
-bool map_is_orthographic(Light light) { return light.shadow_depth.w > 0.5; }
+// Directional and cylinder maps are orthographic, spot maps perspective: where LIGHT_TYPES says
+// which the pass has, the other's code drops out.
+bool map_is_orthographic(Light light) {
+  const uint orthographic = (1u << LIGHT_DIRECTIONAL) | (1u << LIGHT_CYLINDER);
+  if ((LIGHT_TYPES & orthographic) == 0u) return false;
+  if ((LIGHT_TYPES & (1u << LIGHT_SPOT)) == 0u) return true;
+  return light.shadow_depth.w > 0.5;
+}
 
 float map_linear_depth(Light light, float stored_depth) {
   if (map_is_orthographic(light)) return stored_depth;

@@ -132,7 +132,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     case LightingPath::automatic:  // resolved
     case LightingPath::deferred:
       deferred_->gbuffer.prepare(slot, gpu_scene_);
-      deferred_->lighting.prepare(lights_.group_begin, settings_.view);
+      deferred_->lighting.prepare(lights_, settings_.view);
       break;
   }
   cpu_steps_.views = lap(mark);

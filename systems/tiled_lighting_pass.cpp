@@ -94,15 +94,21 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses 
                            passes_)),
           vk::push_constants<LightingConstants>(stages_)) {}
 
-void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-                                LightingView view) {
-  view_ = view;
-  auto& pipelines = pipelines_[static_cast<uint32_t>(view)];
+void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView view) {
+  current_.fill(VK_NULL_HANDLE);
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
-    if (group_begin[group + 1] == group_begin[group] || pipelines[group]) continue;
-    const std::vector<uint32_t> constants{group, static_cast<uint32_t>(view)};
+    uint32_t types = 0;  // the group's light types, bit t for type t (lights_interface.glsl)
+    for (uint32_t i = lights.group_begin[group]; i < lights.group_begin[group + 1]; ++i) {
+      types |= 1u << lights.records[i].info.x;
+    }
+    if (types == 0) continue;  // no light of the group this frame
+    vk::UniquePipeline& pipeline = pipelines_[group | types << 8 | static_cast<uint32_t>(view) << 16];
+    current_[group] = pipeline.get();
+    if (pipeline) continue;
+    // constant_id 0: the group; 1: the view; 2: material.glsl's, unused here; 3: the light types.
+    const std::vector<uint32_t> constants{group, static_cast<uint32_t>(view), 0u, types};
     const std::string name = "tiled lighting " + group_name(group);
-    pipelines[group] =
+    pipeline =
         in_compute()
             ? vk::create_compute_pipeline(context_, {tiled_lighting_comp, constants, layout_.get(), name})
             : vk::create_graphics_pipeline(context_, {.vertex_spirv = tiled_lighting_vert,
@@ -113,6 +119,7 @@ void TiledLightingPass::prepare(const std::array<uint32_t, shadows::light_group_
                                                       .blend = vk::Blend::add,
                                                       .layout = layout_.get(),
                                                       .name = name});
+    current_[group] = pipeline.get();
   }
 }
 
@@ -163,6 +170,9 @@ rg::ImageHandle TiledLightingPass::add_to(
   }
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     if (group_begin[group + 1] == group_begin[group]) continue;  // no light of the group this frame
+    if (current_[group] == VK_NULL_HANDLE) {
+      throw std::logic_error("TiledLightingPass: add_to with lights prepare() did not see");
+    }
     graph.add_pass(
         "lighting " + group_name(group),
         [&](rg::PassBuilder& b) {
@@ -176,7 +186,7 @@ rg::ImageHandle TiledLightingPass::add_to(
           lit_sum = b.write(lit_sum, lit_sum_usage);
         },
         [this, compute, group, gbuffer, tiles, atlas, lit_sum, &lights, constants,
-         pipeline = pipelines_[static_cast<uint32_t>(view_)][group].get()](const vk::PassRecorder& rec) {
+         pipeline = current_[group]](const vk::PassRecorder& rec) {
           const VkSampler nearest = nearest_.get();
           vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
           writer.image(scene_depth_binding, rec.view(gbuffer.depth), nearest)

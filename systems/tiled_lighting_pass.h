@@ -7,6 +7,7 @@
 // dispatches or fragment passes (DeferredPasses, lighting_path.h).
 #include <array>
 #include <cstdint>
+#include <unordered_map>
 
 #include <glm/glm.hpp>
 
@@ -17,6 +18,7 @@
 #include "systems/light_resources.h"
 #include "systems/light_tiles_pass.h"
 #include "systems/lighting_path.h"
+#include "systems/shadows/frame_lights.h"
 #include "systems/shadows/light_groups.h"
 
 namespace sg::vk {
@@ -31,11 +33,10 @@ class TiledLightingPass {
   // `passes` automatic is resolved for the context's device (passes() says how).
   TiledLightingPass(vk::VulkanContext& context, DeferredPasses passes);
 
-  // Compiles the pipelines of the groups that have lights (group_begin as in
-  // shadows::FrameLights) and that it has not compiled yet: each holds one algorithm's shadow
-  // code, and a scene rarely uses all eleven.
-  // The pipelines are made for `view`, which add_to then uses.
-  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view);
+  // Picks, and compiles when first needed, the pipeline of each group that has lights in
+  // `lights` (sorted by group): each holds one algorithm's shadow code and only the code of the
+  // light types the group has this frame (LIGHT_TYPES), for `view`. add_to uses them.
+  void prepare(const shadows::FrameLights& lights, LightingView view);
 
   static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
 
@@ -69,9 +70,9 @@ class TiledLightingPass {
   vk::PipelineLayout ambient_layout_;
   vk::UniquePipeline ambient_pipeline_;  // compute only
   vk::PipelineLayout layout_;
-  // By LightingView, then group.
-  std::array<std::array<vk::UniquePipeline, shadows::light_group_count>, 2> pipelines_;
-  LightingView view_ = LightingView::lit;
+  // By group | light types << 8 | LightingView << 16.
+  std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;
+  std::array<VkPipeline, shadows::light_group_count> current_{};  // this frame's, by group
 };
 
 }  // namespace sg
