@@ -32,6 +32,22 @@ struct Specialization {
   const VkSpecializationInfo* get() const { return entries.empty() ? nullptr : &info; }
 };
 
+VkPipelineColorBlendAttachmentState attachment_blend(Blend blend) {
+  VkPipelineColorBlendAttachmentState a{};
+  a.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                     VK_COLOR_COMPONENT_A_BIT;
+  if (blend == Blend::none) return a;
+  const bool alpha = blend == Blend::alpha;
+  a.blendEnable = VK_TRUE;
+  a.srcColorBlendFactor = alpha ? VK_BLEND_FACTOR_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
+  a.dstColorBlendFactor = alpha ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
+  a.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  a.dstAlphaBlendFactor = a.dstColorBlendFactor;
+  a.colorBlendOp = VK_BLEND_OP_ADD;
+  a.alphaBlendOp = VK_BLEND_OP_ADD;
+  return a;
+}
+
 }  // namespace
 
 UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPipelineDesc& desc) {
@@ -81,28 +97,8 @@ UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPi
   depth.depthWriteEnable = desc.depth_write && depth.depthTestEnable;
   depth.depthCompareOp = desc.depth_compare;
 
-  std::vector<VkPipelineColorBlendAttachmentState> blend_attachments(desc.color_formats.size());
-  for (VkPipelineColorBlendAttachmentState& a : blend_attachments) {
-    a.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                       VK_COLOR_COMPONENT_A_BIT;
-    if (desc.blend == Blend::alpha) {
-      a.blendEnable = VK_TRUE;
-      a.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-      a.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-      a.colorBlendOp = VK_BLEND_OP_ADD;
-      a.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-      a.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-      a.alphaBlendOp = VK_BLEND_OP_ADD;
-    } else if (desc.blend == Blend::add) {
-      a.blendEnable = VK_TRUE;
-      a.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
-      a.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
-      a.colorBlendOp = VK_BLEND_OP_ADD;
-      a.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-      a.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-      a.alphaBlendOp = VK_BLEND_OP_ADD;
-    }
-  }
+  std::vector<VkPipelineColorBlendAttachmentState> blend_attachments(desc.color_formats.size(),
+                                                                     attachment_blend(desc.blend));
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = static_cast<uint32_t>(blend_attachments.size());
   blend.pAttachments = blend_attachments.data();
