@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 // Keeps every (caster, view) pair whose caster's world bounds meet the view's frustum: one
 // thread per caster, one workgroup row per view. Pairs go to culled_pairs in any order (at most
 // `capacity`; the total counts every kept pair, so the CPU learns when to grow), and each kept
@@ -16,8 +17,17 @@ void main() {
   if (caster >= pc.caster_count) return;
   vec3 lo = casters[caster].min_mesh.xyz;
   vec3 hi = casters[caster].max_instance.xyz;
-  for (int p = 0; p < 6; ++p) {
-    vec4 plane = views[view].planes[p];
+  // The frustum's planes from the matrix's rows (as shadows::frustum_planes: dot(plane.xyz, p) +
+  // plane.w >= 0 inside, Vulkan depth 0..1), here rather than in the record: 96 bytes less a view
+  // for the CPU to fill and upload each frame.
+  mat4 m = views[view].view_projection;
+  vec4 row0 = vec4(m[0][0], m[1][0], m[2][0], m[3][0]);
+  vec4 row1 = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
+  vec4 row2 = vec4(m[0][2], m[1][2], m[2][2], m[3][2]);
+  vec4 row3 = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+  vec4 planes[6] = vec4[](row3 + row0, row3 - row0, row3 + row1, row3 - row1, row2, row3 - row2);
+  [[unroll]] for (int p = 0; p < 6; ++p) {
+    vec4 plane = planes[p];
     // The box's corner farthest along the plane's normal.
     vec3 corner = mix(lo, hi, greaterThanEqual(plane.xyz, vec3(0.0)));
     if (dot(plane.xyz, corner) + plane.w < 0.0) return;

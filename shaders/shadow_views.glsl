@@ -17,7 +17,6 @@ struct ShadowView {
   mat4 view_projection;  // world -> the view's clip space
   vec4 tile;             // the view's clip xy -> the atlas page's: xy scale, zw offset (times w)
   vec4 position_far;     // cube faces: the light's position and far plane (shadow_cube.frag)
-  vec4 planes[6];        // the view's frustum: dot(plane.xyz, p) + plane.w >= 0 inside
   uvec4 info;            // x: atlas layer; y: VIEW_KIND_*; z: tile side, texels
   uvec4 raster;          // shadow_raster.comp: x where the tile's texel (0, 0) is in the depths,
                          // y the depths' row pitch there (tiles side by side share rows)

@@ -155,7 +155,7 @@ bool ShadowViewBatch::all_casters_kept(uint32_t slot) {
 void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene,
                               uint32_t page_size, ecs::ThreadPool* pool) {
   // Where each drawn view goes, a flag a light, on this thread; then the views themselves
-  // (matrices, frustum planes), independent, in chunks on the pool.
+  // (matrices, tiles), independent, in chunks on the pool.
   constexpr uint32_t not_drawn = UINT32_MAX;
   const size_t light_count = lights.maps.size() + lights.cubes.size();
   first_view_.resize(light_count);
@@ -175,7 +175,6 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     view.view_projection = view_projection;
     view.tile = shadows::tile_clip_transform(tile, page_size);
     view.position_far = position_far;
-    view.planes = shadows::frustum_planes(view_projection);
     view.info = {tile.page, kind, tile.size, 0u};
     view.raster = glm::uvec4(0u);
     view_tiles_[v] = tile;

@@ -78,7 +78,6 @@ class ShadowViewBatch {
     glm::mat4 view_projection;
     glm::vec4 tile;
     glm::vec4 position_far;
-    std::array<glm::vec4, 6> planes;
     glm::uvec4 info;
     glm::uvec4 raster;
   };
