@@ -154,30 +154,45 @@ bool ShadowViewBatch::all_casters_kept(uint32_t slot) {
 
 void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene,
                               uint32_t page_size, ecs::ThreadPool* pool) {
-  // Where each drawn view goes, a flag a light, on this thread; then the views themselves
-  // (matrices, tiles), independent, in chunks on the pool.
+  // Where each drawn view goes, a flag a light, and its tile, on this thread; where compute
+  // raster puts its depths; then the view records, independent, in chunks on the pool (written
+  // once each, in order: they are most of what this frame uploads).
   constexpr uint32_t not_drawn = UINT32_MAX;
   const size_t light_count = lights.maps.size() + lights.cubes.size();
   first_view_.resize(light_count);
-  uint32_t count = 0;
-  for (size_t m = 0; m < lights.maps.size(); ++m)
-    first_view_[m] = lights.maps[m].render ? count++ : not_drawn;
-  for (size_t c = 0; c < lights.cubes.size(); ++c) {
-    first_view_[lights.maps.size() + c] =
-        lights.cubes[c].render ? std::exchange(count, count + 6) : not_drawn;
+  view_tiles_.clear();
+  for (size_t m = 0; m < lights.maps.size(); ++m) {
+    first_view_[m] = lights.maps[m].render ? static_cast<uint32_t>(view_tiles_.size()) : not_drawn;
+    if (lights.maps[m].render) view_tiles_.push_back(lights.maps[m].tile);
   }
+  for (size_t c = 0; c < lights.cubes.size(); ++c) {
+    const shadows::ShadowCubeView& cube = lights.cubes[c];
+    first_view_[lights.maps.size() + c] = cube.render ? static_cast<uint32_t>(view_tiles_.size()) : not_drawn;
+    if (cube.render) view_tiles_.insert(view_tiles_.end(), cube.tiles.begin(), cube.tiles.end());
+  }
+  const size_t count = view_tiles_.size();
+
+  if (setting_ == shadows::ShadowRaster::automatic) {
+    uint64_t large_texels = 0;
+    for (const shadows::AtlasTile& tile : view_tiles_) {
+      if (tile.size >= shadows::large_tile) large_texels += uint64_t{tile.size} * tile.size;
+    }
+    raster_ = shadows::raster_for_views(static_cast<uint32_t>(count), large_texels);
+  }
+  depth_places_.assign(count, glm::uvec2(0u));
+  if (raster_ == shadows::ShadowRaster::compute) place_depths();
+
   views_.resize(count);
-  view_tiles_.resize(count);
   clears_.resize(count);
-  const auto place_view = [&](uint32_t v, const glm::mat4& view_projection, const shadows::AtlasTile& tile,
-                              const glm::vec4& position_far, uint32_t kind) {
+  const auto place_view = [&](uint32_t v, const glm::mat4& view_projection, const glm::vec4& position_far,
+                              uint32_t kind) {
+    const shadows::AtlasTile& tile = view_tiles_[v];
     View& view = views_[v];
     view.view_projection = view_projection;
     view.tile = shadows::tile_clip_transform(tile, page_size);
     view.position_far = position_far;
     view.info = {tile.page, kind, tile.size, 0u};
-    view.raster = glm::uvec4(0u);
-    view_tiles_[v] = tile;
+    view.raster = glm::uvec4(depth_places_[v], 0u, 0u);
     clears_[v] = tile_clear(tile);
   };
   ecs::run_in_pieces(pool, light_count, 256, [&](size_t begin, size_t end) {
@@ -186,25 +201,15 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
       if (first == not_drawn) continue;
       if (i < lights.maps.size()) {
         const shadows::ShadowMapView& map = lights.maps[i];
-        place_view(first, map.view.view_projection(), map.tile, glm::vec4(0.0f), view_kind_map);
+        place_view(first, map.view.view_projection(), glm::vec4(0.0f), view_kind_map);
         continue;
       }
       const shadows::ShadowCubeView& cube = lights.cubes[i - lights.maps.size()];
       for (uint32_t face = 0; face < 6; ++face) {
-        place_view(first + face, cube.views.view_projection[face], cube.tiles[face], cube.position_far,
-                   view_kind_face);
+        place_view(first + face, cube.views.view_projection[face], cube.position_far, view_kind_face);
       }
     }
   });
-
-  if (setting_ == shadows::ShadowRaster::automatic) {
-    uint64_t large_texels = 0;
-    for (const shadows::AtlasTile& tile : view_tiles_) {
-      if (tile.size >= shadows::large_tile) large_texels += uint64_t{tile.size} * tile.size;
-    }
-    raster_ = shadows::raster_for_views(views(), large_texels);
-  }
-  if (raster_ == shadows::ShadowRaster::compute) place_depths();
 
   casters_.clear();
   meshes_.clear();
@@ -232,8 +237,8 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
 // row-major in one rectangle of the buffer, and a frame copies a few rectangles a row of tiles.
 void ShadowViewBatch::place_depths() {
   // By page, size, row, column, packed into one integer (every field is below 2^16).
-  placed_.resize(views_.size());
-  for (size_t v = 0; v < views_.size(); ++v) {
+  placed_.resize(view_tiles_.size());
+  for (size_t v = 0; v < view_tiles_.size(); ++v) {
     const shadows::AtlasTile& t = view_tiles_[v];
     placed_[v] = {uint64_t{t.page} << 48 | uint64_t{t.size} << 32 | uint64_t{t.y} << 16 | t.x,
                   static_cast<uint32_t>(v)};
@@ -255,7 +260,7 @@ void ShadowViewBatch::place_depths() {
     const auto pitch = static_cast<uint32_t>(end - begin) * first.size;
     for (size_t k = begin; k < end; ++k) {
       const uint32_t v = placed_[k].view;
-      views_[v].raster = {static_cast<uint32_t>(depth_texels_ + (view_tiles_[v].x - first.x)), pitch, 0u, 0u};
+      depth_places_[v] = {static_cast<uint32_t>(depth_texels_ + (view_tiles_[v].x - first.x)), pitch};
     }
     VkBufferImageCopy copy{};
     copy.bufferOffset = depth_texels_ * sizeof(float);

@@ -122,9 +122,11 @@ class ShadowViewBatch {
   std::vector<Caster> casters_;
   std::vector<glm::uvec4> meshes_;
   std::vector<VkClearRect> clears_;
-  // Compute raster: where each view's depths go in the depth buffer, and the copies into the atlas.
+  // Compute raster: where each view's depths go in the depth buffer (View::raster's x and y, by
+  // view), and the copies into the atlas.
   void place_depths();
   std::vector<shadows::AtlasTile> view_tiles_;  // per view
+  std::vector<glm::uvec2> depth_places_;        // per view
   struct Placed {
     uint64_t key;  // page, size, row, column, 16 bits each
     uint32_t view;
