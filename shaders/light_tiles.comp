@@ -7,8 +7,8 @@
 
 // SIDE x SIDE threads, each reading a block of the tile's depth: a GPU wants threads to test many
 // lights at once. At least 4, so that every light group has a thread.
-layout(constant_id = 0) const uint SIDE = 8u;
-layout(local_size_x_id = 0, local_size_y_id = 0) in;
+const uint SIDE = 8u;
+layout(local_size_x = SIDE, local_size_y = SIDE) in;
 const uint THREADS = SIDE * SIDE;
 const uint BLOCK = LIGHT_TILE_SIZE / SIDE;  // pixels per thread side
 

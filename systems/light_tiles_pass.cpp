@@ -50,7 +50,7 @@ vk::UniquePipeline culling_pipeline(vk::VulkanContext& context, LightCullingShap
   if (shape == LightCullingShape::thread_per_tile) {
     return vk::create_compute_pipeline(context, {light_tiles_serial_comp, {}, layout, "light tiles"});
   }
-  return vk::create_compute_pipeline(context, {light_tiles_comp, {8u}, layout, "light tiles"});
+  return vk::create_compute_pipeline(context, {light_tiles_comp, {}, layout, "light tiles"});
 }
 
 }  // namespace
