@@ -27,12 +27,12 @@ constexpr LightingPath cpu_lighting_for(uint32_t lights) {
   return lights <= 4 ? LightingPath::fused : LightingPath::deferred;
 }
 
-// How deferred lighting's per-pixel passes run (the lit sum's ambient start, then one pass per
-// light group): compute dispatches writing a storage image, or fragment passes (a full-screen
-// triangle, then one quad per tile with lights of the group) adding into the lit sum by
-// blending. On lavapipe a fragment pass costs about a third of a compute dispatch over the same
-// pixels; GPUs with little raster hardware are faster in compute (docs/PERFORMANCE.md).
-// automatic: fragment on CPU devices, compute otherwise.
+// How deferred lighting's per-light-group passes run: compute dispatches writing a storage image
+// (after a compute pass starting the lit sum), or fragment passes over one quad per tile with
+// lights of the group, adding into the lit sum by blending (the G-buffer pass starts it, which
+// saves a full-screen pass). On lavapipe the group passes cost about the same either way, and the
+// ambient pass 6-9 ms; on the H200 fragment passes are several times slower
+// (docs/PERFORMANCE.md). automatic: fragment on CPU devices, compute otherwise.
 enum class DeferredPasses { automatic, compute, fragment };
 
 // What the lighting writes: the lit picture, or the shadow-only debug view (white diffuse surfaces
