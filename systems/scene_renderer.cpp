@@ -104,7 +104,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   if (std::optional<std::string> message = schedule_.take_budget_message()) {
     std::printf("shadowgraph: %s\n", message->c_str());
   }
-  shadows::sort_by_group(lights_);
+  shadows::sort_by_group(lights_, &workers_);
   cpu_steps_.schedule = lap(mark);
 
   gpu_scene_.upload(slot, &workers_);

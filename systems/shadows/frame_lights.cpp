@@ -156,7 +156,7 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
   });
 }
 
-void sort_by_group(FrameLights& out) {
+void sort_by_group(FrameLights& out, ecs::ThreadPool* pool) {
   FrameLights::Scratch& scratch = out.scratch;
   const auto group_of = [](const GpuLight& record) {
     return light_group(shadow_kind(record), algorithm_of(record));
@@ -167,10 +167,11 @@ void sort_by_group(FrameLights& out) {
   std::array<uint32_t, light_group_count + 1> cursor = out.group_begin;
   scratch.moved_to.resize(out.records.size());
   scratch.records.resize(out.records.size());
-  for (size_t i = 0; i < out.records.size(); ++i) {
-    scratch.moved_to[i] = cursor[group_of(out.records[i])]++;
-    scratch.records[scratch.moved_to[i]] = out.records[i];
-  }
+  for (size_t i = 0; i < out.records.size(); ++i) scratch.moved_to[i] = cursor[group_of(out.records[i])]++;
+  // The records themselves (208 bytes each) move in chunks on the pool.
+  ecs::run_in_pieces(pool, out.records.size(), 1024, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) scratch.records[scratch.moved_to[i]] = out.records[i];
+  });
   std::swap(out.records, scratch.records);
   for (ShadowMapView& map : out.maps) map.light = scratch.moved_to[map.light];
   for (ShadowCubeView& cube : out.cubes) cube.light = scratch.moved_to[cube.light];

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include "ecs/thread_pool.h"
 #include "ecs/transform_system.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
@@ -316,6 +317,33 @@ TEST(FrameLights, RecordsAreOrderedByLightGroup) {
     if (group_shadow_kind(group) == ShadowKind::none) continue;
     EXPECT_EQ(light_group(group_shadow_kind(group), group_algorithm(group)), group);
   }
+}
+
+// Sorting on a thread pool moves every record where the serial sort does: 5,000 records of
+// every group, their indices in the position field so that each can be followed.
+TEST(SortByGroup, OnAThreadPoolMovesTheRecordsAsSerially) {
+  FrameLights serial;
+  for (uint32_t i = 0; i < 5000; ++i) {
+    GpuLight record;
+    record.position_range = glm::vec4(float(i), 0.0f, 0.0f, 1.0f);
+    record.info = {(i * 7) % 4, 0u, (i * 3) % 5, i % 3 == 0 ? no_shadow_map : 0u};
+    serial.records.push_back(record);
+  }
+  FrameLights pooled = serial;
+  sort_by_group(serial);
+  ecs::ThreadPool pool(4);
+  sort_by_group(pooled, &pool);
+  EXPECT_EQ(pooled.group_begin, serial.group_begin);
+  ASSERT_EQ(pooled.records.size(), serial.records.size());
+  EXPECT_EQ(
+      std::memcmp(pooled.records.data(), serial.records.data(), serial.records.size() * sizeof(GpuLight)), 0);
+  // Within each group the lights keep their order (the serial sort's groups are tested above).
+  for (uint32_t group = 0; group < light_group_count; ++group) {
+    for (uint32_t i = pooled.group_begin[group] + 1; i < pooled.group_begin[group + 1]; ++i) {
+      EXPECT_LT(pooled.records[i - 1].position_range.x, pooled.records[i].position_range.x) << i;
+    }
+  }
+  EXPECT_GT(pooled.group_begin[light_group_count - 1], pooled.group_begin[1]);  // several groups
 }
 
 }  // namespace
