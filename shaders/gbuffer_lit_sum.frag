@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // The G-buffer (gbuffer.glsl) and the start of the lit sum, the ambient term times the base
 // colour (what lighting_ambient.glsl writes in a pass of its own); the background is the
-// target's clear colour. For deferred lighting in fragment passes on CPU drivers, where one
-// more target costs less than one more full-screen pass.
+// target's clear colour. For deferred lighting in fragment passes (--deferred-passes fragment),
+// which then need no pass of their own for it.
 #include "gbuffer.glsl"
 
 layout(location = 2) out vec4 out_lit_sum;

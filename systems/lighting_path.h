@@ -30,9 +30,10 @@ constexpr LightingPath cpu_lighting_for(uint32_t lights) {
 // How deferred lighting's per-light-group passes run: compute dispatches writing a storage image
 // (after a compute pass starting the lit sum), or fragment passes over one quad per tile with
 // lights of the group, adding into the lit sum by blending (the G-buffer pass starts it, which
-// saves a full-screen pass). On lavapipe the group passes cost about the same either way, and the
-// ambient pass 6-9 ms; on the H200 fragment passes are several times slower
-// (docs/PERFORMANCE.md). automatic: fragment on CPU devices, compute otherwise.
+// saves a full-screen pass). Compute measured faster on both kinds of device: on lavapipe (idle
+// VM, default scene, 1280x720) 157-165 ms a frame against 169-170, the group passes 10-15%
+// slower as fragment passes than the ambient pass they save; on the H200 fragment passes are
+// several times slower (docs/PERFORMANCE.md). automatic: compute.
 enum class DeferredPasses { automatic, compute, fragment };
 
 // What the lighting writes: the lit picture, or the shadow-only debug view (white diffuse surfaces

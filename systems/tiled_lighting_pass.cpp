@@ -43,10 +43,9 @@ std::string group_name(uint32_t group) {
   return "group " + std::to_string(group);
 }
 
-DeferredPasses resolve(DeferredPasses passes, const vk::VulkanContext& context) {
-  if (passes != DeferredPasses::automatic) return passes;
-  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? DeferredPasses::fragment
-                                                                        : DeferredPasses::compute;
+// Compute measured faster on both kinds of device (lighting_path.h).
+DeferredPasses resolve(DeferredPasses passes) {
+  return passes == DeferredPasses::automatic ? DeferredPasses::compute : passes;
 }
 
 VkShaderStageFlags stages_of(DeferredPasses passes) {
@@ -68,7 +67,7 @@ std::vector<VkDescriptorSetLayoutBinding> with_lit_sum(std::vector<VkDescriptorS
 
 TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses passes)
     : context_(context),
-      passes_(resolve(passes, context)),
+      passes_(resolve(passes)),
       stages_(stages_of(passes_)),
       light_resources_(context),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),

@@ -54,9 +54,7 @@ class TiledLightingPass {
   // compute or fragment.
   DeferredPasses passes() const { return passes_; }
   // Whether the G-buffer pass must start the lit sum (GBufferPass's writes_lit_sum): with fragment
-  // passes, where one more G-buffer target costs less than one more full-screen pass (lavapipe,
-  // 1280x720: the G-buffer 18.6-20.2 ms with it, against 13.7-17.8 plus an ambient pass of
-  // 6.2-8.6 ms).
+  // passes, which then need no pass of their own for it.
   bool lit_sum_from_gbuffer() const { return passes_ == DeferredPasses::fragment; }
 
  private:
