@@ -3,7 +3,6 @@
 // Light culling on GPUs (light_tiles_interface.glsl says what it writes): one workgroup per
 // screen tile, its threads reading the tile's depths and testing the lights side by side.
 #include "light_tiles_interface.glsl"
-#include "light_tiles.glsl"
 
 // SIDE x SIDE threads, each reading a block of the tile's depth: a GPU wants threads to test many
 // lights at once. At least 4, so that every light group has a thread.
@@ -54,10 +53,7 @@ void main() {
       farthest = max(farthest, thread_farthest[t]);
     }
     has_surfaces = farthest > 0.0;
-    vec2 texel = 2.0 / vec2(frame.screen.xy);
-    vec2 ndc_min = vec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE) * texel - 1.0;
-    vec2 ndc_max = min(vec2((gl_WorkGroupID.xy + 1u) * LIGHT_TILE_SIZE) * texel - 1.0, vec2(1.0));
-    tile_sphere = tile_bounding_sphere(frame.inverse_view_projection, ndc_min, ndc_max, nearest, farthest);
+    tile_sphere = visible_sphere_of_tile(gl_WorkGroupID.xy, nearest, farthest);
   }
   barrier();
 
@@ -102,12 +98,6 @@ void main() {
   }
   barrier();
   if (local < LIGHT_GROUP_COUNT) {
-    uint count = group_end[local] - group_first[local];
-    tile_ranges[tile * LIGHT_GROUP_COUNT + local] = uvec2(tile * MAX_LIGHTS_PER_TILE + group_first[local], count);
-    if (count > 0u) {
-      uint k = atomicAdd(group_commands[local].x, 1u);
-      atomicAdd(group_commands[LIGHT_GROUP_COUNT + local].y, 1u);
-      group_tiles[local * frame.screen.w + k] = tile;
-    }
+    publish_group_range(tile, local, group_first[local], group_end[local] - group_first[local]);
   }
 }

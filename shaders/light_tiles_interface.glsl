@@ -11,6 +11,7 @@
 #include "bindings.glsl"
 #include "light_groups.glsl"
 #include "light_record.glsl"
+#include "light_tiles.glsl"
 
 layout(std430, set = 0, binding = lights_binding) readonly buffer Lights { Light lights[]; };
 layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
@@ -35,6 +36,24 @@ uint group_of(uint light) {
   uint kind = l.info.w == NO_SHADOW_MAP ? SHADOW_KIND_NONE
                                         : (l.info.x == LIGHT_POINT ? SHADOW_KIND_CUBE : SHADOW_KIND_MAP);
   return light_group(kind, l.info.z);
+}
+
+// The sphere around tile `tile_xy`'s visible surfaces, between depths `nearest` and `farthest`.
+vec4 visible_sphere_of_tile(uvec2 tile_xy, float nearest, float farthest) {
+  vec2 texel = 2.0 / vec2(frame.screen.xy);
+  vec2 ndc_min = vec2(tile_xy * LIGHT_TILE_SIZE) * texel - 1.0;
+  vec2 ndc_max = min(vec2((tile_xy + 1u) * LIGHT_TILE_SIZE) * texel - 1.0, vec2(1.0));
+  return tile_bounding_sphere(frame.inverse_view_projection, ndc_min, ndc_max, nearest, farthest);
+}
+
+// Records that `tile`'s lights of `group` are the `count` entries of its list from `first` on,
+// and, when there are any, lists the tile for the group's dispatch and draw.
+void publish_group_range(uint tile, uint group, uint first, uint count) {
+  tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(tile * MAX_LIGHTS_PER_TILE + first, count);
+  if (count == 0u) return;
+  uint k = atomicAdd(group_commands[group].x, 1u);
+  atomicAdd(group_commands[LIGHT_GROUP_COUNT + group].y, 1u);
+  group_tiles[group * frame.screen.w + k] = tile;
 }
 
 #endif

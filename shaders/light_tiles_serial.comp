@@ -6,7 +6,6 @@
 // barrier, which was most of light_tiles.comp's cost there; here each lane walks its own tile's
 // depths and then the lights in order, which also gives the list its order for free.
 #include "light_tiles_interface.glsl"
-#include "light_tiles.glsl"
 
 layout(local_size_x = 8) in;
 
@@ -37,10 +36,7 @@ void main() {
   uint first = tile * MAX_LIGHTS_PER_TILE;
   uint count = 0u;
   if (farthest > 0.0) {
-    vec2 texel = 2.0 / vec2(frame.screen.xy);
-    vec2 ndc_min = vec2(origin) * texel - 1.0;
-    vec2 ndc_max = min(vec2(origin + int(LIGHT_TILE_SIZE)) * texel - 1.0, vec2(1.0));
-    vec4 sphere = tile_bounding_sphere(frame.inverse_view_projection, ndc_min, ndc_max, nearest, farthest);
+    vec4 sphere = visible_sphere_of_tile(tile_xy, nearest, farthest);
     for (uint i = 0u; i < frame.counts.x && count < MAX_LIGHTS_PER_TILE; ++i) {
       if (!light_reaches_sphere(lights[i], sphere)) continue;
       tile_lights[first + count] = i;
@@ -50,12 +46,5 @@ void main() {
       ++count;
     }
   }
-  for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) {
-    tile_ranges[tile * LIGHT_GROUP_COUNT + g] = uvec2(first + group_first[g], group_count[g]);
-    if (group_count[g] > 0u) {
-      uint k = atomicAdd(group_commands[g].x, 1u);
-      atomicAdd(group_commands[LIGHT_GROUP_COUNT + g].y, 1u);
-      group_tiles[g * frame.screen.w + k] = tile;
-    }
-  }
+  for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) publish_group_range(tile, g, group_first[g], group_count[g]);
 }
