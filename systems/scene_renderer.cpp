@@ -210,8 +210,8 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
         deferred_->gbuffer.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
     const LightTiles tiles =
         deferred_->light_tiles.add_to(graph, gbuffer.depth, records, light_count, view_projection);
-    lit_sum = deferred_->lighting.add_to(graph, gbuffer, tiles, atlas, records, lights_.group_begin,
-                                         view_projection, pose.eye, ambient_term);
+    lit_sum = deferred_->lighting.add_to(graph, gbuffer, tiles, atlas, records, view_projection, pose.eye,
+                                         ambient_term);
     depth = gbuffer.depth;
     light_tiles = tiles;
   }

@@ -96,11 +96,8 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses 
 void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView view) {
   current_.fill(VK_NULL_HANDLE);
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
-    uint32_t types = 0;  // the group's light types, bit t for type t (lights_interface.glsl)
-    for (uint32_t i = lights.group_begin[group]; i < lights.group_begin[group + 1]; ++i) {
-      types |= 1u << lights.records[i].info.x;
-    }
-    if (types == 0) continue;  // no light of the group this frame
+    const uint32_t types = lights.group_types[group];  // bit t for type t (lights_interface.glsl)
+    if (types == 0) continue;                          // no light of the group this frame
     vk::UniquePipeline& pipeline = pipelines_[group | types << 8 | static_cast<uint32_t>(view) << 16];
     current_[group] = pipeline.get();
     if (pipeline) continue;
@@ -122,10 +119,10 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
   }
 }
 
-rg::ImageHandle TiledLightingPass::add_to(
-    rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles, rg::ImageHandle atlas,
-    const vk::Buffer& lights, const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-    const glm::mat4& view_projection, const glm::vec3& camera_position, float ambient) const {
+rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer& gbuffer,
+                                          const LightTiles& tiles, rg::ImageHandle atlas,
+                                          const vk::Buffer& lights, const glm::mat4& view_projection,
+                                          const glm::vec3& camera_position, float ambient) const {
   // A copy: declaring images may move the graph's resource list.
   const rg::ImageDesc screen = graph.resources()[gbuffer.albedo.index].image;
   const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
@@ -168,10 +165,7 @@ rg::ImageHandle TiledLightingPass::add_to(
         });
   }
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
-    if (group_begin[group + 1] == group_begin[group]) continue;  // no light of the group this frame
-    if (current_[group] == VK_NULL_HANDLE) {
-      throw std::logic_error("TiledLightingPass: add_to with lights prepare() did not see");
-    }
+    if (current_[group] == VK_NULL_HANDLE) continue;  // no light of the group this frame
     graph.add_pass(
         "lighting " + group_name(group),
         [&](rg::PassBuilder& b) {

@@ -41,15 +41,13 @@ class TiledLightingPass {
   static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
 
   // Adds the ambient pass, which creates the lit sum (unless the G-buffer pass started it:
-  // GBuffer::lit_sum, which fragment passes require), and one pass per group with lights
-  // (group_begin as in shadows::FrameLights); returns the lit sum's newest version. `lights` must
-  // live until the frame is recorded. Positions come from the depth buffer through the camera's
-  // `view_projection`; `ambient` is the ambient term kA * IA.
+  // GBuffer::lit_sum, which fragment passes require), and one pass per group with lights in the
+  // last prepare(); returns the lit sum's newest version. `lights`, the records prepare() saw,
+  // must live until the frame is recorded. Positions come from the depth buffer through the
+  // camera's `view_projection`; `ambient` is the ambient term kA * IA.
   rg::ImageHandle add_to(rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles,
-                         rg::ImageHandle atlas, const vk::Buffer& lights,
-                         const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-                         const glm::mat4& view_projection, const glm::vec3& camera_position,
-                         float ambient) const;
+                         rg::ImageHandle atlas, const vk::Buffer& lights, const glm::mat4& view_projection,
+                         const glm::vec3& camera_position, float ambient) const;
 
   // compute or fragment.
   DeferredPasses passes() const { return passes_; }
@@ -70,7 +68,8 @@ class TiledLightingPass {
   vk::PipelineLayout layout_;
   // By group | light types << 8 | LightingView << 16.
   std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;
-  std::array<VkPipeline, shadows::light_group_count> current_{};  // this frame's, by group
+  // This frame's, by group; null for a group without lights.
+  std::array<VkPipeline, shadows::light_group_count> current_{};
 };
 
 }  // namespace sg

@@ -162,7 +162,12 @@ void sort_by_group(FrameLights& out, ecs::ThreadPool* pool) {
     return light_group(shadow_kind(record), algorithm_of(record));
   };
   out.group_begin.fill(0);
-  for (const GpuLight& record : out.records) ++out.group_begin[group_of(record) + 1];
+  out.group_types.fill(0);
+  for (const GpuLight& record : out.records) {
+    const uint32_t group = group_of(record);
+    ++out.group_begin[group + 1];
+    out.group_types[group] |= 1u << record.info.x;
+  }
   for (uint32_t g = 0; g < light_group_count; ++g) out.group_begin[g + 1] += out.group_begin[g];
   std::array<uint32_t, light_group_count + 1> cursor = out.group_begin;
   scratch.moved_to.resize(out.records.size());

@@ -92,6 +92,9 @@ struct FrameLights {
   // [group_begin[g], group_begin[g + 1]), so a pass that shades one group reads one range.
   std::vector<GpuLight> records;
   std::array<uint32_t, light_group_count + 1> group_begin{};
+  // After sort_by_group, bit t of group_types[g] is set when group g has lights of type t
+  // (GpuLight::info.x): a group's pass need hold only those types' code.
+  std::array<uint32_t, light_group_count> group_types{};
   std::vector<ShadowMapView> maps;
   std::vector<ShadowCubeView> cubes;
   ecs::Tick gathered_at = 0;  // the world's tick at the last gather: `changed` compares with it

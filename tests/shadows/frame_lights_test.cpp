@@ -312,6 +312,17 @@ TEST(FrameLights, RecordsAreOrderedByLightGroup) {
     EXPECT_EQ(lights.records[cube.light].info.x, uint32_t(GpuLightType::point));
     EXPECT_GE(cube.light, lights.group_begin[cube_pcf]);
   }
+  // Each group's light types: bit t for GpuLightType t, none for an empty group.
+  const auto bit = [](GpuLightType type) { return 1u << uint32_t(type); };
+  for (uint32_t group = 0; group < light_group_count; ++group) {
+    uint32_t types = 0;
+    for (uint32_t i = lights.group_begin[group]; i < lights.group_begin[group + 1]; ++i) {
+      types |= 1u << lights.records[i].info.x;
+    }
+    EXPECT_EQ(lights.group_types[group], types) << "group " << group;
+  }
+  EXPECT_EQ(lights.group_types[cube_pcf], bit(GpuLightType::point));
+  EXPECT_EQ(lights.group_types[map_pcf] & bit(GpuLightType::point), 0u);
   // Groups number the same on both sides of the shader boundary.
   for (uint32_t group = 0; group < light_group_count; ++group) {
     if (group_shadow_kind(group) == ShadowKind::none) continue;
