@@ -26,29 +26,6 @@ uint64_t importance_bits(const ShadowRequest& request) {
   return std::bit_cast<uint32_t>(request.importance > 0.0f ? request.importance : 0.0f);
 }
 
-// Indices of the requests with a shadow, least important first, ties by key so that the order
-// does not depend on the order of requests. A radix sort: a plan() may sort 100,000 lights.
-std::vector<uint32_t> least_important_first(std::span<const ShadowRequest> requests,
-                                            std::span<const uint32_t> resolutions) {
-  std::vector<uint64_t> order;  // importance bits << 32 | request index
-  for (uint32_t i = 0; i < requests.size(); ++i) {
-    if (resolutions[i] > 0) order.push_back(importance_bits(requests[i]) << 32 | i);
-  }
-  std::vector<uint64_t> scratch;
-  radix_sort(
-      order, scratch, [](uint64_t value) { return value >> 32; }, 32);
-  const auto key = [&](uint64_t value) { return requests[uint32_t(value)].key; };
-  for (auto run = order.begin(); run != order.end();) {
-    const auto run_end =
-        std::find_if(run, order.end(), [&](uint64_t value) { return value >> 32 != *run >> 32; });
-    if (run_end - run > 1) std::sort(run, run_end, [&](uint64_t a, uint64_t b) { return key(a) < key(b); });
-    run = run_end;
-  }
-  std::vector<uint32_t> indices(order.size());
-  std::transform(order.begin(), order.end(), indices.begin(), [](uint64_t value) { return uint32_t(value); });
-  return indices;
-}
-
 }  // namespace
 
 ShadowAtlasPlanner::ShadowAtlasPlanner(AtlasConfig config)
@@ -129,6 +106,23 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   update_stats();
 }
 
+// A radix sort, then keys within runs of equal importance: a plan() may sort 100,000 lights.
+void ShadowAtlasPlanner::order_least_important_first(std::span<const ShadowRequest> requests) {
+  by_importance_.clear();
+  for (uint32_t i = 0; i < requests.size(); ++i) {
+    if (resolution_[i] > 0) by_importance_.push_back(importance_bits(requests[i]) << 32 | i);
+  }
+  radix_sort(
+      by_importance_, by_importance_scratch_, [](uint64_t value) { return value >> 32; }, 32);
+  const auto key = [&](uint64_t value) { return requests[uint32_t(value)].key; };
+  for (auto run = by_importance_.begin(); run != by_importance_.end();) {
+    const auto run_end =
+        std::find_if(run, by_importance_.end(), [&](uint64_t value) { return value >> 32 != *run >> 32; });
+    if (run_end - run > 1) std::sort(run, run_end, [&](uint64_t a, uint64_t b) { return key(a) < key(b); });
+    run = run_end;
+  }
+}
+
 void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests) {
   const size_t previous_requests = light_of_request_.size();
   light_of_request_.resize(requests.size());
@@ -188,7 +182,7 @@ void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests) {
   uint64_t excess = texels_that_do_not_fit();
   if (excess == 0) return;
 
-  const std::vector<uint32_t> by_importance = least_important_first(requests, resolution_);
+  order_least_important_first(requests);
   // Passes from the least important light upward, each demoting every light above its floor by
   // one tier: the quality floor while any light is above it, then the smallest tier; once a pass
   // finds none, lights are dropped from the least important upward.
@@ -199,7 +193,7 @@ void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests) {
   // Texels one more step saves; 0 when every light is dropped.
   const auto take_one_step = [&]() -> uint64_t {
     for (;;) {
-      if (next == by_importance.size()) {
+      if (next == by_importance_.size()) {
         if (stage == Stage::dropping) return 0;
         if (!demoted_in_pass)
           stage = stage == Stage::to_quality_floor ? Stage::to_smallest_tier : Stage::dropping;
@@ -207,7 +201,7 @@ void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests) {
         next = 0;
         continue;
       }
-      const uint32_t i = by_importance[next++];
+      const auto i = static_cast<uint32_t>(by_importance_[next++]);  // the low 32 bits
       uint32_t& resolution = resolution_[i];
       std::vector<uint64_t>& per_tier = requests[i].cube ? cubes_per_tier_ : maps_per_tier_;
       const uint64_t tiles = tile_count(requests[i].cube);

@@ -117,6 +117,9 @@ class ShadowAtlasPlanner {
   void match_lights(std::span<const ShadowRequest> requests);
   void release_lights_not_requested();
   void fit_budget(std::span<const ShadowRequest> requests);
+  // by_importance_: the requests with a shadow, least important first, ties by key so that the
+  // order does not depend on the order of requests.
+  void order_least_important_first(std::span<const ShadowRequest> requests);
   uint64_t texels_that_do_not_fit() const;
   // Request indices ordered by decreasing resolution, cubes before 2D maps of the same size.
   std::vector<uint32_t> largest_first(std::span<const ShadowRequest> requests,
@@ -142,6 +145,8 @@ class ShadowAtlasPlanner {
   // Per tier (0: page_size, 1: half that, ...): the 2D maps and cubes the budget holds.
   std::vector<uint64_t> maps_per_tier_;
   std::vector<uint64_t> cubes_per_tier_;
+  std::vector<uint64_t> by_importance_;  // importance bits << 32 | request index
+  std::vector<uint64_t> by_importance_scratch_;
 
   AtlasStats stats_;
   BudgetEffect reported_effect_;
