@@ -188,6 +188,18 @@ void add_options(CLI::App& app, Options& o) {
          "measured faster on GPUs and on lavapipe")
       ->check(CLI::IsMember({"auto", "compute", "fragment"}))
       ->default_str("auto");
+  app.add_option_function<std::string>(
+         "--lit-sum-start",
+         [&o](const std::string& value) {
+           o.lit_sum_start = value == "pass"      ? LitSumStart::pass
+                             : value == "gbuffer" ? LitSumStart::gbuffer
+                                                  : LitSumStart::automatic;
+         },
+         "Where deferred lighting in compute starts the lit sum (ambient light and background): a "
+         "full-screen pass of its own, or a G-buffer target; auto: the G-buffer on CPU devices, the "
+         "pass on GPUs (fragment passes always take the G-buffer's)")
+      ->check(CLI::IsMember({"auto", "pass", "gbuffer"}))
+      ->default_str("auto");
   CLI::Option* naive = app.add_flag(
       "--naive", o.naive,
       "The source documents' way, as a baseline: a pass per shadow view and six per cube, every map "

@@ -46,6 +46,7 @@ struct Options {
   bool shadow_cache = true;                         // --shadow-cache off: redraw every map every frame
   LightingPath lighting = LightingPath::automatic;  // --lighting auto|forward|deferred
   DeferredPasses deferred_passes = DeferredPasses::automatic;  // --deferred-passes auto|compute|fragment
+  LitSumStart lit_sum_start = LitSumStart::automatic;          // --lit-sum-start auto|pass|gbuffer
   float exposure = 1.0f;                                       // --exposure
   LightingView view = LightingView::lit;                       // --view lit|shadows
   bool animate = true;  // --animate off: glTF animations and the stress scene's orbits stand still

@@ -51,6 +51,7 @@ struct RendererSettings {
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
   LightingPath lighting = LightingPath::automatic;
   DeferredPasses deferred_passes = DeferredPasses::automatic;  // the deferred path's
+  LitSumStart lit_sum_start = LitSumStart::automatic;          // the deferred path's
   bool cull_casters = true;  // off: every shadow view draws every caster (the naive baseline)
   // Batched falls back to per-light where the device cannot draw views into atlas layers at once.
   shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;

@@ -48,6 +48,12 @@ DeferredPasses resolve(DeferredPasses passes) {
   return passes == DeferredPasses::automatic ? DeferredPasses::compute : passes;
 }
 
+bool starts_in_gbuffer(DeferredPasses passes, LitSumStart start, const vk::VulkanContext& context) {
+  if (passes == DeferredPasses::fragment) return true;  // they blend into a colour attachment
+  if (start != LitSumStart::automatic) return start == LitSumStart::gbuffer;
+  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+}
+
 VkShaderStageFlags stages_of(DeferredPasses passes) {
   return passes == DeferredPasses::compute ? VK_SHADER_STAGE_COMPUTE_BIT
                                            : VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
@@ -65,9 +71,10 @@ std::vector<VkDescriptorSetLayoutBinding> with_lit_sum(std::vector<VkDescriptorS
 
 }  // namespace
 
-TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses passes)
+TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses passes, LitSumStart start)
     : context_(context),
       passes_(resolve(passes)),
+      lit_sum_from_gbuffer_(starts_in_gbuffer(passes_, start, context)),
       stages_(stages_of(passes_)),
       light_resources_(context),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
@@ -77,7 +84,7 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses 
                        {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute_stage}},
                       vk::push_constants<AmbientConstants>(compute_stage)),
       ambient_pipeline_(
-          in_compute() ? vk::create_compute_pipeline(
+          !lit_sum_from_gbuffer_ ? vk::create_compute_pipeline(
                              context, {lighting_ambient_comp, {}, ambient_layout_.get(), "lighting ambient"})
                        : vk::UniquePipeline{}),
       layout_(
@@ -135,8 +142,9 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
   // Fragment passes add to the lit sum by blending; every pixel of it is written by the first.
   const rg::Usage lit_sum_usage = compute ? rg::Usage::storage_compute : rg::Usage::colour_attachment;
   rg::ImageHandle lit_sum = gbuffer.lit_sum;
-  if (!compute && !lit_sum.valid()) {
-    throw std::logic_error("TiledLightingPass: fragment passes add to the lit sum the G-buffer starts");
+  if (lit_sum_from_gbuffer_ != lit_sum.valid()) {
+    throw std::logic_error(lit_sum_from_gbuffer_ ? "TiledLightingPass: the G-buffer must start the lit sum"
+                                                 : "TiledLightingPass: the lit sum starts in the ambient pass");
   }
   if (!lit_sum.valid()) {
     graph.add_pass(

@@ -1,6 +1,6 @@
 #pragma once
 // Tiled deferred lighting: the lit sum starts from the ambient term and the background (a
-// compute pass, shaders/lighting_ambient.comp, or the G-buffer pass itself), then for each light
+// compute pass, shaders/lighting_ambient.comp, or the G-buffer pass itself: LitSumStart), then for each light
 // group that has lights one pass with that group's shadow code compiled in
 // (shaders/tiled_lighting.glsl), over the tiles that have lights of the group (an indirect
 // dispatch or draw from LightTilesPass), adding them to the lit sum. The group passes are compute
@@ -30,8 +30,10 @@ namespace sg {
 
 class TiledLightingPass {
  public:
-  // `passes` automatic is resolved for the context's device (passes() says how).
-  TiledLightingPass(vk::VulkanContext& context, DeferredPasses passes);
+  // `passes` and `start` automatic are resolved for the context's device (passes() and
+  // lit_sum_from_gbuffer() say how).
+  TiledLightingPass(vk::VulkanContext& context, DeferredPasses passes,
+                    LitSumStart start = LitSumStart::automatic);
 
   // Picks, and compiles when first needed, the pipeline of each group that has lights in
   // `lights` (sorted by group): each holds one algorithm's shadow code and only the code of the
@@ -41,7 +43,7 @@ class TiledLightingPass {
   static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
 
   // Adds the ambient pass, which creates the lit sum (unless the G-buffer pass started it:
-  // GBuffer::lit_sum, which fragment passes require), and one pass per group with lights in the
+  // GBuffer::lit_sum, which lit_sum_from_gbuffer() requires), and one pass per group with lights in the
   // last prepare(); returns the lit sum's newest version. `lights`, the records prepare() saw,
   // must live until the frame is recorded. Positions come from the depth buffer through the
   // camera's `view_projection`; `ambient` is the ambient term kA * IA.
@@ -51,20 +53,21 @@ class TiledLightingPass {
 
   // compute or fragment.
   DeferredPasses passes() const { return passes_; }
-  // Whether the G-buffer pass must start the lit sum (GBufferPass's writes_lit_sum): with fragment
-  // passes, which then need no pass of their own for it.
-  bool lit_sum_from_gbuffer() const { return passes_ == DeferredPasses::fragment; }
+  // Whether the G-buffer pass must start the lit sum (GBufferPass's writes_lit_sum), the
+  // ambient pass then left out (LitSumStart, lighting_path.h).
+  bool lit_sum_from_gbuffer() const { return lit_sum_from_gbuffer_; }
 
  private:
   bool in_compute() const { return passes_ == DeferredPasses::compute; }
 
   vk::VulkanContext& context_;
   DeferredPasses passes_;
+  bool lit_sum_from_gbuffer_;
   VkShaderStageFlags stages_;  // what reads the passes' resources
   LightResources light_resources_;
   vk::UniqueSampler nearest_;  // G-buffer reads
   vk::PipelineLayout ambient_layout_;
-  vk::UniquePipeline ambient_pipeline_;  // compute only
+  vk::UniquePipeline ambient_pipeline_;  // unless the G-buffer starts the lit sum
   vk::PipelineLayout layout_;
   // By group | light types << 8 | LightingView << 16.
   std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;

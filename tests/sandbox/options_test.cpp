@@ -119,6 +119,9 @@ TEST(SandboxOptions, LightingOptions) {
   EXPECT_EQ(parse_ok({"--lighting", "forward"}).lighting, LightingPath::forward);
   EXPECT_EQ(parse_ok({"--deferred-passes", "compute"}).deferred_passes, DeferredPasses::compute);
   EXPECT_EQ(parse_ok({"--deferred-passes", "fragment"}).deferred_passes, DeferredPasses::fragment);
+  EXPECT_EQ(defaults.lit_sum_start, LitSumStart::automatic);
+  EXPECT_EQ(parse_ok({"--lit-sum-start", "pass"}).lit_sum_start, LitSumStart::pass);
+  EXPECT_EQ(parse_ok({"--lit-sum-start", "gbuffer"}).lit_sum_start, LitSumStart::gbuffer);
   EXPECT_EQ(parse_ok({"--lighting", "deferred", "--exposure", "0.5"}).exposure, 0.5f);
   EXPECT_TRUE(parse_ok({"--naive"}).naive);
   for (const std::vector<std::string>& bad : {std::vector<std::string>{"--lighting", "raytraced"},

@@ -168,23 +168,31 @@ TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
   EXPECT_LE(largest_difference(fused, forward), 2);
 }
 
-// Deferred lighting's passes as compute dispatches or as fragment passes blending into the lit sum:
-// the same shading code over the same tiles, so the same picture to rounding (the 16-bit sum, and
-// the G-buffer's ambient term takes the base colour before its 8-bit storage).
+// Deferred lighting's passes as compute dispatches or as fragment passes blending into the lit sum,
+// and in compute the lit sum started by a pass of its own or by the G-buffer: the same shading code
+// over the same tiles, so the same picture to rounding (the 16-bit sum, and the G-buffer's ambient
+// term takes the base colour before its 8-bit storage).
 TEST_F(SandboxFrameTest, DeferredLightingInFragmentPassesMatchesCompute) {
   sandbox::Options options = lit_by(LightingPath::deferred);
   options.deferred_passes = DeferredPasses::compute;
+  options.lit_sum_start = LitSumStart::pass;
   const vk::Rgba8Image compute = render(options, 2);
   const std::vector<std::string> compute_passes = passes;
+  options.lit_sum_start = LitSumStart::gbuffer;
+  const vk::Rgba8Image compute_from_gbuffer = render(options, 2);
+  const std::vector<std::string> compute_from_gbuffer_passes = passes;
   options.deferred_passes = DeferredPasses::fragment;
   const vk::Rgba8Image fragment = render(options, 2);
-  // In compute the lit sum starts in a pass of its own; fragment passes add to the G-buffer's.
+  // Fragment passes add to the G-buffer's start; so may compute passes, or to a pass of its own.
+  EXPECT_EQ(compute_from_gbuffer_passes, passes);
   std::vector<std::string> with_ambient_pass = passes;
   with_ambient_pass.insert(std::find(with_ambient_pass.begin(), with_ambient_pass.end(), "lighting 2d hard"),
                            "lighting ambient");
   EXPECT_EQ(compute_passes, with_ambient_pass);
-  EXPECT_LE(largest_difference(compute, fragment), 1) << "levels of 255 in the worst channel";
-  EXPECT_LT(share_differing(compute, fragment, 0), 0.05);
+  for (const vk::Rgba8Image* other : {&compute_from_gbuffer, &fragment}) {
+    EXPECT_LE(largest_difference(compute, *other), 1) << "levels of 255 in the worst channel";
+    EXPECT_LT(share_differing(compute, *other, 0), 0.05);
+  }
 }
 
 // automatic on a CPU device, each frame: the fused forward pass for up to four lights (fewest
