@@ -84,9 +84,10 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses 
                        {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute_stage}},
                       vk::push_constants<AmbientConstants>(compute_stage)),
       ambient_pipeline_(
-          !lit_sum_from_gbuffer_ ? vk::create_compute_pipeline(
-                             context, {lighting_ambient_comp, {}, ambient_layout_.get(), "lighting ambient"})
-                       : vk::UniquePipeline{}),
+          !lit_sum_from_gbuffer_
+              ? vk::create_compute_pipeline(
+                    context, {lighting_ambient_comp, {}, ambient_layout_.get(), "lighting ambient"})
+              : vk::UniquePipeline{}),
       layout_(
           context.device(),
           LightResources::bindings(
@@ -143,8 +144,9 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
   const rg::Usage lit_sum_usage = compute ? rg::Usage::storage_compute : rg::Usage::colour_attachment;
   rg::ImageHandle lit_sum = gbuffer.lit_sum;
   if (lit_sum_from_gbuffer_ != lit_sum.valid()) {
-    throw std::logic_error(lit_sum_from_gbuffer_ ? "TiledLightingPass: the G-buffer must start the lit sum"
-                                                 : "TiledLightingPass: the lit sum starts in the ambient pass");
+    throw std::logic_error(lit_sum_from_gbuffer_
+                               ? "TiledLightingPass: the G-buffer must start the lit sum"
+                               : "TiledLightingPass: the lit sum starts in the ambient pass");
   }
   if (!lit_sum.valid()) {
     graph.add_pass(

@@ -81,13 +81,20 @@ sandbox::Options lit_by(LightingPath lighting) {
 }
 
 TEST_F(SandboxFrameTest, DefaultSceneRendersThroughTheGraph) {
-  const std::vector<std::string> lighting{
-      "g-buffer",           "light tiles reset",  "light tiles",       "lighting ambient",
-      "lighting 2d hard",   "lighting 2d pcf",    "lighting 2d noise", "lighting 2d pcss_noise",
-      "lighting cube hard", "lighting cube pcss", "tone map"};
+  const std::vector<std::string> lighting{"g-buffer",
+                                          "light tiles reset",
+                                          "light tiles",
+                                          "lighting 2d hard",
+                                          "lighting 2d pcf",
+                                          "lighting 2d noise",
+                                          "lighting 2d pcss_noise",
+                                          "lighting cube hard",
+                                          "lighting cube pcss",
+                                          "tone map"};
   // The first frame draws every shadow view (lavapipe has shaderOutputLayer, so they are
-  // batched), then the G-buffer, light culling, the ambient term, one lighting pass per light group
-  // the scene uses (its six lights use six of the eleven), tone mapping.
+  // batched), then the G-buffer (which on a CPU device starts the lit sum with the ambient term),
+  // light culling, one lighting pass per light group the scene uses (its six lights use six of
+  // the eleven), tone mapping.
   render(lit_by(LightingPath::deferred), 1);
   EXPECT_EQ(passes, followed_by(batched_shadow_passes, lighting));
   // Nothing moves in the default scene: later frames keep every map.
