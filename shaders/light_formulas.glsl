@@ -49,8 +49,9 @@ float perspective_view_depth(float stored_depth, float near, float far) {
   return near * far / (far - stored_depth * (far - near));
 }
 
-float perspective_stored_depth(float view_depth, float near, float far) {
-  return (far - near * far / view_depth) / (far - near);
+// d(stored depth)/d(view depth) at view depth z: n f / ((f - n) z^2).
+float perspective_stored_depth_slope(float view_depth, float near, float far) {
+  return near * far / ((far - near) * view_depth * view_depth);
 }
 
 // PCSS penumbra width on the receiver, in world units (section 4.4 b), for perspective and cube
@@ -112,7 +113,8 @@ vec3 cube_face_uv(vec3 direction) {
     tc = -direction.y;
     ma = a.z;
   }
-  return vec3(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f), face);
+  float half_inverse = 0.5f / ma;  // one division, not two: CPU drivers wait on each
+  return vec3(sc * half_inverse + 0.5f, tc * half_inverse + 0.5f, face);
 }
 
 // PCG-based integer hash (Jarzynski and Olano, "Hash Functions for GPU Rendering", 2020):

@@ -3,10 +3,11 @@
 // lights' cube maps (six tiles of one layer, one per face). Entry point: light_shadow_as(). Every function returns the shadow factor
 // `shade` in [0, 1], 1 = fully shadowed; a point outside the map or beyond its far plane is lit.
 //
-// Depths are compared as *normalized linear depth*, so that a bias means the same distance
-// anywhere in a map: view depth / far for perspective 2D maps (the stored depth is converted,
-// light_formulas.glsl), the stored depth itself for orthographic maps (linear over near..far),
-// and distance / far for cube maps, which store exactly that (shadow_cube.frag).
+// Biases are *normalized linear depth*, so that a bias means the same distance anywhere in a
+// map: view depth / far for perspective 2D maps, the stored depth itself for orthographic maps
+// (linear over near..far), and distance / far for cube maps, which store exactly that
+// (shadow_cube.frag). Kernel taps compare fetched depths as stored, with no conversion and no
+// division per tap: a CPU driver's divider is what the kernels would otherwise wait on.
 //
 // Samplers (lights_interface.glsl): shadow_atlas plain reads with a NEAREST sampler; shadow_atlas_compare a comparison sampler over the same image with LINEAR filtering
 // (each fetch is a 2x2 bilinear PCF) and VK_COMPARE_OP_LESS_OR_EQUAL (1 = lit). Every fetch has an
@@ -96,12 +97,16 @@ vec3 rotate(vec4 q, vec3 v) {
 
 // ---- 2D maps ----
 
+// The receiver in a 2D map, its depths as the map stores them (perspective depth for spot
+// maps): a plane's stored depth is affine in the map's uv (for perspective maps because 1/z is),
+// so the plane's depth at any tap is one dot product away.
 struct MapPoint {
-  vec2 uv;           // in the light's own square map, [0, 1]^2
-  float depth;       // normalized linear depth of the receiver
-  float view_depth;  // its distance along the light's axis, world units
-  vec2 depth_slope;  // d(depth)/d(uv) across the receiver's tangent plane (receiver-plane bias)
-  float texel_slack; // the most depth can change across one texel of that plane
+  vec2 uv;            // in the light's own square map, [0, 1]^2
+  float depth;        // the receiver's stored depth
+  float view_depth;   // its distance along the light's axis, world units
+  vec2 depth_slope;   // d(stored depth)/d(uv) across the receiver's tangent plane (receiver-plane bias)
+  float texel_slack;  // the most stored depth can change across one texel of that plane
+  float per_linear;   // d(stored depth)/d(normalized linear depth) at the receiver: biases to stored units
 };
 
 // Directional and cylinder maps are orthographic, spot maps perspective: where LIGHT_TYPES says
@@ -117,12 +122,6 @@ float map_linear_depth(Light light, float stored_depth) {
   if (map_is_orthographic(light)) return stored_depth;
   return perspective_view_depth(stored_depth, light.shadow_depth.x, light.shadow_depth.y) /
          light.shadow_depth.y;
-}
-
-float map_stored_depth(Light light, float linear_depth) {
-  if (map_is_orthographic(light)) return linear_depth;
-  return perspective_stored_depth(linear_depth * light.shadow_depth.y, light.shadow_depth.x,
-                                  light.shadow_depth.y);
 }
 
 float map_view_depth(Light light, float linear_depth) {
@@ -146,6 +145,7 @@ bool project_to_map(Light light, vec3 world_pos, vec3 normal, out MapPoint point
   point.view_depth = 0.0;
   point.depth_slope = vec2(0.0);
   point.texel_slack = 0.0;
+  point.per_linear = 1.0;
   if (clip.w <= 0.0) return false;  // behind a perspective light
   vec3 ndc = clip.xyz / clip.w;
   point.uv = ndc.xy * 0.5 + 0.5;
@@ -153,18 +153,22 @@ bool project_to_map(Light light, vec3 world_pos, vec3 normal, out MapPoint point
       ndc.z < 0.0 || ndc.z > 1.0) {
     return false;
   }
-  point.depth = map_linear_depth(light, ndc.z);
-  point.view_depth = map_view_depth(light, point.depth);
+  point.depth = ndc.z;
+  point.view_depth = map_view_depth(light, map_linear_depth(light, ndc.z));
+  if (!map_is_orthographic(light)) {
+    float near = light.shadow_depth.x, far = light.shadow_depth.y;
+    point.per_linear = perspective_stored_depth_slope(point.view_depth, near, far) * far;
+  }
 
   mat4 m = light.shadow_matrix;
   vec3 row_x = vec3(m[0][0], m[1][0], m[2][0]);
   vec3 row_y = vec3(m[0][1], m[1][1], m[2][1]);
   vec3 row_z = vec3(m[0][2], m[1][2], m[2][2]);
   vec3 row_w = vec3(m[0][3], m[1][3], m[2][3]);
-  // uv = (clip.xy / clip.w + 1) / 2; linear depth = clip.w / far (perspective) or clip.z.
+  // uv = (clip.xy / clip.w + 1) / 2, stored depth = clip.z / clip.w (orthographic: row_w = 0, clip.w = 1).
   vec3 du = 0.5 * (row_x - ndc.x * row_w) / clip.w;
   vec3 dv = 0.5 * (row_y - ndc.y * row_w) / clip.w;
-  vec3 dz = map_is_orthographic(light) ? row_z : row_w / light.shadow_depth.y;
+  vec3 dz = (row_z - ndc.z * row_w) / clip.w;
   vec3 t1 = normalize(abs(normal.y) < 0.9 ? cross(normal, vec3(0.0, 1.0, 0.0))
                                           : cross(normal, vec3(1.0, 0.0, 0.0)));
   vec3 t2 = cross(normal, t1);
@@ -174,17 +178,19 @@ bool project_to_map(Light light, vec3 world_pos, vec3 normal, out MapPoint point
   if (abs(det) > 1e-12) {
     vec2 depth_per_tangent = vec2(dot(dz, t1), dot(dz, t2));
     point.depth_slope = depth_per_tangent * inverse(uv_per_tangent);
-    // Held to 10% of the depth range per texel, for planes nearly edge-on.
+    // Held to 10% of the (linear) depth range per texel, for planes nearly edge-on.
     float texel = light.shadow_depth.z;
-    point.depth_slope = clamp(point.depth_slope, vec2(-0.1 / texel), vec2(0.1 / texel));
+    float most = 0.1 * point.per_linear / texel;
+    point.depth_slope = clamp(point.depth_slope, vec2(-most), vec2(most));
     point.texel_slack = (abs(point.depth_slope.x) + abs(point.depth_slope.y)) * texel;
   }
   return true;
 }
 
-// The receiver plane's linear depth at map uv point.uv + offset, minus `bias`.
+// The receiver plane's stored depth at map uv point.uv + offset, less `bias` (normalized linear
+// depth, turned into stored units at the receiver).
 float plane_reference(MapPoint point, vec2 offset, float bias) {
-  return point.depth + dot(point.depth_slope, offset) - bias;
+  return point.depth + dot(point.depth_slope, offset) - bias * point.per_linear;
 }
 
 // Atlas coordinates of map uv `uv`, held half a texel inside the light's region so that
@@ -195,33 +201,32 @@ vec3 atlas_coord(Light light, vec2 uv) {
   return vec3(light.shadow_rect.xy + inside * light.shadow_rect.zw, float(light.info.w));
 }
 
-float fetch_linear_depth(Light light, vec2 uv) {
-  return map_linear_depth(light, textureLod(shadow_atlas, atlas_coord(light, uv), 0.0).r);
+float fetch_depth(Light light, vec2 uv) {
+  return textureLod(shadow_atlas, atlas_coord(light, uv), 0.0).r;
 }
 
 // Bilinear 2x2 PCF of the hardware: the shadowed fraction around uv for a stored-depth reference.
-float compare_filtered(Light light, vec2 uv, float reference_stored) {
-  vec4 coord = vec4(atlas_coord(light, uv), reference_stored);
+float compare_filtered(Light light, vec2 uv, float reference) {
+  vec4 coord = vec4(atlas_coord(light, uv), reference);
   return 1.0 - textureGrad(shadow_atlas_compare, coord, vec2(0.0), vec2(0.0));
 }
 
 // The centre of the light-map texel that a nearest fetch at `uv` reads, relative to `uv`.
 vec2 to_texel_centre(Light light, vec2 uv) {
   float texels = 1.0 / light.shadow_depth.z;
-  return (floor(uv * texels) + 0.5) / texels - uv;
+  return (floor(uv * texels) + 0.5) * light.shadow_depth.z - uv;
 }
 
 // 4.1: z - bias > depth(uv) ? 1 : 0, on the nearest texel (z taken where that texel's depth was).
 float shadow_2d_hard(Light light, MapPoint point, float bias) {
   float reference = plane_reference(point, to_texel_centre(light, point.uv), bias);
-  return reference > fetch_linear_depth(light, point.uv) ? 1.0 : 0.0;
+  return reference > fetch_depth(light, point.uv) ? 1.0 : 0.0;
 }
 
 // A hardware 2x2 comparison at uv + offset against the receiver plane there; the four texels'
 // centres lie within a texel, so the plane's change across one texel is given as slack.
 float compare_plane(Light light, MapPoint point, vec2 offset, float bias) {
-  float reference = plane_reference(point, offset, bias + point.texel_slack);
-  return compare_filtered(light, point.uv + offset, map_stored_depth(light, reference));
+  return compare_filtered(light, point.uv + offset, plane_reference(point, offset, bias) - point.texel_slack);
 }
 
 // 4.2: the hard test averaged over a (2k+1)^2 grid of offsets (x, y) * texel * pcfRadius.
@@ -269,7 +274,7 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, uvec2
   float blockers = 0.0;
   [[unroll]] for (uint i = 0u; i < PCSS_BLOCKER_SAMPLES; ++i) {
     vec2 offset = rotation * POISSON_DISK[i] * search_uv;
-    float depth = fetch_linear_depth(light, point.uv + offset);
+    float depth = fetch_depth(light, point.uv + offset);
     if (depth < plane_reference(point, offset + to_texel_centre(light, point.uv + offset), bias)) {
       blocker_sum += depth;
       blockers += 1.0;
@@ -277,7 +282,8 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, uvec2
   }
   if (blockers == 0.0) return 0.0;
 
-  float blocker = map_view_depth(light, blocker_sum / blockers);
+  // Section 4.4 (b): the view depth recovered from the blockers' average stored depth.
+  float blocker = map_view_depth(light, map_linear_depth(light, blocker_sum / blockers));
   float width = orthographic
                     ? orthographic_penumbra_width(point.view_depth, blocker, light_size)
                     : pcss_penumbra_width(point.view_depth, blocker, light_size);
@@ -332,20 +338,28 @@ struct CubeReceiver {
   vec3 to_fragment;  // fragWorld - P
   float distance;    // its length
   vec3 normal;       // the receiver's unit normal
+  float along;       // dot(normal, to_fragment)
   float bias;        // the light's bias, in distance / far
+  float far;
 };
 
-float cube_reference(Light light, CubeReceiver r, vec3 direction) {
-  float along = dot(r.normal, r.to_fragment);
-  float facing = dot(r.normal, normalize(direction));
-  float planar = along * facing > 0.0 ? along / facing : r.distance;
-  planar = clamp(planar, 0.5 * r.distance, 2.0 * r.distance);
-  return planar / light.shadow_depth.y - r.bias;
+// Whether the receiver's tangent plane, in `direction` from the light, lies farther than
+// `stored` (a fetched distance / far) plus the bias: whether the texel occludes it. The plane's
+// distance in that direction is along * |direction| / dot(normal, direction) where that is
+// positive (the fragment's own distance otherwise), held within half and twice the fragment's;
+// compared squared, so a tap costs no square root and no division.
+bool cube_plane_beyond(CubeReceiver r, vec3 direction, float stored) {
+  float limit = (stored + r.bias) * r.far;  // the distance to exceed
+  float facing = dot(r.normal, direction);
+  bool planar_beyond = r.along * facing > 0.0
+                           ? limit <= 0.0 || r.along * r.along * dot(direction, direction) > limit * limit * facing * facing
+                           : r.distance > limit;
+  return 2.0 * r.distance > limit && (0.5 * r.distance > limit || planar_beyond);
 }
 
 float cube_sample(Light light, CubeReceiver r, vec3 offset) {
   vec3 direction = r.to_fragment + offset;
-  return cube_occluded(light, direction, cube_reference(light, r, direction));
+  return cube_plane_beyond(r, direction, fetch_cube_depth(light, direction)) ? 1.0 : 0.0;
 }
 
 // PCSS's k-th kernel offset, optionally rotated (pcss_noise). Section 4's directions have
@@ -372,7 +386,7 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, uvec2 pixel) {
   [[unroll]] for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
     vec3 direction = r.to_fragment + cube_pcss_offset(k, jitter, rotation) * light_size;
     float depth = fetch_cube_depth(light, direction);
-    if (depth < cube_reference(light, r, direction)) {
+    if (cube_plane_beyond(r, direction, depth)) {
       blocker_sum += depth;
       blockers += 1.0;
     }
@@ -395,6 +409,8 @@ float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint alg
   r.to_fragment = world_pos - light.shadow_matrix[3].xyz;
   r.distance = length(r.to_fragment);
   r.normal = normal;
+  r.along = dot(normal, r.to_fragment);
+  r.far = light.shadow_depth.y;
   // A texel holds the distance in the direction of its centre: across one texel a tilted
   // receiver's distance changes by the texel's width times tan(angle of incidence), which is
   // added to the light's bias (held at 10 texels for grazing receivers, which are barely lit).

@@ -15,7 +15,7 @@ float spot_cone(float cos_angle, float cos_inner, float cos_outer);
 float cylinder_lambda(float along, float axis_distance, float inner_radius, float outer_radius);
 float shadow_bias(float n_dot_l, float constant_bias, float slope_bias);
 float perspective_view_depth(float stored_depth, float near, float far);
-float perspective_stored_depth(float view_depth, float near, float far);
+float perspective_stored_depth_slope(float view_depth, float near, float far);
 float pcss_penumbra_width(float receiver_depth, float blocker_depth, float light_size);
 float orthographic_penumbra_width(float receiver_depth, float blocker_depth, float light_size);
 float projection_x_scale(glm::mat4 shadow_matrix);

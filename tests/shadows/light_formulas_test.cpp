@@ -67,7 +67,15 @@ TEST(LightFormulas, PerspectiveDepthRoundTripsThroughTheSpotProjection) {
     const glm::vec4 clip = spot.view_projection() * glm::vec4(position + direction * z, 1.0f);
     const float stored = clip.z / clip.w;
     EXPECT_NEAR(perspective_view_depth(stored, n, f), z, 1e-4f * z) << "view depth " << z;
-    EXPECT_NEAR(perspective_stored_depth(z, n, f), stored, 1e-5f) << "view depth " << z;
+    // The slope against a central difference of the projection's depth.
+    const float h = 1e-2f * z;
+    const auto stored_at = [&](float depth) {
+      const glm::vec4 c = spot.view_projection() * glm::vec4(position + direction * depth, 1.0f);
+      return c.z / c.w;
+    };
+    EXPECT_NEAR(perspective_stored_depth_slope(z, n, f), (stored_at(z + h) - stored_at(z - h)) / (2.0f * h),
+                1e-2f * perspective_stored_depth_slope(z, n, f))
+        << "view depth " << z;
     // ALGORITHMS.md 4.4's form for this projection: zView = Py / (d - Px).
     const float px = f / (f - n), py = -n * f / (f - n);
     EXPECT_NEAR(py / (stored - px), z, 1e-4f * z);
