@@ -5,11 +5,6 @@
 
 #include "material.glsl"
 
-layout(location = 0) in vec3 in_world_position;
-layout(location = 1) in vec3 in_normal;
-layout(location = 2) flat in uint in_instance;
-layout(location = 3) in vec2 in_uv;
-
 // Positions come back from the depth buffer: every byte a pixel writes here costs raster
 // hardware time on GPUs that have little of it (docs/PERFORMANCE.md).
 layout(location = 0) out vec4 out_normal;  // xyz: unit normal; w: Blinn shininess s
@@ -17,7 +12,7 @@ layout(location = 1) out vec4 out_albedo;  // rgb: base colour; a: specular stre
 
 // Writes the fragment's G-buffer texels and returns its surface.
 SurfacePoint write_gbuffer() {
-  SurfacePoint p = instance_surface(in_instance, in_world_position, in_normal, in_uv);
+  SurfacePoint p = fragment_surface();
   out_normal = vec4(p.normal, p.shininess);
   out_albedo = vec4(p.base_color, p.specular);
   return p;

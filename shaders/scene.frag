@@ -6,15 +6,10 @@
 #include "light_shading.glsl"
 #include "material.glsl"
 
-layout(location = 0) in vec3 in_world_position;
-layout(location = 1) in vec3 in_normal;
-layout(location = 2) flat in uint in_instance;
-layout(location = 3) in vec2 in_uv;
-
 layout(location = 0) out vec4 out_color;
 
 void main() {
-  SurfacePoint p = instance_surface(in_instance, in_world_position, in_normal, in_uv);
+  SurfacePoint p = fragment_surface();
   vec3 color = frame.camera_position.w * p.base_color;
   color += shade_lights(p, in_world_position, frame.counts.x);
   out_color = vec4(color, 1.0);

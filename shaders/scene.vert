@@ -8,8 +8,9 @@ layout(location = 2) in vec2 in_uv;
 
 layout(location = 0) out vec3 out_world_position;
 layout(location = 1) out vec3 out_normal;
-layout(location = 2) flat out uint out_instance;
+layout(location = 2) flat out vec4 out_base_color_specular;  // material.glsl says why here
 layout(location = 3) out vec2 out_uv;
+layout(location = 4) flat out vec2 out_shininess_texture;
 
 void main() {
   Instance inst = instances[gl_InstanceIndex];
@@ -18,7 +19,8 @@ void main() {
   // The inverse transpose keeps normals perpendicular under non-uniform scale. Computed here,
   // per vertex, rather than uploaded per instance: a frame then writes 40% fewer bytes.
   out_normal = transpose(inverse(mat3(inst.model))) * in_normal;
-  out_instance = gl_InstanceIndex;
+  out_base_color_specular = inst.base_color_specular;
+  out_shininess_texture = inst.material.xy;
   out_uv = in_uv;
   gl_Position = frame.view_projection * world;
 }

@@ -11,11 +11,6 @@
 
 layout(constant_id = 0) const uint GROUPS_PRESENT = 0x7FFu;
 
-layout(location = 0) in vec3 in_world_position;
-layout(location = 1) in vec3 in_normal;
-layout(location = 2) flat in uint in_instance;
-layout(location = 3) in vec2 in_uv;
-
 layout(location = 0) out vec4 out_color;
 
 // The lights of `group`, which are the records from `next` on: the records are sorted by group
@@ -39,7 +34,7 @@ vec3 shade_group(uint group, inout uint next, SurfacePoint p) {
 }
 
 void main() {
-  SurfacePoint p = instance_surface(in_instance, in_world_position, in_normal, in_uv);
+  SurfacePoint p = fragment_surface();
   vec3 color = frame.camera_position.w * p.base_color;
   uint next = 0u;
   color += shade_group(0u, next, p);

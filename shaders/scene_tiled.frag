@@ -13,11 +13,6 @@ layout(constant_id = 0) const uint GROUPS_PRESENT = 0x7FFu;
 layout(std430, set = 0, binding = tile_lights_binding) readonly buffer TileLights { uint tile_lights[]; };
 layout(std430, set = 0, binding = tile_ranges_binding) readonly buffer TileRanges { uvec2 tile_ranges[]; };
 
-layout(location = 0) in vec3 in_world_position;
-layout(location = 1) in vec3 in_normal;
-layout(location = 2) flat in uint in_instance;
-layout(location = 3) in vec2 in_uv;
-
 layout(location = 0) out vec4 out_color;
 
 // The tile's lights of `group`. A CPU driver runs the loop body at least once, masked where
@@ -38,7 +33,7 @@ vec3 shade_group(uint group, uint tile, SurfacePoint p) {
 }
 
 void main() {
-  SurfacePoint p = instance_surface(in_instance, in_world_position, in_normal, in_uv);
+  SurfacePoint p = fragment_surface();
   uvec2 tile_xy = uvec2(gl_FragCoord.xy) / LIGHT_TILE_SIZE;
   uint tile = tile_xy.y * frame.counts.y + tile_xy.x;  // counts.y: tiles across
   vec3 color = frame.camera_position.w * p.base_color;
