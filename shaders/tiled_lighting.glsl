@@ -12,6 +12,11 @@
 #include "light_tiles.glsl"
 
 layout(constant_id = 0) const uint LIGHT_GROUP = 0u;
+// constant_id 4 (1 to 3 are light_shading.glsl's, material.glsl's and lights_interface.glsl's):
+// the group has one light this frame, frame.lights.x, and a pixel of its tiles reads no light
+// list: a CPU driver loads storage-buffer words lane by lane, three a pixel (a twentieth of the
+// default scene's lighting on lavapipe).
+layout(constant_id = 4) const bool SINGLE_LIGHT = false;
 
 layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
 layout(set = 0, binding = gbuffer_normal_binding) uniform sampler2D gbuffer_normal;
@@ -23,6 +28,7 @@ layout(push_constant) uniform Constants {
   mat4 inverse_view_projection;  // the camera's: positions from the depth buffer
   vec4 camera_position;
   uvec4 screen;  // x width, y height, z tiles across, w tiles in all
+  uvec4 lights;  // x: the group's light where SINGLE_LIGHT
 } frame;
 
 // The G-buffer's surface at `pixel` and its world position; false for the background.
@@ -46,9 +52,10 @@ bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {
 // The light group's lights of `tile` at the surface point. The tile has at least one (or it
 // would not be drawn), and a do-while runs its body exactly that often on a CPU driver too.
 vec3 shade_tile_group(uint tile, SurfacePoint p, vec3 position) {
-  uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + LIGHT_GROUP];
   uint kind = group_shadow_kind(LIGHT_GROUP);
   uint algorithm = group_algorithm(LIGHT_GROUP);
+  if (SINGLE_LIGHT) return shade_light_as(light_at(frame.lights.x), p, position, kind, algorithm);
+  uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + LIGHT_GROUP];
   vec3 color = vec3(0.0);
   uint j = 0u;
   do {

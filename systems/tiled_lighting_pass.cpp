@@ -30,6 +30,7 @@ struct LightingConstants {
   glm::mat4 inverse_view_projection;
   glm::vec4 camera_position;
   glm::uvec4 screen;  // width, height, tiles across, tiles in all
+  glm::uvec4 lights;  // x: a single-light group's light (SINGLE_LIGHT)
 };
 
 std::string group_name(uint32_t group) {
@@ -41,6 +42,11 @@ std::string group_name(uint32_t group) {
       return "cube " + std::string(scene::to_string(shadows::group_algorithm(group)));
   }
   return "group " + std::to_string(group);
+}
+
+LightingConstants with_group_light(LightingConstants constants, uint32_t light) {
+  constants.lights.x = light;
+  return constants;
 }
 
 // Compute measured faster on both kinds of device (lighting_path.h).
@@ -106,11 +112,16 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     const uint32_t types = lights.group_types[group];  // bit t for type t (lights_interface.glsl)
     if (types == 0) continue;                          // no light of the group this frame
-    vk::UniquePipeline& pipeline = pipelines_[group | types << 8 | static_cast<uint32_t>(view) << 16];
+    const uint32_t first = lights.group_begin[group];
+    const uint32_t single = lights.group_begin[group + 1] == first + 1 ? 1u : 0u;
+    group_light_[group] = first;
+    vk::UniquePipeline& pipeline =
+        pipelines_[group | types << 8 | static_cast<uint32_t>(view) << 16 | single << 24];
     current_[group] = pipeline.get();
     if (pipeline) continue;
-    // constant_id 0: the group; 1: the view; 2: material.glsl's, unused here; 3: the light types.
-    const std::vector<uint32_t> constants{group, static_cast<uint32_t>(view), 0u, types};
+    // constant_id 0: the group; 1: the view; 2: material.glsl's, unused here; 3: the light types;
+    // 4: whether the group has a single light.
+    const std::vector<uint32_t> constants{group, static_cast<uint32_t>(view), 0u, types, single};
     const std::string name = "tiled lighting " + group_name(group);
     pipeline =
         in_compute()
@@ -136,7 +147,8 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
   const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
   const LightingConstants constants{glm::inverse(view_projection),
                                     glm::vec4(camera_position, 0.0f),
-                                    {screen.width, screen.height, grid.across, grid.count()}};
+                                    {screen.width, screen.height, grid.across, grid.count()},
+                                    {}};
   const bool compute = in_compute();
   const rg::Usage sampled = compute ? rg::Usage::sampled_compute : rg::Usage::sampled_fragment;
   const rg::Usage storage = compute ? rg::Usage::storage_compute : rg::Usage::storage_fragment;
@@ -188,7 +200,8 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
           b.read(tiles.commands, rg::Usage::indirect);
           lit_sum = b.write(lit_sum, lit_sum_usage);
         },
-        [this, compute, group, gbuffer, tiles, atlas, lit_sum, &lights, constants,
+        [this, compute, group, gbuffer, tiles, atlas, lit_sum, &lights,
+         constants = with_group_light(constants, group_light_[group]),
          pipeline = current_[group]](const vk::PassRecorder& rec) {
           const VkSampler nearest = nearest_.get();
           vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));

@@ -37,7 +37,8 @@ class TiledLightingPass {
 
   // Picks, and compiles when first needed, the pipeline of each group that has lights in
   // `lights` (sorted by group): each holds one algorithm's shadow code and only the code of the
-  // light types the group has this frame (LIGHT_TYPES), for `view`. add_to uses them.
+  // light types the group has this frame (LIGHT_TYPES), for `view`; a group with a single light
+  // reads no light lists (SINGLE_LIGHT). add_to uses them.
   void prepare(const shadows::FrameLights& lights, LightingView view);
 
   static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
@@ -69,10 +70,12 @@ class TiledLightingPass {
   vk::PipelineLayout ambient_layout_;
   vk::UniquePipeline ambient_pipeline_;  // unless the G-buffer starts the lit sum
   vk::PipelineLayout layout_;
-  // By group | light types << 8 | LightingView << 16.
+  // By group | light types << 8 | LightingView << 16 | single light << 24.
   std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;
   // This frame's, by group; null for a group without lights.
   std::array<VkPipeline, shadows::light_group_count> current_{};
+  // This frame's first record of each group: the group's light where it has one (SINGLE_LIGHT).
+  std::array<uint32_t, shadows::light_group_count> group_light_{};
 };
 
 }  // namespace sg

@@ -175,6 +175,21 @@ TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
   EXPECT_LE(largest_difference(fused, forward), 2);
 }
 
+// A group with one light shades from its record alone (SINGLE_LIGHT), a group with several from
+// each tile's list: with every light on pcf, the stress scene's three point lights share one
+// group and its three spots and the sun another, and deferred still draws what forward draws.
+TEST_F(SandboxFrameTest, DeferredGroupsOfManyLightsMatchForward) {
+  sandbox::Options options = stress(3000, 3, 3, 0.0f);
+  options.algorithm = scene::ShadowAlgorithm::pcf;
+  options.lighting = LightingPath::forward;
+  const vk::Rgba8Image forward = render(options, 2);
+  options.lighting = LightingPath::deferred;
+  const vk::Rgba8Image deferred = render(options, 2);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "lighting 2d pcf"), 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "lighting cube pcf"), 1);
+  expect_same_but_edges(forward, deferred);
+}
+
 // Deferred lighting's passes as compute dispatches or as fragment passes blending into the lit sum,
 // and in compute the lit sum started by a pass of its own or by the G-buffer: the same shading code
 // over the same tiles, so the same picture to rounding (the 16-bit sum, and the G-buffer's ambient
