@@ -85,6 +85,7 @@ void SceneRenderer::gather(const ecs::World& world) {
 void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens,
                             uint32_t width, uint32_t height) {
   auto mark = std::chrono::steady_clock::now();
+  workers_.wake();  // the schedule's batches come soon: threads wake while the casters are listed
   if (!settings_.cache_shadows) schedule_.invalidate_all();
   if (batch_ && !batch_->all_casters_kept(slot)) {
     std::printf(
@@ -95,11 +96,11 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   const float aspect = float(width) / float(std::max(height, 1u));
   const shadows::ShadowCamera camera{pose.eye, projection_matrix(lens, aspect) * view_matrix(pose),
                                      float(height) / lens.yfov};
-  schedule_.schedule(lights_, camera, casters, settings_.shadow_view_budget);
+  schedule_.schedule(lights_, camera, casters, settings_.shadow_view_budget, &workers_);
   if (atlas_.fit(schedule_.pages_used())) {
     // A new image holds nothing: every map is drawn again, this frame.
     schedule_.invalidate_all();
-    schedule_.schedule(lights_, camera, casters, settings_.shadow_view_budget);
+    schedule_.schedule(lights_, camera, casters, settings_.shadow_view_budget, &workers_);
   }
   if (std::optional<std::string> message = schedule_.take_budget_message()) {
     std::printf("shadowgraph: %s\n", message->c_str());

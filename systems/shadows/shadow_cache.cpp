@@ -7,7 +7,8 @@
 namespace sg::shadows {
 
 void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> changed_casters,
-                       uint32_t view_budget, std::span<uint8_t> render, std::span<uint8_t> usable) {
+                       uint32_t view_budget, std::span<uint8_t> render, std::span<uint8_t> usable,
+                       ecs::ThreadPool* pool) {
   if (render.size() != lights.size() || usable.size() != lights.size()) {
     throw std::invalid_argument(
         "sg::shadows::ShadowCache::plan: render and usable need one element per light");
@@ -19,7 +20,7 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const
     if (lights[i].invalid) state.valid = false;
     state.dirty = state.dirty || lights[i].changed || !state.valid;
   }
-  mark_dirty_by_casters(lights, changed_casters);
+  mark_dirty_by_casters(lights, changed_casters, pool);
   choose_renders(lights, view_budget, render);
 
   stats_ = {};
@@ -64,7 +65,7 @@ void ShadowCache::match_states(std::span<const ShadowCacheLight> lights) {
 
 // Only lights not dirty already are worth testing; unbounded ones are dirty on any change.
 void ShadowCache::mark_dirty_by_casters(std::span<const ShadowCacheLight> lights,
-                                        std::span<const scene::Aabb> changed_casters) {
+                                        std::span<const scene::Aabb> changed_casters, ecs::ThreadPool* pool) {
   if (changed_casters.empty()) return;
   candidates_.clear();
   candidate_reach_.clear();
@@ -78,7 +79,7 @@ void ShadowCache::mark_dirty_by_casters(std::span<const ShadowCacheLight> lights
     }
   }
   candidate_met_.assign(candidates_.size(), 0);
-  spheres_meeting_boxes_.find(candidate_reach_, changed_casters, candidate_met_);
+  spheres_meeting_boxes_.find(candidate_reach_, changed_casters, candidate_met_, pool);
   for (size_t k = 0; k < candidates_.size(); ++k) {
     if (candidate_met_[k] != 0) states_[candidates_[k]].dirty = true;
   }

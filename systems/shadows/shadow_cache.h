@@ -61,9 +61,10 @@ class ShadowCache {
   // the boxes near it (SpheresMeetingBoxes), plus, when the budget is short, ordering the dirty
   // lights (O(dirty log budget) usually). A frame allocates nothing once grown, except when the
   // lights are not the previous frame's keys in the previous frame's order: the key -> state map
-  // is then rebuilt.
+  // is then rebuilt. With a `pool`, the lights are tested against the boxes on it.
   void plan(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> changed_casters,
-            uint32_t view_budget, std::span<uint8_t> render, std::span<uint8_t> usable);
+            uint32_t view_budget, std::span<uint8_t> render, std::span<uint8_t> usable,
+            ecs::ThreadPool* pool = nullptr);
 
   // The last plan's counts.
   const ShadowCacheStats& stats() const { return stats_; }
@@ -82,7 +83,7 @@ class ShadowCache {
 
   void match_states(std::span<const ShadowCacheLight> lights);
   void mark_dirty_by_casters(std::span<const ShadowCacheLight> lights,
-                             std::span<const scene::Aabb> changed_casters);
+                             std::span<const scene::Aabb> changed_casters, ecs::ThreadPool* pool);
   void choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
                       std::span<uint8_t> render);
 

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <utility>
+
+#include "ecs/thread_pool.h"
 
 #include "systems/shadows/atlas_tile_coords.h"
 #include "systems/shadows/quality_floor.h"
@@ -13,17 +16,16 @@ namespace {
 
 constexpr float unbounded_importance = 1.0e9f;
 
-// The entry of `views[i]` in `rendered`, which holds one entry per view in the order of an
-// earlier frame's views. Usually that order is this frame's and entry i is the one; otherwise
-// `rendered` is first reordered to follow `views`: each entry carried over from the same key, or
-// new. Lights that are gone lose theirs; a light never has a cached map without its entry, since
-// the cache forgets lights that leave the list too. Checked one view at a time, where the caller
-// reads the view anyway: thousands of views are large and a separate pass over them is not free.
+// Makes `rendered` hold one entry per view of `views`, in their order: usually it holds the
+// previous frame's entries in this order already; otherwise each entry is carried over from the
+// same key, or new. Lights that are gone lose theirs; a light never has a cached map without its
+// entry, since the cache forgets lights that leave the list too.
 template <class Views, class Rendered>
-Rendered& entry_for(const Views& views, size_t i, std::vector<Rendered>& rendered,
-                    std::unordered_map<uint64_t, uint32_t>& index_of_key) {
-  if (i < rendered.size() && rendered.size() == views.size() && rendered[i].key == views[i].key)
-    return rendered[i];
+void align_entries(const Views& views, std::vector<Rendered>& rendered,
+                   std::unordered_map<uint64_t, uint32_t>& index_of_key) {
+  if (std::equal(views.begin(), views.end(), rendered.begin(), rendered.end(),
+                 [](const auto& view, const Rendered& entry) { return view.key == entry.key; }))
+    return;
   index_of_key.clear();
   for (uint32_t k = 0; k < rendered.size(); ++k) index_of_key.emplace(rendered[k].key, k);
   std::vector<Rendered> matched;
@@ -33,8 +35,10 @@ Rendered& entry_for(const Views& views, size_t i, std::vector<Rendered>& rendere
     matched.push_back(found == index_of_key.end() ? Rendered{.key = view.key} : rendered[found->second]);
   }
   rendered = std::move(matched);
-  return rendered[i];
 }
+
+// Lights a piece of work handles on the pool: enough that a piece outweighs handing it out.
+constexpr size_t views_per_piece = 256;
 
 // The camera's frustum planes, normalized, computed once for all of a frame's lights.
 struct CameraFrustum {
@@ -65,31 +69,42 @@ float light_importance(const glm::vec4& reach, const ShadowCamera& camera) {
 ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas) : planner_(atlas), page_size_(atlas.page_size) {}
 
 void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
-                              uint32_t view_budget) {
+                              uint32_t view_budget, ecs::ThreadPool* pool) {
   // Requests: maps first, then cubes, each in the lights' order. A light whose reach is out of
-  // the camera's sight shades nothing visible: it asks for no tile at all.
+  // the camera's sight shades nothing visible: it asks for no tile at all. Importances and
+  // floors are worked out on the pool, the requests listed in order after.
   const CameraFrustum frustum(camera);
+  const size_t map_count = lights.maps.size();
+  quality_floors_.resize(map_count + lights.cubes.size());
+  ecs::run_in_pieces(pool, map_count, views_per_piece, [&](size_t begin, size_t end) {
+    for (size_t m = begin; m < end; ++m) {
+      ShadowMapView& map = lights.maps[m];
+      map.importance = importance_in(map.reach, camera, frustum);
+      quality_floors_[m] = quality_floor(algorithm_of(lights.records[map.light]));
+    }
+  });
+  ecs::run_in_pieces(pool, lights.cubes.size(), views_per_piece, [&](size_t begin, size_t end) {
+    for (size_t c = begin; c < end; ++c) {
+      ShadowCubeView& cube = lights.cubes[c];
+      // A face spans a quarter turn, about half of what the whole sphere covers on screen.
+      cube.importance = 0.5f * importance_in(cube.position_far, camera, frustum);
+      quality_floors_[map_count + c] = quality_floor(algorithm_of(lights.records[cube.light]));
+    }
+  });
   requests_.clear();
-  request_of_.assign(lights.maps.size() + lights.cubes.size(), no_request);
-  stats_ = {};
-  for (size_t m = 0; m < lights.maps.size(); ++m) {
-    ShadowMapView& map = lights.maps[m];
-    const float importance = importance_in(map.reach, camera, frustum);
-    map.importance = importance;
-    if (importance <= 0.0f) continue;
-    request_of_[m] = static_cast<uint32_t>(requests_.size());
-    requests_.push_back({map.key, false, map.requested_resolution, importance,
-                         quality_floor(algorithm_of(lights.records[map.light]))});
+  request_of_.assign(map_count + lights.cubes.size(), no_request);
+  const auto request = [&](size_t view, uint64_t key, bool cube, uint32_t resolution, float importance) {
+    if (importance <= 0.0f) return;
+    request_of_[view] = static_cast<uint32_t>(requests_.size());
+    requests_.push_back({key, cube, resolution, importance, quality_floors_[view]});
+  };
+  for (size_t m = 0; m < map_count; ++m) {
+    const ShadowMapView& map = lights.maps[m];
+    request(m, map.key, false, map.requested_resolution, map.importance);
   }
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
-    ShadowCubeView& cube = lights.cubes[c];
-    // A face spans a quarter turn, about half of what the whole sphere covers on screen.
-    const float importance = 0.5f * importance_in(cube.position_far, camera, frustum);
-    cube.importance = importance;
-    if (importance <= 0.0f) continue;
-    request_of_[lights.maps.size() + c] = static_cast<uint32_t>(requests_.size());
-    requests_.push_back({cube.key, true, cube.requested_resolution, importance,
-                         quality_floor(algorithm_of(lights.records[cube.light]))});
+    const ShadowCubeView& cube = lights.cubes[c];
+    request(map_count + c, cube.key, true, cube.requested_resolution, cube.importance);
   }
   placements_.assign(requests_.size(), ShadowPlacement{});
   planner_.plan(requests_, placements_);
@@ -102,81 +117,102 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     cached_request_.push_back(request);
     cache_lights_.push_back({requests_[request].key, reach, changed, placements_[request].moved, views});
   };
-  for (size_t m = 0; m < lights.maps.size(); ++m) {
+  for (size_t m = 0; m < map_count; ++m) {
     add_to_cache(request_of_[m], lights.maps[m].reach, lights.maps[m].changed, 1);
   }
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
     const ShadowCubeView& cube = lights.cubes[c];
-    add_to_cache(request_of_[lights.maps.size() + c], cube.position_far, cube.changed, 6);
+    add_to_cache(request_of_[map_count + c], cube.position_far, cube.changed, 6);
   }
   render_.assign(cache_lights_.size(), 0);
   usable_.assign(cache_lights_.size(), 0);
   const std::span<const scene::Aabb> changed_casters =
       casters.changes_only ? casters.changed : caster_changes_.update(casters.all);
-  cache_.plan(cache_lights_, changed_casters, view_budget, render_, usable_);
+  cache_.plan(cache_lights_, changed_casters, view_budget, render_, usable_, pool);
 
-  // Results per request, then onto the views and their records.
+  // Results per request, then onto the views and their records, on the pool: each view writes
+  // only itself, its record and its entry, and counts into its piece's tally.
   decision_.assign(requests_.size(), Decision{});
   for (size_t c = 0; c < cached_request_.size(); ++c) {
     decision_[cached_request_[c]] = {render_[c] != 0, usable_[c] != 0};
   }
-  const auto count_resolution = [&](uint32_t resolution) {
-    auto found = std::find_if(stats_.lights_per_resolution.begin(), stats_.lights_per_resolution.end(),
-                              [&](const auto& entry) { return entry.first == resolution; });
-    if (found == stats_.lights_per_resolution.end()) {
-      stats_.lights_per_resolution.emplace_back(resolution, 1);
-    } else {
-      ++found->second;
-    }
-  };
-  const auto apply = [&](uint32_t request, uint32_t views, auto& view, auto&& give_map) {
+  align_entries(lights.maps, rendered_maps_, index_of_key_);
+  align_entries(lights.cubes, rendered_cubes_, index_of_key_);
+  const auto apply = [&](uint32_t request, uint32_t views, auto& view, Tally& tally, auto&& give_map) {
     view.resolution = 0;
     view.render = false;
     if (request == no_request || placements_[request].resolution == 0) {
-      ++stats_.lights_without_shadow;
+      ++tally.without_shadow;
       return;
     }
     const ShadowPlacement& placement = placements_[request];
-    count_resolution(placement.resolution);
+    ++tally.lights_per_tier[std::countr_zero(placement.resolution)];
     const Decision decision = decision_[request];
     if (!decision.usable) {
-      ++stats_.lights_waiting;
+      ++tally.waiting;
       return;
     }
     view.resolution = placement.resolution;
     view.render = decision.render;
-    (decision.render ? stats_.views_rendered : stats_.views_cached) += views;
+    (decision.render ? tally.views_rendered : tally.views_cached) += views;
     give_map(placement);
   };
+  const size_t map_pieces = (map_count + views_per_piece - 1) / views_per_piece;
+  tallies_.assign(map_pieces + (lights.cubes.size() + views_per_piece - 1) / views_per_piece, Tally{});
   // A cached map was rendered from where its light was then: the record samples it with that
   // view, not the light's present one.
-  for (size_t m = 0; m < lights.maps.size(); ++m) {
-    ShadowMapView& map = lights.maps[m];
-    apply(request_of_[m], 1, map, [&](const ShadowPlacement& placement) {
-      map.tile = placement.tiles[0];
-      RenderedMap& rendered = entry_for(lights.maps, m, rendered_maps_, index_of_key_);
-      if (map.render) rendered.view = map.view;
-      set_shadow_map(lights.records[map.light], map.tile.page, tile_uv_rect(map.tile, page_size_),
-                     map.resolution, rendered.view);
-    });
+  ecs::run_in_pieces(pool, map_count, views_per_piece, [&](size_t begin, size_t end) {
+    Tally& tally = tallies_[begin / views_per_piece];
+    for (size_t m = begin; m < end; ++m) {
+      ShadowMapView& map = lights.maps[m];
+      apply(request_of_[m], 1, map, tally, [&](const ShadowPlacement& placement) {
+        map.tile = placement.tiles[0];
+        RenderedMap& rendered = rendered_maps_[m];
+        if (map.render) rendered.view = map.view;
+        set_shadow_map(lights.records[map.light], map.tile.page, tile_uv_rect(map.tile, page_size_),
+                       map.resolution, rendered.view);
+      });
+    }
+  });
+  ecs::run_in_pieces(pool, lights.cubes.size(), views_per_piece, [&](size_t begin, size_t end) {
+    Tally& tally = tallies_[map_pieces + begin / views_per_piece];
+    for (size_t c = begin; c < end; ++c) {
+      ShadowCubeView& cube = lights.cubes[c];
+      apply(request_of_[map_count + c], 6, cube, tally, [&](const ShadowPlacement& placement) {
+        cube.tiles = placement.tiles;
+        RenderedCube& rendered = rendered_cubes_[c];
+        if (cube.render) {
+          rendered.views = cube.views;
+          rendered.origin = glm::vec3(cube.position_far);
+        }
+        std::array<glm::vec2, 6> origins;
+        for (int f = 0; f < 6; ++f) origins[f] = glm::vec2(tile_uv_rect(cube.tiles[f], page_size_));
+        set_shadow_cube(lights.records[cube.light], cube.tiles[0].page, origins,
+                        float(cube.resolution) / float(page_size_), cube.resolution, rendered.views,
+                        rendered.origin);
+      });
+    }
+  });
+
+  Tally total;
+  for (const Tally& tally : tallies_) {
+    total.without_shadow += tally.without_shadow;
+    total.waiting += tally.waiting;
+    total.views_rendered += tally.views_rendered;
+    total.views_cached += tally.views_cached;
+    for (size_t t = 0; t < total.lights_per_tier.size(); ++t)
+      total.lights_per_tier[t] += tally.lights_per_tier[t];
   }
-  for (size_t c = 0; c < lights.cubes.size(); ++c) {
-    ShadowCubeView& cube = lights.cubes[c];
-    apply(request_of_[lights.maps.size() + c], 6, cube, [&](const ShadowPlacement& placement) {
-      cube.tiles = placement.tiles;
-      RenderedCube& rendered = entry_for(lights.cubes, c, rendered_cubes_, index_of_key_);
-      if (cube.render) {
-        rendered.views = cube.views;
-        rendered.origin = glm::vec3(cube.position_far);
-      }
-      std::array<glm::vec2, 6> origins;
-      for (int f = 0; f < 6; ++f) origins[f] = glm::vec2(tile_uv_rect(cube.tiles[f], page_size_));
-      set_shadow_cube(lights.records[cube.light], cube.tiles[0].page, origins,
-                      float(cube.resolution) / float(page_size_), cube.resolution, rendered.views,
-                      rendered.origin);
-    });
+  stats_ = {};
+  stats_.lights_without_shadow = total.without_shadow;
+  stats_.lights_waiting = total.waiting;
+  stats_.views_rendered = total.views_rendered;
+  stats_.views_cached = total.views_cached;
+  for (uint32_t tier = 0; tier < total.lights_per_tier.size(); ++tier) {
+    if (total.lights_per_tier[tier] != 0) {
+      stats_.lights_per_resolution.emplace_back(1u << tier, total.lights_per_tier[tier]);
+    }
   }
-  std::sort(stats_.lights_per_resolution.begin(), stats_.lights_per_resolution.end());
   stats_.texels_used = planner_.stats().texels_used;
   stats_.pages_used = planner_.stats().pages_used;
 }

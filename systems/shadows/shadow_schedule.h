@@ -5,6 +5,7 @@
 // to a frame's lights. After schedule(), every shadowed view carries its tiles or none, `render`
 // says whether it is drawn this frame, and each record says where its map is; a light whose map
 // holds nothing valid yet (new, moved, or waiting for the budget) is shaded without a shadow.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -69,9 +70,10 @@ class ShadowSchedule {
 
   // Places, caches and records every shadow of `lights` (gathered, not yet sorted). `casters`
   // are the frame's shadow casters or their changes (CasterUpdate); view_budget caps the views
-  // rendered (0: no cap).
+  // rendered (0: no cap). With a `pool`, the per-light work runs in pieces on it (the same
+  // result).
   void schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
-                uint32_t view_budget);
+                uint32_t view_budget, ecs::ThreadPool* pool = nullptr);
   // Every map must be rendered again (the atlas image was recreated).
   void invalidate_all() { cache_.invalidate_all(); }
 
@@ -93,7 +95,8 @@ class ShadowSchedule {
     bool render = false;
     bool usable = false;
   };
-  std::vector<uint32_t> request_of_;  // per view (maps, then cubes): its request or no_request
+  std::vector<uint32_t> request_of_;      // per view (maps, then cubes): its request or no_request
+  std::vector<uint32_t> quality_floors_;  // per view, as request_of_
   std::vector<ShadowRequest> requests_;
   std::vector<ShadowPlacement> placements_;
   std::vector<uint32_t> cached_request_;  // per cache light: its request
@@ -101,6 +104,15 @@ class ShadowSchedule {
   std::vector<uint8_t> render_;
   std::vector<uint8_t> usable_;
   std::vector<Decision> decision_;  // per request
+  // What applying the plan counts, per piece of the views applied on the pool, summed after.
+  struct Tally {
+    uint32_t without_shadow = 0;
+    uint32_t waiting = 0;
+    uint32_t views_rendered = 0;
+    uint32_t views_cached = 0;
+    std::array<uint32_t, 32> lights_per_tier{};  // by log2 of the resolution
+  };
+  std::vector<Tally> tallies_;
 
   // The view each light's map was last rendered with, in the order of the frame's maps and
   // cubes: usually the previous frame's lights in the same order, so nothing is looked up.

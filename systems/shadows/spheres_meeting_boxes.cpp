@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "ecs/thread_pool.h"
+
 namespace sg::shadows {
 namespace {
 
@@ -88,7 +90,7 @@ bool sphere_meets_box(const glm::vec4& sphere, const scene::Aabb& box) {
 // cache. Binning 100,000 spheres scattered their writes over megabytes and cost more than all the
 // tests it saved.
 void SpheresMeetingBoxes::find(std::span<const glm::vec4> spheres, std::span<const scene::Aabb> boxes,
-                               std::span<uint8_t> met) {
+                               std::span<uint8_t> met, ecs::ThreadPool* pool) {
   if (spheres.empty() || boxes.empty()) return;
   const Grid grid = grid_for(spheres, boxes);
 
@@ -112,18 +114,21 @@ void SpheresMeetingBoxes::find(std::span<const glm::vec4> spheres, std::span<con
   for (size_t cell = grid.cell_count(); cell > 0; --cell) cell_begin_[cell] = cell_begin_[cell - 1];
   cell_begin_[0] = 0;
 
-  for (size_t i = 0; i < spheres.size(); ++i) {
-    if (met[i] != 0) continue;
-    grid.for_each_cell(footprint_min(spheres[i]), footprint_max(spheres[i]), [&](size_t cell) {
-      for (uint32_t k = cell_begin_[cell]; k < cell_begin_[cell + 1]; ++k) {
-        if (sphere_meets_box(spheres[i], boxes[cell_boxes_[k]])) {
-          met[i] = 1;
-          return true;
+  constexpr size_t spheres_per_piece = 256;
+  ecs::run_in_pieces(pool, spheres.size(), spheres_per_piece, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      if (met[i] != 0) continue;
+      grid.for_each_cell(footprint_min(spheres[i]), footprint_max(spheres[i]), [&](size_t cell) {
+        for (uint32_t k = cell_begin_[cell]; k < cell_begin_[cell + 1]; ++k) {
+          if (sphere_meets_box(spheres[i], boxes[cell_boxes_[k]])) {
+            met[i] = 1;
+            return true;
+          }
         }
-      }
-      return false;
-    });
-  }
+        return false;
+      });
+    }
+  });
 }
 
 }  // namespace sg::shadows

@@ -11,6 +11,10 @@
 
 #include "systems/scene/aabb.h"
 
+namespace sg::ecs {
+class ThreadPool;
+}
+
 namespace sg::shadows {
 
 // Whether the sphere (xyz centre, w radius >= 0) and the non-empty box intersect or touch.
@@ -23,8 +27,9 @@ class SpheresMeetingBoxes {
   // already met); `met` has spheres.size() elements. Exactly the spheres sphere_meets_box finds,
   // at a cost of about O(spheres + boxes + sphere-box pairs sharing a grid cell): cells are about
   // one mean sphere diameter wide, at most about twice as many as spheres and boxes together. A
-  // call allocates nothing once grown.
-  void find(std::span<const glm::vec4> spheres, std::span<const scene::Aabb> boxes, std::span<uint8_t> met);
+  // call allocates nothing once grown. With a `pool`, the spheres are looked up in pieces on it.
+  void find(std::span<const glm::vec4> spheres, std::span<const scene::Aabb> boxes, std::span<uint8_t> met,
+            ecs::ThreadPool* pool = nullptr);
 
  private:
   // The grid: cell c holds boxes cell_boxes_[cell_begin_[c]] .. cell_boxes_[cell_begin_[c + 1] - 1].

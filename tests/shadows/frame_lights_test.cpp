@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include "ecs/thread_pool.h"
@@ -287,6 +288,60 @@ TEST(ShadowSchedule, ChangedBoxesRedrawWhatTheWholeListWould) {
   EXPECT_EQ(row.maps_drawn_with_crate_at(-7.0f), (std::vector<int>{0, 1}))
       << "the tracker last saw the crate at the first place: it reports the move again";
   EXPECT_TRUE(row.maps_drawn_with_crate_at(-7.0f).empty());
+}
+
+// Scheduling on a thread pool splits the views into pieces; the result must not depend on it.
+TEST(ShadowSchedule, AThreadPoolSchedulesTheSameShadows) {
+  scene::Scene scene;
+  for (int i = 0; i < 900; ++i) {  // several pieces of maps and of cubes, resolutions mixed
+    const ecs::LocalTransform at{glm::vec3(float(i % 30), 3.0f, -float(i / 30))};
+    const scene::ShadowSettings shadow = shadow_at(64u << (i % 4), i % 7 != 0);
+    if (i % 2 == 0) scene::add_light(scene, scene::PointLight{}, at, shadow, "");
+    if (i % 2 == 1) scene::add_light(scene, scene::SpotLight{}, at, shadow, "");
+  }
+  ecs::update_world_transforms(scene.world, 0);
+  const ShadowCamera camera = camera_at({15.0f, 10.0f, 5.0f});
+  ecs::ThreadPool pool(3);
+  FrameLights serial;
+  FrameLights pooled;
+  ShadowSchedule serial_schedule(AtlasConfig{2048, 4, min_shadow_resolution});
+  ShadowSchedule pooled_schedule(AtlasConfig{2048, 4, min_shadow_resolution});
+  // Frame one draws every map it can; in frame two crates move, and some of the maps they reach
+  // are drawn again within a budget of views.
+  for (const float crate_z : {-3.0f, -12.0f}) {
+    std::vector<CasterBounds> casters;
+    for (int k = 0; k < 20; ++k) casters.push_back({uint64_t(k), crate_at(crate_z - float(k))});
+    for (auto [lights, schedule, pool_used] :
+         {std::tuple(&serial, &serial_schedule, (ecs::ThreadPool*)nullptr),
+          std::tuple(&pooled, &pooled_schedule, &pool)}) {
+      gather_lights(scene.world, bounds, {}, *lights);
+      schedule->schedule(*lights, camera, std::span<const CasterBounds>(casters), 200, pool_used);
+    }
+    ASSERT_EQ(pooled.records.size(), serial.records.size());
+    EXPECT_EQ(
+        std::memcmp(pooled.records.data(), serial.records.data(), serial.records.size() * sizeof(GpuLight)),
+        0);
+    for (size_t m = 0; m < serial.maps.size(); ++m) {
+      EXPECT_EQ(pooled.maps[m].resolution, serial.maps[m].resolution);
+      EXPECT_EQ(pooled.maps[m].render, serial.maps[m].render);
+      EXPECT_EQ(pooled.maps[m].importance, serial.maps[m].importance);
+    }
+    for (size_t c = 0; c < serial.cubes.size(); ++c) {
+      EXPECT_EQ(pooled.cubes[c].resolution, serial.cubes[c].resolution);
+      EXPECT_EQ(pooled.cubes[c].render, serial.cubes[c].render);
+    }
+    const ShadowScheduleStats& a = serial_schedule.stats();
+    const ShadowScheduleStats& b = pooled_schedule.stats();
+    EXPECT_EQ(a.views_rendered, b.views_rendered);
+    EXPECT_EQ(a.views_cached, b.views_cached);
+    EXPECT_EQ(a.lights_without_shadow, b.lights_without_shadow);
+    EXPECT_EQ(a.lights_waiting, b.lights_waiting);
+    EXPECT_EQ(a.lights_per_resolution, b.lights_per_resolution);
+    EXPECT_GT(a.views_rendered, 0u);
+    EXPECT_GT(a.lights_per_resolution.size(), 1u);
+  }
+  EXPECT_GT(serial_schedule.stats().views_cached, 0u);
+  EXPECT_GT(serial_schedule.stats().lights_waiting, 0u);
 }
 
 TEST(FrameLights, RecordsAreOrderedByLightGroup) {
