@@ -3,6 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -47,6 +49,30 @@ CLI::Validator fraction() {
         return {};
       },
       "FLOAT in [0 - 1]");
+}
+
+// An option whose value is one of `choices`' names, setting `target` to that name's value. Its
+// default, shown by --help, is the name of the value `target` holds when the option is added.
+template <class T>
+CLI::Option* add_choice(CLI::App& app, const std::string& name, T& target,
+                        std::vector<std::pair<std::string, T>> choices, const std::string& help) {
+  std::vector<std::string> names;
+  std::string default_name;
+  for (const auto& [choice, value] : choices) {
+    names.push_back(choice);
+    if (value == target) default_name = choice;
+  }
+  return app
+      .add_option_function<std::string>(
+          name,
+          [&target, choices = std::move(choices)](const std::string& text) {
+            for (const auto& [choice, value] : choices) {
+              if (choice == text) target = value;
+            }
+          },
+          help)
+      ->check(CLI::IsMember(names))
+      ->default_str(default_name);
 }
 
 }  // namespace
@@ -107,43 +133,24 @@ void add_options(CLI::App& app, Options& o) {
          "--algorithm", [&o](const std::string& name) { o.algorithm = scene::parse_shadow_algorithm(name); },
          "Shadow algorithm for every light, overriding the scene's")
       ->check(CLI::IsMember(algorithm_names));
-  app.add_option_function<std::string>(
-         "--shadows", [&o](const std::string& value) { o.shadows = value == "on"; },
-         "on: every light casts its shadow; off: none does")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->default_str("on");
-  app.add_option_function<std::string>(
-         "--cube-shadows",
-         [&o](const std::string& value) {
-           o.cube_shadows =
-               value == "six" ? shadows::CubeShadowMode::six_passes : shadows::CubeShadowMode::layered;
-         },
-         "Per-light shadow passes' point-light cubes: layered (one pass, all six faces) or six (one pass "
-         "per face)")
-      ->check(CLI::IsMember({"layered", "six"}))
-      ->default_str("layered");
-  app.add_option_function<std::string>(
-         "--shadow-views",
-         [&o](const std::string& value) {
-           o.shadow_views =
-               value == "per-light" ? shadows::ShadowViewPath::per_light : shadows::ShadowViewPath::batched;
-         },
-         "batched: every shadow view due in a frame culled on the GPU and drawn by a few passes; "
-         "per-light: one pass per view, casters culled on the CPU (the baseline)")
-      ->check(CLI::IsMember({"batched", "per-light"}))
-      ->default_str("batched");
-  app.add_option_function<std::string>(
-         "--shadow-raster",
-         [&o](const std::string& value) {
-           o.shadow_raster = value == "compute"    ? shadows::ShadowRaster::compute
-                             : value == "hardware" ? shadows::ShadowRaster::hardware
-                                                   : shadows::ShadowRaster::automatic;
-         },
-         "How batched shadow views are rasterized: hardware (multi-draw indirect), compute, or auto "
-         "(on GPUs each frame: compute for many small views, hardware for a few with large tiles; "
-         "hardware on CPU devices)")
-      ->check(CLI::IsMember({"auto", "hardware", "compute"}))
-      ->default_str("auto");
+  add_choice(app, "--shadows", o.shadows, {{"on", true}, {"off", false}},
+             "on: every light casts its shadow; off: none does");
+  add_choice(app, "--cube-shadows", o.cube_shadows,
+             {{"layered", shadows::CubeShadowMode::layered}, {"six", shadows::CubeShadowMode::six_passes}},
+             "Per-light shadow passes' point-light cubes: layered (one pass, all six faces) or six (one "
+             "pass per face)");
+  add_choice(
+      app, "--shadow-views", o.shadow_views,
+      {{"batched", shadows::ShadowViewPath::batched}, {"per-light", shadows::ShadowViewPath::per_light}},
+      "batched: every shadow view due in a frame culled on the GPU and drawn by a few passes; "
+      "per-light: one pass per view, casters culled on the CPU (the baseline)");
+  add_choice(app, "--shadow-raster", o.shadow_raster,
+             {{"auto", shadows::ShadowRaster::automatic},
+              {"hardware", shadows::ShadowRaster::hardware},
+              {"compute", shadows::ShadowRaster::compute}},
+             "How batched shadow views are rasterized: hardware (multi-draw indirect), compute, or auto "
+             "(on GPUs each frame: compute for many small views, hardware for a few with large tiles; "
+             "hardware on CPU devices)");
   app.add_option(
          "--shadow-memory", o.shadow_memory_mib,
          "Shadow atlas budget in MiB (0: an eighth of the GPU's memory, 64 to 2048); lights beyond it "
@@ -155,85 +162,55 @@ void add_options(CLI::App& app, Options& o) {
                  "view due)")
       ->check(CLI::Range(0u, 1u << 24))
       ->capture_default_str();
-  app.add_option_function<std::string>(
-         "--shadow-cache", [&o](const std::string& value) { o.shadow_cache = value == "on"; },
-         "on: a shadow map is redrawn only when its light, or a caster in its reach, moved; off: every "
-         "map every frame")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->default_str("on");
-  app.add_option_function<std::string>(
-         "--lighting",
-         [&o](const std::string& value) {
-           o.lighting = value == "forward"    ? LightingPath::forward
-                        : value == "deferred" ? LightingPath::deferred
-                        : value == "fused"    ? LightingPath::fused
-                                              : LightingPath::automatic;
-         },
-         "forward: a depth prepass, light lists per 16x16 screen tile, one forward pass; deferred: a "
-         "G-buffer, light lists, a pass per light group (--deferred-passes); fused: a depth prepass and one "
-         "forward "
-         "pass of every light that tone-maps too (a few lights on CPU devices); auto: the fastest for "
-         "this kind of device")
-      ->check(CLI::IsMember({"auto", "forward", "deferred", "fused"}))
-      ->default_str("auto");
-  app.add_option_function<std::string>(
-         "--deferred-passes",
-         [&o](const std::string& value) {
-           o.deferred_passes = value == "compute"    ? DeferredPasses::compute
-                               : value == "fragment" ? DeferredPasses::fragment
-                                                     : DeferredPasses::automatic;
-         },
-         "How deferred lighting's per-pixel passes run: compute dispatches, or fragment passes over the "
-         "tiles with lights that blend into the lit sum (the G-buffer starting it); auto: compute, "
-         "measured faster on GPUs and on lavapipe")
-      ->check(CLI::IsMember({"auto", "compute", "fragment"}))
-      ->default_str("auto");
-  app.add_option_function<std::string>(
-         "--lit-sum-start",
-         [&o](const std::string& value) {
-           o.lit_sum_start = value == "pass"      ? LitSumStart::pass
-                             : value == "gbuffer" ? LitSumStart::gbuffer
-                                                  : LitSumStart::automatic;
-         },
-         "Where deferred lighting in compute starts the lit sum (ambient light and background): a "
-         "full-screen pass of its own, or a G-buffer target; auto: the G-buffer on CPU devices, the "
-         "pass on GPUs (fragment passes always take the G-buffer's)")
-      ->check(CLI::IsMember({"auto", "pass", "gbuffer"}))
-      ->default_str("auto");
+  add_choice(app, "--shadow-cache", o.shadow_cache, {{"on", true}, {"off", false}},
+             "on: a shadow map is redrawn only when its light, or a caster in its reach, moved; off: every "
+             "map every frame");
+  add_choice(app, "--lighting", o.lighting,
+             {{"auto", LightingPath::automatic},
+              {"forward", LightingPath::forward},
+              {"deferred", LightingPath::deferred},
+              {"fused", LightingPath::fused}},
+             "forward: a depth prepass, light lists per 16x16 screen tile, one forward pass; deferred: a "
+             "G-buffer, light lists, a pass per light group (--deferred-passes); fused: a depth prepass "
+             "and one forward pass of every light that tone-maps too (a few lights on CPU devices); auto: "
+             "the fastest for this kind of device");
+  add_choice(app, "--deferred-passes", o.deferred_passes,
+             {{"auto", DeferredPasses::automatic},
+              {"compute", DeferredPasses::compute},
+              {"fragment", DeferredPasses::fragment}},
+             "How deferred lighting's per-pixel passes run: compute dispatches, or fragment passes over "
+             "the tiles with lights that blend into the lit sum (the G-buffer starting it); auto: "
+             "compute, measured faster on GPUs and on lavapipe");
+  add_choice(
+      app, "--lit-sum-start", o.lit_sum_start,
+      {{"auto", LitSumStart::automatic}, {"pass", LitSumStart::pass}, {"gbuffer", LitSumStart::gbuffer}},
+      "Where deferred lighting in compute starts the lit sum (ambient light and background): a "
+      "full-screen pass of its own, or a G-buffer target; auto: the G-buffer on CPU devices, the "
+      "pass on GPUs (fragment passes always take the G-buffer's)");
   CLI::Option* naive = app.add_flag(
       "--naive", o.naive,
       "The source documents' way, as a baseline: a pass per shadow view and six per cube, every map "
       "every frame, every caster in every shadow view, every light at every pixel");
   naive->excludes("--lighting")
       ->excludes("--deferred-passes")
+      ->excludes("--lit-sum-start")
       ->excludes("--cube-shadows")
       ->excludes("--shadow-views")
       ->excludes("--shadow-cache");
-  app.add_option_function<std::string>(
-         "--view",
-         [&o](const std::string& value) {
-           o.view = value == "shadows" ? LightingView::shadows : LightingView::lit;
-         },
-         "lit: the picture; shadows: a debug view of white diffuse surfaces under white lights, shadows "
-         "at full density, no ambient")
-      ->check(CLI::IsMember({"lit", "shadows"}))
-      ->default_str("lit");
+  add_choice(app, "--view", o.view, {{"lit", LightingView::lit}, {"shadows", LightingView::shadows}},
+             "lit: the picture; shadows: a debug view of white diffuse surfaces under white lights, "
+             "shadows at full density, no ambient");
   app.add_option("--exposure", o.exposure, "Multiplies the lit colour before tone mapping")
       ->check(CLI::Range(1e-3f, 1e3f))
       ->capture_default_str();
-  app.add_option_function<std::string>(
-         "--animate", [&o](const std::string& value) { o.animate = value == "on"; },
-         "on: play the scene's glTF animations and the stress scene's orbits (headless: a fixed 1/60 s a "
-         "frame); off: everything stays where the scene puts it")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->default_str("on");
+  add_choice(app, "--animate", o.animate, {{"on", true}, {"off", false}},
+             "on: play the scene's glTF animations and the stress scene's orbits (headless: a fixed 1/60 s a "
+             "frame); off: everything stays where the scene puts it");
   o.sidecar = true;  // the command line's default
-  app.add_option_function<std::string>(
-         "--sidecar", [&o](const std::string& value) { o.sidecar = value == "on"; },
-         "on: start from the lights and camera saved beside the scene (SCENE.shadowgraph.json, written by "
-         "the panels' save button or a script's save); off: the scene as it is")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->default_str("on");
+  add_choice(
+      app, "--sidecar", o.sidecar, {{"on", true}, {"off", false}},
+      "on: start from the lights and camera saved beside the scene (SCENE.shadowgraph.json, written by "
+      "the panels' save button or a script's save); off: the scene as it is");
   app.add_option(
          "--script", o.script,
          "Run FILE's commands headless (select NAME, algorithm NAME, resolution N, move X Y Z, camera "

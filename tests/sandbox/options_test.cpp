@@ -105,7 +105,8 @@ TEST(SandboxOptions, ShadowStorageAndAnimationOptions) {
                                               {"--shadow-memory", "-1"},
                                               {"--shadow-cache", "maybe"},
                                               {"--animate", "yes"},
-                                              {"--naive", "--shadow-views", "batched"}}) {
+                                              {"--naive", "--shadow-views", "batched"},
+                                              {"--naive", "--lit-sum-start", "pass"}}) {
     EXPECT_EQ(parse(bad).exit_code, 2) << bad[0] << " " << bad[1];
   }
 }
