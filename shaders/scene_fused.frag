@@ -3,8 +3,9 @@
 // Forward lighting and tone mapping in one pass, for frames of a few lights: every light at
 // every pixel (no light lists), each with its own group's shadow code, the shader holding only
 // the code of the light groups the frame has (GROUPS_PRESENT, bit g for group g, a
-// specialization constant), the picture written straight into the frame. On a CPU driver every full-screen pass costs milliseconds, and this path has
-// two: the depth prepass and this one (docs/PERFORMANCE.md).
+// specialization constant), the picture written straight into the frame. On a CPU driver every
+// full-screen pass costs milliseconds, and this path has two: the depth prepass and this one
+// (docs/PERFORMANCE.md).
 #include "light_shading.glsl"
 #include "material.glsl"
 #include "tone_map.glsl"

@@ -10,6 +10,7 @@
 #include "bindings.glsl"
 #include "light_shading.glsl"
 #include "light_tiles.glsl"
+#include "tiled_lighting_frame.glsl"
 
 layout(constant_id = 0) const uint LIGHT_GROUP = 0u;
 // constant_id 4 (1 to 3 are light_shading.glsl's, material.glsl's and lights_interface.glsl's):
@@ -24,12 +25,6 @@ layout(set = 0, binding = gbuffer_albedo_binding) uniform sampler2D gbuffer_albe
 layout(std430, set = 0, binding = tile_lights_binding) readonly buffer TileLights { uint tile_lights[]; };
 layout(std430, set = 0, binding = tile_ranges_binding) readonly buffer TileRanges { uvec2 tile_ranges[]; };
 
-layout(push_constant) uniform Constants {
-  mat4 inverse_view_projection;  // the camera's: positions from the depth buffer
-  vec4 camera_position;
-  uvec4 screen;  // x width, y height, z tiles across, w tiles in all
-  uvec4 lights;  // x: the group's light where SINGLE_LIGHT
-} frame;
 
 // The G-buffer's surface at `pixel` and its world position; false for the background.
 bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {

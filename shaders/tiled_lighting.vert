@@ -8,11 +8,7 @@
 
 layout(std430, set = 0, binding = group_tiles_binding) readonly buffer GroupTiles { uint group_tiles[]; };
 
-layout(push_constant) uniform Constants {
-  mat4 inverse_view_projection;
-  vec4 camera_position;
-  uvec4 screen;  // x width, y height, z tiles across, w tiles in all
-} frame;
+#include "tiled_lighting_frame.glsl"
 
 void main() {
   uint tile = group_tiles[gl_InstanceIndex];

@@ -39,7 +39,7 @@ void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer
   if (!pipeline) {
     vk::GraphicsPipelineDesc desc =
         camera_pipeline_desc(scene_frag, {vk::to_vk(lit_sum_format)}, layout_.get(), "forward");
-    // light_shading.glsl's constant 1
+    // Constant 0 is unused here, 1 is light_shading.glsl's view.
     desc.fragment_specialization = material_pass_constants(0, static_cast<uint32_t>(view), textures_);
     pipeline = vk::create_graphics_pipeline(context_, desc);
   }

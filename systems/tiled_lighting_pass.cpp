@@ -26,6 +26,7 @@ struct AmbientConstants {
   glm::uvec4 screen;             // width, height
 };
 
+// shaders/tiled_lighting_frame.glsl's push constants.
 struct LightingConstants {
   glm::mat4 inverse_view_projection;
   glm::vec4 camera_position;
