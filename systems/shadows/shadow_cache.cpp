@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "systems/shadows/align_by_key.h"
+
 namespace sg::shadows {
 
 void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> changed_casters,
@@ -14,7 +16,7 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const
         "sg::shadows::ShadowCache::plan: render and usable need one element per light");
   }
   ++frame_;
-  match_states(lights);
+  align_by_key(lights, states_, index_of_key_, matched_);
   for (size_t i = 0; i < lights.size(); ++i) {
     LightState& state = states_[i];
     if (lights[i].invalid) state.valid = false;
@@ -44,23 +46,6 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const
 
 void ShadowCache::invalidate_all() {
   for (LightState& state : states_) state.valid = false;
-}
-
-// Usually the lights are the previous frame's in the same order, and their states are already in
-// place; otherwise each light finds its state by key, and a key not seen before starts afresh.
-void ShadowCache::match_states(std::span<const ShadowCacheLight> lights) {
-  const bool same_lights = std::equal(
-      lights.begin(), lights.end(), states_.begin(), states_.end(),
-      [](const ShadowCacheLight& light, const LightState& state) { return light.key == state.key; });
-  if (same_lights) return;
-  index_of_key_.clear();
-  for (uint32_t i = 0; i < states_.size(); ++i) index_of_key_.emplace(states_[i].key, i);
-  matched_.clear();
-  for (const ShadowCacheLight& light : lights) {
-    const auto found = index_of_key_.find(light.key);
-    matched_.push_back(found == index_of_key_.end() ? LightState{.key = light.key} : states_[found->second]);
-  }
-  std::swap(states_, matched_);
 }
 
 // Only lights not dirty already are worth testing; unbounded ones are dirty on any change.

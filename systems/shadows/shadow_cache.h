@@ -81,7 +81,6 @@ class ShadowCache {
     bool valid = false;  // its map holds a picture rendered into its current storage
   };
 
-  void match_states(std::span<const ShadowCacheLight> lights);
   void mark_dirty_by_casters(std::span<const ShadowCacheLight> lights,
                              std::span<const scene::Aabb> changed_casters, ecs::ThreadPool* pool);
   void choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,

@@ -8,6 +8,7 @@
 
 #include "ecs/thread_pool.h"
 
+#include "systems/shadows/align_by_key.h"
 #include "systems/shadows/atlas_tile_coords.h"
 #include "systems/shadows/quality_floor.h"
 
@@ -15,27 +16,6 @@ namespace sg::shadows {
 namespace {
 
 constexpr float unbounded_importance = 1.0e9f;
-
-// Makes `rendered` hold one entry per view of `views`, in their order: usually it holds the
-// previous frame's entries in this order already; otherwise each entry is carried over from the
-// same key, or new. Lights that are gone lose theirs; a light never has a cached map without its
-// entry, since the cache forgets lights that leave the list too.
-template <class Views, class Rendered>
-void align_entries(const Views& views, std::vector<Rendered>& rendered,
-                   std::unordered_map<uint64_t, uint32_t>& index_of_key) {
-  if (std::equal(views.begin(), views.end(), rendered.begin(), rendered.end(),
-                 [](const auto& view, const Rendered& entry) { return view.key == entry.key; }))
-    return;
-  index_of_key.clear();
-  for (uint32_t k = 0; k < rendered.size(); ++k) index_of_key.emplace(rendered[k].key, k);
-  std::vector<Rendered> matched;
-  matched.reserve(views.size());
-  for (const auto& view : views) {
-    const auto found = index_of_key.find(view.key);
-    matched.push_back(found == index_of_key.end() ? Rendered{.key = view.key} : rendered[found->second]);
-  }
-  rendered = std::move(matched);
-}
 
 // Lights a piece of work handles on the pool: enough that a piece outweighs handing it out.
 constexpr size_t views_per_piece = 256;
@@ -136,8 +116,9 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   for (size_t c = 0; c < cached_request_.size(); ++c) {
     decision_[cached_request_[c]] = {render_[c] != 0, usable_[c] != 0};
   }
-  align_entries(lights.maps, rendered_maps_, index_of_key_);
-  align_entries(lights.cubes, rendered_cubes_, index_of_key_);
+  // A light never has a cached map without its entry: the cache forgets lights that leave too.
+  align_by_key(lights.maps, rendered_maps_, index_of_key_, rendered_maps_scratch_);
+  align_by_key(lights.cubes, rendered_cubes_, index_of_key_, rendered_cubes_scratch_);
   const auto apply = [&](uint32_t request, uint32_t views, auto& view, Tally& tally, auto&& give_map) {
     view.resolution = 0;
     view.render = false;

@@ -127,7 +127,9 @@ class ShadowSchedule {
   };
   std::vector<RenderedMap> rendered_maps_;
   std::vector<RenderedCube> rendered_cubes_;
-  std::unordered_map<uint64_t, uint32_t> index_of_key_;  // scratch for matching
+  std::vector<RenderedMap> rendered_maps_scratch_;    // for align_by_key
+  std::vector<RenderedCube> rendered_cubes_scratch_;  // for align_by_key
+  std::unordered_map<uint64_t, uint32_t> index_of_key_;
 };
 
 }  // namespace sg::shadows
