@@ -163,16 +163,18 @@ void sort_by_group(FrameLights& out, ecs::ThreadPool* pool) {
   };
   out.group_begin.fill(0);
   out.group_types.fill(0);
-  for (const GpuLight& record : out.records) {
-    const uint32_t group = group_of(record);
+  // Each record's group first (in moved_to), then, once the groups are counted, its new place.
+  scratch.moved_to.resize(out.records.size());
+  for (size_t i = 0; i < out.records.size(); ++i) {
+    const uint32_t group = group_of(out.records[i]);
+    scratch.moved_to[i] = group;
     ++out.group_begin[group + 1];
-    out.group_types[group] |= 1u << record.info.x;
+    out.group_types[group] |= 1u << out.records[i].info.x;
   }
   for (uint32_t g = 0; g < light_group_count; ++g) out.group_begin[g + 1] += out.group_begin[g];
   std::array<uint32_t, light_group_count + 1> cursor = out.group_begin;
-  scratch.moved_to.resize(out.records.size());
   scratch.records.resize(out.records.size());
-  for (size_t i = 0; i < out.records.size(); ++i) scratch.moved_to[i] = cursor[group_of(out.records[i])]++;
+  for (uint32_t& place : scratch.moved_to) place = cursor[place]++;
   // The records themselves (208 bytes each) move in chunks on the pool.
   ecs::run_in_pieces(pool, out.records.size(), 1024, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) scratch.records[scratch.moved_to[i]] = out.records[i];
