@@ -50,6 +50,7 @@ void set_parent(World& world, Entity child, Entity parent) {
   }
   const Entity old_parent = parent_of(world, child);
   if (old_parent != null_entity) detach_from_parent(world, child, old_parent);
+  world.keep_removals<Parent>();  // update_world_transforms reads them: an entity became a root
   world.add<Parent>(child, Parent{parent, depth_of(world, parent) + 1});
   if (!world.has<Children>(parent)) world.add<Children>(parent);
   world.get_mut<Children>(parent).entities.push_back(child);

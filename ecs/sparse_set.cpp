@@ -1,6 +1,7 @@
 #include "ecs/sparse_set.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace sg::ecs {
 
@@ -52,6 +53,11 @@ void SparseSet::collect_changed_since(Tick since, std::vector<std::uint32_t>& ou
 }
 
 std::span<const Removal> SparseSet::removed_since(Tick since) const {
+  if (!keeps_removals_) {
+    throw std::logic_error(
+        "sg::ecs: removals of this component type are not kept; call World::keep_removals<T>() "
+        "before the removals you want to read");
+  }
   const auto first =
       std::upper_bound(removals_.begin(), removals_.end(), since,
                        [](Tick value, const Removal& removal) { return value < removal.tick; });
@@ -101,14 +107,14 @@ void SparseSet::insert_many(std::span<const Entity> entities, Tick now) {
 
 std::vector<bool> SparseSet::erase_many(std::span<const Entity> entities, Tick now) {
   std::vector<bool> doomed(dense_.size(), false);
-  removals_.reserve(removals_.size() + entities.size());
+  if (keeps_removals_) removals_.reserve(removals_.size() + entities.size());
   std::size_t doomed_count = 0;
   for (const Entity entity : entities) {
     const std::uint32_t slot = slot_of(entity);
     if (slot == npos || doomed[slot]) continue;
     doomed[slot] = true;
     sparse_[entity.index] = npos;
-    removals_.push_back(Removal{entity, now});
+    if (keeps_removals_) removals_.push_back(Removal{entity, now});
     ++doomed_count;
   }
   if (doomed_count == dense_.size()) {  // all of them, as when a scene is unloaded: nothing to keep
@@ -146,7 +152,7 @@ void SparseSet::erase(std::uint32_t slot, Tick now) {
   sparse_[removed.index] = npos;
   dense_.pop_back();
   ticks_.pop_back();
-  removals_.push_back(Removal{removed, now});
+  if (keeps_removals_) removals_.push_back(Removal{removed, now});
   ++layout_version_;
 }
 

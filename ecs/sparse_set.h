@@ -18,7 +18,7 @@ struct Removal {
 };
 
 // The type-independent half of a component pool: which entities have the component, at which
-// dense slot, and the history of changes and removals.
+// dense slot, the history of changes and, where asked for, of removals.
 //
 // Membership is a classic sparse set: `sparse_[entity.index]` points into the dense arrays, and
 // the dense entity array is checked on every lookup by handle, so stale handles never match
@@ -110,7 +110,13 @@ class SparseSet {
   // order.
   void collect_changed_since(Tick since, std::vector<std::uint32_t>& out) const;
 
-  // Removals after `since`, oldest first.
+  // From now on, removals are recorded (removed_since). Off by default: a record per removed
+  // component is most of what destroying an entity costs, and most types' removals have no
+  // reader.
+  void keep_removals() { keeps_removals_ = true; }
+  bool keeps_removals() const { return keeps_removals_; }
+  // Removals after `since`, oldest first; throws std::logic_error unless keep_removals() was
+  // called.
   std::span<const Removal> removed_since(Tick since) const;
   void forget_removals_before(Tick tick);
 
@@ -128,11 +134,12 @@ class SparseSet {
   // once. The typed pool appends their components.
   void insert_many(std::span<const Entity> entities, Tick now);
   // Removes the entities' components by one sequential pass that keeps the others in order,
-  // recording each removal at `now`; cheaper than swap-removes once a good share of the pool
-  // goes. Returns the mask of removed slots (by old slot); the typed pool compacts its
-  // component array with it.
+  // recording each removal at `now` (where removals are kept); cheaper than swap-removes once a good share of
+  // the pool goes. Returns the mask of removed slots (by old slot); the typed pool compacts its component
+  // array with it.
   std::vector<bool> erase_many(std::span<const Entity> entities, Tick now);
-  // Swap-removes `slot` from the membership arrays, recording the removal at `now`. The typed
+  // Swap-removes `slot` from the membership arrays, recording the removal at `now` (where
+  // removals are kept). The typed
   // pool must do the same swap on its component array.
   void erase(std::uint32_t slot, Tick now);
 
@@ -150,8 +157,9 @@ class SparseSet {
   std::vector<Tick> block_ticks_;      // newest tick among slots_per_block slots
   std::vector<Tick> group_ticks_;      // newest tick among slots_per_group slots
   Tick bulk_tick_ = 0;                 // last mark_all_changed; 0 if never
-  std::vector<Removal> removals_;      // ascending ticks
-  std::uint64_t layout_version_ = 0;   // bumped by every insert and erase
+  bool keeps_removals_ = false;
+  std::vector<Removal> removals_;     // ascending ticks; empty unless keeps_removals_
+  std::uint64_t layout_version_ = 0;  // bumped by every insert and erase
   mutable std::vector<LayoutComparison> layout_comparisons_;
 };
 

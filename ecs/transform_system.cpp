@@ -28,8 +28,10 @@ std::vector<DirtyRoot> find_dirty(World& world, Tick since) {
       [&](Entity entity, const LocalTransform&, const Children&) { changed.push_back(entity); });
   world.query<const Parent>().changed_since<Parent>(since).for_each(
       [&](Entity entity, const Parent&) { changed.push_back(entity); });
-  for (const Removal& removal : world.removed_since<Parent>(since)) {
-    if (world.alive(removal.entity)) changed.push_back(removal.entity);
+  if (world.keeps_removals<Parent>()) {  // set_parent asks for them; no hierarchy, no removals
+    for (const Removal& removal : world.removed_since<Parent>(since)) {
+      if (world.alive(removal.entity)) changed.push_back(removal.entity);
+    }
   }
   std::vector<DirtyRoot> dirty;
   dirty.reserve(changed.size());

@@ -45,8 +45,8 @@ class World {
     (pool<Components>().emplace_many(created, tick_, components), ...);
     return created;
   }
-  // Removes all of the entity's components (each removal is recorded) and makes its handle
-  // stale. Returns false for a stale handle.
+  // Removes all of the entity's components (recording each removal where its type keeps them:
+  // keep_removals) and makes its handle stale. Returns false for a stale handle.
   bool destroy(Entity entity);
   // Same as destroy for each entity (stale and repeated handles are skipped), one component
   // pool at a time. Returns how many were destroyed.
@@ -117,12 +117,30 @@ class World {
     return set->change_tick(slot);
   }
 
+  // Records from now on which entities lose a T (removed, or destroyed), for removed_since.
+  // Removal history is kept only for the types that ask: recording it is most of what
+  // destroying an entity costs.
+  template <typename... T>
+  void keep_removals() {
+    (pool<T>().keep_removals(), ...);
+  }
+
+  template <typename T>
+  bool keeps_removals() const {
+    const SparseSet* set = find_pool<T>();
+    return set != nullptr && set->keeps_removals();
+  }
+
   // Entities that lost the component after `since` (removed, or destroyed), oldest first. An
-  // entity may appear more than once and may have the component again by now.
+  // entity may appear more than once and may have the component again by now. Throws
+  // std::logic_error unless keep_removals<T>() was called (before the removals to be read).
   template <typename T>
   std::span<const Removal> removed_since(Tick since) const {
     const SparseSet* set = find_pool<T>();
-    return set == nullptr ? std::span<const Removal>{} : set->removed_since(since);
+    if (set == nullptr) {
+      throw std::logic_error("sg::ecs::World::removed_since: call keep_removals<T>() first");
+    }
+    return set->removed_since(since);
   }
 
   // Removal history is kept until dropped: call this with the oldest tick any reader will still

@@ -22,9 +22,13 @@ struct Name {
   std::string value;
 };
 
+// A world that keeps the removal history of MeshInstance, WorldTransform and Material, which
+// renderers read to notice drawables that went away (GpuScene::gather_changes).
+ecs::World make_scene_world();
+
 struct Scene {
   std::string name;  // the file path, or the built-in scene's name
-  ecs::World world;
+  ecs::World world = make_scene_world();
   MeshLibrary meshes;
   TextureLibrary textures;
   std::vector<std::string> warnings;  // odd but usable input, each also printed to stderr

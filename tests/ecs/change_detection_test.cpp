@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "ecs/world.h"
@@ -110,6 +111,7 @@ TEST(ChangeDetection, ReAddedInSameTickIsReportedOnce) {
 
 TEST(ChangeDetection, RemovalsAndDestructionAreRecordedPerComponentType) {
   World world;
+  world.keep_removals<Position, Velocity>();
   const Entity removed = test::spawn_moving(world);
   const Entity destroyed = test::spawn_moving(world);
   test::spawn_moving(world);
@@ -130,6 +132,26 @@ TEST(ChangeDetection, RemovalsAndDestructionAreRecordedPerComponentType) {
 
   world.forget_removals_before(world.tick() + 1);
   EXPECT_TRUE(world.removed_since<Position>(0).empty());
+}
+
+TEST(ChangeDetection, RemovalsAreKeptOnlyForTypesThatAskAndReadingOthersThrows) {
+  World world;
+  world.keep_removals<Velocity>();
+  const Entity first = test::spawn_moving(world);
+  const Entity second = test::spawn_moving(world);
+  const Tick before = world.tick();
+  world.advance_tick();
+  world.destroy(first);
+  EXPECT_THROW((void)world.removed_since<Position>(before), std::logic_error);
+  EXPECT_THROW((void)world.removed_since<test::Frozen>(before), std::logic_error);  // never used
+  ASSERT_EQ(world.removed_since<Velocity>(before).size(), 1u);
+
+  // Keeping starts when asked: later removals are recorded, earlier ones were not.
+  world.keep_removals<Position>();
+  world.destroy_many(std::vector<Entity>{second});
+  ASSERT_EQ(world.removed_since<Position>(before).size(), 1u);
+  EXPECT_EQ(world.removed_since<Position>(before)[0].entity, second);
+  EXPECT_EQ(world.removed_since<Velocity>(before).size(), 2u);
 }
 
 TEST(ChangeDetection, HistoryStaysCorrectAcrossManyFramesOfFullRewrites) {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "ecs/entity_registry.h"
 
 namespace sg::ecs {
@@ -41,6 +43,27 @@ TEST(EntityRegistry, FreeSlotIsNotAliveUnderItsNextGeneration) {
   registry.destroy(entity);
   EXPECT_FALSE(registry.alive(Entity{entity.index, entity.generation + 1}));
   EXPECT_EQ(registry.alive_count(), 0u);
+}
+
+TEST(EntityRegistry, ReusesEachFreedSlotOnceLastFreedFirstThenGrows) {
+  EntityRegistry registry;
+  std::vector<Entity> created;
+  registry.create_many(5, created);
+  const std::vector<Entity> doomed{created[1], created[3], created[4], created[1]};
+  EXPECT_EQ(registry.destroy_many(doomed), 3u);
+  EXPECT_EQ(registry.alive_count(), 2u);
+  std::vector<Entity> again;
+  registry.create_many(2, again);  // two of the three free slots
+  again.push_back(registry.create());
+  again.push_back(registry.create());  // the free list is empty by now: a new slot
+  ASSERT_EQ(again.size(), 4u);
+  EXPECT_EQ(again[0].index, created[4].index);
+  EXPECT_EQ(again[1].index, created[3].index);
+  EXPECT_EQ(again[2].index, created[1].index);
+  EXPECT_EQ(again[3].index, 5u);
+  for (const Entity entity : again) EXPECT_TRUE(registry.alive(entity));
+  EXPECT_FALSE(registry.alive(created[1]));
+  EXPECT_EQ(registry.alive_count(), 6u);
 }
 
 }  // namespace

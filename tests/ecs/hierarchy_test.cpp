@@ -56,6 +56,7 @@ TEST(Hierarchy, RejectsCyclesAndStaleHandles) {
 
 TEST(Hierarchy, ClearParentMakesRootAndRecordsRemoval) {
   World world;
+  world.keep_removals<Parent>();
   const Entity parent = world.create();
   const Entity child = world.create();
   const Entity grandchild = world.create();

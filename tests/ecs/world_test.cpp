@@ -119,6 +119,7 @@ TEST(World, CreateManyGivesEveryEntityTheComponentsAndReusesFreedSlots) {
 
 TEST(World, DestroyManySkipsStaleAndRepeatedHandlesAndRecordsRemovals) {
   World world;
+  world.keep_removals<Position, Velocity>();
   const std::vector<Entity> created = world.create_many(10, Position{});
   const Entity stale = world.create();
   world.destroy(stale);

@@ -190,13 +190,15 @@ void create2_bulk_raw(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * entity_count);
 }
 
-// Destroys every entity of a fresh world with `destroy(world, entities)`, world set-up untimed.
+// Destroys every entity of a fresh world with `destroy(world, entities)`, world set-up untimed;
+// with `keep_removals`, the world records every removal (World::keep_removals).
 template <class Destroy>
-void destroy_all(benchmark::State& state, Destroy destroy) {
+void destroy_all(benchmark::State& state, Destroy destroy, bool keep_removals = false) {
   for (auto _ : state) {
     state.PauseTiming();
     std::vector<Entity> entities;
     std::unique_ptr<World> world = make_world(&entities);
+    if (keep_removals) world->keep_removals<Position, Velocity, Acceleration>();
     state.ResumeTiming();
     destroy(*world, entities);
     benchmark::DoNotOptimize(world->entity_count());
@@ -207,6 +209,11 @@ void destroy_all(benchmark::State& state, Destroy destroy) {
 
 void destroy_bulk_ecs(benchmark::State& state) {
   destroy_all(state, [](World& world, const std::vector<Entity>& entities) { world.destroy_many(entities); });
+}
+
+void destroy_bulk_kept_ecs(benchmark::State& state) {
+  destroy_all(
+      state, [](World& world, const std::vector<Entity>& entities) { world.destroy_many(entities); }, true);
 }
 
 void destroy_ecs(benchmark::State& state) {
@@ -529,6 +536,7 @@ BENCHMARK(create2_raw)->Name("create2/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_bulk_ecs)->Name("create2_bulk/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(create2_bulk_raw)->Name("create2_bulk/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(destroy_bulk_ecs)->Name("destroy_bulk/ecs")->Unit(benchmark::kMillisecond);
+BENCHMARK(destroy_bulk_kept_ecs)->Name("destroy_bulk/ecs_removals_kept")->Unit(benchmark::kMillisecond);
 BENCHMARK(destroy_ecs)->Name("destroy/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(destroy_raw)->Name("destroy/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(add_remove_ecs)->Name("add_remove/ecs")->Unit(benchmark::kMillisecond);
