@@ -64,7 +64,7 @@ class ComponentPool final : public SparseSet {
   const T& at(std::uint32_t slot) const { return components_[slot]; }
 
  private:
-  std::vector<T> components_;
+  LargeArray<T> components_;
 };
 
 }  // namespace sg::ecs

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ecs/entity.h"
+#include "ecs/large_array.h"
 
 namespace sg::ecs {
 
@@ -37,7 +38,7 @@ class EntityRegistry {
     std::uint32_t generation = 0;    // of the live entity, or of the next one while free
     std::uint32_t next_free = live;  // live, or the next free slot (no_slot: none)
   };
-  std::vector<Slot> slots_;
+  LargeArray<Slot> slots_;
   std::uint32_t first_free_ = no_slot;
   std::size_t alive_count_ = 0;
 };

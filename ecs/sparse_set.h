@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ecs/entity.h"
+#include "ecs/large_array.h"
 
 namespace sg::ecs {
 
@@ -151,12 +152,12 @@ class SparseSet {
     bool same;
   };
 
-  std::vector<std::uint32_t> sparse_;  // entity index -> dense slot, npos when absent
-  std::vector<Entity> dense_;          // dense slot -> entity
-  std::vector<Tick> ticks_;            // dense slot -> tick of the newest write
-  std::vector<Tick> block_ticks_;      // newest tick among slots_per_block slots
-  std::vector<Tick> group_ticks_;      // newest tick among slots_per_group slots
-  Tick bulk_tick_ = 0;                 // last mark_all_changed; 0 if never
+  LargeArray<std::uint32_t> sparse_;  // entity index -> dense slot, npos when absent
+  LargeArray<Entity> dense_;          // dense slot -> entity
+  LargeArray<Tick> ticks_;            // dense slot -> tick of the newest write
+  LargeArray<Tick> block_ticks_;      // newest tick among slots_per_block slots
+  LargeArray<Tick> group_ticks_;      // newest tick among slots_per_group slots
+  Tick bulk_tick_ = 0;                // last mark_all_changed; 0 if never
   bool keeps_removals_ = false;
   std::vector<Removal> removals_;     // ascending ticks; empty unless keeps_removals_
   std::uint64_t layout_version_ = 0;  // bumped by every insert and erase

@@ -91,6 +91,27 @@ TEST(World, GetMutWritesThrough) {
   EXPECT_EQ(world.get<Position>(entity).x, 5.0f);
 }
 
+// Past 2 MiB an array lives in a huge-page mapping of its own (ecs/large_array.h): growing,
+// compacting and freeing such arrays must keep every component.
+TEST(World, PoolsLargerThanAHugePageKeepTheirComponents) {
+  World world;
+  constexpr std::uint32_t count = 300'000;  // dense entities 2.4 MB, sparse indices 1.2 MB
+  const std::vector<Entity> created = world.create_many(count, Position{});
+  for (std::uint32_t i = 0; i < count; ++i) world.add<Velocity>(created[i], Velocity{float(i), 0.0f});
+  std::vector<Entity> odd;
+  for (std::uint32_t i = 1; i < count; i += 2) odd.push_back(created[i]);
+  EXPECT_EQ(world.destroy_many(odd), count / 2);
+  std::uint32_t visited = 0;
+  bool all_even = true;
+  world.query<const Position, const Velocity>().for_each([&](Entity entity, const Position&,
+                                                             const Velocity& velocity) {
+    ++visited;
+    all_even = all_even && static_cast<std::uint32_t>(velocity.x) == entity.index && entity.index % 2 == 0;
+  });
+  EXPECT_EQ(visited, count / 2);
+  EXPECT_TRUE(all_even);
+}
+
 TEST(World, CreateManyGivesEveryEntityTheComponentsAndReusesFreedSlots) {
   World world;
   const Entity freed = world.create();
