@@ -23,8 +23,9 @@ struct Children {
 
 // Makes `child` a child of `parent`, detaching it from its previous parent. Marks the Parent
 // component of `child` and of all its descendants changed (their depths and world matrices
-// change). The world keeps Parent removals from then on (World::keep_removals). Throws std::invalid_argument
-// for stale handles, `child == parent`, or when `parent` is a descendant of `child` (a cycle).
+// change). The world keeps Parent removals from then on (World::keep_removals). Throws
+// std::invalid_argument for stale handles, `child == parent`, or when `parent` is a descendant of
+// `child` (a cycle).
 void set_parent(World& world, Entity child, Entity parent);
 
 // Makes `child` a root. Its Parent removal is recorded, and its descendants' Parent components

@@ -135,9 +135,9 @@ class SparseSet {
   // once. The typed pool appends their components.
   void insert_many(std::span<const Entity> entities, Tick now);
   // Removes the entities' components by one sequential pass that keeps the others in order,
-  // recording each removal at `now` (where removals are kept); cheaper than swap-removes once a good share of
-  // the pool goes. Returns the mask of removed slots (by old slot); the typed pool compacts its component
-  // array with it.
+  // recording each removal at `now` (where removals are kept); cheaper than swap-removes once a
+  // good share of the pool goes. Returns the mask of removed slots (by old slot); the typed pool
+  // compacts its component array with it.
   std::vector<bool> erase_many(std::span<const Entity> entities, Tick now);
   // Swap-removes `slot` from the membership arrays, recording the removal at `now` (where
   // removals are kept). The typed

@@ -25,7 +25,6 @@ layout(set = 0, binding = gbuffer_albedo_binding) uniform sampler2D gbuffer_albe
 layout(std430, set = 0, binding = tile_lights_binding) readonly buffer TileLights { uint tile_lights[]; };
 layout(std430, set = 0, binding = tile_ranges_binding) readonly buffer TileRanges { uvec2 tile_ranges[]; };
 
-
 // The G-buffer's surface at `pixel` and its world position; false for the background.
 bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {
   float depth = texelFetch(scene_depth, pixel, 0).r;

@@ -1,7 +1,7 @@
 #pragma once
 // Tiled deferred lighting: the lit sum starts from the ambient term and the background (a
-// compute pass, shaders/lighting_ambient.comp, or the G-buffer pass itself: LitSumStart), then for each light
-// group that has lights one pass with that group's shadow code compiled in
+// compute pass, shaders/lighting_ambient.comp, or the G-buffer pass itself: LitSumStart), then
+// for each light group that has lights one pass with that group's shadow code compiled in
 // (shaders/tiled_lighting.glsl), over the tiles that have lights of the group (an indirect
 // dispatch or draw from LightTilesPass), adding them to the lit sum. The group passes are compute
 // dispatches or fragment passes (DeferredPasses, lighting_path.h).
@@ -44,8 +44,8 @@ class TiledLightingPass {
   static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
 
   // Adds the ambient pass, which creates the lit sum (unless the G-buffer pass started it:
-  // GBuffer::lit_sum, which lit_sum_from_gbuffer() requires), and one pass per group with lights in the
-  // last prepare(); returns the lit sum's newest version. `lights`, the records prepare() saw,
+  // GBuffer::lit_sum, which lit_sum_from_gbuffer() requires), and one pass per group with lights
+  // in the last prepare(); returns the lit sum's newest version. `lights`, the records prepare() saw,
   // must live until the frame is recorded. Positions come from the depth buffer through the
   // camera's `view_projection`; `ambient` is the ambient term kA * IA.
   rg::ImageHandle add_to(rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles,
