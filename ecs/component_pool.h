@@ -22,10 +22,14 @@ class ComponentPool final : public SparseSet {
       return components_[slot];
     }
     insert(entity, now);
-    return components_.emplace_back(T{std::forward<Args>(args)...});
+    components_.emplace_back(T{std::forward<Args>(args)...});
+    if (owner() == nullptr) return components_.back();
+    owner()->joined_pool(entity);
+    return components_[slot_of_live(entity)];
   }
 
   bool remove(Entity entity, Tick now) override {
+    if (owner() != nullptr) owner()->leaving_pool(*this, entity);
     const std::uint32_t slot = slot_of(entity);
     if (slot == npos) return false;
     if (slot + std::size_t{1} != components_.size()) components_[slot] = std::move(components_.back());
@@ -38,6 +42,9 @@ class ComponentPool final : public SparseSet {
   void emplace_many(std::span<const Entity> entities, Tick now, const T& value) {
     insert_many(entities, now);
     components_.insert(components_.end(), entities.size(), value);
+    if (owner() != nullptr) {
+      for (const Entity entity : entities) owner()->joined_pool(entity);
+    }
   }
 
   void remove_many(std::span<const Entity> entities, Tick now) override {
@@ -46,6 +53,11 @@ class ComponentPool final : public SparseSet {
     if (entities.size() * 16 < size()) {
       for (const Entity entity : entities) remove(entity, now);
       return;
+    }
+    // Members leave the group first, so the pass below only removes slots behind its prefix and,
+    // keeping the others' order, leaves the prefix as it is.
+    if (owner() != nullptr) {
+      for (const Entity entity : entities) owner()->leaving_pool(*this, entity);
     }
     const std::vector<bool> doomed = erase_many(entities, now);
     if (size() == 0) {
@@ -64,6 +76,10 @@ class ComponentPool final : public SparseSet {
   const T& at(std::uint32_t slot) const { return components_[slot]; }
 
  private:
+  void swap_components(std::uint32_t a, std::uint32_t b) override {
+    std::swap(components_[a], components_[b]);
+  }
+
   LargeArray<T> components_;
 };
 

@@ -25,7 +25,9 @@ namespace sg::ecs {
 // other pool's sparse array per entity (no generation check: the entities come from a pool, so
 // they are alive); the loop is fully inlined, no virtual call per entity. Change bookkeeping is
 // touched only for the non-const components: three stores per entity, with no log to compact
-// later (see SparseSet).
+// later (see SparseSet). When the query reads every pool of an owning group (World::group), it
+// walks the group's members instead, which share a slot in those pools: no lookup there, and
+// over exactly the group's components a plain loop like the one over aligned pools.
 //
 // Do not add or remove components or entities inside the callback (use a CommandBuffer);
 // get_mut on any entity is fine. Queries cache which pools share a layout, so even a const World
@@ -149,16 +151,58 @@ class Query {
       run_in_pieces(threads, changed.size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
         visit_range(
             watched_, [&](std::size_t i) { return changed[i]; }, begin, end, now, fn,
-            std::index_sequence_for<Components...>{});
+            std::index_sequence_for<Components...>{}, nullptr);
       });
       return;
     }
+    const auto identity = [](std::size_t i) { return static_cast<std::uint32_t>(i); };
     const SparseSet* driver = smallest_pool();
+    if (const OwningGroup* group = covering_group(); group != nullptr && group->size() <= driver->size()) {
+      // The group's members are the first slots of its pools, the same entity in each.
+      const bool plain =
+          excluded_.empty() &&
+          std::apply([&](const auto*... pools) { return ((pools->owner() == group) && ...); }, pools_);
+      run_in_pieces(threads, group->size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
+        if (plain) {
+          mark_range_changed(begin, end, now);
+          for_each_slot(fn, begin, end);
+        } else {
+          visit_range(group->pools().front(), identity, begin, end, now, fn,
+                      std::index_sequence_for<Components...>{}, group);
+        }
+      });
+      return;
+    }
     run_in_pieces(threads, driver->size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
-      visit_range(
-          driver, [](std::size_t i) { return static_cast<std::uint32_t>(i); }, begin, end, now, fn,
-          std::index_sequence_for<Components...>{});
+      visit_range(driver, identity, begin, end, now, fn, std::index_sequence_for<Components...>{}, nullptr);
     });
+  }
+
+  // An owning group all of whose pools the query reads, or null: its members are the entities
+  // with at least those components, without a lookup.
+  const OwningGroup* covering_group() const {
+    const OwningGroup* found = nullptr;
+    const auto consider = [&](const SparseSet* pool) {
+      const OwningGroup* group = pool->owner();
+      if (found != nullptr || group == nullptr) return;
+      const bool covered =
+          std::all_of(group->pools().begin(), group->pools().end(), [&](const SparseSet* owned) {
+            return std::apply([&](const auto*... pools) { return ((pools == owned) || ...); }, pools_);
+          });
+      if (covered) found = group;
+    };
+    std::apply([&](const auto*... pools) { (consider(pools), ...); }, pools_);
+    return found;
+  }
+
+  void mark_range_changed(std::size_t begin, std::size_t end, Tick now) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ((is_mutable<Components> ? std::get<I>(pools_)->mark_range_changed(static_cast<std::uint32_t>(begin),
+                                                                         static_cast<std::uint32_t>(end), now)
+                               : void()),
+       ...);
+    }
+    (std::index_sequence_for<Components...>{});
   }
 
   // True when slot i of every pool is the same entity and nothing is excluded, so the query is
@@ -208,20 +252,24 @@ class Query {
   static void prefetch_for_write(const void* address) { __builtin_prefetch(address, 1); }
 
   // Visits, for each i in [begin, end), the entity in slot slot_at(i) of `driver` if it has
-  // every component and none of the excluded ones. Every array is reached through a pointer
-  // held in a local, so the loop body is loads and stores only.
+  // every component and none of the excluded ones. The pools of `aligned_group` (null, or the
+  // driver's group, visited within its members) share the driver's slot and need no lookup.
+  // Every array is reached through a pointer held in a local, so the loop body is loads and
+  // stores only.
   template <typename Fn, typename SlotAt, std::size_t... I>
   void visit_range(const SparseSet* driver, const SlotAt& slot_at, std::size_t begin, std::size_t end,
-                   Tick now, Fn& fn, std::index_sequence<I...>) {
+                   Tick now, Fn& fn, std::index_sequence<I...>, const OwningGroup* aligned_group) {
     const std::span<const Entity> entities = driver->entities();
     const std::array lookups{std::get<I>(pools_)->live_lookup()...};
-    const std::array is_driver{(std::get<I>(pools_) == driver)...};
+    const std::array shares_slot{
+        (std::get<I>(pools_) == driver ||
+         (aligned_group != nullptr && std::get<I>(pools_)->owner() == aligned_group))...};
     const std::tuple data{std::get<I>(pools_)->data()...};
     const std::array markers{std::get<I>(pools_)->change_marker()...};
     std::vector<SparseSet::LiveLookup> excluded;
     for (const SparseSet* pool : excluded_) excluded.push_back(pool->live_lookup());
     const auto prefetch_sparse = [&](std::size_t pool, Entity entity) {
-      if (!is_driver[pool] && entity.index < lookups[pool].size)
+      if (!shares_slot[pool] && entity.index < lookups[pool].size)
         prefetch(&lookups[pool].sparse[entity.index]);
     };
     const auto prefetch_component = [&]<std::size_t J>(std::integral_constant<std::size_t, J>,
@@ -243,14 +291,14 @@ class Query {
         const std::uint32_t ahead_slot = slot_at(i + prefetch_distance);
         const Entity ahead = entities[ahead_slot];
         (prefetch_component(std::integral_constant<std::size_t, I>{},
-                            is_driver[I] ? ahead_slot : lookups[I](ahead)),
+                            shares_slot[I] ? ahead_slot : lookups[I](ahead)),
          ...);
       }
       const std::uint32_t driver_slot = slot_at(i);
       const Entity entity = entities[driver_slot];
       std::array<std::uint32_t, sizeof...(Components)> slots{};
       const bool has_all =
-          (((slots[I] = is_driver[I] ? driver_slot : lookups[I](entity)) != SparseSet::npos) && ...);
+          (((slots[I] = shares_slot[I] ? driver_slot : lookups[I](entity)) != SparseSet::npos) && ...);
       if (!has_all) continue;
       if (std::any_of(excluded.begin(), excluded.end(), [&](const SparseSet::LiveLookup& lookup) {
             return lookup(entity) != SparseSet::npos;

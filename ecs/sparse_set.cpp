@@ -20,6 +20,33 @@ bool SparseSet::has_same_layout(const SparseSet& other) const {
   return known->same;
 }
 
+void SparseSet::mark_range_changed(std::uint32_t begin, std::uint32_t end, Tick now) {
+  if (begin >= end) return;
+  std::fill(ticks_.begin() + begin, ticks_.begin() + end, now);
+  // Neighbouring ranges share the summaries at their ends: relaxed atomic stores of one tick.
+  for (std::uint32_t block = begin / slots_per_block; block <= (end - 1) / slots_per_block; ++block) {
+    std::atomic_ref(block_ticks_[block]).store(now, std::memory_order_relaxed);
+  }
+  for (std::uint32_t group = begin / slots_per_group; group <= (end - 1) / slots_per_group; ++group) {
+    std::atomic_ref(group_ticks_[group]).store(now, std::memory_order_relaxed);
+  }
+}
+
+void SparseSet::swap_slots(std::uint32_t a, std::uint32_t b) {
+  if (a == b) return;
+  swap_components(a, b);
+  std::swap(dense_[a], dense_[b]);
+  std::swap(ticks_[a], ticks_[b]);
+  sparse_[dense_[a].index] = a;
+  sparse_[dense_[b].index] = b;
+  // Each tick moved to a slot whose summaries must stay upper bounds.
+  for (const std::uint32_t slot : {a, b}) {
+    block_ticks_[slot / slots_per_block] = std::max(block_ticks_[slot / slots_per_block], ticks_[slot]);
+    group_ticks_[slot / slots_per_group] = std::max(group_ticks_[slot / slots_per_group], ticks_[slot]);
+  }
+  ++layout_version_;
+}
+
 void SparseSet::collect_changed_since(Tick since, std::vector<std::uint32_t>& out) const {
   if (bulk_tick_ > since) {
     // Everything present at the bulk mark changed then, and everything added since is newer.

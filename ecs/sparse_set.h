@@ -9,6 +9,7 @@
 
 #include "ecs/entity.h"
 #include "ecs/large_array.h"
+#include "ecs/owning_group.h"
 
 namespace sg::ecs {
 
@@ -103,6 +104,9 @@ class SparseSet {
 
   // Records a write at `now` to every component in the pool, in O(1).
   void mark_all_changed(Tick now) { bulk_tick_ = now; }
+  // Records a write at `now` to the components in slots [begin, end): a fill, no per-slot
+  // branch. Disjoint ranges may be marked concurrently, as ChangeMarker calls may.
+  void mark_range_changed(std::uint32_t begin, std::uint32_t end, Tick now);
 
   // Tick of the newest write to the component of the entity in `slot`.
   Tick change_tick(std::uint32_t slot) const { return std::max(ticks_[slot], bulk_tick_); }
@@ -120,6 +124,12 @@ class SparseSet {
   // called.
   std::span<const Removal> removed_since(Tick since) const;
   void forget_removals_before(Tick tick);
+
+  // The owning group that keeps this pool's order (World::group), or null.
+  OwningGroup* owner() const { return owner_; }
+  void set_owner(OwningGroup* group) { owner_ = group; }
+  // Exchanges two slots' entities, change ticks and components (an owning group's reordering).
+  void swap_slots(std::uint32_t a, std::uint32_t b);
 
   // Removes the entity's component, recording the removal at `now`. Returns false if absent.
   virtual bool remove(Entity entity, Tick now) = 0;
@@ -143,6 +153,8 @@ class SparseSet {
   // removals are kept). The typed
   // pool must do the same swap on its component array.
   void erase(std::uint32_t slot, Tick now);
+  // The typed pool's half of swap_slots.
+  virtual void swap_components(std::uint32_t a, std::uint32_t b) = 0;
 
  private:
   struct LayoutComparison {
@@ -159,6 +171,7 @@ class SparseSet {
   LargeArray<Tick> group_ticks_;      // newest tick among slots_per_group slots
   Tick bulk_tick_ = 0;                // last mark_all_changed; 0 if never
   bool keeps_removals_ = false;
+  OwningGroup* owner_ = nullptr;
   std::vector<Removal> removals_;     // ascending ticks; empty unless keeps_removals_
   std::uint64_t layout_version_ = 0;  // bumped by every insert and erase
   mutable std::vector<LayoutComparison> layout_comparisons_;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -147,6 +148,27 @@ class World {
   // ask about.
   void forget_removals_before(Tick tick);
 
+  // Declares an owning group (ecs/owning_group.h): from now on the entities that have every one
+  // of `Owned` stay at the front of those pools, in one order, and queries over (at least) these
+  // components walk them as parallel arrays instead of looking each one up. Costs a swap per
+  // owned pool when an entity joins or leaves the group, and the owned pools no longer keep
+  // create_many's order for queries over other component sets. Declaring the same set again
+  // returns the existing group; throws std::logic_error if one of the pools is another group's.
+  template <typename... Owned>
+  const OwningGroup& group() {
+    static_assert(sizeof...(Owned) >= 2, "a group owns at least two component types");
+    static_assert(((count_of<Owned, Owned...> == 1) && ...), "group takes each component type once");
+    std::vector<SparseSet*> owned{&pool<Owned>()...};
+    const OwningGroup* existing = owned.front()->owner();
+    if (existing != nullptr && existing->pools().size() == owned.size() &&
+        std::all_of(owned.begin(), owned.end(),
+                    [&](const SparseSet* set) { return set->owner() == existing; })) {
+      return *existing;
+    }
+    groups_.push_back(std::make_unique<OwningGroup>(std::move(owned)));
+    return *groups_.back();
+  }
+
   // Iterates the entities that have every listed component; see ecs/query.h.
   template <typename... Components>
   Query<Components...> query() {
@@ -184,6 +206,7 @@ class World {
 
   EntityRegistry entities_;
   std::vector<std::unique_ptr<SparseSet>> pools_;  // by component_id; null if never used
+  std::vector<std::unique_ptr<OwningGroup>> groups_;
   Tick tick_ = 1;  // 0 is "before anything happened", so changed_since(0) means "ever"
 };
 

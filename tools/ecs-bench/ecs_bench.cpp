@@ -252,9 +252,13 @@ void destroy_raw(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * entity_count);
 }
 
+// `Grouped`: Health and Position form an owning group, so every add joins it and every remove
+// leaves it (a swap in each of the two pools): what a group costs structural changes.
+template <bool Grouped>
 void add_remove_ecs(benchmark::State& state) {
   std::vector<Entity> entities;
   const std::unique_ptr<World> world = make_world(&entities);
+  if (Grouped) world->group<Position, Health>();
   for (auto _ : state) {
     for (const Entity entity : entities) world->add<Health>(entity, 1.0f);
     for (const Entity entity : entities) world->remove<Health>(entity);
@@ -416,10 +420,13 @@ std::vector<std::uint32_t> sparse_members(bool scattered) {
   return members;
 }
 
-// Arg: 0 writes Position (so every visit is change-tracked), 1 only reads both.
-template <bool Scattered>
+// Arg: 0 writes Position (so every visit is change-tracked), 1 only reads both. `Grouped`
+// declares the (Position, Velocity) owning group first, so the query walks its members without
+// lookups.
+template <bool Scattered, bool Grouped>
 void sparse_iterate_ecs(benchmark::State& state) {
   World world;
+  if (Grouped) world.group<Position, Velocity>();
   std::vector<Entity> entities;
   for (std::uint32_t i = 0; i < entity_count; ++i) {
     entities.push_back(world.create());
@@ -530,9 +537,11 @@ BENCHMARK(iterate3_raw)->Name("iterate3/raw")->Unit(benchmark::kMillisecond);
 void write_and_read(benchmark::internal::Benchmark* sparse) {
   sparse->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 }
-BENCHMARK(sparse_iterate_ecs<false>)->Name("sparse_iterate/ecs")->Apply(write_and_read);
+BENCHMARK(sparse_iterate_ecs<false, false>)->Name("sparse_iterate/ecs")->Apply(write_and_read);
+BENCHMARK(sparse_iterate_ecs<false, true>)->Name("sparse_iterate/ecs_group")->Apply(write_and_read);
 BENCHMARK(sparse_iterate_raw<false>)->Name("sparse_iterate/raw")->Apply(write_and_read);
-BENCHMARK(sparse_iterate_ecs<true>)->Name("sparse_scattered/ecs")->Apply(write_and_read);
+BENCHMARK(sparse_iterate_ecs<true, false>)->Name("sparse_scattered/ecs")->Apply(write_and_read);
+BENCHMARK(sparse_iterate_ecs<true, true>)->Name("sparse_scattered/ecs_group")->Apply(write_and_read);
 BENCHMARK(sparse_iterate_raw<true>)->Name("sparse_scattered/raw")->Apply(write_and_read);
 // Thread counts: 1 to 16, for the lent 16-core machine; this VM has 2 cores.
 BENCHMARK(transform_update_ecs)
@@ -561,7 +570,8 @@ BENCHMARK(destroy_bulk_ecs)->Name("destroy_bulk/ecs")->Unit(benchmark::kMillisec
 BENCHMARK(destroy_bulk_kept_ecs)->Name("destroy_bulk/ecs_removals_kept")->Unit(benchmark::kMillisecond);
 BENCHMARK(destroy_ecs)->Name("destroy/ecs")->Unit(benchmark::kMillisecond);
 BENCHMARK(destroy_raw)->Name("destroy/raw")->Unit(benchmark::kMillisecond);
-BENCHMARK(add_remove_ecs)->Name("add_remove/ecs")->Unit(benchmark::kMillisecond);
+BENCHMARK(add_remove_ecs<false>)->Name("add_remove/ecs")->Unit(benchmark::kMillisecond);
+BENCHMARK(add_remove_ecs<true>)->Name("add_remove/ecs_group")->Unit(benchmark::kMillisecond);
 BENCHMARK(add_remove_raw)->Name("add_remove/raw")->Unit(benchmark::kMillisecond);
 BENCHMARK(add_remove_archetype_model)->Name("add_remove/archetype_model")->Unit(benchmark::kMillisecond);
 BENCHMARK(changed_since_ecs)->Name("changed_since/ecs")->Arg(1)->Arg(10)->Unit(benchmark::kMicrosecond);
