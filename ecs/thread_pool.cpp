@@ -1,6 +1,24 @@
 #include "ecs/thread_pool.h"
 
+#include <stdexcept>
+
 namespace sg::ecs {
+namespace {
+
+// Spins (yielding the core to anything else runnable) until `done` or spin_time has passed.
+template <class Done>
+bool spin_until(const Done& done) {
+  const auto until = std::chrono::steady_clock::now() + ThreadPool::spin_time;
+  while (!done()) {
+    if (std::chrono::steady_clock::now() >= until) return false;
+    std::this_thread::yield();
+  }
+  return true;
+}
+
+std::uint32_t batch_of(std::uint64_t claim) { return static_cast<std::uint32_t>(claim >> 32); }
+
+}  // namespace
 
 ThreadPool::ThreadPool(unsigned workers) {
   threads_.reserve(workers);
@@ -8,11 +26,8 @@ ThreadPool::ThreadPool(unsigned workers) {
 }
 
 ThreadPool::~ThreadPool() {
-  {
-    const std::lock_guard lock(mutex_);
-    stopping_ = true;
-  }
-  batch_started_.notify_all();
+  stopping_.store(true);
+  signal_workers();
   for (std::thread& thread : threads_) thread.join();
 }
 
@@ -21,74 +36,73 @@ unsigned ThreadPool::default_workers() {
   return hardware > 1 ? hardware - 1 : 0;
 }
 
-void ThreadPool::wake() {
-  if (threads_.empty()) return;
-  {
-    const std::lock_guard lock(mutex_);
-    ++wakes_;
-  }
-  batch_started_.notify_all();
+void ThreadPool::signal_workers() {
+  signals_.fetch_add(1, std::memory_order_release);
+  signals_.notify_all();
 }
 
-void ThreadPool::run(std::size_t count, const std::function<void(std::size_t)>& task) {
+void ThreadPool::wake() {
+  if (!threads_.empty()) signal_workers();
+}
+
+void ThreadPool::run(std::size_t count, const Task& task) {
   if (count == 0) return;
-  std::size_t batch = 0;
-  {
-    const std::lock_guard lock(mutex_);
-    task_ = &task;
-    count_ = count;
-    next_ = 0;
-    unfinished_ = count;
-    error_ = nullptr;
-    batch = ++batch_;
-  }
-  batch_started_.notify_all();
+  if (count > UINT32_MAX) throw std::length_error("sg::ecs::ThreadPool::run: 2^32 tasks or more");
+  error_ = nullptr;
+  task_.store(&task, std::memory_order_relaxed);
+  count_.store(static_cast<std::uint32_t>(count), std::memory_order_relaxed);
+  unfinished_.store(static_cast<std::uint32_t>(count), std::memory_order_relaxed);
+  const std::uint32_t batch = batch_of(claim_.load(std::memory_order_relaxed)) + 1;
+  claim_.store(std::uint64_t{batch} << 32, std::memory_order_release);
+  if (!threads_.empty()) signal_workers();
   drain(batch);
-  std::unique_lock lock(mutex_);
-  batch_finished_.wait(lock, [this] { return unfinished_ == 0; });
+  const auto finished = [this] { return unfinished_.load(std::memory_order_acquire) == 0; };
+  if (!spin_until(finished)) {
+    for (std::uint32_t left = unfinished_.load(std::memory_order_acquire); left != 0;
+         left = unfinished_.load(std::memory_order_acquire)) {
+      unfinished_.wait(left, std::memory_order_acquire);
+    }
+  }
   if (error_ != nullptr) std::rethrow_exception(error_);
 }
 
-void ThreadPool::drain(std::size_t batch) {
-  std::unique_lock lock(mutex_);
-  // A worker that wakes late may find the next batch already running: it joins that one only
-  // through its own wake-up, never with this batch's number.
-  while (batch_ == batch && next_ < count_) {
-    const std::size_t index = next_++;
-    const std::function<void(std::size_t)>& task = *task_;  // alive until this index finishes
-    lock.unlock();
-    std::exception_ptr error;
+void ThreadPool::drain(std::uint32_t batch) {
+  for (;;) {
+    std::uint64_t claim = claim_.load(std::memory_order_acquire);
+    do {
+      // count_ may already be a newer batch's: then claim_ has moved on and the exchange fails.
+      if (batch_of(claim) != batch ||
+          static_cast<std::uint32_t>(claim) >= count_.load(std::memory_order_relaxed)) {
+        return;
+      }
+    } while (!claim_.compare_exchange_weak(claim, claim + 1, std::memory_order_acq_rel,
+                                           std::memory_order_acquire));
     try {
-      task(index);
+      (*task_.load(std::memory_order_relaxed))(static_cast<std::uint32_t>(claim));
     } catch (...) {
-      error = std::current_exception();
+      const std::lock_guard lock(error_mutex_);
+      if (error_ == nullptr) error_ = std::current_exception();
     }
-    lock.lock();
-    if (error != nullptr && error_ == nullptr) error_ = error;
-    if (--unfinished_ == 0) batch_finished_.notify_all();
-  }
-}
-
-void ThreadPool::spin_for_batch(std::size_t seen) const {
-  const auto until = std::chrono::steady_clock::now() + spin_time;
-  while (batch_.load() == seen && !stopping_.load() && std::chrono::steady_clock::now() < until) {
-    std::this_thread::yield();
+    if (unfinished_.fetch_sub(1, std::memory_order_acq_rel) == 1) unfinished_.notify_all();
   }
 }
 
 void ThreadPool::work() {
-  std::size_t seen = 0;
-  std::size_t seen_wakes = 0;
+  std::uint32_t seen = 0;
   for (;;) {
-    spin_for_batch(seen);
-    std::unique_lock lock(mutex_);
-    batch_started_.wait(lock, [&] { return stopping_ || batch_ != seen || wakes_ != seen_wakes; });
-    if (stopping_) return;
-    seen_wakes = wakes_;
-    if (batch_ == seen) continue;  // woken ahead of a batch: spin for it
-    seen = batch_;
-    lock.unlock();
-    drain(seen);
+    // Read before looking for a batch, so a batch or wake() after the look changes it and the
+    // wait below returns at once instead of missing it.
+    const std::uint32_t signals = signals_.load(std::memory_order_acquire);
+    if (stopping_.load()) return;
+    const std::uint32_t batch = batch_of(claim_.load(std::memory_order_acquire));
+    if (batch != seen) {
+      seen = batch;
+      drain(batch);
+    } else {
+      signals_.wait(signals, std::memory_order_acquire);
+    }
+    // After a batch or a wake-up, the next batch is likely close: wait for it awake.
+    spin_until([&] { return batch_of(claim_.load(std::memory_order_acquire)) != seen || stopping_.load(); });
   }
 }
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <functional>
 #include <mutex>
@@ -25,7 +25,9 @@ namespace sg::ecs {
 // - If tasks throw, the remaining tasks still run and run rethrows the first exception.
 // - After a batch, and after wake(), workers wait for the next batch spinning (yielding) for
 //   spin_time before they sleep: a frame runs its batches back to back, and waking a sleeping
-//   thread can take longer than its share of a batch.
+//   thread can take longer than its share of a batch. The caller, once out of tasks, waits for
+//   the batch's last ones the same way.
+// - count must be below 2^32.
 class ThreadPool {
  public:
   // `workers` threads besides the caller; 0 runs everything on the calling thread.
@@ -49,24 +51,27 @@ class ThreadPool {
   static constexpr std::chrono::microseconds spin_time{200};
 
  private:
-  void work();
-  // Returns once batch_ differs from `seen`, the pool is stopping, or spin_time has passed.
-  void spin_for_batch(std::size_t seen) const;
-  // Claims and runs tasks of batch number `batch` until none are left or another batch began.
-  void drain(std::size_t batch);
+  using Task = std::function<void(std::size_t)>;
 
-  std::mutex mutex_;
-  std::condition_variable batch_started_;
-  std::condition_variable batch_finished_;
-  const std::function<void(std::size_t)>* task_ = nullptr;
-  std::size_t count_ = 0;
-  std::size_t next_ = 0;        // first unclaimed task of the batch
-  std::size_t unfinished_ = 0;  // claimed or unclaimed tasks not returned yet
-  // Number of the current batch; workers join each once. Written under mutex_, read by spinning
-  // workers without it.
-  std::atomic<std::size_t> batch_{0};
-  std::size_t wakes_ = 0;  // wake() calls
-  std::exception_ptr error_;
+  void work();
+  // Claims and runs tasks of batch number `batch` until none are left or another batch began.
+  void drain(std::uint32_t batch);
+  // Wakes sleeping workers: they re-read claim_ and spin for a while.
+  void signal_workers();
+
+  // Tasks are claimed without a lock, one compare-exchange each: the batch number in the high
+  // half, the next unclaimed task in the low half, so a worker that wakes late can never claim a
+  // task of a newer batch under an old number. A mutex per claim cost more than the tasks of a
+  // short batch once a dozen threads contended for it.
+  std::atomic<std::uint64_t> claim_{0};
+  // The current batch's tasks; written before claim_ announces the batch. A claim that succeeds
+  // proves its batch still runs, so these are that batch's when it reads them.
+  std::atomic<const Task*> task_{nullptr};
+  std::atomic<std::uint32_t> count_{0};
+  std::atomic<std::uint32_t> unfinished_{0};  // tasks of the batch not returned yet
+  std::atomic<std::uint32_t> signals_{0};     // bumped by each batch and wake(); sleepers wait on it
+  std::mutex error_mutex_;
+  std::exception_ptr error_;  // the batch's first exception
   std::atomic<bool> stopping_{false};
   std::vector<std::thread> threads_;
 };

@@ -38,6 +38,13 @@ TEST(ThreadPool, WakeBeforeABatchChangesNothingButTiming) {
   without_workers.wake();
 }
 
+TEST(ThreadPool, RefusesBatchesOfAsManyTasksAsTheClaimCounterHolds) {
+  ThreadPool threads(1);
+  bool ran = false;
+  EXPECT_THROW(threads.run(std::size_t{1} << 32, [&](std::size_t) { ran = true; }), std::length_error);
+  EXPECT_FALSE(ran);
+}
+
 TEST(ThreadPool, WithoutWorkersRunsOnTheCaller) {
   ThreadPool threads(0);
   int sum = 0;

@@ -501,6 +501,28 @@ void transform_update_ecs(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * entity_count);
 }
 
+// What one ThreadPool batch costs beyond its tasks: a frame runs a dozen or more batches of a
+// few dozen short tasks (lights, views, moved instances), so this overhead multiplies. Arg 0:
+// threads (the caller included); Arg 1: microseconds of serial work between batches, untimed
+// (0: back to back, as within a phase; 1000: the workers have gone back to sleep). Each of
+// 4 tasks per thread spins for about a microsecond.
+void thread_pool_batch(benchmark::State& state) {
+  sg::ecs::ThreadPool threads(static_cast<unsigned>(state.range(0)) - 1);
+  const auto gap = std::chrono::microseconds(state.range(1));
+  const auto spin = [](std::chrono::nanoseconds duration) {
+    const auto until = std::chrono::steady_clock::now() + duration;
+    while (std::chrono::steady_clock::now() < until) {
+    }
+  };
+  const std::size_t tasks = 4 * threads.thread_count();
+  for (auto _ : state) {
+    spin(gap);
+    const auto start = std::chrono::steady_clock::now();
+    threads.run(tasks, [&](std::size_t) { spin(std::chrono::microseconds(1)); });
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+}
+
 // Arg: threads; 1 is one loop, more what a user would write by hand: that many std::threads
 // each frame (the caller included), each over its share of the arrays.
 void transform_update_raw(benchmark::State& state) {
@@ -544,6 +566,12 @@ BENCHMARK(sparse_iterate_ecs<true, false>)->Name("sparse_scattered/ecs")->Apply(
 BENCHMARK(sparse_iterate_ecs<true, true>)->Name("sparse_scattered/ecs_group")->Apply(write_and_read);
 BENCHMARK(sparse_iterate_raw<true>)->Name("sparse_scattered/raw")->Apply(write_and_read);
 // Thread counts: 1 to 16, for the lent 16-core machine; this VM has 2 cores.
+BENCHMARK(thread_pool_batch)
+    ->Name("thread_pool/batch")
+    ->ArgsProduct({{2, 4, 16}, {0, 1000}})
+    ->Iterations(2000)  // a fixed count: with the untimed gaps, a minimum time would take minutes
+    ->UseManualTime()
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(transform_update_ecs)
     ->Name("transform_update/ecs")
     ->Arg(1)
