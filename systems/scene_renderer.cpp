@@ -10,6 +10,7 @@
 
 #include "rendergraph/device/context.h"
 #include "systems/camera.h"
+#include "systems/frame_upload.h"
 #include "systems/light_resources.h"
 
 namespace sg {
@@ -114,7 +115,8 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
                              " lights, but this device's texel buffers hold " +
                              std::to_string(max_light_records_) + " light records");
   }
-  const vk::Buffer& records = light_records_.write(slot, std::span<const shadows::GpuLight>(lights_.records));
+  const vk::Buffer& records =
+      write_in_pieces(light_records_, slot, std::span<const shadows::GpuLight>(lights_.records), &workers_);
   cpu_steps_.upload = lap(mark);
   const uint32_t page_size = atlas_.shape().page_size;
   if (batch_) batch_->prepare(slot, lights_, gpu_scene_, page_size, &workers_);

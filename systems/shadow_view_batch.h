@@ -69,7 +69,7 @@ class ShadowViewBatch {
   rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
                          uint32_t slot) const;
 
-  uint32_t views() const { return static_cast<uint32_t>(views_.size()); }
+  uint32_t views() const { return view_count_; }
   // Pairs (caster, view) the GPU kept in the last frame read back: instances drawn into views.
   uint64_t kept_pairs() const { return kept_pairs_; }
 
@@ -118,8 +118,9 @@ class ShadowViewBatch {
   uint64_t capacity_ = 0;  // this frame's
   uint64_t kept_pairs_ = 0;
 
-  std::vector<View> views_;
-  std::vector<Caster> casters_;
+  uint32_t view_count_ = 0;                   // this frame's, their records in view_buffers_
+  uint32_t caster_count_ = 0;                 // this frame's, their records in caster_buffers_
+  std::vector<uint32_t> group_first_caster_;  // by caster group: its first caster record
   std::vector<glm::uvec4> meshes_;
   std::vector<VkClearRect> clears_;
   // Compute raster: where each view's depths go in the depth buffer (View::raster's x and y, by
