@@ -138,10 +138,17 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
       place(world, changed_[k]);
     }
   });
-  // Moved instances can shrink the scene's bounds as well as grow them.
+  // Moved instances can shrink the scene's bounds as well as grow them: all are grown anew, in
+  // pieces on the pool like the records.
   if (!changed_.empty()) {
+    constexpr size_t piece = 2048;
+    chunk_bounds_.assign((bounds_.size() + piece - 1) / piece, scene::Aabb{});
+    ecs::run_in_pieces(pool, bounds_.size(), piece, [&](size_t begin, size_t end) {
+      scene::Aabb& part = chunk_bounds_[begin / piece];
+      for (size_t i = begin; i < end; ++i) scene::grow(part, bounds_[i]);
+    });
     scene_bounds_ = {};
-    for (const scene::Aabb& box : bounds_) scene::grow(scene_bounds_, box);
+    for (const scene::Aabb& part : chunk_bounds_) scene::grow(scene_bounds_, part);
   }
   return true;
 }

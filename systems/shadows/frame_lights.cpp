@@ -1,8 +1,10 @@
 #include "systems/shadows/frame_lights.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <type_traits>
+#include <utility>
 
 #include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
@@ -161,23 +163,51 @@ void sort_by_group(FrameLights& out, ecs::ThreadPool* pool) {
   const auto group_of = [](const GpuLight& record) {
     return light_group(shadow_kind(record), algorithm_of(record));
   };
+  // A counting sort in two passes over pieces of records on the pool: each piece counts its
+  // records' groups, then, from the counts of the pieces before it, puts each record (208 bytes)
+  // in its place. Serially, reading every record's group was most of the sort.
+  constexpr size_t piece = 512;
+  const size_t count = out.records.size();
+  const size_t pieces = std::max<size_t>((count + piece - 1) / piece, 1);
+  scratch.moved_to.resize(count);
+  scratch.records.resize(count);
+  scratch.piece_groups.assign(pieces * light_group_count, 0);
+  scratch.piece_types.assign(pieces * light_group_count, 0);
+  ecs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
+    uint32_t* groups = &scratch.piece_groups[begin / piece * light_group_count];
+    uint32_t* types = &scratch.piece_types[begin / piece * light_group_count];
+    for (size_t i = begin; i < end; ++i) {
+      const uint32_t group = group_of(out.records[i]);
+      scratch.moved_to[i] = group;
+      ++groups[group];
+      types[group] |= 1u << out.records[i].info.x;
+    }
+  });
   out.group_begin.fill(0);
   out.group_types.fill(0);
-  // Each record's group first (in moved_to), then, once the groups are counted, its new place.
-  scratch.moved_to.resize(out.records.size());
-  for (size_t i = 0; i < out.records.size(); ++i) {
-    const uint32_t group = group_of(out.records[i]);
-    scratch.moved_to[i] = group;
-    ++out.group_begin[group + 1];
-    out.group_types[group] |= 1u << out.records[i].info.x;
+  for (size_t p = 0; p < pieces; ++p) {
+    for (uint32_t g = 0; g < light_group_count; ++g) {
+      out.group_begin[g + 1] += scratch.piece_groups[p * light_group_count + g];
+      out.group_types[g] |= scratch.piece_types[p * light_group_count + g];
+    }
   }
   for (uint32_t g = 0; g < light_group_count; ++g) out.group_begin[g + 1] += out.group_begin[g];
-  std::array<uint32_t, light_group_count + 1> cursor = out.group_begin;
-  scratch.records.resize(out.records.size());
-  for (uint32_t& place : scratch.moved_to) place = cursor[place]++;
-  // The records themselves (208 bytes each) move in chunks on the pool.
-  ecs::run_in_pieces(pool, out.records.size(), 1024, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) scratch.records[scratch.moved_to[i]] = out.records[i];
+  // Each piece's counts become its first place in each group (stable: pieces in order).
+  std::array<uint32_t, light_group_count> next{};
+  std::copy(out.group_begin.begin(), out.group_begin.end() - 1, next.begin());
+  for (size_t p = 0; p < pieces; ++p) {
+    for (uint32_t g = 0; g < light_group_count; ++g) {
+      uint32_t& piece_group = scratch.piece_groups[p * light_group_count + g];
+      next[g] += std::exchange(piece_group, next[g]);
+    }
+  }
+  ecs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
+    uint32_t* places = &scratch.piece_groups[begin / piece * light_group_count];
+    for (size_t i = begin; i < end; ++i) {
+      const uint32_t place = places[scratch.moved_to[i]]++;
+      scratch.moved_to[i] = place;
+      scratch.records[place] = out.records[i];
+    }
   });
   std::swap(out.records, scratch.records);
   for (ShadowMapView& map : out.maps) map.light = scratch.moved_to[map.light];

@@ -103,6 +103,10 @@ struct FrameLights {
   struct Scratch {
     std::vector<uint32_t> moved_to;
     std::vector<GpuLight> records;
+    // sort_by_group: per piece of records, its count and types per group (light_group_count
+    // each), then where the piece's records of each group go.
+    std::vector<uint32_t> piece_groups;
+    std::vector<uint32_t> piece_types;
     std::vector<GatheredLight> gathered;
   } scratch;
 };

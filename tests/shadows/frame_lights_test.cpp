@@ -400,6 +400,7 @@ TEST(SortByGroup, OnAThreadPoolMovesTheRecordsAsSerially) {
   ecs::ThreadPool pool(4);
   sort_by_group(pooled, &pool);
   EXPECT_EQ(pooled.group_begin, serial.group_begin);
+  EXPECT_EQ(pooled.group_types, serial.group_types);
   ASSERT_EQ(pooled.records.size(), serial.records.size());
   EXPECT_EQ(
       std::memcmp(pooled.records.data(), serial.records.data(), serial.records.size() * sizeof(GpuLight)), 0);
