@@ -179,8 +179,12 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     }
     raster_ = shadows::raster_for_views(static_cast<uint32_t>(count), large_texels);
   }
-  depth_places_.assign(count, glm::uvec2(0u));
-  if (raster_ == shadows::ShadowRaster::compute) place_depths();
+  if (raster_ == shadows::ShadowRaster::compute) {
+    place_depths();
+  } else {
+    depth_places_.assign(count, glm::uvec2(0u));
+    placed_tiles_.clear();
+  }
 
   // Records go straight into the slot's mapped buffers, from the pool's threads: writes into
   // mapped GPU memory go faster from several cores, and a copy through a vector first cost a
@@ -245,15 +249,26 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
 // Per-region overhead dominates copying thousands of small squares (docs/PERFORMANCE.md), so
 // due tiles of one size side by side on a row of a page share one region: their depths lie
 // row-major in one rectangle of the buffer, and a frame copies a few rectangles a row of tiles.
+//
+// The places depend on the due views' tiles alone: while every light redraws every frame and
+// none moves in the atlas, they are the last frame's, and the sort is skipped.
 void ShadowViewBatch::place_depths() {
-  // By page, size, row, column, packed into one integer (every field is below 2^16).
+  if (view_tiles_ == placed_tiles_) return;
+  placed_tiles_ = view_tiles_;
+  depth_places_.assign(view_tiles_.size(), glm::uvec2(0u));
+  // By page, size, row, column, packed into 40 bits: tiles lie on multiples of their size, so
+  // rows and columns count tiles, not texels (below 2^11 for pages of up to 2^11 of the smallest
+  // tiles), which leaves four byte-wide passes of the radix sort instead of six. Were a count
+  // larger, tiles would only sort out of place and share fewer regions: merging checks them.
   placed_.resize(view_tiles_.size());
   for (size_t v = 0; v < view_tiles_.size(); ++v) {
     const shadows::AtlasTile& t = view_tiles_[v];
-    placed_[v] = {uint64_t{t.page} << 48 | uint64_t{t.size} << 32 | uint64_t{t.y} << 16 | t.x,
+    const auto level = static_cast<uint64_t>(std::countr_zero(t.size));
+    placed_[v] = {uint64_t{t.page} << 26 | level << 22 | uint64_t{t.y / t.size} << 11 | (t.x / t.size),
                   static_cast<uint32_t>(v)};
   }
-  shadows::radix_sort(placed_, placed_scratch_, [](const Placed& p) { return p.key; });
+  shadows::radix_sort(
+      placed_, placed_scratch_, [](const Placed& p) { return p.key; }, 40);
   copies_.clear();
   depth_texels_ = 0;
   for (size_t begin = 0; begin < placed_.size();) {

@@ -126,10 +126,11 @@ class ShadowViewBatch {
   // Compute raster: where each view's depths go in the depth buffer (View::raster's x and y, by
   // view), and the copies into the atlas.
   void place_depths();
-  std::vector<shadows::AtlasTile> view_tiles_;  // per view
-  std::vector<glm::uvec2> depth_places_;        // per view
+  std::vector<shadows::AtlasTile> view_tiles_;    // per view
+  std::vector<glm::uvec2> depth_places_;          // per view
+  std::vector<shadows::AtlasTile> placed_tiles_;  // the view_tiles_ depth_places_ and copies_ are for
   struct Placed {
-    uint64_t key;  // page, size, row, column, 16 bits each
+    uint64_t key;  // page, size, row, column (place_depths)
     uint32_t view;
   };
   std::vector<uint32_t> first_view_;  // per light (maps, then cubes): its first view, if drawn
