@@ -17,7 +17,8 @@ namespace sg::ecs {
 void update_world_transforms(World& world, Tick since, ThreadPool* threads = nullptr);
 
 // Entities per parallel task of a per-entity update that costs tens of nanoseconds (a matrix, a
-// sine): a frame's few thousand moving things then share the threads.
-inline constexpr std::size_t motion_entities_per_task = 1024;
+// sine): a frame's few thousand moving things then share the threads (a task is handed out for
+// a compare-exchange, so a few microseconds of work a task pay for it).
+inline constexpr std::size_t motion_entities_per_task = 256;
 
 }  // namespace sg::ecs

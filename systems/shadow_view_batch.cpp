@@ -199,7 +199,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
                 glm::uvec4(tile.page, kind, tile.size, 0u), glm::uvec4(depth_places_[v], 0u, 0u)};
     clears_[v] = tile_clear(tile);
   };
-  ecs::run_in_pieces(pool, light_count, 256, [&](size_t begin, size_t end) {
+  ecs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const uint32_t first = first_view_[i];
       if (first == not_drawn) continue;

@@ -139,7 +139,8 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
   out.maps.resize(maps);  // shrinking keeps the survivors' name storage for reuse
   out.cubes.resize(cubes);
 
-  ecs::run_in_pieces(pool, gathered.size(), 256, [&](size_t begin, size_t end) {
+  // Pieces of 64 lights: a light's views and record take about half a microsecond.
+  ecs::run_in_pieces(pool, gathered.size(), 64, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const auto index = static_cast<uint32_t>(i);
       switch (gathered[i].kind) {
