@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "ecs/parallel_pieces.h"
+
 #include "systems/shadows/align_by_key.h"
 
 namespace sg::shadows {
@@ -23,7 +25,7 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const
     state.dirty = state.dirty || lights[i].changed || !state.valid;
   }
   mark_dirty_by_casters(lights, changed_casters, pool);
-  choose_renders(lights, view_budget, render);
+  choose_renders(lights, view_budget, render, pool);
 
   stats_ = {};
   for (size_t i = 0; i < lights.size(); ++i) {
@@ -71,7 +73,7 @@ void ShadowCache::mark_dirty_by_casters(std::span<const ShadowCacheLight> lights
 }
 
 void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
-                                 std::span<uint8_t> render) {
+                                 std::span<uint8_t> render, ecs::ThreadPool* pool) {
   std::fill(render.begin(), render.end(), uint8_t{0});
   candidates_.clear();
   uint64_t dirty_views = 0;
@@ -110,7 +112,9 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
   // is enough, unless lights were skipped for having more views than were left.
   const auto head = order_.begin() + std::min<ptrdiff_t>(views_left, std::ssize(order_));
   if (head == order_.end()) {
-    std::sort(order_.begin(), order_.end(), comes_first);  // partial_sort would heap-sort them all
+    // All of them (partial_sort would heap-sort them all), in pieces on the pool: with
+    // thousands of dirty lights the choice was the cache's largest step (0.16 of 0.27 ms).
+    ecs::sort_in_pieces(pool, order_, order_scratch_, 256, comes_first);
   } else {
     std::partial_sort(order_.begin(), head, order_.end(), comes_first);
   }

@@ -84,7 +84,7 @@ class ShadowCache {
   void mark_dirty_by_casters(std::span<const ShadowCacheLight> lights,
                              std::span<const scene::Aabb> changed_casters, ecs::ThreadPool* pool);
   void choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
-                      std::span<uint8_t> render);
+                      std::span<uint8_t> render, ecs::ThreadPool* pool);
 
   uint64_t frame_ = 0;
   std::vector<LightState> states_;  // parallel to the previous plan's lights
@@ -98,7 +98,8 @@ class ShadowCache {
     uint64_t key;
     uint32_t light;
   };
-  std::vector<Ordered> order_;        // the dirty lights, in the order they get renders
+  std::vector<Ordered> order_;  // the dirty lights, in the order they get renders
+  std::vector<Ordered> order_scratch_;
   std::vector<uint32_t> candidates_;  // lights tested against the caster boxes, then the dirty ones
   std::vector<glm::vec4> candidate_reach_;
   std::vector<uint8_t> candidate_met_;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <utility>
 
-#include "ecs/thread_pool.h"
+#include "ecs/parallel_pieces.h"
 
 #include "systems/shadows/align_by_key.h"
 #include "systems/shadows/atlas_tile_coords.h"
@@ -72,39 +72,47 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       quality_floors_[map_count + c] = quality_floor(algorithm_of(lights.records[cube.light]));
     }
   });
-  requests_.clear();
-  request_of_.assign(map_count + lights.cubes.size(), no_request);
-  const auto request = [&](size_t view, uint64_t key, bool cube, uint32_t resolution, float importance) {
-    if (importance <= 0.0f) return;
-    request_of_[view] = static_cast<uint32_t>(requests_.size());
-    requests_.push_back({key, cube, resolution, importance, quality_floors_[view]});
-  };
-  for (size_t m = 0; m < map_count; ++m) {
-    const ShadowMapView& map = lights.maps[m];
-    request(m, map.key, false, map.requested_resolution, map.importance);
-  }
-  for (size_t c = 0; c < lights.cubes.size(); ++c) {
-    const ShadowCubeView& cube = lights.cubes[c];
-    request(map_count + c, cube.key, true, cube.requested_resolution, cube.importance);
-  }
+  // The requests, then the lights the cache sees (those given tiles), each listed in order on
+  // the pool: a view's fields lie hundreds of bytes apart, so one thread reading them for
+  // thousands of lights took longer than the work.
+  const size_t view_count = map_count + lights.cubes.size();
+  request_of_.assign(view_count, no_request);
+  requests_.resize(view_count);
+  const size_t request_count = ecs::keep_in_pieces(
+      pool, view_count, views_per_piece,
+      [&](size_t v) {
+        return (v < map_count ? lights.maps[v].importance : lights.cubes[v - map_count].importance) > 0.0f;
+      },
+      [&](size_t v, size_t r) {
+        request_of_[v] = static_cast<uint32_t>(r);
+        if (v < map_count) {
+          const ShadowMapView& map = lights.maps[v];
+          requests_[r] = {map.key, false, map.requested_resolution, map.importance, quality_floors_[v]};
+        } else {
+          const ShadowCubeView& cube = lights.cubes[v - map_count];
+          requests_[r] = {cube.key, true, cube.requested_resolution, cube.importance, quality_floors_[v]};
+        }
+      });
+  requests_.resize(request_count);
   placements_.assign(requests_.size(), ShadowPlacement{});
   planner_.plan(requests_, placements_);
 
-  // The cache sees the lights that have tiles.
-  cache_lights_.clear();
-  cached_request_.clear();
-  const auto add_to_cache = [&](uint32_t request, const glm::vec4& reach, bool changed, uint32_t views) {
-    if (request == no_request || placements_[request].resolution == 0) return;
-    cached_request_.push_back(request);
-    cache_lights_.push_back({requests_[request].key, reach, changed, placements_[request].moved, views});
-  };
-  for (size_t m = 0; m < map_count; ++m) {
-    add_to_cache(request_of_[m], lights.maps[m].reach, lights.maps[m].changed, 1);
-  }
-  for (size_t c = 0; c < lights.cubes.size(); ++c) {
-    const ShadowCubeView& cube = lights.cubes[c];
-    add_to_cache(request_of_[map_count + c], cube.position_far, cube.changed, 6);
-  }
+  cache_lights_.resize(view_count);
+  cached_request_.resize(view_count);
+  const size_t cached_count = ecs::keep_in_pieces(
+      pool, view_count, views_per_piece,
+      [&](size_t v) { return request_of_[v] != no_request && placements_[request_of_[v]].resolution != 0; },
+      [&](size_t v, size_t k) {
+        const uint32_t request = request_of_[v];
+        cached_request_[k] = request;
+        const bool map = v < map_count;
+        const glm::vec4& reach = map ? lights.maps[v].reach : lights.cubes[v - map_count].position_far;
+        const bool changed = map ? lights.maps[v].changed : lights.cubes[v - map_count].changed;
+        cache_lights_[k] = {requests_[request].key, reach, changed, placements_[request].moved,
+                            map ? 1u : 6u};
+      });
+  cache_lights_.resize(cached_count);
+  cached_request_.resize(cached_count);
   render_.assign(cache_lights_.size(), 0);
   usable_.assign(cache_lights_.size(), 0);
   const std::span<const scene::Aabb> changed_casters =
