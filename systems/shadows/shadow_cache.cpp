@@ -110,14 +110,16 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
   };
   // Every light has a view at least, so no more than views_left lights fit: ordering that many
   // is enough, unless lights were skipped for having more views than were left.
-  const auto head = order_.begin() + std::min<ptrdiff_t>(views_left, std::ssize(order_));
-  if (head == order_.end()) {
+  const ptrdiff_t head_count = std::min<ptrdiff_t>(views_left, std::ssize(order_));
+  if (head_count == std::ssize(order_)) {
     // All of them (partial_sort would heap-sort them all), in pieces on the pool: with
-    // thousands of dirty lights the choice was the cache's largest step (0.16 of 0.27 ms).
+    // thousands of dirty lights the choice was the cache's largest step (0.16 of 0.27 ms). The
+    // merges may leave order_ in what was the scratch's storage.
     ecs::sort_in_pieces(pool, order_, order_scratch_, 256, comes_first);
   } else {
-    std::partial_sort(order_.begin(), head, order_.end(), comes_first);
+    std::partial_sort(order_.begin(), order_.begin() + head_count, order_.end(), comes_first);
   }
+  const auto head = order_.begin() + head_count;
   take_in_order(order_.begin(), head);
   // Then fewer views are left than the skipped light had, a handful: the stalest of the rest that
   // still fits, one scan each, costs less than sorting the rest (100,000 lights).

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "ecs/thread_pool.h"
+
 #include "systems/shadows/caster_changes.h"
 #include "systems/shadows/shadow_cache.h"
 #include "systems/shadows/spheres_meeting_boxes.h"
@@ -155,6 +157,36 @@ TEST(ShadowCache, NoLightStarvesWhenTheBudgetIsShort) {
       EXPECT_LE(frame - last_rendered[i], frames_per_round - 1) << "light " << i << " frame " << frame;
     }
     for (ShadowCacheLight& light : lights) light.changed = true;  // every light changes every frame
+  }
+}
+
+// Thousands of dirty lights over the view budget, all of them ordered (fewer lights than the
+// budget has views): the pool's sort in pieces must choose what one thread does, frame after
+// frame, as the lights' staleness spreads. 1,500 lights take an odd number of merge rounds, 3,000
+// an even one; with cubes only, the budget ends with views left that no cube fits, so the choice
+// looks at every light.
+TEST(ShadowCache, OnAThreadPoolChoosesTheSameRendersAsSerially) {
+  for (const uint32_t light_count : {1500u, 3000u}) {
+    for (const bool cubes_only : {false, true}) {
+      std::vector<ShadowCacheLight> lights;
+      std::mt19937 random(light_count);
+      for (uint32_t i = 0; i < light_count; ++i) {
+        const uint64_t key = uint64_t{random()} << 16 | i;
+        lights.push_back(i % 2 == 0 && !cubes_only ? spot(key) : cube(key));
+      }
+      const uint32_t budget = 2 * light_count + 3;
+      ShadowCache serial;
+      ShadowCache pooled;
+      ecs::ThreadPool threads(3);
+      for (int frame = 0; frame < 8; ++frame) {
+        const Plan expected = plan(serial, lights, budget);
+        Plan got{std::vector<uint8_t>(lights.size()), std::vector<uint8_t>(lights.size())};
+        pooled.plan(lights, {}, budget, got.render, got.usable, &threads);
+        ASSERT_EQ(got.render, expected.render) << light_count << " lights, frame " << frame;
+        ASSERT_EQ(got.usable, expected.usable) << light_count << " lights, frame " << frame;
+        for (ShadowCacheLight& light : lights) light.changed = true;
+      }
+    }
   }
 }
 
