@@ -27,7 +27,7 @@ namespace sg::ecs {
 //   spin_time before they sleep: a frame runs its batches back to back, and waking a sleeping
 //   thread can take longer than its share of a batch. The caller, once out of tasks, waits for
 //   the batch's last ones the same way.
-// - count must be below 2^32.
+// - count must be below 2^32 (else std::length_error, before any task runs).
 class ThreadPool {
  public:
   // `workers` threads besides the caller; 0 runs everything on the calling thread.
