@@ -6,10 +6,15 @@
 #include <cassert>
 #include <cmath>
 
+#include "ecs/parallel_pieces.h"
+
 #include "systems/shadows/radix_sort.h"
 
 namespace sg::shadows {
 namespace {
+
+// Requests a piece of the pool's work handles: a thousand lights keep 16 threads busy.
+constexpr size_t lights_per_piece = 64;
 
 // Power-of-two sizes, and a quadtree per page of at most 1024 x 1024 leaves.
 AtlasConfig sanitized(AtlasConfig config) {
@@ -63,7 +68,8 @@ uint32_t ShadowAtlasPlanner::wanted_resolution(const ShadowRequest& request, uin
   return std::clamp(1u << uint32_t(std::round(tiers)), config_.min_resolution, cap);
 }
 
-void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out) {
+void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
+                              ecs::ThreadPool* pool) {
   assert(out.size() == requests.size());
   ++plans_;
   match_lights(requests);
@@ -71,16 +77,26 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   fit_budget(requests);
 
   // Lights whose resolution or kind changed give their tiles back and need new ones; the others
-  // keep theirs.
+  // keep theirs. Which did is found on the pool (copying the others' tiles, six a cube, was most
+  // of this with thousands of lights); their tiles go back to the pages in order, here.
   tiles_.resize(requests.size());
+  retiled_.resize(requests.size());
+  const size_t retiled_count = ecs::keep_in_pieces(
+      pool, requests.size(), lights_per_piece,
+      [&](size_t i) {
+        if (light_of_request_[i] == no_light) return false;
+        const Light& light = lights_[light_of_request_[i]];
+        if (resolution_[i] == light.resolution && requests[i].cube == light.cube) {
+          tiles_[i] = light.tiles;
+          return false;
+        }
+        return true;
+      },
+      [&](size_t i, size_t rank) { retiled_[rank] = static_cast<uint32_t>(i); });
   std::vector<uint32_t> changed;
-  for (uint32_t i = 0; i < requests.size(); ++i) {
-    if (light_of_request_[i] == no_light) continue;
+  for (size_t r = 0; r < retiled_count; ++r) {
+    const uint32_t i = retiled_[r];
     const Light& light = lights_[light_of_request_[i]];
-    if (resolution_[i] == light.resolution && requests[i].cube == light.cube) {
-      tiles_[i] = light.tiles;
-      continue;
-    }
     if (light.resolution > 0 && !repack_pending_) {
       for (uint32_t k = 0; k < tile_count(light.cube); ++k) pages_.free(light.tiles[k]);
     }
@@ -89,20 +105,23 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   if (repack_pending_ || !place_changed_lights(requests, changed)) repack(requests);
   repack_pending_ = false;
 
-  for (uint32_t i = 0; i < requests.size(); ++i) {
-    ShadowPlacement& placement = out[i];
-    placement = {};
-    if (light_of_request_[i] == no_light) continue;
-    Light& light = lights_[light_of_request_[i]];
-    placement.resolution = resolution_[i];
-    if (placement.resolution > 0) placement.tiles = tiles_[i];
-    placement.moved =
-        placement.resolution > 0 && (placement.resolution != light.resolution ||
-                                     requests[i].cube != light.cube || placement.tiles != light.tiles);
-    light.resolution = placement.resolution;
-    light.cube = requests[i].cube;
-    light.tiles = placement.tiles;
-  }
+  // Each request writes its placement and its own light (a key's second request has none).
+  ecs::run_in_pieces(pool, requests.size(), lights_per_piece, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      ShadowPlacement& placement = out[i];
+      placement = {};
+      if (light_of_request_[i] == no_light) continue;
+      Light& light = lights_[light_of_request_[i]];
+      placement.resolution = resolution_[i];
+      if (placement.resolution > 0) placement.tiles = tiles_[i];
+      placement.moved =
+          placement.resolution > 0 && (placement.resolution != light.resolution ||
+                                       requests[i].cube != light.cube || placement.tiles != light.tiles);
+      light.resolution = placement.resolution;
+      light.cube = requests[i].cube;
+      light.tiles = placement.tiles;
+    }
+  });
   update_stats();
 }
 

@@ -34,6 +34,8 @@
 #include <utility>
 #include <vector>
 
+#include "ecs/thread_pool.h"
+
 #include "systems/shadows/shadow_atlas_pages.h"
 
 namespace sg::shadows {
@@ -82,7 +84,9 @@ class ShadowAtlasPlanner {
 
   // Fills out[i] for requests[i]; out.size() must equal requests.size(). Requests need not come
   // in the same order every frame. A key requested twice in one plan() gets a shadow only once.
-  void plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out);
+  // With `pool`, the per-light passes that need no shared state run on it (same result).
+  void plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
+            ecs::ThreadPool* pool = nullptr);
   // The last plan()'s.
   const AtlasStats& stats() const { return stats_; }
   // A line for the log when the budget's effect (lights demoted or dropped) differs from the last
@@ -141,6 +145,7 @@ class ShadowAtlasPlanner {
   static constexpr uint32_t no_light = ~0u;
   std::vector<uint32_t> light_of_request_;
   std::vector<uint32_t> resolution_;
+  std::vector<uint32_t> retiled_;  // by rank: the requests whose light changed resolution or kind
   std::vector<std::array<AtlasTile, 6>> tiles_;
   // Per tier (0: page_size, 1: half that, ...): the 2D maps and cubes the budget holds.
   std::vector<uint64_t> maps_per_tier_;

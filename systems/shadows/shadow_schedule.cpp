@@ -95,7 +95,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       });
   requests_.resize(request_count);
   placements_.assign(requests_.size(), ShadowPlacement{});
-  planner_.plan(requests_, placements_);
+  planner_.plan(requests_, placements_, pool);
 
   cache_lights_.resize(view_count);
   cached_request_.resize(view_count);

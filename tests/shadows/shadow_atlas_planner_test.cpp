@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "ecs/thread_pool.h"
 #include "systems/shadows/shadow_atlas_planner.h"
 
 namespace sg::shadows {
@@ -321,6 +322,37 @@ TEST(ShadowAtlasPlanner, RandomChurnNeverOverlapsAndMovedMeansNewTiles) {
     last = std::move(now);
   }
   EXPECT_GT(kept_tiles, 0u);
+}
+
+// The pool's passes (which lights keep their tiles, the placements) decide what one thread does,
+// through churn that moves, demotes and drops lights.
+TEST(ShadowAtlasPlanner, OnAThreadPoolPlansAsSerially) {
+  const AtlasConfig config{.page_size = 1024, .max_pages = 2, .min_resolution = 32};
+  ShadowAtlasPlanner serial(config);
+  ShadowAtlasPlanner pooled(config);
+  ecs::ThreadPool threads(3);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<float> importance(600);
+  for (float& value : importance) value = std::exp2(4.0f + 7.0f * unit(random));
+  for (int frame = 0; frame < 60; ++frame) {
+    std::vector<ShadowRequest> requests;
+    for (uint64_t key = 0; key < importance.size(); ++key) {
+      if (unit(random) < 0.1f) continue;  // out of sight this frame
+      importance[key] =
+          std::clamp(importance[key] * (unit(random) < 0.05f ? 4.0f * unit(random) : 1.0f), 1.0f, 4096.0f);
+      requests.push_back({.key = key, .cube = key % 3 == 0, .importance = importance[key]});
+    }
+    const std::vector<ShadowPlacement> expected = plan(serial, requests);
+    std::vector<ShadowPlacement> got(requests.size());
+    pooled.plan(requests, got, &threads);
+    for (size_t i = 0; i < requests.size(); ++i) {
+      ASSERT_EQ(got[i].resolution, expected[i].resolution) << "frame " << frame << " request " << i;
+      ASSERT_EQ(got[i].tiles, expected[i].tiles) << "frame " << frame << " request " << i;
+      ASSERT_EQ(got[i].moved, expected[i].moved) << "frame " << frame << " request " << i;
+    }
+  }
+  EXPECT_GT(serial.stats().demoted_by_budget + serial.stats().dropped_by_budget, 0u);  // over budget
 }
 
 TEST(ShadowAtlasPlanner, ANewBudgetRepacksIntoIt) {
