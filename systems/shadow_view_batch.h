@@ -60,7 +60,7 @@ class ShadowViewBatch {
   bool all_casters_kept(uint32_t slot);
   // CPU side of a frame: the records of the views of `lights` that render this frame (`render`),
   // in an atlas of `page_size` texels a page, and of `scene`'s casters. With `pool`, the view
-  // records are made on its threads.
+  // and caster records are written on its threads, straight into the slot's buffers.
   void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene, uint32_t page_size,
                ecs::ThreadPool* pool = nullptr);
 

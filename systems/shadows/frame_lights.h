@@ -122,7 +122,7 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
 
 // Orders the records by light group (stably, so lights keep the world's order within a group),
 // from each record's type, algorithm and whether it has a shadow map, and points the views at
-// their records' new places. With `pool`, the records are copied on its threads.
+// their records' new places. With `pool`, the records are counted and copied on its threads.
 void sort_by_group(FrameLights& lights, ecs::ThreadPool* pool = nullptr);
 
 }  // namespace sg::shadows
