@@ -138,19 +138,22 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
       place(world, changed_[k]);
     }
   });
-  // Moved instances can shrink the scene's bounds as well as grow them: all are grown anew, in
-  // pieces on the pool like the records.
-  if (!changed_.empty()) {
-    constexpr size_t piece = 2048;
-    chunk_bounds_.assign((bounds_.size() + piece - 1) / piece, scene::Aabb{});
-    ecs::run_in_pieces(pool, bounds_.size(), piece, [&](size_t begin, size_t end) {
-      scene::Aabb& part = chunk_bounds_[begin / piece];
-      for (size_t i = begin; i < end; ++i) scene::grow(part, bounds_[i]);
-    });
-    scene_bounds_ = {};
-    for (const scene::Aabb& part : chunk_bounds_) scene::grow(scene_bounds_, part);
-  }
+  // Moved instances can shrink the scene's bounds as well as grow them.
+  if (!changed_.empty()) regrow_scene_bounds(pool);
   return true;
+}
+
+void GpuScene::regrow_scene_bounds(ecs::ThreadPool* pool) {
+  // Each piece grows its own part, on the pool.
+  constexpr size_t piece = 2048;
+  chunk_bounds_.assign((bounds_.size() + piece - 1) / piece, scene::Aabb{});
+  ecs::run_in_pieces(pool, bounds_.size(), piece, [&](size_t begin, size_t end) {
+    if (begin == end) return;
+    scene::Aabb& part = chunk_bounds_[begin / piece];
+    for (size_t i = begin; i < end; ++i) scene::grow(part, bounds_[i]);
+  });
+  scene_bounds_ = {};
+  for (const scene::Aabb& part : chunk_bounds_) scene::grow(scene_bounds_, part);
 }
 
 void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
@@ -183,22 +186,15 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
 
   // Per instance, in its sorted place: its record, world bounds and key. Reading the components
   // and the bounds' eight corners are most of a full gather, and independent: chunks of them run
-  // on the pool's threads (the world is only read), each growing its own part of the scene's
-  // bounds.
+  // on the pool's threads (the world is only read).
   sorted_.resize(count);
   bounds_.resize(count);
   keys_.resize(count);
   constexpr size_t piece = 256;  // small, so threads that wake late still find work
-  chunk_bounds_.assign((count + piece - 1) / piece, scene::Aabb{});
   ecs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
-    scene::Aabb& part = chunk_bounds_[begin / piece];
-    for (size_t i = begin; i < end; ++i) {
-      place(world, i);
-      scene::grow(part, bounds_[i]);
-    }
+    for (size_t i = begin; i < end; ++i) place(world, i);
   });
-  scene_bounds_ = {};
-  for (const scene::Aabb& part : chunk_bounds_) scene::grow(scene_bounds_, part);
+  regrow_scene_bounds(pool);
 
   commands_.clear();
   caster_groups_.clear();

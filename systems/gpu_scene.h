@@ -125,6 +125,8 @@ class GpuScene {
   // instances were added, removed or reordered.
   bool gather_changes(const ecs::World& world, ecs::Tick since, ecs::ThreadPool* pool);
   void gather_all(const ecs::World& world, ecs::ThreadPool* pool);
+  // The scene's bounds from every instance's.
+  void regrow_scene_bounds(ecs::ThreadPool* pool);
 
   ecs::Tick gathered_at_ = 0;               // the world's tick at the last gather
   uint64_t gathers_ = 0;                    // gather() calls so far

@@ -34,7 +34,7 @@
 #include <utility>
 #include <vector>
 
-#include "ecs/thread_pool.h"
+#include "ecs/parallel_pieces.h"
 
 #include "systems/shadows/shadow_atlas_pages.h"
 
@@ -146,6 +146,7 @@ class ShadowAtlasPlanner {
   std::vector<uint32_t> light_of_request_;
   std::vector<uint32_t> resolution_;
   std::vector<uint32_t> retiled_;  // by rank: the requests whose light changed resolution or kind
+  ecs::KeepScratch keep_scratch_;
   std::vector<std::array<AtlasTile, 6>> tiles_;
   // Per tier (0: page_size, 1: half that, ...): the 2D maps and cubes the budget holds.
   std::vector<uint64_t> maps_per_tier_;

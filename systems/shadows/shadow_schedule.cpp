@@ -79,7 +79,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   request_of_.assign(view_count, no_request);
   requests_.resize(view_count);
   const size_t request_count = ecs::keep_in_pieces(
-      pool, view_count, views_per_piece,
+      pool, view_count, views_per_piece, keep_scratch_,
       [&](size_t v) {
         return (v < map_count ? lights.maps[v].importance : lights.cubes[v - map_count].importance) > 0.0f;
       },
@@ -100,7 +100,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   cache_lights_.resize(view_count);
   cached_request_.resize(view_count);
   const size_t cached_count = ecs::keep_in_pieces(
-      pool, view_count, views_per_piece,
+      pool, view_count, views_per_piece, keep_scratch_,
       [&](size_t v) { return request_of_[v] != no_request && placements_[request_of_[v]].resolution != 0; },
       [&](size_t v, size_t k) {
         const uint32_t request = request_of_[v];

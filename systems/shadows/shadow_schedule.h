@@ -15,6 +15,8 @@
 
 #include <glm/glm.hpp>
 
+#include "ecs/parallel_pieces.h"
+
 #include "systems/shadows/caster_changes.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_atlas_planner.h"
@@ -97,6 +99,7 @@ class ShadowSchedule {
   };
   std::vector<uint32_t> request_of_;      // per view (maps, then cubes): its request or no_request
   std::vector<uint32_t> quality_floors_;  // per view, as request_of_
+  ecs::KeepScratch keep_scratch_;
   std::vector<ShadowRequest> requests_;
   std::vector<ShadowPlacement> placements_;
   std::vector<uint32_t> cached_request_;  // per cache light: its request

@@ -14,10 +14,11 @@ namespace {
 // keep none, some and all of theirs.
 TEST(KeepInPieces, RanksTheKeptIndicesInOrderOnAPoolAsSerially) {
   const auto keep = [](std::size_t i) { return i % 3 == 0 || (i >= 200 && i < 300) || i >= 900; };
+  KeepScratch scratch;  // shared by both calls, as a frame's callers share theirs
   const auto filter = [&](ThreadPool* pool) {
     std::vector<std::size_t> kept(1000, SIZE_MAX);
-    const std::size_t count =
-        keep_in_pieces(pool, kept.size(), 64, keep, [&](std::size_t i, std::size_t rank) { kept[rank] = i; });
+    const std::size_t count = keep_in_pieces(pool, kept.size(), 64, scratch, keep,
+                                             [&](std::size_t i, std::size_t rank) { kept[rank] = i; });
     kept.resize(count);
     return kept;
   };
