@@ -56,6 +56,22 @@ shared uint queued;
 
 float edge(vec2 a, vec2 b, vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
 
+// Writes the depth of `t` at `texel` if the texel centre, with barycentric coordinates `bary`,
+// lies inside it and between the planes.
+void write_texel(Triangle t, vec3 bary, uvec2 texel, bool face, vec4 light, uvec2 place) {
+  if (any(lessThan(bary, vec3(0.0)))) return;
+  float z = dot(bary, vec3(t.v[0].z, t.v[1].z, t.v[2].z));
+  if (z < 0.0 || z > 1.0) return;  // beyond the far plane (the near one is clipped)
+  float depth = z;
+  if (face) {
+    // The world position under the texel centre, interpolated perspective-correctly.
+    vec3 w = bary * vec3(t.v[0].w, t.v[1].w, t.v[2].w);
+    vec3 world = (w.x * t.world[0] + w.y * t.world[1] + w.z * t.world[2]) / (w.x + w.y + w.z);
+    depth = min(length(world - light.xyz) / light.w, 1.0);
+  }
+  atomicMin(depths[place.x + texel.y * place.y + texel.x], floatBitsToUint(depth));
+}
+
 // Rasterizes texels first, first + stride, ... of `t`'s bounding box (stride 1 for a thread
 // alone, the workgroup size together).
 void rasterize(Triangle t, uint view, uint first, uint stride) {
@@ -68,25 +84,32 @@ void rasterize(Triangle t, uint view, uint first, uint stride) {
   if (area == 0.0) return;
   bool face = views[view].info.y == VIEW_KIND_FACE;
   vec4 light = views[view].position_far;
-  uint width = uint(hi.x - lo.x) + 1u;
-  uint texels = width * (uint(hi.y - lo.y) + 1u);
   uvec2 place = views[view].raster.xy;
-  for (uint i = first; i < texels; i += stride) {
-    vec2 p = lo + vec2(float(i % width), float(i / width)) + 0.5;
-    // Both windings are drawn: dividing by the signed area makes inside positive either way.
-    vec3 bary = vec3(edge(v1.xy, v2.xy, p), edge(v2.xy, v0.xy, p), edge(v0.xy, v1.xy, p)) / area;
-    if (any(lessThan(bary, vec3(0.0)))) continue;
-    float z = dot(bary, vec3(v0.z, v1.z, v2.z));
-    if (z < 0.0 || z > 1.0) continue;  // beyond the far plane (the near one is clipped)
-    float depth = z;
-    if (face) {
-      // The world position under the texel centre, interpolated perspective-correctly.
-      vec3 w = bary * vec3(v0.w, v1.w, v2.w);
-      vec3 world = (w.x * t.world[0] + w.y * t.world[1] + w.z * t.world[2]) / (w.x + w.y + w.z);
-      depth = min(length(world - light.xyz) / light.w, 1.0);
+  // The barycentric coordinates as planes over the box, from its corner: bary = base + across * x
+  // + down * y at the texel centre x, y texels from it. Edge functions divided by the signed area,
+  // so that inside is positive for both windings (both are drawn); a few multiply-adds a texel.
+  vec2 a = v0.xy - lo, b = v1.xy - lo, c = v2.xy - lo;
+  float inv_area = 1.0 / area;
+  vec3 across = vec3(b.y - c.y, c.y - a.y, a.y - b.y) * inv_area;
+  vec3 down = vec3(c.x - b.x, a.x - c.x, b.x - a.x) * inv_area;
+  vec3 base = vec3(b.x * c.y - b.y * c.x, c.x * a.y - c.y * a.x, a.x * b.y - a.y * b.x) * inv_area;
+  uvec2 corner = uvec2(lo);
+  uint width = uint(hi.x - lo.x) + 1u;
+  uint rows = uint(hi.y - lo.y) + 1u;
+  if (stride == 1u) {
+    for (uint y = 0u; y < rows; ++y) {
+      vec3 row = base + down * (float(y) + 0.5);
+      for (uint x = 0u; x < width; ++x) {
+        write_texel(t, row + across * (float(x) + 0.5), corner + uvec2(x, y), face, light, place);
+      }
     }
-    uvec2 texel = uvec2(p);
-    atomicMin(depths[place.x + texel.y * place.y + texel.x], floatBitsToUint(depth));
+    return;
+  }
+  for (uint i = first; i < width * rows; i += stride) {
+    uint y = i / width;
+    uint x = i - y * width;
+    vec3 bary = base + across * (float(x) + 0.5) + down * (float(y) + 0.5);
+    write_texel(t, bary, corner + uvec2(x, y), face, light, place);
   }
 }
 
