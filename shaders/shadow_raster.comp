@@ -18,7 +18,8 @@
 // corners lie within the tile and edge functions are exact. A thread rasterizes a small triangle
 // alone; one covering more than SMALL_TRIANGLE texels of bounding box goes to a queue that the
 // whole workgroup then rasterizes together, so a floor filling the tile does not hold one thread
-// for thousands of texels. 128 threads a workgroup: on the H200 the large triangles' texels
+// for thousands of texels; past 16 texels, which measured best on the H200 (3.58-3.60 ms against
+// 3.87-3.88 at 64, 4.06-4.12 at 256 and 3.66-3.68 at 4 for 4,096 lights). 128 threads a workgroup: on the H200 the large triangles' texels
 // outweigh the idle lanes of casters with fewer triangles (6.1 ms against 9.3 with 64 for 1,024
 // lights, docs/PERFORMANCE.md).
 #include "shadow_batch_compute.glsl"
@@ -33,7 +34,7 @@ layout(std430, set = 0, binding = mesh_indices_binding) readonly buffer Indices 
 layout(std430, set = 0, binding = shadow_depths_binding) buffer Depths { uint depths[]; };
 
 const uint VERTEX_FLOATS = 8u;  // scene::Vertex: position, normal, uv
-const float SMALL_TRIANGLE = 64.0;
+const float SMALL_TRIANGLE = 16.0;
 // A triangle clipped by the near plane and the view's four sides has at most 3 + 5 corners;
 // one more for rounding, which can make a polygon with nearly coincident corners cross a plane
 // more than twice.
