@@ -62,12 +62,13 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
       atlas.shape().budget_bytes,
       atlas.shape().page_size,
       atlas.pages(),
-      schedule.texels_used * shadows::atlas_texel_bytes,
+      schedule.texels_used * atlas.texel_bytes(),
       schedule.lights_per_resolution,
       schedule.lights_without_shadow,
       schedule.lights_waiting,
       summarize(frame.shadow_views_rendered()),
       summarize(frame.shadow_views_cached()),
+      summarize(frame.shadow_views_moving_only()),
       renderer.shadow_caster_draws()};
 
   if (stats.cpu_frame_ms) {
@@ -122,8 +123,12 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
         double(s.budget_bytes) / mib, double(s.used_bytes) / mib);
     for (const auto& [resolution, lights] : s.lights_per_resolution)
       std::printf(" %u:%u", resolution, lights);
-    std::printf("; %u without shadow, %u waiting; views per frame rendered %.0f, cached %.0f (medians)\n",
-                s.lights_without_shadow, s.lights_waiting, s.views_rendered->median, s.views_cached->median);
+    std::printf(
+        "; %u without shadow, %u waiting; views per frame rendered %.0f (moving casters only %.0f), cached "
+        "%.0f "
+        "(medians)\n",
+        s.lights_without_shadow, s.lights_waiting, s.views_rendered->median, s.views_moving_only->median,
+        s.views_cached->median);
   }
   const vk::MemoryStats memory = context.allocator().stats();
   std::printf("shadowgraph: GPU memory %.1f MiB used in %u blocks (%.1f MiB reserved)\n",

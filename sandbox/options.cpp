@@ -165,6 +165,11 @@ void add_options(CLI::App& app, Options& o) {
   add_choice(app, "--shadow-cache", o.shadow_cache, {{"on", true}, {"off", false}},
              "on: a shadow map is redrawn only when its light, or a caster in its reach, moved; off: every "
              "map every frame");
+  add_choice(
+      app, "--shadow-layers", o.shadow_layers, {{"on", true}, {"off", false}},
+      "on: where shadows rasterize in compute, each map keeps a layer of its still casters (twice "
+      "the memory a texel) and moving casters are redrawn alone over it; off: every redraw draws every "
+      "caster");
   add_choice(app, "--lighting", o.lighting,
              {{"auto", LightingPath::automatic},
               {"forward", LightingPath::forward},

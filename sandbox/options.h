@@ -43,8 +43,9 @@ struct Options {
   shadows::ShadowRaster shadow_raster = shadows::ShadowRaster::automatic;   // --shadow-raster
   uint32_t shadow_memory_mib = 0;  // --shadow-memory: the shadow atlas's budget; 0: the device's default
   uint32_t shadow_updates = shadows::default_shadow_view_budget;  // --shadow-updates: views redrawn a frame
-  bool shadow_cache = true;                         // --shadow-cache off: redraw every map every frame
-  LightingPath lighting = LightingPath::automatic;  // --lighting auto|forward|deferred
+  bool shadow_cache = true;   // --shadow-cache off: redraw every map every frame
+  bool shadow_layers = true;  // --shadow-layers off: no static layers, every redraw draws every caster
+  LightingPath lighting = LightingPath::automatic;             // --lighting auto|forward|deferred
   DeferredPasses deferred_passes = DeferredPasses::automatic;  // --deferred-passes auto|compute|fragment
   LitSumStart lit_sum_start = LitSumStart::automatic;          // --lit-sum-start auto|pass|gbuffer
   float exposure = 1.0f;                                       // --exposure

@@ -75,6 +75,7 @@ Json stats_json(const RunStats& stats) {
             {"lights_waiting", shadows.lights_waiting},
             {"views_rendered", summary_json(shadows.views_rendered)},
             {"views_cached", summary_json(shadows.views_cached)},
+            {"views_moving_only", summary_json(shadows.views_moving_only)},
             {"caster_draws", shadows.caster_draws}}}};
 }
 

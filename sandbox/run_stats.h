@@ -40,6 +40,8 @@
 //     "lights_waiting": 0,                       // last frame: have a tile, not drawn yet
 //     "views_rendered": {"median": ..., "min": ..., "max": ...},  // per frame
 //     "views_cached": {"median": ..., "min": ..., "max": ...},
+//     "views_moving_only": {"median": ..., "min": ..., "max": ...},  // of views_rendered: moving
+//                                                  // casters drawn alone over static layers
 //     "caster_draws": 0                          // caster instances drawn into views, a late frame
 //   }
 // }
@@ -102,6 +104,7 @@ struct RunStats {
     std::uint32_t lights_waiting = 0;
     std::optional<TimeSummary> views_rendered;  // counts, summarized like times
     std::optional<TimeSummary> views_cached;
+    std::optional<TimeSummary> views_moving_only;
     std::uint64_t caster_draws = 0;
   } shadows;
 };

@@ -68,6 +68,7 @@ RendererSettings renderer_settings(const Options& options) {
   settings.shadow_memory_bytes = uint64_t{options.shadow_memory_mib} << 20;
   settings.shadow_view_budget = options.shadow_updates;
   settings.cache_shadows = options.shadow_cache;
+  settings.static_shadow_layers = options.shadow_layers;
   if (options.naive) {
     settings.shadow_views = shadows::ShadowViewPath::per_light;
     settings.cache_shadows = false;
@@ -142,6 +143,7 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
   const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
   shadow_views_rendered_.push_back(shadows.views_rendered);
   shadow_views_cached_.push_back(shadows.views_cached);
+  shadow_views_moving_only_.push_back(shadows.views_moving_only);
   declare_passes(frame.slot, present);
   timed(phase_ms_.declare);
   execute(frame);

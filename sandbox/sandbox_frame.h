@@ -95,6 +95,7 @@ class SandboxFrame {
   // Per recorded frame: shadow views (2D maps, cube faces) drawn, and kept from earlier frames.
   const std::vector<double>& shadow_views_rendered() const { return shadow_views_rendered_; }
   const std::vector<double>& shadow_views_cached() const { return shadow_views_cached_; }
+  const std::vector<double>& shadow_views_moving_only() const { return shadow_views_moving_only_; }
 
  private:
   UiFacts ui_facts() const;
@@ -126,6 +127,7 @@ class SandboxFrame {
   PhaseTimes phase_ms_;
   std::vector<double> shadow_views_rendered_;
   std::vector<double> shadow_views_cached_;
+  std::vector<double> shadow_views_moving_only_;
 };
 
 }  // namespace sg::sandbox

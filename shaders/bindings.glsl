@@ -37,5 +37,7 @@ const int shadow_feedback_binding = 22;
 const int shadow_depths_binding = 23;
 const int mesh_vertices_binding = 24;
 const int mesh_indices_binding = 25;
+// The static layers of the shadow maps (shadow_static_layers.comp).
+const int static_layers_binding = 26;
 
 #endif

@@ -2,9 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 // Keeps every (caster, view) pair whose caster's world bounds meet the view's frustum: one
-// thread per caster, one workgroup row per view. Pairs go to culled_pairs in any order (at most
-// `capacity`; the total counts every kept pair, so the CPU learns when to grow), and each kept
-// pair counts towards its draw (view kind, caster group). Counts start at zero.
+// thread per caster (records caster_base on), one workgroup row per view. Pairs go to
+// culled_pairs in any order (at most `capacity`; the list's total counts every kept pair, so the
+// CPU learns when to grow); each list 0 pair counts towards its draw (view kind, caster group).
+// Counts start at zero.
 #include "shadow_batch_compute.glsl"
 
 layout(local_size_x = 64) in;
@@ -12,9 +13,10 @@ layout(local_size_x = 64) in;
 layout(std430, set = 0, binding = culled_pairs_binding) writeonly buffer Pairs { uvec2 pairs[]; };
 
 void main() {
-  uint caster = gl_GlobalInvocationID.x;
+  if (gl_GlobalInvocationID.x >= pc.caster_count) return;
+  uint caster = pc.caster_base + gl_GlobalInvocationID.x;
   uint view = pc.view_base + gl_WorkGroupID.y;
-  if (caster >= pc.caster_count) return;
+  if (pc.skip_moving != 0u && caster_moving(casters[caster])) return;
   vec3 lo = casters[caster].min_mesh.xyz;
   vec3 hi = casters[caster].max_instance.xyz;
   // The frustum's planes from the matrix's rows (as shadows::frustum_planes: dot(plane.xyz, p) +
@@ -32,9 +34,13 @@ void main() {
     vec3 corner = mix(lo, hi, greaterThanEqual(plane.xyz, vec3(0.0)));
     if (dot(plane.xyz, corner) + plane.w < 0.0) return;
   }
+  if (pc.list != 0u) {
+    uint slot = atomicAdd(moving_total, 1u);
+    if (slot < pc.capacity) pairs[slot] = uvec2(caster, view);
+    return;
+  }
   uint slot = atomicAdd(total, 1u);
   if (slot >= pc.capacity) return;
   pairs[slot] = uvec2(caster, view);
-  uint group = floatBitsToUint(casters[caster].min_mesh.w);
-  atomicAdd(counts[views[view].info.y * pc.group_count + group], 1u);
+  atomicAdd(counts[views[view].info.y * pc.group_count + caster_group(casters[caster])], 1u);
 }

@@ -196,11 +196,11 @@ void submit(vec4 c0, vec4 c1, vec4 c2, vec3 w0, vec3 w1, vec3 w2, uint view) {
 }
 
 void main() {
-  uint stored = min(total, pc.capacity);
+  uint stored = min(pc.list == 0u ? total : moving_total, pc.capacity);
   for (uint p = gl_WorkGroupID.x; p < stored; p += gl_NumWorkGroups.x) {
     uvec2 pair = pairs[p];
     uint view = pair.y;
-    uint group = floatBitsToUint(casters[pair.x].min_mesh.w);
+    uint group = caster_group(casters[pair.x]);
     mat4 model = instances[floatBitsToUint(casters[pair.x].max_instance.w)].model;
     mat4 view_projection = views[view].view_projection;
     CasterMesh mesh = meshes[group];

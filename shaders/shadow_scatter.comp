@@ -16,7 +16,7 @@ void main() {
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   for (uint i = gl_GlobalInvocationID.x; i < stored; i += stride) {
     uvec2 pair = pairs[i];
-    uint group = floatBitsToUint(casters[pair.x].min_mesh.w);
+    uint group = caster_group(casters[pair.x]);
     uint draw = views[pair.y].info.y * pc.group_count + group;
     uint slot = atomicAdd(counts[draw_count() + draw], 1u);
     sorted_pairs[slot] = uvec2(floatBitsToUint(casters[pair.x].max_instance.w), pair.y);

@@ -19,13 +19,20 @@ struct ShadowView {
   vec4 position_far;     // cube faces: the light's position and far plane (shadow_cube.frag)
   uvec4 info;            // x: atlas layer; y: VIEW_KIND_*; z: tile side, texels
   uvec4 raster;          // shadow_raster.comp: x where the tile's texel (0, 0) is in the depths,
-                         // y the depths' row pitch there (tiles side by side share rows)
+                         // y the depths' row pitch there (tiles side by side share rows); z where
+                         // it is in the static layers (shadow_static_layers.comp), w their pitch
 };
 
 struct ShadowCaster {
-  vec4 min_mesh;      // xyz: world bounds' minimum; w: the caster's mesh (caster group), as uint bits
+  vec4 min_mesh;      // xyz: world bounds' minimum; w: the caster's mesh (caster group), as uint
+                      // bits, with CASTER_MOVING set for a moving caster
   vec4 max_instance;  // xyz: world bounds' maximum; w: its index in Instances, as uint bits
 };
+
+const uint CASTER_MOVING = 0x80000000u;
+
+uint caster_group(ShadowCaster caster) { return floatBitsToUint(caster.min_mesh.w) & ~CASTER_MOVING; }
+bool caster_moving(ShadowCaster caster) { return (floatBitsToUint(caster.min_mesh.w) & CASTER_MOVING) != 0u; }
 
 // Geometry of caster group g: what its indirect commands draw.
 struct CasterMesh {

@@ -138,6 +138,14 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
       place(world, changed_[k]);
     }
   });
+  for (size_t k = 0; k < changed_.size(); ++k) {
+    const uint32_t i = changed_[k];
+    const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
+    if (moved && moved_at_[i] == 0) {
+      moved_at_[i] = gathers_;
+      moving_.push_back(i);
+    }
+  }
   // Moved instances can shrink the scene's bounds as well as grow them.
   if (!changed_.empty()) regrow_scene_bounds(pool);
   return true;
@@ -180,6 +188,8 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
     place_of_[index] = static_cast<uint32_t>(i);
   }
   written_at_.assign(count, 0);
+  moved_at_.assign(count, 0);
+  moving_.clear();
   laid_out_at_ = gathers_;
   changed_.clear();
   bounds_before_.clear();

@@ -104,6 +104,14 @@ class GpuScene {
   std::span<const uint32_t> replaced() const { return changed_; }
   std::span<const scene::Aabb> replaced_bounds_before() const { return bounds_before_; }
   bool casts_shadow(uint32_t instance) const { return items_[instance].caster; }
+  // Moving instances: those whose bounds changed in a gather since the last layout (the layout
+  // makes every instance still again). Shadow maps keep a layer of the other casters and redraw
+  // only these over it (ShadowViewBatch). moving_instances() lists them in the order they first
+  // moved.
+  std::span<const uint32_t> moving_instances() const { return moving_; }
+  bool moving(uint32_t instance) const { return moved_at_[instance] != 0; }
+  // Whether `instance` first moved in the last gather (it was still before).
+  bool first_moved_in_last_gather(uint32_t instance) const { return moved_at_[instance] == gathers_; }
 
  private:
   vk::Buffer vertices_;
@@ -133,6 +141,8 @@ class GpuScene {
   uint64_t laid_out_at_ = 0;                // the call that last ordered every instance
   std::vector<uint32_t> place_of_;          // by entity index: its instance, or SparseSet::npos
   std::vector<uint64_t> written_at_;        // by instance: the call that last placed it (0: the layout's)
+  std::vector<uint64_t> moved_at_;          // by instance: the call whose move made it moving (0: still)
+  std::vector<uint32_t> moving_;            // the moving instances, in the order they first moved
   std::vector<uint32_t> changed_;           // the instances the current call re-places
   std::vector<scene::Aabb> bounds_before_;  // their bounds before it
   std::vector<uint64_t> uploaded_at_;       // by slot: the call whose instances it holds

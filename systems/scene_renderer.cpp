@@ -20,6 +20,21 @@ namespace {
 constexpr rg::ResourceState sampled{rg::PipelineStage::fragment_shader | rg::PipelineStage::compute_shader,
                                     rg::Access::shader_sampled_read, rg::ImageLayout::read_only_optimal};
 
+// Where the shadow maps' static layers are left: written and read by compute (ShadowViewBatch).
+constexpr rg::ResourceState static_layers_state{
+    rg::PipelineStage::compute_shader, rg::Access::shader_storage_read | rg::Access::shader_storage_write,
+    rg::ImageLayout::undefined};
+
+bool batched_shadow_views(const vk::VulkanContext& context, const RendererSettings& settings) {
+  return settings.shadow_views == shadows::ShadowViewPath::batched && ShadowViewBatch::supported(context);
+}
+
+// Static layers are kept by the compute raster, where it may run.
+bool keeps_static_layers(const vk::VulkanContext& context, const RendererSettings& settings) {
+  return settings.static_shadow_layers && batched_shadow_views(context, settings) &&
+         ShadowViewBatch::may_raster_in_compute(context, settings.shadow_raster);
+}
+
 // Tiled deferred measured fastest on the H200 (docs/PERFORMANCE.md), and on lavapipe for more
 // than a few lights; automatic starts there.
 constexpr LightingPath fastest_lighting = LightingPath::deferred;
@@ -40,15 +55,16 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
                           context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU),
       gpu_scene_(context, scene.meshes, frames_in_flight),
       textures_(context, scene.textures),
-      atlas_(context, settings.shadow_memory_bytes),
-      schedule_({atlas_.shape().page_size, atlas_.shape().max_pages, shadows::min_shadow_resolution}),
+      atlas_(context, settings.shadow_memory_bytes, keeps_static_layers(context, settings)),
+      schedule_({atlas_.shape().page_size, atlas_.shape().max_pages, shadows::min_shadow_resolution},
+                atlas_.static_layers() != nullptr),
       tone_map_(context, frame_format),
       light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
                      frames_in_flight, "light records", light_record_texel_format),
       max_light_records_(context.properties().limits.maxTexelBufferElements /
                          (sizeof(shadows::GpuLight) / 16)) {
-  if (settings.shadow_views == shadows::ShadowViewPath::batched && ShadowViewBatch::supported(context)) {
-    batch_.emplace(context, frames_in_flight, settings.shadow_raster);
+  if (batched_shadow_views(context, settings)) {
+    batch_.emplace(context, frames_in_flight, settings.shadow_raster, atlas_.static_layers() != nullptr);
   } else {
     per_light_.emplace(context, frames_in_flight);
   }
@@ -88,6 +104,9 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   auto mark = std::chrono::steady_clock::now();
   workers_.wake();  // the schedule's batches come soon: threads wake while the casters are listed
   if (!settings_.cache_shadows) schedule_.invalidate_all();
+  // A new layout makes every moving instance still (GpuScene::moving): layers drawn without them
+  // miss them now.
+  if (gpu_scene_.laid_out_in_last_gather()) schedule_.forget_static_layers();
   if (batch_ && !batch_->all_casters_kept(slot)) {
     std::printf(
         "shadowgraph: shadow views kept more casters than fit; the buffer grows and every map is redrawn\n");
@@ -119,7 +138,10 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
       write_in_pieces(light_records_, slot, std::span<const shadows::GpuLight>(lights_.records), &workers_);
   cpu_steps_.upload = lap(mark);
   const uint32_t page_size = atlas_.shape().page_size;
-  if (batch_) batch_->prepare(slot, lights_, gpu_scene_, page_size, &workers_);
+  if (batch_) {
+    batch_->prepare(slot, lights_, gpu_scene_, page_size, &workers_);
+    if (!batch_->static_layers_kept()) schedule_.static_layers_not_kept();
+  }
   if (per_light_) {
     per_light_->prepare(slot, lights_, gpu_scene_, page_size, settings_.cube_shadows, settings_.cull_casters);
   }
@@ -155,26 +177,36 @@ shadows::CasterUpdate SceneRenderer::caster_update() {
     }
     return shadows::CasterUpdate(casters_);
   }
+  // A caster that starts moving leaves the static layers where it stood; after that its boxes
+  // concern only the moving casters drawn over them.
+  still_changes_.clear();
   moved_casters_.clear();
   const std::span<const uint32_t> replaced = gpu_scene_.replaced();
   const std::span<const scene::Aabb> before = gpu_scene_.replaced_bounds_before();
   for (size_t k = 0; k < replaced.size(); ++k) {
-    const scene::Aabb& now = gpu_scene_.instance_bounds()[replaced[k]];
-    if (!gpu_scene_.casts_shadow(replaced[k]) || (now.min == before[k].min && now.max == before[k].max))
-      continue;
-    for (const scene::Aabb& box : {before[k], now}) {
-      if (!box.empty()) moved_casters_.push_back(box);
-    }
+    const uint32_t i = replaced[k];
+    const scene::Aabb& now = gpu_scene_.instance_bounds()[i];
+    if (!gpu_scene_.casts_shadow(i) || (now.min == before[k].min && now.max == before[k].max)) continue;
+    if (!before[k].empty())
+      (gpu_scene_.first_moved_in_last_gather(i) ? still_changes_ : moved_casters_).push_back(before[k]);
+    if (!now.empty()) moved_casters_.push_back(now);
   }
-  return shadows::CasterUpdate::changes(moved_casters_);
+  return shadows::CasterUpdate::changes(still_changes_, moved_casters_);
 }
 
 RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports& imports,
                                         rg::ImageHandle frame, uint32_t slot, const scene::CameraPose& pose,
                                         const scene::Camera& lens) {
   rg::ImageHandle atlas = imports.import_image(graph, "shadow atlas", atlas_.image(), sampled);
-  atlas = batch_ ? batch_->add_to(graph, atlas, gpu_scene_, slot)
-                 : per_light_->add_to(graph, atlas, lights_, gpu_scene_, slot, settings_.cube_shadows);
+  if (batch_) {
+    const vk::Buffer* layers = atlas_.static_layers();
+    const rg::BufferHandle static_layers =
+        layers ? imports.import_buffer(graph, "shadow static layers", *layers, static_layers_state)
+               : rg::BufferHandle{};
+    atlas = batch_->add_to(graph, atlas, static_layers, gpu_scene_, slot);
+  } else {
+    atlas = per_light_->add_to(graph, atlas, lights_, gpu_scene_, slot, settings_.cube_shadows);
+  }
 
   const rg::ImageDesc& target = graph.resources()[frame.index].image;
   const glm::mat4 view_projection =

@@ -59,7 +59,10 @@ struct RendererSettings {
   uint64_t shadow_memory_bytes = 0;  // the atlas's budget; 0: the device's default
   uint32_t shadow_view_budget = shadows::default_shadow_view_budget;  // views redrawn a frame; 0: all due
   bool cache_shadows = true;  // off: every map is redrawn every frame (within the view budget)
-  float exposure = 1.0f;      // multiplies the lit sum before tone mapping
+  // Where the compute raster may run: keep a static layer per map (ShadowViewBatch), so that maps
+  // wrong only through moving casters redraw just those.
+  bool static_shadow_layers = true;
+  float exposure = 1.0f;  // multiplies the lit sum before tone mapping
   LightingView view = LightingView::lit;
 };
 
@@ -148,6 +151,7 @@ class SceneRenderer {
   // The frame's casters for the schedule: all of them after a new layout, else what moved.
   shadows::CasterUpdate caster_update();
   std::vector<shadows::CasterBounds> casters_;
+  std::vector<scene::Aabb> still_changes_;  // where casters that start moving stood
   std::vector<scene::Aabb> moved_casters_;
   CpuSteps cpu_steps_;
   // The passes of the path in use only: a CPU driver compiles a pipeline slowly.

@@ -21,7 +21,8 @@ shadows::DeviceShadowLimits shadow_limits(const vk::VulkanContext& context) {
     if (memory.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
       heap = std::max(heap, memory.memoryHeaps[h].size);
   }
-  return {limits.maxImageDimension2D, limits.maxImageArrayLayers, maintenance3.maxMemoryAllocationSize, heap};
+  return {limits.maxImageDimension2D, limits.maxImageArrayLayers, maintenance3.maxMemoryAllocationSize, heap,
+          limits.maxStorageBufferRange};
 }
 
 vk::GraphicsPipelineDesc shadow_pipeline_desc(VkPipelineLayout layout) {
@@ -35,10 +36,11 @@ vk::GraphicsPipelineDesc shadow_pipeline_desc(VkPipelineLayout layout) {
   return desc;
 }
 
-ShadowAtlas::ShadowAtlas(vk::VulkanContext& context, uint64_t budget_bytes) : context_(context) {
+ShadowAtlas::ShadowAtlas(vk::VulkanContext& context, uint64_t budget_bytes, bool static_layers)
+    : context_(context), keeps_static_layers_(static_layers) {
   const shadows::DeviceShadowLimits limits = shadow_limits(context);
-  shape_ =
-      shadows::atlas_shape(budget_bytes > 0 ? budget_bytes : shadows::default_shadow_budget(limits), limits);
+  shape_ = shadows::atlas_shape(budget_bytes > 0 ? budget_bytes : shadows::default_shadow_budget(limits),
+                                limits, static_layers);
   fit(1);
 }
 
@@ -59,11 +61,20 @@ bool ShadowAtlas::fit(uint32_t pages) {
                                 VK_IMAGE_VIEW_TYPE_2D_ARRAY,
                                 "shadow atlas"});
   pages_ = wanted;
+  if (keeps_static_layers_) {
+    static_layers_ = vk::Buffer(
+        context_, {uint64_t{shape_.page_size} * shape_.page_size * pages_ * sizeof(float),
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::gpu_only, "shadow static layers"});
+  }
   return true;
 }
 
+uint32_t ShadowAtlas::texel_bytes() const {
+  return shadows::atlas_texel_bytes * (keeps_static_layers_ ? 2 : 1);
+}
+
 uint64_t ShadowAtlas::bytes() const {
-  return uint64_t{shape_.page_size} * shape_.page_size * pages_ * shadows::atlas_texel_bytes;
+  return uint64_t{shape_.page_size} * shape_.page_size * pages_ * texel_bytes();
 }
 
 }  // namespace sg

@@ -18,6 +18,8 @@
 #include "shaders/shadow_draws.comp.spv.h"
 #include "shaders/shadow_raster.comp.spv.h"
 #include "shaders/shadow_scatter.comp.spv.h"
+#include "shaders/shadow_static_restore.comp.spv.h"
+#include "shaders/shadow_static_save.comp.spv.h"
 #include "systems/shader_bindings.h"
 #include "systems/shadow_atlas.h"
 #include "systems/shadows/atlas_tile_coords.h"
@@ -41,11 +43,30 @@ struct BatchConstants {
   uint32_t group_count;
   uint32_t capacity;
   uint32_t view_base;
+  uint32_t caster_base = 0;
+  uint32_t list = 0;
+  uint32_t skip_moving = 0;
+  uint32_t moving_capacity = 0;
 };
 
-constexpr VkDeviceSize counts_header_bytes = 16;  // total and padding
-constexpr VkDeviceSize draws_header_bytes = 32;   // the scatter's and the raster's dispatches
+// shaders/shadow_static_layers.glsl's LayerConstants.
+struct LayerConstants {
+  uint32_t view_base;
+  uint32_t view_count;
+};
+
+// shaders/shadow_static_layers.glsl's TEXELS_PER_WORKGROUP.
+constexpr uint64_t layer_texels_per_workgroup = 65536;
+
+// shaders/shadow_views.glsl's CASTER_MOVING, in a caster record's group.
+constexpr uint32_t caster_moving = 0x80000000u;
+
+constexpr VkDeviceSize counts_header_bytes = 16;  // the two lists' totals and padding
+constexpr VkDeviceSize draws_header_bytes = 48;   // the scatter's and the raster's dispatches
 constexpr VkDeviceSize raster_dispatch_offset = 16;
+constexpr VkDeviceSize moving_raster_dispatch_offset = 32;
+// shadow_raster.comp's workgroup count is a dispatch's x, at most 65,535 on every device.
+constexpr uint32_t max_workgroups_x = 65535;
 constexpr VkDeviceSize pair_bytes = 2 * sizeof(uint32_t);
 
 float as_float(uint32_t bits) { return std::bit_cast<float>(bits); }
@@ -73,10 +94,15 @@ bool ShadowViewBatch::supported(const vk::VulkanContext& context) {
   return context.optional_features().shader_output_layer;
 }
 
+bool ShadowViewBatch::may_raster_in_compute(const vk::VulkanContext& context, shadows::ShadowRaster raster) {
+  return resolve(raster, context) != shadows::ShadowRaster::hardware;
+}
+
 ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight,
-                                 shadows::ShadowRaster raster)
+                                 shadows::ShadowRaster raster, bool static_layers)
     : setting_(resolve(raster, context)),
       raster_(setting_ == shadows::ShadowRaster::automatic ? shadows::ShadowRaster::compute : setting_),
+      has_static_layers_(static_layers),
       cull_layout_(context.device(),
                    {{shadow_views_binding, storage, 1, compute},
                     {shadow_casters_binding, storage, 1, compute},
@@ -110,11 +136,16 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
                               {mesh_vertices_binding, storage, 1, compute},
                               {mesh_indices_binding, storage, 1, compute}},
                              vk::push_constants<BatchConstants>(compute)),
+      static_layers_layout_(context.device(),
+                            {{shadow_views_binding, storage, 1, compute},
+                             {shadow_depths_binding, storage, 1, compute},
+                             {static_layers_binding, storage, 1, compute}},
+                            vk::push_constants<LayerConstants>(compute)),
       view_buffers_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow views"),
       caster_buffers_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow casters"),
       mesh_buffers_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow caster meshes"),
-      feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow feedback"),
-      capacity_in_slot_(frames_in_flight, 0) {
+      feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow feedback") {
+  for (PairCapacity& capacity : capacity_) capacity.in_slot.assign(frames_in_flight, 0);
   max_views_per_dispatch_ = context.properties().limits.maxComputeWorkGroupCount[1];
   cull_pipeline_ =
       vk::create_compute_pipeline(context, {shadow_cull_comp, {}, cull_layout_.get(), "shadow cull"});
@@ -130,6 +161,10 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
     }
     compute_raster_pipeline_ = vk::create_compute_pipeline(
         context, {shadow_raster_comp, {}, compute_raster_layout_.get(), "shadow raster"});
+    static_save_pipeline_ = vk::create_compute_pipeline(
+        context, {shadow_static_save_comp, {}, static_layers_layout_.get(), "shadow static save"});
+    static_restore_pipeline_ = vk::create_compute_pipeline(
+        context, {shadow_static_restore_comp, {}, static_layers_layout_.get(), "shadow static restore"});
     if (setting_ == shadows::ShadowRaster::compute) return;
   }
   vk::GraphicsPipelineDesc desc = shadow_pipeline_desc(raster_layout_.get());
@@ -143,32 +178,45 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
 
 bool ShadowViewBatch::all_casters_kept(uint32_t slot) {
   // What the GPU kept the last time this slot ran (its fence has been waited for).
-  if (capacity_in_slot_[slot] == 0) return true;
-  uint32_t kept = 0;
-  std::memcpy(&kept, feedback_.buffer(slot).mapped(), sizeof(kept));
-  kept_pairs_ = kept;
-  if (kept <= capacity_in_slot_[slot]) return true;
-  capacity_limit_ = std::max(capacity_limit_, std::bit_ceil(uint64_t{kept} + kept / 2));
-  return false;
+  std::array<uint32_t, 2> kept{};
+  std::memcpy(kept.data(), feedback_.buffer(slot).mapped(), sizeof(kept));
+  bool all_kept = true;
+  for (size_t list = 0; list < capacity_.size(); ++list) {
+    PairCapacity& capacity = capacity_[list];
+    if (capacity.in_slot[slot] == 0) continue;
+    if (kept[list] <= capacity.in_slot[slot]) continue;
+    capacity.limit = std::max(capacity.limit, std::bit_ceil(uint64_t{kept[list]} + kept[list] / 2));
+    all_kept = false;
+  }
+  if (capacity_[0].in_slot[slot] != 0) kept_pairs_ = uint64_t{kept[0]} + kept[1];
+  return all_kept;
 }
 
 void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene,
                               uint32_t page_size, ecs::ThreadPool* pool) {
-  // Where each drawn view goes, a flag a light, and its tile, on this thread; where compute
-  // raster puts its depths; then the view records, independent, in chunks on the pool (written
-  // once each, in order: they are most of what this frame uploads).
+  // Where each drawn view goes, a flag a light, and its tile, on this thread: the views drawn
+  // with every caster first, then those drawn with the moving casters alone (the cull's two
+  // dispatches take a range each); where compute raster puts its depths; then the view records,
+  // independent, in chunks on the pool (written once each, in order: they are most of what this
+  // frame uploads).
   constexpr uint32_t not_drawn = UINT32_MAX;
   const size_t light_count = lights.maps.size() + lights.cubes.size();
-  first_view_.resize(light_count);
+  first_view_.assign(light_count, not_drawn);
   view_tiles_.clear();
-  for (size_t m = 0; m < lights.maps.size(); ++m) {
-    first_view_[m] = lights.maps[m].render ? static_cast<uint32_t>(view_tiles_.size()) : not_drawn;
-    if (lights.maps[m].render) view_tiles_.push_back(lights.maps[m].tile);
-  }
-  for (size_t c = 0; c < lights.cubes.size(); ++c) {
-    const shadows::ShadowCubeView& cube = lights.cubes[c];
-    first_view_[lights.maps.size() + c] = cube.render ? static_cast<uint32_t>(view_tiles_.size()) : not_drawn;
-    if (cube.render) view_tiles_.insert(view_tiles_.end(), cube.tiles.begin(), cube.tiles.end());
+  for (const bool moving_only : {false, true}) {
+    for (size_t m = 0; m < lights.maps.size(); ++m) {
+      const shadows::ShadowMapView& map = lights.maps[m];
+      if (!map.render || map.moving_casters_only != moving_only) continue;
+      first_view_[m] = static_cast<uint32_t>(view_tiles_.size());
+      view_tiles_.push_back(map.tile);
+    }
+    for (size_t c = 0; c < lights.cubes.size(); ++c) {
+      const shadows::ShadowCubeView& cube = lights.cubes[c];
+      if (!cube.render || cube.moving_casters_only != moving_only) continue;
+      first_view_[lights.maps.size() + c] = static_cast<uint32_t>(view_tiles_.size());
+      view_tiles_.insert(view_tiles_.end(), cube.tiles.begin(), cube.tiles.end());
+    }
+    if (!moving_only) full_views_ = static_cast<uint32_t>(view_tiles_.size());
   }
   const size_t count = view_tiles_.size();
 
@@ -186,6 +234,29 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     placed_tiles_.clear();
   }
 
+  // The casters of each group (a mesh's casters, consecutive instances), one after the other;
+  // layered, the moving ones again after them all.
+  meshes_.clear();
+  group_first_caster_.clear();
+  const std::span<const VkDrawIndexedIndirectCommand> groups = scene.caster_groups();
+  const std::span<const scene::Aabb> bounds = scene.instance_bounds();
+  uint32_t caster_count = 0;
+  for (const VkDrawIndexedIndirectCommand& group : groups) {
+    meshes_.push_back({group.indexCount, group.firstIndex, std::bit_cast<uint32_t>(group.vertexOffset), 0u});
+    group_first_caster_.push_back(caster_count);
+    caster_count += group.instanceCount;
+  }
+  caster_count_ = caster_count;
+  layered_ = has_static_layers_ && raster_ == shadows::ShadowRaster::compute && count > 0 && caster_count > 0;
+  if (!layered_) full_views_ = static_cast<uint32_t>(count);  // every view gets every caster
+  moving_casters_.clear();
+  if (layered_) {
+    for (const uint32_t i : scene.moving_instances()) {
+      if (scene.casts_shadow(i)) moving_casters_.push_back(i);
+    }
+  }
+  moving_count_ = static_cast<uint32_t>(moving_casters_.size());
+
   // Records go straight into the slot's mapped buffers, from the pool's threads: writes into
   // mapped GPU memory go faster from several cores, and a copy through a vector first cost a
   // serial pass over half a megabyte each with a thousand lights.
@@ -195,8 +266,10 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
   const auto place_view = [&](uint32_t v, const glm::mat4& view_projection, const glm::vec4& position_far,
                               uint32_t kind) {
     const shadows::AtlasTile& tile = view_tiles_[v];
+    // Below 2^32: the static layers are bound whole, within maxStorageBufferRange (atlas_shape).
+    const auto layer = static_cast<uint32_t>((uint64_t{tile.page} * page_size + tile.y) * page_size + tile.x);
     views[v] = {view_projection, shadows::tile_clip_transform(tile, page_size), position_far,
-                glm::uvec4(tile.page, kind, tile.size, 0u), glm::uvec4(depth_places_[v], 0u, 0u)};
+                glm::uvec4(tile.page, kind, tile.size, 0u), glm::uvec4(depth_places_[v], layer, page_size)};
     clears_[v] = tile_clear(tile);
   };
   ecs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
@@ -215,19 +288,15 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     }
   });
 
-  // The casters of each group (a mesh's casters, consecutive instances), one after the other.
-  meshes_.clear();
-  group_first_caster_.clear();
-  const std::span<const VkDrawIndexedIndirectCommand> groups = scene.caster_groups();
-  const std::span<const scene::Aabb> bounds = scene.instance_bounds();
-  uint32_t caster_count = 0;
-  for (const VkDrawIndexedIndirectCommand& group : groups) {
-    meshes_.push_back({group.indexCount, group.firstIndex, std::bit_cast<uint32_t>(group.vertexOffset), 0u});
-    group_first_caster_.push_back(caster_count);
-    caster_count += group.instanceCount;
-  }
-  caster_count_ = caster_count;
-  auto* casters = static_cast<Caster*>(caster_buffers_.reserve(slot, caster_count * sizeof(Caster)).mapped());
+  const auto group_of = [&](uint32_t instance) {
+    return static_cast<uint32_t>(std::upper_bound(groups.begin(), groups.end(), instance,
+                                                  [](uint32_t i, const VkDrawIndexedIndirectCommand& g) {
+                                                    return i < g.firstInstance;
+                                                  }) -
+                                 groups.begin() - 1);
+  };
+  auto* casters = static_cast<Caster*>(
+      caster_buffers_.reserve(slot, (caster_count + moving_count_) * sizeof(Caster)).mapped());
   ecs::run_in_pieces(pool, caster_count, 2048, [&](size_t begin, size_t end) {
     auto g = static_cast<uint32_t>(
         std::upper_bound(group_first_caster_.begin(), group_first_caster_.end(), begin) -
@@ -235,15 +304,27 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     for (size_t c = begin; c < end; ++c) {
       while (g + 1 < groups.size() && c >= group_first_caster_[g + 1]) ++g;
       const uint32_t i = groups[g].firstInstance + static_cast<uint32_t>(c - group_first_caster_[g]);
-      casters[c] = {glm::vec4(bounds[i].min, as_float(g)), glm::vec4(bounds[i].max, as_float(i))};
+      const uint32_t group = layered_ && scene.moving(i) ? g | caster_moving : g;
+      casters[c] = {glm::vec4(bounds[i].min, as_float(group)), glm::vec4(bounds[i].max, as_float(i))};
     }
   });
+  for (uint32_t k = 0; k < moving_count_; ++k) {
+    const uint32_t i = moving_casters_[k];
+    casters[caster_count + k] = {glm::vec4(bounds[i].min, as_float(group_of(i) | caster_moving)),
+                                 glm::vec4(bounds[i].max, as_float(i))};
+  }
   mesh_buffers_.write(slot, std::span<const glm::uvec4>(meshes_));
-  const uint32_t zero = 0;
-  feedback_.write(slot, std::span<const uint32_t>(&zero, 1));
+  const std::array<uint32_t, 2> zeros{};
+  feedback_.write(slot, std::span<const uint32_t>(zeros));
 
-  capacity_ = std::clamp<uint64_t>(uint64_t{view_count_} * caster_count_, 1, capacity_limit_);
-  capacity_in_slot_[slot] = view_count_ == 0 || caster_count_ == 0 ? 0 : capacity_;
+  const bool drawn = view_count_ > 0 && caster_count_ > 0;
+  const std::array<uint64_t, 2> pairs{uint64_t{full_views_} * caster_count_,
+                                      uint64_t{view_count_} * moving_count_};
+  for (size_t list = 0; list < capacity_.size(); ++list) {
+    PairCapacity& capacity = capacity_[list];
+    capacity.now = std::clamp<uint64_t>(pairs[list], 1, capacity.limit);
+    capacity.in_slot[slot] = drawn && pairs[list] > 0 ? capacity.now : 0;
+  }
 }
 
 // Per-region overhead dominates copying thousands of small squares (docs/PERFORMANCE.md), so
@@ -300,19 +381,23 @@ void ShadowViewBatch::place_depths() {
   }
 }
 
-rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
+rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle atlas,
+                                        rg::BufferHandle static_layers, const GpuScene& scene,
                                         uint32_t slot) const {
   if (view_count_ == 0) return atlas;
   if (caster_count_ == 0) return add_hardware_raster(graph, atlas, scene, slot, {}, {}, {});
   const bool compute = raster_ == shadows::ShadowRaster::compute;
+  const bool moving_list = layered_ && moving_count_ > 0;
   const auto group_count = static_cast<uint32_t>(meshes_.size());
-  const BatchConstants constants{caster_count_, group_count, static_cast<uint32_t>(capacity_), 0u};
+  BatchConstants constants{caster_count_, group_count, static_cast<uint32_t>(capacity_[0].now), 0u};
+  constants.skip_moving = layered_ ? 1 : 0;
+  constants.moving_capacity = static_cast<uint32_t>(capacity_[1].now);
   const uint32_t draw_count = view_kinds * group_count;
   const VkBuffer view_buffer = view_buffers_.buffer(slot).handle();
   const VkBuffer caster_buffer = caster_buffers_.buffer(slot).handle();
 
   struct Buffers {
-    rg::BufferHandle counts, pairs, draws, depths;
+    rg::BufferHandle counts, pairs, moving_pairs, draws, depths;
   } b{};
   graph.add_pass(
       "shadow cull reset",
@@ -335,25 +420,44 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
       "shadow cull",
       [&](rg::PassBuilder& p) {
         b.counts = p.write(b.counts, rg::Usage::storage_compute);
-        b.pairs = p.write(p.create_buffer("shadow culled pairs", {frame_steady(capacity_ * pair_bytes)}),
-                          rg::Usage::storage_compute);
+        b.pairs =
+            p.write(p.create_buffer("shadow culled pairs", {frame_steady(capacity_[0].now * pair_bytes)}),
+                    rg::Usage::storage_compute);
+        if (moving_list) {
+          b.moving_pairs =
+              p.write(p.create_buffer("shadow moving pairs", {frame_steady(capacity_[1].now * pair_bytes)}),
+                      rg::Usage::storage_compute);
+        }
         return b;
       },
       [this, constants, view_buffer, caster_buffer](const Buffers& written, const vk::PassRecorder& rec) {
-        const VkDescriptorSet set = cull_layout_.write(rec.allocate_set(cull_layout_))
-                                        .buffer(shadow_views_binding, view_buffer)
-                                        .buffer(shadow_casters_binding, caster_buffer)
-                                        .buffer(culled_pairs_binding, rec.buffer(written.pairs))
-                                        .buffer(draw_counts_binding, rec.buffer(written.counts))
-                                        .update();
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, cull_pipeline_.get());
-        cull_layout_.bind_compute(rec.cmd(), set);
-        const uint32_t columns = (constants.caster_count + 63) / 64;
-        for (uint32_t base = 0; base < views(); base += max_views_per_dispatch_) {
-          BatchConstants chunk = constants;
-          chunk.view_base = base;
-          cull_layout_.push(rec.cmd(), chunk);
-          vkCmdDispatch(rec.cmd(), columns, std::min(max_views_per_dispatch_, views() - base), 1);
+        // List 0: the views drawn with every caster against every still caster (every caster,
+        // unlayered); list 1: every view against the moving casters.
+        const auto cull = [&](rg::BufferHandle pairs, BatchConstants list, uint32_t view_count) {
+          const VkDescriptorSet set = cull_layout_.write(rec.allocate_set(cull_layout_))
+                                          .buffer(shadow_views_binding, view_buffer)
+                                          .buffer(shadow_casters_binding, caster_buffer)
+                                          .buffer(culled_pairs_binding, rec.buffer(pairs))
+                                          .buffer(draw_counts_binding, rec.buffer(written.counts))
+                                          .update();
+          cull_layout_.bind_compute(rec.cmd(), set);
+          const uint32_t columns = (list.caster_count + 63) / 64;
+          for (uint32_t base = 0; base < view_count; base += max_views_per_dispatch_) {
+            list.view_base = base;
+            cull_layout_.push(rec.cmd(), list);
+            vkCmdDispatch(rec.cmd(), columns, std::min(max_views_per_dispatch_, view_count - base), 1);
+          }
+        };
+        if (full_views_ > 0) cull(written.pairs, constants, full_views_);
+        if (written.moving_pairs.valid()) {
+          BatchConstants moving = constants;
+          moving.caster_base = caster_count_;
+          moving.caster_count = moving_count_;
+          moving.capacity = constants.moving_capacity;
+          moving.list = 1;
+          moving.skip_moving = 0;
+          cull(written.moving_pairs, moving, views());
         }
       });
   graph.add_pass(
@@ -378,8 +482,43 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
         draws_layout_.push(rec.cmd(), constants);
         vkCmdDispatch(rec.cmd(), 1, 1, 1);
       });
-  return compute ? add_compute_raster(graph, atlas, scene, slot, b.pairs, b.counts, b.draws, b.depths)
+  return compute ? add_compute_raster(graph, atlas, scene, slot, b.pairs, b.moving_pairs, b.counts, b.draws,
+                                      b.depths, static_layers)
                  : add_hardware_raster(graph, atlas, scene, slot, b.pairs, b.counts, b.draws);
+}
+
+void ShadowViewBatch::add_static_layer_pass(rg::RenderGraph& graph, const char* name, uint32_t slot,
+                                            bool save, uint32_t first, uint32_t count,
+                                            rg::BufferHandle& depths, rg::BufferHandle& static_layers) const {
+  uint64_t largest = 0;
+  for (uint32_t v = first; v < first + count; ++v) {
+    largest = std::max<uint64_t>(largest, uint64_t{view_tiles_[v].size} * view_tiles_[v].size);
+  }
+  const auto chunks =
+      static_cast<uint32_t>((largest + layer_texels_per_workgroup - 1) / layer_texels_per_workgroup);
+  graph.add_pass(
+      name,
+      [&](rg::PassBuilder& p) {
+        if (save) {
+          p.read(depths, rg::Usage::storage_compute);
+          static_layers = p.write(static_layers, rg::Usage::storage_compute);
+        } else {
+          p.read(static_layers, rg::Usage::storage_compute);
+          depths = p.write(depths, rg::Usage::storage_compute);
+        }
+      },
+      [this, slot, save, first, count, chunks, depths, static_layers](const vk::PassRecorder& rec) {
+        const VkDescriptorSet set = static_layers_layout_.write(rec.allocate_set(static_layers_layout_))
+                                        .buffer(shadow_views_binding, view_buffers_.buffer(slot).handle())
+                                        .buffer(shadow_depths_binding, rec.buffer(depths))
+                                        .buffer(static_layers_binding, rec.buffer(static_layers))
+                                        .update();
+        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE,
+                          (save ? static_save_pipeline_ : static_restore_pipeline_).get());
+        static_layers_layout_.bind_compute(rec.cmd(), set);
+        static_layers_layout_.push(rec.cmd(), LayerConstants{first, count});
+        vkCmdDispatch(rec.cmd(), std::min(count, max_workgroups_x), chunks, 1);
+      });
 }
 
 rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg::ImageHandle atlas,
@@ -387,7 +526,7 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
                                                      rg::BufferHandle pairs, rg::BufferHandle counts,
                                                      rg::BufferHandle draws) const {
   const auto group_count = static_cast<uint32_t>(meshes_.size());
-  const BatchConstants constants{caster_count_, group_count, static_cast<uint32_t>(capacity_), 0u};
+  const BatchConstants constants{caster_count_, group_count, static_cast<uint32_t>(capacity_[0].now), 0u};
   const VkBuffer view_buffer = view_buffers_.buffer(slot).handle();
   const VkBuffer caster_buffer = caster_buffers_.buffer(slot).handle();
   rg::BufferHandle sorted;
@@ -399,8 +538,9 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
           p.read(draws, rg::Usage::indirect);
           p.read(pairs, rg::Usage::storage_compute);
           counts = p.write(counts, rg::Usage::storage_compute);
-          sorted = p.write(p.create_buffer("shadow sorted pairs", {frame_steady(capacity_ * pair_bytes)}),
-                           rg::Usage::storage_compute);
+          sorted =
+              p.write(p.create_buffer("shadow sorted pairs", {frame_steady(capacity_[0].now * pair_bytes)}),
+                      rg::Usage::storage_compute);
           return sorted;
         },
         [this, constants, view_buffer, caster_buffer, pairs, counts, draws](rg::BufferHandle sorted,
@@ -451,35 +591,54 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
 
 rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas,
                                                     const GpuScene& scene, uint32_t slot,
-                                                    rg::BufferHandle pairs, rg::BufferHandle counts,
-                                                    rg::BufferHandle draws, rg::BufferHandle depths) const {
-  const BatchConstants constants{caster_count_, static_cast<uint32_t>(meshes_.size()),
-                                 static_cast<uint32_t>(capacity_), 0u};
-  graph.add_pass(
-      "shadow raster",
-      [&](rg::PassBuilder& p) {
-        p.read(draws, rg::Usage::indirect);
-        p.read(pairs, rg::Usage::storage_compute);
-        p.read(counts, rg::Usage::storage_compute);
-        depths = p.write(depths, rg::Usage::storage_compute);
-      },
-      [this, &scene, slot, constants, pairs, counts, draws, depths](const vk::PassRecorder& rec) {
-        const VkDescriptorSet set = compute_raster_layout_.write(rec.allocate_set(compute_raster_layout_))
-                                        .buffer(instances_binding, scene.instances(slot).handle())
-                                        .buffer(shadow_views_binding, view_buffers_.buffer(slot).handle())
-                                        .buffer(shadow_casters_binding, caster_buffers_.buffer(slot).handle())
-                                        .buffer(caster_meshes_binding, mesh_buffers_.buffer(slot).handle())
-                                        .buffer(culled_pairs_binding, rec.buffer(pairs))
-                                        .buffer(draw_counts_binding, rec.buffer(counts))
-                                        .buffer(shadow_depths_binding, rec.buffer(depths))
-                                        .buffer(mesh_vertices_binding, scene.vertices().handle())
-                                        .buffer(mesh_indices_binding, scene.indices().handle())
-                                        .update();
-        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, compute_raster_pipeline_.get());
-        compute_raster_layout_.bind_compute(rec.cmd(), set);
-        compute_raster_layout_.push(rec.cmd(), constants);
-        vkCmdDispatchIndirect(rec.cmd(), rec.buffer(draws), raster_dispatch_offset);
-      });
+                                                    rg::BufferHandle pairs, rg::BufferHandle moving_pairs,
+                                                    rg::BufferHandle counts, rg::BufferHandle draws,
+                                                    rg::BufferHandle depths,
+                                                    rg::BufferHandle static_layers) const {
+  const auto raster = [&](const char* name, rg::BufferHandle list_pairs, uint32_t list) {
+    BatchConstants constants{caster_count_, static_cast<uint32_t>(meshes_.size()),
+                             static_cast<uint32_t>(capacity_[list].now), 0u};
+    constants.list = list;
+    const VkDeviceSize dispatch = list == 0 ? raster_dispatch_offset : moving_raster_dispatch_offset;
+    graph.add_pass(
+        name,
+        [&](rg::PassBuilder& p) {
+          p.read(draws, rg::Usage::indirect);
+          p.read(list_pairs, rg::Usage::storage_compute);
+          p.read(counts, rg::Usage::storage_compute);
+          depths = p.write(depths, rg::Usage::storage_compute);
+        },
+        [this, &scene, slot, constants, list_pairs, counts, draws, depths,
+         dispatch](const vk::PassRecorder& rec) {
+          const VkDescriptorSet set =
+              compute_raster_layout_.write(rec.allocate_set(compute_raster_layout_))
+                  .buffer(instances_binding, scene.instances(slot).handle())
+                  .buffer(shadow_views_binding, view_buffers_.buffer(slot).handle())
+                  .buffer(shadow_casters_binding, caster_buffers_.buffer(slot).handle())
+                  .buffer(caster_meshes_binding, mesh_buffers_.buffer(slot).handle())
+                  .buffer(culled_pairs_binding, rec.buffer(list_pairs))
+                  .buffer(draw_counts_binding, rec.buffer(counts))
+                  .buffer(shadow_depths_binding, rec.buffer(depths))
+                  .buffer(mesh_vertices_binding, scene.vertices().handle())
+                  .buffer(mesh_indices_binding, scene.indices().handle())
+                  .update();
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, compute_raster_pipeline_.get());
+          compute_raster_layout_.bind_compute(rec.cmd(), set);
+          compute_raster_layout_.push(rec.cmd(), constants);
+          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(draws), dispatch);
+        });
+  };
+  raster("shadow raster", pairs, 0);
+  if (layered_ && full_views_ > 0) {
+    add_static_layer_pass(graph, "shadow static save", slot, true, 0, full_views_, depths, static_layers);
+  }
+  // The restored views' squares are not list 0's, so restoring comes late: its wait for the
+  // previous frame's save would otherwise come before the frame's culling and rasterizing.
+  if (layered_ && full_views_ < view_count_) {
+    add_static_layer_pass(graph, "shadow static restore", slot, false, full_views_, view_count_ - full_views_,
+                          depths, static_layers);
+  }
+  if (moving_pairs.valid()) raster("shadow raster moving", moving_pairs, 1);
   graph.add_pass(
       "shadow copy",
       [&](rg::PassBuilder& p) {

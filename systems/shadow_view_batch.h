@@ -16,6 +16,15 @@
 //                               views' squares of a depth buffer (shaders/shadow_raster.comp)
 //   shadow copy      (transfer) the squares into their atlas tiles
 //
+// With static layers (the atlas's, ShadowAtlas), the compute raster draws moving casters
+// (GpuScene::moving) apart: a view drawn with every caster is culled against the still casters
+// (pair list 0), rasterized, and its square saved as its static layer ("shadow static save")
+// before the moving casters (list 1) are drawn over it ("shadow raster moving"); a view that only
+// moving casters made wrong (ShadowMapView::moving_casters_only) starts from its static layer
+// ("shadow static restore") and gets list 1 alone. A frame whose views are mostly redrawn for a
+// few moving casters then draws those casters, not the scene. The hardware raster draws every
+// caster into every view and keeps no layers (static_layers_kept()).
+//
 // so CPU time grows with views and casters, not with their product, and the number of passes is
 // fixed. The hardware raster needs shaderOutputLayer (gl_Layer from the vertex stage,
 // shaders/shadow_batch.vert); supported() says whether the device has it.
@@ -47,10 +56,14 @@ namespace sg {
 class ShadowViewBatch {
  public:
   // `raster` automatic: the hardware on CPU devices; on GPUs, each frame's choice of
-  // shadows::raster_for_views.
-  ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight, shadows::ShadowRaster raster);
+  // shadows::raster_for_views. `static_layers`: the atlas has them (may_raster_in_compute).
+  ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight, shadows::ShadowRaster raster,
+                  bool static_layers);
 
   static bool supported(const vk::VulkanContext& context);
+  // Whether frames may rasterize in compute with `raster` on this device, and so keep static
+  // layers.
+  static bool may_raster_in_compute(const vk::VulkanContext& context, shadows::ShadowRaster raster);
   // The raster of the last prepared frame (never automatic).
   shadows::ShadowRaster raster() const { return raster_; }
 
@@ -63,11 +76,15 @@ class ShadowViewBatch {
   // and caster records are written on its threads, straight into the slot's buffers.
   void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene, uint32_t page_size,
                ecs::ThreadPool* pool = nullptr);
+  // Whether the prepared frame keeps the static layers of the views it draws with every caster
+  // (compute raster with static layers); when not, moving_casters_only views are drawn with
+  // every caster too.
+  bool static_layers_kept() const { return layered_; }
 
   // Adds the passes (none when no view renders) and returns the atlas's newest version. `scene`
-  // is read when the passes record.
-  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
-                         uint32_t slot) const;
+  // is read when the passes record. `static_layers`: the atlas's, imported, when it has them.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, rg::BufferHandle static_layers,
+                         const GpuScene& scene, uint32_t slot) const;
 
   uint32_t views() const { return view_count_; }
   // Pairs (caster, view) the GPU kept in the last frame read back: instances drawn into views.
@@ -91,36 +108,55 @@ class ShadowViewBatch {
                                       uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle counts,
                                       rg::BufferHandle draws) const;
   rg::ImageHandle add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
-                                     uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle counts,
-                                     rg::BufferHandle draws, rg::BufferHandle depths) const;
+                                     uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle moving_pairs,
+                                     rg::BufferHandle counts, rg::BufferHandle draws, rg::BufferHandle depths,
+                                     rg::BufferHandle static_layers) const;
+  // Copies the depths of views [first, first + count) into their static layers (`save`) or back.
+  // The handles move on to the versions written.
+  void add_static_layer_pass(rg::RenderGraph& graph, const char* name, uint32_t slot, bool save,
+                             uint32_t first, uint32_t count, rg::BufferHandle& depths,
+                             rg::BufferHandle& static_layers) const;
 
   shadows::ShadowRaster setting_;  // hardware, compute, or automatic: chosen per frame
   shadows::ShadowRaster raster_;   // this frame's
+  bool has_static_layers_;
+  bool layered_ = false;  // this frame's: static layers kept, moving casters drawn apart
   vk::PipelineLayout cull_layout_;
   vk::PipelineLayout draws_layout_;
   vk::PipelineLayout scatter_layout_;
   vk::PipelineLayout raster_layout_;
   vk::PipelineLayout compute_raster_layout_;
+  vk::PipelineLayout static_layers_layout_;
   vk::UniquePipeline cull_pipeline_;
   vk::UniquePipeline draws_pipeline_;
   vk::UniquePipeline scatter_pipeline_;
   vk::UniquePipeline map_pipeline_;
   vk::UniquePipeline face_pipeline_;
   vk::UniquePipeline compute_raster_pipeline_;
+  vk::UniquePipeline static_save_pipeline_;
+  vk::UniquePipeline static_restore_pipeline_;
   uint32_t max_views_per_dispatch_ = 0;
 
   vk::FrameBuffers view_buffers_;
   vk::FrameBuffers caster_buffers_;
   vk::FrameBuffers mesh_buffers_;
   vk::FrameBuffers feedback_;
-  std::vector<uint64_t> capacity_in_slot_;  // the pair capacity each slot's last frame had
-  uint64_t capacity_limit_ = uint64_t{1} << 22;
-  uint64_t capacity_ = 0;  // this frame's
+  // Per pair list: the capacity each slot's last frame had, the limit it may grow to, this
+  // frame's.
+  struct PairCapacity {
+    std::vector<uint64_t> in_slot;
+    uint64_t limit = uint64_t{1} << 22;
+    uint64_t now = 0;
+  };
+  std::array<PairCapacity, 2> capacity_;
   uint64_t kept_pairs_ = 0;
 
-  uint32_t view_count_ = 0;                   // this frame's, their records in view_buffers_
-  uint32_t caster_count_ = 0;                 // this frame's, their records in caster_buffers_
+  uint32_t view_count_ = 0;    // this frame's, their records in view_buffers_
+  uint32_t full_views_ = 0;    // the first views, drawn with every caster; then moving ones alone
+  uint32_t caster_count_ = 0;  // this frame's records of all casters in caster_buffers_
+  uint32_t moving_count_ = 0;  // layered: the moving casters' records after them
   std::vector<uint32_t> group_first_caster_;  // by caster group: its first caster record
+  std::vector<uint32_t> moving_casters_;      // layered: the moving casters' instances
   std::vector<glm::uvec4> meshes_;
   std::vector<VkClearRect> clears_;
   // Compute raster: where each view's depths go in the depth buffer (View::raster's x and y, by

@@ -39,6 +39,13 @@ rg::ImageHandle GraphImports::import_image(rg::RenderGraph& graph, std::string n
   return handle;
 }
 
+rg::BufferHandle GraphImports::import_buffer(rg::RenderGraph& graph, std::string name, const Buffer& buffer,
+                                             rg::ResourceState state) {
+  const rg::BufferHandle handle = graph.import_buffer(std::move(name), {buffer.size()}, state, state);
+  resources_.bind(handle, buffer);
+  return handle;
+}
+
 void GraphImports::remember(const rg::CompiledPlan& plan) {
   states_.remember(plan);
   resources_.clear();

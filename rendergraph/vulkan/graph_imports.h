@@ -57,6 +57,12 @@ class GraphImports {
                                VkExtent2D extent, rg::ResourceState initial_state,
                                rg::ResourceState final_state);
 
+  // Declares `buffer` in `graph` as `name`, bound to it for this frame. The frame finds it in
+  // `state` and leaves it there (the barriers to the frame's first use cover the earlier frame's
+  // last). `buffer` must live until the frame's commands are recorded.
+  rg::BufferHandle import_buffer(rg::RenderGraph& graph, std::string name, const Buffer& buffer,
+                                 rg::ResourceState state);
+
   // This frame's bindings, for GraphExecutor::execute.
   const ImportedResources& resources() const { return resources_; }
   // After executing `plan`, compiled from this frame's graph: keeps where it left each imported

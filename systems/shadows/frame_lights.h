@@ -55,11 +55,15 @@ struct ShadowMapView {
   // write in that tick may have come after the gather). Systems advance the tick before gathering.
   bool changed = false;
   // From ShadowSchedule: its importance (light_importance: pixels on screen, 0 out of sight), its
-  // tile (resolution 0: no shadow this frame) and whether it renders.
+  // tile (resolution 0: no shadow this frame), whether it renders, and whether the render may draw
+  // just the moving casters over the map's static layer (ShadowRender::draw_moving_casters; `view`
+  // is then the one that layer was drawn with). A path that keeps no static layers draws every
+  // caster either way.
   float importance = 0.0f;
   uint32_t resolution = 0;
   AtlasTile tile;
   bool render = false;
+  bool moving_casters_only = false;
   std::string name;  // for the pass: "shadow <light name>"
 };
 
@@ -74,6 +78,7 @@ struct ShadowCubeView {
   uint32_t resolution = 0;           // each face's side; 0: no shadow this frame
   std::array<AtlasTile, 6> tiles{};  // faces +X, -X, +Y, -Y, +Z, -Z, all on one layer
   bool render = false;
+  bool moving_casters_only = false;  // as ShadowMapView's (`views` and position_far as drawn then)
   std::string name;
 };
 

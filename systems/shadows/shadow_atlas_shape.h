@@ -1,7 +1,8 @@
 #pragma once
 // The shape of the shadow atlas (systems/shadow_atlas.h): square pages of page_size texels, the
-// layers of one D32 2D-array image, as many as the memory budget and the device allow. Plain
-// data so the policy is tested without a GPU.
+// layers of one D32 2D-array image, as many as the memory budget and the device allow, and, where
+// the renderer keeps static layers, a buffer of floats holding as many pages. Plain data so the
+// policy is tested without a GPU.
 #include <cstdint>
 
 namespace sg::shadows {
@@ -12,6 +13,7 @@ struct DeviceShadowLimits {
   uint32_t max_array_layers = 256;             // maxImageArrayLayers
   uint64_t max_allocation_bytes = 1ull << 30;  // maxMemoryAllocationSize: one image is one allocation
   uint64_t device_local_heap_bytes = 1ull << 30;
+  uint64_t max_storage_buffer_bytes = 1ull << 30;  // maxStorageBufferRange: a shader binds the buffer whole
 };
 
 struct AtlasShape {
@@ -20,7 +22,7 @@ struct AtlasShape {
   uint64_t budget_bytes = 0;  // what was asked for, after the device's limits
 };
 
-inline constexpr uint32_t atlas_texel_bytes = 4;  // D32_SFLOAT
+inline constexpr uint32_t atlas_texel_bytes = 4;  // D32_SFLOAT, or a float of the static layers
 inline constexpr uint32_t largest_atlas_page = 4096;
 inline constexpr uint32_t smallest_atlas_page = 256;
 
@@ -29,9 +31,10 @@ uint64_t default_shadow_budget(const DeviceShadowLimits& device);
 
 // Pages of largest_atlas_page texels (smaller when the budget cannot hold one, down to
 // smallest_atlas_page), as many as `budget_bytes` holds, within maxImageArrayLayers and one
-// allocation. A budget below one smallest page still gets that page: shadows never fail for lack
-// of memory, they lose resolution (ShadowAtlasPlanner).
-AtlasShape atlas_shape(uint64_t budget_bytes, const DeviceShadowLimits& device);
+// allocation. With `static_layers`, each page is paid for twice (image and buffer) and the
+// buffer stays within maxStorageBufferRange. A budget below one smallest page still gets that
+// page: shadows never fail for lack of memory, they lose resolution (ShadowAtlasPlanner).
+AtlasShape atlas_shape(uint64_t budget_bytes, const DeviceShadowLimits& device, bool static_layers = false);
 
 // How many pages to create when `needed` are in use and `current` exist: none fewer than exist,
 // and when growing, half again beyond the current count (capped at max_pages), so lights added

@@ -10,9 +10,9 @@
 
 namespace sg::shadows {
 
-void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> changed_casters,
-                       uint32_t view_budget, std::span<uint8_t> render, std::span<uint8_t> usable,
-                       ecs::ThreadPool* pool) {
+void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes,
+                       uint32_t view_budget, bool static_layers, std::span<uint8_t> render,
+                       std::span<uint8_t> usable, ecs::ThreadPool* pool) {
   if (render.size() != lights.size() || usable.size() != lights.size()) {
     throw std::invalid_argument(
         "sg::shadows::ShadowCache::plan: render and usable need one element per light");
@@ -23,17 +23,29 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const
     LightState& state = states_[i];
     if (lights[i].invalid) state.valid = false;
     state.dirty = state.dirty || lights[i].changed || !state.valid;
+    // A light that changed or moved in the atlas has a static layer of what it was.
+    if (state.dirty) state.static_kept = false;
   }
-  mark_dirty_by_casters(lights, changed_casters, pool);
+  mark_by_casters(lights, changes.still, &LightState::dirty, pool);
+  mark_by_casters(lights, changes.moving, &LightState::moving_dirty, pool);
   choose_renders(lights, view_budget, render, pool);
 
   stats_ = {};
   for (size_t i = 0; i < lights.size(); ++i) {
     LightState& state = states_[i];
     const uint32_t views = lights[i].views;
-    if (render[i] != 0) {
+    if (render[i] != keep_map) {
+      if (state.dirty || !state.static_kept || !static_layers) {
+        render[i] = draw_all_casters;
+        state.drawn_all_frame = frame_;
+        state.static_kept = static_layers;
+      } else {
+        render[i] = draw_moving_casters;
+        stats_.views_moving_only += views;
+      }
       state.rendered_frame = frame_;
       state.dirty = false;
+      state.moving_dirty = false;
       state.valid = true;
       stats_.views_rendered += views;
       ++stats_.lights_rendered;
@@ -41,34 +53,48 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, std::span<const
       stats_.views_cached += views;
     }
     usable[i] = state.valid ? 1 : 0;
-    stats_.lights_waiting += state.dirty ? 1 : 0;
+    stats_.lights_waiting += state.dirty || state.moving_dirty ? 1 : 0;
     stats_.lights_unavailable += state.valid ? 0 : 1;
   }
 }
 
 void ShadowCache::invalidate_all() {
-  for (LightState& state : states_) state.valid = false;
+  for (LightState& state : states_) {
+    state.valid = false;
+    state.static_kept = false;
+  }
 }
 
-// Only lights not dirty already are worth testing; unbounded ones are dirty on any change.
-void ShadowCache::mark_dirty_by_casters(std::span<const ShadowCacheLight> lights,
-                                        std::span<const scene::Aabb> changed_casters, ecs::ThreadPool* pool) {
-  if (changed_casters.empty()) return;
+void ShadowCache::forget_static_layers() {
+  for (LightState& state : states_) state.static_kept = false;
+}
+
+void ShadowCache::static_layers_not_kept() {
+  for (LightState& state : states_) {
+    if (state.drawn_all_frame == frame_) state.static_kept = false;
+  }
+}
+
+// Only lights not dirty already are worth testing; unbounded ones are marked on any change.
+void ShadowCache::mark_by_casters(std::span<const ShadowCacheLight> lights,
+                                  std::span<const scene::Aabb> boxes, bool LightState::*flag,
+                                  ecs::ThreadPool* pool) {
+  if (boxes.empty()) return;
   candidates_.clear();
   candidate_reach_.clear();
   for (uint32_t i = 0; i < lights.size(); ++i) {
-    if (states_[i].dirty) continue;
+    if (states_[i].dirty || states_[i].*flag) continue;
     if (lights[i].reach.w < 0.0f) {
-      states_[i].dirty = true;
+      states_[i].*flag = true;
     } else {
       candidates_.push_back(i);
       candidate_reach_.push_back(lights[i].reach);
     }
   }
   candidate_met_.assign(candidates_.size(), 0);
-  spheres_meeting_boxes_.find(candidate_reach_, changed_casters, candidate_met_, pool);
+  spheres_meeting_boxes_.find(candidate_reach_, boxes, candidate_met_, pool);
   for (size_t k = 0; k < candidates_.size(); ++k) {
-    if (candidate_met_[k] != 0) states_[candidates_[k]].dirty = true;
+    if (candidate_met_[k] != 0) states_[candidates_[k]].*flag = true;
   }
 }
 
@@ -78,7 +104,7 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
   candidates_.clear();
   uint64_t dirty_views = 0;
   for (uint32_t i = 0; i < lights.size(); ++i) {
-    if (!states_[i].dirty) continue;
+    if (!states_[i].dirty && !states_[i].moving_dirty) continue;
     candidates_.push_back(i);
     dirty_views += lights[i].views;
   }

@@ -3,6 +3,10 @@
 // kept from frame to frame and re-rendered only when it may be wrong, at most `view_budget` views
 // a frame; a light waiting for its turn is lit with its stale map, or unshadowed when it has no
 // valid map at all. Plain data, no GPU: the renderer records the passes this chooses.
+//
+// Where the renderer keeps a static layer per map (the depths of the casters that do not move,
+// from the map's last drawing with every caster), a map that only moving casters made wrong is
+// redrawn from that layer with just the moving casters: far fewer than all of them.
 #include <cstdint>
 #include <span>
 #include <unordered_map>
@@ -26,9 +30,26 @@ struct ShadowCacheLight {
   uint32_t views = 1;    // views a render costs, at least 1: 1 for a 2D map, 6 for a cube
 };
 
+// Where shadow casters changed since the last plan.
+struct CasterChanges {
+  // Where the casters static layers hold changed: added or removed ones, and where a caster
+  // stood when it started moving. A map whose reach meets one is drawn again with every caster.
+  std::span<const scene::Aabb> still;
+  // Where moving casters were and are: a map whose reach meets one needs only those redrawn.
+  std::span<const scene::Aabb> moving;
+};
+
+// plan()'s decision for a light's map, as the values of its `render` span.
+enum ShadowRender : uint8_t {
+  keep_map = 0,
+  draw_all_casters = 1,     // and keep its static layer, where the renderer keeps them
+  draw_moving_casters = 2,  // its static layer restored, the moving casters drawn over it
+};
+
 struct ShadowCacheStats {
   uint32_t views_rendered = 0;
-  uint32_t views_cached = 0;  // views of lights sampling a map kept from an earlier frame
+  uint32_t views_moving_only = 0;  // of views_rendered, those drawn with the moving casters alone
+  uint32_t views_cached = 0;       // views of lights sampling a map kept from an earlier frame
   uint32_t lights_rendered = 0;
   uint32_t lights_waiting = 0;      // dirty but over this frame's budget: rendered in a later frame
   uint32_t lights_unavailable = 0;  // no valid map this frame: shaded unshadowed
@@ -36,15 +57,20 @@ struct ShadowCacheStats {
 
 class ShadowCache {
  public:
-  // Decides which lights render this frame. `changed_casters` are the (non-empty) boxes shadows
-  // may have changed in (CasterChangeTracker::update). `render` and `usable` must have lights.size()
-  // elements (else std::invalid_argument); for each light, in the same order:
-  // - render = 1: render its map this frame;
+  // Decides which lights render this frame, and how. `changes` are the (non-empty) boxes shadows
+  // may have changed in (CasterChangeTracker::update gives `still` ones). `static_layers`: the
+  // renderer keeps a static layer of each map drawn with every caster. `render` and `usable` must
+  // have lights.size() elements (else std::invalid_argument); for each light, in the same order:
+  // - render: keep_map, or how to render its map this frame (ShadowRender): draw_moving_casters
+  //   when only moving casters made it wrong and its static layer is kept (static_layers, drawn
+  //   with every caster since the light last changed, moved in the atlas or was invalidated,
+  //   and not forgotten); draw_all_casters otherwise;
   // - usable = 1: after this frame's renders its map holds a valid, maybe stale, picture, so the
   //   lighting may sample it; 0: shade the light unshadowed this frame.
   //
   // A light is dirty when its key was not in the previous call (it is new), it is `changed` or
-  // `invalid`, or a changed caster box meets its reach sphere; it stays dirty until rendered.
+  // `invalid`, or a changed caster box (still or moving) meets its reach sphere; it stays dirty
+  // until rendered.
   // Every dirty light renders when view_budget is 0 (unlimited) or their views fit in it.
   // Otherwise dirty lights are taken in this order until the budget is used: lights without a
   // valid map first (new, invalid, never rendered into their current storage), then the stalest
@@ -62,8 +88,8 @@ class ShadowCache {
   // lights (O(dirty log budget) usually). A frame allocates nothing once grown, except when the
   // lights are not the previous frame's keys in the previous frame's order: the key -> state map
   // is then rebuilt. With a `pool`, the lights are tested against the boxes on it.
-  void plan(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> changed_casters,
-            uint32_t view_budget, std::span<uint8_t> render, std::span<uint8_t> usable,
+  void plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes, uint32_t view_budget,
+            bool static_layers, std::span<uint8_t> render, std::span<uint8_t> usable,
             ecs::ThreadPool* pool = nullptr);
 
   // The last plan's counts.
@@ -72,17 +98,27 @@ class ShadowCache {
   // Every map's contents are garbage (e.g. the storage image was recreated): every light is
   // unusable and dirty until rendered again.
   void invalidate_all();
+  // Every static layer is wrong (casters that moved are still again): maps stay usable, and each
+  // is drawn with every caster when it next renders.
+  void forget_static_layers();
+  // The last plan's draw_all_casters renders kept no static layer (a path without them drew
+  // them).
+  void static_layers_not_kept();
 
  private:
   struct LightState {
     uint64_t key = 0;
-    uint64_t rendered_frame = 0;  // the plan that last rendered it; 0: never
-    bool dirty = true;
-    bool valid = false;  // its map holds a picture rendered into its current storage
+    uint64_t rendered_frame = 0;   // the plan that last rendered it; 0: never
+    uint64_t drawn_all_frame = 0;  // the plan that last drew it with every caster
+    bool dirty = true;             // wrong beyond what moving casters did
+    bool moving_dirty = false;     // moving casters made it wrong
+    bool valid = false;            // its map holds a picture rendered into its current storage
+    bool static_kept = false;      // its static layer matches its storage, light and still casters
   };
 
-  void mark_dirty_by_casters(std::span<const ShadowCacheLight> lights,
-                             std::span<const scene::Aabb> changed_casters, ecs::ThreadPool* pool);
+  // Sets `flag` on the lights not dirty at all yet whose reach meets one of `boxes`.
+  void mark_by_casters(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> boxes,
+                       bool LightState::*flag, ecs::ThreadPool* pool);
   void choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
                       std::span<uint8_t> render, ecs::ThreadPool* pool);
 

@@ -47,7 +47,8 @@ float light_importance(const glm::vec4& reach, const ShadowCamera& camera) {
   return importance_in(reach, camera, CameraFrustum(camera));
 }
 
-ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas) : planner_(atlas), page_size_(atlas.page_size) {}
+ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas, bool static_layers)
+    : planner_(atlas), page_size_(atlas.page_size), static_layers_(static_layers) {}
 
 void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
                               uint32_t view_budget, ecs::ThreadPool* pool) {
@@ -115,15 +116,15 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   cached_request_.resize(cached_count);
   render_.assign(cache_lights_.size(), 0);
   usable_.assign(cache_lights_.size(), 0);
-  const std::span<const scene::Aabb> changed_casters =
-      casters.changes_only ? casters.changed : caster_changes_.update(casters.all);
-  cache_.plan(cache_lights_, changed_casters, view_budget, render_, usable_, pool);
+  const CasterChanges changes{casters.changes_only ? casters.changed : caster_changes_.update(casters.all),
+                              casters.changes_only ? casters.moving : std::span<const scene::Aabb>{}};
+  cache_.plan(cache_lights_, changes, view_budget, static_layers_, render_, usable_, pool);
 
   // Results per request, then onto the views and their records, on the pool: each view writes
   // only itself, its record and its entry, and counts into its piece's tally.
   decision_.assign(requests_.size(), Decision{});
   for (size_t c = 0; c < cached_request_.size(); ++c) {
-    decision_[cached_request_[c]] = {render_[c] != 0, usable_[c] != 0};
+    decision_[cached_request_[c]] = {render_[c], usable_[c] != 0};
   }
   // A light never has a cached map without its entry: the cache forgets lights that leave too.
   align_by_key(lights.maps, rendered_maps_, index_of_key_, rendered_maps_scratch_);
@@ -131,6 +132,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   const auto apply = [&](uint32_t request, uint32_t views, auto& view, Tally& tally, auto&& give_map) {
     view.resolution = 0;
     view.render = false;
+    view.moving_casters_only = false;
     if (request == no_request || placements_[request].resolution == 0) {
       ++tally.without_shadow;
       return;
@@ -143,8 +145,10 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       return;
     }
     view.resolution = placement.resolution;
-    view.render = decision.render;
-    (decision.render ? tally.views_rendered : tally.views_cached) += views;
+    view.render = decision.render != keep_map;
+    view.moving_casters_only = decision.render == draw_moving_casters;
+    (view.render ? tally.views_rendered : tally.views_cached) += views;
+    if (view.moving_casters_only) tally.views_moving_only += views;
     give_map(placement);
   };
   const size_t map_pieces = (map_count + views_per_piece - 1) / views_per_piece;
@@ -158,7 +162,13 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       apply(request_of_[m], 1, map, tally, [&](const ShadowPlacement& placement) {
         map.tile = placement.tiles[0];
         RenderedMap& rendered = rendered_maps_[m];
-        if (map.render) rendered.view = map.view;
+        // Moving casters are drawn over the static layer with the view it was drawn with (a map
+        // fitted to the scene's bounds may have moved since without its light changing).
+        if (map.moving_casters_only) {
+          map.view = rendered.view;
+        } else if (map.render) {
+          rendered.view = map.view;
+        }
         set_shadow_map(lights.records[map.light], map.tile.page, tile_uv_rect(map.tile, page_size_),
                        map.resolution, rendered.view);
       });
@@ -171,7 +181,10 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       apply(request_of_[map_count + c], 6, cube, tally, [&](const ShadowPlacement& placement) {
         cube.tiles = placement.tiles;
         RenderedCube& rendered = rendered_cubes_[c];
-        if (cube.render) {
+        if (cube.moving_casters_only) {
+          cube.views = rendered.views;
+          cube.position_far = glm::vec4(rendered.origin, cube.position_far.w);
+        } else if (cube.render) {
           rendered.views = cube.views;
           rendered.origin = glm::vec3(cube.position_far);
         }
@@ -190,6 +203,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     total.waiting += tally.waiting;
     total.views_rendered += tally.views_rendered;
     total.views_cached += tally.views_cached;
+    total.views_moving_only += tally.views_moving_only;
     for (size_t t = 0; t < total.lights_per_tier.size(); ++t)
       total.lights_per_tier[t] += tally.lights_per_tier[t];
   }
@@ -198,6 +212,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   stats_.lights_waiting = total.waiting;
   stats_.views_rendered = total.views_rendered;
   stats_.views_cached = total.views_cached;
+  stats_.views_moving_only = total.views_moving_only;
   for (uint32_t tier = 0; tier < total.lights_per_tier.size(); ++tier) {
     if (total.lights_per_tier[tier] != 0) {
       stats_.lights_per_resolution.emplace_back(1u << tier, total.lights_per_tier[tier]);

@@ -39,6 +39,7 @@ float light_importance(const glm::vec4& reach, const ShadowCamera& camera);
 
 struct ShadowScheduleStats {
   uint32_t views_rendered = 0;         // 2D maps and cube faces drawn this frame
+  uint32_t views_moving_only = 0;      // of those, drawn with the moving casters only
   uint32_t views_cached = 0;           // shadowed views kept from an earlier frame
   uint32_t lights_without_shadow = 0;  // out of sight, or over the memory budget
   uint32_t lights_waiting = 0;         // have a tile, nothing valid in it yet (the view budget)
@@ -52,23 +53,30 @@ struct ShadowScheduleStats {
 // boxes a shadow could have changed in since the previous call (a moved caster's old and new box,
 // an added or removed one's box). A caller may mix the two from frame to frame: the tracker then
 // compares with the last frame it saw whole and reports at worst more boxes than moved.
+// Changes may come split as ShadowCache takes them (CasterChanges): `changed` where still
+// casters changed, `moving` where moving ones were and are; every change the tracker finds is a
+// still one.
 struct CasterUpdate {
   CasterUpdate(std::span<const CasterBounds> all = {}) : all(all) {}
-  static CasterUpdate changes(std::span<const scene::Aabb> boxes) {
+  static CasterUpdate changes(std::span<const scene::Aabb> boxes, std::span<const scene::Aabb> moving = {}) {
     CasterUpdate update;
     update.changed = boxes;
+    update.moving = moving;
     update.changes_only = true;
     return update;
   }
 
   std::span<const CasterBounds> all;
   std::span<const scene::Aabb> changed;
+  std::span<const scene::Aabb> moving;
   bool changes_only = false;
 };
 
 class ShadowSchedule {
  public:
-  explicit ShadowSchedule(const AtlasConfig& atlas);
+  // `static_layers`: the renderer keeps a static layer of each map (ShadowCache), so renders for
+  // moving casters may draw only those.
+  explicit ShadowSchedule(const AtlasConfig& atlas, bool static_layers = false);
 
   // Places, caches and records every shadow of `lights` (gathered, not yet sorted). `casters`
   // are the frame's shadow casters or their changes (CasterUpdate); view_budget caps the views
@@ -78,6 +86,9 @@ class ShadowSchedule {
                 uint32_t view_budget, ecs::ThreadPool* pool = nullptr);
   // Every map must be rendered again (the atlas image was recreated).
   void invalidate_all() { cache_.invalidate_all(); }
+  // ShadowCache::forget_static_layers and static_layers_not_kept.
+  void forget_static_layers() { cache_.forget_static_layers(); }
+  void static_layers_not_kept() { cache_.static_layers_not_kept(); }
 
   const ShadowScheduleStats& stats() const { return stats_; }
   uint32_t pages_used() const { return planner_.stats().pages_used; }
@@ -89,12 +100,13 @@ class ShadowSchedule {
   ShadowCache cache_;
   CasterChangeTracker caster_changes_;
   uint32_t page_size_;
+  bool static_layers_;
   ShadowScheduleStats stats_;
 
   // Per frame, kept so that scheduling allocates nothing once grown.
   static constexpr uint32_t no_request = UINT32_MAX;
   struct Decision {
-    bool render = false;
+    uint8_t render = keep_map;  // ShadowRender
     bool usable = false;
   };
   std::vector<uint32_t> request_of_;      // per view (maps, then cubes): its request or no_request
@@ -113,6 +125,7 @@ class ShadowSchedule {
     uint32_t waiting = 0;
     uint32_t views_rendered = 0;
     uint32_t views_cached = 0;
+    uint32_t views_moving_only = 0;
     std::array<uint32_t, 32> lights_per_tier{};  // by log2 of the resolution
   };
   std::vector<Tally> tallies_;

@@ -85,18 +85,20 @@ TEST(SandboxOptions, ShadowStorageAndAnimationOptions) {
   EXPECT_EQ(defaults.shadow_memory_mib, 0u);
   EXPECT_EQ(defaults.shadow_updates, shadows::default_shadow_view_budget);
   EXPECT_TRUE(defaults.shadow_cache);
+  EXPECT_TRUE(defaults.shadow_layers);
   EXPECT_TRUE(defaults.animate);
   EXPECT_TRUE(defaults.sidecar);  // from the command line; Options{} has it off
   EXPECT_FALSE(Options{}.sidecar);
 
-  const Options options =
-      parse_ok({"--shadow-views", "per-light", "--shadow-raster", "compute", "--shadow-memory", "128",
-                "--shadow-updates", "0", "--shadow-cache", "off", "--animate", "off", "--sidecar", "off"});
+  const Options options = parse_ok({"--shadow-views", "per-light", "--shadow-raster", "compute",
+                                    "--shadow-memory", "128", "--shadow-updates", "0", "--shadow-cache",
+                                    "off", "--shadow-layers", "off", "--animate", "off", "--sidecar", "off"});
   EXPECT_EQ(options.shadow_views, shadows::ShadowViewPath::per_light);
   EXPECT_EQ(options.shadow_raster, shadows::ShadowRaster::compute);
   EXPECT_EQ(options.shadow_memory_mib, 128u);
   EXPECT_EQ(options.shadow_updates, 0u);
   EXPECT_FALSE(options.shadow_cache);
+  EXPECT_FALSE(options.shadow_layers);
   EXPECT_FALSE(options.animate);
   EXPECT_FALSE(options.sidecar);
 
@@ -104,6 +106,7 @@ TEST(SandboxOptions, ShadowStorageAndAnimationOptions) {
                                               {"--shadow-raster", "gpu"},
                                               {"--shadow-memory", "-1"},
                                               {"--shadow-cache", "maybe"},
+                                              {"--shadow-layers", "some"},
                                               {"--animate", "yes"},
                                               {"--naive", "--shadow-views", "batched"},
                                               {"--naive", "--lit-sum-start", "pass"}}) {

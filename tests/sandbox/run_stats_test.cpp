@@ -95,6 +95,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                    2,
                    TimeSummary{100.0, 50.0, 3584.0},
                    TimeSummary{20.0, 0.0, 40.0},
+                   TimeSummary{60.0, 6.0, 600.0},
                    98'765};
 
   TempDir dir;
@@ -138,7 +139,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(json.at("validation_errors"), 4);
   EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
   const nlohmann::json& shadows = json.at("shadows");
-  EXPECT_EQ(shadows.size(), 12u) << shadows.dump(2);
+  EXPECT_EQ(shadows.size(), 13u) << shadows.dump(2);
   EXPECT_EQ(shadows.at("views"), "batched");
   EXPECT_EQ(shadows.at("raster"), "compute");
   EXPECT_EQ(shadows.at("budget_bytes"), 1ull << 30);
@@ -150,6 +151,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(shadows.at("lights_waiting"), 2);
   expect_summary(shadows.at("views_rendered"), *stats.shadows.views_rendered);
   expect_summary(shadows.at("views_cached"), *stats.shadows.views_cached);
+  expect_summary(shadows.at("views_moving_only"), *stats.shadows.views_moving_only);
   EXPECT_EQ(shadows.at("caster_draws"), 98'765);
 }
 

@@ -291,6 +291,44 @@ TEST(ShadowSchedule, ChangedBoxesRedrawWhatTheWholeListWould) {
 }
 
 // Scheduling on a thread pool splits the views into pieces; the result must not depend on it.
+// With static layers, a crate that keeps moving redraws the maps it crosses with the moving
+// casters alone; the first move, which takes it out of the layers, redraws them with every
+// caster. A map whose light moved draws every caster again.
+TEST(ShadowSchedule, MovingCastersAloneRedrawOverStaticLayers) {
+  SpotsInARow row;
+  row.schedule = ShadowSchedule(small_atlas, true);
+  const auto moving_only = [&] {
+    std::vector<int> maps;
+    for (size_t m = 0; m < row.lights.maps.size(); ++m) {
+      if (row.lights.maps[m].moving_casters_only) maps.push_back(static_cast<int>(m));
+    }
+    return maps;
+  };
+  EXPECT_EQ(row.maps_drawn(CasterUpdate::changes({})).size(), 6u);
+  EXPECT_TRUE(moving_only().empty()) << "new maps";
+  const std::vector<scene::Aabb> first_move{crate_at(-3.0f)};
+  const std::vector<scene::Aabb> moved{crate_at(-7.0f)};
+  EXPECT_EQ(row.maps_drawn(CasterUpdate::changes(first_move, moved)), (std::vector<int>{0, 1}));
+  EXPECT_EQ(moving_only(), (std::vector<int>{1})) << "the layer of map 0 held the crate, map 1's never did";
+  const std::vector<scene::Aabb> back{crate_at(-7.0f), crate_at(-3.0f)};
+  EXPECT_EQ(row.maps_drawn(CasterUpdate::changes({}, back)), (std::vector<int>{0, 1}));
+  EXPECT_EQ(moving_only(), (std::vector<int>{0, 1}));
+  EXPECT_EQ(row.schedule.stats().views_moving_only, 2u);
+
+  ecs::World& world = row.scene.world;
+  const ecs::Tick before = world.tick();
+  world.advance_tick();
+  ecs::Entity light_0;
+  world.query<const scene::SpotLight, const ecs::LocalTransform>().for_each(
+      [&](ecs::Entity entity, const scene::SpotLight&, const ecs::LocalTransform& local) {
+        if (local.translation.z == -3.0f) light_0 = entity;
+      });
+  world.get_mut<ecs::LocalTransform>(light_0).translation.y += 0.5f;
+  ecs::update_world_transforms(world, before);
+  EXPECT_EQ(row.maps_drawn(CasterUpdate::changes({}, back)), (std::vector<int>{0, 1}));
+  EXPECT_EQ(moving_only(), (std::vector<int>{1})) << "light 0 moved";
+}
+
 TEST(ShadowSchedule, AThreadPoolSchedulesTheSameShadows) {
   scene::Scene scene;
   for (int i = 0; i < 900; ++i) {  // several pieces of maps and of cubes, resolutions mixed

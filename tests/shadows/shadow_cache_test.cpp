@@ -33,7 +33,15 @@ struct Plan {
 Plan plan(ShadowCache& cache, std::span<const ShadowCacheLight> lights, uint32_t view_budget = 0,
           std::span<const scene::Aabb> changed_casters = {}) {
   Plan out{std::vector<uint8_t>(lights.size()), std::vector<uint8_t>(lights.size())};
-  cache.plan(lights, changed_casters, view_budget, out.render, out.usable);
+  cache.plan(lights, {changed_casters, {}}, view_budget, false, out.render, out.usable);
+  return out;
+}
+
+// A plan where the renderer keeps static layers, with still and moving casters' changes.
+Plan plan_layered(ShadowCache& cache, std::span<const ShadowCacheLight> lights,
+                  std::span<const scene::Aabb> still = {}, std::span<const scene::Aabb> moving = {}) {
+  Plan out{std::vector<uint8_t>(lights.size()), std::vector<uint8_t>(lights.size())};
+  cache.plan(lights, {still, moving}, 0, true, out.render, out.usable);
   return out;
 }
 
@@ -181,7 +189,7 @@ TEST(ShadowCache, OnAThreadPoolChoosesTheSameRendersAsSerially) {
       for (int frame = 0; frame < 8; ++frame) {
         const Plan expected = plan(serial, lights, budget);
         Plan got{std::vector<uint8_t>(lights.size()), std::vector<uint8_t>(lights.size())};
-        pooled.plan(lights, {}, budget, got.render, got.usable, &threads);
+        pooled.plan(lights, {}, budget, false, got.render, got.usable, &threads);
         ASSERT_EQ(got.render, expected.render) << light_count << " lights, frame " << frame;
         ASSERT_EQ(got.usable, expected.usable) << light_count << " lights, frame " << frame;
         for (ShadowCacheLight& light : lights) light.changed = true;
@@ -250,7 +258,59 @@ TEST(ShadowCache, RenderAndUsableNeedOneElementPerLight) {
   const std::vector<ShadowCacheLight> lights{spot(1), spot(2)};
   std::vector<uint8_t> render(2);
   std::vector<uint8_t> usable(1);
-  EXPECT_THROW(cache.plan(lights, {}, 0, render, usable), std::invalid_argument);
+  EXPECT_THROW(cache.plan(lights, {}, 0, false, render, usable), std::invalid_argument);
+}
+
+// Static layers: a map that only moving casters made wrong redraws just those over its layer,
+// once it has one that still matches; anything else draws every caster again.
+TEST(ShadowCache, MovingCastersAloneRedrawOverTheStaticLayer) {
+  ShadowCache cache;
+  ShadowCacheLight a = spot(1);
+  a.reach = {0.0f, 0.0f, 0.0f, 2.0f};
+  ShadowCacheLight b = spot(2);
+  b.reach = {10.0f, 0.0f, 0.0f, 2.0f};
+  std::vector<ShadowCacheLight> lights{a, b};
+  const std::vector<scene::Aabb> near_a{{glm::vec3(1.0f), glm::vec3(1.5f)}};
+  EXPECT_EQ(plan_layered(cache, lights).render, all(2, draw_all_casters)) << "new maps";
+  lights = unchanged(lights);
+  EXPECT_EQ(plan_layered(cache, lights, {}, near_a).render,
+            (std::vector<uint8_t>{draw_moving_casters, keep_map}));
+  EXPECT_EQ(cache.stats().views_moving_only, 1u);
+  EXPECT_EQ(plan_layered(cache, lights, near_a, near_a).render,
+            (std::vector<uint8_t>{draw_all_casters, keep_map}))
+      << "a still caster changed there too";
+  lights[0].changed = true;
+  EXPECT_EQ(plan_layered(cache, lights, {}, near_a).render,
+            (std::vector<uint8_t>{draw_all_casters, keep_map}))
+      << "the light moved";
+  lights = unchanged(lights);
+  lights[0].invalid = true;
+  EXPECT_EQ(plan_layered(cache, lights, {}, near_a).render,
+            (std::vector<uint8_t>{draw_all_casters, keep_map}))
+      << "its tile moved";
+  lights = unchanged(lights);
+  EXPECT_EQ(plan_layered(cache, lights, {}, near_a).render,
+            (std::vector<uint8_t>{draw_moving_casters, keep_map}));
+
+  // Layers forgotten, or not kept by the frame's path: every caster once, then moving ones again.
+  cache.forget_static_layers();
+  EXPECT_EQ(plan_layered(cache, lights, {}, near_a).render,
+            (std::vector<uint8_t>{draw_all_casters, keep_map}));
+  cache.static_layers_not_kept();
+  EXPECT_EQ(plan_layered(cache, lights, {}, near_a).render,
+            (std::vector<uint8_t>{draw_all_casters, keep_map}));
+  EXPECT_EQ(plan_layered(cache, lights, {}, near_a).render,
+            (std::vector<uint8_t>{draw_moving_casters, keep_map}));
+  cache.static_layers_not_kept();  // no render with every caster in that plan: nothing lost
+  EXPECT_EQ(plan_layered(cache, lights, {}, near_a).render,
+            (std::vector<uint8_t>{draw_moving_casters, keep_map}));
+
+  // Without static layers every render draws every caster.
+  Plan plain{std::vector<uint8_t>(2), std::vector<uint8_t>(2)};
+  cache.plan(lights, {{}, near_a}, 0, false, plain.render, plain.usable);
+  EXPECT_EQ(plain.render, (std::vector<uint8_t>{draw_all_casters, keep_map}));
+  cache.invalidate_all();
+  EXPECT_EQ(plan_layered(cache, lights, {}, near_a).render, all(2, draw_all_casters));
 }
 
 // Lights 10 apart on a 10 x 10 grid in x-z, 5 above the floor, reaching 6: light (i, j) has key

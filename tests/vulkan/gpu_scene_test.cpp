@@ -130,5 +130,47 @@ TEST_F(GpuSceneTest, AFrameWithoutWritesKeepsEveryInstance) {
   EXPECT_FLOAT_EQ(gpu.bounds().max.y, before.max.y + 2.0f) << "and grows the scene's bounds";
 }
 
+// An instance whose bounds change becomes moving, and stays so until the next layout; a material
+// edit alone moves nothing.
+TEST_F(GpuSceneTest, MovedInstancesAreMovingUntilTheNextLayout) {
+  scene::Scene s;
+  const uint32_t box = scene::add_box_mesh(s.meshes);
+  const ecs::Entity moved = scene::add_instance(s, box, {{0.0f, 0.0f, 0.0f}}, scene::Material{});
+  const ecs::Entity painted = scene::add_instance(s, box, {{4.0f, 0.0f, 0.0f}}, scene::Material{});
+  ecs::update_world_transforms(s.world, 0);
+  s.world.advance_tick();
+  GpuScene gpu(context, s.meshes, 1);
+  gpu.gather(s.world);
+  EXPECT_TRUE(gpu.moving_instances().empty());
+  const auto frame = [&](auto&& edit) {
+    const ecs::Tick since = s.world.tick();
+    edit();
+    ecs::update_world_transforms(s.world, since - 1);
+    s.world.advance_tick();
+    gpu.gather(s.world);
+  };
+  const auto instance_of = [&](ecs::Entity entity) {
+    const auto keys = gpu.instance_keys();
+    return static_cast<uint32_t>(std::find(keys.begin(), keys.end(), ecs::entity_key(entity)) - keys.begin());
+  };
+  frame([&] { s.world.get_mut<scene::Material>(painted).base_color = glm::vec4(1, 0, 0, 1); });
+  EXPECT_TRUE(gpu.moving_instances().empty()) << "a new colour moves nothing";
+  frame([&] { s.world.get_mut<ecs::LocalTransform>(moved).translation.y = 2.0f; });
+  const uint32_t m = instance_of(moved);
+  EXPECT_TRUE(gpu.moving(m));
+  EXPECT_TRUE(gpu.first_moved_in_last_gather(m));
+  EXPECT_FALSE(gpu.moving(instance_of(painted)));
+  frame([&] { s.world.get_mut<ecs::LocalTransform>(moved).translation.y = 3.0f; });
+  EXPECT_TRUE(gpu.moving(m));
+  EXPECT_FALSE(gpu.first_moved_in_last_gather(m)) << "it was moving already";
+  EXPECT_EQ(std::vector<uint32_t>(gpu.moving_instances().begin(), gpu.moving_instances().end()),
+            std::vector<uint32_t>{m});
+
+  frame([&] { scene::add_instance(s, box, {{8.0f, 0.0f, 0.0f}}, scene::Material{}); });
+  ASSERT_TRUE(gpu.laid_out_in_last_gather());
+  EXPECT_TRUE(gpu.moving_instances().empty()) << "a new layout makes every instance still";
+  EXPECT_FALSE(gpu.moving(instance_of(moved)));
+}
+
 }  // namespace
 }  // namespace sg::test

@@ -19,8 +19,9 @@ namespace sg::test {
 namespace {
 
 // A floor larger than every map, a crate and a pillar; a beam (orthographic), a spot and a point
-// light whose views clip the floor on every side and the pillar at their near planes.
-sandbox::SandboxScene clipped_scene() {
+// light whose views clip the floor on every side and the pillar at their near planes. `crate`:
+// where to say which entity the crate is.
+sandbox::SandboxScene clipped_scene(ecs::Entity* crate = nullptr, uint32_t resolution = 256) {
   sandbox::SandboxScene scene;
   scene.scene.name = "clipped";
   const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
@@ -28,14 +29,15 @@ sandbox::SandboxScene clipped_scene() {
   const scene::Material grey;
   scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {40.0f, 1.0f, 40.0f}},
                       grey);
-  scene::add_instance(scene.scene, box, {{1.0f, 0.5f, 0.5f}, glm::quat(1, 0, 0, 0), {1.0f, 1.0f, 1.0f}},
-                      grey);
+  const ecs::Entity crate_entity = scene::add_instance(
+      scene.scene, box, {{1.0f, 0.5f, 0.5f}, glm::quat(1, 0, 0, 0), {1.0f, 1.0f, 1.0f}}, grey);
+  if (crate) *crate = crate_entity;
   scene::add_instance(scene.scene, column, {{-1.0f, 2.0f, 0.0f}, glm::quat(1, 0, 0, 0), {0.6f, 4.0f, 0.6f}},
                       grey);
   scene::ShadowSettings shadow;
   // 256: llvmpipe caps an invocation's loop iterations (shadow_raster.comp), so larger tiles are
   // left to GPUs.
-  shadow.resolution = 256;
+  shadow.resolution = resolution;
   scene::add_light(
       scene.scene, scene::CylinderLight{glm::vec3(1.0f), 1.0f, 1.0f, 2.0f},
       {glm::vec3(0.0f, 4.0f, 0.0f), scene::look_rotation({0, 4, 0}, {0.01f, 0, 0}), glm::vec3(1.0f)}, shadow,
@@ -55,6 +57,31 @@ sandbox::SandboxScene clipped_scene() {
   return scene;
 }
 
+// Every texel of every shadow view of `frame`'s lights, in view order (maps, then cube faces).
+std::vector<float> view_depths(vk::VulkanContext& context, const sandbox::SandboxFrame& frame) {
+  const shadows::FrameLights& lights = frame.renderer().lights();
+  std::vector<float> out;
+  const auto read = [&](const shadows::AtlasTile& tile) {
+    const vk::DepthImage page = vk::read_depth_layer(context, frame.renderer().shadow_atlas().image(),
+                                                     tile.page, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
+    for (uint32_t y = 0; y < tile.size; ++y) {
+      for (uint32_t x = 0; x < tile.size; ++x) out.push_back(page.at(tile.x + x, tile.y + y));
+    }
+  };
+  for (const shadows::ShadowMapView& map : lights.maps) read(map.tile);
+  for (const shadows::ShadowCubeView& cube : lights.cubes) {
+    for (const shadows::AtlasTile& tile : cube.tiles) read(tile);
+  }
+  return out;
+}
+
+// Texels whose depths differ by more than rounding.
+size_t differing(const std::vector<float>& a, const std::vector<float>& b) {
+  size_t count = 0;
+  for (size_t i = 0; i < a.size(); ++i) count += std::abs(a[i] - b[i]) > 1e-6f;
+  return count;
+}
+
 class ShadowRasterTest : public GpuTest {
  protected:
   // Every texel of every shadow view, in view order, rendered with `raster`.
@@ -68,22 +95,9 @@ class ShadowRasterTest : public GpuTest {
     frame.record(frames.begin_frame(), 0.0);
     frames.submit();
     frames.wait_idle();
-    const shadows::FrameLights& lights = frame.renderer().lights();
-    std::vector<float> out;
-    const auto read = [&](const shadows::AtlasTile& tile) {
-      const vk::DepthImage page = vk::read_depth_layer(context, frame.renderer().shadow_atlas().image(),
-                                                       tile.page, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL);
-      for (uint32_t y = 0; y < tile.size; ++y) {
-        for (uint32_t x = 0; x < tile.size; ++x) out.push_back(page.at(tile.x + x, tile.y + y));
-      }
-    };
-    EXPECT_EQ(lights.maps.size(), 2u);
-    EXPECT_EQ(lights.cubes.size(), 1u);
-    for (const shadows::ShadowMapView& map : lights.maps) read(map.tile);
-    for (const shadows::ShadowCubeView& cube : lights.cubes) {
-      for (const shadows::AtlasTile& tile : cube.tiles) read(tile);
-    }
-    return out;
+    EXPECT_EQ(frame.renderer().lights().maps.size(), 2u);
+    EXPECT_EQ(frame.renderer().lights().cubes.size(), 1u);
+    return view_depths(context, frame);
   }
 };
 
@@ -101,6 +115,46 @@ TEST_F(ShadowRasterTest, ComputeRasterWritesWhatTheHardwareWrites) {
   }
   EXPECT_GT(covered, hardware.size() / 2) << "the floor fills most views";
   EXPECT_LT(differing, hardware.size() / 200) << differing << " of " << hardware.size() << " texels differ";
+}
+
+// The compute raster keeps a static layer per map: once the crate has started moving, the maps it
+// crosses redraw from their layers with the crate alone, and must hold what drawing every caster
+// into them holds.
+TEST_F(ShadowRasterTest, MovingCastersOverStaticLayersMatchDrawingEveryCaster) {
+  ecs::Entity crate;
+  // 512 texels: the layers' passes share a tile among workgroups past 256 (65,536 texels).
+  sandbox::SandboxScene scene = clipped_scene(&crate, 512);
+  sandbox::Options options;
+  options.shadow_raster = shadows::ShadowRaster::compute;
+  options.animate = false;
+  vk::FrameRing frames(context);
+  sandbox::SandboxFrame layered(context, scene, options, frames.frames_in_flight());
+  layered.resize({64, 48});
+  const auto draw = [&](sandbox::SandboxFrame& frame) {
+    frame.record(frames.begin_frame(), 0.0);
+    frames.submit();
+    frames.wait_idle();
+  };
+  draw(layered);
+  const std::vector<float> still = view_depths(context, layered);
+  ASSERT_EQ(still.size(), 8u * 512 * 512);
+  for (const float x : {1.3f, 1.6f, 1.9f}) {
+    scene.scene.world.get_mut<ecs::LocalTransform>(crate).translation.x = x;
+    draw(layered);
+  }
+  // The first move left the layers where the crate stood: drawn with every caster; the next two
+  // drew the crate alone over them.
+  EXPECT_EQ(layered.renderer().shadow_stats().views_moving_only, 2u + 6u) << "both maps and the cube";
+  const std::vector<float> moved = view_depths(context, layered);
+
+  sandbox::SandboxFrame fresh(context, scene, options, frames.frames_in_flight());
+  fresh.resize({64, 48});
+  draw(fresh);
+  EXPECT_EQ(fresh.renderer().shadow_stats().views_moving_only, 0u);
+  const std::vector<float> everything = view_depths(context, fresh);
+  ASSERT_EQ(moved.size(), everything.size());
+  EXPECT_EQ(differing(moved, everything), 0u);
+  EXPECT_GT(differing(moved, still), 100u) << "the crate's shadow moved";
 }
 
 }  // namespace

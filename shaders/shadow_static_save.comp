@@ -1,0 +1,5 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The static layers' save pass (shadow_static_layers.glsl).
+#define SAVE 1
+#include "shadow_static_layers.glsl"
