@@ -308,11 +308,13 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
       casters[c] = {glm::vec4(bounds[i].min, as_float(group)), glm::vec4(bounds[i].max, as_float(i))};
     }
   });
-  for (uint32_t k = 0; k < moving_count_; ++k) {
-    const uint32_t i = moving_casters_[k];
-    casters[caster_count + k] = {glm::vec4(bounds[i].min, as_float(group_of(i) | caster_moving)),
-                                 glm::vec4(bounds[i].max, as_float(i))};
-  }
+  ecs::run_in_pieces(pool, moving_count_, 1024, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      const uint32_t i = moving_casters_[k];
+      casters[caster_count + k] = {glm::vec4(bounds[i].min, as_float(group_of(i) | caster_moving)),
+                                   glm::vec4(bounds[i].max, as_float(i))};
+    }
+  });
   mesh_buffers_.write(slot, std::span<const glm::uvec4>(meshes_));
   const std::array<uint32_t, 2> zeros{};
   feedback_.write(slot, std::span<const uint32_t>(zeros));

@@ -26,6 +26,20 @@ TEST(ShadowAtlasShape, DeviceLimitsCapThePages) {
   EXPECT_EQ(atlas_shape(8192 * mib, few_layers).max_pages, 8u);
 }
 
+// Static layers cost a page's bytes again, and live in one storage buffer.
+TEST(ShadowAtlasShape, StaticLayersPayForEachPageTwice) {
+  DeviceShadowLimits device{16384, 2048, 4ull << 30, 80ull << 30};
+  device.max_storage_buffer_bytes = 4ull << 30;
+  const AtlasShape shape = atlas_shape(1024 * mib, device, true);
+  EXPECT_EQ(shape.page_size, 4096u);
+  EXPECT_EQ(shape.max_pages, 8u);
+  EXPECT_EQ(shape.budget_bytes, 16 * page_4096_bytes);
+  device.max_storage_buffer_bytes = 3 * page_4096_bytes;
+  EXPECT_EQ(atlas_shape(1024 * mib, device, true).max_pages, 3u);
+  EXPECT_EQ(atlas_shape(1024 * mib, device).max_pages, 16u) << "no buffer, no buffer limit";
+  EXPECT_EQ(atlas_shape(100 * mib, device, true).page_size, 2048u) << "two 64 MiB copies do not fit";
+}
+
 TEST(ShadowAtlasShape, SmallBudgetsGetSmallerPagesAndAtLeastOne) {
   const DeviceShadowLimits device{};
   const AtlasShape shape = atlas_shape(16 * mib, device);
