@@ -181,6 +181,7 @@ UiFacts SandboxFrame::ui_facts() const {
   const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
   facts.views_rendered = shadows.views_rendered;
   facts.views_cached = shadows.views_cached;
+  facts.views_moving_only = shadows.views_moving_only;
   facts.lights_without_shadow = shadows.lights_without_shadow;
   facts.lights = static_cast<uint32_t>(renderer_.lights().records.size());
   facts.shadow_mib = double(renderer_.shadow_atlas().bytes()) / (1 << 20);

@@ -155,7 +155,8 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
   ImGui::Text("CPU %.2f ms   GPU %.2f ms", facts.cpu_frame_ms, facts.gpu_frame_ms);
   ImGui::Text("%s lighting, %u lights, %u without shadow", facts.lighting.c_str(), facts.lights,
               facts.lights_without_shadow);
-  ImGui::Text("shadow views drawn %u, kept %u", facts.views_rendered, facts.views_cached);
+  ImGui::Text("shadow views drawn %u (%u moving casters only), kept %u", facts.views_rendered,
+              facts.views_moving_only, facts.views_cached);
   ImGui::Text("shadow atlas %.0f MiB", facts.shadow_mib);
   constexpr const char* views[] = {"lit", "shadows only"};
   ImGui::Combo("view", &view_, views, IM_ARRAYSIZE(views));

@@ -51,6 +51,7 @@ struct UiFacts {
   double gpu_frame_ms = 0.0;  // the newest frame whose timings are back; 0 when unknown
   uint32_t views_rendered = 0;
   uint32_t views_cached = 0;
+  uint32_t views_moving_only = 0;  // of views_rendered, over their static layers
   uint32_t lights = 0;
   uint32_t lights_without_shadow = 0;
   double shadow_mib = 0.0;
