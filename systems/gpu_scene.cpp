@@ -134,17 +134,15 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   bounds_before_.resize(changed_.size());
   ecs::run_in_pieces(pool, changed_.size(), 256, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
-      bounds_before_[k] = bounds_[changed_[k]];
-      place(world, changed_[k]);
+      const uint32_t i = changed_[k];
+      bounds_before_[k] = bounds_[i];
+      place(world, i);
+      const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
+      if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
     }
   });
-  for (size_t k = 0; k < changed_.size(); ++k) {
-    const uint32_t i = changed_[k];
-    const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
-    if (moved && moved_at_[i] == 0) {
-      moved_at_[i] = gathers_;
-      moving_.push_back(i);
-    }
+  for (const uint32_t i : changed_) {
+    if (moved_at_[i] == gathers_) moving_.push_back(i);
   }
   // Moved instances can shrink the scene's bounds as well as grow them.
   if (!changed_.empty()) regrow_scene_bounds(pool);
