@@ -75,6 +75,8 @@ class SandboxFrame {
   bool ui_wants_input() const;
   // Lit picture or shadow-only view, from the next record() on (the panels' "view" follows).
   void set_view(LightingView view);
+  // The shadow raster from the next record() on (SceneRenderer::set_shadow_raster).
+  void set_shadow_raster(shadows::ShadowRaster raster) { renderer_.set_shadow_raster(raster); }
   // Writes the lights and camera beside the scene (scene_sidecar.h), as the panels' save does.
   void save_edits() const;
   // The panels (nullptr without --ui).

@@ -126,6 +126,11 @@ class SceneRenderer {
   ecs::ThreadPool& workers() { return workers_; }
   // Switches the picture between lit and shadow-only from the next prepare() on.
   void set_view(LightingView view) { settings_.view = view; }
+  // The batched shadow views' raster from the next frame on (ShadowViewBatch::set_raster); no
+  // effect on per-light passes.
+  void set_shadow_raster(shadows::ShadowRaster raster) {
+    if (batch_) batch_->set_raster(raster);
+  }
 
   // CPU milliseconds of the last gather() and prepare(), by step: where a CPU frame goes.
   struct CpuSteps {

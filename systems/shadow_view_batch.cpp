@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <span>
+#include <stdexcept>
 #include <utility>
 
 #include "rendergraph/device/context.h"
@@ -100,7 +101,8 @@ bool ShadowViewBatch::may_raster_in_compute(const vk::VulkanContext& context, sh
 
 ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight,
                                  shadows::ShadowRaster raster, bool static_layers)
-    : setting_(resolve(raster, context)),
+    : context_(context),
+      setting_(resolve(raster, context)),
       raster_(setting_ == shadows::ShadowRaster::automatic ? shadows::ShadowRaster::compute : setting_),
       has_static_layers_(static_layers),
       cull_layout_(context.device(),
@@ -165,7 +167,6 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
         context, {shadow_static_save_comp, {}, static_layers_layout_.get(), "shadow static save"});
     static_restore_pipeline_ = vk::create_compute_pipeline(
         context, {shadow_static_restore_comp, {}, static_layers_layout_.get(), "shadow static restore"});
-    if (setting_ == shadows::ShadowRaster::compute) return;
   }
   vk::GraphicsPipelineDesc desc = shadow_pipeline_desc(raster_layout_.get());
   desc.vertex_spirv = shadow_batch_vert;
@@ -174,6 +175,16 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
   desc.fragment_spirv = shadow_cube_frag;
   desc.name = "shadow batch cube faces";
   face_pipeline_ = vk::create_graphics_pipeline(context, desc);
+}
+
+void ShadowViewBatch::set_raster(shadows::ShadowRaster raster) {
+  raster = resolve(raster, context_);
+  if (raster != shadows::ShadowRaster::hardware && !compute_raster_pipeline_) {
+    throw std::logic_error(
+        "ShadowViewBatch::set_raster: the compute raster needs a batch made with it (or automatic)");
+  }
+  setting_ = raster;
+  if (raster != shadows::ShadowRaster::automatic) raster_ = raster;
 }
 
 bool ShadowViewBatch::all_casters_kept(uint32_t slot) {

@@ -66,6 +66,9 @@ class ShadowViewBatch {
   static bool may_raster_in_compute(const vk::VulkanContext& context, shadows::ShadowRaster raster);
   // The raster of the last prepared frame (never automatic).
   shadows::ShadowRaster raster() const { return raster_; }
+  // The raster of the frames prepared from now on. Compute or automatic (on a GPU) only on a
+  // batch made with one of them, else std::logic_error.
+  void set_raster(shadows::ShadowRaster raster);
 
   // After FrameRing::begin_frame returned `slot`, before prepare: false when the frame that last
   // used the slot kept more pairs than it could store, so some of its views missed casters and
@@ -117,6 +120,7 @@ class ShadowViewBatch {
                              uint32_t first, uint32_t count, rg::BufferHandle& depths,
                              rg::BufferHandle& static_layers) const;
 
+  const vk::VulkanContext& context_;
   shadows::ShadowRaster setting_;  // hardware, compute, or automatic: chosen per frame
   shadows::ShadowRaster raster_;   // this frame's
   bool has_static_layers_;

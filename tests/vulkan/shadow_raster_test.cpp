@@ -19,9 +19,10 @@ namespace sg::test {
 namespace {
 
 // A floor larger than every map, a crate and a pillar; a beam (orthographic), a spot and a point
-// light whose views clip the floor on every side and the pillar at their near planes. `crate`:
-// where to say which entity the crate is.
-sandbox::SandboxScene clipped_scene(ecs::Entity* crate = nullptr, uint32_t resolution = 256) {
+// light whose views clip the floor on every side and the pillar at their near planes. `crate`,
+// `point_light`: where to say which entities the crate and the point light are.
+sandbox::SandboxScene clipped_scene(ecs::Entity* crate = nullptr, uint32_t resolution = 256,
+                                    ecs::Entity* point_light = nullptr) {
   sandbox::SandboxScene scene;
   scene.scene.name = "clipped";
   const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
@@ -51,7 +52,9 @@ sandbox::SandboxScene clipped_scene(ecs::Entity* crate = nullptr, uint32_t resol
       shadow, "spot");
   scene::PointLight point;
   point.range = 8.0f;
-  scene::add_light(scene.scene, point, {glm::vec3(-0.2f, 1.5f, 0.9f)}, shadow, "point");
+  const ecs::Entity point_entity =
+      scene::add_light(scene.scene, point, {glm::vec3(-0.2f, 1.5f, 0.9f)}, shadow, "point");
+  if (point_light) *point_light = point_entity;
   ecs::update_world_transforms(scene.scene.world, 0);
   scene.pose = {{0.0f, 6.0f, 6.0f}, {0.0f, 0.0f, 0.0f}};
   return scene;
@@ -155,6 +158,43 @@ TEST_F(ShadowRasterTest, MovingCastersOverStaticLayersMatchDrawingEveryCaster) {
   ASSERT_EQ(moved.size(), everything.size());
   EXPECT_EQ(differing(moved, everything), 0u);
   EXPECT_GT(differing(moved, still), 100u) << "the crate's shadow moved";
+}
+
+// A frame drawn by the raster hardware keeps no static layers: a map it drew with every caster
+// (the point light moved) must draw every caster again when the crate next moves, not restore
+// the layer it had before the light moved.
+TEST_F(ShadowRasterTest, AHardwareFrameKeepsNoStaticLayers) {
+  ecs::Entity crate;
+  ecs::Entity point;
+  sandbox::SandboxScene scene = clipped_scene(&crate, 256, &point);
+  sandbox::Options options;
+  options.shadow_raster = shadows::ShadowRaster::compute;
+  options.animate = false;
+  vk::FrameRing frames(context);
+  sandbox::SandboxFrame layered(context, scene, options, frames.frames_in_flight());
+  layered.resize({64, 48});
+  const auto draw = [&](sandbox::SandboxFrame& frame, shadows::ShadowRaster raster) {
+    frame.set_shadow_raster(raster);
+    frame.record(frames.begin_frame(), 0.0);
+    frames.submit();
+    frames.wait_idle();
+    return frame.renderer().shadow_stats();
+  };
+  draw(layered, shadows::ShadowRaster::compute);
+  scene.scene.world.get_mut<ecs::LocalTransform>(crate).translation.x = 1.3f;  // out of the layers
+  draw(layered, shadows::ShadowRaster::compute);
+  scene.scene.world.get_mut<ecs::LocalTransform>(point).translation.x = 0.1f;
+  EXPECT_EQ(draw(layered, shadows::ShadowRaster::hardware).views_rendered, 6u) << "the point light's cube";
+  scene.scene.world.get_mut<ecs::LocalTransform>(crate).translation.x = 1.6f;
+  EXPECT_EQ(draw(layered, shadows::ShadowRaster::compute).views_moving_only, 2u) << "the maps alone";
+  const std::vector<float> moved = view_depths(context, layered);
+
+  sandbox::SandboxFrame fresh(context, scene, options, frames.frames_in_flight());
+  fresh.resize({64, 48});
+  draw(fresh, shadows::ShadowRaster::compute);
+  const std::vector<float> everything = view_depths(context, fresh);
+  ASSERT_EQ(moved.size(), everything.size());
+  EXPECT_EQ(differing(moved, everything), 0u);
 }
 
 }  // namespace
