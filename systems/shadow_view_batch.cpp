@@ -66,7 +66,7 @@ constexpr VkDeviceSize counts_header_bytes = 16;  // the two lists' totals and p
 constexpr VkDeviceSize draws_header_bytes = 48;   // the scatter's and the raster's dispatches
 constexpr VkDeviceSize raster_dispatch_offset = 16;
 constexpr VkDeviceSize moving_raster_dispatch_offset = 32;
-// shadow_raster.comp's workgroup count is a dispatch's x, at most 65,535 on every device.
+// The workgroups of a dispatch's x that every device allows (maxComputeWorkGroupCount[0]).
 constexpr uint32_t max_workgroups_x = 65535;
 constexpr VkDeviceSize pair_bytes = 2 * sizeof(uint32_t);
 

@@ -23,8 +23,6 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
     LightState& state = states_[i];
     if (lights[i].invalid) state.valid = false;
     state.dirty = state.dirty || lights[i].changed || !state.valid;
-    // A light that changed or moved in the atlas has a static layer of what it was.
-    if (state.dirty) state.static_kept = false;
   }
   mark_by_casters(lights, changes.still, &LightState::dirty, pool);
   mark_by_casters(lights, changes.moving, &LightState::moving_dirty, pool);

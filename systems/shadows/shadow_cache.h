@@ -113,7 +113,8 @@ class ShadowCache {
     bool dirty = true;             // wrong beyond what moving casters did
     bool moving_dirty = false;     // moving casters made it wrong
     bool valid = false;            // its map holds a picture rendered into its current storage
-    bool static_kept = false;      // its static layer matches its storage, light and still casters
+    bool static_kept = false;      // its last drawing with every caster kept a static layer: it
+                                   // holds while the light is not dirty
   };
 
   // Sets `flag` on the lights not dirty at all yet whose reach meets one of `boxes`.

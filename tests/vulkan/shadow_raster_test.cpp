@@ -1,6 +1,7 @@
 // The batched shadow views' two rasterizers, the raster hardware (shadow_batch.vert) and compute
 // (shadow_raster.comp), write the same depths into the same tiles, on lavapipe with validation.
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -78,30 +79,45 @@ std::vector<float> view_depths(vk::VulkanContext& context, const sandbox::Sandbo
   return out;
 }
 
-// Texels whose depths differ by more than rounding.
-size_t differing(const std::vector<float>& a, const std::vector<float>& b) {
+// Texels whose depths differ by more than `tolerance`.
+size_t differing(const std::vector<float>& a, const std::vector<float>& b, float tolerance = 1e-6f) {
   size_t count = 0;
-  for (size_t i = 0; i < a.size(); ++i) count += std::abs(a[i] - b[i]) > 1e-6f;
+  for (size_t i = 0; i < a.size(); ++i) count += std::abs(a[i] - b[i]) > tolerance;
   return count;
 }
 
 class ShadowRasterTest : public GpuTest {
  protected:
-  // Every texel of every shadow view, in view order, rendered with `raster`.
-  std::vector<float> depths(shadows::ShadowRaster raster) {
-    sandbox::SandboxScene scene = clipped_scene();
+  // A 64x48 frame of `scene`, still, whose shadows `raster` draws (set_shadow_raster may change
+  // it between frames when `raster` is compute).
+  std::unique_ptr<sandbox::SandboxFrame> frame_of(sandbox::SandboxScene& scene,
+                                                  shadows::ShadowRaster raster) {
     sandbox::Options options;
     options.shadow_raster = raster;
-    vk::FrameRing frames(context);
-    sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
-    frame.resize({64, 48});
+    options.animate = false;
+    auto frame = std::make_unique<sandbox::SandboxFrame>(context, scene, options, frames.frames_in_flight());
+    frame->resize({64, 48});
+    return frame;
+  }
+  // Records one frame of `frame` and waits for it; the frame's shadow counts.
+  const shadows::ShadowScheduleStats& draw(sandbox::SandboxFrame& frame) {
     frame.record(frames.begin_frame(), 0.0);
     frames.submit();
     frames.wait_idle();
-    EXPECT_EQ(frame.renderer().lights().maps.size(), 2u);
-    EXPECT_EQ(frame.renderer().lights().cubes.size(), 1u);
-    return view_depths(context, frame);
+    return frame.renderer().shadow_stats();
   }
+
+  // Every texel of every shadow view, in view order, rendered with `raster`.
+  std::vector<float> depths(shadows::ShadowRaster raster) {
+    sandbox::SandboxScene scene = clipped_scene();
+    const std::unique_ptr<sandbox::SandboxFrame> frame = frame_of(scene, raster);
+    draw(*frame);
+    EXPECT_EQ(frame->renderer().lights().maps.size(), 2u);
+    EXPECT_EQ(frame->renderer().lights().cubes.size(), 1u);
+    return view_depths(context, *frame);
+  }
+
+  vk::FrameRing frames{context};
 };
 
 TEST_F(ShadowRasterTest, ComputeRasterWritesWhatTheHardwareWrites) {
@@ -110,14 +126,11 @@ TEST_F(ShadowRasterTest, ComputeRasterWritesWhatTheHardwareWrites) {
   ASSERT_EQ(hardware.size(), compute.size());
   ASSERT_EQ(hardware.size(), 8u * 256 * 256);
   // Texel centres on a triangle's edge may go either way, and depths differ by rounding.
-  size_t differing = 0;
-  size_t covered = 0;
-  for (size_t i = 0; i < hardware.size(); ++i) {
-    covered += hardware[i] < 1.0f;
-    differing += std::abs(hardware[i] - compute[i]) > 1e-4f;
-  }
-  EXPECT_GT(covered, hardware.size() / 2) << "the floor fills most views";
-  EXPECT_LT(differing, hardware.size() / 200) << differing << " of " << hardware.size() << " texels differ";
+  const auto covered =
+      std::count_if(hardware.begin(), hardware.end(), [](float depth) { return depth < 1.0f; });
+  EXPECT_GT(size_t(covered), hardware.size() / 2) << "the floor fills most views";
+  const size_t different = differing(hardware, compute, 1e-4f);
+  EXPECT_LT(different, hardware.size() / 200) << different << " of " << hardware.size() << " texels differ";
 }
 
 // The compute raster keeps a static layer per map: once the crate has started moving, the maps it
@@ -127,34 +140,22 @@ TEST_F(ShadowRasterTest, MovingCastersOverStaticLayersMatchDrawingEveryCaster) {
   ecs::Entity crate;
   // 512 texels: the layers' passes share a tile among workgroups past 256 (65,536 texels).
   sandbox::SandboxScene scene = clipped_scene(&crate, 512);
-  sandbox::Options options;
-  options.shadow_raster = shadows::ShadowRaster::compute;
-  options.animate = false;
-  vk::FrameRing frames(context);
-  sandbox::SandboxFrame layered(context, scene, options, frames.frames_in_flight());
-  layered.resize({64, 48});
-  const auto draw = [&](sandbox::SandboxFrame& frame) {
-    frame.record(frames.begin_frame(), 0.0);
-    frames.submit();
-    frames.wait_idle();
-  };
-  draw(layered);
-  const std::vector<float> still = view_depths(context, layered);
+  const std::unique_ptr<sandbox::SandboxFrame> layered = frame_of(scene, shadows::ShadowRaster::compute);
+  draw(*layered);
+  const std::vector<float> still = view_depths(context, *layered);
   ASSERT_EQ(still.size(), 8u * 512 * 512);
   for (const float x : {1.3f, 1.6f, 1.9f}) {
     scene.scene.world.get_mut<ecs::LocalTransform>(crate).translation.x = x;
-    draw(layered);
+    draw(*layered);
   }
   // The first move left the layers where the crate stood: drawn with every caster; the next two
   // drew the crate alone over them.
-  EXPECT_EQ(layered.renderer().shadow_stats().views_moving_only, 2u + 6u) << "both maps and the cube";
-  const std::vector<float> moved = view_depths(context, layered);
+  EXPECT_EQ(layered->renderer().shadow_stats().views_moving_only, 2u + 6u) << "both maps and the cube";
+  const std::vector<float> moved = view_depths(context, *layered);
 
-  sandbox::SandboxFrame fresh(context, scene, options, frames.frames_in_flight());
-  fresh.resize({64, 48});
-  draw(fresh);
-  EXPECT_EQ(fresh.renderer().shadow_stats().views_moving_only, 0u);
-  const std::vector<float> everything = view_depths(context, fresh);
+  const std::unique_ptr<sandbox::SandboxFrame> fresh = frame_of(scene, shadows::ShadowRaster::compute);
+  EXPECT_EQ(draw(*fresh).views_moving_only, 0u);
+  const std::vector<float> everything = view_depths(context, *fresh);
   ASSERT_EQ(moved.size(), everything.size());
   EXPECT_EQ(differing(moved, everything), 0u);
   EXPECT_GT(differing(moved, still), 100u) << "the crate's shadow moved";
@@ -167,32 +168,21 @@ TEST_F(ShadowRasterTest, AHardwareFrameKeepsNoStaticLayers) {
   ecs::Entity crate;
   ecs::Entity point;
   sandbox::SandboxScene scene = clipped_scene(&crate, 256, &point);
-  sandbox::Options options;
-  options.shadow_raster = shadows::ShadowRaster::compute;
-  options.animate = false;
-  vk::FrameRing frames(context);
-  sandbox::SandboxFrame layered(context, scene, options, frames.frames_in_flight());
-  layered.resize({64, 48});
-  const auto draw = [&](sandbox::SandboxFrame& frame, shadows::ShadowRaster raster) {
-    frame.set_shadow_raster(raster);
-    frame.record(frames.begin_frame(), 0.0);
-    frames.submit();
-    frames.wait_idle();
-    return frame.renderer().shadow_stats();
-  };
-  draw(layered, shadows::ShadowRaster::compute);
+  const std::unique_ptr<sandbox::SandboxFrame> layered = frame_of(scene, shadows::ShadowRaster::compute);
+  draw(*layered);
   scene.scene.world.get_mut<ecs::LocalTransform>(crate).translation.x = 1.3f;  // out of the layers
-  draw(layered, shadows::ShadowRaster::compute);
+  draw(*layered);
   scene.scene.world.get_mut<ecs::LocalTransform>(point).translation.x = 0.1f;
-  EXPECT_EQ(draw(layered, shadows::ShadowRaster::hardware).views_rendered, 6u) << "the point light's cube";
+  layered->set_shadow_raster(shadows::ShadowRaster::hardware);
+  EXPECT_EQ(draw(*layered).views_rendered, 6u) << "the point light's cube";
   scene.scene.world.get_mut<ecs::LocalTransform>(crate).translation.x = 1.6f;
-  EXPECT_EQ(draw(layered, shadows::ShadowRaster::compute).views_moving_only, 2u) << "the maps alone";
-  const std::vector<float> moved = view_depths(context, layered);
+  layered->set_shadow_raster(shadows::ShadowRaster::compute);
+  EXPECT_EQ(draw(*layered).views_moving_only, 2u) << "the maps alone";
+  const std::vector<float> moved = view_depths(context, *layered);
 
-  sandbox::SandboxFrame fresh(context, scene, options, frames.frames_in_flight());
-  fresh.resize({64, 48});
-  draw(fresh, shadows::ShadowRaster::compute);
-  const std::vector<float> everything = view_depths(context, fresh);
+  const std::unique_ptr<sandbox::SandboxFrame> fresh = frame_of(scene, shadows::ShadowRaster::compute);
+  draw(*fresh);
+  const std::vector<float> everything = view_depths(context, *fresh);
   ASSERT_EQ(moved.size(), everything.size());
   EXPECT_EQ(differing(moved, everything), 0u);
 }
