@@ -72,7 +72,7 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
                               ecs::ThreadPool* pool) {
   assert(out.size() == requests.size());
   ++plans_;
-  match_lights(requests);
+  match_lights(requests, pool);
   release_lights_not_requested();
   fit_budget(requests);
 
@@ -107,21 +107,29 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   if (repack_pending_ || !place_changed_lights(requests, changed)) repack(requests);
   repack_pending_ = false;
 
-  // Each request writes its placement and its own light (a key's second request has none).
+  // Each request writes its placement and its own light (a key's second request has none), and
+  // counts into its piece's tally.
+  const size_t pieces = (requests.size() + lights_per_piece - 1) / lights_per_piece;
+  tallies_.assign(std::max<size_t>(pieces, 1), Tally{});
   ecs::run_in_pieces(pool, requests.size(), lights_per_piece, [&](size_t begin, size_t end) {
+    Tally& tally = tallies_[begin / lights_per_piece];
     for (size_t i = begin; i < end; ++i) {
       ShadowPlacement& placement = out[i];
       placement = {};
-      if (light_of_request_[i] == no_light) continue;
-      Light& light = lights_[light_of_request_[i]];
-      placement.resolution = resolution_[i];
-      if (placement.resolution > 0) placement.tiles = tiles_[i];
-      placement.moved =
-          placement.resolution > 0 && (placement.resolution != light.resolution ||
-                                       requests[i].cube != light.cube || placement.tiles != light.tiles);
-      light.resolution = placement.resolution;
-      light.cube = requests[i].cube;
-      light.tiles = placement.tiles;
+      const Light* light = nullptr;
+      if (light_of_request_[i] != no_light) {
+        Light& own = lights_[light_of_request_[i]];
+        placement.resolution = resolution_[i];
+        if (placement.resolution > 0) placement.tiles = tiles_[i];
+        placement.moved =
+            placement.resolution > 0 && (placement.resolution != own.resolution ||
+                                         requests[i].cube != own.cube || placement.tiles != own.tiles);
+        own.resolution = placement.resolution;
+        own.cube = requests[i].cube;
+        own.tiles = placement.tiles;
+        light = &own;
+      }
+      count_into(tally, light, resolution_[i]);
     }
   });
   update_stats();
@@ -144,39 +152,53 @@ void ShadowAtlasPlanner::order_least_important_first(std::span<const ShadowReque
   }
 }
 
-void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests) {
+void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, ecs::ThreadPool* pool) {
   const size_t previous_requests = light_of_request_.size();
   light_of_request_.resize(requests.size());
   resolution_.assign(requests.size(), 0);
-  for (uint32_t i = 0; i < requests.size(); ++i) {
-    const ShadowRequest& request = requests[i];
-    // Usually the requests come in the last plan's order: request i is the light it was then,
-    // found without a lookup by key.
-    uint32_t index = i < previous_requests ? light_of_request_[i] : no_light;
-    if (index == no_light || lights_[index].key != request.key || lights_[index].requested_in_plan == 0) {
-      const auto [found, inserted] = light_of_key_.try_emplace(request.key, 0);
-      if (inserted) {
-        if (unused_lights_.empty()) {
-          found->second = uint32_t(lights_.size());
-          lights_.emplace_back();
-        } else {
-          found->second = unused_lights_.back();
-          unused_lights_.pop_back();
-          lights_[found->second] = {};
-        }
-        lights_[found->second].key = request.key;
-      }
-      index = found->second;
-    }
+  const auto take = [&](uint32_t i, uint32_t index) {
     Light& light = lights_[index];
-    if (light.requested_in_plan == plans_) {  // the key's second request
+    light_of_request_[i] = index;
+    light.requested_in_plan = plans_;
+    light.wanted = wanted_resolution(requests[i], requests[i].cube == light.cube ? light.wanted : 0);
+    resolution_[i] = light.wanted;
+  };
+  // Usually the requests come in the last plan's order: request i is the light it was then,
+  // found without a lookup by key, on the pool (the last plan gave each light to one request, so
+  // no two requests take the same light here). The rest are listed for a lookup by key after.
+  unmatched_.resize(requests.size());
+  const size_t unmatched_count = ecs::keep_in_pieces(
+      pool, requests.size(), lights_per_piece, keep_scratch_,
+      [&](size_t i) {
+        const uint32_t index = i < previous_requests ? light_of_request_[i] : no_light;
+        if (index == no_light || lights_[index].key != requests[i].key ||
+            lights_[index].requested_in_plan == 0) {
+          return true;
+        }
+        take(static_cast<uint32_t>(i), index);
+        return false;
+      },
+      [&](size_t i, size_t rank) { unmatched_[rank] = static_cast<uint32_t>(i); });
+  for (size_t u = 0; u < unmatched_count; ++u) {
+    const uint32_t i = unmatched_[u];
+    const ShadowRequest& request = requests[i];
+    const auto [found, inserted] = light_of_key_.try_emplace(request.key, 0);
+    if (inserted) {
+      if (unused_lights_.empty()) {
+        found->second = uint32_t(lights_.size());
+        lights_.emplace_back();
+      } else {
+        found->second = unused_lights_.back();
+        unused_lights_.pop_back();
+        lights_[found->second] = {};
+      }
+      lights_[found->second].key = request.key;
+    }
+    if (lights_[found->second].requested_in_plan == plans_) {  // the key's second request
       light_of_request_[i] = no_light;
       continue;
     }
-    light_of_request_[i] = index;
-    light.requested_in_plan = plans_;
-    light.wanted = wanted_resolution(request, request.cube == light.cube ? light.wanted : 0);
-    resolution_[i] = light.wanted;
+    take(i, found->second);
   }
 }
 
@@ -322,30 +344,38 @@ void ShadowAtlasPlanner::repack(std::span<const ShadowRequest> requests) {
   }
 }
 
-void ShadowAtlasPlanner::update_stats() {
-  std::vector<uint32_t> lights_per_tier(tier_count(), 0);
-  stats_.pages_used = 0;
-  stats_.texels_used = 0;
-  stats_.lights_without_shadow = 0;
-  stats_.demoted_by_budget = 0;
-  stats_.dropped_by_budget = 0;
-  for (uint32_t i = 0; i < resolution_.size(); ++i) {
-    const uint32_t resolution = resolution_[i];
-    const Light* light = light_of_request_[i] == no_light ? nullptr : &lights_[light_of_request_[i]];
-    if (resolution == 0) {
-      ++stats_.lights_without_shadow;
-      if (light && light->wanted > 0) ++stats_.dropped_by_budget;
-      continue;
-    }
-    ++lights_per_tier[tier_of(resolution)];
-    stats_.texels_used += tile_count(light->cube) * area(resolution);
-    stats_.pages_used = std::max(stats_.pages_used, light->tiles[0].page + 1);
-    if (resolution < light->wanted) ++stats_.demoted_by_budget;
+void ShadowAtlasPlanner::count_into(Tally& tally, const Light* light, uint32_t resolution) const {
+  if (resolution == 0) {
+    ++tally.without_shadow;
+    if (light && light->wanted > 0) ++tally.dropped;
+    return;
   }
+  ++tally.lights_per_tier[tier_of(resolution)];
+  tally.texels += tile_count(light->cube) * area(resolution);
+  tally.pages_used = std::max(tally.pages_used, light->tiles[0].page + 1);
+  if (resolution < light->wanted) ++tally.demoted;
+}
+
+void ShadowAtlasPlanner::update_stats() {
+  Tally total;
+  for (const Tally& tally : tallies_) {
+    total.without_shadow += tally.without_shadow;
+    total.dropped += tally.dropped;
+    total.demoted += tally.demoted;
+    total.texels += tally.texels;
+    total.pages_used = std::max(total.pages_used, tally.pages_used);
+    for (size_t tier = 0; tier < total.lights_per_tier.size(); ++tier)
+      total.lights_per_tier[tier] += tally.lights_per_tier[tier];
+  }
+  stats_.pages_used = total.pages_used;
+  stats_.texels_used = total.texels;
+  stats_.lights_without_shadow = total.without_shadow;
+  stats_.demoted_by_budget = total.demoted;
+  stats_.dropped_by_budget = total.dropped;
   stats_.lights_per_resolution.clear();
   for (uint32_t tier = 0; tier < tier_count(); ++tier) {
-    if (lights_per_tier[tier] > 0) {
-      stats_.lights_per_resolution.emplace_back(config_.page_size >> tier, lights_per_tier[tier]);
+    if (total.lights_per_tier[tier] > 0) {
+      stats_.lights_per_resolution.emplace_back(config_.page_size >> tier, total.lights_per_tier[tier]);
     }
   }
 }

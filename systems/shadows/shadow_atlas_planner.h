@@ -118,7 +118,7 @@ class ShadowAtlasPlanner {
   uint32_t tier_count() const;
   uint32_t tier_of(uint32_t resolution) const;
   uint32_t wanted_resolution(const ShadowRequest& request, uint32_t previous) const;
-  void match_lights(std::span<const ShadowRequest> requests);
+  void match_lights(std::span<const ShadowRequest> requests, ecs::ThreadPool* pool);
   void release_lights_not_requested();
   void fit_budget(std::span<const ShadowRequest> requests);
   // by_importance_: the requests with a shadow, least important first, ties by key so that the
@@ -130,6 +130,17 @@ class ShadowAtlasPlanner {
                                       std::span<const uint32_t> indices) const;
   bool place_changed_lights(std::span<const ShadowRequest> requests, std::span<const uint32_t> changed);
   void repack(std::span<const ShadowRequest> requests);
+  // What a plan() counts for its stats, per piece of requests on the pool, summed after.
+  struct Tally {
+    uint32_t without_shadow = 0;
+    uint32_t dropped = 0;
+    uint32_t demoted = 0;
+    uint32_t pages_used = 0;
+    uint64_t texels = 0;
+    std::array<uint32_t, 11> lights_per_tier{};  // at most 11 tiers: page_size / min_resolution <= 1024
+  };
+  // Counts one request: `light` its light (null for a key's second request) as placed.
+  void count_into(Tally& tally, const Light* light, uint32_t resolution) const;
   void update_stats();
 
   AtlasConfig config_;
@@ -145,7 +156,8 @@ class ShadowAtlasPlanner {
   static constexpr uint32_t no_light = ~0u;
   std::vector<uint32_t> light_of_request_;
   std::vector<uint32_t> resolution_;
-  std::vector<uint32_t> retiled_;  // by rank: the requests whose light changed resolution or kind
+  std::vector<uint32_t> unmatched_;  // requests not matched by their place in the last plan
+  std::vector<uint32_t> retiled_;    // by rank: the requests whose light changed resolution or kind
   ecs::KeepScratch keep_scratch_;
   std::vector<std::array<AtlasTile, 6>> tiles_;
   // Per tier (0: page_size, 1: half that, ...): the 2D maps and cubes the budget holds.
@@ -153,6 +165,7 @@ class ShadowAtlasPlanner {
   std::vector<uint64_t> cubes_per_tier_;
   std::vector<uint64_t> by_importance_;  // importance bits << 32 | request index
   std::vector<uint64_t> by_importance_scratch_;
+  std::vector<Tally> tallies_;
 
   AtlasStats stats_;
   BudgetEffect reported_effect_;

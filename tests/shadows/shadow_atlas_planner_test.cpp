@@ -218,6 +218,31 @@ TEST(ShadowAtlasPlanner, UnchangedLightsKeepTheirTilesNewAndChangedOnesMove) {
   EXPECT_EQ(second[4].tiles, first[0].tiles);
 }
 
+// Matching requests to last plan's lights by their place (on the pool) and by key (after) must
+// still give a key asked for twice one shadow, whichever request came where last time.
+TEST(ShadowAtlasPlanner, AKeyRequestedTwiceGetsOneShadow) {
+  const AtlasConfig config{.page_size = 1024, .max_pages = 1, .min_resolution = 32};
+  ecs::ThreadPool threads(3);
+  for (ecs::ThreadPool* pool : {static_cast<ecs::ThreadPool*>(nullptr), &threads}) {
+    ShadowAtlasPlanner planner(config);
+    std::vector<ShadowRequest> requests;
+    for (uint64_t key = 0; key < 200; ++key) requests.push_back(map_light(key, 32.0f));
+    for (int frame = 0; frame < 3; ++frame) {
+      std::vector<ShadowPlacement> out(requests.size());
+      planner.plan(requests, out, pool);
+      expect_valid_tiles(config, requests, out);
+      std::map<uint64_t, int> shadows_of_key;
+      for (size_t i = 0; i < requests.size(); ++i) shadows_of_key[requests[i].key] += out[i].resolution > 0;
+      for (const auto& [key, shadows] : shadows_of_key)
+        EXPECT_EQ(shadows, 1) << "key " << key << " frame " << frame;
+      EXPECT_EQ(planner.stats().lights_without_shadow, requests.size() - shadows_of_key.size());
+      // Next frame: key 7 asked for again, ahead of its own earlier place and behind it.
+      requests.insert(requests.begin() + 3, map_light(7, 32.0f));
+      requests.push_back(map_light(150, 32.0f));
+    }
+  }
+}
+
 TEST(ShadowAtlasPlanner, LightsThatVanishFreeTheirTiles) {
   const AtlasConfig config{.page_size = 256, .max_pages = 1, .min_resolution = 32};
   ShadowAtlasPlanner planner(config);
