@@ -144,9 +144,23 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   for (const uint32_t i : changed_) {
     if (moved_at_[i] == gathers_) moving_.push_back(i);
   }
-  // Moved instances can shrink the scene's bounds as well as grow them.
-  if (!changed_.empty()) regrow_scene_bounds(pool);
+  if (!changed_.empty()) update_scene_bounds(pool);
   return true;
+}
+
+// A box that left from strictly inside the scene's bounds (off every face) cannot shrink them:
+// other boxes hold each face. Then growing by the new boxes gives what regrowing all would,
+// without reading every instance; a box that held a face may shrink them, and all are regrown.
+void GpuScene::update_scene_bounds(ecs::ThreadPool* pool) {
+  const scene::Aabb& scene = scene_bounds_;
+  for (const scene::Aabb& before : bounds_before_) {
+    if (!before.empty() && !(glm::all(glm::greaterThan(before.min, scene.min)) &&
+                             glm::all(glm::lessThan(before.max, scene.max)))) {
+      regrow_scene_bounds(pool);
+      return;
+    }
+  }
+  for (const uint32_t i : changed_) scene::grow(scene_bounds_, bounds_[i]);
 }
 
 void GpuScene::regrow_scene_bounds(ecs::ThreadPool* pool) {

@@ -135,6 +135,8 @@ class GpuScene {
   void gather_all(const ecs::World& world, ecs::ThreadPool* pool);
   // The scene's bounds from every instance's.
   void regrow_scene_bounds(ecs::ThreadPool* pool);
+  // The scene's bounds after the changed_ instances' bounds changed (from bounds_before_).
+  void update_scene_bounds(ecs::ThreadPool* pool);
 
   ecs::Tick gathered_at_ = 0;               // the world's tick at the last gather
   uint64_t gathers_ = 0;                    // gather() calls so far

@@ -130,6 +130,55 @@ TEST_F(GpuSceneTest, AFrameWithoutWritesKeepsEveryInstance) {
   EXPECT_FLOAT_EQ(gpu.bounds().max.y, before.max.y + 2.0f) << "and grows the scene's bounds";
 }
 
+// The scene's bounds follow moves without reading every instance: a box moving inside them
+// leaves them as they were, grown by its new place; a box that held a face and moves in shrinks
+// them (the rest are read again).
+TEST_F(GpuSceneTest, SceneBoundsShrinkWhenABoxThatHeldAFaceMovesIn) {
+  scene::Scene s;
+  const uint32_t box = scene::add_box_mesh(s.meshes);
+  const ecs::Entity left = scene::add_instance(s, box, {{-10.0f, 0.0f, 0.0f}}, scene::Material{});
+  const ecs::Entity middle = scene::add_instance(s, box, {{0.0f, 0.0f, 0.0f}}, scene::Material{});
+  scene::add_instance(s, box, {{10.0f, 0.0f, 0.0f}}, scene::Material{});
+  scene::add_instance(s, box, {{0.0f, 10.0f, 0.0f}}, scene::Material{});
+  scene::add_instance(s, box, {{0.0f, -10.0f, 5.0f}}, scene::Material{});
+  scene::add_instance(s, box, {{0.0f, 0.0f, -5.0f}}, scene::Material{});
+  ecs::Tick transforms_at = 0;
+  const auto move = [&](ecs::Entity entity, glm::vec3 to) {
+    s.world.get_mut<ecs::LocalTransform>(entity).translation = to;
+    ecs::update_world_transforms(s.world, transforms_at);
+    transforms_at = s.world.tick();
+    s.world.advance_tick();
+  };
+  ecs::update_world_transforms(s.world, transforms_at);
+  transforms_at = s.world.tick();
+  s.world.advance_tick();
+  GpuScene kept(context, s.meshes, 1);
+  kept.gather(s.world);
+  const scene::Aabb start = kept.bounds();
+
+  const auto expect_fresh_bounds = [&](const char* step) {
+    GpuScene fresh(context, s.meshes, 1);
+    fresh.gather(s.world);
+    EXPECT_EQ(kept.bounds().min, fresh.bounds().min) << step;
+    EXPECT_EQ(kept.bounds().max, fresh.bounds().max) << step;
+  };
+  move(middle, {1.0f, 1.0f, 0.0f});
+  kept.gather(s.world);
+  EXPECT_FALSE(kept.laid_out_in_last_gather());
+  EXPECT_EQ(kept.bounds().min, start.min);
+  EXPECT_EQ(kept.bounds().max, start.max);
+  expect_fresh_bounds("a move inside");
+  move(left, {-3.0f, 0.0f, 0.0f});
+  kept.gather(s.world);
+  EXPECT_FALSE(kept.laid_out_in_last_gather());
+  EXPECT_GT(kept.bounds().min.x, start.min.x + 6.0f);
+  expect_fresh_bounds("the box holding the -x face moved in");
+  move(middle, {0.0f, 20.0f, 0.0f});
+  kept.gather(s.world);
+  EXPECT_GT(kept.bounds().max.y, start.max.y + 9.0f);
+  expect_fresh_bounds("a move out of the bounds");
+}
+
 // An instance whose bounds change becomes moving, and stays so until the next layout; a material
 // edit alone moves nothing.
 TEST_F(GpuSceneTest, MovedInstancesAreMovingUntilTheNextLayout) {
