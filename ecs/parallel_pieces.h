@@ -1,6 +1,6 @@
 #pragma once
 // Algorithms over pieces of a range on a ThreadPool, for per-frame work over thousands of lights
-// or views that one thread would take too long over: an order-keeping filter and a sort.
+// or views that one thread would take too long over: an order-keeping filter.
 #include <algorithm>
 #include <cstddef>
 #include <vector>
@@ -54,41 +54,6 @@ std::size_t keep_in_pieces(ThreadPool* pool, std::size_t count, std::size_t piec
     }
   });
   return first[pieces];
-}
-
-// Sorts `items` by `less`, a strict weak order, on `pool`: pieces of `piece_size` sorted
-// concurrently, then merged pairwise into `scratch` and back, a round of merges a batch (the last
-// round is one merge on one thread). Not stable. Without a pool, or with one piece, std::sort.
-template <class T, class Less>
-void sort_in_pieces(ThreadPool* pool, std::vector<T>& items, std::vector<T>& scratch, std::size_t piece_size,
-                    const Less& less) {
-  piece_size = std::max<std::size_t>(piece_size, 1);
-  const std::size_t count = items.size();
-  if (pool == nullptr || pool->thread_count() == 1 || count <= piece_size) {
-    std::sort(items.begin(), items.end(), less);
-    return;
-  }
-  run_in_pieces(pool, count, piece_size, [&](std::size_t begin, std::size_t end) {
-    std::sort(items.begin() + static_cast<std::ptrdiff_t>(begin),
-              items.begin() + static_cast<std::ptrdiff_t>(end), less);
-  });
-  scratch.resize(count);
-  for (std::size_t width = piece_size; width < count; width *= 2) {
-    const std::size_t merges = (count + 2 * width - 1) / (2 * width);
-    run_in_pieces(pool, merges, 1, [&](std::size_t first_merge, std::size_t end_merge) {
-      for (std::size_t merge = first_merge; merge < end_merge; ++merge) {
-        const auto at = [](std::vector<T>& v, std::size_t i) {
-          return v.begin() + static_cast<std::ptrdiff_t>(i);
-        };
-        const std::size_t begin = merge * 2 * width;
-        const std::size_t middle = std::min(begin + width, count);
-        const std::size_t end = std::min(begin + 2 * width, count);
-        std::merge(at(items, begin), at(items, middle), at(items, middle), at(items, end), at(scratch, begin),
-                   less);
-      }
-    });
-    items.swap(scratch);
-  }
 }
 
 }  // namespace sg::ecs

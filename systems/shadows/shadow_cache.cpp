@@ -1,12 +1,15 @@
 #include "systems/shadows/shadow_cache.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <stdexcept>
 #include <utility>
 
 #include "ecs/parallel_pieces.h"
 
 #include "systems/shadows/align_by_key.h"
+#include "systems/shadows/radix_sort.h"
 
 namespace sg::shadows {
 
@@ -26,7 +29,7 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
   }
   mark_by_casters(lights, changes.still, &LightState::dirty, pool);
   mark_by_casters(lights, changes.moving, &LightState::moving_dirty, pool);
-  choose_renders(lights, view_budget, render, pool);
+  choose_renders(lights, view_budget, render);
 
   stats_ = {};
   for (size_t i = 0; i < lights.size(); ++i) {
@@ -97,7 +100,7 @@ void ShadowCache::mark_by_casters(std::span<const ShadowCacheLight> lights,
 }
 
 void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
-                                 std::span<uint8_t> render, ecs::ThreadPool* pool) {
+                                 std::span<uint8_t> render) {
   std::fill(render.begin(), render.end(), uint8_t{0});
   candidates_.clear();
   uint64_t dirty_views = 0;
@@ -111,52 +114,36 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
     return;
   }
 
-  // Lights without a valid map, then the stalest, ties by key (the header's order): sort keys
-  // side by side rather than looked up through the lights, so thousands of them sort quickly.
+  // Lights without a valid map, then the stalest, ties by their order in `lights` (the header's
+  // order): a stable radix sort on how long ago each was rendered, a byte or two wide, costs
+  // less than a comparison sort of thousands of dirty lights, on one thread or on the pool.
+  uint64_t oldest = UINT64_MAX;
+  uint64_t newest = 0;
+  for (const uint32_t i : candidates_) {
+    if (!states_[i].valid) continue;
+    oldest = std::min(oldest, states_[i].rendered_frame);
+    newest = std::max(newest, states_[i].rendered_frame);
+  }
   order_.clear();
   for (const uint32_t i : candidates_) {
     const LightState& state = states_[i];
-    order_.push_back({(state.valid ? uint64_t{1} << 63 : 0) | state.rendered_frame, state.key, i});
+    const uint64_t rank = state.valid ? state.rendered_frame - oldest + 1 : 0;  // 0: no valid map
+    order_.push_back(rank << 32 | i);
   }
-  const auto comes_first = [](const Ordered& a, const Ordered& b) {
-    return a.stale < b.stale || (a.stale == b.stale && a.key < b.key);
-  };
+  const auto rank_bits = static_cast<uint32_t>(std::bit_width(newest >= oldest ? newest - oldest + 1 : 0));
+  radix_sort(
+      order_, order_scratch_, [](uint64_t ordered) { return ordered >> 32; }, rank_bits);
+  // Skipping a light with more views than are left, the scan goes on to the stalest that fits.
   uint32_t views_left = view_budget;
   bool rendered_any = false;
-  const auto take_in_order = [&](auto begin, auto end) {
-    for (auto it = begin; it != end && views_left > 0; ++it) {
-      const uint32_t views = lights[it->light].views;
-      if (views > views_left && rendered_any) continue;
-      render[it->light] = 1;
-      views_left -= std::min(views, views_left);
-      rendered_any = true;
-    }
-  };
-  // Every light has a view at least, so no more than views_left lights fit: ordering that many
-  // is enough, unless lights were skipped for having more views than were left.
-  const ptrdiff_t head_count = std::min<ptrdiff_t>(views_left, std::ssize(order_));
-  if (head_count == std::ssize(order_)) {
-    // All of them (partial_sort would heap-sort them all), in pieces on the pool: with
-    // thousands of dirty lights the choice was the cache's largest step (0.16 of 0.27 ms). The
-    // merges may leave order_ in what was the scratch's storage.
-    ecs::sort_in_pieces(pool, order_, order_scratch_, 256, comes_first);
-  } else {
-    std::partial_sort(order_.begin(), order_.begin() + head_count, order_.end(), comes_first);
-  }
-  const auto head = order_.begin() + head_count;
-  take_in_order(order_.begin(), head);
-  // Then fewer views are left than the skipped light had, a handful: the stalest of the rest that
-  // still fits, one scan each, costs less than sorting the rest (100,000 lights).
-  while (views_left > 0) {
-    auto next = order_.end();
-    for (auto it = head; it != order_.end(); ++it) {
-      if (render[it->light] == 0 && lights[it->light].views <= views_left &&
-          (next == order_.end() || comes_first(*it, *next)))
-        next = it;
-    }
-    if (next == order_.end()) break;
-    render[next->light] = 1;
-    views_left -= lights[next->light].views;
+  for (const uint64_t ordered : order_) {
+    if (views_left == 0) break;
+    const auto i = static_cast<uint32_t>(ordered);
+    const uint32_t views = lights[i].views;
+    if (views > views_left && rendered_any) continue;
+    render[i] = 1;
+    views_left -= std::min(views, views_left);
+    rendered_any = true;
   }
 }
 

@@ -74,20 +74,19 @@ class ShadowCache {
   // Every dirty light renders when view_budget is 0 (unlimited) or their views fit in it.
   // Otherwise dirty lights are taken in this order until the budget is used: lights without a
   // valid map first (new, invalid, never rendered into their current storage), then the stalest
-  // (rendered longest ago), ties by key. A light with more views than the budget has left is
-  // skipped for this frame, unless nothing has been rendered yet this frame (so a budget under
-  // 6 views still renders cubes, one a frame). Stalest-first means no light starves: with lights
-  // of one view and no new or invalid ones arriving, a dirty light renders within
-  // ceil(dirty lights / view_budget) frames.
+  // (rendered longest ago), ties by their order in `lights`. A light with more views than the budget has left
+  // is skipped for this frame, unless nothing has been rendered yet this frame (so a budget under 6 views
+  // still renders cubes, one a frame). Stalest-first means no light starves: with lights of one view and no
+  // new or invalid ones arriving, a dirty light renders within ceil(dirty lights / view_budget) frames.
   //
   // usable = rendered this frame, or rendered in an earlier frame and not `invalid` (nor
   // invalidate_all()) since.
   //
   // Cost: O(lights), plus, when casters changed, testing each clean bounded light against only
   // the boxes near it (SpheresMeetingBoxes), plus, when the budget is short, ordering the dirty
-  // lights (O(dirty log budget) usually). A frame allocates nothing once grown, except when the
-  // lights are not the previous frame's keys in the previous frame's order: the key -> state map
-  // is then rebuilt. With a `pool`, the lights are tested against the boxes on it.
+  // lights (O(dirty), a radix sort on how stale they are). A frame allocates nothing once grown, except when
+  // the lights are not the previous frame's keys in the previous frame's order: the key -> state map is then
+  // rebuilt. With a `pool`, the lights are tested against the boxes on it.
   void plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes, uint32_t view_budget,
             bool static_layers, std::span<uint8_t> render, std::span<uint8_t> usable,
             ecs::ThreadPool* pool = nullptr);
@@ -121,7 +120,7 @@ class ShadowCache {
   void mark_by_casters(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> boxes,
                        bool LightState::*flag, ecs::ThreadPool* pool);
   void choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
-                      std::span<uint8_t> render, ecs::ThreadPool* pool);
+                      std::span<uint8_t> render);
 
   uint64_t frame_ = 0;
   std::vector<LightState> states_;  // parallel to the previous plan's lights
@@ -130,13 +129,9 @@ class ShadowCache {
   // Working storage, kept so that a frame allocates nothing once grown.
   std::vector<LightState> matched_;
   std::unordered_map<uint64_t, uint32_t> index_of_key_;
-  struct Ordered {
-    uint64_t stale;  // valid in the top bit, then the frame it was last rendered
-    uint64_t key;
-    uint32_t light;
-  };
-  std::vector<Ordered> order_;  // the dirty lights, in the order they get renders
-  std::vector<Ordered> order_scratch_;
+  // The dirty lights, in the order they get renders: staleness rank << 32 | index in `lights`.
+  std::vector<uint64_t> order_;
+  std::vector<uint64_t> order_scratch_;
   std::vector<uint32_t> candidates_;  // lights tested against the caster boxes, then the dirty ones
   std::vector<glm::vec4> candidate_reach_;
   std::vector<uint8_t> candidate_met_;

@@ -1,8 +1,6 @@
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdint>
-#include <random>
 #include <vector>
 
 #include "ecs/parallel_pieces.h"
@@ -29,22 +27,6 @@ TEST(KeepInPieces, RanksTheKeptIndicesInOrderOnAPoolAsSerially) {
   ThreadPool threads(3);
   EXPECT_EQ(filter(nullptr), expected);
   EXPECT_EQ(filter(&threads), expected);
-}
-
-// Sorted on a pool as by std::sort, for counts that leave a short last piece or an odd number
-// of pieces to merge.
-TEST(SortInPieces, SortsAsStdSortDoes) {
-  ThreadPool threads(3);
-  for (const std::size_t count : {0u, 1u, 63u, 64u, 65u, 1000u, 4099u}) {
-    std::vector<std::uint64_t> items(count);
-    std::mt19937_64 random(count);
-    for (std::uint64_t& item : items) item = random() % 500;  // repeats too
-    std::vector<std::uint64_t> expected = items;
-    std::sort(expected.begin(), expected.end());
-    std::vector<std::uint64_t> scratch;
-    sort_in_pieces(&threads, items, scratch, 64, std::less<>());
-    EXPECT_EQ(items, expected) << count << " items";
-  }
 }
 
 }  // namespace
