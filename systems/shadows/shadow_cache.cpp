@@ -21,7 +21,7 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
         "sg::shadows::ShadowCache::plan: render and usable need one element per light");
   }
   ++frame_;
-  align_by_key(lights, states_, index_of_key_, matched_);
+  if (align_by_key(lights, states_, index_of_key_, matched_)) by_key_.clear();
   for (size_t i = 0; i < lights.size(); ++i) {
     LightState& state = states_[i];
     if (lights[i].invalid) state.valid = false;
@@ -114,9 +114,9 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
     return;
   }
 
-  // Lights without a valid map, then the stalest, ties by their order in `lights` (the header's
-  // order): a stable radix sort on how long ago each was rendered, a byte or two wide, costs
-  // less than a comparison sort of thousands of dirty lights, on one thread or on the pool.
+  // Lights without a valid map, then the stalest, ties by key (the header's order): the dirty
+  // lights listed in key order, then a stable radix sort on how long ago each was rendered, a
+  // byte or two wide, costs less than a comparison sort of thousands of them.
   uint64_t oldest = UINT64_MAX;
   uint64_t newest = 0;
   for (const uint32_t i : candidates_) {
@@ -124,11 +124,17 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
     oldest = std::min(oldest, states_[i].rendered_frame);
     newest = std::max(newest, states_[i].rendered_frame);
   }
+  if (by_key_.size() != lights.size()) {  // kept while the lights are the same
+    by_key_.resize(lights.size());
+    for (uint32_t i = 0; i < lights.size(); ++i) by_key_[i] = {lights[i].key, i};
+    radix_sort(by_key_, by_key_scratch_, [](const KeyedLight& light) { return light.key; });
+  }
   order_.clear();
-  for (const uint32_t i : candidates_) {
-    const LightState& state = states_[i];
+  for (const KeyedLight& light : by_key_) {
+    const LightState& state = states_[light.index];
+    if (!state.dirty && !state.moving_dirty) continue;
     const uint64_t rank = state.valid ? state.rendered_frame - oldest + 1 : 0;  // 0: no valid map
-    order_.push_back(rank << 32 | i);
+    order_.push_back(rank << 32 | light.index);
   }
   const auto rank_bits = static_cast<uint32_t>(std::bit_width(newest >= oldest ? newest - oldest + 1 : 0));
   radix_sort(

@@ -74,7 +74,7 @@ class ShadowCache {
   // Every dirty light renders when view_budget is 0 (unlimited) or their views fit in it.
   // Otherwise dirty lights are taken in this order until the budget is used: lights without a
   // valid map first (new, invalid, never rendered into their current storage), then the stalest
-  // (rendered longest ago), ties by their order in `lights`. A light with more views than the budget has left
+  // (rendered longest ago), ties by key. A light with more views than the budget has left
   // is skipped for this frame, unless nothing has been rendered yet this frame (so a budget under 6 views
   // still renders cubes, one a frame). Stalest-first means no light starves: with lights of one view and no
   // new or invalid ones arriving, a dirty light renders within ceil(dirty lights / view_budget) frames.
@@ -129,6 +129,12 @@ class ShadowCache {
   // Working storage, kept so that a frame allocates nothing once grown.
   std::vector<LightState> matched_;
   std::unordered_map<uint64_t, uint32_t> index_of_key_;
+  struct KeyedLight {
+    uint64_t key;
+    uint32_t index;  // in `lights`
+  };
+  std::vector<KeyedLight> by_key_;  // the lights by key; cleared when they change, sorted when needed
+  std::vector<KeyedLight> by_key_scratch_;
   // The dirty lights, in the order they get renders: staleness rank << 32 | index in `lights`.
   std::vector<uint64_t> order_;
   std::vector<uint64_t> order_scratch_;

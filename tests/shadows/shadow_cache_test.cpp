@@ -170,7 +170,7 @@ TEST(ShadowCache, NoLightStarvesWhenTheBudgetIsShort) {
 
 // Thousands of dirty lights over the view budget, their staleness spread by random changes:
 // the choice is, frame after frame, a plain model's: lights without a valid map, then by the
-// frame they last rendered in, ties by their place, each taken while its views fit (cubes leave
+// frame they last rendered in, ties by key, each taken while its views fit (cubes leave
 // views no cube fits, so lights behind them are looked at too); on a pool as on one thread.
 TEST(ShadowCache, ChoosesTheStalestInOrderAsAPlainModelDoes) {
   for (const uint32_t light_count : {1500u, 3000u}) {
@@ -197,7 +197,9 @@ TEST(ShadowCache, ChoosesTheStalestInOrderAsAPlainModelDoes) {
         if (model[i].dirty) order.push_back(i);
       }
       const auto rank = [&](uint32_t i) { return model[i].valid ? model[i].rendered + 1 : 0; };
-      std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return rank(a) < rank(b); });
+      std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        return rank(a) < rank(b) || (rank(a) == rank(b) && lights[a].key < lights[b].key);
+      });
       std::vector<uint8_t> expected(light_count, 0);
       uint32_t left = budget;
       for (const uint32_t i : order) {
