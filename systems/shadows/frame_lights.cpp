@@ -212,8 +212,15 @@ void sort_by_group(FrameLights& out, ecs::ThreadPool* pool) {
     }
   });
   std::swap(out.records, scratch.records);
-  for (ShadowMapView& map : out.maps) map.light = scratch.moved_to[map.light];
-  for (ShadowCubeView& cube : out.cubes) cube.light = scratch.moved_to[cube.light];
+  // The views lie hundreds of bytes apart: thousands of them are pointed at their records' new
+  // places on the pool.
+  const size_t map_count = out.maps.size();
+  ecs::run_in_pieces(pool, map_count + out.cubes.size(), piece, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) {
+      uint32_t& light = v < map_count ? out.maps[v].light : out.cubes[v - map_count].light;
+      light = scratch.moved_to[light];
+    }
+  });
 }
 
 }  // namespace sg::shadows

@@ -54,29 +54,40 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
                               uint32_t view_budget, ecs::ThreadPool* pool) {
   // Requests: maps first, then cubes, each in the lights' order. A light whose reach is out of
   // the camera's sight shades nothing visible: it asks for no tile at all. Importances and
-  // floors are worked out on the pool, the requests listed in order after.
+  // floors are worked out on the pool, the requests listed in order after. There too, each
+  // piece checks that its views are the ones their entries of rendered_maps_ and
+  // rendered_cubes_ hold (usually: the last frame's lights in the same order), which one thread
+  // would read hundreds of bytes apart.
   const CameraFrustum frustum(camera);
   const size_t map_count = lights.maps.size();
-  quality_floors_.resize(map_count + lights.cubes.size());
-  ecs::run_in_pieces(pool, map_count, views_per_piece, [&](size_t begin, size_t end) {
-    for (size_t m = begin; m < end; ++m) {
-      ShadowMapView& map = lights.maps[m];
-      map.importance = importance_in(map.reach, camera, frustum);
-      quality_floors_[m] = quality_floor(algorithm_of(lights.records[map.light]));
+  const size_t view_count = map_count + lights.cubes.size();
+  quality_floors_.resize(view_count);
+  const bool same_counts =
+      rendered_maps_.size() == map_count && rendered_cubes_.size() == lights.cubes.size();
+  pieces_aligned_.assign(std::max<size_t>((view_count + views_per_piece - 1) / views_per_piece, 1), 1);
+  ecs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
+    bool aligned = same_counts;
+    for (size_t v = begin; v < end; ++v) {
+      if (v < map_count) {
+        ShadowMapView& map = lights.maps[v];
+        map.importance = importance_in(map.reach, camera, frustum);
+        quality_floors_[v] = quality_floor(algorithm_of(lights.records[map.light]));
+        aligned = aligned && rendered_maps_[v].key == map.key;
+      } else {
+        ShadowCubeView& cube = lights.cubes[v - map_count];
+        // A face spans a quarter turn, about half of what the whole sphere covers on screen.
+        cube.importance = 0.5f * importance_in(cube.position_far, camera, frustum);
+        quality_floors_[v] = quality_floor(algorithm_of(lights.records[cube.light]));
+        aligned = aligned && rendered_cubes_[v - map_count].key == cube.key;
+      }
     }
+    pieces_aligned_[begin / views_per_piece] = aligned ? 1 : 0;
   });
-  ecs::run_in_pieces(pool, lights.cubes.size(), views_per_piece, [&](size_t begin, size_t end) {
-    for (size_t c = begin; c < end; ++c) {
-      ShadowCubeView& cube = lights.cubes[c];
-      // A face spans a quarter turn, about half of what the whole sphere covers on screen.
-      cube.importance = 0.5f * importance_in(cube.position_far, camera, frustum);
-      quality_floors_[map_count + c] = quality_floor(algorithm_of(lights.records[cube.light]));
-    }
-  });
+  const bool aligned =
+      same_counts && std::find(pieces_aligned_.begin(), pieces_aligned_.end(), 0) == pieces_aligned_.end();
   // The requests, then the lights the cache sees (those given tiles), each listed in order on
   // the pool: a view's fields lie hundreds of bytes apart, so one thread reading them for
   // thousands of lights took longer than the work.
-  const size_t view_count = map_count + lights.cubes.size();
   request_of_.assign(view_count, no_request);
   requests_.resize(view_count);
   const size_t request_count = ecs::keep_in_pieces(
@@ -127,8 +138,10 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     decision_[cached_request_[c]] = {render_[c], usable_[c] != 0};
   }
   // A light never has a cached map without its entry: the cache forgets lights that leave too.
-  align_by_key(lights.maps, rendered_maps_, index_of_key_, rendered_maps_scratch_);
-  align_by_key(lights.cubes, rendered_cubes_, index_of_key_, rendered_cubes_scratch_);
+  if (!aligned) {
+    align_by_key(lights.maps, rendered_maps_, index_of_key_, rendered_maps_scratch_);
+    align_by_key(lights.cubes, rendered_cubes_, index_of_key_, rendered_cubes_scratch_);
+  }
   const auto apply = [&](uint32_t request, uint32_t views, auto& view, Tally& tally, auto&& give_map) {
     view.resolution = 0;
     view.render = false;

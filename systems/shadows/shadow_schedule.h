@@ -111,6 +111,7 @@ class ShadowSchedule {
   };
   std::vector<uint32_t> request_of_;      // per view (maps, then cubes): its request or no_request
   std::vector<uint32_t> quality_floors_;  // per view, as request_of_
+  std::vector<uint8_t> pieces_aligned_;   // per piece of views: its views' rendered entries are theirs
   ecs::KeepScratch keep_scratch_;
   std::vector<ShadowRequest> requests_;
   std::vector<ShadowPlacement> placements_;

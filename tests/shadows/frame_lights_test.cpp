@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <map>
 #include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -327,6 +328,27 @@ TEST(ShadowSchedule, MovingCastersAloneRedrawOverStaticLayers) {
   ecs::update_world_transforms(world, before);
   EXPECT_EQ(row.maps_drawn(CasterUpdate::changes({}, back)), (std::vector<int>{0, 1}));
   EXPECT_EQ(moving_only(), (std::vector<int>{1})) << "light 0 moved";
+}
+
+// A map drawn over its static layer uses the view that layer was drawn with, its own light's,
+// also when the frame's lights come in another order (the same count, two swapped).
+TEST(ShadowSchedule, MovingCastersRedrawWithTheirOwnLightsLayerViewAfterAReorder) {
+  SpotsInARow row;
+  row.schedule = ShadowSchedule(small_atlas, true);
+  EXPECT_EQ(row.maps_drawn(CasterUpdate::changes({})).size(), 6u);
+  std::map<uint64_t, glm::mat4> drawn_with;
+  for (const ShadowMapView& map : row.lights.maps) drawn_with[map.key] = map.view.view_projection();
+
+  row.scene.world.advance_tick();
+  gather_lights(row.scene.world, bounds, {}, row.lights);
+  std::swap(row.lights.maps[0], row.lights.maps[1]);
+  const std::vector<scene::Aabb> moving{crate_at(-7.0f), crate_at(-3.0f)};
+  row.schedule.schedule(row.lights, camera_at({0.0f, 2.0f, 0.0f}), CasterUpdate::changes({}, moving), 0);
+  for (const size_t m : {0u, 1u}) {
+    const ShadowMapView& map = row.lights.maps[m];
+    ASSERT_TRUE(map.moving_casters_only) << "map " << m;
+    EXPECT_EQ(map.view.view_projection(), drawn_with.at(map.key)) << "map " << m;
+  }
 }
 
 TEST(ShadowSchedule, AThreadPoolSchedulesTheSameShadows) {
