@@ -205,30 +205,46 @@ bool ShadowViewBatch::all_casters_kept(uint32_t slot) {
 
 void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene,
                               uint32_t page_size, ecs::ThreadPool* pool) {
-  // Where each drawn view goes, a flag a light, and its tile, on this thread: the views drawn
-  // with every caster first, then those drawn with the moving casters alone (the cull's two
-  // dispatches take a range each); where compute raster puts its depths; then the view records,
-  // independent, in chunks on the pool (written once each, in order: they are most of what this
-  // frame uploads).
+  // Where each drawn view goes: the views drawn with every caster first, then those drawn with
+  // the moving casters alone (the cull's two dispatches take a range each). How each light is
+  // drawn is read on the pool, a byte a light (the views lie hundreds of bytes apart), the places
+  // counted here from the bytes, the tiles copied on the pool; then where compute raster puts
+  // its depths; then the view records, independent, in chunks on the pool (written once each,
+  // in order: they are most of what this frame uploads).
   constexpr uint32_t not_drawn = UINT32_MAX;
-  const size_t light_count = lights.maps.size() + lights.cubes.size();
+  constexpr uint8_t skipped = 0, every_caster = 1, moving_casters = 2;
+  const size_t map_count = lights.maps.size();
+  const size_t light_count = map_count + lights.cubes.size();
+  const auto drawn_as = [](const auto& view) {
+    return !view.render ? skipped : view.moving_casters_only ? moving_casters : every_caster;
+  };
+  drawn_as_.resize(light_count);
+  ecs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i)
+      drawn_as_[i] = i < map_count ? drawn_as(lights.maps[i]) : drawn_as(lights.cubes[i - map_count]);
+  });
   first_view_.assign(light_count, not_drawn);
-  view_tiles_.clear();
-  for (const bool moving_only : {false, true}) {
-    for (size_t m = 0; m < lights.maps.size(); ++m) {
-      const shadows::ShadowMapView& map = lights.maps[m];
-      if (!map.render || map.moving_casters_only != moving_only) continue;
-      first_view_[m] = static_cast<uint32_t>(view_tiles_.size());
-      view_tiles_.push_back(map.tile);
+  uint32_t next = 0;
+  for (const uint8_t pass : {every_caster, moving_casters}) {
+    for (size_t i = 0; i < light_count; ++i) {
+      if (drawn_as_[i] != pass) continue;
+      first_view_[i] = next;
+      next += i < map_count ? 1 : 6;
     }
-    for (size_t c = 0; c < lights.cubes.size(); ++c) {
-      const shadows::ShadowCubeView& cube = lights.cubes[c];
-      if (!cube.render || cube.moving_casters_only != moving_only) continue;
-      first_view_[lights.maps.size() + c] = static_cast<uint32_t>(view_tiles_.size());
-      view_tiles_.insert(view_tiles_.end(), cube.tiles.begin(), cube.tiles.end());
-    }
-    if (!moving_only) full_views_ = static_cast<uint32_t>(view_tiles_.size());
+    if (pass == every_caster) full_views_ = next;
   }
+  view_tiles_.resize(next);
+  ecs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      if (first_view_[i] == not_drawn) continue;
+      if (i < map_count) {
+        view_tiles_[first_view_[i]] = lights.maps[i].tile;
+      } else {
+        const std::array<shadows::AtlasTile, 6>& tiles = lights.cubes[i - map_count].tiles;
+        std::copy(tiles.begin(), tiles.end(), view_tiles_.begin() + first_view_[i]);
+      }
+    }
+  });
   const size_t count = view_tiles_.size();
 
   if (setting_ == shadows::ShadowRaster::automatic) {

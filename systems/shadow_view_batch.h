@@ -173,6 +173,7 @@ class ShadowViewBatch {
     uint64_t key;  // page, size, row, column (place_depths)
     uint32_t view;
   };
+  std::vector<uint8_t> drawn_as_;     // per light (maps, then cubes): not, with every caster, moving ones
   std::vector<uint32_t> first_view_;  // per light (maps, then cubes): its first view, if drawn
   std::vector<Placed> placed_;        // the views by page, size, row, column
   std::vector<Placed> placed_scratch_;
