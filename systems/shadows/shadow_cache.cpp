@@ -114,17 +114,18 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
     return;
   }
 
-  // Lights without a valid map, then the stalest, ties by key (the header's order): the dirty
-  // lights listed in key order, then a stable radix sort on how long ago each was rendered, a
-  // byte or two wide, costs less than a comparison sort of thousands of them.
+  // Lights without a valid map, then the stalest (each of the two by staleness), ties by key
+  // (the header's order): the dirty lights listed in key order, then a stable radix sort on how
+  // long ago each was rendered, a byte or two wide, costs less than a comparison sort of
+  // thousands of them.
   uint64_t oldest = UINT64_MAX;
   uint64_t newest = 0;
   for (const uint32_t i : candidates_) {
-    if (!states_[i].valid) continue;
     oldest = std::min(oldest, states_[i].rendered_frame);
     newest = std::max(newest, states_[i].rendered_frame);
   }
-  if (by_key_.size() != lights.size()) {  // kept while the lights are the same
+  const uint64_t span = newest - oldest + 1;  // candidates_ is not empty: some are over the budget
+  if (by_key_.size() != lights.size()) {      // kept while the lights are the same
     by_key_.resize(lights.size());
     for (uint32_t i = 0; i < lights.size(); ++i) by_key_[i] = {lights[i].key, i};
     radix_sort(by_key_, by_key_scratch_, [](const KeyedLight& light) { return light.key; });
@@ -133,10 +134,10 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
   for (const KeyedLight& light : by_key_) {
     const LightState& state = states_[light.index];
     if (!state.dirty && !state.moving_dirty) continue;
-    const uint64_t rank = state.valid ? state.rendered_frame - oldest + 1 : 0;  // 0: no valid map
+    const uint64_t rank = (state.valid ? span : 0) + state.rendered_frame - oldest;
     order_.push_back(rank << 32 | light.index);
   }
-  const auto rank_bits = static_cast<uint32_t>(std::bit_width(newest >= oldest ? newest - oldest + 1 : 0));
+  const auto rank_bits = static_cast<uint32_t>(std::bit_width(2 * span - 1));
   radix_sort(
       order_, order_scratch_, [](uint64_t ordered) { return ordered >> 32; }, rank_bits);
   // Skipping a light with more views than are left, the scan goes on to the stalest that fits.

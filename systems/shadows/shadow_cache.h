@@ -73,11 +73,12 @@ class ShadowCache {
   // until rendered.
   // Every dirty light renders when view_budget is 0 (unlimited) or their views fit in it.
   // Otherwise dirty lights are taken in this order until the budget is used: lights without a
-  // valid map first (new, invalid, never rendered into their current storage), then the stalest
-  // (rendered longest ago), ties by key. A light with more views than the budget has left
-  // is skipped for this frame, unless nothing has been rendered yet this frame (so a budget under 6 views
-  // still renders cubes, one a frame). Stalest-first means no light starves: with lights of one view and no
-  // new or invalid ones arriving, a dirty light renders within ceil(dirty lights / view_budget) frames.
+  // valid map first (new, invalid, never rendered into their current storage), then the others,
+  // each of the two the stalest (rendered longest ago) first, ties by key. A light with more views than the
+  // budget has left is skipped for this frame, unless nothing has been rendered yet this frame (so a budget
+  // under 6 views still renders cubes, one a frame). Stalest-first means no light starves: with lights of one
+  // view and no new or invalid ones arriving, a dirty light renders within ceil(dirty lights / view_budget)
+  // frames.
   //
   // usable = rendered this frame, or rendered in an earlier frame and not `invalid` (nor
   // invalidate_all()) since.

@@ -168,9 +168,10 @@ TEST(ShadowCache, NoLightStarvesWhenTheBudgetIsShort) {
   }
 }
 
-// Thousands of dirty lights over the view budget, their staleness spread by random changes:
-// the choice is, frame after frame, a plain model's: lights without a valid map, then by the
-// frame they last rendered in, ties by key, each taken while its views fit (cubes leave
+// Thousands of dirty lights over the view budget, their staleness spread by random changes and
+// invalidations:
+// the choice is, frame after frame, a plain model's: lights without a valid map, then the
+// others, each by the frame they last rendered in, ties by key, each taken while its views fit (cubes leave
 // views no cube fits, so lights behind them are looked at too); on a pool as on one thread.
 TEST(ShadowCache, ChoosesTheStalestInOrderAsAPlainModelDoes) {
   for (const uint32_t light_count : {1500u, 3000u}) {
@@ -193,10 +194,11 @@ TEST(ShadowCache, ChoosesTheStalestInOrderAsAPlainModelDoes) {
     for (int frame = 1; frame <= 12; ++frame) {
       std::vector<uint32_t> order;
       for (uint32_t i = 0; i < light_count; ++i) {
-        model[i].dirty = model[i].dirty || lights[i].changed;
+        if (lights[i].invalid) model[i].valid = false;
+        model[i].dirty = model[i].dirty || lights[i].changed || !model[i].valid;
         if (model[i].dirty) order.push_back(i);
       }
-      const auto rank = [&](uint32_t i) { return model[i].valid ? model[i].rendered + 1 : 0; };
+      const auto rank = [&](uint32_t i) { return (model[i].valid ? 1000 : 0) + model[i].rendered; };
       std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
         return rank(a) < rank(b) || (rank(a) == rank(b) && lights[a].key < lights[b].key);
       });
@@ -213,7 +215,10 @@ TEST(ShadowCache, ChoosesTheStalestInOrderAsAPlainModelDoes) {
       Plan got{std::vector<uint8_t>(lights.size()), std::vector<uint8_t>(lights.size())};
       pooled.plan(lights, {}, budget, false, got.render, got.usable, &threads);
       ASSERT_EQ(got.render, expected) << light_count << " lights, frame " << frame;
-      for (ShadowCacheLight& light : lights) light.changed = random() % 2 == 0;
+      for (ShadowCacheLight& light : lights) {
+        light.changed = random() % 2 == 0;
+        light.invalid = random() % 8 == 0;  // moved in the atlas: rendered before, no valid map now
+      }
     }
   }
 }
