@@ -148,32 +148,34 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   return true;
 }
 
-// A box that left from strictly inside the scene's bounds (off every face) cannot shrink them:
-// other boxes hold each face. Then growing by the new boxes gives what regrowing all would,
-// without reading every instance; a box that held a face may shrink them, and all are regrown.
+// The instances' bounds are kept grown per chunk of consecutive instances: a move regrows only
+// the chunks of the instances that changed (moving objects are usually a few meshes, so a few
+// chunks), then the scene's bounds from every chunk's. Exact, whether the bounds grow or shrink.
 void GpuScene::update_scene_bounds(ecs::ThreadPool* pool) {
-  const scene::Aabb& scene = scene_bounds_;
-  for (const scene::Aabb& before : bounds_before_) {
-    if (!before.empty() && !(glm::all(glm::greaterThan(before.min, scene.min)) &&
-                             glm::all(glm::lessThan(before.max, scene.max)))) {
-      regrow_scene_bounds(pool);
-      return;
-    }
-  }
-  for (const uint32_t i : changed_) scene::grow(scene_bounds_, bounds_[i]);
+  regrown_chunks_.clear();
+  for (const uint32_t i : changed_) regrown_chunks_.push_back(static_cast<uint32_t>(i / instances_per_chunk));
+  std::sort(regrown_chunks_.begin(), regrown_chunks_.end());
+  regrown_chunks_.erase(std::unique(regrown_chunks_.begin(), regrown_chunks_.end()), regrown_chunks_.end());
+  ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) grow_chunk(regrown_chunks_[k]);
+  });
+  scene_bounds_ = {};
+  for (const scene::Aabb& chunk : chunk_bounds_) scene::grow(scene_bounds_, chunk);
 }
 
 void GpuScene::regrow_scene_bounds(ecs::ThreadPool* pool) {
-  // Each piece grows its own part, on the pool.
-  constexpr size_t piece = 2048;
-  chunk_bounds_.assign((bounds_.size() + piece - 1) / piece, scene::Aabb{});
-  ecs::run_in_pieces(pool, bounds_.size(), piece, [&](size_t begin, size_t end) {
-    if (begin == end) return;
-    scene::Aabb& part = chunk_bounds_[begin / piece];
-    for (size_t i = begin; i < end; ++i) scene::grow(part, bounds_[i]);
+  chunk_bounds_.resize((bounds_.size() + instances_per_chunk - 1) / instances_per_chunk);
+  ecs::run_in_pieces(pool, chunk_bounds_.size(), 1, [&](size_t begin, size_t end) {
+    for (size_t chunk = begin; chunk < end; ++chunk) grow_chunk(static_cast<uint32_t>(chunk));
   });
   scene_bounds_ = {};
-  for (const scene::Aabb& part : chunk_bounds_) scene::grow(scene_bounds_, part);
+  for (const scene::Aabb& chunk : chunk_bounds_) scene::grow(scene_bounds_, chunk);
+}
+
+void GpuScene::grow_chunk(uint32_t chunk) {
+  scene::Aabb& bounds = chunk_bounds_[chunk] = {};
+  const size_t end = std::min(bounds_.size(), size_t{chunk + 1} * instances_per_chunk);
+  for (size_t i = size_t{chunk} * instances_per_chunk; i < end; ++i) scene::grow(bounds, bounds_[i]);
 }
 
 void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {

@@ -135,8 +135,10 @@ class GpuScene {
   void gather_all(const ecs::World& world, ecs::ThreadPool* pool);
   // The scene's bounds from every instance's.
   void regrow_scene_bounds(ecs::ThreadPool* pool);
-  // The scene's bounds after the changed_ instances' bounds changed (from bounds_before_).
+  // The scene's bounds after the changed_ instances' bounds changed.
   void update_scene_bounds(ecs::ThreadPool* pool);
+  // chunk_bounds_[chunk] from its instances' bounds.
+  void grow_chunk(uint32_t chunk);
 
   ecs::Tick gathered_at_ = 0;               // the world's tick at the last gather
   uint64_t gathers_ = 0;                    // gather() calls so far
@@ -153,7 +155,10 @@ class GpuScene {
   std::vector<uint32_t> slot_starts_;  // counting sort: per (mesh, caster or not)
   std::vector<GpuInstance> sorted_;
   std::vector<scene::Aabb> bounds_;
+  // The bounds of each chunk of instances_per_chunk consecutive instances (the last may be short).
+  static constexpr size_t instances_per_chunk = 2048;
   std::vector<scene::Aabb> chunk_bounds_;
+  std::vector<uint32_t> regrown_chunks_;  // update_scene_bounds' chunks of changed instances
   std::vector<uint64_t> keys_;
   scene::Aabb scene_bounds_;
   std::vector<VkDrawIndexedIndirectCommand> commands_;

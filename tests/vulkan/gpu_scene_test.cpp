@@ -130,12 +130,17 @@ TEST_F(GpuSceneTest, AFrameWithoutWritesKeepsEveryInstance) {
   EXPECT_FLOAT_EQ(gpu.bounds().max.y, before.max.y + 2.0f) << "and grows the scene's bounds";
 }
 
-// The scene's bounds follow moves without reading every instance: a box moving inside them
-// leaves them as they were, grown by its new place; a box that held a face and moves in shrinks
-// them (the rest are read again).
+// The scene's bounds follow moves without reading every instance (only the chunks of the moved
+// ones): a box moving inside them leaves them as they were; a box that held a face and moves in
+// shrinks them, in the first chunk of instances or the last.
 TEST_F(GpuSceneTest, SceneBoundsShrinkWhenABoxThatHeldAFaceMovesIn) {
   scene::Scene s;
   const uint32_t box = scene::add_box_mesh(s.meshes);
+  std::vector<ecs::Entity> fillers;  // more instances than one chunk holds, inside the others
+  for (int i = 0; i < 5000; ++i) {
+    const glm::vec3 at(float(i % 50) * 0.1f - 2.5f, float(i / 50 % 10) * 0.1f, float(i / 500) * 0.1f - 0.5f);
+    fillers.push_back(scene::add_instance(s, box, {at}, scene::Material{}));
+  }
   const ecs::Entity left = scene::add_instance(s, box, {{-10.0f, 0.0f, 0.0f}}, scene::Material{});
   const ecs::Entity middle = scene::add_instance(s, box, {{0.0f, 0.0f, 0.0f}}, scene::Material{});
   scene::add_instance(s, box, {{10.0f, 0.0f, 0.0f}}, scene::Material{});
@@ -177,6 +182,15 @@ TEST_F(GpuSceneTest, SceneBoundsShrinkWhenABoxThatHeldAFaceMovesIn) {
   kept.gather(s.world);
   EXPECT_GT(kept.bounds().max.y, start.max.y + 9.0f);
   expect_fresh_bounds("a move out of the bounds");
+  move(middle, {0.0f, 0.0f, 0.0f});
+  move(fillers.front(), {0.0f, 0.0f, 30.0f});
+  kept.gather(s.world);
+  EXPECT_GT(kept.bounds().max.z, start.max.z + 20.0f);
+  expect_fresh_bounds("the first instance out of the bounds");
+  move(fillers.front(), {0.0f, 0.0f, 0.0f});
+  kept.gather(s.world);
+  EXPECT_EQ(kept.bounds().max, start.max);
+  expect_fresh_bounds("the first instance back in");
 }
 
 // An instance whose bounds change becomes moving, and stays so until the next layout; a material
