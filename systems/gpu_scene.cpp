@@ -152,10 +152,13 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
 // the chunks of the instances that changed (moving objects are usually a few meshes, so a few
 // chunks), then the scene's bounds from every chunk's. Exact, whether the bounds grow or shrink.
 void GpuScene::update_scene_bounds(ecs::ThreadPool* pool) {
+  // Flags rather than a sort: thousands of instances may move.
+  chunk_changed_.assign(chunk_bounds_.size(), 0);
+  for (const uint32_t i : changed_) chunk_changed_[i / instances_per_chunk] = 1;
   regrown_chunks_.clear();
-  for (const uint32_t i : changed_) regrown_chunks_.push_back(static_cast<uint32_t>(i / instances_per_chunk));
-  std::sort(regrown_chunks_.begin(), regrown_chunks_.end());
-  regrown_chunks_.erase(std::unique(regrown_chunks_.begin(), regrown_chunks_.end()), regrown_chunks_.end());
+  for (uint32_t chunk = 0; chunk < chunk_changed_.size(); ++chunk) {
+    if (chunk_changed_[chunk] != 0) regrown_chunks_.push_back(chunk);
+  }
   ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) grow_chunk(regrown_chunks_[k]);
   });

@@ -158,7 +158,8 @@ class GpuScene {
   // The bounds of each chunk of instances_per_chunk consecutive instances (the last may be short).
   static constexpr size_t instances_per_chunk = 2048;
   std::vector<scene::Aabb> chunk_bounds_;
-  std::vector<uint32_t> regrown_chunks_;  // update_scene_bounds' chunks of changed instances
+  std::vector<uint8_t> chunk_changed_;    // update_scene_bounds': per chunk, whether an instance changed
+  std::vector<uint32_t> regrown_chunks_;  // and those chunks
   std::vector<uint64_t> keys_;
   scene::Aabb scene_bounds_;
   std::vector<VkDrawIndexedIndirectCommand> commands_;

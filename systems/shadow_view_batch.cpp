@@ -77,6 +77,13 @@ float as_float(uint32_t bits) { return std::bit_cast<float>(bits); }
 // compiled plan and its memory (rg::PlanCache), instead of recompiling and reallocating.
 uint64_t frame_steady(uint64_t bytes) { return std::bit_ceil(std::max<uint64_t>(bytes, 256)); }
 
+bool same_page_and_size(const shadows::AtlasTile& a, const shadows::AtlasTile& b) {
+  return a.page == b.page && a.size == b.size;
+}
+bool same_row(const shadows::AtlasTile& a, const shadows::AtlasTile& b) {
+  return same_page_and_size(a, b) && a.y == b.y;
+}
+
 VkClearRect tile_clear(const shadows::AtlasTile& tile) {
   return {{{int32_t(tile.x), int32_t(tile.y)}, {tile.size, tile.size}}, tile.page, 1};
 }
@@ -357,8 +364,9 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
 }
 
 // Per-region overhead dominates copying thousands of small squares (docs/PERFORMANCE.md), so
-// due tiles of one size side by side on a row of a page share one region: their depths lie
-// row-major in one rectangle of the buffer, and a frame copies a few rectangles a row of tiles.
+// due tiles of one size side by side on a row of a page share one region, and such a run
+// directly below one of the same columns extends that run's region downward: a block of due
+// tiles copies as one rectangle, its depths row-major in one rectangle of the buffer.
 //
 // The places depend on the due views' tiles alone: while every light redraws every frame and
 // none moves in the atlas, they are the last frame's, and the sort is skipped.
@@ -379,34 +387,65 @@ void ShadowViewBatch::place_depths() {
   }
   shadows::radix_sort(
       placed_, placed_scratch_, [](const Placed& p) { return p.key; }, 40);
-  copies_.clear();
-  depth_texels_ = 0;
+  const auto tile_at = [&](size_t k) -> const shadows::AtlasTile& { return view_tiles_[placed_[k].view]; };
+
+  // Runs of side-by-side tiles, row by row; each joins the region of the run above it when that
+  // run spans the same columns (runs of a row come in column order, so one cursor finds it).
+  runs_.clear();
+  regions_.clear();
+  size_t row_begin = 0;  // the current row's first run
+  size_t above = 0;      // the row above's runs: [above, above_end), empty when it has none
+  size_t above_end = 0;
   for (size_t begin = 0; begin < placed_.size();) {
-    const shadows::AtlasTile& first = view_tiles_[placed_[begin].view];
+    const shadows::AtlasTile& first = tile_at(begin);
     size_t end = begin + 1;
     while (end < placed_.size()) {
-      const shadows::AtlasTile& next = view_tiles_[placed_[end].view];
-      if (next.page != first.page || next.size != first.size || next.y != first.y ||
-          next.x != view_tiles_[placed_[end - 1].view].x + first.size) {
-        break;
-      }
+      const shadows::AtlasTile& next = tile_at(end);
+      if (!same_row(next, first) || next.x != tile_at(end - 1).x + first.size) break;
       ++end;
     }
-    const auto pitch = static_cast<uint32_t>(end - begin) * first.size;
-    for (size_t k = begin; k < end; ++k) {
-      const uint32_t v = placed_[k].view;
-      depth_places_[v] = {static_cast<uint32_t>(depth_texels_ + (view_tiles_[v].x - first.x)), pitch};
+    const auto width = static_cast<uint32_t>(end - begin) * first.size;
+    if (runs_.empty() || !same_row(tile_at(runs_[row_begin].begin), first)) {
+      const bool below = !runs_.empty() && same_page_and_size(tile_at(runs_[row_begin].begin), first) &&
+                         tile_at(runs_[row_begin].begin).y + first.size == first.y;
+      above = below ? row_begin : 0;
+      above_end = below ? runs_.size() : 0;
+      row_begin = runs_.size();
     }
+    while (above < above_end && tile_at(runs_[above].begin).x < first.x) ++above;
+    uint32_t region = static_cast<uint32_t>(regions_.size());
+    if (above < above_end && tile_at(runs_[above].begin).x == first.x && runs_[above].width == width) {
+      region = runs_[above].region;
+      regions_[region].height += first.size;
+    } else {
+      regions_.push_back({first, width, first.size, 0});
+    }
+    runs_.push_back({begin, end, width, region});
+    begin = end;
+  }
+
+  copies_.clear();
+  depth_texels_ = 0;
+  for (DepthRegion& region : regions_) {
+    region.offset = depth_texels_;
     VkBufferImageCopy copy{};
     copy.bufferOffset = depth_texels_ * sizeof(float);
-    copy.bufferRowLength = pitch;
-    copy.bufferImageHeight = first.size;
-    copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, first.page, 1};
-    copy.imageOffset = {int32_t(first.x), int32_t(first.y), 0};
-    copy.imageExtent = {pitch, first.size, 1};
+    copy.bufferRowLength = region.width;
+    copy.bufferImageHeight = region.height;
+    copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, region.corner.page, 1};
+    copy.imageOffset = {int32_t(region.corner.x), int32_t(region.corner.y), 0};
+    copy.imageExtent = {region.width, region.height, 1};
     copies_.push_back(copy);
-    depth_texels_ += uint64_t{pitch} * first.size;
-    begin = end;
+    depth_texels_ += uint64_t{region.width} * region.height;
+  }
+  for (const Run& run : runs_) {
+    const DepthRegion& region = regions_[run.region];
+    for (size_t k = run.begin; k < run.end; ++k) {
+      const shadows::AtlasTile& tile = tile_at(k);
+      const uint64_t texel =
+          region.offset + uint64_t{tile.y - region.corner.y} * region.width + (tile.x - region.corner.x);
+      depth_places_[placed_[k].view] = {static_cast<uint32_t>(texel), region.width};
+    }
   }
 }
 

@@ -177,6 +177,20 @@ class ShadowViewBatch {
   std::vector<uint32_t> first_view_;  // per light (maps, then cubes): its first view, if drawn
   std::vector<Placed> placed_;        // the views by page, size, row, column
   std::vector<Placed> placed_scratch_;
+  // place_depths: a rectangle of due tiles copied as one region, and a row's run of them.
+  struct DepthRegion {
+    shadows::AtlasTile corner;  // its top-left tile
+    uint32_t width = 0;         // texels, also the rows' pitch in the depth buffer
+    uint32_t height = 0;        // texels
+    uint64_t offset = 0;        // its first texel in the depth buffer
+  };
+  struct Run {
+    size_t begin, end;  // in placed_
+    uint32_t width;     // texels
+    uint32_t region;
+  };
+  std::vector<DepthRegion> regions_;
+  std::vector<Run> runs_;
   std::vector<VkBufferImageCopy> copies_;
   uint64_t depth_texels_ = 0;
 };
