@@ -53,15 +53,16 @@ ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas, bool static_layers)
 void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
                               uint32_t view_budget, ecs::ThreadPool* pool) {
   // Requests: maps first, then cubes, each in the lights' order. A light whose reach is out of
-  // the camera's sight shades nothing visible: it asks for no tile at all. Importances and
-  // floors are worked out on the pool, the requests listed in order after. There too, each
-  // piece checks that its views are the ones their entries of rendered_maps_ and
-  // rendered_cubes_ hold (usually: the last frame's lights in the same order), which one thread
-  // would read hundreds of bytes apart.
+  // the camera's sight shades nothing visible: it asks for no tile at all. Importances, floors
+  // and compact copies of what the planner and the cache need of each view are worked out on
+  // the pool, the requests listed in order after. There too, each piece checks that its views
+  // are the ones their entries of rendered_maps_ and rendered_cubes_ hold (usually: the last
+  // frame's lights in the same order). One thread would read all that hundreds of bytes apart.
   const CameraFrustum frustum(camera);
   const size_t map_count = lights.maps.size();
   const size_t view_count = map_count + lights.cubes.size();
-  quality_floors_.resize(view_count);
+  view_requests_.resize(view_count);
+  view_cache_lights_.resize(view_count);
   const bool same_counts =
       rendered_maps_.size() == map_count && rendered_cubes_.size() == lights.cubes.size();
   pieces_aligned_.assign(std::max<size_t>((view_count + views_per_piece - 1) / views_per_piece, 1), 1);
@@ -71,13 +72,17 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       if (v < map_count) {
         ShadowMapView& map = lights.maps[v];
         map.importance = importance_in(map.reach, camera, frustum);
-        quality_floors_[v] = quality_floor(algorithm_of(lights.records[map.light]));
+        view_requests_[v] = {map.key, false, map.requested_resolution, map.importance,
+                             quality_floor(algorithm_of(lights.records[map.light]))};
+        view_cache_lights_[v] = {map.key, map.reach, map.changed, false, 1};
         aligned = aligned && rendered_maps_[v].key == map.key;
       } else {
         ShadowCubeView& cube = lights.cubes[v - map_count];
         // A face spans a quarter turn, about half of what the whole sphere covers on screen.
         cube.importance = 0.5f * importance_in(cube.position_far, camera, frustum);
-        quality_floors_[v] = quality_floor(algorithm_of(lights.records[cube.light]));
+        view_requests_[v] = {cube.key, true, cube.requested_resolution, cube.importance,
+                             quality_floor(algorithm_of(lights.records[cube.light]))};
+        view_cache_lights_[v] = {cube.key, cube.position_far, cube.changed, false, 6};
         aligned = aligned && rendered_cubes_[v - map_count].key == cube.key;
       }
     }
@@ -87,56 +92,41 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       same_counts && std::find(pieces_aligned_.begin(), pieces_aligned_.end(), 0) == pieces_aligned_.end();
   // The requests, then the lights the cache sees (those given tiles), each listed in order on
   // the pool: a view's fields lie hundreds of bytes apart, so one thread reading them for
-  // thousands of lights took longer than the work.
+  // thousands of lights took longer than the work; both are filtered from the compact copies
+  // the pass above made.
   request_of_.assign(view_count, no_request);
   requests_.resize(view_count);
   const size_t request_count = ecs::keep_in_pieces(
       pool, view_count, views_per_piece, keep_scratch_,
-      [&](size_t v) {
-        return (v < map_count ? lights.maps[v].importance : lights.cubes[v - map_count].importance) > 0.0f;
-      },
+      [&](size_t v) { return view_requests_[v].importance > 0.0f; },
       [&](size_t v, size_t r) {
         request_of_[v] = static_cast<uint32_t>(r);
-        if (v < map_count) {
-          const ShadowMapView& map = lights.maps[v];
-          requests_[r] = {map.key, false, map.requested_resolution, map.importance, quality_floors_[v]};
-        } else {
-          const ShadowCubeView& cube = lights.cubes[v - map_count];
-          requests_[r] = {cube.key, true, cube.requested_resolution, cube.importance, quality_floors_[v]};
-        }
+        requests_[r] = view_requests_[v];
       });
   requests_.resize(request_count);
   placements_.assign(requests_.size(), ShadowPlacement{});
   planner_.plan(requests_, placements_, pool);
 
   cache_lights_.resize(view_count);
-  cached_request_.resize(view_count);
+  cache_index_.resize(requests_.size());
   const size_t cached_count = ecs::keep_in_pieces(
       pool, view_count, views_per_piece, keep_scratch_,
       [&](size_t v) { return request_of_[v] != no_request && placements_[request_of_[v]].resolution != 0; },
       [&](size_t v, size_t k) {
         const uint32_t request = request_of_[v];
-        cached_request_[k] = request;
-        const bool map = v < map_count;
-        const glm::vec4& reach = map ? lights.maps[v].reach : lights.cubes[v - map_count].position_far;
-        const bool changed = map ? lights.maps[v].changed : lights.cubes[v - map_count].changed;
-        cache_lights_[k] = {requests_[request].key, reach, changed, placements_[request].moved,
-                            map ? 1u : 6u};
+        cache_index_[request] = static_cast<uint32_t>(k);
+        cache_lights_[k] = view_cache_lights_[v];
+        cache_lights_[k].invalid = placements_[request].moved;
       });
   cache_lights_.resize(cached_count);
-  cached_request_.resize(cached_count);
   render_.assign(cache_lights_.size(), 0);
   usable_.assign(cache_lights_.size(), 0);
   const CasterChanges changes{casters.changes_only ? casters.changed : caster_changes_.update(casters.all),
                               casters.changes_only ? casters.moving : std::span<const scene::Aabb>{}};
   cache_.plan(cache_lights_, changes, view_budget, static_layers_, render_, usable_, pool);
 
-  // Results per request, then onto the views and their records, on the pool: each view writes
-  // only itself, its record and its entry, and counts into its piece's tally.
-  decision_.assign(requests_.size(), Decision{});
-  for (size_t c = 0; c < cached_request_.size(); ++c) {
-    decision_[cached_request_[c]] = {render_[c], usable_[c] != 0};
-  }
+  // The results onto the views and their records, on the pool: each view writes only itself,
+  // its record and its entry, and counts into its piece's tally.
   // A light never has a cached map without its entry: the cache forgets lights that leave too.
   if (!aligned) {
     align_by_key(lights.maps, rendered_maps_, index_of_key_, rendered_maps_scratch_);
@@ -152,48 +142,45 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     }
     const ShadowPlacement& placement = placements_[request];
     ++tally.lights_per_tier[std::countr_zero(placement.resolution)];
-    const Decision decision = decision_[request];
-    if (!decision.usable) {
+    const uint32_t cached = cache_index_[request];  // the cache saw every request with a tile
+    if (usable_[cached] == 0) {
       ++tally.waiting;
       return;
     }
     view.resolution = placement.resolution;
-    view.render = decision.render != keep_map;
-    view.moving_casters_only = decision.render == draw_moving_casters;
+    view.render = render_[cached] != keep_map;
+    view.moving_casters_only = render_[cached] == draw_moving_casters;
     (view.render ? tally.views_rendered : tally.views_cached) += views;
     if (view.moving_casters_only) tally.views_moving_only += views;
     give_map(placement);
   };
-  const size_t map_pieces = (map_count + views_per_piece - 1) / views_per_piece;
-  tallies_.assign(map_pieces + (lights.cubes.size() + views_per_piece - 1) / views_per_piece, Tally{});
+  tallies_.assign(std::max<size_t>((view_count + views_per_piece - 1) / views_per_piece, 1), Tally{});
   // A cached map was rendered from where its light was then: the record samples it with that
   // view, not the light's present one.
-  ecs::run_in_pieces(pool, map_count, views_per_piece, [&](size_t begin, size_t end) {
+  ecs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
     Tally& tally = tallies_[begin / views_per_piece];
-    for (size_t m = begin; m < end; ++m) {
-      ShadowMapView& map = lights.maps[m];
-      apply(request_of_[m], 1, map, tally, [&](const ShadowPlacement& placement) {
-        map.tile = placement.tiles[0];
-        RenderedMap& rendered = rendered_maps_[m];
-        // Moving casters are drawn over the static layer with the view it was drawn with (a map
-        // fitted to the scene's bounds may have moved since without its light changing).
-        if (map.moving_casters_only) {
-          map.view = rendered.view;
-        } else if (map.render) {
-          rendered.view = map.view;
-        }
-        set_shadow_map(lights.records[map.light], map.tile.page, tile_uv_rect(map.tile, page_size_),
-                       map.resolution, rendered.view);
-      });
-    }
-  });
-  ecs::run_in_pieces(pool, lights.cubes.size(), views_per_piece, [&](size_t begin, size_t end) {
-    Tally& tally = tallies_[map_pieces + begin / views_per_piece];
-    for (size_t c = begin; c < end; ++c) {
-      ShadowCubeView& cube = lights.cubes[c];
-      apply(request_of_[map_count + c], 6, cube, tally, [&](const ShadowPlacement& placement) {
+    for (size_t v = begin; v < end; ++v) {
+      if (v < map_count) {
+        ShadowMapView& map = lights.maps[v];
+        apply(request_of_[v], 1, map, tally, [&](const ShadowPlacement& placement) {
+          map.tile = placement.tiles[0];
+          RenderedMap& rendered = rendered_maps_[v];
+          // Moving casters are drawn over the static layer with the view it was drawn with (a
+          // map fitted to the scene's bounds may have moved since without its light changing).
+          if (map.moving_casters_only) {
+            map.view = rendered.view;
+          } else if (map.render) {
+            rendered.view = map.view;
+          }
+          set_shadow_map(lights.records[map.light], map.tile.page, tile_uv_rect(map.tile, page_size_),
+                         map.resolution, rendered.view);
+        });
+        continue;
+      }
+      ShadowCubeView& cube = lights.cubes[v - map_count];
+      apply(request_of_[v], 6, cube, tally, [&](const ShadowPlacement& placement) {
         cube.tiles = placement.tiles;
-        RenderedCube& rendered = rendered_cubes_[c];
+        RenderedCube& rendered = rendered_cubes_[v - map_count];
         if (cube.moving_casters_only) {
           cube.views = rendered.views;
           cube.position_far = glm::vec4(rendered.origin, cube.position_far.w);

@@ -105,21 +105,18 @@ class ShadowSchedule {
 
   // Per frame, kept so that scheduling allocates nothing once grown.
   static constexpr uint32_t no_request = UINT32_MAX;
-  struct Decision {
-    uint8_t render = keep_map;  // ShadowRender
-    bool usable = false;
-  };
-  std::vector<uint32_t> request_of_;      // per view (maps, then cubes): its request or no_request
-  std::vector<uint32_t> quality_floors_;  // per view, as request_of_
-  std::vector<uint8_t> pieces_aligned_;   // per piece of views: its views' rendered entries are theirs
+  std::vector<uint32_t> request_of_;  // per view (maps, then cubes): its request or no_request
+  // Per view, as request_of_: what it would request, and what the cache would see of it.
+  std::vector<ShadowRequest> view_requests_;
+  std::vector<ShadowCacheLight> view_cache_lights_;
+  std::vector<uint8_t> pieces_aligned_;  // per piece of views: its views' rendered entries are theirs
   ecs::KeepScratch keep_scratch_;
   std::vector<ShadowRequest> requests_;
   std::vector<ShadowPlacement> placements_;
-  std::vector<uint32_t> cached_request_;  // per cache light: its request
   std::vector<ShadowCacheLight> cache_lights_;
   std::vector<uint8_t> render_;
   std::vector<uint8_t> usable_;
-  std::vector<Decision> decision_;  // per request
+  std::vector<uint32_t> cache_index_;  // per request with a tile: its place in cache_lights_
   // What applying the plan counts, per piece of the views applied on the pool, summed after.
   struct Tally {
     uint32_t without_shadow = 0;
