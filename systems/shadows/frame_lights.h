@@ -32,6 +32,8 @@ namespace sg::shadows {
 struct LightOverrides {
   std::optional<scene::ShadowAlgorithm> algorithm;
   bool shadows = true;
+
+  friend bool operator==(const LightOverrides&, const LightOverrides&) = default;
 };
 
 // Limits on map sizes, whatever the lights ask for.
@@ -90,6 +92,8 @@ struct GatheredLight {
   Kind kind = spot;
   bool shadowed = false;
   uint32_t view = 0;
+
+  friend bool operator==(const GatheredLight&, const GatheredLight&) = default;
 };
 
 struct FrameLights {
@@ -113,6 +117,12 @@ struct FrameLights {
     std::vector<uint32_t> piece_groups;
     std::vector<uint32_t> piece_types;
     std::vector<GatheredLight> gathered;
+    // The last gather's list, overrides, and each light's record as packed (before the schedule
+    // gave it a shadow) and whether it had a Name: what a light unchanged since keeps.
+    std::vector<GatheredLight> last_gathered;
+    LightOverrides last_overrides;
+    std::vector<GpuLight> packed;
+    std::vector<uint8_t> named;
   } scratch;
 };
 
@@ -122,6 +132,12 @@ struct FrameLights {
 // view. The records have no shadow map yet (ShadowSchedule gives them theirs). With a pool, the
 // records and views are filled in chunks on it (the result is the same); `world` must not change
 // meanwhile.
+//
+// When the world lists the same lights as at the last gather into `out` (same entities, order
+// and shadowed ones) with the same overrides, a spot or point light none of whose components
+// (transform, light, shadow settings, name) was written since keeps its view and its packed
+// record from then: the result is what gathering afresh gives, for less (view matrices, names),
+// however ShadowSchedule and sort_by_group changed `out` in between.
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
                    FrameLights& out, ecs::ThreadPool* pool = nullptr);
 

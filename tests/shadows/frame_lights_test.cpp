@@ -3,7 +3,12 @@
 
 #include <cstring>
 #include <map>
+#include <random>
+#include <set>
+#include <string>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include "ecs/thread_pool.h"
@@ -348,6 +353,99 @@ TEST(ShadowSchedule, MovingCastersRedrawWithTheirOwnLightsLayerViewAfterAReorder
     const ShadowMapView& map = row.lights.maps[m];
     ASSERT_TRUE(map.moving_casters_only) << "map " << m;
     EXPECT_EQ(map.view.view_projection(), drawn_with.at(map.key)) << "map " << m;
+  }
+}
+
+// A long-lived FrameLights, scheduled and sorted every frame as the renderer does, keeps the
+// views and records of lights nothing wrote to; what it gathers must equal a fresh gather, frame
+// after frame, through moves, edits, renames, a name removed, a shadow switched off (a new list),
+// and directional and cylinder views that follow the scene's bounds. (Frame 1 sees every
+// transform as changed: frame 0 wrote them in the tick it gathered in.)
+TEST(FrameLights, AGatherKeepingUnchangedLightsEqualsAFreshGather) {
+  scene::Scene scene;
+  std::vector<ecs::Entity> lights;
+  for (int i = 0; i < 300; ++i) {
+    const ecs::LocalTransform at{glm::vec3(float(i % 20), 3.0f, -float(i / 20))};
+    const scene::ShadowSettings shadow = shadow_at(64u << (i % 3), i % 11 != 0);
+    const std::string name = i % 4 == 0 ? "" : "light " + std::to_string(i);
+    if (i % 2 == 0) lights.push_back(scene::add_light(scene, scene::PointLight{}, at, shadow, name));
+    if (i % 2 == 1) lights.push_back(scene::add_light(scene, scene::SpotLight{}, at, shadow, name));
+  }
+  scene::add_light(scene, scene::DirectionalLight{}, above, shadow_at(512), "sun");
+  scene::add_light(scene, scene::CylinderLight{}, above, shadow_at(512), "");
+  ecs::World& world = scene.world;
+  ecs::update_world_transforms(world, 0);
+  ecs::ThreadPool pool(3);
+  FrameLights kept;
+  ShadowSchedule schedule(AtlasConfig{2048, 4, min_shadow_resolution}, true);
+  std::mt19937 random(3);
+  ecs::Tick transforms_at = 0;
+  scene::Aabb scene_bounds = bounds;
+  std::set<uint64_t> edited_now;
+  for (int frame = 0; frame < 10; ++frame) {
+    world.advance_tick();
+    // `changed` is a write since the last gather's tick, which the last frame's writes share.
+    std::set<uint64_t> edited = std::exchange(edited_now, {});
+    if (frame > 0) {
+      for (int k = 0; k < 12; ++k) {
+        const ecs::Entity light = lights[random() % lights.size()];
+        if (k % 4 != 3) edited_now.insert(light_key(light));  // a name is no change to the light
+        switch (k % 4) {
+          case 0: world.get_mut<ecs::LocalTransform>(light).translation.y += 0.5f; break;
+          case 1:
+            if (world.has<scene::SpotLight>(light)) world.get_mut<scene::SpotLight>(light).range += 1.0f;
+            if (world.has<scene::PointLight>(light)) world.get_mut<scene::PointLight>(light).range += 1.0f;
+            break;
+          case 2: world.get_mut<scene::ShadowSettings>(light).resolution *= 2; break;
+          case 3:
+            if (world.has<scene::Name>(light)) world.get_mut<scene::Name>(light).value += "'";
+            break;
+        }
+      }
+    }
+    if (frame == 4) world.remove<scene::Name>(lights[1]);  // renamed by its kind and index
+    if (frame == 6) world.get_mut<scene::ShadowSettings>(lights[2]).casts_shadow = false;
+    scene_bounds.max.x += 1.0f;  // the directional and cylinder views follow it
+    ecs::update_world_transforms(world, transforms_at);
+    transforms_at = world.tick();
+    edited.insert(edited_now.begin(), edited_now.end());
+
+    gather_lights(world, scene_bounds, {}, kept, &pool);
+    FrameLights fresh;
+    gather_lights(world, scene_bounds, {}, fresh);
+    SCOPED_TRACE("frame " + std::to_string(frame));
+    ASSERT_EQ(kept.records.size(), fresh.records.size());
+    EXPECT_EQ(std::memcmp(kept.records.data(), fresh.records.data(), fresh.records.size() * sizeof(GpuLight)),
+              0);
+    ASSERT_EQ(kept.maps.size(), fresh.maps.size());
+    ASSERT_EQ(kept.cubes.size(), fresh.cubes.size());
+    for (size_t m = 0; m < fresh.maps.size(); ++m) {
+      EXPECT_EQ(kept.maps[m].light, fresh.maps[m].light) << "map " << m;
+      EXPECT_EQ(kept.maps[m].key, fresh.maps[m].key) << "map " << m;
+      EXPECT_EQ(kept.maps[m].name, fresh.maps[m].name) << "map " << m;
+      EXPECT_EQ(kept.maps[m].requested_resolution, fresh.maps[m].requested_resolution) << "map " << m;
+      EXPECT_EQ(kept.maps[m].reach, fresh.maps[m].reach) << "map " << m;
+      EXPECT_EQ(kept.maps[m].view.view_projection(), fresh.maps[m].view.view_projection()) << "map " << m;
+      if (frame > 1 && kept.maps[m].reach.w > 0.0f) {
+        EXPECT_EQ(kept.maps[m].changed, edited.contains(kept.maps[m].key)) << "map " << m;
+      }
+    }
+    for (size_t c = 0; c < fresh.cubes.size(); ++c) {
+      EXPECT_EQ(kept.cubes[c].light, fresh.cubes[c].light) << "cube " << c;
+      EXPECT_EQ(kept.cubes[c].key, fresh.cubes[c].key) << "cube " << c;
+      EXPECT_EQ(kept.cubes[c].name, fresh.cubes[c].name) << "cube " << c;
+      EXPECT_EQ(kept.cubes[c].requested_resolution, fresh.cubes[c].requested_resolution) << "cube " << c;
+      EXPECT_EQ(kept.cubes[c].position_far, fresh.cubes[c].position_far) << "cube " << c;
+      EXPECT_EQ(kept.cubes[c].views.view_projection, fresh.cubes[c].views.view_projection) << "cube " << c;
+      if (frame > 1) {
+        EXPECT_EQ(kept.cubes[c].changed, edited.contains(kept.cubes[c].key)) << "cube " << c;
+      }
+    }
+    if (HasFailure()) return;
+    // As the renderer goes on: moving crates redraw maps over their static layers.
+    const std::vector<scene::Aabb> moving{crate_at(-2.0f - float(frame)), crate_at(-3.0f - float(frame))};
+    schedule.schedule(kept, camera_at({10.0f, 10.0f, 5.0f}), CasterUpdate::changes({}, moving), 200, &pool);
+    sort_by_group(kept, &pool);
   }
 }
 
