@@ -5,13 +5,10 @@
 namespace sg::ecs {
 namespace {
 
-std::uint32_t batch_of(std::uint64_t claim) { return static_cast<std::uint32_t>(claim >> 32); }
-
-}  // namespace
-
+// Spins (yielding the core to anything else runnable) until `done` or spin_time has passed.
 template <class Done>
-bool ThreadPool::spin_until(const Done& done) const {
-  const auto until = std::chrono::steady_clock::now() + spin_;
+bool spin_until(const Done& done) {
+  const auto until = std::chrono::steady_clock::now() + ThreadPool::spin_time;
   while (!done()) {
     if (std::chrono::steady_clock::now() >= until) return false;
     std::this_thread::yield();
@@ -19,7 +16,11 @@ bool ThreadPool::spin_until(const Done& done) const {
   return true;
 }
 
-ThreadPool::ThreadPool(unsigned workers, std::chrono::microseconds spin) : spin_(spin) {
+std::uint32_t batch_of(std::uint64_t claim) { return static_cast<std::uint32_t>(claim >> 32); }
+
+}  // namespace
+
+ThreadPool::ThreadPool(unsigned workers) {
   threads_.reserve(workers);
   for (unsigned i = 0; i < workers; ++i) threads_.emplace_back([this] { work(); });
 }
@@ -36,11 +37,8 @@ unsigned ThreadPool::default_workers() {
 }
 
 void ThreadPool::signal_workers() {
-  {
-    const std::lock_guard lock(sleep_mutex_);
-    signals_.fetch_add(1, std::memory_order_release);
-  }
-  batch_or_stop_.notify_all();
+  signals_.fetch_add(1, std::memory_order_release);
+  signals_.notify_all();
 }
 
 void ThreadPool::wake() {
@@ -60,8 +58,10 @@ void ThreadPool::run(std::size_t count, const Task& task) {
   drain(batch);
   const auto finished = [this] { return unfinished_.load(std::memory_order_acquire) == 0; };
   if (!spin_until(finished)) {
-    std::unique_lock lock(sleep_mutex_);
-    batch_done_.wait(lock, finished);
+    for (std::uint32_t left = unfinished_.load(std::memory_order_acquire); left != 0;
+         left = unfinished_.load(std::memory_order_acquire)) {
+      unfinished_.wait(left, std::memory_order_acquire);
+    }
   }
   if (error_ != nullptr) std::rethrow_exception(error_);
 }
@@ -83,11 +83,7 @@ void ThreadPool::drain(std::uint32_t batch) {
       const std::lock_guard lock(error_mutex_);
       if (error_ == nullptr) error_ = std::current_exception();
     }
-    if (unfinished_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
-      // Under the lock: a caller that found tasks unfinished is waiting, or will test again.
-      { const std::lock_guard lock(sleep_mutex_); }
-      batch_done_.notify_all();
-    }
+    if (unfinished_.fetch_sub(1, std::memory_order_acq_rel) == 1) unfinished_.notify_all();
   }
 }
 
@@ -103,8 +99,7 @@ void ThreadPool::work() {
       seen = batch;
       drain(batch);
     } else {
-      std::unique_lock lock(sleep_mutex_);
-      batch_or_stop_.wait(lock, [&] { return signals_.load(std::memory_order_acquire) != signals; });
+      signals_.wait(signals, std::memory_order_acquire);
     }
     // After a batch or a wake-up, the next batch is likely close: wait for it awake.
     spin_until([&] { return batch_of(claim_.load(std::memory_order_acquire)) != seen || stopping_.load(); });

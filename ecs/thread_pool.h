@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
@@ -25,16 +24,14 @@ namespace sg::ecs {
 //   threads at once.
 // - If tasks throw, the remaining tasks still run and run rethrows the first exception.
 // - After a batch, and after wake(), workers wait for the next batch spinning (yielding) for
-//   the spin time before they sleep: a frame runs its batches back to back, and waking a
-//   sleeping thread can take longer than its share of a batch. The caller, once out of tasks,
-//   waits for the batch's last ones the same way.
+//   spin_time before they sleep: a frame runs its batches back to back, and waking a sleeping
+//   thread can take longer than its share of a batch. The caller, once out of tasks, waits for
+//   the batch's last ones the same way.
 // - count must be below 2^32 (else std::length_error, before any task runs).
 class ThreadPool {
  public:
-  // `workers` threads besides the caller; 0 runs everything on the calling thread. `spin`: how
-  // long threads wait awake for a batch, or for a batch's last tasks, before they sleep.
-  explicit ThreadPool(unsigned workers = default_workers(),
-                      std::chrono::microseconds spin = default_spin_time);
+  // `workers` threads besides the caller; 0 runs everything on the calling thread.
+  explicit ThreadPool(unsigned workers = default_workers());
   ThreadPool(const ThreadPool&) = delete;
   ThreadPool& operator=(const ThreadPool&) = delete;
   ~ThreadPool();
@@ -51,7 +48,7 @@ class ThreadPool {
   // One worker per hardware thread besides the caller.
   static unsigned default_workers();
 
-  static constexpr std::chrono::microseconds default_spin_time{200};
+  static constexpr std::chrono::microseconds spin_time{200};
 
  private:
   using Task = std::function<void(std::size_t)>;
@@ -61,9 +58,6 @@ class ThreadPool {
   void drain(std::uint32_t batch);
   // Wakes sleeping workers: they re-read claim_ and spin for a while.
   void signal_workers();
-  // Spins (yielding the core to anything else runnable) until `done` or spin_ has passed.
-  template <class Done>
-  bool spin_until(const Done& done) const;
 
   // Tasks are claimed without a lock, one compare-exchange each: the batch number in the high
   // half, the next unclaimed task in the low half, so a worker that wakes late can never claim a
@@ -76,14 +70,6 @@ class ThreadPool {
   std::atomic<std::uint32_t> count_{0};
   std::atomic<std::uint32_t> unfinished_{0};  // tasks of the batch not returned yet
   std::atomic<std::uint32_t> signals_{0};     // bumped by each batch and wake(); sleepers wait on it
-  // Sleeping, after the spin: on a condition variable, the value tested and changed under
-  // sleep_mutex_, so that no wake-up is lost between a sleeper's test and its wait. (With
-  // std::atomic::wait and notify_all instead, two of four sandbox runs on an H200 host whose
-  // waits all slept, without spinning, never finished.)
-  std::mutex sleep_mutex_;
-  std::condition_variable batch_or_stop_;  // workers: signals_ moved
-  std::condition_variable batch_done_;     // the caller: unfinished_ reached 0
-  std::chrono::microseconds spin_;
   std::mutex error_mutex_;
   std::exception_ptr error_;  // the batch's first exception
   std::atomic<bool> stopping_{false};
