@@ -74,20 +74,21 @@ class ShadowCache {
   // Every dirty light renders when view_budget is 0 (unlimited) or their views fit in it.
   // Otherwise dirty lights are taken in this order until the budget is used: lights without a
   // valid map first (new, invalid, never rendered into their current storage), then the others,
-  // each of the two the stalest (rendered longest ago) first, ties by key. A light with more views than the
-  // budget has left is skipped for this frame, unless nothing has been rendered yet this frame (so a budget
-  // under 6 views still renders cubes, one a frame). Stalest-first means no light starves: with lights of one
-  // view and no new or invalid ones arriving, a dirty light renders within ceil(dirty lights / view_budget)
-  // frames.
+  // each of the two the stalest (rendered longest ago) first, ties by key. A light with more
+  // views than the budget has left is skipped for this frame, unless nothing has been rendered
+  // yet this frame (so a budget under 6 views still renders cubes, one a frame). Stalest-first
+  // means no light starves: with lights of one view and no new or invalid ones arriving, a dirty
+  // light renders within ceil(dirty lights / view_budget) frames.
   //
   // usable = rendered this frame, or rendered in an earlier frame and not `invalid` (nor
   // invalidate_all()) since.
   //
   // Cost: O(lights), plus, when casters changed, testing each clean bounded light against only
   // the boxes near it (SpheresMeetingBoxes), plus, when the budget is short, ordering the dirty
-  // lights (O(dirty), a radix sort on how stale they are). A frame allocates nothing once grown, except when
-  // the lights are not the previous frame's keys in the previous frame's order: the key -> state map is then
-  // rebuilt. With a `pool`, the lights are tested against the boxes on it.
+  // lights (O(dirty), a radix sort on how stale they are). A frame allocates nothing once grown,
+  // except when the lights are not the previous frame's keys in the previous frame's order: the
+  // key -> state map is then rebuilt (and the lights' key order, when next needed). With a
+  // `pool`, the lights are tested against the boxes on it.
   void plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes, uint32_t view_budget,
             bool static_layers, std::span<uint8_t> render, std::span<uint8_t> usable,
             ecs::ThreadPool* pool = nullptr);
