@@ -169,14 +169,16 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
       const GatheredLight& light = gathered[i];
       const scene::Name* name = world.try_get<scene::Name>(light.entity);
       if (same_lights && kept_since(world, light, name, scratch.named[i] != 0, since)) {
+        // Of what gathering sets, sort_by_group moved the record and `changed` may be stale; the
+        // view's other fields are as gathering left them (the schedule's moving-caster draws put
+        // back the view the light has anyway, unchanged since its map was drawn whole).
+        const auto keep = [index](auto& view) {
+          view.light = index;
+          view.changed = false;
+        };
         out.records[i] = scratch.packed[i];
-        if (light.shadowed) {
-          uint32_t& record =
-              light.kind == GatheredLight::point ? out.cubes[light.view].light : out.maps[light.view].light;
-          record = index;
-          (light.kind == GatheredLight::point ? out.cubes[light.view].changed
-                                              : out.maps[light.view].changed) = false;
-        }
+        if (light.shadowed && light.kind == GatheredLight::point) keep(out.cubes[light.view]);
+        if (light.shadowed && light.kind != GatheredLight::point) keep(out.maps[light.view]);
         continue;
       }
       scratch.named[i] = name != nullptr ? 1 : 0;

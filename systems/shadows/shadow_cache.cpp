@@ -4,9 +4,6 @@
 #include <bit>
 #include <cstdint>
 #include <stdexcept>
-#include <utility>
-
-#include "ecs/parallel_pieces.h"
 
 #include "systems/shadows/align_by_key.h"
 #include "systems/shadows/radix_sort.h"
