@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
-#include <utility>
 
 #include "ecs/parallel_pieces.h"
 
@@ -126,43 +124,32 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   cache_.plan(cache_lights_, changes, view_budget, static_layers_, render_, usable_, pool);
 
   // The results onto the views and their records, on the pool: each view writes only itself,
-  // its record and its entry, and counts into its piece's tally.
+  // its record and its entry.
   // A light never has a cached map without its entry: the cache forgets lights that leave too.
   if (!aligned) {
     align_by_key(lights.maps, rendered_maps_, index_of_key_, rendered_maps_scratch_);
     align_by_key(lights.cubes, rendered_cubes_, index_of_key_, rendered_cubes_scratch_);
   }
-  const auto apply = [&](uint32_t request, uint32_t views, auto& view, Tally& tally, auto&& give_map) {
+  const auto apply = [&](uint32_t request, auto& view, auto&& give_map) {
     view.resolution = 0;
     view.render = false;
     view.moving_casters_only = false;
-    if (request == no_request || placements_[request].resolution == 0) {
-      ++tally.without_shadow;
-      return;
-    }
-    const ShadowPlacement& placement = placements_[request];
-    ++tally.lights_per_tier[std::countr_zero(placement.resolution)];
+    if (request == no_request || placements_[request].resolution == 0) return;
     const uint32_t cached = cache_index_[request];  // the cache saw every request with a tile
-    if (usable_[cached] == 0) {
-      ++tally.waiting;
-      return;
-    }
+    if (usable_[cached] == 0) return;
+    const ShadowPlacement& placement = placements_[request];
     view.resolution = placement.resolution;
     view.render = render_[cached] != keep_map;
     view.moving_casters_only = render_[cached] == draw_moving_casters;
-    (view.render ? tally.views_rendered : tally.views_cached) += views;
-    if (view.moving_casters_only) tally.views_moving_only += views;
     give_map(placement);
   };
-  tallies_.assign(std::max<size_t>((view_count + views_per_piece - 1) / views_per_piece, 1), Tally{});
   // A cached map was rendered from where its light was then: the record samples it with that
   // view, not the light's present one.
   ecs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
-    Tally& tally = tallies_[begin / views_per_piece];
     for (size_t v = begin; v < end; ++v) {
       if (v < map_count) {
         ShadowMapView& map = lights.maps[v];
-        apply(request_of_[v], 1, map, tally, [&](const ShadowPlacement& placement) {
+        apply(request_of_[v], map, [&](const ShadowPlacement& placement) {
           map.tile = placement.tiles[0];
           RenderedMap& rendered = rendered_maps_[v];
           // Moving casters are drawn over the static layer with the view it was drawn with (a
@@ -178,7 +165,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
         continue;
       }
       ShadowCubeView& cube = lights.cubes[v - map_count];
-      apply(request_of_[v], 6, cube, tally, [&](const ShadowPlacement& placement) {
+      apply(request_of_[v], cube, [&](const ShadowPlacement& placement) {
         cube.tiles = placement.tiles;
         RenderedCube& rendered = rendered_cubes_[v - map_count];
         if (cube.moving_casters_only) {
@@ -197,29 +184,21 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     }
   });
 
-  Tally total;
-  for (const Tally& tally : tallies_) {
-    total.without_shadow += tally.without_shadow;
-    total.waiting += tally.waiting;
-    total.views_rendered += tally.views_rendered;
-    total.views_cached += tally.views_cached;
-    total.views_moving_only += tally.views_moving_only;
-    for (size_t t = 0; t < total.lights_per_tier.size(); ++t)
-      total.lights_per_tier[t] += tally.lights_per_tier[t];
-  }
+  // The frame's counts are the planner's (tiles) and the cache's (renders): every view without a
+  // request has no shadow, and every request is one view's.
+  const AtlasStats& atlas = planner_.stats();
+  const ShadowCacheStats& cache = cache_.stats();
   stats_ = {};
-  stats_.lights_without_shadow = total.without_shadow;
-  stats_.lights_waiting = total.waiting;
-  stats_.views_rendered = total.views_rendered;
-  stats_.views_cached = total.views_cached;
-  stats_.views_moving_only = total.views_moving_only;
-  for (uint32_t tier = 0; tier < total.lights_per_tier.size(); ++tier) {
-    if (total.lights_per_tier[tier] != 0) {
-      stats_.lights_per_resolution.emplace_back(1u << tier, total.lights_per_tier[tier]);
-    }
-  }
-  stats_.texels_used = planner_.stats().texels_used;
-  stats_.pages_used = planner_.stats().pages_used;
+  stats_.lights_without_shadow =
+      static_cast<uint32_t>(view_count - requests_.size()) + atlas.lights_without_shadow;
+  stats_.lights_waiting = cache.lights_unavailable;
+  stats_.views_rendered = cache.views_rendered;
+  stats_.views_cached = cache.views_cached;
+  stats_.views_moving_only = cache.views_moving_only;
+  stats_.lights_per_resolution.assign(atlas.lights_per_resolution.rbegin(),  // smallest first
+                                      atlas.lights_per_resolution.rend());
+  stats_.texels_used = atlas.texels_used;
+  stats_.pages_used = atlas.pages_used;
 }
 
 }  // namespace sg::shadows

@@ -5,12 +5,12 @@
 // to a frame's lights. After schedule(), every shadowed view carries its tiles or none, `render`
 // says whether it is drawn this frame, and each record says where its map is; a light whose map
 // holds nothing valid yet (new, moved, or waiting for the budget) is shaded without a shadow.
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -117,16 +117,6 @@ class ShadowSchedule {
   std::vector<uint8_t> render_;
   std::vector<uint8_t> usable_;
   std::vector<uint32_t> cache_index_;  // per request with a tile: its place in cache_lights_
-  // What applying the plan counts, per piece of the views applied on the pool, summed after.
-  struct Tally {
-    uint32_t without_shadow = 0;
-    uint32_t waiting = 0;
-    uint32_t views_rendered = 0;
-    uint32_t views_cached = 0;
-    uint32_t views_moving_only = 0;
-    std::array<uint32_t, 32> lights_per_tier{};  // by log2 of the resolution
-  };
-  std::vector<Tally> tallies_;
 
   // The view each light's map was last rendered with, in the order of the frame's maps and
   // cubes: usually the previous frame's lights in the same order, so nothing is looked up.
