@@ -159,26 +159,27 @@ void GpuScene::update_scene_bounds(ecs::ThreadPool* pool) {
   for (uint32_t chunk = 0; chunk < chunk_changed_.size(); ++chunk) {
     if (chunk_changed_[chunk] != 0) regrown_chunks_.push_back(chunk);
   }
-  ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k) grow_chunk(regrown_chunks_[k]);
-  });
-  scene_bounds_ = {};
-  for (const scene::Aabb& chunk : chunk_bounds_) scene::grow(scene_bounds_, chunk);
+  regrow_chunks(pool);
 }
 
 void GpuScene::regrow_scene_bounds(ecs::ThreadPool* pool) {
   chunk_bounds_.resize((bounds_.size() + instances_per_chunk - 1) / instances_per_chunk);
-  ecs::run_in_pieces(pool, chunk_bounds_.size(), 1, [&](size_t begin, size_t end) {
-    for (size_t chunk = begin; chunk < end; ++chunk) grow_chunk(static_cast<uint32_t>(chunk));
+  regrown_chunks_.resize(chunk_bounds_.size());
+  for (uint32_t chunk = 0; chunk < regrown_chunks_.size(); ++chunk) regrown_chunks_[chunk] = chunk;
+  regrow_chunks(pool);
+}
+
+void GpuScene::regrow_chunks(ecs::ThreadPool* pool) {
+  ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      const uint32_t chunk = regrown_chunks_[k];
+      scene::Aabb& bounds = chunk_bounds_[chunk] = {};
+      const size_t last = std::min(bounds_.size(), size_t{chunk + 1} * instances_per_chunk);
+      for (size_t i = size_t{chunk} * instances_per_chunk; i < last; ++i) scene::grow(bounds, bounds_[i]);
+    }
   });
   scene_bounds_ = {};
   for (const scene::Aabb& chunk : chunk_bounds_) scene::grow(scene_bounds_, chunk);
-}
-
-void GpuScene::grow_chunk(uint32_t chunk) {
-  scene::Aabb& bounds = chunk_bounds_[chunk] = {};
-  const size_t end = std::min(bounds_.size(), size_t{chunk + 1} * instances_per_chunk);
-  for (size_t i = size_t{chunk} * instances_per_chunk; i < end; ++i) scene::grow(bounds, bounds_[i]);
 }
 
 void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {

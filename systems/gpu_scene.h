@@ -137,8 +137,8 @@ class GpuScene {
   void regrow_scene_bounds(ecs::ThreadPool* pool);
   // The scene's bounds after the changed_ instances' bounds changed.
   void update_scene_bounds(ecs::ThreadPool* pool);
-  // chunk_bounds_[chunk] from its instances' bounds.
-  void grow_chunk(uint32_t chunk);
+  // chunk_bounds_ of the regrown_chunks_ from their instances' bounds, then the scene's bounds.
+  void regrow_chunks(ecs::ThreadPool* pool);
 
   ecs::Tick gathered_at_ = 0;               // the world's tick at the last gather
   uint64_t gathers_ = 0;                    // gather() calls so far
@@ -159,7 +159,7 @@ class GpuScene {
   static constexpr size_t instances_per_chunk = 2048;
   std::vector<scene::Aabb> chunk_bounds_;
   std::vector<uint8_t> chunk_changed_;    // update_scene_bounds': per chunk, whether an instance changed
-  std::vector<uint32_t> regrown_chunks_;  // and those chunks
+  std::vector<uint32_t> regrown_chunks_;  // the chunks regrow_chunks regrows
   std::vector<uint64_t> keys_;
   scene::Aabb scene_bounds_;
   std::vector<VkDrawIndexedIndirectCommand> commands_;
