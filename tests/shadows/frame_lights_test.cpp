@@ -419,26 +419,30 @@ TEST(FrameLights, AGatherKeepingUnchangedLightsEqualsAFreshGather) {
               0);
     ASSERT_EQ(kept.maps.size(), fresh.maps.size());
     ASSERT_EQ(kept.cubes.size(), fresh.cubes.size());
+    // What gathering sets in a map's or a cube's view alike.
+    const auto expect_same_view = [&](const auto& kept_view, const auto& fresh_view,
+                                      const std::string& which) {
+      EXPECT_EQ(kept_view.light, fresh_view.light) << which;
+      EXPECT_EQ(kept_view.key, fresh_view.key) << which;
+      EXPECT_EQ(kept_view.name, fresh_view.name) << which;
+      EXPECT_EQ(kept_view.requested_resolution, fresh_view.requested_resolution) << which;
+    };
     for (size_t m = 0; m < fresh.maps.size(); ++m) {
-      EXPECT_EQ(kept.maps[m].light, fresh.maps[m].light) << "map " << m;
-      EXPECT_EQ(kept.maps[m].key, fresh.maps[m].key) << "map " << m;
-      EXPECT_EQ(kept.maps[m].name, fresh.maps[m].name) << "map " << m;
-      EXPECT_EQ(kept.maps[m].requested_resolution, fresh.maps[m].requested_resolution) << "map " << m;
-      EXPECT_EQ(kept.maps[m].reach, fresh.maps[m].reach) << "map " << m;
-      EXPECT_EQ(kept.maps[m].view.view_projection(), fresh.maps[m].view.view_projection()) << "map " << m;
+      const std::string which = "map " + std::to_string(m);
+      expect_same_view(kept.maps[m], fresh.maps[m], which);
+      EXPECT_EQ(kept.maps[m].reach, fresh.maps[m].reach) << which;
+      EXPECT_EQ(kept.maps[m].view.view_projection(), fresh.maps[m].view.view_projection()) << which;
       if (frame > 1 && kept.maps[m].reach.w > 0.0f) {
-        EXPECT_EQ(kept.maps[m].changed, edited.contains(kept.maps[m].key)) << "map " << m;
+        EXPECT_EQ(kept.maps[m].changed, edited.contains(kept.maps[m].key)) << which;
       }
     }
     for (size_t c = 0; c < fresh.cubes.size(); ++c) {
-      EXPECT_EQ(kept.cubes[c].light, fresh.cubes[c].light) << "cube " << c;
-      EXPECT_EQ(kept.cubes[c].key, fresh.cubes[c].key) << "cube " << c;
-      EXPECT_EQ(kept.cubes[c].name, fresh.cubes[c].name) << "cube " << c;
-      EXPECT_EQ(kept.cubes[c].requested_resolution, fresh.cubes[c].requested_resolution) << "cube " << c;
-      EXPECT_EQ(kept.cubes[c].position_far, fresh.cubes[c].position_far) << "cube " << c;
-      EXPECT_EQ(kept.cubes[c].views.view_projection, fresh.cubes[c].views.view_projection) << "cube " << c;
+      const std::string which = "cube " + std::to_string(c);
+      expect_same_view(kept.cubes[c], fresh.cubes[c], which);
+      EXPECT_EQ(kept.cubes[c].position_far, fresh.cubes[c].position_far) << which;
+      EXPECT_EQ(kept.cubes[c].views.view_projection, fresh.cubes[c].views.view_projection) << which;
       if (frame > 1) {
-        EXPECT_EQ(kept.cubes[c].changed, edited.contains(kept.cubes[c].key)) << "cube " << c;
+        EXPECT_EQ(kept.cubes[c].changed, edited.contains(kept.cubes[c].key)) << which;
       }
     }
     if (HasFailure()) return;
