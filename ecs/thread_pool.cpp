@@ -17,6 +17,7 @@ bool spin_until(const Done& done) {
 }
 
 std::uint32_t batch_of(std::uint64_t claim) { return static_cast<std::uint32_t>(claim >> 32); }
+std::uint32_t unclaimed_in(std::uint64_t claim) { return static_cast<std::uint32_t>(claim); }
 
 }  // namespace
 
@@ -53,7 +54,7 @@ void ThreadPool::run(std::size_t count, const Task& task) {
   count_.store(static_cast<std::uint32_t>(count), std::memory_order_relaxed);
   unfinished_.store(static_cast<std::uint32_t>(count), std::memory_order_relaxed);
   const std::uint32_t batch = batch_of(claim_.load(std::memory_order_relaxed)) + 1;
-  claim_.store(std::uint64_t{batch} << 32, std::memory_order_release);
+  claim_.store(std::uint64_t{batch} << 32 | count, std::memory_order_release);
   if (!threads_.empty()) signal_workers();
   drain(batch);
   const auto finished = [this] { return unfinished_.load(std::memory_order_acquire) == 0; };
@@ -70,15 +71,13 @@ void ThreadPool::drain(std::uint32_t batch) {
   for (;;) {
     std::uint64_t claim = claim_.load(std::memory_order_acquire);
     do {
-      // count_ may already be a newer batch's: then claim_ has moved on and the exchange fails.
-      if (batch_of(claim) != batch ||
-          static_cast<std::uint32_t>(claim) >= count_.load(std::memory_order_relaxed)) {
-        return;
-      }
-    } while (!claim_.compare_exchange_weak(claim, claim + 1, std::memory_order_acq_rel,
+      if (batch_of(claim) != batch || unclaimed_in(claim) == 0) return;
+    } while (!claim_.compare_exchange_weak(claim, claim - 1, std::memory_order_acq_rel,
                                            std::memory_order_acquire));
+    // Tasks are handed out in order, from the first.
+    const std::uint32_t index = count_.load(std::memory_order_relaxed) - unclaimed_in(claim);
     try {
-      (*task_.load(std::memory_order_relaxed))(static_cast<std::uint32_t>(claim));
+      (*task_.load(std::memory_order_relaxed))(index);
     } catch (...) {
       const std::lock_guard lock(error_mutex_);
       if (error_ == nullptr) error_ = std::current_exception();

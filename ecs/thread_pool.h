@@ -59,13 +59,16 @@ class ThreadPool {
   // Wakes sleeping workers: they re-read claim_ and spin for a while.
   void signal_workers();
 
-  // Tasks are claimed without a lock, one compare-exchange each: the batch number in the high
-  // half, the next unclaimed task in the low half, so a worker that wakes late can never claim a
-  // task of a newer batch under an old number. A mutex per claim cost more than the tasks of a
-  // short batch once a dozen threads contended for it.
+  // Tasks are claimed without a lock, one compare-exchange each on this word: the batch number in
+  // the high half, the count of tasks not yet claimed in the low half. Whether a task is left is
+  // read from this word alone. Read from count_, as it once was, a worker waking late could see
+  // the next batch's count_ beside the last batch's word, claim a task that did not exist, and
+  // drive unfinished_ below zero, so that the caller slept forever. A mutex per claim cost more
+  // than the tasks of a short batch once a dozen threads contended for it.
   std::atomic<std::uint64_t> claim_{0};
   // The current batch's tasks; written before claim_ announces the batch. A claim that succeeds
-  // proves its batch still runs, so these are that batch's when it reads them.
+  // proves its batch still runs, and its task keeps the batch running until it returns, so these
+  // are that batch's when the claimer reads them after the claim.
   std::atomic<const Task*> task_{nullptr};
   std::atomic<std::uint32_t> count_{0};
   std::atomic<std::uint32_t> unfinished_{0};  // tasks of the batch not returned yet

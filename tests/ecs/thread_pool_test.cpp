@@ -1,7 +1,13 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <mutex>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -19,6 +25,55 @@ TEST(ThreadPool, RunsEveryTaskOnceInEveryBatch) {
     threads.run(runs.size(), [&](std::size_t task) { runs[task].fetch_add(1); });
     for (const std::atomic<int>& count : runs) ASSERT_EQ(count.load(), 1) << "batch " << batch;
   }
+}
+
+// A worker that wakes late, while the caller announces the next and larger batch, must find no
+// task of the finished batch left. Once it could: it ran a task twice, the batch's count of
+// unfinished tasks wrapped below zero, and the caller slept forever. Many workers sharing few
+// cores and batches alternating between small and large make that moment likely enough that
+// the old pool failed about half the runs of this test (2 cores); a watchdog turns a hang into a failure.
+TEST(ThreadPool, LateWorkersNeverClaimATaskOfAFinishedBatch) {
+  std::mutex mutex;
+  std::condition_variable finished;
+  bool done = false;
+  std::thread watchdog([&] {
+    std::unique_lock lock(mutex);
+    if (!finished.wait_for(lock, std::chrono::minutes(2), [&] { return done; })) {
+      std::fprintf(stderr, "ThreadPool hung: a batch never finished\n");
+      std::abort();
+    }
+  });
+  const auto first_problem = [] {
+    ThreadPool threads(15);
+    std::vector<std::atomic<int>> runs(24);
+    for (int batch = 0; batch < 4'000'000; ++batch) {
+      const std::size_t count = batch % 2 == 1 ? runs.size() : 1 + batch / 2 % 4;
+      for (std::size_t task = 0; task < count; ++task) runs[task].store(0, std::memory_order_relaxed);
+      std::atomic<bool> out_of_range{false};
+      threads.run(count, [&](std::size_t task) {
+        if (task < count) {
+          runs[task].fetch_add(1, std::memory_order_relaxed);
+        } else {
+          out_of_range = true;
+        }
+      });
+      if (out_of_range) return "a task index past the batch's count in batch " + std::to_string(batch);
+      for (std::size_t task = 0; task < count; ++task) {
+        if (runs[task].load() != 1)
+          return "task " + std::to_string(task) + " of batch " + std::to_string(batch) + " ran " +
+                 std::to_string(runs[task].load()) + " times";
+      }
+    }
+    return std::string();
+  };
+  const std::string problem = first_problem();
+  {
+    const std::lock_guard lock(mutex);
+    done = true;
+  }
+  finished.notify_one();
+  watchdog.join();
+  EXPECT_EQ(problem, "");
 }
 
 // wake() is only a hint: batches after it, before it, with or without a pause (workers asleep
