@@ -1,6 +1,7 @@
 #include "systems/gpu_scene.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <utility>
 
@@ -110,76 +111,85 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
       [&](const scene::MeshInstance&) { reordered = true; });
   if (reordered) return false;
 
-  changed_.clear();
-  bool unknown = false;
+  // Which instances changed: each changed entity marks its instance, on the pool (thousands of
+  // them move each frame in a busy scene, each mark a few lookups), then the marked instances are
+  // listed in instance order and re-placed, with their bounds before.
+  std::atomic<bool> unknown{false};
   const auto note = [&](ecs::Entity entity) {
     const uint32_t at = entity.index < place_of_.size() ? place_of_[entity.index] : ecs::SparseSet::npos;
     if (at == ecs::SparseSet::npos || items_[at].entity != entity) {
-      unknown = true;  // it became an instance by gaining a component
-    } else if (written_at_[at] != gathers_) {
+      unknown.store(true, std::memory_order_relaxed);  // it became an instance by gaining a component
+    } else {
       written_at_[at] = gathers_;
-      changed_.push_back(at);
     }
   };
+  constexpr size_t entities_per_task = 512;
   world.query<const ecs::WorldTransform, const scene::MeshInstance>()
       .changed_since<ecs::WorldTransform>(since)
-      .for_each(
-          [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance&) { note(entity); });
+      .for_each_parallel(
+          pool,
+          [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance&) { note(entity); },
+          entities_per_task);
   world.query<const scene::Material, const ecs::WorldTransform, const scene::MeshInstance>()
       .changed_since<scene::Material>(since)
-      .for_each([&](ecs::Entity entity, const scene::Material&, const ecs::WorldTransform&,
-                    const scene::MeshInstance&) { note(entity); });
-  if (unknown) return false;
+      .for_each_parallel(
+          pool,
+          [&](ecs::Entity entity, const scene::Material&, const ecs::WorldTransform&,
+              const scene::MeshInstance&) { note(entity); },
+          entities_per_task);
+  if (unknown.load()) return false;
 
-  bounds_before_.resize(changed_.size());
-  ecs::run_in_pieces(pool, changed_.size(), 256, [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k) {
-      const uint32_t i = changed_[k];
-      bounds_before_[k] = bounds_[i];
-      place(world, i);
-      const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
-      if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
-    }
-  });
+  // Each piece of instances also grows the bounds of its moving ones, which it has at hand.
+  constexpr size_t instances_per_piece = 1024;
+  const size_t count = items_.size();
+  changed_.resize(count);
+  bounds_before_.resize(count);
+  moving_piece_bounds_.assign((count + instances_per_piece - 1) / instances_per_piece, scene::Aabb{});
+  const size_t changed_count = ecs::keep_in_pieces(
+      pool, count, instances_per_piece, keep_scratch_, [&](size_t i) { return written_at_[i] == gathers_; },
+      [&](size_t i, size_t k) {
+        changed_[k] = static_cast<uint32_t>(i);
+        bounds_before_[k] = bounds_[i];
+        place(world, i);
+        const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
+        if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
+        if (moved_at_[i] != 0) scene::grow(moving_piece_bounds_[i / instances_per_piece], bounds_[i]);
+      });
+  changed_.resize(changed_count);
+  bounds_before_.resize(changed_count);
+  const size_t moving_before = moving_.size();
   for (const uint32_t i : changed_) {
     if (moved_at_[i] == gathers_) moving_.push_back(i);
   }
-  if (!changed_.empty()) update_scene_bounds(pool);
+  if (!changed_.empty()) update_scene_bounds(moving_.size() != moving_before, pool);
   return true;
 }
 
-// The instances' bounds are kept grown per chunk of consecutive instances: a move regrows only
-// the chunks of the instances that changed (moving objects are usually a few meshes, so a few
-// chunks), then the scene's bounds from every chunk's. Exact, whether the bounds grow or shrink.
-void GpuScene::update_scene_bounds(ecs::ThreadPool* pool) {
-  // Flags rather than a sort: thousands of instances may move.
-  chunk_changed_.assign(chunk_bounds_.size(), 0);
-  for (const uint32_t i : changed_) chunk_changed_[i / instances_per_chunk] = 1;
-  regrown_chunks_.clear();
-  for (uint32_t chunk = 0; chunk < chunk_changed_.size(); ++chunk) {
-    if (chunk_changed_[chunk] != 0) regrown_chunks_.push_back(chunk);
+// The scene's bounds are the still instances' grown by the moving ones': the still ones' change
+// only when one starts moving (or at a layout), the moving ones' come from the pieces that
+// re-placed them. So a frame that moves thousands of instances reads no other instance's bounds,
+// and stays exact, whether the bounds grow or shrink.
+void GpuScene::update_scene_bounds(bool some_started_moving, ecs::ThreadPool* pool) {
+  if (some_started_moving) regrow_still_bounds(pool);
+  scene::Aabb bounds = still_bounds_;
+  for (const scene::Aabb& piece : moving_piece_bounds_) scene::grow(bounds, piece);
+  for (const uint32_t i : moving_) {
+    if (written_at_[i] != gathers_) scene::grow(bounds, bounds_[i]);  // moving, but not this frame
   }
-  regrow_chunks(pool);
+  scene_bounds_ = bounds;
 }
 
-void GpuScene::regrow_scene_bounds(ecs::ThreadPool* pool) {
-  chunk_bounds_.resize((bounds_.size() + instances_per_chunk - 1) / instances_per_chunk);
-  regrown_chunks_.resize(chunk_bounds_.size());
-  for (uint32_t chunk = 0; chunk < regrown_chunks_.size(); ++chunk) regrown_chunks_[chunk] = chunk;
-  regrow_chunks(pool);
-}
-
-void GpuScene::regrow_chunks(ecs::ThreadPool* pool) {
-  ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k) {
-      const uint32_t chunk = regrown_chunks_[k];
-      scene::Aabb& bounds = chunk_bounds_[chunk] = {};
-      const size_t last = std::min(bounds_.size(), size_t{chunk + 1} * instances_per_chunk);
-      for (size_t i = size_t{chunk} * instances_per_chunk; i < last; ++i) scene::grow(bounds, bounds_[i]);
+void GpuScene::regrow_still_bounds(ecs::ThreadPool* pool) {
+  constexpr size_t instances_per_piece = 2048;
+  std::vector<scene::Aabb> pieces((bounds_.size() + instances_per_piece - 1) / instances_per_piece);
+  ecs::run_in_pieces(pool, bounds_.size(), instances_per_piece, [&](size_t begin, size_t end) {
+    scene::Aabb& piece = pieces[begin / instances_per_piece];
+    for (size_t i = begin; i < end; ++i) {
+      if (moved_at_[i] == 0) scene::grow(piece, bounds_[i]);
     }
   });
-  scene_bounds_ = {};
-  for (const scene::Aabb& chunk : chunk_bounds_) scene::grow(scene_bounds_, chunk);
+  still_bounds_ = {};
+  for (const scene::Aabb& piece : pieces) scene::grow(still_bounds_, piece);
 }
 
 void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
@@ -222,7 +232,8 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   ecs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) place(world, i);
   });
-  regrow_scene_bounds(pool);
+  regrow_still_bounds(pool);  // every instance is still now
+  scene_bounds_ = still_bounds_;
 
   commands_.clear();
   caster_groups_.clear();
