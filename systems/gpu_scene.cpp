@@ -1,7 +1,6 @@
 #include "systems/gpu_scene.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cstring>
 #include <utility>
 
@@ -111,52 +110,45 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
       [&](const scene::MeshInstance&) { reordered = true; });
   if (reordered) return false;
 
-  // Which instances changed: each changed entity marks its instance, on the pool (thousands of
-  // them move each frame in a busy scene, each mark a few lookups), then the marked instances are
-  // listed in instance order and re-placed, with their bounds before.
-  std::atomic<bool> unknown{false};
+  changed_.clear();
+  bool unknown = false;
   const auto note = [&](ecs::Entity entity) {
     const uint32_t at = entity.index < place_of_.size() ? place_of_[entity.index] : ecs::SparseSet::npos;
     if (at == ecs::SparseSet::npos || items_[at].entity != entity) {
-      unknown.store(true, std::memory_order_relaxed);  // it became an instance by gaining a component
-    } else {
+      unknown = true;  // it became an instance by gaining a component
+    } else if (written_at_[at] != gathers_) {
       written_at_[at] = gathers_;
+      changed_.push_back(at);
     }
   };
-  constexpr size_t entities_per_task = 512;
   world.query<const ecs::WorldTransform, const scene::MeshInstance>()
       .changed_since<ecs::WorldTransform>(since)
-      .for_each_parallel(
-          pool,
-          [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance&) { note(entity); },
-          entities_per_task);
+      .for_each(
+          [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance&) { note(entity); });
   world.query<const scene::Material, const ecs::WorldTransform, const scene::MeshInstance>()
       .changed_since<scene::Material>(since)
-      .for_each_parallel(
-          pool,
-          [&](ecs::Entity entity, const scene::Material&, const ecs::WorldTransform&,
-              const scene::MeshInstance&) { note(entity); },
-          entities_per_task);
-  if (unknown.load()) return false;
+      .for_each([&](ecs::Entity entity, const scene::Material&, const ecs::WorldTransform&,
+                    const scene::MeshInstance&) { note(entity); });
+  if (unknown) return false;
 
-  // Each piece of instances also grows the bounds of its moving ones, which it has at hand.
-  constexpr size_t instances_per_piece = 1024;
-  const size_t count = items_.size();
-  changed_.resize(count);
-  bounds_before_.resize(count);
-  moving_piece_bounds_.assign((count + instances_per_piece - 1) / instances_per_piece, scene::Aabb{});
-  const size_t changed_count = ecs::keep_in_pieces(
-      pool, count, instances_per_piece, keep_scratch_, [&](size_t i) { return written_at_[i] == gathers_; },
-      [&](size_t i, size_t k) {
-        changed_[k] = static_cast<uint32_t>(i);
-        bounds_before_[k] = bounds_[i];
-        place(world, i);
-        const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
-        if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
-        if (moved_at_[i] != 0) scene::grow(moving_piece_bounds_[i / instances_per_piece], bounds_[i]);
-      });
-  changed_.resize(changed_count);
-  bounds_before_.resize(changed_count);
+  // Re-placed in the order the queries list them, the order the transform update wrote their
+  // matrices in: by instance, reading matrices that other cores had just written, this took
+  // 0.1 ms more with 1,024 moving lights on an H200 host. Each piece also grows the bounds of its
+  // moving instances, which it has at hand.
+  constexpr size_t changes_per_piece = 256;
+  bounds_before_.resize(changed_.size());
+  moving_piece_bounds_.assign((changed_.size() + changes_per_piece - 1) / changes_per_piece, scene::Aabb{});
+  ecs::run_in_pieces(pool, changed_.size(), changes_per_piece, [&](size_t begin, size_t end) {
+    scene::Aabb& moving = moving_piece_bounds_[begin / changes_per_piece];
+    for (size_t k = begin; k < end; ++k) {
+      const uint32_t i = changed_[k];
+      bounds_before_[k] = bounds_[i];
+      place(world, i);
+      const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
+      if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
+      if (moved_at_[i] != 0) scene::grow(moving, bounds_[i]);
+    }
+  });
   const size_t moving_before = moving_.size();
   for (const uint32_t i : changed_) {
     if (moved_at_[i] == gathers_) moving_.push_back(i);

@@ -13,7 +13,6 @@
 
 #include <vulkan/vulkan.h>
 
-#include "ecs/parallel_pieces.h"
 #include "ecs/thread_pool.h"
 #include "ecs/world.h"
 #include "rendergraph/core/resource_types.h"
@@ -157,7 +156,6 @@ class GpuScene {
   std::vector<scene::Aabb> bounds_;
   scene::Aabb still_bounds_;                      // of the instances that are not moving
   std::vector<scene::Aabb> moving_piece_bounds_;  // gather_changes': per piece, its moving instances'
-  ecs::KeepScratch keep_scratch_;
   std::vector<uint64_t> keys_;
   scene::Aabb scene_bounds_;
   std::vector<VkDrawIndexedIndirectCommand> commands_;
