@@ -131,57 +131,55 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
                     const scene::MeshInstance&) { note(entity); });
   if (unknown) return false;
 
-  // Re-placed in the order the queries list them, the order the transform update wrote their
-  // matrices in: by instance, reading matrices that other cores had just written, this took
-  // 0.1 ms more with 1,024 moving lights on an H200 host. Each piece also grows the bounds of its
-  // moving instances, which it has at hand.
-  constexpr size_t changes_per_piece = 256;
   bounds_before_.resize(changed_.size());
-  moving_piece_bounds_.assign((changed_.size() + changes_per_piece - 1) / changes_per_piece, scene::Aabb{});
-  ecs::run_in_pieces(pool, changed_.size(), changes_per_piece, [&](size_t begin, size_t end) {
-    scene::Aabb& moving = moving_piece_bounds_[begin / changes_per_piece];
+  ecs::run_in_pieces(pool, changed_.size(), 256, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       const uint32_t i = changed_[k];
       bounds_before_[k] = bounds_[i];
       place(world, i);
       const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
       if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
-      if (moved_at_[i] != 0) scene::grow(moving, bounds_[i]);
     }
   });
-  const size_t moving_before = moving_.size();
   for (const uint32_t i : changed_) {
     if (moved_at_[i] == gathers_) moving_.push_back(i);
   }
-  if (!changed_.empty()) update_scene_bounds(moving_.size() != moving_before, pool);
+  if (!changed_.empty()) update_scene_bounds(pool);
   return true;
 }
 
-// The scene's bounds are the still instances' grown by the moving ones': the still ones' change
-// only when one starts moving (or at a layout), the moving ones' come from the pieces that
-// re-placed them. So a frame that moves thousands of instances reads no other instance's bounds,
-// and stays exact, whether the bounds grow or shrink.
-void GpuScene::update_scene_bounds(bool some_started_moving, ecs::ThreadPool* pool) {
-  if (some_started_moving) regrow_still_bounds(pool);
-  scene::Aabb bounds = still_bounds_;
-  for (const scene::Aabb& piece : moving_piece_bounds_) scene::grow(bounds, piece);
-  for (const uint32_t i : moving_) {
-    if (written_at_[i] != gathers_) scene::grow(bounds, bounds_[i]);  // moving, but not this frame
+// The instances' bounds are kept grown per chunk of consecutive instances: a move regrows only
+// the chunks of the instances that changed (moving objects are usually a few meshes, so a few
+// chunks), then the scene's bounds from every chunk's. Exact, whether the bounds grow or shrink.
+void GpuScene::update_scene_bounds(ecs::ThreadPool* pool) {
+  // Flags rather than a sort: thousands of instances may move.
+  chunk_changed_.assign(chunk_bounds_.size(), 0);
+  for (const uint32_t i : changed_) chunk_changed_[i / instances_per_chunk] = 1;
+  regrown_chunks_.clear();
+  for (uint32_t chunk = 0; chunk < chunk_changed_.size(); ++chunk) {
+    if (chunk_changed_[chunk] != 0) regrown_chunks_.push_back(chunk);
   }
-  scene_bounds_ = bounds;
+  regrow_chunks(pool);
 }
 
-void GpuScene::regrow_still_bounds(ecs::ThreadPool* pool) {
-  constexpr size_t instances_per_piece = 2048;
-  std::vector<scene::Aabb> pieces((bounds_.size() + instances_per_piece - 1) / instances_per_piece);
-  ecs::run_in_pieces(pool, bounds_.size(), instances_per_piece, [&](size_t begin, size_t end) {
-    scene::Aabb& piece = pieces[begin / instances_per_piece];
-    for (size_t i = begin; i < end; ++i) {
-      if (moved_at_[i] == 0) scene::grow(piece, bounds_[i]);
+void GpuScene::regrow_scene_bounds(ecs::ThreadPool* pool) {
+  chunk_bounds_.resize((bounds_.size() + instances_per_chunk - 1) / instances_per_chunk);
+  regrown_chunks_.resize(chunk_bounds_.size());
+  for (uint32_t chunk = 0; chunk < regrown_chunks_.size(); ++chunk) regrown_chunks_[chunk] = chunk;
+  regrow_chunks(pool);
+}
+
+void GpuScene::regrow_chunks(ecs::ThreadPool* pool) {
+  ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      const uint32_t chunk = regrown_chunks_[k];
+      scene::Aabb& bounds = chunk_bounds_[chunk] = {};
+      const size_t last = std::min(bounds_.size(), size_t{chunk + 1} * instances_per_chunk);
+      for (size_t i = size_t{chunk} * instances_per_chunk; i < last; ++i) scene::grow(bounds, bounds_[i]);
     }
   });
-  still_bounds_ = {};
-  for (const scene::Aabb& piece : pieces) scene::grow(still_bounds_, piece);
+  scene_bounds_ = {};
+  for (const scene::Aabb& chunk : chunk_bounds_) scene::grow(scene_bounds_, chunk);
 }
 
 void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
@@ -224,8 +222,7 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   ecs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) place(world, i);
   });
-  regrow_still_bounds(pool);  // every instance is still now
-  scene_bounds_ = still_bounds_;
+  regrow_scene_bounds(pool);
 
   commands_.clear();
   caster_groups_.clear();
@@ -254,14 +251,16 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
 void GpuScene::upload(uint32_t slot, ecs::ThreadPool* pool) {
   // Megabytes a frame with many instances, so a slot gets only the records written since it was
   // last uploaded, unless the layout changed or its buffer is new. Copies run in chunks on the
-  // pool, as writes into mapped GPU memory go faster from several cores.
+  // pool, as writes into mapped GPU memory go faster from several cores; chunks of 1,024 records,
+  // as the instances that moved are often of one mesh, so consecutive, and in chunks of 4,096 the
+  // stress scene's moving crates fell to one or two threads.
   const std::span<const GpuInstance> instances(sorted_);
   const bool grows = instances_.buffer(slot).size() < instances.size_bytes();
   const vk::Buffer& buffer = instances_.reserve(slot, instances.size_bytes());
   auto* mapped = static_cast<GpuInstance*>(buffer.mapped());
   const uint64_t uploaded_at = std::exchange(uploaded_at_[slot], gathers_);
   const bool everything = grows || uploaded_at < laid_out_at_;
-  ecs::run_in_pieces(pool, instances.size(), 4096, [&](size_t begin, size_t end) {
+  ecs::run_in_pieces(pool, instances.size(), 1024, [&](size_t begin, size_t end) {
     if (everything) {
       std::memcpy(mapped + begin, instances.data() + begin, (end - begin) * sizeof(GpuInstance));
       return;

@@ -133,11 +133,12 @@ class GpuScene {
   // instances were added, removed or reordered.
   bool gather_changes(const ecs::World& world, ecs::Tick since, ecs::ThreadPool* pool);
   void gather_all(const ecs::World& world, ecs::ThreadPool* pool);
-  // The scene's bounds after the changed_ instances were re-placed; `some_started_moving`: some
-  // of them were still before.
-  void update_scene_bounds(bool some_started_moving, ecs::ThreadPool* pool);
-  // still_bounds_ from every still instance's bounds.
-  void regrow_still_bounds(ecs::ThreadPool* pool);
+  // The scene's bounds from every instance's.
+  void regrow_scene_bounds(ecs::ThreadPool* pool);
+  // The scene's bounds after the changed_ instances' bounds changed.
+  void update_scene_bounds(ecs::ThreadPool* pool);
+  // chunk_bounds_ of the regrown_chunks_ from their instances' bounds, then the scene's bounds.
+  void regrow_chunks(ecs::ThreadPool* pool);
 
   ecs::Tick gathered_at_ = 0;               // the world's tick at the last gather
   uint64_t gathers_ = 0;                    // gather() calls so far
@@ -154,8 +155,11 @@ class GpuScene {
   std::vector<uint32_t> slot_starts_;  // counting sort: per (mesh, caster or not)
   std::vector<GpuInstance> sorted_;
   std::vector<scene::Aabb> bounds_;
-  scene::Aabb still_bounds_;                      // of the instances that are not moving
-  std::vector<scene::Aabb> moving_piece_bounds_;  // gather_changes': per piece, its moving instances'
+  // The bounds of each chunk of instances_per_chunk consecutive instances (the last may be short).
+  static constexpr size_t instances_per_chunk = 2048;
+  std::vector<scene::Aabb> chunk_bounds_;
+  std::vector<uint8_t> chunk_changed_;    // update_scene_bounds': per chunk, whether an instance changed
+  std::vector<uint32_t> regrown_chunks_;  // the chunks regrow_chunks regrows
   std::vector<uint64_t> keys_;
   scene::Aabb scene_bounds_;
   std::vector<VkDrawIndexedIndirectCommand> commands_;

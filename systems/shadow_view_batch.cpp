@@ -331,7 +331,9 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
   };
   auto* casters = static_cast<Caster*>(
       caster_buffers_.reserve(slot, (caster_count + moving_count_) * sizeof(Caster)).mapped());
-  ecs::run_in_pieces(pool, caster_count, 2048, [&](size_t begin, size_t end) {
+  // Pieces of 512 casters (16 KiB of records): 15,000 casters in pieces of 2,048 left half of
+  // 16 threads without a piece.
+  ecs::run_in_pieces(pool, caster_count, 512, [&](size_t begin, size_t end) {
     auto g = static_cast<uint32_t>(
         std::upper_bound(group_first_caster_.begin(), group_first_caster_.end(), begin) -
         group_first_caster_.begin() - 1);

@@ -130,14 +130,14 @@ TEST_F(GpuSceneTest, AFrameWithoutWritesKeepsEveryInstance) {
   EXPECT_FLOAT_EQ(gpu.bounds().max.y, before.max.y + 2.0f) << "and grows the scene's bounds";
 }
 
-// The scene's bounds follow moves without reading every instance (the still ones' bounds are
-// kept, the moving ones' grown): a box moving inside them leaves them as they were; a box that
-// held a face and moves in shrinks them, among the first instances or the last; a moving box
-// that did not move this frame still holds its face.
+// The scene's bounds follow moves without reading every instance (only the chunks of the moved
+// ones): a box moving inside them leaves them as they were; a box that held a face and moves in
+// shrinks them, in the first chunk of instances or the last; a box that moved before but not
+// this frame still holds its face.
 TEST_F(GpuSceneTest, SceneBoundsShrinkWhenABoxThatHeldAFaceMovesIn) {
   scene::Scene s;
   const uint32_t box = scene::add_box_mesh(s.meshes);
-  std::vector<ecs::Entity> fillers;  // thousands of instances inside the others
+  std::vector<ecs::Entity> fillers;  // more instances than one chunk holds, inside the others
   for (int i = 0; i < 5000; ++i) {
     const glm::vec3 at(float(i % 50) * 0.1f - 2.5f, float(i / 50 % 10) * 0.1f, float(i / 500) * 0.1f - 0.5f);
     fillers.push_back(scene::add_instance(s, box, {at}, scene::Material{}));
