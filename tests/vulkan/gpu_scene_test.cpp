@@ -50,19 +50,32 @@ TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
   std::mt19937 random(7);
   ecs::Tick transforms_at = 0;
 
+  ecs::Entity pending;
   for (uint32_t frame = 0; frame < 12; ++frame) {
     std::vector<ecs::Entity> all = instances_of(world);
     ASSERT_GT(all.size(), 20u);
     // Most frames move a few instances and recolour one; some change the instance set.
+    ecs::Entity moved;
     for (int m = 0; m < 5; ++m) {
-      ecs::LocalTransform& local = world.get_mut<ecs::LocalTransform>(all[random() % all.size()]);
-      local.translation.x += 0.5f;
+      moved = all[random() % all.size()];
+      world.get_mut<ecs::LocalTransform>(moved).translation.x += 0.5f;
     }
-    world.get_mut<scene::Material>(all[random() % all.size()]).base_color.r = float(frame) / 12.0f;
+    const auto recolour = [&](ecs::Entity entity, int channel) {
+      if (world.has<scene::Material>(entity)) {
+        world.get_mut<scene::Material>(entity).base_color[channel] = float(frame) / 12.0f;
+      }
+    };
+    recolour(all[random() % all.size()], 0);
+    recolour(moved, 1);  // moved and recoloured in one frame
     if (frame == 3) scene::add_instance(s, 0, {{1.0f, 2.0f, 3.0f}}, scene::Material{});
     if (frame == 5) world.destroy(all[random() % all.size()]);
     if (frame == 7) world.get_mut<scene::MeshInstance>(all[random() % all.size()]).casts_shadow = false;
     if (frame == 9) world.remove<scene::Material>(all[random() % all.size()]);
+    // An instance without transforms is no instance yet; gaining them makes it one.
+    if (frame == 9) pending = world.create();
+    if (frame == 9) world.add<scene::MeshInstance>(pending, scene::MeshInstance{0, true});
+    if (frame == 11) world.add<ecs::LocalTransform>(pending, ecs::LocalTransform{{2.0f, 1.0f, 0.0f}});
+    if (frame == 11) world.add<ecs::WorldTransform>(pending);
     ecs::update_world_transforms(world, transforms_at);
     transforms_at = world.tick();
     world.advance_tick();
@@ -91,6 +104,7 @@ TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
       std::vector<bool> listed(kept.instance_count(), false);
       for (size_t k = 0; k < kept.replaced().size(); ++k) {
         const uint32_t i = kept.replaced()[k];
+        EXPECT_FALSE(listed[i]) << "instance " << i << " listed twice";
         listed[i] = true;
         EXPECT_EQ(kept.replaced_bounds_before()[k].min, before[i].min);
         EXPECT_EQ(kept.replaced_bounds_before()[k].max, before[i].max);
