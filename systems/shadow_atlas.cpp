@@ -69,9 +69,7 @@ bool ShadowAtlas::fit(uint32_t pages) {
   return true;
 }
 
-uint32_t ShadowAtlas::texel_bytes() const {
-  return shadows::atlas_texel_bytes * (keeps_static_layers_ ? 2 : 1);
-}
+uint32_t ShadowAtlas::texel_bytes() const { return shadows::atlas_texel_cost(keeps_static_layers_); }
 
 uint64_t ShadowAtlas::bytes() const {
   return uint64_t{shape_.page_size} * shape_.page_size * pages_ * texel_bytes();

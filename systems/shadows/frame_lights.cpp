@@ -198,7 +198,7 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
       scratch.packed[i] = out.records[i];
     }
   });
-  scratch.last_gathered = gathered;
+  std::swap(scratch.last_gathered, gathered);  // this list is cleared and refilled next time
   scratch.last_overrides = overrides;
 }
 

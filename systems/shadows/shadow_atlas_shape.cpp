@@ -9,16 +9,17 @@ uint64_t default_shadow_budget(const DeviceShadowLimits& device) {
 }
 
 AtlasShape atlas_shape(uint64_t budget_bytes, const DeviceShadowLimits& device, bool static_layers) {
-  const uint32_t copies = static_layers ? 2 : 1;
   uint32_t page = std::min(largest_atlas_page, device.max_image_dimension);
+  // What the budget pays for a page, and what a page takes of one allocation (the image, or the
+  // static layers' buffer, which a shader also binds whole).
+  const auto page_cost = [&] { return uint64_t{page} * page * atlas_texel_cost(static_layers); };
   const auto page_bytes = [&] { return uint64_t{page} * page * atlas_texel_bytes; };
-  while (page > smallest_atlas_page && copies * page_bytes() > budget_bytes) page /= 2;
-  uint64_t allowed = std::min(budget_bytes / copies, device.max_allocation_bytes);
-  if (static_layers) allowed = std::min(allowed, device.max_storage_buffer_bytes);
-  const auto pages =
-      static_cast<uint32_t>(std::min<uint64_t>(allowed / page_bytes(), device.max_array_layers));
-  AtlasShape shape{page, std::max(pages, 1u), 0};
-  shape.budget_bytes = uint64_t{shape.max_pages} * page_bytes() * copies;
+  while (page > smallest_atlas_page && page_cost() > budget_bytes) page /= 2;
+  uint64_t pages = std::min<uint64_t>(
+      {budget_bytes / page_cost(), device.max_allocation_bytes / page_bytes(), device.max_array_layers});
+  if (static_layers) pages = std::min(pages, device.max_storage_buffer_bytes / page_bytes());
+  AtlasShape shape{page, std::max(static_cast<uint32_t>(pages), 1u), 0};
+  shape.budget_bytes = uint64_t{shape.max_pages} * page_cost();
   return shape;
 }
 

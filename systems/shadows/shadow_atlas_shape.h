@@ -23,6 +23,11 @@ struct AtlasShape {
 };
 
 inline constexpr uint32_t atlas_texel_bytes = 4;  // D32_SFLOAT, or a float of the static layers
+// What the budget pays for a texel of a page: its depth, and its float in the static layers
+// where the renderer keeps them.
+inline constexpr uint32_t atlas_texel_cost(bool static_layers) {
+  return atlas_texel_bytes * (static_layers ? 2 : 1);
+}
 inline constexpr uint32_t largest_atlas_page = 4096;
 inline constexpr uint32_t smallest_atlas_page = 256;
 
