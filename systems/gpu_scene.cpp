@@ -111,6 +111,7 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   if (reordered) return false;
 
   changed_.clear();
+  chunk_starts_.assign(chunk_bounds_.size() + 1, 0);
   bool unknown = false;
   const auto note = [&](ecs::Entity entity) {
     const uint32_t at = entity.index < place_of_.size() ? place_of_[entity.index] : ecs::SparseSet::npos;
@@ -119,6 +120,7 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
     } else if (written_at_[at] != gathers_) {
       written_at_[at] = gathers_;
       changed_.push_back(at);
+      ++chunk_starts_[at / instances_per_chunk + 1];
     }
   };
   world.query<const ecs::WorldTransform, const scene::MeshInstance>()
@@ -130,54 +132,56 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
       .for_each([&](ecs::Entity entity, const scene::Material&, const ecs::WorldTransform&,
                     const scene::MeshInstance&) { note(entity); });
   if (unknown) return false;
+  if (changed_.empty()) return true;
+
+  // By chunk (a counting sort), so that one task re-places a chunk's changed instances and then
+  // regrows the chunk's bounds from what it just wrote, in its own cache: bounds written by other
+  // cores took longer to read back than the re-placing itself.
+  regrown_chunks_.clear();
+  for (uint32_t chunk = 0; chunk + 1 < chunk_starts_.size(); ++chunk) {
+    if (chunk_starts_[chunk + 1] != 0) regrown_chunks_.push_back(chunk);
+    chunk_starts_[chunk + 1] += chunk_starts_[chunk];
+  }
+  by_chunk_.resize(changed_.size());
+  for (const uint32_t i : changed_) by_chunk_[chunk_starts_[i / instances_per_chunk]++] = i;
+  std::swap(changed_, by_chunk_);  // chunk_starts_[c] is now where chunk c + 1's changes begin
 
   bounds_before_.resize(changed_.size());
-  ecs::run_in_pieces(pool, changed_.size(), 256, [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k) {
-      const uint32_t i = changed_[k];
-      bounds_before_[k] = bounds_[i];
-      place(world, i);
-      const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
-      if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
+  ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
+    for (size_t n = begin; n < end; ++n) {
+      const uint32_t chunk = regrown_chunks_[n];
+      for (size_t k = chunk == 0 ? 0 : chunk_starts_[chunk - 1]; k < chunk_starts_[chunk]; ++k) {
+        const uint32_t i = changed_[k];
+        bounds_before_[k] = bounds_[i];
+        place(world, i);
+        const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
+        if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
+      }
+      regrow_chunk(chunk);
     }
   });
+  grow_scene_bounds();
   for (const uint32_t i : changed_) {
     if (moved_at_[i] == gathers_) moving_.push_back(i);
   }
-  if (!changed_.empty()) update_scene_bounds(pool);
   return true;
-}
-
-// The instances' bounds are kept grown per chunk of consecutive instances: a move regrows only
-// the chunks of the instances that changed (moving objects are usually a few meshes, so a few
-// chunks), then the scene's bounds from every chunk's. Exact, whether the bounds grow or shrink.
-void GpuScene::update_scene_bounds(ecs::ThreadPool* pool) {
-  // Flags rather than a sort: thousands of instances may move.
-  chunk_changed_.assign(chunk_bounds_.size(), 0);
-  for (const uint32_t i : changed_) chunk_changed_[i / instances_per_chunk] = 1;
-  regrown_chunks_.clear();
-  for (uint32_t chunk = 0; chunk < chunk_changed_.size(); ++chunk) {
-    if (chunk_changed_[chunk] != 0) regrown_chunks_.push_back(chunk);
-  }
-  regrow_chunks(pool);
 }
 
 void GpuScene::regrow_scene_bounds(ecs::ThreadPool* pool) {
   chunk_bounds_.resize((bounds_.size() + instances_per_chunk - 1) / instances_per_chunk);
-  regrown_chunks_.resize(chunk_bounds_.size());
-  for (uint32_t chunk = 0; chunk < regrown_chunks_.size(); ++chunk) regrown_chunks_[chunk] = chunk;
-  regrow_chunks(pool);
+  ecs::run_in_pieces(pool, chunk_bounds_.size(), 1, [&](size_t begin, size_t end) {
+    for (size_t chunk = begin; chunk < end; ++chunk) regrow_chunk(chunk);
+  });
+  grow_scene_bounds();
 }
 
-void GpuScene::regrow_chunks(ecs::ThreadPool* pool) {
-  ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k) {
-      const uint32_t chunk = regrown_chunks_[k];
-      scene::Aabb& bounds = chunk_bounds_[chunk] = {};
-      const size_t last = std::min(bounds_.size(), size_t{chunk + 1} * instances_per_chunk);
-      for (size_t i = size_t{chunk} * instances_per_chunk; i < last; ++i) scene::grow(bounds, bounds_[i]);
-    }
-  });
+void GpuScene::regrow_chunk(size_t chunk) {
+  scene::Aabb& bounds = chunk_bounds_[chunk] = {};
+  const size_t last = std::min(bounds_.size(), (chunk + 1) * instances_per_chunk);
+  for (size_t i = chunk * instances_per_chunk; i < last; ++i) scene::grow(bounds, bounds_[i]);
+}
+
+void GpuScene::grow_scene_bounds() {
   scene_bounds_ = {};
   for (const scene::Aabb& chunk : chunk_bounds_) scene::grow(scene_bounds_, chunk);
 }

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "ecs/thread_pool.h"
 #include "ecs/transform_system.h"
 #include "systems/gpu_scene.h"
 #include "systems/scene/builtin_scenes.h"
@@ -38,25 +39,28 @@ void expect_same_boxes(std::span<const scene::Aabb> a, std::span<const scene::Aa
 
 class GpuSceneTest : public GpuTest {};
 
+// On a pool, with instances in several chunks of the scene's bounds, so that moves fall into
+// different chunks and the pieces run concurrently.
 TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
   scene::BuiltinSceneParams params;
-  params.triangles = 4000;
+  params.triangles = 40000;
   params.point_lights = 0;
   params.spot_lights = 0;
   scene::Scene s = scene::build_scene("stress", params);
   ecs::World& world = s.world;
   constexpr uint32_t slots = 2;
   GpuScene kept(context, s.meshes, slots);
+  ecs::ThreadPool pool(3);
   std::mt19937 random(7);
   ecs::Tick transforms_at = 0;
 
   ecs::Entity pending;
   for (uint32_t frame = 0; frame < 12; ++frame) {
     std::vector<ecs::Entity> all = instances_of(world);
-    ASSERT_GT(all.size(), 20u);
+    ASSERT_GT(all.size(), 2000u);
     // Most frames move a few instances and recolour one; some change the instance set.
     ecs::Entity moved;
-    for (int m = 0; m < 5; ++m) {
+    for (int m = 0; m < 40; ++m) {
       moved = all[random() % all.size()];
       world.get_mut<ecs::LocalTransform>(moved).translation.x += 0.5f;
     }
@@ -82,8 +86,8 @@ TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
 
     const uint32_t slot = frame % slots;
     const std::vector<scene::Aabb> before(kept.instance_bounds().begin(), kept.instance_bounds().end());
-    kept.gather(world);
-    kept.upload(slot);
+    kept.gather(world, &pool);
+    kept.upload(slot, &pool);
     GpuScene fresh(context, s.meshes, 1);
     fresh.gather(world);
     fresh.upload(0);
