@@ -25,7 +25,7 @@ RunRecord render_headless_frames(SandboxFrame& frame, vk::FrameRing& ring, uint3
     const auto frame_start = std::chrono::steady_clock::now();  // before the waits
     if (i > 0) record.wall_frame_ms.push_back(milliseconds(frame_start - previous_start));
     previous_start = frame_start;
-    vk::FrameSlot& slot = ring.begin_frame();
+    vk::FrameSlot& slot = frame.begin(ring);
     const auto start = std::chrono::steady_clock::now();  // after the wait for the GPU
     frame.record(slot, double(first_frame + i) * frame_seconds);
     ring.submit();

@@ -112,6 +112,12 @@ void SandboxFrame::resize(VkExtent2D extent) {
                                 VK_IMAGE_VIEW_TYPE_2D, "frame"});
 }
 
+vk::FrameSlot& SandboxFrame::begin(vk::FrameRing& ring) {
+  // Woken workers wait for a batch this long before they sleep again: half of it leaves room
+  // for a wait that ends later than the last one did.
+  return ring.begin_frame([this] { renderer_.workers().wake(); }, ecs::ThreadPool::spin_time / 2);
+}
+
 void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
                           const std::optional<PresentTarget>& present) {
   auto mark = std::chrono::steady_clock::now();

@@ -60,6 +60,10 @@ class SandboxFrame {
   // (Re)creates the frame image. The GPU must not be using the old one (wait idle first).
   void resize(VkExtent2D extent);
 
+  // ring.begin_frame(), waking the worker threads of record()'s batches shortly before the wait
+  // for the GPU ends: asleep since the last frame, they took longer to wake than the frame's
+  // first batches take to run.
+  vk::FrameSlot& begin(vk::FrameRing& ring);
   // Runs the frame's phases for the scene at `time_seconds` and records the commands into
   // `frame.cmd`.
   void record(const vk::FrameSlot& frame, double time_seconds,

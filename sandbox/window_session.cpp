@@ -126,7 +126,7 @@ FrameResult WindowSession::frame() {
     return ready_ ? FrameResult::swapchain_recreated : FrameResult::minimized;
   }
 
-  vk::FrameSlot& frame = frames_->begin_frame();
+  vk::FrameSlot& frame = frame_->begin(*frames_);
   const std::optional<uint32_t> image = swapchain_->acquire(frame.image_acquired);
   if (!image) {
     ready_ = false;

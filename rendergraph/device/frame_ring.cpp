@@ -1,5 +1,7 @@
 #include "rendergraph/device/frame_ring.h"
 
+#include <algorithm>
+
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/vulkan_error.h"
 
@@ -38,10 +40,23 @@ FrameRing::FrameRing(VulkanContext& context, uint32_t frames_in_flight) : contex
 
 FrameRing::~FrameRing() { wait_idle(); }
 
-FrameSlot& FrameRing::begin_frame() {
+FrameSlot& FrameRing::begin_frame() { return begin_frame(nullptr, {}); }
+
+FrameSlot& FrameRing::begin_frame(const std::function<void()>& nearly_ready, std::chrono::microseconds lead) {
   Slot& slot = slots_[frame_number_ % slots_.size()];
   const VkFence fence = slot.done.get();
+  const auto start = std::chrono::steady_clock::now();
+  if (nearly_ready) {
+    const auto until_nearly_ready = std::max(last_wait_ - lead, std::chrono::steady_clock::duration::zero());
+    const VkResult early = vkWaitForFences(
+        context_.device(), 1, &fence, VK_TRUE,
+        static_cast<uint64_t>(
+            std::chrono::duration_cast<std::chrono::nanoseconds>(until_nearly_ready).count()));
+    if (early != VK_TIMEOUT) check(early, "vkWaitForFences");
+    nearly_ready();
+  }
   check(vkWaitForFences(context_.device(), 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  last_wait_ = std::chrono::steady_clock::now() - start;
   // The fence is reset at submit, so a frame abandoned before submission (an out-of-date
   // swapchain) leaves the slot reusable instead of waiting forever on an unsignalled fence.
   check(vkResetCommandPool(context_.device(), slot.pool.get(), 0), "vkResetCommandPool");

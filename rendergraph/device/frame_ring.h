@@ -2,7 +2,9 @@
 // Per-frame command recording with a fixed number of frames in flight: the CPU records
 // frame N+1 while the GPU still runs frame N, and waits only when it would overwrite the
 // command buffer of a frame the GPU has not finished.
+#include <chrono>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -36,6 +38,12 @@ class FrameRing {
   // Waits until the slot's previous use finished on the GPU, then begins its command buffer.
   // A frame begun and never submitted is simply dropped by the next begin_frame.
   FrameSlot& begin_frame();
+  // The same, calling `nearly_ready` once before it returns: `lead` before the wait is expected
+  // to end (the last wait's length foretells this one's), or when the wait ends if that is
+  // sooner. For what takes a while to get going once a frame starts, such as threads that fell
+  // asleep during the wait: woken here, their wake-up overlaps the GPU's work instead of the
+  // frame's.
+  FrameSlot& begin_frame(const std::function<void()>& nearly_ready, std::chrono::microseconds lead);
   // Ends and submits the current frame's commands.
   void submit(std::span<const SemaphoreWait> waits = {}, std::span<const VkSemaphore> signals = {});
   // Waits for every submitted frame.
@@ -53,6 +61,7 @@ class FrameRing {
   VulkanContext& context_;
   std::vector<Slot> slots_;
   uint64_t frame_number_ = 0;
+  std::chrono::steady_clock::duration last_wait_{};  // begin_frame's last wait for its slot
   Slot* current_ = nullptr;
   // Reused by submit() so a frame allocates nothing.
   std::vector<VkSemaphoreSubmitInfo> wait_infos_;
