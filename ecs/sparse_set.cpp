@@ -25,10 +25,10 @@ void SparseSet::mark_range_changed(std::uint32_t begin, std::uint32_t end, Tick 
   std::fill(ticks_.begin() + begin, ticks_.begin() + end, now);
   // Neighbouring ranges share the summaries at their ends: relaxed atomic stores of one tick.
   for (std::uint32_t block = begin / slots_per_block; block <= (end - 1) / slots_per_block; ++block) {
-    std::atomic_ref(block_ticks_[block]).store(now, std::memory_order_relaxed);
+    mark_summary(block_ticks_[block], now);
   }
   for (std::uint32_t group = begin / slots_per_group; group <= (end - 1) / slots_per_group; ++group) {
-    std::atomic_ref(group_ticks_[group]).store(now, std::memory_order_relaxed);
+    mark_summary(group_ticks_[group], now);
   }
 }
 

@@ -95,8 +95,8 @@ class SparseSet {
     Tick* group_ticks;
     void operator()(std::uint32_t slot, Tick now) const {
       ticks[slot] = now;
-      std::atomic_ref(block_ticks[slot / slots_per_block]).store(now, std::memory_order_relaxed);
-      std::atomic_ref(group_ticks[slot / slots_per_group]).store(now, std::memory_order_relaxed);
+      mark_summary(block_ticks[slot / slots_per_block], now);
+      mark_summary(group_ticks[slot / slots_per_group], now);
     }
   };
   ChangeMarker change_marker() { return {ticks_.data(), block_ticks_.data(), group_ticks_.data()}; }
@@ -157,6 +157,14 @@ class SparseSet {
   virtual void swap_components(std::uint32_t a, std::uint32_t b) = 0;
 
  private:
+  // Sets a summary tick to `now`, storing only if it differs: after the first write of a tick,
+  // threads that mark slots under the same summary only read it, so its cache line stays shared
+  // among their cores instead of moving to each writer in turn.
+  static void mark_summary(Tick& summary, Tick now) {
+    std::atomic_ref<Tick> tick(summary);
+    if (tick.load(std::memory_order_relaxed) != now) tick.store(now, std::memory_order_relaxed);
+  }
+
   struct LayoutComparison {
     const SparseSet* other;
     std::uint64_t version;
