@@ -162,6 +162,11 @@ void add_options(CLI::App& app, Options& o) {
                  "view due)")
       ->check(CLI::Range(0u, 1u << 24))
       ->capture_default_str();
+  app.add_option("--threads", o.threads,
+                 "Threads for a frame's CPU work split in pieces (gathering, shadow scheduling), the "
+                 "frame's own included (0: one per hardware thread)")
+      ->check(CLI::Range(0u, 1024u))
+      ->capture_default_str();
   add_choice(app, "--shadow-cache", o.shadow_cache, {{"on", true}, {"off", false}},
              "on: a shadow map is redrawn only when its light, or a caster in its reach, moved; off: every "
              "map every frame");

@@ -43,6 +43,7 @@ struct Options {
   shadows::ShadowRaster shadow_raster = shadows::ShadowRaster::automatic;   // --shadow-raster
   uint32_t shadow_memory_mib = 0;  // --shadow-memory: the shadow atlas's budget; 0: the device's default
   uint32_t shadow_updates = shadows::default_shadow_view_budget;  // --shadow-updates: views redrawn a frame
+  uint32_t threads = 0;  // --threads: threads of the frame's parallel CPU work; 0: one per hardware thread
   bool shadow_cache = true;   // --shadow-cache off: redraw every map every frame
   bool shadow_layers = true;  // --shadow-layers off: no static layers, every redraw draws every caster
   LightingPath lighting = LightingPath::automatic;             // --lighting auto|forward|deferred

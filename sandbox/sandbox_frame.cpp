@@ -69,6 +69,7 @@ RendererSettings renderer_settings(const Options& options) {
   settings.shadow_view_budget = options.shadow_updates;
   settings.cache_shadows = options.shadow_cache;
   settings.static_shadow_layers = options.shadow_layers;
+  settings.cpu_threads = options.threads;
   if (options.naive) {
     settings.shadow_views = shadows::ShadowViewPath::per_light;
     settings.cache_shadows = false;

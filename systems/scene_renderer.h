@@ -64,6 +64,9 @@ struct RendererSettings {
   bool static_shadow_layers = true;
   float exposure = 1.0f;  // multiplies the lit sum before tone mapping
   LightingView view = LightingView::lit;
+  // Threads that run a frame's CPU work split in pieces, the calling thread included; 0: one per
+  // hardware thread.
+  uint32_t cpu_threads = 0;
 };
 
 struct RenderedFrame {
@@ -124,6 +127,7 @@ class SceneRenderer {
   // The threads gather() and prepare() split their work over, idle in between: the frame's
   // systems that run before gather() (the transform update) may use them too.
   ecs::ThreadPool& workers() { return workers_; }
+  const ecs::ThreadPool& workers() const { return workers_; }
   // Switches the picture between lit and shadow-only from the next prepare() on.
   void set_view(LightingView view) { settings_.view = view; }
   // The batched shadow views' raster from the next frame on (ShadowViewBatch::set_raster); no

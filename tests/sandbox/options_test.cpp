@@ -84,15 +84,17 @@ TEST(SandboxOptions, ShadowStorageAndAnimationOptions) {
   EXPECT_EQ(defaults.shadow_raster, shadows::ShadowRaster::automatic);
   EXPECT_EQ(defaults.shadow_memory_mib, 0u);
   EXPECT_EQ(defaults.shadow_updates, shadows::default_shadow_view_budget);
+  EXPECT_EQ(defaults.threads, 0u);
   EXPECT_TRUE(defaults.shadow_cache);
   EXPECT_TRUE(defaults.shadow_layers);
   EXPECT_TRUE(defaults.animate);
   EXPECT_TRUE(defaults.sidecar);  // from the command line; Options{} has it off
   EXPECT_FALSE(Options{}.sidecar);
 
-  const Options options = parse_ok({"--shadow-views", "per-light", "--shadow-raster", "compute",
-                                    "--shadow-memory", "128", "--shadow-updates", "0", "--shadow-cache",
-                                    "off", "--shadow-layers", "off", "--animate", "off", "--sidecar", "off"});
+  const Options options =
+      parse_ok({"--shadow-views", "per-light", "--shadow-raster", "compute", "--shadow-memory", "128",
+                "--shadow-updates", "0", "--shadow-cache", "off", "--shadow-layers", "off", "--animate",
+                "off", "--sidecar", "off", "--threads", "4"});
   EXPECT_EQ(options.shadow_views, shadows::ShadowViewPath::per_light);
   EXPECT_EQ(options.shadow_raster, shadows::ShadowRaster::compute);
   EXPECT_EQ(options.shadow_memory_mib, 128u);
@@ -101,8 +103,10 @@ TEST(SandboxOptions, ShadowStorageAndAnimationOptions) {
   EXPECT_FALSE(options.shadow_layers);
   EXPECT_FALSE(options.animate);
   EXPECT_FALSE(options.sidecar);
+  EXPECT_EQ(options.threads, 4u);
 
   for (const std::vector<std::string>& bad : {std::vector<std::string>{"--shadow-views", "some"},
+                                              {"--threads", "-2"},
                                               {"--shadow-raster", "gpu"},
                                               {"--shadow-memory", "-1"},
                                               {"--shadow-cache", "maybe"},

@@ -375,12 +375,15 @@ TEST_F(SandboxFrameTest, ThePanelsShowTheSelectedLightsShadowMap) {
 }
 
 // The panels' "play": paused, the moving stress scene writes nothing, so every shadow map is kept.
+// (With --threads 3: the frame's CPU work on three threads.)
 TEST_F(SandboxFrameTest, PausedAnimationRedrawsNoShadowMap) {
   sandbox::Options options = stress(3000, 3, 3, 1.0f);
   options.ui = true;
+  options.threads = 3;
   sandbox::SandboxScene scene = sandbox::load_sandbox_scene(options, float(width) / height);
   vk::FrameRing frames(context);
   sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
+  EXPECT_EQ(frame.renderer().workers().thread_count(), 3u);
   frame.resize({width, height});
   ASSERT_TRUE(frame.ui()->playing());  // from --animate, on by default
   int at = 0;
