@@ -1,6 +1,7 @@
 #include "systems/gpu_scene.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <utility>
 
@@ -110,56 +111,71 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
       [&](const scene::MeshInstance&) { reordered = true; });
   if (reordered) return false;
 
-  changed_.clear();
-  chunk_starts_.assign(chunk_bounds_.size() + 1, 0);
-  bool unknown = false;
+  // The changes are marked on the pool, by instance (written_at_) and by chunk: thousands of
+  // moving instances took 0.05 ms to look up on one thread (an H200 host). Material edits are
+  // rare, and looked up here.
+  chunk_changed_.assign(chunk_bounds_.size(), 0);
+  std::atomic<bool> unknown{false};
   const auto note = [&](ecs::Entity entity) {
     const uint32_t at = entity.index < place_of_.size() ? place_of_[entity.index] : ecs::SparseSet::npos;
     if (at == ecs::SparseSet::npos || items_[at].entity != entity) {
-      unknown = true;  // it became an instance by gaining a component
-    } else if (written_at_[at] != gathers_) {
-      written_at_[at] = gathers_;
-      changed_.push_back(at);
-      ++chunk_starts_[at / instances_per_chunk + 1];
+      unknown.store(true, std::memory_order_relaxed);  // it became an instance by gaining a component
+      return;
     }
+    written_at_[at] = gathers_;
+    std::atomic_ref(chunk_changed_[at / instances_per_chunk]).store(1, std::memory_order_relaxed);
   };
   world.query<const ecs::WorldTransform, const scene::MeshInstance>()
       .changed_since<ecs::WorldTransform>(since)
-      .for_each(
-          [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance&) { note(entity); });
+      .for_each_parallel(
+          pool,
+          [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance&) { note(entity); },
+          changes_per_task);
   world.query<const scene::Material, const ecs::WorldTransform, const scene::MeshInstance>()
       .changed_since<scene::Material>(since)
       .for_each([&](ecs::Entity entity, const scene::Material&, const ecs::WorldTransform&,
                     const scene::MeshInstance&) { note(entity); });
-  if (unknown) return false;
-  if (changed_.empty()) return true;
-
-  // By chunk (a counting sort), so that one task re-places a chunk's changed instances and then
-  // regrows the chunk's bounds from what it just wrote, in its own cache: bounds written by other
-  // cores took longer to read back than the re-placing itself.
+  if (unknown.load(std::memory_order_relaxed)) return false;
   regrown_chunks_.clear();
-  for (uint32_t chunk = 0; chunk + 1 < chunk_starts_.size(); ++chunk) {
-    if (chunk_starts_[chunk + 1] != 0) regrown_chunks_.push_back(chunk);
-    chunk_starts_[chunk + 1] += chunk_starts_[chunk];
+  for (uint32_t chunk = 0; chunk < chunk_changed_.size(); ++chunk) {
+    if (chunk_changed_[chunk] != 0) regrown_chunks_.push_back(chunk);
   }
-  by_chunk_.resize(changed_.size());
-  for (const uint32_t i : changed_) by_chunk_[chunk_starts_[i / instances_per_chunk]++] = i;
-  std::swap(changed_, by_chunk_);  // chunk_starts_[c] is now where chunk c + 1's changes begin
+  changed_.clear();
+  bounds_before_.clear();
+  if (regrown_chunks_.empty()) return true;
 
-  bounds_before_.resize(changed_.size());
+  // One task per changed chunk re-places its marked instances and then regrows the chunk's
+  // bounds from what it just wrote, in its own cache: bounds written by other cores took longer
+  // to read back than the re-placing itself. Each lists its instances in its own stretch of
+  // by_chunk_, compacted into changed_ after.
+  by_chunk_.resize(instance_count());
+  bounds_by_chunk_.resize(instance_count());
+  chunk_changes_.assign(chunk_bounds_.size(), 0);
   ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
     for (size_t n = begin; n < end; ++n) {
       const uint32_t chunk = regrown_chunks_[n];
-      for (size_t k = chunk == 0 ? 0 : chunk_starts_[chunk - 1]; k < chunk_starts_[chunk]; ++k) {
-        const uint32_t i = changed_[k];
-        bounds_before_[k] = bounds_[i];
+      const size_t first = size_t{chunk} * instances_per_chunk;
+      const size_t last = std::min(first + instances_per_chunk, bounds_.size());
+      size_t listed = first;
+      for (size_t i = first; i < last; ++i) {
+        if (written_at_[i] != gathers_) continue;
+        const scene::Aabb before = bounds_by_chunk_[listed] = bounds_[i];
+        by_chunk_[listed++] = static_cast<uint32_t>(i);
         place(world, i);
-        const bool moved = bounds_[i].min != bounds_before_[k].min || bounds_[i].max != bounds_before_[k].max;
+        const bool moved = bounds_[i].min != before.min || bounds_[i].max != before.max;
         if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
       }
+      chunk_changes_[chunk] = static_cast<uint32_t>(listed - first);
       regrow_chunk(chunk);
     }
   });
+  for (const uint32_t chunk : regrown_chunks_) {
+    const size_t first = size_t{chunk} * instances_per_chunk;
+    changed_.insert(changed_.end(), by_chunk_.begin() + first,
+                    by_chunk_.begin() + first + chunk_changes_[chunk]);
+    bounds_before_.insert(bounds_before_.end(), bounds_by_chunk_.begin() + first,
+                          bounds_by_chunk_.begin() + first + chunk_changes_[chunk]);
+  }
   grow_scene_bounds();
   for (const uint32_t i : changed_) {
     if (moved_at_[i] == gathers_) moving_.push_back(i);

@@ -148,9 +148,14 @@ class GpuScene {
   std::vector<uint64_t> moved_at_;          // by instance: the call whose move made it moving (0: still)
   std::vector<uint32_t> moving_;            // the moving instances, in the order they first moved
   std::vector<uint32_t> changed_;           // the instances the current call re-places, by chunk
-  std::vector<uint32_t> by_chunk_;          // scratch: changed_ sorted by chunk
   std::vector<scene::Aabb> bounds_before_;  // their bounds before it
-  std::vector<uint64_t> uploaded_at_;       // by slot: the call whose instances it holds
+  // gather_changes' scratch: each changed chunk's instances and their bounds before, listed from
+  // the chunk's first instance's place, and how many.
+  std::vector<uint32_t> by_chunk_;
+  std::vector<scene::Aabb> bounds_by_chunk_;
+  std::vector<uint32_t> chunk_changes_;
+  static constexpr size_t changes_per_task = 256;  // the change lookups' pieces
+  std::vector<uint64_t> uploaded_at_;              // by slot: the call whose instances it holds
   std::vector<Item> items_;
   std::vector<Item> sorted_items_;
   std::vector<uint32_t> slot_starts_;  // counting sort: per (mesh, caster or not)
@@ -162,7 +167,7 @@ class GpuScene {
   // work: the stress scene's 2,200 moving crates, spread over 14,000 instances, make 14.
   static constexpr size_t instances_per_chunk = 1024;
   std::vector<scene::Aabb> chunk_bounds_;
-  std::vector<uint32_t> chunk_starts_;    // gather_changes' counting sort of changed_ by chunk
+  std::vector<uint8_t> chunk_changed_;    // gather_changes': per chunk, whether an instance changed
   std::vector<uint32_t> regrown_chunks_;  // the chunks with changed instances
   std::vector<uint64_t> keys_;
   scene::Aabb scene_bounds_;
