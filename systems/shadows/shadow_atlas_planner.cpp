@@ -179,6 +179,7 @@ void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, e
         return false;
       },
       [&](size_t i, size_t rank) { unmatched_[rank] = static_cast<uint32_t>(i); });
+  lights_requested_ = requests.size();
   for (size_t u = 0; u < unmatched_count; ++u) {
     const uint32_t i = unmatched_[u];
     const ShadowRequest& request = requests[i];
@@ -196,6 +197,7 @@ void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, e
     }
     if (lights_[found->second].requested_in_plan == plans_) {  // the key's second request
       light_of_request_[i] = no_light;
+      --lights_requested_;
       continue;
     }
     take(i, found->second);
@@ -203,6 +205,10 @@ void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, e
 }
 
 void ShadowAtlasPlanner::release_lights_not_requested() {
+  // Each request took a light of its own, so when as many lights are in use as were requested,
+  // none is left to release; the usual frame skips reading every light, each written by another
+  // core in the last plan.
+  if (lights_requested_ == lights_.size() - unused_lights_.size()) return;
   for (uint32_t index = 0; index < lights_.size(); ++index) {
     Light& light = lights_[index];
     // requested_in_plan is 0 for unused entries: plans count from 1.

@@ -151,6 +151,7 @@ class ShadowAtlasPlanner {
   std::vector<Light> lights_;
   std::vector<uint32_t> unused_lights_;
   std::unordered_map<uint64_t, uint32_t> light_of_key_;
+  size_t lights_requested_ = 0;  // by the current plan(): its requests less the keys' second ones
 
   // Per request of the current plan(), kept to reuse their storage.
   static constexpr uint32_t no_light = ~0u;
