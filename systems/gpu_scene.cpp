@@ -142,6 +142,7 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   }
   changed_.clear();
   bounds_before_.clear();
+  bounds_after_.clear();
   if (regrown_chunks_.empty()) return true;
 
   // One task per changed chunk re-places its marked instances and then regrows the chunk's
@@ -150,6 +151,7 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   // by_chunk_, compacted into changed_ after.
   by_chunk_.resize(instance_count());
   bounds_by_chunk_.resize(instance_count());
+  after_by_chunk_.resize(instance_count());
   chunk_changes_.assign(chunk_bounds_.size(), 0);
   ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
     for (size_t n = begin; n < end; ++n) {
@@ -160,8 +162,9 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
       for (size_t i = first; i < last; ++i) {
         if (written_at_[i] != gathers_) continue;
         const scene::Aabb before = bounds_by_chunk_[listed] = bounds_[i];
-        by_chunk_[listed++] = static_cast<uint32_t>(i);
         place(world, i);
+        after_by_chunk_[listed] = bounds_[i];
+        by_chunk_[listed++] = static_cast<uint32_t>(i);
         const bool moved = bounds_[i].min != before.min || bounds_[i].max != before.max;
         if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
       }
@@ -175,6 +178,8 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
                     by_chunk_.begin() + first + chunk_changes_[chunk]);
     bounds_before_.insert(bounds_before_.end(), bounds_by_chunk_.begin() + first,
                           bounds_by_chunk_.begin() + first + chunk_changes_[chunk]);
+    bounds_after_.insert(bounds_after_.end(), after_by_chunk_.begin() + first,
+                         after_by_chunk_.begin() + first + chunk_changes_[chunk]);
   }
   grow_scene_bounds();
   for (const uint32_t i : changed_) {
@@ -231,6 +236,7 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   laid_out_at_ = gathers_;
   changed_.clear();
   bounds_before_.clear();
+  bounds_after_.clear();
 
   // Per instance, in its sorted place: its record, world bounds and key. Reading the components
   // and the bounds' eight corners are most of a full gather, and independent: chunks of them run

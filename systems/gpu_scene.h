@@ -99,10 +99,12 @@ class GpuScene {
 
   // What the last gather() did: ordered every instance anew (new, removed or re-meshed ones), or
   // re-placed only the instances written since the gather before, listed by replaced(), with the
-  // bounds they had before it in replaced_bounds_before() (same order).
+  // bounds they had before it in replaced_bounds_before() and have now in replaced_bounds_after()
+  // (same order; copies of instance_bounds() read in order, not one by one across the buffer).
   bool laid_out_in_last_gather() const { return laid_out_at_ == gathers_; }
   std::span<const uint32_t> replaced() const { return changed_; }
   std::span<const scene::Aabb> replaced_bounds_before() const { return bounds_before_; }
+  std::span<const scene::Aabb> replaced_bounds_after() const { return bounds_after_; }
   bool casts_shadow(uint32_t instance) const { return items_[instance].caster; }
   // Moving instances: those whose bounds changed in a gather since the last layout (the layout
   // makes every instance still again). Shadow maps keep a layer of the other casters and redraw
@@ -149,10 +151,12 @@ class GpuScene {
   std::vector<uint32_t> moving_;            // the moving instances, in the order they first moved
   std::vector<uint32_t> changed_;           // the instances the current call re-places, by chunk
   std::vector<scene::Aabb> bounds_before_;  // their bounds before it
-  // gather_changes' scratch: each changed chunk's instances and their bounds before, listed from
-  // the chunk's first instance's place, and how many.
+  std::vector<scene::Aabb> bounds_after_;   // and after
+  // gather_changes' scratch: each changed chunk's instances and their bounds before and after,
+  // listed from the chunk's first instance's place, and how many.
   std::vector<uint32_t> by_chunk_;
   std::vector<scene::Aabb> bounds_by_chunk_;
+  std::vector<scene::Aabb> after_by_chunk_;
   std::vector<uint32_t> chunk_changes_;
   static constexpr size_t changes_per_task = 256;  // the change lookups' pieces
   std::vector<uint64_t> uploaded_at_;              // by slot: the call whose instances it holds

@@ -184,9 +184,10 @@ shadows::CasterUpdate SceneRenderer::caster_update() {
   moved_casters_.clear();
   const std::span<const uint32_t> replaced = gpu_scene_.replaced();
   const std::span<const scene::Aabb> before = gpu_scene_.replaced_bounds_before();
+  const std::span<const scene::Aabb> after = gpu_scene_.replaced_bounds_after();
   for (size_t k = 0; k < replaced.size(); ++k) {
     const uint32_t i = replaced[k];
-    const scene::Aabb& now = gpu_scene_.instance_bounds()[i];
+    const scene::Aabb& now = after[k];
     if (!gpu_scene_.casts_shadow(i) || (now.min == before[k].min && now.max == before[k].max)) continue;
     if (!before[k].empty())
       (gpu_scene_.first_moved_in_last_gather(i) ? still_changes_ : moved_casters_).push_back(before[k]);

@@ -105,6 +105,7 @@ TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
     // What moved, and from where: every instance whose box changed is listed, with its old box.
     if (!kept.laid_out_in_last_gather()) {
       ASSERT_EQ(kept.replaced().size(), kept.replaced_bounds_before().size());
+      ASSERT_EQ(kept.replaced().size(), kept.replaced_bounds_after().size());
       std::vector<bool> listed(kept.instance_count(), false);
       for (size_t k = 0; k < kept.replaced().size(); ++k) {
         const uint32_t i = kept.replaced()[k];
@@ -112,6 +113,8 @@ TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
         listed[i] = true;
         EXPECT_EQ(kept.replaced_bounds_before()[k].min, before[i].min);
         EXPECT_EQ(kept.replaced_bounds_before()[k].max, before[i].max);
+        EXPECT_EQ(kept.replaced_bounds_after()[k].min, kept.instance_bounds()[i].min);
+        EXPECT_EQ(kept.replaced_bounds_after()[k].max, kept.instance_bounds()[i].max);
       }
       for (uint32_t i = 0; i < kept.instance_count(); ++i) {
         const bool moved = kept.instance_bounds()[i].min != before[i].min;
