@@ -148,10 +148,8 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   // One task per changed chunk re-places its marked instances and then regrows the chunk's
   // bounds from what it just wrote, in its own cache: bounds written by other cores took longer
   // to read back than the re-placing itself. Each lists its instances in its own stretch of
-  // by_chunk_, compacted into changed_ after.
-  by_chunk_.resize(instance_count());
-  bounds_by_chunk_.resize(instance_count());
-  after_by_chunk_.resize(instance_count());
+  // replaced_by_chunk_, gathered into changed_ and their bounds after.
+  replaced_by_chunk_.resize(instance_count());
   chunk_changes_.assign(chunk_bounds_.size(), 0);
   ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
     for (size_t n = begin; n < end; ++n) {
@@ -161,10 +159,9 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
       size_t listed = first;
       for (size_t i = first; i < last; ++i) {
         if (written_at_[i] != gathers_) continue;
-        const scene::Aabb before = bounds_by_chunk_[listed] = bounds_[i];
+        const scene::Aabb before = bounds_[i];
         place(world, i);
-        after_by_chunk_[listed] = bounds_[i];
-        by_chunk_[listed++] = static_cast<uint32_t>(i);
+        replaced_by_chunk_[listed++] = {static_cast<uint32_t>(i), before, bounds_[i]};
         const bool moved = bounds_[i].min != before.min || bounds_[i].max != before.max;
         if (moved && moved_at_[i] == 0) moved_at_[i] = gathers_;
       }
@@ -174,17 +171,15 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   });
   for (const uint32_t chunk : regrown_chunks_) {
     const size_t first = size_t{chunk} * instances_per_chunk;
-    changed_.insert(changed_.end(), by_chunk_.begin() + first,
-                    by_chunk_.begin() + first + chunk_changes_[chunk]);
-    bounds_before_.insert(bounds_before_.end(), bounds_by_chunk_.begin() + first,
-                          bounds_by_chunk_.begin() + first + chunk_changes_[chunk]);
-    bounds_after_.insert(bounds_after_.end(), after_by_chunk_.begin() + first,
-                         after_by_chunk_.begin() + first + chunk_changes_[chunk]);
+    for (size_t k = first; k < first + chunk_changes_[chunk]; ++k) {
+      const Replacement& entry = replaced_by_chunk_[k];
+      changed_.push_back(entry.instance);
+      bounds_before_.push_back(entry.before);
+      bounds_after_.push_back(entry.after);
+      if (moved_at_[entry.instance] == gathers_) moving_.push_back(entry.instance);
+    }
   }
   grow_scene_bounds();
-  for (const uint32_t i : changed_) {
-    if (moved_at_[i] == gathers_) moving_.push_back(i);
-  }
   return true;
 }
 

@@ -152,11 +152,14 @@ class GpuScene {
   std::vector<uint32_t> changed_;           // the instances the current call re-places, by chunk
   std::vector<scene::Aabb> bounds_before_;  // their bounds before it
   std::vector<scene::Aabb> bounds_after_;   // and after
-  // gather_changes' scratch: each changed chunk's instances and their bounds before and after,
-  // listed from the chunk's first instance's place, and how many.
-  std::vector<uint32_t> by_chunk_;
-  std::vector<scene::Aabb> bounds_by_chunk_;
-  std::vector<scene::Aabb> after_by_chunk_;
+  // gather_changes' scratch: each changed chunk's re-placed instances, listed from the chunk's
+  // first instance's place, and how many.
+  struct Replacement {
+    uint32_t instance;
+    scene::Aabb before;
+    scene::Aabb after;
+  };
+  std::vector<Replacement> replaced_by_chunk_;
   std::vector<uint32_t> chunk_changes_;
   static constexpr size_t changes_per_task = 256;  // the change lookups' pieces
   std::vector<uint64_t> uploaded_at_;              // by slot: the call whose instances it holds
