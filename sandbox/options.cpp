@@ -151,6 +151,11 @@ void add_options(CLI::App& app, Options& o) {
              "How batched shadow views are rasterized: hardware (multi-draw indirect), compute, or auto "
              "(on GPUs each frame: compute for many small views, hardware for a few with large tiles; "
              "hardware on CPU devices)");
+  add_choice(
+      app, "--shadow-resolution", o.shadow_resolution,
+      {{"screen", shadows::ShadowResolution::screen}, {"requested", shadows::ShadowResolution::requested}},
+      "screen: each light's map as many texels as its reach spans on screen, at most its own "
+      "resolution; requested: its own resolution wherever it is seen");
   app.add_option(
          "--shadow-memory", o.shadow_memory_mib,
          "Shadow atlas budget in MiB (0: an eighth of the GPU's memory, 64 to 2048); lights beyond it "

@@ -9,6 +9,7 @@
 #include "systems/scene/camera.h"
 #include "systems/scene/shadow_settings.h"
 #include "systems/shadows/cube_shadow_mode.h"
+#include "systems/shadows/shadow_resolution.h"
 #include "systems/shadows/shadow_view_path.h"
 
 namespace CLI {
@@ -41,6 +42,7 @@ struct Options {
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;  // --cube-shadows layered|six
   shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;  // --shadow-views
   shadows::ShadowRaster shadow_raster = shadows::ShadowRaster::automatic;   // --shadow-raster
+  shadows::ShadowResolution shadow_resolution = shadows::ShadowResolution::screen;  // --shadow-resolution
   uint32_t shadow_memory_mib = 0;  // --shadow-memory: the shadow atlas's budget; 0: the device's default
   uint32_t shadow_updates = shadows::default_shadow_view_budget;  // --shadow-updates: views redrawn a frame
   uint32_t threads = 0;  // --threads: threads of the frame's parallel CPU work; 0: one per hardware thread

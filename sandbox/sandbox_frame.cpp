@@ -65,6 +65,7 @@ RendererSettings renderer_settings(const Options& options) {
   settings.view = options.view;
   settings.shadow_views = options.shadow_views;
   settings.shadow_raster = options.shadow_raster;
+  settings.shadow_resolution = options.shadow_resolution;
   settings.shadow_memory_bytes = uint64_t{options.shadow_memory_mib} << 20;
   settings.shadow_view_budget = options.shadow_updates;
   settings.cache_shadows = options.shadow_cache;

@@ -58,7 +58,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       textures_(context, scene.textures),
       atlas_(context, settings.shadow_memory_bytes, keeps_static_layers(context, settings)),
       schedule_({atlas_.shape().page_size, atlas_.shape().max_pages, shadows::min_shadow_resolution},
-                atlas_.static_layers() != nullptr),
+                atlas_.static_layers() != nullptr, settings.shadow_resolution),
       tone_map_(context, frame_format),
       light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
                      frames_in_flight, "light records", light_record_texel_format),

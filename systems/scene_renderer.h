@@ -56,6 +56,7 @@ struct RendererSettings {
   // Batched falls back to per-light where the device cannot draw views into atlas layers at once.
   shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;
   shadows::ShadowRaster shadow_raster = shadows::ShadowRaster::automatic;  // the batched path's
+  shadows::ShadowResolution shadow_resolution = shadows::ShadowResolution::screen;
   uint64_t shadow_memory_bytes = 0;  // the atlas's budget; 0: the device's default
   uint32_t shadow_view_budget = shadows::default_shadow_view_budget;  // views redrawn a frame; 0: all due
   bool cache_shadows = true;  // off: every map is redrawn every frame (within the view budget)

@@ -58,6 +58,7 @@ uint32_t ShadowAtlasPlanner::wanted_resolution(const ShadowRequest& request, uin
   if (request.max_resolution != 0) {
     cap = std::clamp(std::bit_floor(request.max_resolution), config_.min_resolution, cap);
   }
+  if (request.pinned) return cap;
   // NaN, negative and tiny importances want the smallest tile, infinite ones the largest.
   const float importance = std::clamp(request.importance > 1.0f ? request.importance : 1.0f, 1.0f, 0x1p31f);
   const float tiers = std::log2(importance);

@@ -7,9 +7,9 @@
 // Each plan() decides every shadowed light's resolution and tiles:
 //
 // - Resolution: a light wants its importance rounded to a power of two (to the nearest one in
-//   log2), clamped to [min_resolution, its cap]; the cap is page_size (page_size / 4 for cubes, so
-//   that six faces fit a page) and, when max_resolution is not 0, max_resolution rounded down to a
-//   power of two (but never below min_resolution). Hysteresis: a light keeps last frame's wanted
+//   log2), clamped to [min_resolution, its cap], or its cap when pinned; the cap is page_size (page_size / 4
+//   for cubes, so that six faces fit a page) and, when max_resolution is not 0, max_resolution rounded down
+//   to a power of two (but never below min_resolution). Hysteresis: a light keeps last frame's wanted
 //   resolution R while log2(importance) stays within 0.75 of log2(R), so it does not pop between
 //   tiers when its importance hovers at a boundary.
 // - Budget: the tiles must fit max_pages pages. When they do not, the least important light drops
@@ -61,6 +61,8 @@ struct ShadowRequest {
   // The smallest resolution at which its shadow stays accurate (quality_floor); 0: none. The
   // budget takes every light down to its floor before it takes any light below its own.
   uint32_t quality_floor = 0;
+  // Wants its cap whatever its importance (which still orders the budget's demotions).
+  bool pinned = false;
 };
 
 struct ShadowPlacement {

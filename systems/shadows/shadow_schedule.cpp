@@ -45,8 +45,8 @@ float light_importance(const glm::vec4& reach, const ShadowCamera& camera) {
   return importance_in(reach, camera, CameraFrustum(camera));
 }
 
-ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas, bool static_layers)
-    : planner_(atlas), page_size_(atlas.page_size), static_layers_(static_layers) {}
+ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas, bool static_layers, ShadowResolution resolution)
+    : planner_(atlas), page_size_(atlas.page_size), static_layers_(static_layers), resolution_(resolution) {}
 
 void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
                               uint32_t view_budget, ecs::ThreadPool* pool) {
@@ -57,6 +57,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   // are the ones their entries of rendered_maps_ and rendered_cubes_ hold (usually: the last
   // frame's lights in the same order). One thread would read all that hundreds of bytes apart.
   const CameraFrustum frustum(camera);
+  const bool pinned = resolution_ == ShadowResolution::requested;
   const size_t map_count = lights.maps.size();
   const size_t view_count = map_count + lights.cubes.size();
   view_requests_.resize(view_count);
@@ -70,16 +71,24 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       if (v < map_count) {
         ShadowMapView& map = lights.maps[v];
         map.importance = importance_in(map.reach, camera, frustum);
-        view_requests_[v] = {map.key, false, map.requested_resolution, map.importance,
-                             quality_floor(algorithm_of(lights.records[map.light]))};
+        view_requests_[v] = {map.key,
+                             false,
+                             map.requested_resolution,
+                             map.importance,
+                             quality_floor(algorithm_of(lights.records[map.light])),
+                             pinned};
         view_cache_lights_[v] = {map.key, map.reach, map.changed, false, 1};
         aligned = aligned && rendered_maps_[v].key == map.key;
       } else {
         ShadowCubeView& cube = lights.cubes[v - map_count];
         // A face spans a quarter turn, about half of what the whole sphere covers on screen.
         cube.importance = 0.5f * importance_in(cube.position_far, camera, frustum);
-        view_requests_[v] = {cube.key, true, cube.requested_resolution, cube.importance,
-                             quality_floor(algorithm_of(lights.records[cube.light]))};
+        view_requests_[v] = {cube.key,
+                             true,
+                             cube.requested_resolution,
+                             cube.importance,
+                             quality_floor(algorithm_of(lights.records[cube.light])),
+                             pinned};
         view_cache_lights_[v] = {cube.key, cube.position_far, cube.changed, false, 6};
         aligned = aligned && rendered_cubes_[v - map_count].key == cube.key;
       }

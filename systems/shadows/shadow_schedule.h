@@ -21,6 +21,7 @@
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_atlas_planner.h"
 #include "systems/shadows/shadow_cache.h"
+#include "systems/shadows/shadow_resolution.h"
 
 namespace sg::shadows {
 
@@ -76,7 +77,8 @@ class ShadowSchedule {
  public:
   // `static_layers`: the renderer keeps a static layer of each map (ShadowCache), so renders for
   // moving casters may draw only those.
-  explicit ShadowSchedule(const AtlasConfig& atlas, bool static_layers = false);
+  explicit ShadowSchedule(const AtlasConfig& atlas, bool static_layers = false,
+                          ShadowResolution resolution = ShadowResolution::screen);
 
   // Places, caches and records every shadow of `lights` (gathered, not yet sorted). `casters`
   // are the frame's shadow casters or their changes (CasterUpdate); view_budget caps the views
@@ -101,6 +103,7 @@ class ShadowSchedule {
   CasterChangeTracker caster_changes_;
   uint32_t page_size_;
   bool static_layers_;
+  ShadowResolution resolution_;
   ShadowScheduleStats stats_;
 
   // Per frame, kept so that scheduling allocates nothing once grown.

@@ -79,6 +79,28 @@ TEST(ShadowAtlasPlanner, ResolutionIsImportanceRoundedToAPowerOfTwoWithinLimits)
   EXPECT_EQ(out[9].resolution, 32u);
 }
 
+// ShadowResolution::requested: a pinned light wants its cap however small it is on screen, and
+// its importance still decides who the budget demotes first.
+TEST(ShadowAtlasPlanner, PinnedLightsWantTheirCapAndTheBudgetStillDemotesByImportance) {
+  ShadowRequest far_map = map_light(1, 3.0f, 2048);
+  ShadowRequest far_cube = cube_light(2, 3.0f);
+  far_map.pinned = far_cube.pinned = true;
+  ShadowAtlasPlanner roomy({.page_size = 4096, .max_pages = 4, .min_resolution = 16});
+  const std::vector<ShadowPlacement> out = plan(roomy, {far_map, far_cube});
+  EXPECT_EQ(out[0].resolution, 2048u);
+  EXPECT_EQ(out[1].resolution, 1024u) << "a cube's cap: six faces on one page";
+
+  // A 1024 and a 512 map overfill a 1024 page: the less important (the large one) drops a tier;
+  // had the other dropped first, it would have gone to 256 and the large one to 512 after it.
+  ShadowAtlasPlanner tight({.page_size = 1024, .max_pages = 1, .min_resolution = 16});
+  ShadowRequest large = map_light(1, 3.0f, 1024), small = map_light(2, 5.0f, 512);
+  large.pinned = small.pinned = true;
+  const std::vector<ShadowPlacement> squeezed = plan(tight, {large, small});
+  EXPECT_EQ(squeezed[0].resolution, 512u);
+  EXPECT_EQ(squeezed[1].resolution, 512u);
+  EXPECT_EQ(tight.stats().demoted_by_budget, 1u);
+}
+
 TEST(ShadowAtlasPlanner, SmallImportanceOscillationsKeepTheResolutionLargeOnesChangeIt) {
   ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 4, .min_resolution = 32});
   ASSERT_EQ(plan(planner, {map_light(1, 256.0f)})[0].resolution, 256u);
