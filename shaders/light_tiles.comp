@@ -31,16 +31,17 @@ void main() {
   // Each thread reduces its block, then one thread their results and the tile's bound:
   // shared-memory atomics and 64 copies of the same sphere cost a CPU driver more than a short
   // serial loop.
-  float nearest = 1.0;
-  float farthest = 0.0;
+  // Reversed depths (camera_depth.glsl): the nearest surface has the greatest.
+  float nearest = CAMERA_FAR_DEPTH;
+  float farthest = 1.0;
   for (uint k = 0u; k < BLOCK * BLOCK; ++k) {
     ivec2 pixel =
         ivec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy * BLOCK + uvec2(k % BLOCK, k / BLOCK));
     if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) {
       float depth = texelFetch(scene_depth, pixel, 0).r;
-      if (depth < 1.0) {  // background does not bound the tile
-        nearest = min(nearest, depth);
-        farthest = max(farthest, depth);
+      if (!is_background_depth(depth)) {  // background does not bound the tile
+        nearest = max(nearest, depth);
+        farthest = min(farthest, depth);
       }
     }
   }
@@ -49,10 +50,10 @@ void main() {
   barrier();
   if (local == 0u) {
     for (uint t = 1u; t < THREADS; ++t) {
-      nearest = min(nearest, thread_nearest[t]);
-      farthest = max(farthest, thread_farthest[t]);
+      nearest = max(nearest, thread_nearest[t]);
+      farthest = min(farthest, thread_farthest[t]);
     }
-    has_surfaces = farthest > 0.0;
+    has_surfaces = !is_background_depth(nearest);
     tile_sphere = visible_sphere_of_tile(gl_WorkGroupID.xy, nearest, farthest);
   }
   barrier();

@@ -9,6 +9,7 @@
 #define SG_LIGHT_TILES_INTERFACE_GLSL
 
 #include "bindings.glsl"
+#include "camera_depth.glsl"
 #include "light_groups.glsl"
 #include "light_record.glsl"
 #include "light_tiles.glsl"

@@ -15,14 +15,15 @@ void main() {
   uvec2 tile_xy = uvec2(tile % frame.screen.z, tile / frame.screen.z);
   ivec2 origin = ivec2(tile_xy * LIGHT_TILE_SIZE);
   ivec2 end = min(origin + int(LIGHT_TILE_SIZE), ivec2(frame.screen.xy));
-  float nearest = 1.0;
-  float farthest = 0.0;
+  // Reversed depths (camera_depth.glsl): the nearest surface has the greatest.
+  float nearest = CAMERA_FAR_DEPTH;
+  float farthest = 1.0;
   for (int y = origin.y; y < end.y; ++y) {
     for (int x = origin.x; x < end.x; ++x) {
       float depth = texelFetch(scene_depth, ivec2(x, y), 0).r;
-      if (depth < 1.0) {  // background does not bound the tile
-        nearest = min(nearest, depth);
-        farthest = max(farthest, depth);
+      if (!is_background_depth(depth)) {  // background does not bound the tile
+        nearest = max(nearest, depth);
+        farthest = min(farthest, depth);
       }
     }
   }
@@ -35,7 +36,7 @@ void main() {
   }
   uint first = tile * MAX_LIGHTS_PER_TILE;
   uint count = 0u;
-  if (farthest > 0.0) {
+  if (!is_background_depth(nearest)) {
     vec4 sphere = visible_sphere_of_tile(tile_xy, nearest, farthest);
     for (uint i = 0u; i < frame.counts.x && count < MAX_LIGHTS_PER_TILE; ++i) {
       if (!light_reaches_sphere(lights[i], sphere)) continue;

@@ -5,6 +5,7 @@
 // rather than as a G-buffer target: on GPUs with little raster hardware the G-buffer's cost
 // follows the bytes it writes per pixel (docs/PERFORMANCE.md).
 #include "bindings.glsl"
+#include "camera_depth.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
@@ -20,7 +21,7 @@ layout(push_constant) uniform Constants {
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(frame.screen.x) || pixel.y >= int(frame.screen.y)) return;
-  bool background = texelFetch(scene_depth, pixel, 0).r >= 1.0;
+  bool background = is_background_depth(texelFetch(scene_depth, pixel, 0).r);
   vec3 colour = background ? frame.background_ambient.rgb
                            : frame.background_ambient.w * texelFetch(gbuffer_albedo, pixel, 0).rgb;
   imageStore(hdr, pixel, vec4(colour, 1.0));

@@ -8,6 +8,7 @@
 #define SG_TILED_LIGHTING_GLSL
 
 #include "bindings.glsl"
+#include "camera_depth.glsl"
 #include "light_shading.glsl"
 #include "light_tiles.glsl"
 #include "tiled_lighting_frame.glsl"
@@ -28,7 +29,7 @@ layout(std430, set = 0, binding = tile_ranges_binding) readonly buffer TileRange
 // The G-buffer's surface at `pixel` and its world position; false for the background.
 bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {
   float depth = texelFetch(scene_depth, pixel, 0).r;
-  if (depth >= 1.0) return false;
+  if (is_background_depth(depth)) return false;
   vec2 ndc = (vec2(pixel) + 0.5) / vec2(frame.screen.xy) * 2.0 - 1.0;
   vec4 world = frame.inverse_view_projection * vec4(ndc, depth, 1.0);
   position = world.xyz / world.w;

@@ -18,6 +18,7 @@ DepthPrepass::DepthPrepass(vk::VulkanContext& context)
   desc.vertex_spirv = depth_prepass_vert;
   scene_vertex_input(desc, false);
   desc.depth_format = vk::to_vk(camera_depth_format);
+  desc.depth_compare = camera_depth_test;
   desc.layout = layout_.get();
   desc.name = "depth prepass";
   pipeline_ = vk::create_graphics_pipeline(context, desc);
@@ -31,7 +32,7 @@ rg::ImageHandle DepthPrepass::add_to(rg::RenderGraph& graph, uint32_t width, uin
       "depth prepass",
       [&](rg::PassBuilder& b) {
         depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
-                        rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
+                        rg::Usage::depth_attachment, camera_depth_clear);
       },
       [this, &scene, slot, constants](const vk::PassRecorder& rec) {
         const VkDescriptorSet set = layout_.write(rec.allocate_set(layout_))

@@ -60,7 +60,7 @@ ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, uint32_t width, uint3
       [&](rg::PassBuilder& b) {
         b.read(atlas, rg::Usage::sampled_fragment);
         targets.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
-                                rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
+                                rg::Usage::depth_attachment, camera_depth_clear);
         targets.lit_sum =
             b.write(b.create_image("lit sum", {width, height, lit_sum_format}), rg::Usage::colour_attachment,
                     rg::ClearValue::colour_of(background_colour.r, background_colour.g, background_colour.b));

@@ -43,7 +43,7 @@ void FusedForwardPass::prepare(const std::array<uint32_t, shadows::light_group_c
       camera_pipeline_desc(scene_fused_frag, {vk::to_vk(frame_format_)}, layout_.get(), "fused forward");
   desc.fragment_specialization = material_pass_constants(groups, static_cast<uint32_t>(view), textures_);
   // depth_prepass.vert computed the same positions: draw only what the prepass kept.
-  desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+  desc.depth_compare = camera_depth_retest;
   desc.depth_write = false;
   pipeline = vk::create_graphics_pipeline(context_, desc);
 }

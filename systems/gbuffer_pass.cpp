@@ -65,7 +65,7 @@ GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t hei
               rg::ClearValue::colour_of(background_colour.r, background_colour.g, background_colour.b, 1.0f));
         }
         g.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
-                          rg::Usage::depth_attachment, rg::ClearValue::depth_of(1.0f));
+                          rg::Usage::depth_attachment, camera_depth_clear);
       },
       [this, &scene, slot, constants](const vk::PassRecorder& rec) {
         scene.draw_camera_pass(rec, pipeline_.get(), layout_, slot_sets_.sets[slot], constants, slot);

@@ -51,6 +51,7 @@ vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment
   scene_vertex_input(desc, true);
   desc.color_formats = std::move(colour_formats);
   desc.depth_format = vk::to_vk(camera_depth_format);
+  desc.depth_compare = camera_depth_test;
   desc.layout = layout;
   desc.name = std::move(name);
   return desc;

@@ -20,6 +20,7 @@
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/device/resources.h"
+#include "systems/camera.h"
 #include "systems/scene/aabb.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/scene_gpu_types.h"
@@ -34,8 +35,13 @@ namespace sg {
 // location 0, and with `surface` the normal at 1 and the uv at 2.
 void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface);
 
-// The depth buffer of every pass that draws the scene from the camera.
+// The depth buffer of every pass that draws the scene from the camera, its depth reversed
+// (systems/camera.h): cleared to the far depth, a nearer surface has a greater depth.
 inline constexpr rg::Format camera_depth_format = rg::Format::d32_sfloat;
+inline constexpr rg::ClearValue camera_depth_clear = rg::ClearValue::depth_of(camera_far_depth);
+inline constexpr VkCompareOp camera_depth_test = VK_COMPARE_OP_GREATER;
+// Passes that shade what a depth prepass already decided: the nearest surface passes again.
+inline constexpr VkCompareOp camera_depth_retest = VK_COMPARE_OP_GREATER_OR_EQUAL;
 
 // The descriptor bindings of a pass that draws the scene from the camera and lights its surfaces
 // in the fragment shader (material.glsl, light_shading.glsl): the light resources, the instances

@@ -44,7 +44,7 @@ void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_c
   desc.fragment_specialization =
       material_pass_constants(groups_present_, static_cast<uint32_t>(view), textures_);
   // depth_prepass.vert computed the same positions: draw only what the prepass kept.
-  desc.depth_compare = VK_COMPARE_OP_LESS_OR_EQUAL;
+  desc.depth_compare = camera_depth_retest;
   desc.depth_write = false;
   pipeline = vk::create_graphics_pipeline(context_, desc);
 }

@@ -41,8 +41,10 @@ TEST(ShadowNearPlane, IsRangeOver200WithinOneToTenCentimetres) {
   EXPECT_FLOAT_EQ(shadow_near_plane(1000.0f), 0.1f);
 }
 
-TEST(SpotLightView, IsTheCameraOfTheSameLens) {
-  // The receiver reads spot maps with the camera's conventions, y flip included.
+TEST(SpotLightView, IsTheCameraOfTheSameLensButForDepth) {
+  // The receiver reads spot maps with the camera's conventions, y flip included; only depth
+  // differs: the camera's runs from 1 at near to 0 at far, a map's from 0 to 1 (the receiver's
+  // biases and PCSS's blocker depths are worked out in that direction).
   const glm::vec3 position(1.0f, 4.0f, 2.0f), target(0.0f, 0.0f, -1.0f);
   const LightView spot =
       spot_light_view(position, glm::normalize(target - position), glm::radians(30.0f), 12.0f);
@@ -50,7 +52,12 @@ TEST(SpotLightView, IsTheCameraOfTheSameLens) {
   const glm::mat4 camera = projection_matrix(lens, 1.0f) * view_matrix({position, target});
   const glm::mat4 light = spot.view_projection();
   for (int c = 0; c < 4; ++c) {
-    for (int r = 0; r < 4; ++r) EXPECT_NEAR(light[c][r], camera[c][r], 1e-5f) << c << "," << r;
+    for (const int r : {0, 1, 3}) EXPECT_NEAR(light[c][r], camera[c][r], 1e-5f) << c << "," << r;
+  }
+  for (const float distance : {spot.near, 5.0f, 12.0f}) {
+    const glm::vec4 point(position + distance * glm::normalize(target - position), 1.0f);
+    const glm::vec4 in_map = light * point, in_camera = camera * point;
+    EXPECT_NEAR(in_map.z / in_map.w, 1.0f - in_camera.z / in_camera.w, 1e-5f) << distance;
   }
   EXPECT_FALSE(spot.orthographic);
   EXPECT_FLOAT_EQ(spot.far, 12.0f);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "systems/camera.h"
+
 namespace sg::test {
 namespace glsl {
 using namespace glm;
@@ -23,16 +25,17 @@ std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, u
   std::vector<TileLightSets> tiles(across * down);
   for (uint32_t ty = 0; ty < down; ++ty) {
     for (uint32_t tx = 0; tx < across; ++tx) {
-      float nearest = 1.0f, farthest = 0.0f;
+      // Reversed depths (systems/camera.h): the nearest surface has the greatest.
+      float nearest = camera_far_depth, farthest = camera_near_depth;
       for (uint32_t y = ty * size; y < std::min(height, (ty + 1) * size); ++y) {
         for (uint32_t x = tx * size; x < std::min(width, (tx + 1) * size); ++x) {
           const float d = depth[y * width + x];
-          if (d >= 1.0f) continue;
-          nearest = std::min(nearest, d);
-          farthest = std::max(farthest, d);
+          if (d <= camera_far_depth) continue;
+          nearest = std::max(nearest, d);
+          farthest = std::min(farthest, d);
         }
       }
-      if (farthest == 0.0f) continue;  // background only: no lights
+      if (nearest <= camera_far_depth) continue;  // background only: no lights
       const glm::vec2 texel = 2.0f / glm::vec2(width, height);
       const glm::vec2 ndc_min = glm::vec2(tx * size, ty * size) * texel - 1.0f;
       const glm::vec2 ndc_max =

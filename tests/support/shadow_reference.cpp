@@ -46,8 +46,8 @@ Ray pixel_ray(const CameraImage& camera, std::uint32_t x, std::uint32_t y) {
   const glm::dmat4 inverse_view_projection =
       glm::inverse(glm::dmat4(projection_matrix(camera.lens, aspect) * view_matrix(camera.pose)));
   const glm::dvec2 ndc((x + 0.5) / camera.size.x * 2.0 - 1.0, (y + 0.5) / camera.size.y * 2.0 - 1.0);
-  const glm::dvec4 near_point = inverse_view_projection * glm::dvec4(ndc, 0.0, 1.0);
-  const glm::dvec4 far_point = inverse_view_projection * glm::dvec4(ndc, 1.0, 1.0);
+  const glm::dvec4 near_point = inverse_view_projection * glm::dvec4(ndc, camera_near_depth, 1.0);
+  const glm::dvec4 far_point = inverse_view_projection * glm::dvec4(ndc, camera_far_depth, 1.0);
   const glm::dvec3 origin = glm::dvec3(near_point) / near_point.w;
   const glm::dvec3 direction = glm::normalize(glm::dvec3(far_point) / far_point.w - origin);
   return {glm::vec3(origin), glm::vec3(direction)};

@@ -71,15 +71,15 @@ shadows::FrameLights scattered_lights() {
   return lights;
 }
 
-// What the camera sees: a floor at y = -4 and a wall at z = -30, and a corner of sky (depth 1).
+// What the camera sees: a floor at y = -4 and a wall at z = -30, and a corner of sky (the far depth).
 std::vector<float> scene_depth(const glm::mat4& view_projection) {
   const glm::mat4 inverse = glm::inverse(view_projection);
-  std::vector<float> depth(width * height, 1.0f);
+  std::vector<float> depth(width * height, camera_far_depth);
   for (uint32_t y = 0; y < height; ++y) {
     for (uint32_t x = 0; x < width; ++x) {
       if (x < 40 && y < 30) continue;
       const glm::vec2 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f);
-      const glm::vec4 far_point = inverse * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec4 far_point = inverse * glm::vec4(ndc, camera_far_depth, 1.0f);
       const glm::vec3 ray = glm::normalize(glm::vec3(far_point) / far_point.w);
       float t = -30.0f / ray.z;                          // the wall
       if (ray.y < 0.0f) t = std::min(t, -4.0f / ray.y);  // the floor, where nearer
@@ -230,7 +230,7 @@ void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullin
   for (uint32_t y = 0; y < height; y += 3) {
     for (uint32_t x = 0; x < width; x += 3) {
       const float d = depth[y * width + x];
-      if (d >= 1.0f) continue;
+      if (d <= camera_far_depth) continue;
       const glm::vec4 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f, d, 1.0f);
       const glm::vec4 world = inverse * ndc;
       const glm::vec3 point = glm::vec3(world) / world.w;

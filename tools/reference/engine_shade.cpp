@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "systems/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/shadows/frame_lights.h"
 
@@ -37,7 +38,7 @@ constexpr int max_exposure_attempts = 8;
 float bright_quantile(const std::vector<float>& picture, const vk::DepthImage& depth) {
   std::vector<float> lit;
   for (size_t i = 0; i < picture.size(); ++i) {
-    if (depth.depths[i] < 1.0f && picture[i] > 0.0f) lit.push_back(picture[i]);
+    if (depth.depths[i] > camera_far_depth && picture[i] > 0.0f) lit.push_back(picture[i]);
   }
   if (lit.empty()) return 0.0f;
   const auto quantile = lit.begin() + std::ptrdiff_t(double(lit.size() - 1) * peak_quantile);

@@ -37,7 +37,7 @@ SurfacePoints surface_points(const vk::DepthImage& depth, const scene::CameraPos
     const auto y = static_cast<uint32_t>(row);
     for (uint32_t x = 0; x < depth.width; ++x) {
       const float d = depth.at(x, y);
-      if (d >= 1.0f) continue;  // cleared: nothing drawn there
+      if (d <= camera_far_depth) continue;  // cleared: nothing drawn there
       SurfacePoint& point = out.points[size_t{y} * depth.width + x];
       point.valid = true;
       point.position = unproject(to_world, depth.width, depth.height, x, y, d);
