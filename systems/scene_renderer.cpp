@@ -239,8 +239,10 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
     depth = tiled_forward_->prepass.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
     const LightTiles tiles =
         tiled_forward_->light_tiles.add_to(graph, depth, records, light_count, view_projection);
-    lit_sum = tiled_forward_->forward.add_to(graph, depth, tiles, atlas, records, gpu_scene_, slot, constants)
-                  .lit_sum;
+    const ForwardTargets lit =
+        tiled_forward_->forward.add_to(graph, depth, tiles, atlas, records, gpu_scene_, slot, constants);
+    lit_sum = lit.lit_sum;
+    depth = lit.depth;  // the forward pass's version: later readers must take the newest
     light_tiles = tiles;
   } else {
     const GBuffer gbuffer =

@@ -175,6 +175,31 @@ TEST_F(SandboxFrameTest, EveryLightingPathRendersTheSamePicture) {
   EXPECT_LE(largest_difference(fused, forward), 2);
 }
 
+// Passes added after the lighting (tools' depth capture, overlays) read the camera's depth as the
+// lighting left it: every path hands on its newest version, and the depths agree. The tiled
+// forward path once handed on its prepass's, which a later reader could not declare.
+TEST_F(SandboxFrameTest, EveryLightingPathHandsTheCameraDepthToLaterPasses) {
+  std::vector<std::vector<float>> depths;
+  for (const LightingPath lighting :
+       {LightingPath::forward, LightingPath::deferred, LightingPath::fused, LightingPath::every_light}) {
+    sandbox::Options options = lit_by(lighting);
+    sandbox::SandboxScene scene = sandbox::load_sandbox_scene(options, float(width) / height);
+    vk::FrameRing frames(context);
+    sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
+    frame.resize({width, height});
+    frame.capture_depth();
+    frame.record(frames.begin_frame(), 0.0);
+    frames.submit();
+    frames.wait_idle();
+    depths.push_back(frame.read_captured_depth().depths);
+  }
+  const std::vector<float>& forward = depths.front();
+  EXPECT_GT(std::count_if(forward.begin(), forward.end(), [](float d) { return d > camera_far_depth; }),
+            long(forward.size() / 2))
+      << "the scene fills most of the picture";
+  for (size_t path = 1; path < depths.size(); ++path) EXPECT_EQ(depths[path], forward) << "path " << path;
+}
+
 // A group with one light shades from its record alone (SINGLE_LIGHT), a group with several from
 // each tile's list: with every light on pcf, the stress scene's three point lights share one
 // group and its three spots and the sun another, and deferred still draws what forward draws.
