@@ -220,16 +220,19 @@ float compare_filtered(Light light, vec2 uv, float reference) {
   return 1.0 - textureGrad(shadow_atlas_compare, coord, vec2(0.0), vec2(0.0));
 }
 
-// The centre of the light-map texel that a nearest fetch at `uv` reads, relative to `uv`.
-vec2 to_texel_centre(Light light, vec2 uv) {
+// The centre of the map texel holding `uv` (clamped into the map). Nearest fetches read at texel
+// centres, so the texel read is the one the receiver plane is taken at: fetched at uv itself, a
+// point within the sampler's subtexel precision of a texel's edge could read the neighbour and
+// compare it with the plane at the other centre (acne in single pixels on slanted receivers).
+vec2 texel_centre(Light light, vec2 uv) {
   float texels = 1.0 / light.shadow_depth.z;
-  return (floor(uv * texels) + 0.5) * light.shadow_depth.z - uv;
+  return (clamp(floor(uv * texels), vec2(0.0), vec2(texels - 1.0)) + 0.5) * light.shadow_depth.z;
 }
 
 // 4.1: z - bias > depth(uv) ? 1 : 0, on the nearest texel (z taken where that texel's depth was).
 float shadow_2d_hard(Light light, MapPoint point, float bias) {
-  float reference = plane_reference(point, to_texel_centre(light, point.uv), bias);
-  return reference > fetch_depth(light, point.uv) ? 1.0 : 0.0;
+  vec2 centre = texel_centre(light, point.uv);
+  return plane_reference(point, centre - point.uv, bias) > fetch_depth(light, centre) ? 1.0 : 0.0;
 }
 
 // A hardware 2x2 comparison at uv + offset against the receiver plane there; the four texels'
@@ -282,9 +285,9 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, uvec2
   float blocker_sum = 0.0;
   float blockers = 0.0;
   [[unroll]] for (uint i = 0u; i < PCSS_BLOCKER_SAMPLES; ++i) {
-    vec2 offset = rotation * POISSON_DISK[i] * search_uv;
-    float depth = fetch_depth(light, point.uv + offset);
-    if (depth < plane_reference(point, offset + to_texel_centre(light, point.uv + offset), bias)) {
+    vec2 centre = texel_centre(light, point.uv + rotation * POISSON_DISK[i] * search_uv);
+    float depth = fetch_depth(light, centre);
+    if (depth < plane_reference(point, centre - point.uv, bias)) {
       blocker_sum += depth;
       blockers += 1.0;
     }
