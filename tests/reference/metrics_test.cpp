@@ -46,6 +46,7 @@ TEST(ShadowMetrics, DarkenedLitPixelsAreAcne) {
   ShadowImages images = half_shadowed();
   for (uint32_t y = 0; y < 10; ++y) images.engine[y * 20 + 18] = 0.7f;  // a dark stripe on lit ground
   const ShadowMetrics m = shadow_metrics(images, 2);
+  EXPECT_EQ(m.lit, 80u);
   EXPECT_DOUBLE_EQ(m.acne, 10.0 / 80.0) << "10 of the 80 lit pixels outside the band";
   EXPECT_NEAR(m.umbra_and_lit.mean_absolute, 10 * 0.3 / 180.0, 1e-6);
   EXPECT_NEAR(m.umbra_and_lit.rms, std::sqrt(10 * 0.09 / 180.0), 1e-6);

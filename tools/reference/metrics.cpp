@@ -59,7 +59,6 @@ ShadowMetrics shadow_metrics(const ShadowImages& images, int band_radius) {
   const std::vector<bool> band = edge_band(images, band_radius);
   ShadowMetrics m;
   uint64_t misclassified = 0;
-  uint64_t lit = 0;
   uint64_t darkened = 0;
   ErrorSum penumbra, elsewhere;
   for (size_t i = 0; i < images.measured.size(); ++i) {
@@ -74,12 +73,12 @@ ShadowMetrics shadow_metrics(const ShadowImages& images, int band_radius) {
     ++m.outside_band;
     misclassified += (engine < 0.5f) != shadowed;
     if (!shadowed && soft >= fully_lit) {
-      ++lit;
+      ++m.lit;
       darkened += engine < 1.0f - acne_darkening;
     }
   }
   m.misclassified = m.outside_band ? double(misclassified) / double(m.outside_band) : 0.0;
-  m.acne = lit ? double(darkened) / double(lit) : 0.0;
+  m.acne = m.lit ? double(darkened) / double(m.lit) : 0.0;
   m.penumbra = penumbra.stats();
   m.umbra_and_lit = elsewhere.stats();
   return m;

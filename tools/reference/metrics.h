@@ -35,8 +35,9 @@ struct ShadowMetrics {
   // Against the soft reference: inside its penumbra (partly visible emitter) and outside it.
   ErrorStats penumbra;
   ErrorStats umbra_and_lit;
-  // Fully lit in both references and outside the band, but darkened by more than 0.1 in the
-  // render: self-shadowing (acne), as a fraction of those lit pixels.
+  // Fully lit in both references and outside the band: `lit` pixels; of them, darkened by more
+  // than 0.1 in the render: self-shadowing (acne), as a fraction of `lit`.
+  uint64_t lit = 0;
   double acne = 0.0;
 };
 

@@ -64,6 +64,7 @@ nlohmann::json to_json(const ReferenceReport& report) {
                       {"shadowed", m.shadowed},
                       {"outside_band", m.outside_band},
                       {"misclassified", m.misclassified},
+                      {"lit", m.lit},
                       {"acne", m.acne},
                       {"penumbra", error_json(m.penumbra)},
                       {"outside_penumbra", error_json(m.umbra_and_lit)}});
