@@ -80,9 +80,11 @@ def measure(args):
         run_tool(args, name, scene_args,
                  ["--cost-frames", str(args.cost_frames), "--soft-samples", str(args.soft_samples)],
                  os.path.join(args.out, f"{name}.json"))
-        # Misclassification is measured against the hard reference: few soft rays are enough.
+        # Misclassification is measured against the hard reference: few soft rays are enough. Each
+        # map gets the size asked for however small its light is on screen.
         run_tool(args, name + " tiers", scene_args,
-                 ["--cost-frames", "0", "--soft-samples", "16", "--resolutions", ",".join(map(str, TIERS))],
+                 ["--cost-frames", "0", "--soft-samples", "16", "--resolutions", ",".join(map(str, TIERS)),
+                  "--shadow-resolution", "requested"],
                  os.path.join(args.out, f"{name}_tiers.json"))
 
 
@@ -147,8 +149,8 @@ def summary_table(name, report):
 
 
 def tier_runs(report, algorithm):
-    """{light: {tier: run}} for the runs whose map got the tier asked for (a light whose importance
-    caps its map below a tier has no entry there: that run measured the cap again)."""
+    """{light: {tier: run}} for the runs whose map got the tier asked for (a tier a light could not
+    have, such as a cube's face beyond a quarter page, has no entry)."""
     out = {}
     for light in filter(measurable, report["lights"]):
         for r in light["runs"]:
@@ -160,8 +162,7 @@ def tier_runs(report, algorithm):
 def tier_tables(data):
     print("\n### Worst light's misclassified pixels against the map size\n")
     print("Per scene and algorithm, the largest misclassified fraction over the lights whose map got the "
-          f"size asked for (lights measured on at least {MIN_PIXELS} pixels); '-': no light got it (importance "
-          "capped them all lower).\n")
+          f"size asked for (lights measured on at least {MIN_PIXELS} pixels); '-': no light got it.\n")
     print("| scene | algorithm | " + " | ".join(str(t) for t in TIERS) + " | needs for <= 1% |")
     print("|---|---|" + "---:|" * len(TIERS) + "---|")
     for name, (_, tiers) in data.items():
