@@ -93,8 +93,9 @@ void GpuScene::place(const ecs::World& world, size_t i) {
   const scene::Material& material = found ? *found : default_material;
   const float texture =
       material.base_color_texture == scene::no_texture ? -1.0f : float(material.base_color_texture);
+  const float cutoff = material.alpha_mode == scene::AlphaMode::mask ? material.alpha_cutoff : 0.0f;
   sorted_[i] = {model, glm::vec4(glm::vec3(material.base_color), material.specular),
-                glm::vec4(material.shininess, texture, 0.0f, 0.0f)};
+                glm::vec4(material.shininess, texture, material.base_color.a, cutoff)};
   bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, model);
   keys_[i] = ecs::entity_key(entity);
 }

@@ -8,7 +8,8 @@ namespace sg {
 struct GpuInstance {
   glm::mat4 model;  // the normal matrix is derived from it where needed (scene.vert)
   glm::vec4 base_color_specular;
-  glm::vec4 material;  // x: shininess, y: base colour texture index or -1
+  glm::vec4 material;  // x: shininess, y: base colour texture index or -1, z: base colour alpha,
+                       // w: mask's alpha cutoff (0: no cut-out)
 };
 static_assert(sizeof(GpuInstance) == 96);
 

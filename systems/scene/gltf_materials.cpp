@@ -46,6 +46,14 @@ std::vector<Material> import_materials(const tinygltf::Model& model, Scene& scen
                         std::to_string(pbr.baseColorTexture.texCoord) + "; TEXCOORD_0 used instead");
       }
     }
+    const tinygltf::Material& source = model.materials[m];
+    if (source.alphaMode == "MASK") {
+      material.alpha_mode = AlphaMode::mask;
+      material.alpha_cutoff = static_cast<float>(source.alphaCutoff);
+    } else if (source.alphaMode == "BLEND") {
+      material.alpha_mode = AlphaMode::blend;
+    }
+    material.double_sided = source.doubleSided;
     materials.push_back(material);
   }
   return materials;

@@ -178,6 +178,17 @@ struct Validator {
     }
   }
 
+  void material(std::size_t m) const {
+    const tinygltf::Material& material = model.materials[m];
+    const std::string object = indexed("materials", m);
+    const int texture = material.pbrMetallicRoughness.baseColorTexture.index;
+    if (texture >= 0) require_index(texture, model.textures, object, "baseColorTexture", "textures");
+    if (material.alphaMode != "OPAQUE" && material.alphaMode != "MASK" && material.alphaMode != "BLEND") {
+      fail(object, "alphaMode '" + material.alphaMode + "' is none of OPAQUE, MASK and BLEND");
+    }
+    if (!(material.alphaCutoff >= 0.0)) fail(object, "alphaCutoff must be 0 or more");
+  }
+
   void run() const {
     for (std::size_t i = 0; i < model.accessors.size(); ++i) accessor(i);
     for (std::size_t m = 0; m < model.meshes.size(); ++m) {
@@ -191,12 +202,7 @@ struct Validator {
         require_index(node, model.nodes, indexed("scenes", s), "node", "nodes");
       }
     }
-    for (std::size_t m = 0; m < model.materials.size(); ++m) {
-      const int texture = model.materials[m].pbrMetallicRoughness.baseColorTexture.index;
-      if (texture >= 0) {
-        require_index(texture, model.textures, indexed("materials", m), "baseColorTexture", "textures");
-      }
-    }
+    for (std::size_t m = 0; m < model.materials.size(); ++m) material(m);
     for (std::size_t t = 0; t < model.textures.size(); ++t) {
       if (model.textures[t].source >= 0) {
         require_index(model.textures[t].source, model.images, indexed("textures", t), "source", "images");

@@ -71,6 +71,19 @@ TEST(GltfErrors, IndexOutOfRange) {
   expect_refused(file.write_gltf(dir, "indices"), {"accessors[0]", "index 5", "out of range", "3 vertices"});
 }
 
+TEST(GltfErrors, UnknownAlphaModeAndNegativeCutoff) {
+  TempDir dir;
+  for (const auto& [material, fragment] :
+       {std::pair{nlohmann::json{{"alphaMode", "CLIP"}}, std::string("alphaMode 'CLIP'")},
+        std::pair{nlohmann::json{{"alphaMode", "MASK"}, {"alphaCutoff", -0.5}},
+                  std::string("alphaCutoff")}}) {
+    GltfWriter file;
+    file.document["materials"] = {material};
+    file.add_node({{"mesh", file.add_mesh({{"POSITION", file.add_triangle_positions()}}, -1, 0)}});
+    expect_refused(file.write_gltf(dir, "alpha"), {"materials[0]", fragment});
+  }
+}
+
 TEST(GltfErrors, IndexCountNotAMultipleOfThree) {
   TempDir dir;
   GltfWriter file;

@@ -235,6 +235,31 @@ TEST(GltfImport, BaseColourFactorAndTexture) {
   EXPECT_EQ(materials[2].base_color_texture, no_texture);
 }
 
+TEST(GltfImport, AlphaModesCutoffsAndDoubleSidedness) {
+  TempDir dir;
+  GltfWriter file;
+  file.document["materials"] = {
+      {{"alphaMode", "MASK"}, {"alphaCutoff", 0.3}, {"doubleSided", true}},
+      {{"alphaMode", "MASK"}},
+      {{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1.0, 1.0, 1.0, 0.4}}}}},
+      {{"alphaMode", "OPAQUE"}}};
+  for (int m = 0; m < 4; ++m) {
+    file.add_node({{"mesh", file.add_mesh({{"POSITION", file.add_triangle_positions()}}, -1, m)}});
+  }
+  Scene scene = load_gltf(file.write_gltf(dir, "alpha").string());
+  const auto materials = components<Material>(scene);
+  ASSERT_EQ(materials.size(), 4u);
+  EXPECT_EQ(materials[0].alpha_mode, AlphaMode::mask);
+  EXPECT_FLOAT_EQ(materials[0].alpha_cutoff, 0.3f);
+  EXPECT_TRUE(materials[0].double_sided);
+  EXPECT_EQ(materials[1].alpha_mode, AlphaMode::mask);
+  EXPECT_FLOAT_EQ(materials[1].alpha_cutoff, 0.5f) << "glTF's default cutoff";
+  EXPECT_FALSE(materials[1].double_sided);
+  EXPECT_EQ(materials[2].alpha_mode, AlphaMode::blend);
+  EXPECT_FLOAT_EQ(materials[2].base_color.a, 0.4f);
+  EXPECT_EQ(materials[3].alpha_mode, AlphaMode::opaque);
+}
+
 TEST(GltfImport, PerspectiveCameraAndSkippedOrthographic) {
   TempDir dir;
   GltfWriter file;
