@@ -11,10 +11,14 @@
 
 // Every material texture of the scene, one per layer (systems/gpu_textures.h).
 layout(set = 0, binding = material_textures_binding) uniform sampler2DArray base_color_textures;
-// False for a scene without images: a CPU driver samples the texture for every fragment
-// whatever the branch says (it runs both sides of every branch), so the sampling code is left
-// out at compile time. constant_id 0 and 1 are the including shaders' own.
-layout(constant_id = 2) const bool MATERIAL_TEXTURES = true;
+// What a pipeline's materials need (material_pass_constants, systems/gpu_textures.h), a bit
+// each; constant_id 0 and 1 are the including shaders' own. Bit 0, textures: clear for a scene
+// without images, as a CPU driver samples the texture for every fragment whatever the branch
+// says (it runs both sides of every branch). Bit 1, a mask's cut-out: only pipelines that draw
+// masked materials discard, since a shader that may discard loses the early depth test.
+layout(constant_id = 2) const uint MATERIAL_FEATURES = 1u;
+const bool MATERIAL_TEXTURES = (MATERIAL_FEATURES & 1u) != 0u;
+const bool ALPHA_TEST = (MATERIAL_FEATURES & 2u) != 0u;
 
 // What scene.vert passes on. The instance's material comes per vertex, flat: read per fragment,
 // each of its words was a storage-buffer load, which a CPU driver makes lane by lane (a quarter
@@ -23,19 +27,35 @@ layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) flat in vec4 in_base_color_specular;  // rgb: base colour; a: specular strength kS
 layout(location = 3) in vec2 in_uv;
-layout(location = 4) flat in vec2 in_shininess_texture;  // x: Blinn shininess s; y: texture layer or -1
+// x: Blinn shininess s; y: texture layer or -1; z: base colour alpha; w: the mask's cutoff
+layout(location = 4) flat in vec4 in_material;
 
-SurfacePoint fragment_surface() {
-  SurfacePoint p;
-  p.normal = normalize(in_normal);
-  p.to_viewer = normalize(frame.camera_position.xyz - in_world_position);
-  p.base_color = in_base_color_specular.rgb;
-  int texture_index = int(in_shininess_texture.y);
+// The base colour, factor times texture: rgb and alpha.
+vec4 fragment_base_color() {
+  vec4 color = vec4(in_base_color_specular.rgb, in_material.z);
+  int texture_index = int(in_material.y);
   if (MATERIAL_TEXTURES && texture_index >= 0) {
-    p.base_color *= texture(base_color_textures, vec3(in_uv, float(texture_index))).rgb;
+    color *= texture(base_color_textures, vec3(in_uv, float(texture_index)));
   }
+  return color;
+}
+
+// Drops the fragment where a masked material's alpha is below its cutoff.
+void cut_out(float alpha) {
+  if (ALPHA_TEST && alpha < in_material.w) discard;
+}
+
+// Back faces (drawn only for double-sided materials) are lit from their side, their normal
+// flipped, as glTF defines.
+SurfacePoint fragment_surface() {
+  vec4 base_color = fragment_base_color();
+  cut_out(base_color.a);
+  SurfacePoint p;
+  p.normal = normalize(gl_FrontFacing ? in_normal : -in_normal);
+  p.to_viewer = normalize(frame.camera_position.xyz - in_world_position);
+  p.base_color = base_color.rgb;
   p.specular = in_base_color_specular.a;
-  p.shininess = in_shininess_texture.x;
+  p.shininess = in_material.x;
   p.pixel = uvec2(gl_FragCoord.xy);
   return p;
 }

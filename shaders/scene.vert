@@ -10,7 +10,7 @@ layout(location = 0) out vec3 out_world_position;
 layout(location = 1) out vec3 out_normal;
 layout(location = 2) flat out vec4 out_base_color_specular;  // material.glsl says why here
 layout(location = 3) out vec2 out_uv;
-layout(location = 4) flat out vec2 out_shininess_texture;
+layout(location = 4) flat out vec4 out_material;
 
 void main() {
   Instance inst = instances[gl_InstanceIndex];
@@ -20,7 +20,7 @@ void main() {
   // per vertex, rather than uploaded per instance: a frame then writes 40% fewer bytes.
   out_normal = transpose(inverse(mat3(inst.model))) * in_normal;
   out_base_color_specular = inst.base_color_specular;
-  out_shininess_texture = inst.material.xy;
+  out_material = inst.material;
   out_uv = in_uv;
   gl_Position = frame.view_projection * world;
 }

@@ -3,26 +3,45 @@
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/alpha_test.frag.spv.h"
 #include "shaders/depth_prepass.vert.spv.h"
 #include "systems/gpu_scene.h"
+#include "systems/gpu_textures.h"
 #include "systems/shader_bindings.h"
 
 namespace sg {
+namespace {
 
-DepthPrepass::DepthPrepass(vk::VulkanContext& context)
-    : layout_(context.device(),
-              {{bindings::instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
-                VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT}},
-              vk::push_constants<FrameConstants>(VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT)) {
-  vk::GraphicsPipelineDesc desc;
-  desc.vertex_spirv = depth_prepass_vert;
-  scene_vertex_input(desc, false);
-  desc.depth_format = vk::to_vk(camera_depth_format);
-  desc.depth_compare = camera_depth_test;
-  desc.layout = layout_.get();
-  desc.name = "depth prepass";
-  pipeline_ = vk::create_graphics_pipeline(context, desc);
-}
+constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+}  // namespace
+
+DepthPrepass::DepthPrepass(vk::VulkanContext& context, const GpuTextures& textures)
+    : context_(context),
+      textures_(textures),
+      layout_(context.device(),
+              {{bindings::instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
+               {bindings::material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                VK_SHADER_STAGE_FRAGMENT_BIT}},
+              vk::push_constants<FrameConstants>(both_stages)),
+      pipelines_([layout = layout_.get(), &textures](uint32_t draw_class) {
+        if (draw_class & draw_masked) {
+          vk::GraphicsPipelineDesc desc = camera_pipeline_desc(alpha_test_frag, {}, layout, "depth prepass");
+          desc.fragment_specialization = material_pass_constants(0, 0, textures);
+          return for_draw_class(std::move(desc), draw_class);
+        }
+        vk::GraphicsPipelineDesc desc;
+        desc.vertex_spirv = depth_prepass_vert;
+        scene_vertex_input(desc, false);
+        desc.depth_format = vk::to_vk(camera_depth_format);
+        desc.depth_compare = camera_depth_test;
+        desc.cull_mode = draw_class & draw_double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+        desc.layout = layout;
+        desc.name = "depth prepass";
+        return desc;
+      }) {}
+
+void DepthPrepass::prepare(const GpuScene& scene) { pipelines_.prepare(context_, scene); }
 
 rg::ImageHandle DepthPrepass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height,
                                      const GpuScene& scene, uint32_t slot,
@@ -35,10 +54,12 @@ rg::ImageHandle DepthPrepass::add_to(rg::RenderGraph& graph, uint32_t width, uin
                         rg::Usage::depth_attachment, camera_depth_clear);
       },
       [this, &scene, slot, constants](const vk::PassRecorder& rec) {
-        const VkDescriptorSet set = layout_.write(rec.allocate_set(layout_))
-                                        .buffer(bindings::instances_binding, scene.instances(slot).handle())
-                                        .update();
-        scene.draw_camera_pass(rec, pipeline_.get(), layout_, set, constants, slot);
+        const VkDescriptorSet set =
+            layout_.write(rec.allocate_set(layout_))
+                .buffer(bindings::instances_binding, scene.instances(slot).handle())
+                .image(bindings::material_textures_binding, textures_.array().view(), textures_.sampler())
+                .update();
+        scene.draw_camera_pass(rec, pipelines_.get(), layout_, set, constants, slot);
       });
   return depth;
 }

@@ -1,12 +1,13 @@
 #pragma once
-// The depth prepass of the forward paths (shaders/depth_prepass.vert, no fragment shader): every
-// drawable's depth into a new D32 image, so that the shading pass after it, testing LESS_OR_EQUAL
-// without writing depth, shades each pixel once.
+// The depth prepass of the forward paths: every drawable's depth into a new D32 image, so that
+// the shading pass after it, testing for the same depth without writing it, shades each pixel
+// once. Plain surfaces need no fragment shader (shaders/depth_prepass.vert); masked ones cut
+// their holes (scene.vert and shaders/alpha_test.frag).
 #include <cstdint>
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
-#include "rendergraph/device/unique_handle.h"
+#include "systems/camera_pipelines.h"
 #include "systems/scene_gpu_types.h"
 
 namespace sg::vk {
@@ -16,10 +17,15 @@ class VulkanContext;
 namespace sg {
 
 class GpuScene;
+class GpuTextures;
 
 class DepthPrepass {
  public:
-  explicit DepthPrepass(vk::VulkanContext& context);
+  // `textures` must outlive the pass.
+  DepthPrepass(vk::VulkanContext& context, const GpuTextures& textures);
+
+  // Makes the pipelines of the draw classes `scene` has.
+  void prepare(const GpuScene& scene);
 
   // Adds the pass and returns the new depth image, `width` x `height`. `scene` is read when the
   // pass records.
@@ -27,9 +33,10 @@ class DepthPrepass {
                          uint32_t slot, const FrameConstants& constants) const;
 
  private:
-  // Binds only the instances: a set with unwritten descriptors is not bindable.
+  vk::VulkanContext& context_;
+  const GpuTextures& textures_;
   vk::PipelineLayout layout_;
-  vk::UniquePipeline pipeline_;
+  CameraPipelines pipelines_;
 };
 
 }  // namespace sg

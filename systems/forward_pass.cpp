@@ -35,14 +35,17 @@ ForwardPass::ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
 void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer& lights,
                           const ShadowAtlas& shadow_atlas, LightingView view) {
   view_ = view;
-  vk::UniquePipeline& pipeline = pipelines_[static_cast<uint32_t>(view)];
-  if (!pipeline) {
-    vk::GraphicsPipelineDesc desc =
-        camera_pipeline_desc(scene_frag, {vk::to_vk(lit_sum_format)}, layout_.get(), "forward");
-    // Constant 0 is unused here, 1 is light_shading.glsl's view.
-    desc.fragment_specialization = material_pass_constants(0, static_cast<uint32_t>(view), textures_);
-    pipeline = vk::create_graphics_pipeline(context_, desc);
-  }
+  pipelines_
+      .try_emplace(static_cast<uint32_t>(view),
+                   [layout = layout_.get(), &textures = textures_, view](uint32_t draw_class) {
+                     vk::GraphicsPipelineDesc desc =
+                         camera_pipeline_desc(scene_frag, {vk::to_vk(lit_sum_format)}, layout, "forward");
+                     // Constant 0 is unused here, 1 is light_shading.glsl's view.
+                     desc.fragment_specialization =
+                         material_pass_constants(0, static_cast<uint32_t>(view), textures);
+                     return for_draw_class(std::move(desc), draw_class);
+                   })
+      .first->second.prepare(context_, scene);
   const vk::Image& atlas = shadow_atlas.image();
   const VkImageView atlas_view =
       atlas.views().get({0, 1, 0, atlas.array_layers(), VK_IMAGE_VIEW_TYPE_2D_ARRAY});
@@ -66,8 +69,8 @@ ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, uint32_t width, uint3
                     rg::ClearValue::colour_of(background_colour.r, background_colour.g, background_colour.b));
       },
       [this, &scene, slot, constants,
-       pipeline = pipelines_[static_cast<uint32_t>(view_)].get()](const vk::PassRecorder& rec) {
-        scene.draw_camera_pass(rec, pipeline, layout_, slot_sets_.sets[slot], constants, slot);
+       pipelines = pipelines_.at(static_cast<uint32_t>(view_)).get()](const vk::PassRecorder& rec) {
+        scene.draw_camera_pass(rec, pipelines, layout_, slot_sets_.sets[slot], constants, slot);
       });
   return targets;
 }

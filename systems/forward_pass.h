@@ -2,12 +2,12 @@
 // Forward lighting: every drawable of the GpuScene shaded by ambient plus every light of the
 // frame at every pixel, each light with its own shadow algorithm and parameters
 // (shaders/scene.frag, shaders/light_shading.glsl), into a lit sum and a depth buffer it creates.
-#include <array>
 #include <cstdint>
+#include <unordered_map>
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
-#include "rendergraph/device/unique_handle.h"
+#include "systems/camera_pipelines.h"
 #include "systems/light_resources.h"
 #include "systems/lighting_path.h"
 #include "systems/scene_gpu_types.h"
@@ -37,7 +37,7 @@ class ForwardPass {
 
   // CPU side of a frame, after FrameRing::begin_frame returned `slot`: points the slot's
   // descriptor set at this frame's instances, light records and shadow images, and makes the
-  // pipeline for `view` if it has not yet.
+  // pipelines for `view` and the scene's draw classes that it has not yet.
   void prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer& lights,
                const ShadowAtlas& shadow_atlas, LightingView view);
 
@@ -53,7 +53,7 @@ class ForwardPass {
   LightResources light_resources_;
   vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;
-  std::array<vk::UniquePipeline, 2> pipelines_;  // by LightingView
+  std::unordered_map<uint32_t, CameraPipelines> pipelines_;  // by LightingView
   LightingView view_ = LightingView::lit;
 };
 

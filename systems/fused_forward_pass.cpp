@@ -34,18 +34,23 @@ FusedForwardPass::FusedForwardPass(vk::VulkanContext& context, const GpuTextures
       layout_(context.device(), lit_camera_bindings(), vk::push_constants<FrameConstants>(both_stages)) {}
 
 void FusedForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-                               LightingView view) {
+                               LightingView view, const GpuScene& scene) {
   const uint32_t groups = shadows::groups_present(group_begin);
   key_ = groups | static_cast<uint32_t>(view) << 16;  // groups take the low light_group_count bits
-  vk::UniquePipeline& pipeline = pipelines_[key_];
-  if (pipeline) return;
-  vk::GraphicsPipelineDesc desc =
-      camera_pipeline_desc(scene_fused_frag, {vk::to_vk(frame_format_)}, layout_.get(), "fused forward");
-  desc.fragment_specialization = material_pass_constants(groups, static_cast<uint32_t>(view), textures_);
-  // depth_prepass.vert computed the same positions: draw only what the prepass kept.
-  desc.depth_compare = camera_depth_retest;
-  desc.depth_write = false;
-  pipeline = vk::create_graphics_pipeline(context_, desc);
+  pipelines_
+      .try_emplace(key_,
+                   [layout = layout_.get(), &textures = textures_, format = frame_format_, groups,
+                    view](uint32_t draw_class) {
+                     vk::GraphicsPipelineDesc desc =
+                         camera_pipeline_desc(scene_fused_frag, {vk::to_vk(format)}, layout, "fused forward");
+                     desc.fragment_specialization =
+                         material_pass_constants(groups, static_cast<uint32_t>(view), textures);
+                     // The depth prepass computed the same positions: draw only what it kept.
+                     desc.depth_compare = camera_depth_retest;
+                     desc.depth_write = false;
+                     return for_draw_class(std::move(desc), draw_class);
+                   })
+      .first->second.prepare(context_, scene);
 }
 
 FusedTargets FusedForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth, rg::ImageHandle frame,
@@ -63,12 +68,12 @@ FusedTargets FusedForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle de
                                 rg::ClearValue::colour_of(background.r, background.g, background.b));
       },
       [this, &scene, &lights, slot, constants, atlas,
-       pipeline = pipelines_.at(key_).get()](const vk::PassRecorder& rec) {
+       pipelines = pipelines_.at(key_).get()](const vk::PassRecorder& rec) {
         vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
         writer.buffer(instances_binding, scene.instances(slot).handle())
             .image(material_textures_binding, textures_.array().view(), textures_.sampler());
         const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
-        scene.draw_camera_pass(rec, pipeline, layout_, set, constants, slot);
+        scene.draw_camera_pass(rec, pipelines, layout_, set, constants, slot);
       });
   return targets;
 }

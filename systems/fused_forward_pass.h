@@ -12,7 +12,7 @@
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
-#include "rendergraph/device/unique_handle.h"
+#include "systems/camera_pipelines.h"
 #include "systems/light_resources.h"
 #include "systems/lighting_path.h"
 #include "systems/scene_gpu_types.h"
@@ -38,9 +38,10 @@ class FusedForwardPass {
   // `frame_format`: the format of the images add_to draws into. `textures` must outlive the pass.
   FusedForwardPass(vk::VulkanContext& context, const GpuTextures& textures, rg::Format frame_format);
 
-  // Makes the pipeline for the groups that have lights (group_begin as in shadows::FrameLights)
-  // and `view`.
-  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view);
+  // Makes the pipelines for the groups that have lights (group_begin as in shadows::FrameLights),
+  // `view` and the draw classes `scene` has.
+  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view,
+               const GpuScene& scene);
 
   // Shades every drawable where the prepass left it and writes the picture, exposed by
   // `exposure` and tone mapped, into all of `frame`; returns the new versions. `lights` and
@@ -55,8 +56,8 @@ class FusedForwardPass {
   rg::Format frame_format_;
   LightResources light_resources_;
   vk::PipelineLayout layout_;
-  std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;  // by groups present and view
-  uint32_t key_ = 0;                                            // this frame's
+  std::unordered_map<uint32_t, CameraPipelines> pipelines_;  // by groups present and view
+  uint32_t key_ = 0;                                         // this frame's
 };
 
 }  // namespace sg

@@ -23,28 +23,32 @@ constexpr rg::Format albedo_format = rg::Format::rgba8_unorm;
 
 GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures,
                          bool writes_lit_sum)
-    : writes_lit_sum_(writes_lit_sum),
+    : context_(context),
+      writes_lit_sum_(writes_lit_sum),
       layout_(context.device(),
               {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, both_stages},
                {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                 VK_SHADER_STAGE_FRAGMENT_BIT}},
               vk::push_constants<FrameConstants>(both_stages)),
-      slot_sets_(layout_.allocate_sets(frames_in_flight)) {
+      slot_sets_(layout_.allocate_sets(frames_in_flight)),
+      pipelines_([writes_lit_sum, layout = layout_.get(), &textures](uint32_t draw_class) {
+        std::vector<VkFormat> formats{vk::to_vk(normal_format), vk::to_vk(albedo_format)};
+        if (writes_lit_sum) formats.push_back(vk::to_vk(TiledLightingPass::lit_sum_format));
+        vk::GraphicsPipelineDesc desc =
+            camera_pipeline_desc(writes_lit_sum ? std::span<const uint32_t>(gbuffer_lit_sum_frag)
+                                                : std::span<const uint32_t>(gbuffer_frag),
+                                 std::move(formats), layout, "g-buffer");
+        desc.fragment_specialization = material_pass_constants(0, 0, textures);
+        return for_draw_class(std::move(desc), draw_class);
+      }) {
   for (const VkDescriptorSet set : slot_sets_.sets) {
     layout_.write(set).image(material_textures_binding, textures.array().view(), textures.sampler()).update();
   }
-  std::vector<VkFormat> formats{vk::to_vk(normal_format), vk::to_vk(albedo_format)};
-  if (writes_lit_sum) formats.push_back(vk::to_vk(TiledLightingPass::lit_sum_format));
-  vk::GraphicsPipelineDesc desc =
-      camera_pipeline_desc(writes_lit_sum ? std::span<const uint32_t>(gbuffer_lit_sum_frag)
-                                          : std::span<const uint32_t>(gbuffer_frag),
-                           std::move(formats), layout_.get(), "g-buffer");
-  desc.fragment_specialization = material_pass_constants(0, 0, textures);
-  pipeline_ = vk::create_graphics_pipeline(context, desc);
 }
 
 void GBufferPass::prepare(uint32_t slot, const GpuScene& scene) {
   layout_.write(slot_sets_.sets[slot]).buffer(instances_binding, scene.instances(slot).handle()).update();
+  pipelines_.prepare(context_, scene);
 }
 
 GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height, const GpuScene& scene,
@@ -68,7 +72,7 @@ GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t hei
                           rg::Usage::depth_attachment, camera_depth_clear);
       },
       [this, &scene, slot, constants](const vk::PassRecorder& rec) {
-        scene.draw_camera_pass(rec, pipeline_.get(), layout_, slot_sets_.sets[slot], constants, slot);
+        scene.draw_camera_pass(rec, pipelines_.get(), layout_, slot_sets_.sets[slot], constants, slot);
       });
   return g;
 }

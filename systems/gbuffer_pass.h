@@ -7,7 +7,7 @@
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
-#include "rendergraph/device/unique_handle.h"
+#include "systems/camera_pipelines.h"
 #include "systems/scene_gpu_types.h"
 
 namespace sg::vk {
@@ -22,7 +22,7 @@ class GpuTextures;
 struct GBuffer {
   rg::ImageHandle normal;  // rgba16f: unit normal, shininess
   rg::ImageHandle albedo;  // rgba8: base colour, specular strength
-  rg::ImageHandle depth;   // D32: 1 where no surface was drawn; world positions come back from it
+  rg::ImageHandle depth;   // D32, reversed: 0 where no surface was drawn; world positions come back from it
   // The lit sum's start (TiledLightingPass::lit_sum_format): the ambient term times the base
   // colour, the background colour where no surface was drawn. Invalid unless the pass writes it.
   rg::ImageHandle lit_sum;
@@ -35,17 +35,19 @@ class GBufferPass {
   GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures,
               bool writes_lit_sum = false);
 
-  // Points the slot's descriptor set at this frame's instances.
+  // Points the slot's descriptor set at this frame's instances, and makes the pipelines of the
+  // draw classes the scene has.
   void prepare(uint32_t slot, const GpuScene& scene);
 
   GBuffer add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height, const GpuScene& scene,
                  uint32_t slot, const FrameConstants& constants) const;
 
  private:
+  vk::VulkanContext& context_;
   bool writes_lit_sum_;
   vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;
-  vk::UniquePipeline pipeline_;
+  CameraPipelines pipelines_;
 };
 
 }  // namespace sg

@@ -42,6 +42,11 @@ std::vector<VkDescriptorSetLayoutBinding> lit_camera_bindings(
   return LightResources::bindings(fragment, std::move(more));
 }
 
+uint32_t draw_class_of(const scene::Material& material) {
+  return (material.double_sided ? draw_double_sided : 0u) |
+         (material.alpha_mode == scene::AlphaMode::mask ? draw_masked : 0u);
+}
+
 vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
                                               std::vector<VkFormat> colour_formats, VkPipelineLayout layout,
                                               std::string name) {
@@ -118,14 +123,16 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   // rare, and looked up here.
   chunk_changed_.assign(chunk_bounds_.size(), 0);
   std::atomic<bool> unknown{false};
+  // Marks the entity's instance written, and returns it; npos for an entity that is no instance.
   const auto note = [&](ecs::Entity entity) {
     const uint32_t at = entity.index < place_of_.size() ? place_of_[entity.index] : ecs::SparseSet::npos;
     if (at == ecs::SparseSet::npos || items_[at].entity != entity) {
       unknown.store(true, std::memory_order_relaxed);  // it became an instance by gaining a component
-      return;
+      return ecs::SparseSet::npos;
     }
     written_at_[at] = gathers_;
     std::atomic_ref(chunk_changed_[at / instances_per_chunk]).store(1, std::memory_order_relaxed);
+    return at;
   };
   world.query<const ecs::WorldTransform, const scene::MeshInstance>()
       .changed_since<ecs::WorldTransform>(since)
@@ -133,11 +140,17 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
           pool,
           [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance&) { note(entity); },
           changes_per_task);
+  // A material whose draw class changed moves its instance to another class's draws.
+  bool reclassed = false;
   world.query<const scene::Material, const ecs::WorldTransform, const scene::MeshInstance>()
       .changed_since<scene::Material>(since)
-      .for_each([&](ecs::Entity entity, const scene::Material&, const ecs::WorldTransform&,
-                    const scene::MeshInstance&) { note(entity); });
-  if (unknown.load(std::memory_order_relaxed)) return false;
+      .for_each([&](ecs::Entity entity, const scene::Material& material, const ecs::WorldTransform&,
+                    const scene::MeshInstance&) {
+        const uint32_t at = note(entity);
+        reclassed =
+            reclassed || (at != ecs::SparseSet::npos && items_[at].draw_class != draw_class_of(material));
+      });
+  if (unknown.load(std::memory_order_relaxed) || reclassed) return false;
   regrown_chunks_.clear();
   for (uint32_t chunk = 0; chunk < chunk_changed_.size(); ++chunk) {
     if (chunk_changed_[chunk] != 0) regrown_chunks_.push_back(chunk);
@@ -209,11 +222,17 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   items_.clear();
   world.query<const ecs::WorldTransform, const scene::MeshInstance>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance& mesh) {
-        items_.push_back({mesh.mesh, mesh.casts_shadow, entity});
+        const scene::Material* material = world.try_get<scene::Material>(entity);
+        const auto draw_class = static_cast<uint8_t>(draw_class_of(material ? *material : default_material));
+        items_.push_back({mesh.mesh, mesh.casts_shadow, draw_class, entity});
       });
-  // By mesh, casters first within each: a counting sort (meshes are few, instances many).
-  slot_starts_.assign(2 * meshes_.size() + 1, 0);
-  const auto slot_of = [](const Item& item) { return 2 * item.mesh + (item.caster ? 0 : 1); };
+  // By draw class, then mesh, casters first within each: a counting sort (classes and meshes
+  // are few, instances many).
+  const size_t meshes = meshes_.size();
+  slot_starts_.assign(2 * draw_class_count * meshes + 1, 0);
+  const auto slot_of = [meshes](const Item& item) {
+    return 2 * (item.draw_class * meshes + item.mesh) + (item.caster ? 0 : 1);
+  };
   for (const Item& item : items_) ++slot_starts_[slot_of(item) + 1];
   for (size_t s = 1; s < slot_starts_.size(); ++s) slot_starts_[s] += slot_starts_[s - 1];
   sorted_items_.resize(items_.size());
@@ -248,15 +267,23 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   regrow_scene_bounds(pool);
 
   commands_.clear();
+  class_commands_.fill({});
   caster_groups_.clear();
-  // One command per mesh over its instances, and a caster group over its casters (first).
+  // One command per (draw class, mesh) over its instances, and a caster group over its casters
+  // (first).
   for (size_t begin = 0; begin < count;) {
     const uint32_t mesh = items_[begin].mesh;
+    const uint8_t draw_class = items_[begin].draw_class;
     const scene::MeshRange& range = meshes_[mesh];
     size_t end = begin;
     uint32_t casters = 0;
-    for (; end < count && items_[end].mesh == mesh; ++end) casters += items_[end].caster;
+    for (; end < count && items_[end].mesh == mesh && items_[end].draw_class == draw_class; ++end) {
+      casters += items_[end].caster;
+    }
     if (range.index_count > 0) {
+      CommandRange& commands = class_commands_[draw_class];
+      if (commands.count == 0) commands.first = static_cast<uint32_t>(commands_.size());
+      ++commands.count;
       const VkDrawIndexedIndirectCommand command{range.index_count, static_cast<uint32_t>(end - begin),
                                                  range.first_index, static_cast<int32_t>(range.vertex_offset),
                                                  static_cast<uint32_t>(begin)};
@@ -295,14 +322,26 @@ void GpuScene::upload(uint32_t slot, ecs::ThreadPool* pool) {
   draws_.write(slot, std::span<const VkDrawIndexedIndirectCommand>(commands_));
 }
 
-void GpuScene::draw_camera_pass(const vk::PassRecorder& rec, VkPipeline pipeline,
+void GpuScene::draw_camera_pass(const vk::PassRecorder& rec,
+                                std::span<const VkPipeline, draw_class_count> pipelines,
                                 const vk::PipelineLayout& layout, VkDescriptorSet set,
                                 const FrameConstants& constants, uint32_t slot) const {
   rec.set_full_viewport();
-  vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-  layout.bind(rec.cmd(), set);
-  layout.push(rec.cmd(), constants);
-  draw_all(rec.cmd(), slot);
+  if (commands_.empty() || !bind_geometry(rec.cmd())) return;
+  bool bound = false;
+  for (uint32_t draw_class = 0; draw_class < draw_class_count; ++draw_class) {
+    const CommandRange& commands = class_commands_[draw_class];
+    if (commands.count == 0) continue;
+    vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines[draw_class]);
+    if (!bound) {  // the classes' pipelines share the layout
+      layout.bind(rec.cmd(), set);
+      layout.push(rec.cmd(), constants);
+      bound = true;
+    }
+    vkCmdDrawIndexedIndirect(rec.cmd(), draws_.buffer(slot).handle(),
+                             commands.first * sizeof(VkDrawIndexedIndirectCommand), commands.count,
+                             sizeof(VkDrawIndexedIndirectCommand));
+  }
 }
 
 bool GpuScene::bind_geometry(VkCommandBuffer cmd) const {
@@ -312,12 +351,6 @@ bool GpuScene::bind_geometry(VkCommandBuffer cmd) const {
   vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &zero);
   vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
   return true;
-}
-
-void GpuScene::draw_all(VkCommandBuffer cmd, uint32_t slot) const {
-  if (commands_.empty() || !bind_geometry(cmd)) return;
-  vkCmdDrawIndexedIndirect(cmd, draws_.buffer(slot).handle(), 0, static_cast<uint32_t>(commands_.size()),
-                           sizeof(VkDrawIndexedIndirectCommand));
 }
 
 }  // namespace sg

@@ -7,6 +7,7 @@
 // Instances are grouped by mesh, shadow casters first within each mesh: the caster groups
 // (caster_groups()) and the instances' world bounds are what shadow views cull against
 // (ShadowCasterLists).
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "rendergraph/device/resources.h"
 #include "systems/camera.h"
 #include "systems/scene/aabb.h"
+#include "systems/scene/material.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/scene_gpu_types.h"
 
@@ -42,6 +44,14 @@ inline constexpr rg::ClearValue camera_depth_clear = rg::ClearValue::depth_of(ca
 inline constexpr VkCompareOp camera_depth_test = VK_COMPARE_OP_GREATER;
 // Passes that shade what a depth prepass already decided: the nearest surface passes again.
 inline constexpr VkCompareOp camera_depth_retest = VK_COMPARE_OP_GREATER_OR_EQUAL;
+
+// How a camera pass draws an instance, a bit each: both faces (double-sided materials; single-
+// sided ones have their back faces culled) and a mask's cut-out (material.glsl's ALPHA_TEST).
+// Instances are drawn class by class, each class with a pipeline of its own (CameraPipelines).
+inline constexpr uint32_t draw_double_sided = 1;
+inline constexpr uint32_t draw_masked = 2;
+inline constexpr uint32_t draw_class_count = 4;
+uint32_t draw_class_of(const scene::Material& material);
 
 // The descriptor bindings of a pass that draws the scene from the camera and lights its surfaces
 // in the fragment shader (material.glsl, light_shading.glsl): the light resources, the instances
@@ -80,13 +90,13 @@ class GpuScene {
   // Binds the vertex and index buffers (scene::Vertex at binding 0, 32-bit indices); false when
   // the scene has no geometry, and nothing may be drawn.
   bool bind_geometry(VkCommandBuffer cmd) const;
-  // Draws every instance with the pipeline already bound; instance data comes from the instance
-  // buffer, indexed by gl_InstanceIndex.
-  void draw_all(VkCommandBuffer cmd, uint32_t slot) const;
-  // A camera pass's recording: viewport over the render area, `pipeline` with `set` as set 0 of
-  // `layout` and `constants` pushed, every instance drawn (the forward and G-buffer passes).
-  void draw_camera_pass(const vk::PassRecorder& rec, VkPipeline pipeline, const vk::PipelineLayout& layout,
-                        VkDescriptorSet set, const FrameConstants& constants, uint32_t slot) const;
+  // A camera pass's recording: viewport over the render area, `set` as set 0 of `layout` and
+  // `constants` pushed, every instance drawn, each draw class with its pipeline of `pipelines`.
+  void draw_camera_pass(const vk::PassRecorder& rec, std::span<const VkPipeline, draw_class_count> pipelines,
+                        const vk::PipelineLayout& layout, VkDescriptorSet set,
+                        const FrameConstants& constants, uint32_t slot) const;
+  // Whether the last gather found instances of `draw_class`.
+  bool has_draw_class(uint32_t draw_class) const { return class_commands_[draw_class].count > 0; }
 
   const vk::Buffer& instances(uint32_t slot) const { return instances_.buffer(slot); }
   // The mesh library's vertices (scene::Vertex) and 32-bit indices, also readable as storage
@@ -94,8 +104,8 @@ class GpuScene {
   const vk::Buffer& vertices() const { return vertices_; }
   const vk::Buffer& indices() const { return indices_; }
   uint32_t instance_count() const { return static_cast<uint32_t>(bounds_.size()); }
-  // Per mesh with casters: its draw over exactly its casters (firstInstance and instanceCount
-  // give their range in the instance buffer).
+  // Per (draw class, mesh) with casters: its draw over exactly its casters (firstInstance and
+  // instanceCount give their range in the instance buffer).
   std::span<const VkDrawIndexedIndirectCommand> caster_groups() const { return caster_groups_; }
   // World-space bounds of every instance, in instance-buffer order, and of all of them.
   std::span<const scene::Aabb> instance_bounds() const { return bounds_; }
@@ -132,7 +142,13 @@ class GpuScene {
   struct Item {
     uint32_t mesh;
     bool caster;
+    uint8_t draw_class;
     ecs::Entity entity;
+  };
+  // A draw class's stretch of commands_.
+  struct CommandRange {
+    uint32_t first = 0;
+    uint32_t count = 0;
   };
 
   // Instance i's record, bounds and key, from its entity (items_[i]).
@@ -171,7 +187,7 @@ class GpuScene {
   std::vector<uint64_t> uploaded_at_;              // by slot: the call whose instances it holds
   std::vector<Item> items_;
   std::vector<Item> sorted_items_;
-  std::vector<uint32_t> slot_starts_;  // counting sort: per (mesh, caster or not)
+  std::vector<uint32_t> slot_starts_;  // counting sort: per (draw class, mesh, caster or not)
   std::vector<GpuInstance> sorted_;
   std::vector<scene::Aabb> bounds_;
   // The bounds of each chunk of instances_per_chunk consecutive instances (the last may be
@@ -184,7 +200,8 @@ class GpuScene {
   std::vector<uint32_t> regrown_chunks_;  // the chunks with changed instances
   std::vector<uint64_t> keys_;
   scene::Aabb scene_bounds_;
-  std::vector<VkDrawIndexedIndirectCommand> commands_;
+  std::vector<VkDrawIndexedIndirectCommand> commands_;  // per (draw class, mesh), classes in order
+  std::array<CommandRange, draw_class_count> class_commands_{};
   std::vector<VkDrawIndexedIndirectCommand> caster_groups_;
 };
 

@@ -35,11 +35,17 @@ class GpuTextures {
   bool has_images_ = false;
 };
 
-// The fragment specialization of a pass that draws materials (shaders/material.glsl): the
-// shader's own constants 0 and 1, then MATERIAL_TEXTURES from `textures`.
+// shaders/material.glsl's MATERIAL_FEATURES: its constant_id and bits.
+inline constexpr size_t material_features_constant = 2;
+inline constexpr uint32_t material_textures = 1;
+inline constexpr uint32_t material_cut_out = 2;
+
+// The fragment specialization of a pass that draws materials: the shader's own constants 0 and
+// 1, then MATERIAL_FEATURES, with textures where `textures` has images (masks' cut-outs are
+// added per draw class, for_draw_class in camera_pipelines.h).
 inline std::vector<uint32_t> material_pass_constants(uint32_t constant0, uint32_t constant1,
                                                      const GpuTextures& textures) {
-  return {constant0, constant1, textures.has_images() ? 1u : 0u};
+  return {constant0, constant1, textures.has_images() ? material_textures : 0u};
 }
 
 }  // namespace sg

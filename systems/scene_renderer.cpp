@@ -72,11 +72,11 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
   switch (lighting_) {
     case LightingPath::every_light: every_light_.emplace(context, frames_in_flight, textures_); break;
     case LightingPath::forward:
-      tiled_forward_.emplace(DepthPrepass(context), TiledForwardPass(context, textures_),
+      tiled_forward_.emplace(DepthPrepass(context, textures_), TiledForwardPass(context, textures_),
                              LightTilesPass(context));
       break;
     case LightingPath::fused:
-      fused_.emplace(DepthPrepass(context), FusedForwardPass(context, textures_, frame_format));
+      fused_.emplace(DepthPrepass(context, textures_), FusedForwardPass(context, textures_, frame_format));
       break;
     case LightingPath::automatic:  // resolved above
     case LightingPath::deferred: {
@@ -88,7 +88,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
     }
   }
   if (lighting_per_frame_)
-    fused_.emplace(DepthPrepass(context), FusedForwardPass(context, textures_, frame_format));
+    fused_.emplace(DepthPrepass(context, textures_), FusedForwardPass(context, textures_, frame_format));
 }
 
 void SceneRenderer::gather(const ecs::World& world) {
@@ -153,8 +153,14 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     case LightingPath::every_light:
       every_light_->prepare(slot, gpu_scene_, records, atlas_, settings_.view);
       break;
-    case LightingPath::forward: tiled_forward_->forward.prepare(lights_.group_begin, settings_.view); break;
-    case LightingPath::fused: fused_->forward.prepare(lights_.group_begin, settings_.view); break;
+    case LightingPath::forward:
+      tiled_forward_->prepass.prepare(gpu_scene_);
+      tiled_forward_->forward.prepare(lights_.group_begin, settings_.view, gpu_scene_);
+      break;
+    case LightingPath::fused:
+      fused_->prepass.prepare(gpu_scene_);
+      fused_->forward.prepare(lights_.group_begin, settings_.view, gpu_scene_);
+      break;
     case LightingPath::automatic:  // resolved
     case LightingPath::deferred:
       deferred_->gbuffer.prepare(slot, gpu_scene_);

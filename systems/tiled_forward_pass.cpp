@@ -34,19 +34,23 @@ TiledForwardPass::TiledForwardPass(vk::VulkanContext& context, const GpuTextures
               vk::push_constants<FrameConstants>(both_stages)) {}
 
 void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-                               LightingView view) {
+                               LightingView view, const GpuScene& scene) {
   view_ = view;
   groups_present_ = shadows::groups_present(group_begin);
-  vk::UniquePipeline& pipeline = pipelines_[pipeline_key(groups_present_, view)];
-  if (pipeline) return;
-  vk::GraphicsPipelineDesc desc = camera_pipeline_desc(
-      scene_tiled_frag, {vk::to_vk(ForwardPass::lit_sum_format)}, layout_.get(), "tiled forward");
-  desc.fragment_specialization =
-      material_pass_constants(groups_present_, static_cast<uint32_t>(view), textures_);
-  // depth_prepass.vert computed the same positions: draw only what the prepass kept.
-  desc.depth_compare = camera_depth_retest;
-  desc.depth_write = false;
-  pipeline = vk::create_graphics_pipeline(context_, desc);
+  pipelines_
+      .try_emplace(pipeline_key(groups_present_, view),
+                   [layout = layout_.get(), &textures = textures_, groups = groups_present_,
+                    view](uint32_t draw_class) {
+                     vk::GraphicsPipelineDesc desc = camera_pipeline_desc(
+                         scene_tiled_frag, {vk::to_vk(ForwardPass::lit_sum_format)}, layout, "tiled forward");
+                     desc.fragment_specialization =
+                         material_pass_constants(groups, static_cast<uint32_t>(view), textures);
+                     // The depth prepass computed the same positions: draw only what it kept.
+                     desc.depth_compare = camera_depth_retest;
+                     desc.depth_write = false;
+                     return for_draw_class(std::move(desc), draw_class);
+                   })
+      .first->second.prepare(context_, scene);
 }
 
 ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
@@ -68,14 +72,14 @@ ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
                     rg::ClearValue::colour_of(background_colour.r, background_colour.g, background_colour.b));
       },
       [this, &scene, &lights, slot, constants, tiles, atlas,
-       pipeline = pipelines_.at(pipeline_key(groups_present_, view_)).get()](const vk::PassRecorder& rec) {
+       pipelines = pipelines_.at(pipeline_key(groups_present_, view_)).get()](const vk::PassRecorder& rec) {
         vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
         writer.buffer(instances_binding, scene.instances(slot).handle())
             .image(material_textures_binding, textures_.array().view(), textures_.sampler())
             .buffer(tile_lights_binding, rec.buffer(tiles.lights))
             .buffer(tile_ranges_binding, rec.buffer(tiles.ranges));
         const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
-        scene.draw_camera_pass(rec, pipeline, layout_, set, constants, slot);
+        scene.draw_camera_pass(rec, pipelines, layout_, set, constants, slot);
       });
   return targets;
 }

@@ -9,7 +9,7 @@
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
-#include "rendergraph/device/unique_handle.h"
+#include "systems/camera_pipelines.h"
 #include "systems/forward_pass.h"
 #include "systems/light_resources.h"
 #include "systems/light_tiles_pass.h"
@@ -32,9 +32,10 @@ class TiledForwardPass {
   // `textures` must outlive the pass.
   TiledForwardPass(vk::VulkanContext& context, const GpuTextures& textures);
 
-  // Makes the pipeline for the groups that have lights (group_begin as in shadows::FrameLights)
-  // and `view`.
-  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view);
+  // Makes the pipelines for the groups that have lights (group_begin as in shadows::FrameLights),
+  // `view` and the draw classes `scene` has.
+  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view,
+               const GpuScene& scene);
 
   // Shades every drawable where the prepass left it, into a new lit sum. `constants.counts.y`
   // must be the tiles across the screen. `lights` and `scene` are read when the pass records.
@@ -47,7 +48,7 @@ class TiledForwardPass {
   const GpuTextures& textures_;
   LightResources light_resources_;
   vk::PipelineLayout layout_;
-  std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;  // by pipeline_key
+  std::unordered_map<uint32_t, CameraPipelines> pipelines_;  // by pipeline_key
   uint32_t groups_present_ = 0;
   LightingView view_ = LightingView::lit;
 };

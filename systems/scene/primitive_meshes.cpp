@@ -29,6 +29,16 @@ std::uint32_t add_box_mesh(MeshLibrary& library) {
   return add_mesh(library, "box", vertices, indices);
 }
 
+std::uint32_t add_quad_mesh(MeshLibrary& library) {
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  const Vertex vertices[4] = {{{-0.5f, 0.0f, -0.5f}, up, {0.0f, 0.0f}},
+                              {{-0.5f, 0.0f, 0.5f}, up, {0.0f, 1.0f}},
+                              {{0.5f, 0.0f, 0.5f}, up, {1.0f, 1.0f}},
+                              {{0.5f, 0.0f, -0.5f}, up, {1.0f, 0.0f}}};
+  const std::uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
+  return add_mesh(library, "quad", vertices, indices);
+}
+
 std::uint32_t add_cylinder_mesh(MeshLibrary& library, std::uint32_t segments) {
   std::vector<Vertex> vertices;
   std::vector<std::uint32_t> indices;

@@ -15,4 +15,8 @@ std::uint32_t add_box_mesh(MeshLibrary& library);
 // sides (>= 3): 2 * segments side triangles + 2 * (segments - 2) cap triangles.
 std::uint32_t add_cylinder_mesh(MeshLibrary& library, std::uint32_t segments);
 
+// A unit square in the XZ plane, [-0.5, 0.5]^2, facing +Y (counter-clockwise seen from above),
+// uv (x + 0.5, z + 0.5): a card for cut-outs and panes.
+std::uint32_t add_quad_mesh(MeshLibrary& library);
+
 }  // namespace sg::scene

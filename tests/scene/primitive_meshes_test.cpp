@@ -42,5 +42,21 @@ TEST(PrimitiveMeshes, CylinderTriangleCountAndOrientation) {
   expect_outward_triangles(library, cylinder);
 }
 
+TEST(PrimitiveMeshes, QuadFacesUpWithUvAcrossIt) {
+  MeshLibrary library;
+  const std::uint32_t quad = add_quad_mesh(library);
+  EXPECT_EQ(triangle_count(library.meshes[quad]), 2u);
+  for (std::uint32_t t = 0; t < 6; t += 3) {
+    const Vertex* v[3];
+    for (int c = 0; c < 3; ++c) v[c] = &library.vertices[library.indices[t + c]];
+    const glm::vec3 face = glm::cross(v[1]->position - v[0]->position, v[2]->position - v[0]->position);
+    EXPECT_GT(face.y, 0.0f) << "counter-clockwise seen from above";
+  }
+  for (const Vertex& v : library.vertices) {
+    EXPECT_EQ(v.normal, glm::vec3(0, 1, 0));
+    EXPECT_EQ(v.uv, glm::vec2(v.position.x + 0.5f, v.position.z + 0.5f));
+  }
+}
+
 }  // namespace
 }  // namespace sg::scene

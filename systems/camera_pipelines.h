@@ -1,0 +1,39 @@
+#pragma once
+// A camera pass's pipelines, one per draw class (gpu_scene.h: double-sided, masked), each made
+// the first time the scene has instances of its class: most scenes draw only single-sided,
+// unmasked surfaces, and a pipeline that culls nothing or may discard costs raster work on every
+// surface it draws.
+#include <array>
+#include <cstdint>
+#include <functional>
+
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/device/pipeline.h"
+#include "systems/gpu_scene.h"
+
+namespace sg {
+
+class CameraPipelines {
+ public:
+  // `desc_of` gives the pipeline of a draw class (for_draw_class, where the pass needs nothing
+  // else).
+  explicit CameraPipelines(std::function<vk::GraphicsPipelineDesc(uint32_t draw_class)> desc_of)
+      : desc_of_(std::move(desc_of)) {}
+
+  // Makes the pipelines of the classes `scene` draws that are not made yet.
+  void prepare(vk::VulkanContext& context, const GpuScene& scene);
+  // By draw class; VK_NULL_HANDLE for a class not prepared.
+  std::array<VkPipeline, draw_class_count> get() const;
+
+ private:
+  std::function<vk::GraphicsPipelineDesc(uint32_t)> desc_of_;
+  std::array<vk::UniquePipeline, draw_class_count> pipelines_;
+};
+
+// `desc`, a pipeline for single-sided unmasked surfaces whose fragment specialization came from
+// material_pass_constants (gpu_textures.h), made to draw `draw_class`: no culling for double-sided
+// surfaces, the cut-out for masked ones.
+vk::GraphicsPipelineDesc for_draw_class(vk::GraphicsPipelineDesc desc, uint32_t draw_class);
+
+}  // namespace sg
