@@ -219,6 +219,36 @@ TEST_F(GpuSceneTest, SceneBoundsShrinkWhenABoxThatHeldAFaceMovesIn) {
   expect_fresh_bounds("the first instance back in");
 }
 
+// Instances are drawn class by class: a material edit within a class re-places the instance
+// alone, one that makes it masked or double-sided lays the instances out again, into that class.
+TEST_F(GpuSceneTest, AMaterialThatChangesDrawClassLaysTheInstancesOutAgain) {
+  scene::Scene s;
+  const uint32_t box = scene::add_box_mesh(s.meshes);
+  const ecs::Entity card = scene::add_instance(s, box, {{0.0f, 0.0f, 0.0f}}, scene::Material{});
+  scene::add_instance(s, box, {{4.0f, 0.0f, 0.0f}}, scene::Material{});
+  ecs::update_world_transforms(s.world, 0);
+  s.world.advance_tick();
+  GpuScene gpu(context, s.meshes, 1);
+  gpu.gather(s.world);
+  EXPECT_TRUE(gpu.has_draw_class(0));
+  EXPECT_FALSE(gpu.has_draw_class(draw_masked));
+  const auto edit = [&](auto&& change) {
+    change(s.world.get_mut<scene::Material>(card));
+    s.world.advance_tick();
+    gpu.gather(s.world);
+  };
+  edit([](scene::Material& m) { m.base_color = glm::vec4(1, 0, 0, 1); });
+  EXPECT_FALSE(gpu.laid_out_in_last_gather()) << "a new colour stays in its class";
+  edit([](scene::Material& m) { m.alpha_mode = scene::AlphaMode::mask; });
+  EXPECT_TRUE(gpu.laid_out_in_last_gather());
+  EXPECT_TRUE(gpu.has_draw_class(draw_masked));
+  edit([](scene::Material& m) { m.double_sided = true; });
+  EXPECT_TRUE(gpu.laid_out_in_last_gather());
+  EXPECT_TRUE(gpu.has_draw_class(draw_masked | draw_double_sided));
+  EXPECT_FALSE(gpu.has_draw_class(draw_masked));
+  EXPECT_TRUE(gpu.has_draw_class(0)) << "the other box";
+}
+
 // An instance whose bounds change becomes moving, and stays so until the next layout; a material
 // edit alone moves nothing.
 TEST_F(GpuSceneTest, MovedInstancesAreMovingUntilTheNextLayout) {
