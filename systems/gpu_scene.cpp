@@ -44,7 +44,8 @@ std::vector<VkDescriptorSetLayoutBinding> lit_camera_bindings(
 
 uint32_t draw_class_of(const scene::Material& material) {
   return (material.double_sided ? draw_double_sided : 0u) |
-         (material.alpha_mode == scene::AlphaMode::mask ? draw_masked : 0u);
+         (material.alpha_mode == scene::AlphaMode::mask ? draw_masked : 0u) |
+         (material.alpha_mode == scene::AlphaMode::blend ? draw_blended : 0u);
 }
 
 vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
@@ -224,7 +225,7 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
       [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance& mesh) {
         const scene::Material* material = world.try_get<scene::Material>(entity);
         const auto draw_class = static_cast<uint8_t>(draw_class_of(material ? *material : default_material));
-        items_.push_back({mesh.mesh, mesh.casts_shadow, draw_class, entity});
+        items_.push_back({mesh.mesh, scene::casts_shadow(mesh, material), draw_class, entity});
       });
   // By draw class, then mesh, casters first within each: a counting sort (classes and meshes
   // are few, instances many).

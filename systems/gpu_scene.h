@@ -46,11 +46,13 @@ inline constexpr VkCompareOp camera_depth_test = VK_COMPARE_OP_GREATER;
 inline constexpr VkCompareOp camera_depth_retest = VK_COMPARE_OP_GREATER_OR_EQUAL;
 
 // How a camera pass draws an instance, a bit each: both faces (double-sided materials; single-
-// sided ones have their back faces culled) and a mask's cut-out (material.glsl's ALPHA_TEST).
+// sided ones have their back faces culled), a mask's cut-out (material.glsl's ALPHA_TEST) and
+// transparency.
 // Instances are drawn class by class, each class with a pipeline of its own (CameraPipelines).
 inline constexpr uint32_t draw_double_sided = 1;
 inline constexpr uint32_t draw_masked = 2;
-inline constexpr uint32_t draw_class_count = 4;
+inline constexpr uint32_t draw_blended = 4;  // transparent: drawn as opaque yet, casting no shadow
+inline constexpr uint32_t draw_class_count = 8;
 uint32_t draw_class_of(const scene::Material& material);
 
 // The descriptor bindings of a pass that draws the scene from the camera and lights its surfaces

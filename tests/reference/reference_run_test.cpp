@@ -3,6 +3,8 @@
 // algorithms must stay as close to the references as they were measured to be.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "tools/reference/run_reference.h"
 #include "vulkan_test_context.h"
 
@@ -106,6 +108,28 @@ TEST_F(ReferenceRun, SmallSpotMapsSeenFromAfarHaveNoAcne) {
     ASSERT_GT(lit, 2000.0) << resolution;
     EXPECT_LT(darkened / lit, 0.01) << "acne at " << resolution << " texels, over " << lit << " lit pixels";
   }
+}
+
+// The shared ShadowsSpot scene, when present: its spot light sits inside a marker cone of a
+// transparent material (alphaMode BLEND), which once shadowed the whole floor. The light must
+// light its floor, the shapes' shadows falling where the traced rays say.
+TEST_F(ReferenceRun, ShadowsSpotLightsItsFloorPastItsTransparentMarker) {
+  const std::filesystem::path file =
+      std::filesystem::path(SHADOWGRAPH_SHARED_ASSETS) / "ShadowsSpot" / "shadows-spot.gltf";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "shared asset absent: " << file;
+  sandbox::Options options;
+  options.width = 320;
+  options.height = 180;
+  options.scene = file.string();
+  reference::ReferenceSettings settings = one_light();
+  settings.light_filter = "";
+  const reference::ReferenceReport report = reference::run_reference(context, options, settings);
+  ASSERT_EQ(report.lights.size(), 1u);
+  const reference::ShadowMetrics& m = report.lights[0].runs.at(0).metrics;
+  ASSERT_GT(m.measured, 800u);
+  EXPECT_LT(m.shadowed, m.measured / 2) << "most of the pool is lit";
+  EXPECT_GT(m.shadowed, 100u) << "the shapes cast their shadows";
+  EXPECT_LT(m.misclassified, 0.01);
 }
 
 TEST_F(ReferenceRun, ASceneWithoutMatchingLightsIsAClearError) {
