@@ -34,4 +34,10 @@ vk::GraphicsPipelineDesc for_draw_class(vk::GraphicsPipelineDesc desc, uint32_t 
   return desc;
 }
 
+vk::GraphicsPipelineDesc after_depth_prepass(vk::GraphicsPipelineDesc desc) {
+  desc.depth_compare = camera_depth_retest;
+  desc.depth_write = false;
+  return desc;
+}
+
 }  // namespace sg

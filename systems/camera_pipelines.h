@@ -36,4 +36,8 @@ class CameraPipelines {
 // surfaces, the cut-out for masked ones.
 vk::GraphicsPipelineDesc for_draw_class(vk::GraphicsPipelineDesc desc, uint32_t draw_class);
 
+// `desc` shading only what a depth prepass kept (DepthPrepass, the same positions): tested for the
+// prepass's depth without writing it.
+vk::GraphicsPipelineDesc after_depth_prepass(vk::GraphicsPipelineDesc desc);
+
 }  // namespace sg

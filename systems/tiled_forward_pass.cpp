@@ -45,10 +45,7 @@ void TiledForwardPass::prepare(const std::array<uint32_t, shadows::light_group_c
                          scene_tiled_frag, {vk::to_vk(ForwardPass::lit_sum_format)}, layout, "tiled forward");
                      desc.fragment_specialization =
                          material_pass_constants(groups, static_cast<uint32_t>(view), textures);
-                     // The depth prepass computed the same positions: draw only what it kept.
-                     desc.depth_compare = camera_depth_retest;
-                     desc.depth_write = false;
-                     return for_draw_class(std::move(desc), draw_class);
+                     return for_draw_class(after_depth_prepass(std::move(desc)), draw_class);
                    })
       .first->second.prepare(context_, scene);
 }
