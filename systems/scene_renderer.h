@@ -80,7 +80,7 @@ struct RenderedFrame {
 
 class SceneRenderer {
  public:
-  // ALGORITHMS.md section 2's default ambient term kA * IA.
+  // docs/LIGHTING.md section 2's default ambient term kA * IA.
   static constexpr float ambient = 0.15f;
 
   // Uploads `scene`'s meshes and textures; the scene's world is read by gather() each frame.

@@ -1,7 +1,7 @@
 #pragma once
-// Every shadow view due this frame drawn by a handful of passes, driven by the GPU (DESIGN.md:
-// "shadow views are data, not passes"). The CPU writes one record per view (a 2D map, or one
-// face of a point light's cube: its matrix, its atlas tile and frustum) and one per shadow
+// Every shadow view due this frame drawn by a handful of passes, driven by the GPU: shadow views
+// are data, not passes. The CPU writes one record per view (a 2D map, or one face of a point
+// light's cube: its matrix, its atlas tile and frustum) and one per shadow
 // caster (world bounds, mesh, instance); then
 //
 //   shadow cull      (compute)  every caster against every view's frustum -> (caster, view) pairs

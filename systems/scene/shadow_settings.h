@@ -1,5 +1,5 @@
 #pragma once
-// Per-light shadow parameters (../shared/ALGORITHMS.md section 4). Every light entity carries
+// Per-light shadow parameters (docs/LIGHTING.md section 4). Every light entity carries
 // one; imported lights take them from the glTF light's `extras` (gltf_lights.h lists the keys).
 #include <cstdint>
 #include <optional>

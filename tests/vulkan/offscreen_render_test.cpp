@@ -1,5 +1,5 @@
 // Renders an ECS scene through the sandbox's frame graph offscreen and checks floor pixels
-// against the lighting formula of ALGORITHMS.md section 2, evaluated here on the CPU from the
+// against the lighting formula of docs/LIGHTING.md section 2, evaluated here on the CPU from the
 // scene's parameters. Validation and synchronization validation are on (GpuTest).
 #include <cmath>
 #include <optional>

@@ -4,7 +4,7 @@
 //
 // The shadow factor of each pixel is measured, not guessed from colours: the scene is rendered
 // with shadows (S), without (U) and with the light off (D), and in linear light
-// shade = (U - S) / (U - D), which is the `shade` of ALGORITHMS.md section 2 for a black shadow
+// shade = (U - S) / (U - D), which is the `shade` of docs/LIGHTING.md section 2 for a black shadow
 // colour and density 1 (the floor has no specular term, so the (1 - shade) * S term vanishes).
 #include <algorithm>
 #include <cmath>
