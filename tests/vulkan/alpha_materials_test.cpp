@@ -26,15 +26,6 @@ constexpr uint32_t height = 96;
 
 constexpr LightingPath every_path[] = {LightingPath::deferred, LightingPath::forward, LightingPath::fused};
 
-const char* name(LightingPath path) {
-  switch (path) {
-    case LightingPath::deferred: return "deferred";
-    case LightingPath::forward: return "forward";
-    case LightingPath::fused: return "fused";
-    default: return "other";
-  }
-}
-
 scene::Material matte(glm::vec4 color) {
   scene::Material m;
   m.base_color = color;
@@ -105,7 +96,7 @@ TEST_F(AlphaMaterials, AMaskedCardShowsAndCastsItsTexturesShape) {
   scene.pose = {{0.0f, 8.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
 
   for (const LightingPath path : every_path) {
-    SCOPED_TRACE(name(path));
+    SCOPED_TRACE(std::string(lighting_path_name(path)));
     const vk::Rgba8Image image = render(scene, path);
     const glm::vec3 opaque = seen(image, scene, {-1.0f, 1.0f, 0.0f});
     const glm::vec3 shadowed = seen(image, scene, {0.4f, 0.0f, 0.0f});
@@ -138,7 +129,7 @@ TEST_F(AlphaMaterials, ADoubleSidedCardShowsItsBackFaceLitFromItsSide) {
     return seen(image, scene, {0.5f, 1.0f, 0.5f}).g;
   };
   for (const LightingPath path : every_path) {
-    SCOPED_TRACE(name(path));
+    SCOPED_TRACE(std::string(lighting_path_name(path)));
     EXPECT_NEAR(card_seen(false, path), background_colour.g, 0.01f) << "the background";
     EXPECT_GT(card_seen(true, path), 0.4f) << "the lit back face";
   }

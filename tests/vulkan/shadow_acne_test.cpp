@@ -35,7 +35,7 @@ namespace sg::test {
 namespace {
 
 constexpr std::array<uint32_t, 8> tile_sizes{16, 32, 64, 128, 256, 512, 1024, 2048};
-constexpr float pitch = 8.0f;  // metres between cell centres: no light reaches the next cell
+constexpr float pitch = 8.0f;  // metres between cell centres
 constexpr uint32_t columns = tile_sizes.size();
 constexpr uint32_t rows = std::size(scene::all_shadow_algorithms);
 // Pixels where the light adds less than this (linear) are not measured.
@@ -62,17 +62,21 @@ glm::vec3 cell_centre(uint32_t column, uint32_t row) {
 }
 
 // The directions the lights shine: tilted like the stress scene's, so the floor is lit at a
-// slope in every map.
-const glm::vec3 spot_aim = glm::normalize(glm::vec3(0.6f, -1.0f, 0.4f));
-const glm::vec3 beam_aim = glm::normalize(glm::vec3(0.6f, -1.0f, 0.4f));
+// slope in every map. Spot lights and beams aim at their cell's centre from 4 m up.
+const glm::vec3 aim = glm::normalize(glm::vec3(0.6f, -1.0f, 0.4f));
 const glm::vec3 sun_aim = glm::normalize(glm::vec3(-0.7f, -1.0f, -0.5f));
+glm::vec3 aimed_from(glm::vec3 centre) { return centre - 4.0f / -aim.y * aim; }
+// Each light's size: the spot's cone, the point light's range, the beam's outer radius.
+constexpr float spot_outer_cone = 0.6f;
+constexpr float point_range = 4.5f;
+constexpr float beam_radius = 2.5f;
 
 // Each light's source relative to its cell's centre (point and spot), or a point far up its beam.
 glm::vec3 source(Kind kind, glm::vec3 centre, glm::vec3 floor_point) {
   switch (kind) {
-    case Kind::spot: return centre - 4.0f / -spot_aim.y * spot_aim;
+    case Kind::spot: return aimed_from(centre);
     case Kind::point: return centre + glm::vec3(0.0f, 2.5f, 0.0f);
-    case Kind::cylinder: return floor_point - 100.0f * beam_aim;
+    case Kind::cylinder: return floor_point - 100.0f * aim;
     case Kind::directional: return floor_point - 100.0f * sun_aim;
   }
   return {};
@@ -123,24 +127,25 @@ sandbox::SandboxScene build(Kind kind, std::vector<Box>& planks, uint32_t max_si
       scene::add_instance(scene, box, plank(centre), grey);
       const Cell cell = cell_of(column, row);
       const scene::ShadowSettings shadow = shadow_of({cell.algorithm, std::min(cell.size, max_size)});
-      const std::string label = std::to_string(row * columns + column);
+      const std::string label = std::to_string(index_of(column, row));
       switch (kind) {
         case Kind::spot: {
-          scene::SpotLight spot{glm::vec3(1.0f), 0.9f, 12.0f, 0.48f, 0.6f};
-          const glm::vec3 at = source(kind, centre, centre);
-          scene::add_light(scene, spot, {at, scene::look_rotation(at, at + spot_aim), glm::vec3(1.0f)},
-                           shadow, label);
+          scene::SpotLight spot{glm::vec3(1.0f), 0.9f, 12.0f, 0.8f * spot_outer_cone, spot_outer_cone};
+          const glm::vec3 at = aimed_from(centre);
+          scene::add_light(scene, spot, {at, scene::look_rotation(at, at + aim), glm::vec3(1.0f)}, shadow,
+                           label);
           break;
         }
         case Kind::point: {
-          scene::PointLight point{glm::vec3(1.0f), 0.9f, 4.5f};
+          scene::PointLight point{glm::vec3(1.0f), 0.9f, point_range};
           scene::add_light(scene, point, {source(kind, centre, centre)}, shadow, label);
           break;
         }
         case Kind::cylinder: {
-          const glm::vec3 at = centre - 4.0f / -beam_aim.y * beam_aim;
-          scene::add_light(scene, scene::CylinderLight{glm::vec3(1.0f), 0.7f, 1.5f, 2.5f},
-                           {at, scene::look_rotation(at, at + beam_aim), glm::vec3(1.0f)}, shadow, label);
+          const glm::vec3 at = aimed_from(centre);
+          scene::add_light(scene,
+                           scene::CylinderLight{glm::vec3(1.0f), 0.7f, 0.6f * beam_radius, beam_radius},
+                           {at, scene::look_rotation(at, at + aim), glm::vec3(1.0f)}, shadow, label);
           break;
         }
         case Kind::directional: break;
@@ -182,7 +187,7 @@ struct Measured {
     for (uint32_t row = 0; row < rows; ++row) {
       out << "  " << scene::to_string(scene::all_shadow_algorithms[row]) << ":";
       for (uint32_t column = 0; column < columns; ++column) {
-        const Tally& t = cells[row * columns + column];
+        const Tally& t = cells[index_of(column, row)];
         out << "  " << tile_sizes[column] << " " << t.lit << "/" << t.acne << "/" << t.shadowed << "/"
             << t.detached;
       }
@@ -199,9 +204,9 @@ float texel_on_floor(Kind kind, glm::vec3 light, glm::vec3 point, uint32_t size)
   const float slant = 1.0f / std::max(to_light.y, 0.3f);  // the floor's normal is +Y
   float across = 0.0f;                                    // the map's width at the point
   switch (kind) {
-    case Kind::spot: across = 2.0f * glm::dot(point - light, spot_aim) * std::tan(0.6f); break;
+    case Kind::spot: across = 2.0f * glm::dot(point - light, aim) * std::tan(spot_outer_cone); break;
     case Kind::point: across = 2.0f * glm::length(point - light); break;
-    case Kind::cylinder: across = 2.0f * 2.5f; break;
+    case Kind::cylinder: across = 2.0f * beam_radius; break;
     case Kind::directional: across = glm::length(glm::vec2(columns * pitch, rows * pitch)); break;
   }
   return across / float(size) * slant;
@@ -277,11 +282,11 @@ uint32_t nearest(float coordinate, uint32_t count) {
 bool reaches(Kind kind, glm::vec3 centre, glm::vec3 p) {
   const glm::vec3 light = source(kind, centre, p);
   switch (kind) {
-    case Kind::spot: return glm::dot(glm::normalize(p - light), spot_aim) > std::cos(0.6f);
-    case Kind::point: return glm::length(p - light) < 4.5f;
+    case Kind::spot: return glm::dot(glm::normalize(p - light), aim) > std::cos(spot_outer_cone);
+    case Kind::point: return glm::length(p - light) < point_range;
     case Kind::cylinder: {
-      const glm::vec3 from_axis = p - centre - glm::dot(p - centre, beam_aim) * beam_aim;
-      return glm::length(from_axis) < 2.5f;
+      const glm::vec3 from_axis = p - centre - glm::dot(p - centre, aim) * aim;
+      return glm::length(from_axis) < beam_radius;
     }
     case Kind::directional: return true;
   }
