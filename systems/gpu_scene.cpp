@@ -329,16 +329,12 @@ void GpuScene::draw_camera_pass(const vk::PassRecorder& rec,
                                 const FrameConstants& constants, uint32_t slot) const {
   rec.set_full_viewport();
   if (commands_.empty() || !bind_geometry(rec.cmd())) return;
-  bool bound = false;
+  layout.bind(rec.cmd(), set);  // once: the classes' pipelines share the layout
+  layout.push(rec.cmd(), constants);
   for (uint32_t draw_class = 0; draw_class < draw_class_count; ++draw_class) {
     const CommandRange& commands = class_commands_[draw_class];
     if (commands.count == 0) continue;
     vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines[draw_class]);
-    if (!bound) {  // the classes' pipelines share the layout
-      layout.bind(rec.cmd(), set);
-      layout.push(rec.cmd(), constants);
-      bound = true;
-    }
     vkCmdDrawIndexedIndirect(rec.cmd(), draws_.buffer(slot).handle(),
                              commands.first * sizeof(VkDrawIndexedIndirectCommand), commands.count,
                              sizeof(VkDrawIndexedIndirectCommand));
