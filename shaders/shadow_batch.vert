@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// variant cut_out SHADOW_CUT_OUT
 #extension GL_ARB_shader_viewport_layer_array : require
 // Every shadow view of the frame in one draw per (view kind, mesh): instance k of the draw is
 // the sorted pair (instance, view) at gl_InstanceIndex (shadow_scatter.comp). The caster is
@@ -18,6 +19,12 @@ layout(location = 0) in vec3 in_position;
 layout(location = 0) out vec3 out_world_position;
 layout(location = 1) flat out vec4 out_light_position_far;
 
+#ifdef SHADOW_CUT_OUT  // the uv and the material, for shadow_cut_out.frag and shadow_cube.frag
+layout(location = 2) in vec2 in_uv;
+layout(location = 2) out vec2 out_uv;
+layout(location = 3) flat out vec4 out_material;
+#endif
+
 out float gl_ClipDistance[4];
 
 void main() {
@@ -33,4 +40,8 @@ void main() {
   gl_Layer = int(views[pair.y].info.x);
   out_world_position = world.xyz;
   out_light_position_far = views[pair.y].position_far;
+#ifdef SHADOW_CUT_OUT
+  out_uv = in_uv;
+  out_material = instances[pair.x].material;
+#endif
 }

@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// variant cut_out SHADOW_CUT_OUT
 // All six faces of one point light's cube in one draw (the single-pass option of docs/LIGHTING.md
 // section 3), with shadow_cube.frag, in the per-light baseline. Draw the casters as for one face
 // but with instanceCount x 6 (firstInstance unchanged): copy k of a draw renders caster
@@ -25,6 +26,12 @@ layout(location = 0) in vec3 in_position;
 layout(location = 0) out vec3 out_world_position;
 layout(location = 1) flat out vec4 out_light_position_far;
 
+#ifdef SHADOW_CUT_OUT  // the uv and the material, for shadow_cut_out.frag and shadow_cube.frag
+layout(location = 2) in vec2 in_uv;
+layout(location = 2) out vec2 out_uv;
+layout(location = 3) flat out vec4 out_material;
+#endif
+
 out float gl_ClipDistance[4];
 
 void main() {
@@ -40,4 +47,8 @@ void main() {
   gl_Position = vec4(clip.xy * tile.xy + tile.zw * clip.w, clip.zw);
   out_world_position = world.xyz;
   out_light_position_far = frame.camera_position;
+#ifdef SHADOW_CUT_OUT
+  out_uv = in_uv;
+  out_material = instances[view_instances[gl_BaseInstance + copy / 6]].material;
+#endif
 }

@@ -1,7 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
-// Keeps every (caster, view) pair whose caster's world bounds meet the view's frustum: one
+// Keeps every (caster, view) pair whose caster's world bounds meet the view's frustum, but for a
+// transparent caster whose bounds hold the view's light (a light inside a glass bulb or a marker
+// is not shut in by it; ShadowCasterLists::add_view does the same per light): one
 // thread per caster (records caster_base on), one workgroup row per view. Pairs go to
 // culled_pairs in any order (at most `capacity`; the list's total counts every kept pair, so the
 // CPU learns when to grow); each list 0 pair counts towards its draw (view kind, caster group).
@@ -19,6 +21,10 @@ void main() {
   if (pc.skip_moving != 0u && caster_moving(casters[caster])) return;
   vec3 lo = casters[caster].min_mesh.xyz;
   vec3 hi = casters[caster].max_instance.xyz;
+  if (caster_blended(casters[caster])) {
+    vec4 light = views[view].position_far;
+    if (light.w >= 0.0 && all(greaterThanEqual(light.xyz, lo)) && all(lessThanEqual(light.xyz, hi))) return;
+  }
   // The frustum's planes from the matrix's rows (as shadows::frustum_planes: dot(plane.xyz, p) +
   // plane.w >= 0 inside, Vulkan depth 0..1), here rather than in the record: 96 bytes less a view
   // for the CPU to fill and upload each frame.

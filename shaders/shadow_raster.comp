@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// variant cut_out SHADOW_CUT_OUT
 // Rasterizes the culled (caster, view) pairs in compute, for small views whose triangles the
 // raster hardware of some GPUs sets up far slower than compute can (docs/PERFORMANCE.md): one
 // workgroup per pair, its threads taking the caster's triangles. Each view's depths are a
@@ -22,8 +23,15 @@
 // 3.87-3.88 at 64, 4.06-4.12 at 256 and 3.66-3.68 at 4 for 4,096 lights). 128 threads a workgroup: on the H200 the large triangles' texels
 // outweigh the idle lanes of casters with fewer triangles (6.1 ms against 9.3 with 64 for 1,024
 // lights, docs/PERFORMANCE.md).
+//
+// Casters with a cut-out (shadow_cut_out.glsl) are the cut_out variant's: it carries each
+// corner's uv through clipping and tests the material at every texel. Each variant passes over
+// the other's pairs, so that opaque casters pay nothing for it.
 #include "shadow_batch_compute.glsl"
 #include "scene_instances.glsl"
+#ifdef SHADOW_CUT_OUT
+#include "shadow_cut_out.glsl"
+#endif
 
 layout(local_size_x = 128) in;
 
@@ -45,17 +53,45 @@ const float SIDE_MARGIN = 1.01;
 // Large triangles queued for the workgroup at a time; past it a thread rasterizes its own.
 const uint QUEUE = gl_WorkGroupSize.x;
 
+// What a triangle's corner carries besides its position: its world position (for cube faces)
+// and, cut out, its uv.
+struct Corner {
+  vec3 world;
+#ifdef SHADOW_CUT_OUT
+  vec2 uv;
+#endif
+};
+
+Corner mix_corners(Corner a, Corner b, float s) {
+  Corner m;
+  m.world = mix(a.world, b.world, s);
+#ifdef SHADOW_CUT_OUT
+  m.uv = mix(a.uv, b.uv, s);
+#endif
+  return m;
+}
+
 // A triangle ready to rasterize: per corner, tile-space x, y (texels), depth (clip z / w) and
-// 1 / w, and its world position (for cube faces).
+// 1 / w, and the rest of the corner.
 struct Triangle {
   vec4 v[3];
-  vec3 world[3];
+  Corner corner[3];
 };
+
+#ifdef SHADOW_CUT_OUT
+vec4 pair_material;  // the caster's Instance::material, the same for the whole workgroup
+#endif
 
 shared Triangle queue[QUEUE];
 shared uint queued;
 
 float edge(vec2 a, vec2 b, vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
+
+// The weights that interpolate `t`'s corners perspective-correctly at barycentric `bary`.
+vec3 perspective_weights(Triangle t, vec3 bary) {
+  vec3 w = bary * vec3(t.v[0].w, t.v[1].w, t.v[2].w);
+  return w / (w.x + w.y + w.z);
+}
 
 // Writes the depth of `t` at `texel` if the texel centre, with barycentric coordinates `bary`,
 // lies inside it and between the planes.
@@ -63,11 +99,15 @@ void write_texel(Triangle t, vec3 bary, uvec2 texel, bool face, vec4 light, uvec
   if (any(lessThan(bary, vec3(0.0)))) return;
   float z = dot(bary, vec3(t.v[0].z, t.v[1].z, t.v[2].z));
   if (z < 0.0 || z > 1.0) return;  // beyond the far plane (the near one is clipped)
+#ifdef SHADOW_CUT_OUT
+  vec3 u = perspective_weights(t, bary);
+  vec2 uv = u.x * t.corner[0].uv + u.y * t.corner[1].uv + u.z * t.corner[2].uv;
+  if (shadow_cut_out(pair_material, uv, texel)) return;
+#endif
   float depth = z;
   if (face) {
-    // The world position under the texel centre, interpolated perspective-correctly.
-    vec3 w = bary * vec3(t.v[0].w, t.v[1].w, t.v[2].w);
-    vec3 world = (w.x * t.world[0] + w.y * t.world[1] + w.z * t.world[2]) / (w.x + w.y + w.z);
+    vec3 w = perspective_weights(t, bary);
+    vec3 world = w.x * t.corner[0].world + w.y * t.corner[1].world + w.z * t.corner[2].world;
     depth = min(length(world - light.xyz) / light.w, 1.0);
   }
   atomicMin(depths[place.x + texel.y * place.y + texel.x], floatBitsToUint(depth));
@@ -121,11 +161,11 @@ vec4 to_tile(vec4 clip, float size) {
 
 // Rasterizes the (clipped) triangle with clip positions c0..c2 now if it is small, else queues it
 // for the workgroup (or, with the queue full, rasterizes it anyway).
-void emit(vec4 c0, vec4 c1, vec4 c2, vec3 w0, vec3 w1, vec3 w2, uint view) {
+void emit(vec4 c0, vec4 c1, vec4 c2, Corner a0, Corner a1, Corner a2, uint view) {
   float size = float(views[view].info.z);
   Triangle t;
   t.v = vec4[](to_tile(c0, size), to_tile(c1, size), to_tile(c2, size));
-  t.world = vec3[](w0, w1, w2);
+  t.corner = Corner[](a0, a1, a2);
   vec2 extent = max(max(t.v[0].xy, t.v[1].xy), t.v[2].xy) - min(min(t.v[0].xy, t.v[1].xy), t.v[2].xy);
   if (extent.x * extent.y > SMALL_TRIANGLE) {
     uint slot = atomicAdd(queued, 1u);
@@ -137,9 +177,16 @@ void emit(vec4 c0, vec4 c1, vec4 c2, vec3 w0, vec3 w1, vec3 w2, uint view) {
   rasterize(t, view, 0u, 1u);
 }
 
-vec3 vertex_position(uint index) {
+// Vertex `index`'s corner under `model`, and its clip position in `view_projection`.
+Corner vertex_corner(uint index, mat4 model, mat4 view_projection, out vec4 clip) {
   uint v = index * VERTEX_FLOATS;
-  return vec3(vertices[v], vertices[v + 1u], vertices[v + 2u]);
+  Corner corner;
+  corner.world = (model * vec4(vertices[v], vertices[v + 1u], vertices[v + 2u], 1.0)).xyz;
+#ifdef SHADOW_CUT_OUT
+  corner.uv = vec2(vertices[v + 6u], vertices[v + 7u]);
+#endif
+  clip = view_projection * vec4(corner.world, 1.0);
+  return corner;
 }
 
 bool inside_view(vec4 c) { return c.z >= 0.0 && abs(c.x) <= c.w && abs(c.y) <= c.w; }
@@ -150,26 +197,26 @@ const vec4 CLIP_PLANES[5] = vec4[](vec4(0.0, 0.0, 1.0, 0.0), vec4(1.0, 0.0, 0.0,
                                    vec4(-1.0, 0.0, 0.0, SIDE_MARGIN), vec4(0.0, 1.0, 0.0, SIDE_MARGIN),
                                    vec4(0.0, -1.0, 0.0, SIDE_MARGIN));
 
-// Emits the triangle (clip positions c0..c2, world positions w0..w2) as it is when it lies in
-// the view, which most do, else clipped to the view (Sutherland-Hodgman) as a fan.
-void submit(vec4 c0, vec4 c1, vec4 c2, vec3 w0, vec3 w1, vec3 w2, uint view) {
+// Emits the triangle (clip positions c0..c2, corners a0..a2) as it is when it lies in the view,
+// which most do, else clipped to the view (Sutherland-Hodgman) as a fan.
+void submit(vec4 c0, vec4 c1, vec4 c2, Corner a0, Corner a1, Corner a2, uint view) {
   if (inside_view(c0) && inside_view(c1) && inside_view(c2)) {
-    emit(c0, c1, c2, w0, w1, w2, view);
+    emit(c0, c1, c2, a0, a1, a2, view);
     return;
   }
   vec4 c[MAX_CORNERS];
-  vec3 w[MAX_CORNERS];
+  Corner w[MAX_CORNERS];
   c[0] = c0;
   c[1] = c1;
   c[2] = c2;
-  w[0] = w0;
-  w[1] = w1;
-  w[2] = w2;
+  w[0] = a0;
+  w[1] = a1;
+  w[2] = a2;
   uint n = 3u;
   for (uint p = 0u; p < 5u && n >= 3u; ++p) {
     vec4 plane = CLIP_PLANES[p];
     vec4 kept_c[MAX_CORNERS];
-    vec3 kept_w[MAX_CORNERS];
+    Corner kept_w[MAX_CORNERS];
     uint m = 0u;
     for (uint k = 0u; k < n; ++k) {
       uint next = k + 1u == n ? 0u : k + 1u;
@@ -184,7 +231,7 @@ void submit(vec4 c0, vec4 c1, vec4 c2, vec3 w0, vec3 w1, vec3 w2, uint view) {
       if (((dk > 0.0 && dn < 0.0) || (dk < 0.0 && dn > 0.0)) && m < MAX_CORNERS) {
         float s = dk / (dk - dn);
         kept_c[m] = mix(c[k], c[next], s);
-        kept_w[m] = mix(w[k], w[next], s);
+        kept_w[m] = mix_corners(w[k], w[next], s);
         ++m;
       }
     }
@@ -201,9 +248,15 @@ void main() {
     uvec2 pair = pairs[p];
     uint view = pair.y;
     uint group = caster_group(casters[pair.x]);
+    CasterMesh mesh = meshes[group];
+#ifdef SHADOW_CUT_OUT
+    if (mesh.cut_out == 0u) continue;
+    pair_material = instances[floatBitsToUint(casters[pair.x].max_instance.w)].material;
+#else
+    if (mesh.cut_out != 0u) continue;
+#endif
     mat4 model = instances[floatBitsToUint(casters[pair.x].max_instance.w)].model;
     mat4 view_projection = views[view].view_projection;
-    CasterMesh mesh = meshes[group];
     uint triangles = mesh.index_count / 3u;
     for (uint chunk = 0u; chunk < triangles; chunk += gl_WorkGroupSize.x) {
       if (gl_LocalInvocationIndex == 0u) queued = 0u;
@@ -211,11 +264,11 @@ void main() {
       uint tri = chunk + gl_LocalInvocationIndex;
       if (tri < triangles) {
         uint first = mesh.first_index + 3u * tri;
-        vec3 w0 = (model * vec4(vertex_position(uint(int(indices[first]) + mesh.vertex_offset)), 1.0)).xyz;
-        vec3 w1 = (model * vec4(vertex_position(uint(int(indices[first + 1u]) + mesh.vertex_offset)), 1.0)).xyz;
-        vec3 w2 = (model * vec4(vertex_position(uint(int(indices[first + 2u]) + mesh.vertex_offset)), 1.0)).xyz;
-        submit(view_projection * vec4(w0, 1.0), view_projection * vec4(w1, 1.0), view_projection * vec4(w2, 1.0),
-               w0, w1, w2, view);
+        vec4 c0, c1, c2;
+        Corner a0 = vertex_corner(uint(int(indices[first]) + mesh.vertex_offset), model, view_projection, c0);
+        Corner a1 = vertex_corner(uint(int(indices[first + 1u]) + mesh.vertex_offset), model, view_projection, c1);
+        Corner a2 = vertex_corner(uint(int(indices[first + 2u]) + mesh.vertex_offset), model, view_projection, c2);
+        submit(c0, c1, c2, a0, a1, a2, view);
       }
       barrier();
       uint count = min(queued, QUEUE);

@@ -16,7 +16,8 @@ const uint VIEW_KINDS = 2u;
 struct ShadowView {
   mat4 view_projection;  // world -> the view's clip space
   vec4 tile;             // the view's clip xy -> the atlas page's: xy scale, zw offset (times w)
-  vec4 position_far;     // cube faces: the light's position and far plane (shadow_cube.frag)
+  vec4 position_far;     // cube faces: the light's position and far plane (shadow_cube.frag);
+                         // 2D maps: the light's position and reach, w < 0 for none
   uvec4 info;            // x: atlas layer; y: VIEW_KIND_*; z: tile side, texels
   uvec4 raster;          // shadow_raster.comp: x where the tile's texel (0, 0) is in the depths,
                          // y the depths' row pitch there (tiles side by side share rows); z where
@@ -25,21 +26,26 @@ struct ShadowView {
 
 struct ShadowCaster {
   vec4 min_mesh;      // xyz: world bounds' minimum; w: the caster's mesh (caster group), as uint
-                      // bits, with CASTER_MOVING set for a moving caster
+                      // bits, with CASTER_MOVING set for a moving caster and CASTER_BLENDED for a
+                      // transparent one
   vec4 max_instance;  // xyz: world bounds' maximum; w: its index in Instances, as uint bits
 };
 
 const uint CASTER_MOVING = 0x80000000u;
+const uint CASTER_BLENDED = 0x40000000u;
 
-uint caster_group(ShadowCaster caster) { return floatBitsToUint(caster.min_mesh.w) & ~CASTER_MOVING; }
+uint caster_group(ShadowCaster caster) {
+  return floatBitsToUint(caster.min_mesh.w) & ~(CASTER_MOVING | CASTER_BLENDED);
+}
 bool caster_moving(ShadowCaster caster) { return (floatBitsToUint(caster.min_mesh.w) & CASTER_MOVING) != 0u; }
+bool caster_blended(ShadowCaster caster) { return (floatBitsToUint(caster.min_mesh.w) & CASTER_BLENDED) != 0u; }
 
 // Geometry of caster group g: what its indirect commands draw.
 struct CasterMesh {
   uint index_count;
   uint first_index;
   int vertex_offset;
-  uint unused;
+  uint cut_out;  // 1 for masked or transparent materials (shadow_cut_out.glsl), else 0
 };
 
 // One indirect draw per (view kind k, caster group g), at k * groups + g.

@@ -32,7 +32,7 @@ DepthPrepass::DepthPrepass(vk::VulkanContext& context, const GpuTextures& textur
         }
         vk::GraphicsPipelineDesc desc;
         desc.vertex_spirv = depth_prepass_vert;
-        scene_vertex_input(desc, false);
+        scene_vertex_input(desc, VertexInput::position);
         desc.depth_format = vk::to_vk(camera_depth_format);
         desc.depth_compare = camera_depth_test;
         desc.cull_mode = draw_class & draw_double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;

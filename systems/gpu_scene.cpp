@@ -21,13 +21,15 @@ const scene::Material default_material;  // what an instance without a Material 
 
 }  // namespace
 
-void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface) {
+void scene_vertex_input(vk::GraphicsPipelineDesc& desc, VertexInput input) {
   desc.vertex_bindings = {{0, sizeof(scene::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
   desc.vertex_attributes = {
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, position))}};
-  if (!surface) return;
-  desc.vertex_attributes.push_back(
-      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, normal))});
+  if (input == VertexInput::position) return;
+  if (input == VertexInput::surface) {
+    desc.vertex_attributes.push_back(
+        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, normal))});
+  }
   desc.vertex_attributes.push_back(
       {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, uv))});
 }
@@ -54,7 +56,7 @@ vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment
   vk::GraphicsPipelineDesc desc;
   desc.vertex_spirv = scene_vert;
   desc.fragment_spirv = fragment;
-  scene_vertex_input(desc, true);
+  scene_vertex_input(desc, VertexInput::surface);
   desc.color_formats = std::move(colour_formats);
   desc.depth_format = vk::to_vk(camera_depth_format);
   desc.depth_compare = camera_depth_test;
@@ -99,7 +101,9 @@ void GpuScene::place(const ecs::World& world, size_t i) {
   const scene::Material& material = found ? *found : default_material;
   const float texture =
       material.base_color_texture == scene::no_texture ? -1.0f : float(material.base_color_texture);
-  const float cutoff = material.alpha_mode == scene::AlphaMode::mask ? material.alpha_cutoff : 0.0f;
+  const float cutoff = material.alpha_mode == scene::AlphaMode::mask    ? material.alpha_cutoff
+                       : material.alpha_mode == scene::AlphaMode::blend ? transparent_cutoff
+                                                                        : 0.0f;
   sorted_[i] = {model, glm::vec4(glm::vec3(material.base_color), material.specular),
                 glm::vec4(material.shininess, texture, material.base_color.a, cutoff)};
   bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, model);
@@ -225,7 +229,7 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
       [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance& mesh) {
         const scene::Material* material = world.try_get<scene::Material>(entity);
         const auto draw_class = static_cast<uint8_t>(draw_class_of(material ? *material : default_material));
-        items_.push_back({mesh.mesh, scene::casts_shadow(mesh, material), draw_class, entity});
+        items_.push_back({mesh.mesh, mesh.casts_shadow, draw_class, entity});
       });
   // By draw class, then mesh, casters first within each: a counting sort (classes and meshes
   // are few, instances many).
@@ -270,6 +274,7 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   commands_.clear();
   class_commands_.fill({});
   caster_groups_.clear();
+  first_cut_out_group_ = 0;
   // One command per (draw class, mesh) over its instances, and a caster group over its casters
   // (first).
   for (size_t begin = 0; begin < count;) {
@@ -292,6 +297,8 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
       if (casters > 0) {
         VkDrawIndexedIndirectCommand group = command;
         group.instanceCount = casters;
+        if (!(draw_class & (draw_masked | draw_blended)))
+          first_cut_out_group_ = static_cast<uint32_t>(caster_groups_.size()) + 1;
         caster_groups_.push_back(group);
       }
     }

@@ -33,9 +33,10 @@ class PassRecorder;
 
 namespace sg {
 
-// The pipeline input of scene::Vertex at binding 0 (GpuScene::bind_geometry): the position at
-// location 0, and with `surface` the normal at 1 and the uv at 2.
-void scene_vertex_input(vk::GraphicsPipelineDesc& desc, bool surface);
+// What a pipeline reads of scene::Vertex at binding 0 (GpuScene::bind_geometry): the position at
+// location 0, then the normal at 1 (surface) and the uv at 2 (surface, position_uv).
+enum class VertexInput { position, position_uv, surface };
+void scene_vertex_input(vk::GraphicsPipelineDesc& desc, VertexInput input);
 
 // The depth buffer of every pass that draws the scene from the camera, its depth reversed
 // (systems/camera.h): cleared to the far depth, a nearer surface has a greater depth.
@@ -51,7 +52,7 @@ inline constexpr VkCompareOp camera_depth_retest = VK_COMPARE_OP_GREATER_OR_EQUA
 // Instances are drawn class by class, each class with a pipeline of its own (CameraPipelines).
 inline constexpr uint32_t draw_double_sided = 1;
 inline constexpr uint32_t draw_masked = 2;
-inline constexpr uint32_t draw_blended = 4;  // transparent: drawn as opaque yet, casting no shadow
+inline constexpr uint32_t draw_blended = 4;  // transparent: drawn as opaque yet
 inline constexpr uint32_t draw_class_count = 8;
 uint32_t draw_class_of(const scene::Material& material);
 
@@ -109,6 +110,9 @@ class GpuScene {
   // Per (draw class, mesh) with casters: its draw over exactly its casters (firstInstance and
   // instanceCount give their range in the instance buffer).
   std::span<const VkDrawIndexedIndirectCommand> caster_groups() const { return caster_groups_; }
+  // The caster groups from this one on are masked or transparent, their shadows cut out
+  // (shaders/shadow_cut_out.glsl); the opaque ones come before (draw classes in order).
+  uint32_t first_cut_out_group() const { return first_cut_out_group_; }
   // World-space bounds of every instance, in instance-buffer order, and of all of them.
   std::span<const scene::Aabb> instance_bounds() const { return bounds_; }
   // The entity of every instance, in instance-buffer order, as ecs::entity_key.
@@ -124,6 +128,7 @@ class GpuScene {
   std::span<const scene::Aabb> replaced_bounds_before() const { return bounds_before_; }
   std::span<const scene::Aabb> replaced_bounds_after() const { return bounds_after_; }
   bool casts_shadow(uint32_t instance) const { return items_[instance].caster; }
+  uint32_t draw_class(uint32_t instance) const { return items_[instance].draw_class; }
   // Moving instances: those whose bounds changed in a gather since the last layout (the layout
   // makes every instance still again). Shadow maps keep a layer of the other casters and redraw
   // only these over it (ShadowViewBatch). moving_instances() lists them in the order they first
@@ -205,6 +210,7 @@ class GpuScene {
   std::vector<VkDrawIndexedIndirectCommand> commands_;  // per (draw class, mesh), classes in order
   std::array<CommandRange, draw_class_count> class_commands_{};
   std::vector<VkDrawIndexedIndirectCommand> caster_groups_;
+  uint32_t first_cut_out_group_ = 0;
 };
 
 }  // namespace sg

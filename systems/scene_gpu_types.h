@@ -9,9 +9,13 @@ struct GpuInstance {
   glm::mat4 model;  // the normal matrix is derived from it where needed (scene.vert)
   glm::vec4 base_color_specular;
   glm::vec4 material;  // x: shininess, y: base colour texture index or -1, z: base colour alpha,
-                       // w: mask's alpha cutoff (0: no cut-out)
+                       // w: mask's alpha cutoff (0: no cut-out), transparent_cutoff if blended
 };
 static_assert(sizeof(GpuInstance) == 96);
+
+// A transparent material's cutoff: its shadow is cut stochastically, its alpha the share of
+// texels it covers (shaders/shadow_cut_out.glsl).
+inline constexpr float transparent_cutoff = -1.0f;
 
 // Where no surface is drawn: every lighting path's lit sum starts from it.
 inline constexpr glm::vec3 background_colour{0.02f, 0.02f, 0.03f};

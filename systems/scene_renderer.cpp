@@ -65,9 +65,10 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       max_light_records_(context.properties().limits.maxTexelBufferElements /
                          (sizeof(shadows::GpuLight) / 16)) {
   if (batched_shadow_views(context, settings)) {
-    batch_.emplace(context, frames_in_flight, settings.shadow_raster, atlas_.static_layers() != nullptr);
+    batch_.emplace(context, frames_in_flight, textures_, settings.shadow_raster,
+                   atlas_.static_layers() != nullptr);
   } else {
-    per_light_.emplace(context, frames_in_flight);
+    per_light_.emplace(context, frames_in_flight, textures_);
   }
   switch (lighting_) {
     case LightingPath::every_light: every_light_.emplace(context, frames_in_flight, textures_); break;

@@ -5,6 +5,7 @@
 #include "rendergraph/device/context.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "systems/gpu_scene.h"
+#include "systems/gpu_textures.h"
 
 namespace sg {
 
@@ -27,12 +28,19 @@ shadows::DeviceShadowLimits shadow_limits(const vk::VulkanContext& context) {
 
 vk::GraphicsPipelineDesc shadow_pipeline_desc(VkPipelineLayout layout) {
   vk::GraphicsPipelineDesc desc;
-  scene_vertex_input(desc, false);
+  scene_vertex_input(desc, VertexInput::position);
   desc.depth_format = vk::to_vk(ShadowAtlas::depth_format);
   // Receivers apply each light's own bias (docs/LIGHTING.md section 4), so casters are drawn as
   // they are, both faces: thin and open meshes cast too.
   desc.cull_mode = VK_CULL_MODE_NONE;
   desc.layout = layout;
+  return desc;
+}
+
+vk::GraphicsPipelineDesc shadow_cut_out_pipeline_desc(VkPipelineLayout layout, const GpuTextures& textures) {
+  vk::GraphicsPipelineDesc desc = shadow_pipeline_desc(layout);
+  scene_vertex_input(desc, VertexInput::position_uv);
+  desc.fragment_specialization = material_pass_constants(0, 0, textures);
   return desc;
 }
 

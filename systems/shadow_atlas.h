@@ -21,6 +21,8 @@
 
 namespace sg {
 
+class GpuTextures;
+
 class ShadowAtlas {
  public:
   static constexpr rg::Format depth_format = rg::Format::d32_sfloat;
@@ -58,5 +60,8 @@ shadows::DeviceShadowLimits shadow_limits(const vk::VulkanContext& context);
 // A pipeline that draws casters into the atlas with `layout` (positions only, depth in
 // depth_format, both faces); callers add their shaders.
 vk::GraphicsPipelineDesc shadow_pipeline_desc(VkPipelineLayout layout);
+// The same for the shaders' cut_out variants (shaders/shadow_cut_out.glsl), which read the uv
+// too and sample `textures` where it has images.
+vk::GraphicsPipelineDesc shadow_cut_out_pipeline_desc(VkPipelineLayout layout, const GpuTextures& textures);
 
 }  // namespace sg

@@ -15,6 +15,10 @@ constexpr uint32_t no_group = std::numeric_limits<uint32_t>::max();
 // over the casters.
 constexpr uint32_t max_cells_per_side = 64;
 
+bool holds(const scene::Aabb& box, const glm::vec3& point) {
+  return glm::all(glm::greaterThanEqual(point, box.min)) && glm::all(glm::lessThanEqual(point, box.max));
+}
+
 bool sphere_meets_box(const glm::vec4& sphere, const scene::Aabb& box) {
   const glm::vec3 centre(sphere);
   const glm::vec3 nearest = glm::clamp(centre, box.min, box.max);
@@ -123,14 +127,16 @@ CasterView ShadowCasterLists::add_view(const GpuScene& scene, const glm::vec4& r
           const uint32_t i = grid_.cell_ids[k];
           if (seen_[i] == view_stamp_) continue;  // a caster spanning cells is tested once
           seen_[i] = view_stamp_;
-          if (sphere_meets_box(reach, bounds[i])) candidates_.push_back(i);
+          if (!sphere_meets_box(reach, bounds[i])) continue;
+          if ((scene.draw_class(i) & draw_blended) && holds(bounds[i], glm::vec3(reach))) continue;
+          candidates_.push_back(i);
         }
       }
     }
   }
 
   // One command per caster group the view kept anything of; order within a group is free.
-  CasterView view{static_cast<uint32_t>(commands_scratch_.size()), 0};
+  CasterView view{static_cast<uint32_t>(commands_scratch_.size()), 0, 0};
   by_group_.resize(groups.size());
   for (const uint32_t i : candidates_) by_group_[group_of_[i]].push_back(i);
   for (uint32_t group = 0; group < groups.size(); ++group) {
@@ -142,6 +148,7 @@ CasterView ShadowCasterLists::add_view(const GpuScene& scene, const glm::vec4& r
     ids_scratch_.insert(ids_scratch_.end(), kept.begin(), kept.end());
     commands_scratch_.push_back(command);
     ++view.command_count;
+    if (group >= scene.first_cut_out_group()) ++view.cut_out_commands;
     kept.clear();
   }
   return view;
@@ -152,11 +159,14 @@ void ShadowCasterLists::upload(uint32_t slot) {
   commands_.write(slot, std::span<const VkDrawIndexedIndirectCommand>(commands_scratch_));
 }
 
-void ShadowCasterLists::draw(VkCommandBuffer cmd, uint32_t slot, CasterView view) const {
-  if (view.command_count == 0) return;
+void ShadowCasterLists::draw(VkCommandBuffer cmd, uint32_t slot, CasterView view, bool cut_out) const {
+  const uint32_t opaque = view.command_count - view.cut_out_commands;
+  const uint32_t first = cut_out ? view.first_command + opaque : view.first_command;
+  const uint32_t count = cut_out ? view.cut_out_commands : opaque;
+  if (count == 0) return;
   vkCmdDrawIndexedIndirect(cmd, commands_.buffer(slot).handle(),
-                           VkDeviceSize{view.first_command} * sizeof(VkDrawIndexedIndirectCommand),
-                           view.command_count, sizeof(VkDrawIndexedIndirectCommand));
+                           VkDeviceSize{first} * sizeof(VkDrawIndexedIndirectCommand), count,
+                           sizeof(VkDrawIndexedIndirectCommand));
 }
 
 }  // namespace sg

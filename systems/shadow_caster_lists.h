@@ -28,6 +28,9 @@ class GpuScene;
 struct CasterView {
   uint32_t first_command = 0;
   uint32_t command_count = 0;
+  // The last of them: masked or transparent casters' groups (GpuScene::first_cut_out_group),
+  // drawn with the shaders' cut_out variants.
+  uint32_t cut_out_commands = 0;
 };
 
 class ShadowCasterLists {
@@ -38,14 +41,17 @@ class ShadowCasterLists {
   // bounded views' mean radius) sizes the grid's cells, so that a view covers a few cells.
   void begin_frame(const GpuScene& scene, float typical_reach);
   // The casters of `scene` whose bounds meet the sphere `reach` (xyz centre, w radius; a
-  // negative radius keeps every caster), each drawn `copies` times (6 for layered cubes).
+  // negative radius keeps every caster), each drawn `copies` times (6 for layered cubes). A
+  // transparent caster whose bounds hold the centre, the light, is left out: a light inside a
+  // glass bulb or a marker is not shut in by it.
   CasterView add_view(const GpuScene& scene, const glm::vec4& reach, uint32_t copies);
   // Writes the frame's ids and commands to the slot's buffers (after the last add_view).
   void upload(uint32_t slot);
 
   const vk::Buffer& ids(uint32_t slot) const { return ids_.buffer(slot); }
-  // Draws `view` with the pipeline bound and the scene's geometry bound.
-  void draw(VkCommandBuffer cmd, uint32_t slot, CasterView view) const;
+  // Draws the opaque casters of `view`, or with `cut_out` its cut-out ones, with the pipeline
+  // bound and the scene's geometry bound.
+  void draw(VkCommandBuffer cmd, uint32_t slot, CasterView view, bool cut_out) const;
 
   // Instances kept over all views of the frame, before copies: what culling left to draw.
   uint64_t kept_instances() const { return ids_scratch_.size(); }

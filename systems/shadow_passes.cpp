@@ -4,15 +4,21 @@
 #include <cstring>
 #include <initializer_list>
 #include <span>
+#include <string>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "shaders/shadow_cube.frag.spv.h"
+#include "shaders/shadow_cube_cut_out.frag.spv.h"
 #include "shaders/shadow_cube_layered.vert.spv.h"
+#include "shaders/shadow_cube_layered_cut_out.vert.spv.h"
+#include "shaders/shadow_cut_out.frag.spv.h"
 #include "shaders/shadow_map.vert.spv.h"
+#include "shaders/shadow_map_cut_out.vert.spv.h"
 #include "systems/gpu_scene.h"
+#include "systems/gpu_textures.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/shader_bindings.h"
 #include "systems/shadow_atlas.h"
@@ -57,28 +63,45 @@ void clear_tiles(VkCommandBuffer cmd, std::initializer_list<AtlasTile> tiles) {
 
 }  // namespace
 
-ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight)
-    : layout_(context.device(),
+ShadowPasses::ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures)
+    : context_(context),
+      textures_(textures),
+      layout_(context.device(),
               {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT},
                {cube_faces_binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, VK_SHADER_STAGE_VERTEX_BIT},
-               {view_instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}},
+               {view_instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT},
+               {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                VK_SHADER_STAGE_FRAGMENT_BIT}},
               vk::push_constants<PassConstants>(stages)),
       slot_sets_(layout_.allocate_sets(frames_in_flight)),
       casters_(context, frames_in_flight),
       cube_faces_(context, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frames_in_flight, "cube faces") {
   const VkDeviceSize alignment = context.properties().limits.minUniformBufferOffsetAlignment;
   cube_faces_stride_ = (sizeof(CubeFaces) + alignment - 1) / alignment * alignment;
+  opaque_ = make_pipelines(false);
+}
 
-  vk::GraphicsPipelineDesc desc = shadow_pipeline_desc(layout_.get());
-  desc.vertex_spirv = shadow_map_vert;
-  desc.name = "shadow map";
-  map_pipeline_ = vk::create_graphics_pipeline(context, desc);
-  desc.fragment_spirv = shadow_cube_frag;
-  desc.name = "shadow cube face";
-  face_pipeline_ = vk::create_graphics_pipeline(context, desc);
-  desc.vertex_spirv = shadow_cube_layered_vert;
-  desc.name = "shadow cube layered";
-  layered_pipeline_ = vk::create_graphics_pipeline(context, desc);
+ShadowPasses::Pipelines ShadowPasses::make_pipelines(bool cut_out) const {
+  using Spirv = std::span<const uint32_t>;
+  const Spirv map_vert = cut_out ? Spirv(shadow_map_cut_out_vert) : Spirv(shadow_map_vert);
+  const Spirv layered_vert =
+      cut_out ? Spirv(shadow_cube_layered_cut_out_vert) : Spirv(shadow_cube_layered_vert);
+  const Spirv face_frag = cut_out ? Spirv(shadow_cube_cut_out_frag) : Spirv(shadow_cube_frag);
+  const std::string suffix = cut_out ? " cut out" : "";
+  vk::GraphicsPipelineDesc desc =
+      cut_out ? shadow_cut_out_pipeline_desc(layout_.get(), textures_) : shadow_pipeline_desc(layout_.get());
+  Pipelines made;
+  desc.vertex_spirv = map_vert;
+  if (cut_out) desc.fragment_spirv = shadow_cut_out_frag;  // 2D maps need none otherwise
+  desc.name = "shadow map" + suffix;
+  made.map = vk::create_graphics_pipeline(context_, desc);
+  desc.fragment_spirv = face_frag;
+  desc.name = "shadow cube face" + suffix;
+  made.face = vk::create_graphics_pipeline(context_, desc);
+  desc.vertex_spirv = layered_vert;
+  desc.name = "shadow cube layered" + suffix;
+  made.layered = vk::create_graphics_pipeline(context_, desc);
+  return made;
 }
 
 void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuScene& scene,
@@ -97,6 +120,9 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
   }
   for (const ShadowCubeView& cube : lights.cubes) {
     if (cube.render) add_reach(cube.position_far);
+  }
+  if (!cut_out_.map && scene.first_cut_out_group() < scene.caster_groups().size()) {
+    cut_out_ = make_pipelines(true);
   }
   casters_.begin_frame(scene, bounded > 0 ? reach_sum / float(bounded) : 0.0f);
   map_casters_.assign(lights.maps.size(), CasterView{});
@@ -128,17 +154,24 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
       .buffer(instances_binding, scene.instances(slot).handle())
       .buffer(cube_faces_binding, faces.handle(), 0, sizeof(CubeFaces))
       .buffer(view_instances_binding, casters_.ids(slot).handle())
+      .image(material_textures_binding, textures_.array().view(), textures_.sampler())
       .update();
 }
 
-void ShadowPasses::draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline pipeline,
+void ShadowPasses::draw_casters(VkCommandBuffer cmd, uint32_t slot, vk::UniquePipeline Pipelines::*kind,
                                 const glm::mat4& view_projection, const glm::vec4& position_far,
                                 uint32_t cube_faces_offset, const GpuScene& scene, CasterView view) const {
   if (view.command_count == 0 || !scene.bind_geometry(cmd)) return;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
   layout_.bind(cmd, slot_sets_.sets[slot], {&cube_faces_offset, 1});
   layout_.push(cmd, PassConstants{view_projection, position_far});
-  casters_.draw(cmd, slot, view);
+  if (view.cut_out_commands < view.command_count) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (opaque_.*kind).get());
+    casters_.draw(cmd, slot, view, false);
+  }
+  if (view.cut_out_commands > 0) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (cut_out_.*kind).get());
+    casters_.draw(cmd, slot, view, true);
+  }
 }
 
 rg::ImageHandle ShadowPasses::add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, const FrameLights& lights,
@@ -156,7 +189,7 @@ rg::ImageHandle ShadowPasses::add_to(rg::RenderGraph& graph, rg::ImageHandle atl
                    [this, &map, &scene, slot, view = map_casters_[m]](const vk::PassRecorder& rec) {
                      clear_tiles(rec.cmd(), {map.tile});
                      rec.set_viewport(tile_rect(map.tile));
-                     draw_casters(rec.cmd(), slot, map_pipeline_.get(), map.view.view_projection(),
+                     draw_casters(rec.cmd(), slot, &Pipelines::map, map.view.view_projection(),
                                   glm::vec4(0.0f), 0, scene, view);
                    });
   }
@@ -172,8 +205,8 @@ rg::ImageHandle ShadowPasses::add_to(rg::RenderGraph& graph, rg::ImageHandle atl
                        const auto& t = cube.tiles;
                        clear_tiles(rec.cmd(), {t[0], t[1], t[2], t[3], t[4], t[5]});
                        rec.set_full_viewport();
-                       draw_casters(rec.cmd(), slot, layered_pipeline_.get(), glm::mat4(1.0f),
-                                    cube.position_far, faces_offset, scene, view);
+                       draw_casters(rec.cmd(), slot, &Pipelines::layered, glm::mat4(1.0f), cube.position_far,
+                                    faces_offset, scene, view);
                      });
       continue;
     }
@@ -182,7 +215,7 @@ rg::ImageHandle ShadowPasses::add_to(rg::RenderGraph& graph, rg::ImageHandle atl
                      [this, &cube, &scene, slot, face, faces_offset, view](const vk::PassRecorder& rec) {
                        clear_tiles(rec.cmd(), {cube.tiles[face]});
                        rec.set_viewport(tile_rect(cube.tiles[face]));
-                       draw_casters(rec.cmd(), slot, face_pipeline_.get(), cube.views.view_projection[face],
+                       draw_casters(rec.cmd(), slot, &Pipelines::face, cube.views.view_projection[face],
                                     cube.position_far, faces_offset, scene, view);
                      });
     }

@@ -26,9 +26,12 @@ class VulkanContext;
 
 namespace sg {
 
+class GpuTextures;
+
 class ShadowPasses {
  public:
-  ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight);
+  // `textures`: the materials' (cut-out casters read their alpha), kept by reference.
+  ShadowPasses(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);
 
   // CPU side of a frame, after FrameRing::begin_frame returned `slot`: culls the casters of each
   // view that renders (or, without cull_casters, gives every view every caster), writes them and
@@ -47,15 +50,24 @@ class ShadowPasses {
   uint64_t kept_casters() const { return casters_.kept_instances(); }
 
  private:
-  void draw_casters(VkCommandBuffer cmd, uint32_t slot, VkPipeline pipeline, const glm::mat4& view_projection,
-                    const glm::vec4& position_far, uint32_t cube_faces_offset, const GpuScene& scene,
-                    CasterView view) const;
+  // A view's shaders, for opaque casters or for cut-out ones (shaders/shadow_cut_out.glsl).
+  struct Pipelines {
+    vk::UniquePipeline map;      // shadow_map.vert
+    vk::UniquePipeline face;     // shadow_map.vert, shadow_cube.frag
+    vk::UniquePipeline layered;  // shadow_cube_layered.vert, shadow_cube.frag
+  };
+  Pipelines make_pipelines(bool cut_out) const;
+  // Draws `view`'s casters with `kind` of the opaque pipelines, then of the cut-out ones.
+  void draw_casters(VkCommandBuffer cmd, uint32_t slot, vk::UniquePipeline Pipelines::*kind,
+                    const glm::mat4& view_projection, const glm::vec4& position_far,
+                    uint32_t cube_faces_offset, const GpuScene& scene, CasterView view) const;
 
+  vk::VulkanContext& context_;
+  const GpuTextures& textures_;
   vk::PipelineLayout layout_;
   vk::DescriptorSets slot_sets_;
-  vk::UniquePipeline map_pipeline_;
-  vk::UniquePipeline face_pipeline_;
-  vk::UniquePipeline layered_pipeline_;
+  Pipelines opaque_;
+  Pipelines cut_out_;  // made with the first scene that has cut-out casters
   ShadowCasterLists casters_;
   std::vector<CasterView> map_casters_;   // per shadows::FrameLights::maps entry (empty unless it renders)
   std::vector<CasterView> cube_casters_;  // per shadows::FrameLights::cubes entry

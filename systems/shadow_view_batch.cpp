@@ -14,13 +14,18 @@
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "shaders/shadow_batch.vert.spv.h"
+#include "shaders/shadow_batch_cut_out.vert.spv.h"
 #include "shaders/shadow_cube.frag.spv.h"
+#include "shaders/shadow_cube_cut_out.frag.spv.h"
 #include "shaders/shadow_cull.comp.spv.h"
+#include "shaders/shadow_cut_out.frag.spv.h"
 #include "shaders/shadow_draws.comp.spv.h"
 #include "shaders/shadow_raster.comp.spv.h"
+#include "shaders/shadow_raster_cut_out.comp.spv.h"
 #include "shaders/shadow_scatter.comp.spv.h"
 #include "shaders/shadow_static_restore.comp.spv.h"
 #include "shaders/shadow_static_save.comp.spv.h"
+#include "systems/gpu_textures.h"
 #include "systems/shader_bindings.h"
 #include "systems/shadow_atlas.h"
 #include "systems/shadows/atlas_tile_coords.h"
@@ -59,8 +64,9 @@ struct LayerConstants {
 // shaders/shadow_static_layers.glsl's TEXELS_PER_WORKGROUP.
 constexpr uint64_t layer_texels_per_workgroup = 65536;
 
-// shaders/shadow_views.glsl's CASTER_MOVING, in a caster record's group.
+// shaders/shadow_views.glsl's CASTER_MOVING and CASTER_BLENDED, in a caster record's group.
 constexpr uint32_t caster_moving = 0x80000000u;
+constexpr uint32_t caster_blended = 0x40000000u;
 
 constexpr VkDeviceSize counts_header_bytes = 16;  // the two lists' totals and padding
 constexpr VkDeviceSize draws_header_bytes = 48;   // the scatter's and the raster's dispatches
@@ -107,8 +113,10 @@ bool ShadowViewBatch::may_raster_in_compute(const vk::VulkanContext& context, sh
 }
 
 ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight,
-                                 shadows::ShadowRaster raster, bool static_layers)
+                                 const GpuTextures& textures, shadows::ShadowRaster raster,
+                                 bool static_layers)
     : context_(context),
+      textures_(textures),
       setting_(resolve(raster, context)),
       raster_(setting_ == shadows::ShadowRaster::automatic ? shadows::ShadowRaster::compute : setting_),
       has_static_layers_(static_layers),
@@ -133,18 +141,22 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
                       vk::push_constants<BatchConstants>(compute)),
       raster_layout_(context.device(), {{instances_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT},
                                         {shadow_views_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT},
-                                        {view_instances_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT}}),
-      compute_raster_layout_(context.device(),
-                             {{instances_binding, storage, 1, compute},
-                              {shadow_views_binding, storage, 1, compute},
-                              {shadow_casters_binding, storage, 1, compute},
-                              {caster_meshes_binding, storage, 1, compute},
-                              {culled_pairs_binding, storage, 1, compute},
-                              {draw_counts_binding, storage, 1, compute},
-                              {shadow_depths_binding, storage, 1, compute},
-                              {mesh_vertices_binding, storage, 1, compute},
-                              {mesh_indices_binding, storage, 1, compute}},
-                             vk::push_constants<BatchConstants>(compute)),
+                                        {view_instances_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT},
+                                        {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                         1, VK_SHADER_STAGE_FRAGMENT_BIT}}),
+      compute_raster_layout_(
+          context.device(),
+          {{instances_binding, storage, 1, compute},
+           {shadow_views_binding, storage, 1, compute},
+           {shadow_casters_binding, storage, 1, compute},
+           {caster_meshes_binding, storage, 1, compute},
+           {culled_pairs_binding, storage, 1, compute},
+           {draw_counts_binding, storage, 1, compute},
+           {shadow_depths_binding, storage, 1, compute},
+           {mesh_vertices_binding, storage, 1, compute},
+           {mesh_indices_binding, storage, 1, compute},
+           {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute}},
+          vk::push_constants<BatchConstants>(compute)),
       static_layers_layout_(context.device(),
                             {{shadow_views_binding, storage, 1, compute},
                              {shadow_depths_binding, storage, 1, compute},
@@ -182,6 +194,22 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
   desc.fragment_spirv = shadow_cube_frag;
   desc.name = "shadow batch cube faces";
   face_pipeline_ = vk::create_graphics_pipeline(context, desc);
+}
+
+void ShadowViewBatch::make_cut_out_pipelines() {
+  vk::GraphicsPipelineDesc desc = shadow_cut_out_pipeline_desc(raster_layout_.get(), textures_);
+  desc.vertex_spirv = shadow_batch_cut_out_vert;
+  desc.fragment_spirv = shadow_cut_out_frag;
+  desc.name = "shadow batch maps cut out";
+  map_cut_out_pipeline_ = vk::create_graphics_pipeline(context_, desc);
+  desc.fragment_spirv = shadow_cube_cut_out_frag;
+  desc.name = "shadow batch cube faces cut out";
+  face_cut_out_pipeline_ = vk::create_graphics_pipeline(context_, desc);
+  if (compute_raster_pipeline_) {
+    compute_raster_cut_out_pipeline_ = vk::create_compute_pipeline(
+        context_, {shadow_raster_cut_out_comp, material_pass_constants(0, 0, textures_),
+                   compute_raster_layout_.get(), "shadow raster cut out"});
+  }
 }
 
 void ShadowViewBatch::set_raster(shadows::ShadowRaster raster) {
@@ -274,9 +302,13 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
   group_first_caster_.clear();
   const std::span<const VkDrawIndexedIndirectCommand> groups = scene.caster_groups();
   const std::span<const scene::Aabb> bounds = scene.instance_bounds();
+  first_cut_out_group_ = scene.first_cut_out_group();
+  if (first_cut_out_group_ < groups.size() && !map_cut_out_pipeline_) make_cut_out_pipelines();
   uint32_t caster_count = 0;
-  for (const VkDrawIndexedIndirectCommand& group : groups) {
-    meshes_.push_back({group.indexCount, group.firstIndex, std::bit_cast<uint32_t>(group.vertexOffset), 0u});
+  for (uint32_t g = 0; g < groups.size(); ++g) {
+    const VkDrawIndexedIndirectCommand& group = groups[g];
+    meshes_.push_back({group.indexCount, group.firstIndex, std::bit_cast<uint32_t>(group.vertexOffset),
+                       g >= first_cut_out_group_ ? 1u : 0u});
     group_first_caster_.push_back(caster_count);
     caster_count += group.instanceCount;
   }
@@ -312,7 +344,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
       if (first == not_drawn) continue;
       if (i < lights.maps.size()) {
         const shadows::ShadowMapView& map = lights.maps[i];
-        place_view(first, map.view.view_projection(), glm::vec4(0.0f), view_kind_map);
+        place_view(first, map.view.view_projection(), map.reach, view_kind_map);
         continue;
       }
       const shadows::ShadowCubeView& cube = lights.cubes[i - lights.maps.size()];
@@ -322,6 +354,11 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     }
   });
 
+  // A caster's group word: its group, whether it moves (layered) and whether it is transparent.
+  const auto group_word = [&](uint32_t instance, uint32_t group, bool moving) {
+    return group | (moving ? caster_moving : 0u) |
+           (scene.draw_class(instance) & draw_blended ? caster_blended : 0u);
+  };
   const auto group_of = [&](uint32_t instance) {
     return static_cast<uint32_t>(std::upper_bound(groups.begin(), groups.end(), instance,
                                                   [](uint32_t i, const VkDrawIndexedIndirectCommand& g) {
@@ -340,14 +377,14 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     for (size_t c = begin; c < end; ++c) {
       while (g + 1 < groups.size() && c >= group_first_caster_[g + 1]) ++g;
       const uint32_t i = groups[g].firstInstance + static_cast<uint32_t>(c - group_first_caster_[g]);
-      const uint32_t group = layered_ && scene.moving(i) ? g | caster_moving : g;
+      const uint32_t group = group_word(i, g, layered_ && scene.moving(i));
       casters[c] = {glm::vec4(bounds[i].min, as_float(group)), glm::vec4(bounds[i].max, as_float(i))};
     }
   });
   ecs::run_in_pieces(pool, moving_count_, 1024, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       const uint32_t i = moving_casters_[k];
-      casters[caster_count + k] = {glm::vec4(bounds[i].min, as_float(group_of(i) | caster_moving)),
+      casters[caster_count + k] = {glm::vec4(bounds[i].min, as_float(group_word(i, group_of(i), true))),
                                    glm::vec4(bounds[i].max, as_float(i))};
     }
   });
@@ -642,19 +679,27 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
         vkCmdClearAttachments(rec.cmd(), 1, &far, static_cast<uint32_t>(clears_.size()), clears_.data());
         if (!draws.valid() || !scene.bind_geometry(rec.cmd())) return;
         rec.set_full_viewport();
-        const VkDescriptorSet set = raster_layout_.write(rec.allocate_set(raster_layout_))
-                                        .buffer(instances_binding, scene.instances(slot).handle())
-                                        .buffer(shadow_views_binding, view_buffer)
-                                        .buffer(view_instances_binding, rec.buffer(sorted))
-                                        .update();
+        const VkDescriptorSet set =
+            raster_layout_.write(rec.allocate_set(raster_layout_))
+                .buffer(instances_binding, scene.instances(slot).handle())
+                .buffer(shadow_views_binding, view_buffer)
+                .buffer(view_instances_binding, rec.buffer(sorted))
+                .image(material_textures_binding, textures_.array().view(), textures_.sampler())
+                .update();
         raster_layout_.bind(rec.cmd(), set);
+        // Per view kind, its draws by caster group: the opaque groups', then the cut-out ones'.
         const VkBuffer commands = rec.buffer(draws);
         constexpr VkDeviceSize stride = sizeof(VkDrawIndexedIndirectCommand);
-        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, map_pipeline_.get());
-        vkCmdDrawIndexedIndirect(rec.cmd(), commands, draws_header_bytes, group_count, stride);
-        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, face_pipeline_.get());
-        vkCmdDrawIndexedIndirect(rec.cmd(), commands, draws_header_bytes + group_count * stride, group_count,
-                                 stride);
+        const uint32_t opaque = first_cut_out_group_;
+        const auto draw = [&](VkPipeline pipeline, uint32_t first, uint32_t count) {
+          if (count == 0) return;
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+          vkCmdDrawIndexedIndirect(rec.cmd(), commands, draws_header_bytes + first * stride, count, stride);
+        };
+        draw(map_pipeline_.get(), 0, opaque);
+        draw(map_cut_out_pipeline_.get(), opaque, group_count - opaque);
+        draw(face_pipeline_.get(), group_count, opaque);
+        draw(face_cut_out_pipeline_.get(), group_count + opaque, group_count - opaque);
       });
   return atlas;
 }
@@ -678,8 +723,8 @@ rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::
           p.read(counts, rg::Usage::storage_compute);
           depths = p.write(depths, rg::Usage::storage_compute);
         },
-        [this, &scene, slot, constants, list_pairs, counts, draws, depths,
-         dispatch](const vk::PassRecorder& rec) {
+        [this, &scene, slot, constants, list_pairs, counts, draws, depths, dispatch,
+         cut_out = first_cut_out_group_ < meshes_.size()](const vk::PassRecorder& rec) {
           const VkDescriptorSet set =
               compute_raster_layout_.write(rec.allocate_set(compute_raster_layout_))
                   .buffer(instances_binding, scene.instances(slot).handle())
@@ -691,11 +736,18 @@ rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::
                   .buffer(shadow_depths_binding, rec.buffer(depths))
                   .buffer(mesh_vertices_binding, scene.vertices().handle())
                   .buffer(mesh_indices_binding, scene.indices().handle())
+                  .image(material_textures_binding, textures_.array().view(), textures_.sampler())
                   .update();
-          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, compute_raster_pipeline_.get());
           compute_raster_layout_.bind_compute(rec.cmd(), set);
           compute_raster_layout_.push(rec.cmd(), constants);
+          // Each variant takes its own casters' pairs (shaders/shadow_raster.comp).
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, compute_raster_pipeline_.get());
           vkCmdDispatchIndirect(rec.cmd(), rec.buffer(draws), dispatch);
+          if (cut_out) {
+            vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE,
+                              compute_raster_cut_out_pipeline_.get());
+            vkCmdDispatchIndirect(rec.cmd(), rec.buffer(draws), dispatch);
+          }
         });
   };
   raster("shadow raster", pairs, 0);

@@ -26,8 +26,10 @@
 // caster into every view and keeps no layers (static_layers_kept()).
 //
 // so CPU time grows with views and casters, not with their product, and the number of passes is
-// fixed. The hardware raster needs shaderOutputLayer (gl_Layer from the vertex stage,
-// shaders/shadow_batch.vert); supported() says whether the device has it.
+// fixed. Casters of masked or transparent materials (GpuScene::first_cut_out_group) are drawn with
+// the shaders' cut_out variants (shaders/shadow_cut_out.glsl); a transparent caster holding a
+// view's light is culled from that view. The hardware raster needs shaderOutputLayer (gl_Layer from the
+// vertex stage, shaders/shadow_batch.vert); supported() says whether the device has it.
 //
 // Culled pairs live in a buffer of a fixed capacity. The GPU reports how many pairs it kept
 // (read back when the frame slot comes round again); when they did not fit, capacity grows and
@@ -53,12 +55,15 @@ class VulkanContext;
 
 namespace sg {
 
+class GpuTextures;
+
 class ShadowViewBatch {
  public:
   // `raster` automatic: the hardware on CPU devices; on GPUs, each frame's choice of
   // shadows::raster_for_views. `static_layers`: the atlas has them (may_raster_in_compute).
-  ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight, shadows::ShadowRaster raster,
-                  bool static_layers);
+  // `textures`: the materials' (cut-out casters read their alpha), kept by reference.
+  ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures,
+                  shadows::ShadowRaster raster, bool static_layers);
 
   static bool supported(const vk::VulkanContext& context);
   // Whether frames may rasterize in compute with `raster` on this device, and so keep static
@@ -120,7 +125,8 @@ class ShadowViewBatch {
                              uint32_t first, uint32_t count, rg::BufferHandle& depths,
                              rg::BufferHandle& static_layers) const;
 
-  const vk::VulkanContext& context_;
+  vk::VulkanContext& context_;
+  const GpuTextures& textures_;
   shadows::ShadowRaster setting_;  // hardware, compute, or automatic: chosen per frame
   shadows::ShadowRaster raster_;   // this frame's
   bool has_static_layers_;
@@ -137,6 +143,11 @@ class ShadowViewBatch {
   vk::UniquePipeline map_pipeline_;
   vk::UniquePipeline face_pipeline_;
   vk::UniquePipeline compute_raster_pipeline_;
+  // Cut-out casters' (shaders/shadow_cut_out.glsl), made with the first scene that has them.
+  void make_cut_out_pipelines();
+  vk::UniquePipeline map_cut_out_pipeline_;
+  vk::UniquePipeline face_cut_out_pipeline_;
+  vk::UniquePipeline compute_raster_cut_out_pipeline_;
   vk::UniquePipeline static_save_pipeline_;
   vk::UniquePipeline static_restore_pipeline_;
   uint32_t max_views_per_dispatch_ = 0;
@@ -155,10 +166,11 @@ class ShadowViewBatch {
   std::array<PairCapacity, 2> capacity_;
   uint64_t kept_pairs_ = 0;
 
-  uint32_t view_count_ = 0;    // this frame's, their records in view_buffers_
-  uint32_t full_views_ = 0;    // the first views, drawn with every caster; then moving ones alone
-  uint32_t caster_count_ = 0;  // this frame's records of all casters in caster_buffers_
-  uint32_t moving_count_ = 0;  // layered: the moving casters' records after them
+  uint32_t view_count_ = 0;           // this frame's, their records in view_buffers_
+  uint32_t full_views_ = 0;           // the first views, drawn with every caster; then moving ones alone
+  uint32_t caster_count_ = 0;         // this frame's records of all casters in caster_buffers_
+  uint32_t first_cut_out_group_ = 0;  // this frame's GpuScene::first_cut_out_group
+  uint32_t moving_count_ = 0;         // layered: the moving casters' records after them
   std::vector<uint32_t> group_first_caster_;  // by caster group: its first caster record
   std::vector<uint32_t> moving_casters_;      // layered: the moving casters' instances
   std::vector<glm::uvec4> meshes_;

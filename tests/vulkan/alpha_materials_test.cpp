@@ -1,6 +1,7 @@
 // glTF's alphaMode and doubleSided on lavapipe, under validation: a masked card shows, and
-// casts, the shape of its texture's alpha; a double-sided card shows its back face, lit from
-// its side; on every lighting path.
+// casts, the shape of its texture's alpha, on every lighting path and every way of drawing
+// shadow views; a transparent pane casts a partial shadow, and never shuts in a light inside it;
+// a double-sided card shows its back face, lit from its side.
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,6 +27,17 @@ constexpr uint32_t height = 96;
 
 constexpr LightingPath every_path[] = {LightingPath::deferred, LightingPath::forward, LightingPath::fused};
 
+// The ways shadow views are drawn, each with its own cut-out shaders.
+struct ShadowPath {
+  const char* name;
+  shadows::ShadowViewPath views;
+  shadows::ShadowRaster raster;
+};
+constexpr ShadowPath every_shadow_path[] = {
+    {"batched, hardware raster", shadows::ShadowViewPath::batched, shadows::ShadowRaster::hardware},
+    {"batched, compute raster", shadows::ShadowViewPath::batched, shadows::ShadowRaster::compute},
+    {"per light", shadows::ShadowViewPath::per_light, shadows::ShadowRaster::hardware}};
+
 scene::Material matte(glm::vec4 color) {
   scene::Material m;
   m.base_color = color;
@@ -46,10 +58,13 @@ scene::Texture half_transparent(uint32_t columns) {
 
 class AlphaMaterials : public GpuTest {
  protected:
-  // One frame of `scene` on `lighting`.
-  vk::Rgba8Image render(sandbox::SandboxScene& scene, LightingPath lighting) {
+  // One frame of `scene` on `lighting`, its shadow views drawn by `shadow_path`.
+  vk::Rgba8Image render(sandbox::SandboxScene& scene, LightingPath lighting,
+                        const ShadowPath& shadow_path = every_shadow_path[0]) {
     sandbox::Options options;
     options.lighting = lighting;
+    options.shadow_views = shadow_path.views;
+    options.shadow_raster = shadow_path.raster;
     options.animate = false;
     vk::FrameRing frames(context);
     sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
@@ -69,41 +84,146 @@ class AlphaMaterials : public GpuTest {
         image.at(uint32_t((ndc.x * 0.5f + 0.5f) * width), uint32_t((ndc.y * 0.5f + 0.5f) * height));
     return {vk::srgb_to_linear(pixel[0]), vk::srgb_to_linear(pixel[1]), vk::srgb_to_linear(pixel[2])};
   }
+
+  // The mean linear colour over a horizontal 0.4 m square around `centre`.
+  static glm::vec3 mean_seen(const vk::Rgba8Image& image, const sandbox::SandboxScene& scene,
+                             glm::vec3 centre) {
+    glm::vec3 sum(0.0f);
+    for (int i = -2; i <= 2; ++i) {
+      for (int k = -2; k <= 2; ++k) sum += seen(image, scene, centre + glm::vec3(0.1f * i, 0.0f, 0.1f * k));
+    }
+    return sum / 25.0f;
+  }
 };
 
 // A 4 x 4 m red card 1 m above a green floor, its left half opaque and its right half cut out
-// (alphaMode MASK), under a sun slanting towards +X, seen from straight above: through the hole
-// the floor shows, in the opaque half's shadow next to the hole's left edge and lit a metre on.
+// (alphaMode MASK), seen from straight above: through the hole the floor shows. Lit by a sun
+// slanting towards +X, or by a point light (a cube shadow) up and to the left, the floor lies in
+// the opaque half's shadow next to the hole's left edge and is lit a metre on, where a solid card
+// would shade it too.
 TEST_F(AlphaMaterials, AMaskedCardShowsAndCastsItsTexturesShape) {
-  sandbox::SandboxScene scene;
-  scene.scene.name = "masked card";
-  const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
-  const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
-  scene.scene.textures.textures.push_back(half_transparent(8));
-  scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
-                      matte({0.1f, 0.8f, 0.1f, 1.0f}));
-  scene::Material card = matte(glm::vec4(1.0f));
-  card.base_color_texture = 0;
-  card.alpha_mode = scene::AlphaMode::mask;
-  scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {4.0f, 1.0f, 4.0f}},
-                      card);
-  scene::ShadowSettings hard;
-  hard.algorithm = scene::ShadowAlgorithm::hard;
-  scene::add_light(scene.scene, scene::DirectionalLight{glm::vec3(1.0f), 0.8f},
-                   {glm::vec3(0.0f, 5.0f, 0.0f), scene::look_rotation({0, 5, 0}, {1, 4, 0}), glm::vec3(1.0f)},
-                   hard, "sun");
-  ecs::update_world_transforms(scene.scene.world, 0);
-  scene.pose = {{0.0f, 8.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
-
-  for (const LightingPath path : every_path) {
-    SCOPED_TRACE(std::string(lighting_path_name(path)));
-    const vk::Rgba8Image image = render(scene, path);
+  const auto masked_card = [](bool point_light) {
+    sandbox::SandboxScene scene;
+    scene.scene.name = "masked card";
+    const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
+    const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
+    scene.scene.textures.textures.push_back(half_transparent(8));
+    scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
+                        matte({0.1f, 0.8f, 0.1f, 1.0f}));
+    scene::Material card = matte(glm::vec4(1.0f));
+    card.base_color_texture = 0;
+    card.alpha_mode = scene::AlphaMode::mask;
+    scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {4.0f, 1.0f, 4.0f}},
+                        card);
+    scene::ShadowSettings hard;
+    hard.algorithm = scene::ShadowAlgorithm::hard;
+    hard.resolution = 512;  // the compute raster's largest on a CPU device
+    if (point_light) {
+      // From (-1.2, 2.5, 0) the card's opaque edge at x = 0 shades the floor up to x = 1.9.
+      scene::add_light(scene.scene, scene::PointLight{glm::vec3(1.0f), 4.0f, 20.0f},
+                       {glm::vec3(-1.2f, 2.5f, 0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f)}, hard, "bulb");
+    } else {
+      scene::add_light(
+          scene.scene, scene::DirectionalLight{glm::vec3(1.0f), 0.8f},
+          {glm::vec3(0.0f, 5.0f, 0.0f), scene::look_rotation({0, 5, 0}, {1, 4, 0}), glm::vec3(1.0f)}, hard,
+          "sun");
+    }
+    ecs::update_world_transforms(scene.scene.world, 0);
+    scene.pose = {{0.0f, 8.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
+    return scene;
+  };
+  const auto check = [&](sandbox::SandboxScene& scene, LightingPath lighting, const ShadowPath& shadow_path,
+                         float lit_x) {
+    const vk::Rgba8Image image = render(scene, lighting, shadow_path);
     const glm::vec3 opaque = seen(image, scene, {-1.0f, 1.0f, 0.0f});
     const glm::vec3 shadowed = seen(image, scene, {0.4f, 0.0f, 0.0f});
-    const glm::vec3 lit = seen(image, scene, {1.6f, 0.0f, 0.0f});
+    const glm::vec3 lit = seen(image, scene, {lit_x, 0.0f, 0.0f});
     EXPECT_GT(opaque.r, 4.0f * opaque.g) << "the card's opaque half is red";
     EXPECT_GT(shadowed.g, 4.0f * shadowed.r) << "the green floor shows through the hole";
     EXPECT_GT(lit.g, 4.0f * lit.r) << "the green floor shows through the hole";
+    EXPECT_GT(lit.g, 2.0f * shadowed.g)
+        << "the floor is lit through the hole, in the opaque half's shadow beside";
+  };
+  sandbox::SandboxScene sun = masked_card(false);
+  for (const LightingPath path : every_path) {
+    SCOPED_TRACE(std::string(lighting_path_name(path)));
+    check(sun, path, every_shadow_path[0], 1.6f);
+  }
+  sandbox::SandboxScene bulb = masked_card(true);
+  for (const ShadowPath& shadow_path : every_shadow_path) {
+    SCOPED_TRACE(shadow_path.name);
+    check(sun, LightingPath::deferred, shadow_path, 1.6f);
+    check(bulb, LightingPath::deferred, shadow_path, 2.4f);
+  }
+}
+
+// A blue pane of alpha 0.5 (alphaMode BLEND) and an opaque card like it, 1 m above a grey floor,
+// under a sun slanting towards +X with PCF: the floor in the pane's shadow (seen beside the pane)
+// gets about half of what the card takes away, on every way of drawing shadow views.
+TEST_F(AlphaMaterials, ATransparentPaneCastsAPartialShadow) {
+  sandbox::SandboxScene scene;
+  scene.scene.name = "pane";
+  const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
+  const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
+  scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
+                      matte(glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
+  scene::Material glass = matte({0.2f, 0.2f, 0.9f, 0.5f});
+  glass.alpha_mode = scene::AlphaMode::blend;
+  scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
+                      glass);
+  scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, -4.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
+                      matte(glm::vec4(0.2f, 0.2f, 0.9f, 1.0f)));
+  scene::ShadowSettings pcf;
+  pcf.algorithm = scene::ShadowAlgorithm::pcf;
+  pcf.resolution = 512;  // the compute raster's largest on a CPU device
+  scene::add_light(scene.scene, scene::DirectionalLight{glm::vec3(1.0f), 0.8f},
+                   {glm::vec3(0.0f, 5.0f, 0.0f), scene::look_rotation({0, 5, 0}, {1, 4, 0}), glm::vec3(1.0f)},
+                   pcf, "sun");
+  ecs::update_world_transforms(scene.scene.world, 0);
+  scene.pose = {{0.0f, 9.0f, 0.01f}, {0.0f, 0.0f, -2.0f}};
+  for (const ShadowPath& shadow_path : every_shadow_path) {
+    SCOPED_TRACE(shadow_path.name);
+    const vk::Rgba8Image image = render(scene, LightingPath::deferred, shadow_path);
+    // Each squares' shadows lie 1 m on in +X, at x in [0, 2]; the floor is read around x = 1.5,
+    // beyond the squares' edge at x = 1, averaged over a patch as the shadow is dithered.
+    const float open = mean_seen(image, scene, {3.5f, 0.0f, 0.0f}).g;
+    const float pane = mean_seen(image, scene, {1.5f, 0.0f, 0.0f}).g;
+    const float card = mean_seen(image, scene, {1.5f, 0.0f, -4.0f}).g;
+    ASSERT_GT(open, card + 0.1f) << "the card casts a shadow";
+    EXPECT_NEAR((open - pane) / (open - card), 0.5f, 0.15f) << "the pane takes half the light the card does";
+  }
+}
+
+// A point light inside a transparent box (alpha 0.9) lights the floor around the box as it does
+// without the box: the box casts no shadow of the light it holds.
+TEST_F(AlphaMaterials, ATransparentBoxShutsInNoLight) {
+  const auto floor_lit = [&](bool boxed, const ShadowPath& shadow_path) {
+    sandbox::SandboxScene scene;
+    scene.scene.name = "lantern";
+    const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
+    scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
+                        matte(glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
+    if (boxed) {
+      scene::Material glass = matte({0.9f, 0.9f, 0.9f, 0.9f});
+      glass.alpha_mode = scene::AlphaMode::blend;
+      scene::add_instance(scene.scene, box, {{0.0f, 1.5f, 0.0f}, glm::quat(1, 0, 0, 0), glm::vec3(1.0f)},
+                          glass);
+    }
+    scene::ShadowSettings shadow;
+    shadow.resolution = 512;  // the compute raster's largest on a CPU device
+    scene::add_light(scene.scene, scene::PointLight{glm::vec3(1.0f), 3.0f, 20.0f},
+                     {glm::vec3(0.0f, 1.5f, 0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f)}, shadow,
+                     "lantern");
+    ecs::update_world_transforms(scene.scene.world, 0);
+    scene.pose = {{0.0f, 9.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
+    const vk::Rgba8Image image = render(scene, LightingPath::deferred, shadow_path);
+    return mean_seen(image, scene, {2.5f, 0.0f, 0.0f}).g;
+  };
+  for (const ShadowPath& shadow_path : every_shadow_path) {
+    SCOPED_TRACE(shadow_path.name);
+    const float open = floor_lit(false, shadow_path);
+    EXPECT_GT(open, 0.1f) << "the light reaches the floor";
+    EXPECT_NEAR(floor_lit(true, shadow_path), open, 0.02f) << "the box around the light casts no shadow";
   }
 }
 

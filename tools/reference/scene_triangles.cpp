@@ -5,6 +5,7 @@
 
 #include "ecs/hierarchy.h"
 #include "ecs/transform.h"
+#include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
 
 namespace sg::reference {
@@ -14,7 +15,11 @@ SceneTriangles scene_triangles(const scene::Scene& scene) {
   const scene::MeshLibrary& library = scene.meshes;
   scene.world.query<const ecs::WorldTransform, const scene::MeshInstance>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform& world, const scene::MeshInstance& instance) {
-        const bool caster = scene::casts_shadow(instance, scene.world.try_get<scene::Material>(entity));
+        // Rays meet whole triangles: transparent surfaces are left out (the engine's shadows of
+        // them are stochastic) and masked ones kept whole (no texture lookups).
+        const scene::Material* material = scene.world.try_get<scene::Material>(entity);
+        const bool caster =
+            instance.casts_shadow && (material == nullptr || material->alpha_mode != scene::AlphaMode::blend);
         const scene::MeshRange& mesh = library.meshes.at(instance.mesh);
         for (uint32_t i = 0; i < mesh.index_count; ++i) {
           const uint32_t vertex = mesh.vertex_offset + library.indices[mesh.first_index + i];
