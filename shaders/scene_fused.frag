@@ -1,11 +1,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// variant transparent TRANSPARENT
 // Forward lighting and tone mapping in one pass, for frames of a few lights: every light at
 // every pixel (no light lists), each with its own group's shadow code, the shader holding only
 // the code of the light groups the frame has (GROUPS_PRESENT, bit g for group g, a
 // specialization constant), the picture written straight into the frame. On a CPU driver every
 // full-screen pass costs milliseconds, and this path has two: the depth prepass and this one
 // (docs/PERFORMANCE.md).
+//
+// The transparent variant (systems/transparent_pass.h) gives the surface's alpha for blending,
+// its colour tone-mapped only where frame.counts.w is 1: into the fused path's frame, or as a
+// lit sum after the every-light path.
 #include "light_shading.glsl"
 #include "material.glsl"
 #include "tone_map.glsl"
@@ -49,5 +54,10 @@ void main() {
   color += shade_group(8u, next, p);
   color += shade_group(9u, next, p);
   color += shade_group(10u, next, p);
+#ifdef TRANSPARENT
+  if (frame.counts.w == 1u) color = tone_map(color, uintBitsToFloat(frame.counts.z));
+  out_color = vec4(color, fragment_base_color().a);
+#else
   out_color = vec4(tone_map(color, uintBitsToFloat(frame.counts.z)), 1.0);  // the sRGB frame encodes
+#endif
 }

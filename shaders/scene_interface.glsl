@@ -7,7 +7,8 @@
 layout(push_constant) uniform FrameConstants {
   mat4 view_projection;
   vec4 camera_position;  // xyz; w: the ambient term kA * IA
-  uvec4 counts;          // x: lights; y: light tiles across the screen; z: exposure's bits (fused)
+  uvec4 counts;          // x: lights; y: light tiles across the screen; z: exposure's bits (fused);
+                         // w: 1 where the transparent pass blends into a tone-mapped frame
 } frame;
 
 #endif

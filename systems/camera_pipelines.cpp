@@ -8,7 +8,8 @@ namespace sg {
 
 void CameraPipelines::prepare(vk::VulkanContext& context, const GpuScene& scene) {
   for (uint32_t draw_class = 0; draw_class < draw_class_count; ++draw_class) {
-    if (!pipelines_[draw_class] && scene.has_draw_class(draw_class)) {
+    const bool of_its_kind = ((draw_class & draw_blended) != 0) == transparent_;
+    if (of_its_kind && !pipelines_[draw_class] && scene.has_draw_class(draw_class)) {
       pipelines_[draw_class] = vk::create_graphics_pipeline(context, desc_of_(draw_class));
     }
   }

@@ -17,17 +17,20 @@ namespace sg {
 class CameraPipelines {
  public:
   // `desc_of` gives the pipeline of a draw class (for_draw_class, where the pass needs nothing
-  // else).
-  explicit CameraPipelines(std::function<vk::GraphicsPipelineDesc(uint32_t draw_class)> desc_of)
-      : desc_of_(std::move(desc_of)) {}
+  // else), of the opaque classes or, with `transparent`, of the transparent ones
+  // (TransparentPass).
+  explicit CameraPipelines(std::function<vk::GraphicsPipelineDesc(uint32_t draw_class)> desc_of,
+                           bool transparent = false)
+      : desc_of_(std::move(desc_of)), transparent_(transparent) {}
 
-  // Makes the pipelines of the classes `scene` draws that are not made yet.
+  // Makes the pipelines of the classes (of its kind) `scene` draws that are not made yet.
   void prepare(vk::VulkanContext& context, const GpuScene& scene);
   // By draw class; VK_NULL_HANDLE for a class not prepared.
   std::array<VkPipeline, draw_class_count> get() const;
 
  private:
   std::function<vk::GraphicsPipelineDesc(uint32_t)> desc_of_;
+  bool transparent_;
   std::array<vk::UniquePipeline, draw_class_count> pipelines_;
 };
 

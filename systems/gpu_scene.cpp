@@ -340,11 +340,57 @@ void GpuScene::draw_camera_pass(const vk::PassRecorder& rec,
   layout.push(rec.cmd(), constants);
   for (uint32_t draw_class = 0; draw_class < draw_class_count; ++draw_class) {
     const CommandRange& commands = class_commands_[draw_class];
-    if (commands.count == 0) continue;
+    if (commands.count == 0 || (draw_class & draw_blended)) continue;
     vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines[draw_class]);
     vkCmdDrawIndexedIndirect(rec.cmd(), draws_.buffer(slot).handle(),
                              commands.first * sizeof(VkDrawIndexedIndirectCommand), commands.count,
                              sizeof(VkDrawIndexedIndirectCommand));
+  }
+}
+
+bool GpuScene::has_transparent() const {
+  for (uint32_t draw_class = draw_blended; draw_class < draw_class_count; ++draw_class) {
+    if ((draw_class & draw_blended) && has_draw_class(draw_class)) return true;
+  }
+  return false;
+}
+
+void GpuScene::order_transparent(const glm::vec3& eye) {
+  transparent_order_.clear();
+  for (uint32_t draw_class = 0; draw_class < draw_class_count; ++draw_class) {
+    if (!(draw_class & draw_blended)) continue;
+    const CommandRange& range = class_commands_[draw_class];
+    for (uint32_t c = range.first; c < range.first + range.count; ++c) {
+      for (uint32_t k = 0; k < commands_[c].instanceCount; ++k)
+        transparent_order_.push_back(commands_[c].firstInstance + k);
+    }
+  }
+  transparent_distances_.resize(bounds_.size());
+  for (const uint32_t i : transparent_order_) {
+    const glm::vec3 centre = 0.5f * (bounds_[i].min + bounds_[i].max);
+    transparent_distances_[i] = glm::dot(centre - eye, centre - eye);
+  }
+  std::sort(transparent_order_.begin(), transparent_order_.end(),
+            [&](uint32_t a, uint32_t b) { return transparent_distances_[a] > transparent_distances_[b]; });
+}
+
+void GpuScene::draw_transparent(const vk::PassRecorder& rec,
+                                std::span<const VkPipeline, draw_class_count> pipelines,
+                                const vk::PipelineLayout& layout, VkDescriptorSet set,
+                                const FrameConstants& constants) const {
+  rec.set_full_viewport();
+  if (transparent_order_.empty() || !bind_geometry(rec.cmd())) return;
+  layout.bind(rec.cmd(), set);
+  layout.push(rec.cmd(), constants);
+  uint32_t bound = draw_class_count;  // none yet
+  for (const uint32_t i : transparent_order_) {
+    if (items_[i].draw_class != bound) {
+      bound = items_[i].draw_class;
+      vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines[bound]);
+    }
+    const scene::MeshRange& mesh = meshes_[items_[i].mesh];
+    vkCmdDrawIndexed(rec.cmd(), mesh.index_count, 1, mesh.first_index,
+                     static_cast<int32_t>(mesh.vertex_offset), i);
   }
 }
 

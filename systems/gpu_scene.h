@@ -52,7 +52,7 @@ inline constexpr VkCompareOp camera_depth_retest = VK_COMPARE_OP_GREATER_OR_EQUA
 // Instances are drawn class by class, each class with a pipeline of its own (CameraPipelines).
 inline constexpr uint32_t draw_double_sided = 1;
 inline constexpr uint32_t draw_masked = 2;
-inline constexpr uint32_t draw_blended = 4;  // transparent: drawn as opaque yet
+inline constexpr uint32_t draw_blended = 4;  // transparent
 inline constexpr uint32_t draw_class_count = 8;
 uint32_t draw_class_of(const scene::Material& material);
 
@@ -94,12 +94,20 @@ class GpuScene {
   // the scene has no geometry, and nothing may be drawn.
   bool bind_geometry(VkCommandBuffer cmd) const;
   // A camera pass's recording: viewport over the render area, `set` as set 0 of `layout` and
-  // `constants` pushed, every instance drawn, each draw class with its pipeline of `pipelines`.
+  // `constants` pushed, every opaque instance drawn, each draw class with its pipeline of
+  // `pipelines`.
   void draw_camera_pass(const vk::PassRecorder& rec, std::span<const VkPipeline, draw_class_count> pipelines,
                         const vk::PipelineLayout& layout, VkDescriptorSet set,
                         const FrameConstants& constants, uint32_t slot) const;
-  // Whether the last gather found instances of `draw_class`.
+  // Whether the last gather found instances of `draw_class`, and of any transparent class.
   bool has_draw_class(uint32_t draw_class) const { return class_commands_[draw_class].count > 0; }
+  bool has_transparent() const;
+  // Orders the transparent instances back to front as seen from `eye`, by their bounds' centres.
+  void order_transparent(const glm::vec3& eye);
+  // As draw_camera_pass, the transparent instances in that order, one draw each.
+  void draw_transparent(const vk::PassRecorder& rec, std::span<const VkPipeline, draw_class_count> pipelines,
+                        const vk::PipelineLayout& layout, VkDescriptorSet set,
+                        const FrameConstants& constants) const;
 
   const vk::Buffer& instances(uint32_t slot) const { return instances_.buffer(slot); }
   // The mesh library's vertices (scene::Vertex) and 32-bit indices, also readable as storage
@@ -211,6 +219,8 @@ class GpuScene {
   std::array<CommandRange, draw_class_count> class_commands_{};
   std::vector<VkDrawIndexedIndirectCommand> caster_groups_;
   uint32_t first_cut_out_group_ = 0;
+  std::vector<uint32_t> transparent_order_;  // order_transparent's
+  std::vector<float> transparent_distances_;
 };
 
 }  // namespace sg

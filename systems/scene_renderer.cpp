@@ -1,6 +1,7 @@
 #include "systems/scene_renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstdio>
 #include <span>
@@ -49,7 +50,9 @@ double lap(std::chrono::steady_clock::time_point& mark) {
 
 SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene, uint32_t frames_in_flight,
                              rg::Format frame_format, const RendererSettings& settings)
-    : settings_(settings),
+    : context_(context),
+      frame_format_(frame_format),
+      settings_(settings),
       lighting_(settings.lighting == LightingPath::automatic ? fastest_lighting : settings.lighting),
       lighting_per_frame_(settings.lighting == LightingPath::automatic &&
                           context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU),
@@ -168,6 +171,13 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
       deferred_->lighting.prepare(lights_, settings_.view);
       break;
   }
+  if (gpu_scene_.has_transparent()) {
+    if (!transparent_) transparent_.emplace(context_, textures_);
+    gpu_scene_.order_transparent(pose.eye);
+    // Lit as the opaque surfaces were: from tile lists, or by every light.
+    const bool tiled = lighting_ == LightingPath::deferred || lighting_ == LightingPath::forward;
+    transparent_->prepare(lit_format(), tiled, lights_.group_begin, settings_.view, gpu_scene_);
+  }
   cpu_steps_.views = lap(mark);
 }
 
@@ -230,8 +240,15 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
   if (lighting_ == LightingPath::fused) {  // lights and tone-maps in one pass, straight into the frame
     const rg::ImageHandle prepass =
         fused_->prepass.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
-    const FusedTargets fused = fused_->forward.add_to(graph, prepass, frame, atlas, records, gpu_scene_, slot,
-                                                      constants, settings_.exposure);
+    FusedTargets fused = fused_->forward.add_to(graph, prepass, frame, atlas, records, gpu_scene_, slot,
+                                                constants, settings_.exposure);
+    if (gpu_scene_.has_transparent()) {
+      FrameConstants tone_mapped = constants;  // blended into the tone-mapped frame
+      tone_mapped.counts.z = std::bit_cast<uint32_t>(settings_.exposure);
+      tone_mapped.counts.w = 1;
+      fused.frame = transparent_->add_to(graph, fused.frame, fused.depth, atlas, records, light_count,
+                                         gpu_scene_, slot, tone_mapped);
+    }
     return {fused.frame, fused.depth, atlas, std::nullopt};
   }
   rg::ImageHandle lit_sum;
@@ -261,7 +278,22 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
     depth = gbuffer.depth;
     light_tiles = tiles;
   }
+  if (gpu_scene_.has_transparent()) {
+    lit_sum =
+        transparent_->add_to(graph, lit_sum, depth, atlas, records, light_count, gpu_scene_, slot, constants);
+  }
   return {tone_map_.add_to(graph, lit_sum, frame, settings_.exposure), depth, atlas, light_tiles};
+}
+
+rg::Format SceneRenderer::lit_format() const {
+  switch (lighting_) {
+    case LightingPath::fused: return frame_format_;
+    case LightingPath::every_light:
+    case LightingPath::forward: return ForwardPass::lit_sum_format;
+    case LightingPath::automatic:  // resolved
+    case LightingPath::deferred: break;
+  }
+  return TiledLightingPass::lit_sum_format;
 }
 
 uint64_t SceneRenderer::shadow_caster_draws() const {

@@ -39,6 +39,7 @@
 #include "systems/tiled_forward_pass.h"
 #include "systems/tiled_lighting_pass.h"
 #include "systems/tone_map_pass.h"
+#include "systems/transparent_pass.h"
 
 namespace sg::vk {
 class VulkanContext;
@@ -148,6 +149,8 @@ class SceneRenderer {
   const CpuSteps& cpu_steps() const { return cpu_steps_; }
 
  private:
+  vk::VulkanContext& context_;
+  rg::Format frame_format_;
   RendererSettings settings_;
   LightingPath lighting_;
   bool lighting_per_frame_;  // automatic on a CPU device: cpu_lighting_for each frame
@@ -183,6 +186,9 @@ class SceneRenderer {
   std::optional<TiledForward> tiled_forward_;
   std::optional<Deferred> deferred_;
   std::optional<Fused> fused_;
+  std::optional<TransparentPass> transparent_;  // made with the first transparent surface
+  // The format of the image the path lights into: its lit sum, or the frame (fused).
+  rg::Format lit_format() const;
   ToneMapPass tone_map_;
   vk::FrameBuffers light_records_;
   std::size_t max_light_records_;  // what the device's texel buffers hold (maxTexelBufferElements)

@@ -4,6 +4,7 @@
 // a double-sided card shows its back face, lit from its side.
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -158,9 +159,11 @@ TEST_F(AlphaMaterials, AMaskedCardShowsAndCastsItsTexturesShape) {
 }
 
 // A blue pane of alpha 0.5 (alphaMode BLEND) and an opaque card like it, 1 m above a grey floor,
-// under a sun slanting towards +X with PCF: the floor in the pane's shadow (seen beside the pane)
-// gets about half of what the card takes away, on every way of drawing shadow views.
-TEST_F(AlphaMaterials, ATransparentPaneCastsAPartialShadow) {
+// under a sun slanting towards +X with PCF: seen through the pane, the floor is half the floor's
+// colour and half the card's, on every lighting path; the floor in the pane's shadow (seen
+// beside the pane) gets about half of what the card takes away, on every way of drawing shadow
+// views.
+TEST_F(AlphaMaterials, ATransparentPaneTintsWhatIsBehindAndCastsAPartialShadow) {
   sandbox::SandboxScene scene;
   scene.scene.name = "pane";
   const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
@@ -181,6 +184,15 @@ TEST_F(AlphaMaterials, ATransparentPaneCastsAPartialShadow) {
                    pcf, "sun");
   ecs::update_world_transforms(scene.scene.world, 0);
   scene.pose = {{0.0f, 9.0f, 0.01f}, {0.0f, 0.0f, -2.0f}};
+  for (const LightingPath path : every_path) {
+    SCOPED_TRACE(std::string(lighting_path_name(path)));
+    const vk::Rgba8Image image = render(scene, path);
+    const glm::vec3 open = mean_seen(image, scene, {3.5f, 0.0f, 0.0f});
+    const glm::vec3 card = mean_seen(image, scene, {-0.5f, 1.0f, -4.0f});
+    const glm::vec3 through = mean_seen(image, scene, {-0.5f, 1.0f, 0.0f});
+    const glm::vec3 expected = 0.5f * card + 0.5f * open;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(through[c], expected[c], 0.03f) << "channel " << c;
+  }
   for (const ShadowPath& shadow_path : every_shadow_path) {
     SCOPED_TRACE(shadow_path.name);
     const vk::Rgba8Image image = render(scene, LightingPath::deferred, shadow_path);
@@ -191,6 +203,48 @@ TEST_F(AlphaMaterials, ATransparentPaneCastsAPartialShadow) {
     const float card = mean_seen(image, scene, {1.5f, 0.0f, -4.0f}).g;
     ASSERT_GT(open, card + 0.1f) << "the card casts a shadow";
     EXPECT_NEAR((open - pane) / (open - card), 0.5f, 0.15f) << "the pane takes half the light the card does";
+  }
+}
+
+// A red pane 2 m up over a blue one 1 m up, both of alpha 0.5, over a grey floor, seen from above:
+// blended back to front, the floor shows through both as half the red, a quarter of the blue and
+// a quarter of the floor (blue over red would be the other way round), on every lighting path.
+TEST_F(AlphaMaterials, OverlappingPanesBlendBackToFront) {
+  sandbox::SandboxScene scene;
+  scene.scene.name = "panes";
+  const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
+  const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
+  scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
+                      matte(glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
+  const glm::vec4 red{0.9f, 0.1f, 0.1f, 0.5f};
+  const glm::vec4 blue{0.1f, 0.1f, 0.9f, 0.5f};
+  for (const auto& [color, height] : {std::pair{red, 2.0f}, std::pair{blue, 1.0f}}) {
+    scene::Material glass = matte(color);
+    glass.alpha_mode = scene::AlphaMode::blend;
+    scene::add_instance(scene.scene, quad, {{0.0f, height, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
+                        glass);
+    // The same colour opaque, as a reference, 4 m off.
+    scene::add_instance(scene.scene, quad, {{4.0f, height, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
+                        matte(glm::vec4(glm::vec3(color), 1.0f)));
+  }
+  scene::ShadowSettings no_shadow;
+  no_shadow.casts_shadow = false;
+  scene::add_light(
+      scene.scene, scene::DirectionalLight{glm::vec3(1.0f), 0.8f},
+      {glm::vec3(0.0f, 5.0f, 0.0f), scene::look_rotation({0, 5, 0}, {0.0f, 4.0f, 0.01f}), glm::vec3(1.0f)},
+      no_shadow, "sun");
+  ecs::update_world_transforms(scene.scene.world, 0);
+  scene.pose = {{2.0f, 9.0f, 0.01f}, {2.0f, 0.0f, 0.0f}};
+  for (const LightingPath path : every_path) {
+    SCOPED_TRACE(std::string(lighting_path_name(path)));
+    const vk::Rgba8Image image = render(scene, path);
+    const glm::vec3 floor = mean_seen(image, scene, {-2.0f, 0.0f, 3.0f});
+    const glm::vec3 opaque_red = mean_seen(image, scene, {4.0f, 2.0f, 0.0f});  // the red card over the blue
+    const glm::vec3 through = mean_seen(image, scene, {0.0f, 2.0f, 0.0f});
+    // The blue card's lit colour, as the red's with the channels swapped (same light, same height).
+    const glm::vec3 opaque_blue(opaque_red.b, opaque_red.g, opaque_red.r);
+    const glm::vec3 expected = 0.5f * opaque_red + 0.25f * opaque_blue + 0.25f * floor;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(through[c], expected[c], 0.03f) << "channel " << c;
   }
 }
 

@@ -1,0 +1,159 @@
+#include "systems/transparent_pass.h"
+
+#include <optional>
+#include <span>
+
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/pipeline.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "rendergraph/vulkan/plan_translation.h"
+#include "shaders/depth_prepass.vert.spv.h"
+#include "shaders/scene_fused_transparent.frag.spv.h"
+#include "shaders/scene_tiled_transparent.frag.spv.h"
+#include "systems/gpu_scene.h"
+#include "systems/gpu_textures.h"
+#include "systems/shader_bindings.h"
+
+namespace sg {
+namespace {
+
+using namespace bindings;
+constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+
+// Groups take the low light_group_count bits, the view the next byte, tiled the next, the
+// format the rest.
+uint64_t pipeline_key(rg::Format format, bool tiled, uint32_t groups_present, LightingView view) {
+  return groups_present | static_cast<uint64_t>(view) << 16 | static_cast<uint64_t>(tiled) << 24 |
+         static_cast<uint64_t>(format) << 32;
+}
+
+}  // namespace
+
+TransparentPass::TransparentPass(vk::VulkanContext& context, const GpuTextures& textures)
+    : context_(context),
+      textures_(textures),
+      light_resources_(context),
+      light_tiles_(context),
+      depth_layout_(context.device(),
+                    {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}},
+                    vk::push_constants<FrameConstants>(VK_SHADER_STAGE_VERTEX_BIT)),
+      depth_pipelines_(
+          [layout = depth_layout_.get()](uint32_t draw_class) {
+            vk::GraphicsPipelineDesc desc;
+            desc.vertex_spirv = depth_prepass_vert;
+            scene_vertex_input(desc, VertexInput::position);
+            desc.depth_format = vk::to_vk(camera_depth_format);
+            desc.depth_compare = camera_depth_test;
+            desc.cull_mode = draw_class & draw_double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+            desc.layout = layout;
+            desc.name = "transparent depth";
+            return desc;
+          },
+          true),
+      tiled_layout_(context.device(),
+                    lit_camera_bindings(
+                        {{tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment, nullptr},
+                         {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment, nullptr}}),
+                    vk::push_constants<FrameConstants>(both_stages)),
+      every_light_layout_(context.device(), lit_camera_bindings(),
+                          vk::push_constants<FrameConstants>(both_stages)) {}
+
+void TransparentPass::prepare(rg::Format format, bool tiled,
+                              const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
+                              LightingView view, const GpuScene& scene) {
+  tiled_ = tiled;
+  if (tiled) depth_pipelines_.prepare(context_, scene);
+  const uint32_t groups = shadows::groups_present(group_begin);
+  key_ = pipeline_key(format, tiled, groups, view);
+  const VkPipelineLayout layout = (tiled ? tiled_layout_ : every_light_layout_).get();
+  const std::span<const uint32_t> fragment_shader =
+      tiled ? std::span<const uint32_t>(scene_tiled_transparent_frag) : scene_fused_transparent_frag;
+  pipelines_
+      .try_emplace(
+          key_,
+          [layout, fragment_shader, &textures = textures_, format, groups, view](uint32_t draw_class) {
+            vk::GraphicsPipelineDesc desc =
+                camera_pipeline_desc(fragment_shader, {vk::to_vk(format)}, layout, "transparent");
+            desc.fragment_specialization =
+                material_pass_constants(groups, static_cast<uint32_t>(view), textures);
+            desc.depth_write = false;  // sorted, not depth-tested among themselves
+            desc.blend = vk::Blend::alpha;
+            return for_draw_class(std::move(desc), draw_class);
+          },
+          true)
+      .first->second.prepare(context_, scene);
+}
+
+LightTiles TransparentPass::add_light_tiles(rg::RenderGraph& graph, rg::ImageHandle depth,
+                                            const vk::Buffer& lights, uint32_t light_count,
+                                            const GpuScene& scene, uint32_t slot,
+                                            const FrameConstants& constants) const {
+  const rg::ImageDesc& screen = graph.resources()[depth.index].image;
+  // Execute gets the copy from setup: it does not exist before setup runs.
+  rg::ImageHandle nearest;
+  graph.add_pass(
+      "transparent depth copy",
+      [&](rg::PassBuilder& b) {
+        b.read(depth, rg::Usage::transfer);
+        nearest =
+            b.write(b.create_image("transparent depth", {screen.width, screen.height, camera_depth_format}),
+                    rg::Usage::transfer);
+        return nearest;
+      },
+      [depth, extent = VkExtent3D{screen.width, screen.height, 1}](rg::ImageHandle copied,
+                                                                   const vk::PassRecorder& rec) {
+        VkImageCopy copy{};
+        copy.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+        copy.dstSubresource = copy.srcSubresource;
+        copy.extent = extent;
+        vkCmdCopyImage(rec.cmd(), rec.image(depth), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, rec.image(copied),
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+      });
+  graph.add_pass(
+      "transparent depth",
+      [&](rg::PassBuilder& b) { nearest = b.write(nearest, rg::Usage::depth_attachment); },
+      [this, &scene, slot, constants, pipelines = depth_pipelines_.get()](const vk::PassRecorder& rec) {
+        const VkDescriptorSet set = depth_layout_.write(rec.allocate_set(depth_layout_))
+                                        .buffer(instances_binding, scene.instances(slot).handle())
+                                        .update();
+        scene.draw_transparent(rec, pipelines, depth_layout_, set, constants);
+      });
+  return light_tiles_.add_to(graph, nearest, lights, light_count, constants.view_projection);
+}
+
+rg::ImageHandle TransparentPass::add_to(rg::RenderGraph& graph, rg::ImageHandle target, rg::ImageHandle depth,
+                                        rg::ImageHandle atlas, const vk::Buffer& lights, uint32_t light_count,
+                                        const GpuScene& scene, uint32_t slot,
+                                        const FrameConstants& constants) const {
+  std::optional<LightTiles> tiles;
+  if (tiled_) tiles = add_light_tiles(graph, depth, lights, light_count, scene, slot, constants);
+  graph.add_pass(
+      "transparent",
+      [&](rg::PassBuilder& b) {
+        b.read(atlas, rg::Usage::sampled_fragment);
+        if (tiles) {
+          b.read(tiles->lights, rg::Usage::storage_fragment);
+          b.read(tiles->ranges, rg::Usage::storage_fragment);
+        }
+        b.read(depth, rg::Usage::depth_attachment);  // tested, not written
+        target = b.write(target, rg::Usage::colour_attachment);
+      },
+      [this, &scene, &lights, slot, constants, tiles, atlas,
+       pipelines = pipelines_.at(key_).get()](const vk::PassRecorder& rec) {
+        const vk::PipelineLayout& layout = tiles ? tiled_layout_ : every_light_layout_;
+        vk::DescriptorWriter writer = layout.write(rec.allocate_set(layout));
+        writer.buffer(instances_binding, scene.instances(slot).handle())
+            .image(material_textures_binding, textures_.array().view(), textures_.sampler());
+        if (tiles) {
+          writer.buffer(tile_lights_binding, rec.buffer(tiles->lights))
+              .buffer(tile_ranges_binding, rec.buffer(tiles->ranges));
+        }
+        const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+        scene.draw_transparent(rec, pipelines, layout, set, constants);
+      });
+  return target;
+}
+
+}  // namespace sg
