@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// variant transparent TRANSPARENT_BOUNDS
 // Light culling on GPUs (light_tiles_interface.glsl says what it writes): one workgroup per
 // screen tile, its threads reading the tile's depths and testing the lights side by side.
 #include "light_tiles_interface.glsl"
@@ -37,13 +38,7 @@ void main() {
   for (uint k = 0u; k < BLOCK * BLOCK; ++k) {
     ivec2 pixel =
         ivec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy * BLOCK + uvec2(k % BLOCK, k / BLOCK));
-    if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) {
-      float depth = texelFetch(scene_depth, pixel, 0).r;
-      if (!is_background_depth(depth)) {  // background does not bound the tile
-        nearest = max(nearest, depth);
-        farthest = min(farthest, depth);
-      }
-    }
+    if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) bound_by_pixel(pixel, nearest, farthest);
   }
   thread_nearest[local] = nearest;
   thread_farthest[local] = farthest;

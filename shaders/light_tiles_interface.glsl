@@ -5,6 +5,8 @@
 // finds each group's range in that list. Every tile with lights of a group is appended to that
 // group's tile list, whose length is the group's indirect dispatch (tiled_lighting.comp) and the
 // instance count of its indirect draw (tiled_lighting.vert). Both shaders write the same lists.
+// Their transparent variants (systems/transparent_pass.h) bound each tile by the transparent
+// surfaces in front of the opaque ones too.
 #ifndef SG_LIGHT_TILES_INTERFACE_GLSL
 #define SG_LIGHT_TILES_INTERFACE_GLSL
 
@@ -16,6 +18,11 @@
 
 layout(std430, set = 0, binding = lights_binding) readonly buffer Lights { Light lights[]; };
 layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
+#ifdef TRANSPARENT_BOUNDS
+// Per pixel, the transparent surfaces in front of the opaque one: x the nearest's depth, y minus
+// the farthest's (both kept by a max blend); x is 0 where there are none.
+layout(set = 0, binding = transparent_depths_binding) uniform sampler2D transparent_depths;
+#endif
 layout(std430, set = 0, binding = tile_lights_binding) writeonly buffer TileLights { uint tile_lights[]; };
 // Per tile and group: x the first entry in tile_lights, y how many.
 layout(std430, set = 0, binding = tile_ranges_binding) writeonly buffer TileRanges { uvec2 tile_ranges[]; };
@@ -37,6 +44,23 @@ uint group_of(uint light) {
   uint kind = l.info.w == NO_SHADOW_MAP ? SHADOW_KIND_NONE
                                         : (l.info.x == LIGHT_POINT ? SHADOW_KIND_CUBE : SHADOW_KIND_MAP);
   return light_group(kind, l.info.z);
+}
+
+// Widens a tile's depth bounds, [farthest, nearest] in reversed depths (camera_depth.glsl: the
+// nearest surface has the greatest), by the surfaces at `pixel`; background bounds nothing.
+void bound_by_pixel(ivec2 pixel, inout float nearest, inout float farthest) {
+  float depth = texelFetch(scene_depth, pixel, 0).r;
+  if (!is_background_depth(depth)) {
+    nearest = max(nearest, depth);
+    farthest = min(farthest, depth);
+  }
+#ifdef TRANSPARENT_BOUNDS
+  vec2 bounds = texelFetch(transparent_depths, pixel, 0).rg;
+  if (bounds.x > 0.0) {
+    nearest = max(nearest, bounds.x);
+    farthest = min(farthest, -bounds.y);
+  }
+#endif
 }
 
 // The sphere around tile `tile_xy`'s visible surfaces, between depths `nearest` and `farthest`.

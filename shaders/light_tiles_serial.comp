@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// variant transparent TRANSPARENT_BOUNDS
 // Light culling on CPU drivers (light_tiles_interface.glsl says what it writes): one invocation
 // per tile, eight tiles a workgroup, no shared memory and no barriers. A CPU driver runs a
 // workgroup's invocations as the lanes of SIMD batches and switches between batches at every
@@ -19,13 +20,7 @@ void main() {
   float nearest = CAMERA_FAR_DEPTH;
   float farthest = 1.0;
   for (int y = origin.y; y < end.y; ++y) {
-    for (int x = origin.x; x < end.x; ++x) {
-      float depth = texelFetch(scene_depth, ivec2(x, y), 0).r;
-      if (!is_background_depth(depth)) {  // background does not bound the tile
-        nearest = max(nearest, depth);
-        farthest = min(farthest, depth);
-      }
-    }
+    for (int x = origin.x; x < end.x; ++x) bound_by_pixel(ivec2(x, y), nearest, farthest);
   }
 
   uint group_first[LIGHT_GROUP_COUNT];

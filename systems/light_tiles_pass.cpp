@@ -1,6 +1,9 @@
 #include "systems/light_tiles_pass.h"
 
 #include <array>
+#include <span>
+#include <stdexcept>
+#include <vector>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/pipeline.h"
@@ -8,6 +11,8 @@
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/light_tiles.comp.spv.h"
 #include "shaders/light_tiles_serial.comp.spv.h"
+#include "shaders/light_tiles_serial_transparent.comp.spv.h"
+#include "shaders/light_tiles_transparent.comp.spv.h"
 #include "systems/shader_bindings.h"
 #include "systems/shadows/light_groups.h"
 
@@ -46,11 +51,29 @@ LightCullingShape resolve(LightCullingShape shape, const vk::VulkanContext& cont
 }
 
 vk::UniquePipeline culling_pipeline(vk::VulkanContext& context, LightCullingShape shape,
-                                    VkPipelineLayout layout) {
-  if (shape == LightCullingShape::thread_per_tile) {
-    return vk::create_compute_pipeline(context, {light_tiles_serial_comp, {}, layout, "light tiles"});
+                                    bool transparent_bounds, VkPipelineLayout layout) {
+  using Spirv = std::span<const uint32_t>;
+  const bool serial = shape == LightCullingShape::thread_per_tile;
+  const Spirv spirv =
+      transparent_bounds
+          ? (serial ? Spirv(light_tiles_serial_transparent_comp) : Spirv(light_tiles_transparent_comp))
+          : (serial ? Spirv(light_tiles_serial_comp) : Spirv(light_tiles_comp));
+  return vk::create_compute_pipeline(context, {spirv, {}, layout, "light tiles"});
+}
+
+std::vector<VkDescriptorSetLayoutBinding> culling_bindings(bool transparent_bounds) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings{
+      {lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
+      {scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute, nullptr},
+      {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
+      {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
+      {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
+      {group_commands_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr}};
+  if (transparent_bounds) {
+    bindings.push_back(
+        {transparent_depths_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute, nullptr});
   }
-  return vk::create_compute_pipeline(context, {light_tiles_comp, {}, layout, "light tiles"});
+  return bindings;
 }
 
 }  // namespace
@@ -75,22 +98,22 @@ uint64_t LightTilesPass::draw_offset(uint32_t group) {
   return (light_group_count + group) * sizeof(glm::uvec4);
 }
 
-LightTilesPass::LightTilesPass(vk::VulkanContext& context, LightCullingShape shape)
+LightTilesPass::LightTilesPass(vk::VulkanContext& context, LightCullingShape shape, bool transparent_bounds)
     : shape_(resolve(shape, context)),
+      transparent_bounds_(transparent_bounds),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
-      layout_(context.device(),
-              {{lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-               {scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute},
-               {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-               {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-               {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute},
-               {group_commands_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute}},
+      layout_(context.device(), culling_bindings(transparent_bounds),
               vk::push_constants<CullConstants>(compute)),
-      pipeline_(culling_pipeline(context, shape_, layout_.get())) {}
+      pipeline_(culling_pipeline(context, shape_, transparent_bounds, layout_.get())) {}
 
 LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
                                   uint32_t light_count, const glm::mat4& view_projection,
-                                  const LightTiles* outputs) const {
+                                  const LightTiles* outputs, rg::ImageHandle transparent_depths) const {
+  if (transparent_depths.valid() != transparent_bounds_) {
+    throw std::logic_error(
+        "LightTilesPass::add_to: transparent depths given to a pass made without them, or "
+        "missing on one made with them");
+  }
   const rg::ImageDesc& screen = graph.resources()[depth.index].image;
   const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
   const rg::BufferHandle reset_commands = [&] {
@@ -114,6 +137,7 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
       "light tiles",
       [&](rg::PassBuilder& b) {
         b.read(depth, rg::Usage::sampled_compute);
+        if (transparent_depths.valid()) b.read(transparent_depths, rg::Usage::sampled_compute);
         const auto output = [&](const rg::BufferHandle* given, const char* name, uint64_t bytes) {
           return b.write(given ? *given : b.create_buffer(name, {bytes}), rg::Usage::storage_compute);
         };
@@ -123,16 +147,19 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
         out.commands = b.write(reset_commands, rg::Usage::storage_compute);
         return out;
       },
-      [this, depth, grid, &lights, light_count, screen, inverse = glm::inverse(view_projection)](
-          const LightTiles& written, const vk::PassRecorder& rec) {
-        const VkDescriptorSet set = layout_.write(rec.allocate_set(layout_))
-                                        .buffer(lights_binding, lights.handle())
-                                        .image(scene_depth_binding, rec.view(depth), nearest_.get())
-                                        .buffer(tile_lights_binding, rec.buffer(written.lights))
-                                        .buffer(tile_ranges_binding, rec.buffer(written.ranges))
-                                        .buffer(group_tiles_binding, rec.buffer(written.tiles))
-                                        .buffer(group_commands_binding, rec.buffer(written.commands))
-                                        .update();
+      [this, depth, transparent_depths, grid, &lights, light_count, screen,
+       inverse = glm::inverse(view_projection)](const LightTiles& written, const vk::PassRecorder& rec) {
+        vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
+        writer.buffer(lights_binding, lights.handle())
+            .image(scene_depth_binding, rec.view(depth), nearest_.get())
+            .buffer(tile_lights_binding, rec.buffer(written.lights))
+            .buffer(tile_ranges_binding, rec.buffer(written.ranges))
+            .buffer(group_tiles_binding, rec.buffer(written.tiles))
+            .buffer(group_commands_binding, rec.buffer(written.commands));
+        if (transparent_depths.valid()) {
+          writer.image(transparent_depths_binding, rec.view(transparent_depths), nearest_.get());
+        }
+        const VkDescriptorSet set = writer.update();
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
         layout_.bind_compute(rec.cmd(), set);
         layout_.push(rec.cmd(), CullConstants{inverse,

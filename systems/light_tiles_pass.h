@@ -47,7 +47,10 @@ enum class LightCullingShape { automatic, workgroup_per_tile, thread_per_tile };
 
 class LightTilesPass {
  public:
-  explicit LightTilesPass(vk::VulkanContext& context, LightCullingShape shape = LightCullingShape::automatic);
+  // With `transparent_bounds`, tiles are bounded by transparent surfaces' depths as well
+  // (add_to's `transparent_depths`, TransparentPass).
+  explicit LightTilesPass(vk::VulkanContext& context, LightCullingShape shape = LightCullingShape::automatic,
+                          bool transparent_bounds = false);
   LightCullingShape shape() const { return shape_; }
 
   // Bytes of each output for `grid`, for callers that provide their own buffers.
@@ -60,15 +63,18 @@ class LightTilesPass {
   static uint64_t draw_offset(uint32_t group);
 
   // Culls the first `light_count` records of `lights` (sorted by group) against the tiles of
-  // `depth` (the scene's D32 depth, rendered with `view_projection`). Writes into `outputs`
-  // when given (imported buffers of the sizes above), else into new transients; returns the
-  // outputs' new versions. `lights` must live until the frame is recorded.
+  // `depth` (the scene's D32 depth, rendered with `view_projection`), and on a pass made with
+  // transparent bounds of `transparent_depths` too (rg32_sfloat, as
+  // shaders/light_tiles_interface.glsl reads it). Writes into `outputs` when given (imported
+  // buffers of the sizes above), else into new transients; returns the outputs' new versions.
+  // `lights` must live until the frame is recorded.
   LightTiles add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
                     uint32_t light_count, const glm::mat4& view_projection,
-                    const LightTiles* outputs = nullptr) const;
+                    const LightTiles* outputs = nullptr, rg::ImageHandle transparent_depths = {}) const;
 
  private:
   LightCullingShape shape_;
+  bool transparent_bounds_;
   vk::UniqueSampler nearest_;
   vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;

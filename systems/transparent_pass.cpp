@@ -11,6 +11,7 @@
 #include "shaders/depth_prepass.vert.spv.h"
 #include "shaders/scene_fused_transparent.frag.spv.h"
 #include "shaders/scene_tiled_transparent.frag.spv.h"
+#include "shaders/transparent_depth.frag.spv.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
 #include "systems/shader_bindings.h"
@@ -21,6 +22,10 @@ namespace {
 using namespace bindings;
 constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+
+// shaders/transparent_depth.frag's target and what it is cleared to: no transparent surface.
+constexpr rg::Format depth_bounds_format = rg::Format::rg32_sfloat;
+constexpr rg::ClearValue no_depth_bounds = rg::ClearValue::colour_of(0.0f, -1.0f, 0.0f, 0.0f);
 
 // Groups take the low light_group_count bits, the view the next byte, tiled the next, the
 // format the rest.
@@ -35,7 +40,7 @@ TransparentPass::TransparentPass(vk::VulkanContext& context, const GpuTextures& 
     : context_(context),
       textures_(textures),
       light_resources_(context),
-      light_tiles_(context),
+      light_tiles_(context, LightCullingShape::automatic, true),
       depth_layout_(context.device(),
                     {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}},
                     vk::push_constants<FrameConstants>(VK_SHADER_STAGE_VERTEX_BIT)),
@@ -43,12 +48,16 @@ TransparentPass::TransparentPass(vk::VulkanContext& context, const GpuTextures& 
           [layout = depth_layout_.get()](uint32_t draw_class) {
             vk::GraphicsPipelineDesc desc;
             desc.vertex_spirv = depth_prepass_vert;
+            desc.fragment_spirv = transparent_depth_frag;
             scene_vertex_input(desc, VertexInput::position);
+            desc.color_formats = {vk::to_vk(depth_bounds_format)};
+            desc.blend = vk::Blend::max;
             desc.depth_format = vk::to_vk(camera_depth_format);
             desc.depth_compare = camera_depth_test;
+            desc.depth_write = false;
             desc.cull_mode = draw_class & draw_double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
             desc.layout = layout;
-            desc.name = "transparent depth";
+            desc.name = "transparent depths";
             return desc;
           },
           true),
@@ -91,36 +100,22 @@ LightTiles TransparentPass::add_light_tiles(rg::RenderGraph& graph, rg::ImageHan
                                             const GpuScene& scene, uint32_t slot,
                                             const FrameConstants& constants) const {
   const rg::ImageDesc& screen = graph.resources()[depth.index].image;
-  // Execute gets the copy from setup: it does not exist before setup runs.
-  rg::ImageHandle nearest;
+  rg::ImageHandle bounds;
   graph.add_pass(
-      "transparent depth copy",
+      "transparent depths",
       [&](rg::PassBuilder& b) {
-        b.read(depth, rg::Usage::transfer);
-        nearest =
-            b.write(b.create_image("transparent depth", {screen.width, screen.height, camera_depth_format}),
-                    rg::Usage::transfer);
-        return nearest;
+        b.read(depth, rg::Usage::depth_attachment);  // tested, not written
+        bounds =
+            b.write(b.create_image("transparent depths", {screen.width, screen.height, depth_bounds_format}),
+                    rg::Usage::colour_attachment, no_depth_bounds);
       },
-      [depth, extent = VkExtent3D{screen.width, screen.height, 1}](rg::ImageHandle copied,
-                                                                   const vk::PassRecorder& rec) {
-        VkImageCopy copy{};
-        copy.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-        copy.dstSubresource = copy.srcSubresource;
-        copy.extent = extent;
-        vkCmdCopyImage(rec.cmd(), rec.image(depth), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, rec.image(copied),
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-      });
-  graph.add_pass(
-      "transparent depth",
-      [&](rg::PassBuilder& b) { nearest = b.write(nearest, rg::Usage::depth_attachment); },
       [this, &scene, slot, constants, pipelines = depth_pipelines_.get()](const vk::PassRecorder& rec) {
         const VkDescriptorSet set = depth_layout_.write(rec.allocate_set(depth_layout_))
                                         .buffer(instances_binding, scene.instances(slot).handle())
                                         .update();
         scene.draw_transparent(rec, pipelines, depth_layout_, set, constants);
       });
-  return light_tiles_.add_to(graph, nearest, lights, light_count, constants.view_projection);
+  return light_tiles_.add_to(graph, depth, lights, light_count, constants.view_projection, nullptr, bounds);
 }
 
 rg::ImageHandle TransparentPass::add_to(rg::RenderGraph& graph, rg::ImageHandle target, rg::ImageHandle depth,

@@ -3,10 +3,11 @@
 // opaque lighting and before tone mapping, on every lighting path. Where the opaque surfaces
 // were lit from light lists per screen tile (deferred, tiled forward), so are these:
 //
-//   transparent depth copy   (transfer) the opaque depth into a copy
-//   transparent depth        (raster)   the transparent surfaces' depths over the copy
-//   transparent light tiles  (compute)  light culling on the copy (LightTilesPass), so that each
-//                                       tile's lights reach its nearest transparent surfaces too
+//   transparent depths       (raster)   per pixel the nearest and farthest depth of the
+//                                       transparent surfaces in front of the opaque one
+//   light tiles              (compute)  light culling bounded by those depths and the opaque ones
+//                                       (LightTilesPass with transparent bounds), so that each
+//                                       tile's lights reach its transparent surfaces too
 //   transparent              (raster)   the surfaces back to front (GpuScene::order_transparent),
 //                                       each lit by its tile's lights and their shadows as the
 //                                       opaque surfaces are (shaders/scene_tiled.frag's
@@ -17,14 +18,13 @@
 // Where every light lit every pixel (fused, every light), the last pass alone, lighting with
 // every light as they did (shaders/scene_fused.frag's transparent variant): a frame of a few
 // lights pays no culling for a few transparent pixels (on lavapipe the tiled passes cost 2.4 ms
-// of the shared ShadowsSpot scene's 9.9 at 1280x720, 2026-12-01).
+// of the shared ShadowsSpot scene's 9.9 at 1280x720, 2026-12-01, when they began with a copy of
+// the opaque depth).
 //
 // The target is a lit sum, or the frame where the path tone-maps as it lights (fused).
 // Surfaces are sorted as wholes, by their bounds' centres: intersecting or nested transparent
 // meshes, and the faces within one mesh, blend in whatever order they come (no
-// order-independent transparency). A tile's lights are culled for the nearest transparent
-// surface and the opaque ones; a transparent surface behind another in the same tile, beyond
-// the tile's opaque depths, may miss a light.
+// order-independent transparency).
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -69,7 +69,7 @@ class TransparentPass {
                          const GpuScene& scene, uint32_t slot, const FrameConstants& constants) const;
 
  private:
-  // The light tiles for the transparent surfaces (the first three passes).
+  // The light tiles for the transparent surfaces (the passes before the last).
   LightTiles add_light_tiles(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
                              uint32_t light_count, const GpuScene& scene, uint32_t slot,
                              const FrameConstants& constants) const;

@@ -21,6 +21,7 @@ enum class Blend {
   none,   // replaces it
   alpha,  // colour = src * src alpha + dst * (1 - src alpha), for overlays
   add,    // colour = src + dst, for sums built pass by pass
+  max,    // colour = max(src, dst) per channel, for bounds
 };
 
 struct GraphicsPipelineDesc {
