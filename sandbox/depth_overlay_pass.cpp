@@ -14,7 +14,7 @@ namespace {
 constexpr float shown_distance = 40.0f;
 }  // namespace
 
-DepthOverlayPass::DepthOverlayPass(vk::VulkanContext& context, rg::Format colour_format)
+DepthOverlayPass::DepthOverlayPass(vk::VulkanContext& context, rg::Format color_format)
     : sampler_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       layout_(context.device(),
               {{depth_buffer_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
@@ -22,18 +22,18 @@ DepthOverlayPass::DepthOverlayPass(vk::VulkanContext& context, rg::Format colour
               vk::push_constants<DepthOverlayLens>(VK_SHADER_STAGE_FRAGMENT_BIT)),
       pipeline_(vk::create_graphics_pipeline(context, {.vertex_spirv = fullscreen_vert,
                                                        .fragment_spirv = depth_overlay_frag,
-                                                       .color_formats = {vk::to_vk(colour_format)},
+                                                       .color_formats = {vk::to_vk(color_format)},
                                                        .cull_mode = VK_CULL_MODE_NONE,
                                                        .layout = layout_.get(),
                                                        .name = "depth overlay"})) {}
 
-rg::ImageHandle DepthOverlayPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
-                                         rg::ImageHandle colour, const scene::Camera& lens) const {
+rg::ImageHandle DepthOverlayPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth, rg::ImageHandle color,
+                                         const scene::Camera& lens) const {
   graph.add_pass(
       "depth overlay",
       [&](rg::PassBuilder& b) {
         b.read(depth, rg::Usage::sampled_fragment);
-        colour = b.write(colour, rg::Usage::colour_attachment);  // no clear: draw over the frame
+        color = b.write(color, rg::Usage::color_attachment);  // no clear: draw over the frame
       },
       [this, depth, lens](const vk::PassRecorder& rec) {
         const VkExtent2D full = rec.render_extent();
@@ -47,7 +47,7 @@ rg::ImageHandle DepthOverlayPass::add_to(rg::RenderGraph& graph, rg::ImageHandle
         layout_.push(rec.cmd(), DepthOverlayLens{lens.znear, lens.zfar, shown_distance});
         vkCmdDraw(rec.cmd(), 3, 1, 0, 0);
       });
-  return colour;
+  return color;
 }
 
 }  // namespace sg::sandbox

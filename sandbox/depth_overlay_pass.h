@@ -15,11 +15,11 @@ namespace sg::sandbox {
 
 class DepthOverlayPass {
  public:
-  DepthOverlayPass(vk::VulkanContext& context, rg::Format colour_format);
+  DepthOverlayPass(vk::VulkanContext& context, rg::Format color_format);
 
-  // Reads `depth` (a D32 depth buffer rendered with `lens`), draws over `colour`, and returns
-  // `colour`'s new version.
-  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle depth, rg::ImageHandle colour,
+  // Reads `depth` (a D32 depth buffer rendered with `lens`), draws over `color`, and returns
+  // `color`'s new version.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle depth, rg::ImageHandle color,
                          const scene::Camera& lens) const;
 
  private:

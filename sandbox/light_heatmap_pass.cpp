@@ -11,7 +11,7 @@ namespace sg::sandbox {
 namespace {
 
 constexpr uint32_t ranges_binding = 0;
-// Lights in a tile at which the colour ramp reaches red.
+// Lights in a tile at which the color ramp reaches red.
 constexpr float full_scale = 32.0f;
 
 // light_heatmap.frag's HeatMap.
@@ -22,27 +22,27 @@ struct HeatMap {
 
 }  // namespace
 
-LightHeatmapPass::LightHeatmapPass(vk::VulkanContext& context, rg::Format colour_format)
+LightHeatmapPass::LightHeatmapPass(vk::VulkanContext& context, rg::Format color_format)
     : layout_(context.device(),
               {{ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT}},
               vk::push_constants<HeatMap>(VK_SHADER_STAGE_FRAGMENT_BIT)),
       pipeline_(vk::create_graphics_pipeline(context, {.vertex_spirv = fullscreen_vert,
                                                        .fragment_spirv = light_heatmap_frag,
-                                                       .color_formats = {vk::to_vk(colour_format)},
+                                                       .color_formats = {vk::to_vk(color_format)},
                                                        .cull_mode = VK_CULL_MODE_NONE,
                                                        .blend = vk::Blend::alpha,
                                                        .layout = layout_.get(),
                                                        .name = "light heat map"})) {}
 
 rg::ImageHandle LightHeatmapPass::add_to(rg::RenderGraph& graph, const LightTiles& tiles,
-                                         rg::ImageHandle colour) const {
-  const rg::ImageDesc& frame = graph.resources()[colour.index].image;
+                                         rg::ImageHandle color) const {
+  const rg::ImageDesc& frame = graph.resources()[color.index].image;
   const LightTileGrid grid = LightTileGrid::of(frame.width, frame.height);
   graph.add_pass(
       "light heat map",
       [&](rg::PassBuilder& b) {
         b.read(tiles.ranges, rg::Usage::storage_fragment);
-        colour = b.write(colour, rg::Usage::colour_attachment);  // no clear: over the frame
+        color = b.write(color, rg::Usage::color_attachment);  // no clear: over the frame
       },
       [this, ranges = tiles.ranges, grid](const vk::PassRecorder& rec) {
         rec.set_full_viewport();
@@ -53,7 +53,7 @@ rg::ImageHandle LightHeatmapPass::add_to(rg::RenderGraph& graph, const LightTile
         layout_.push(rec.cmd(), HeatMap{grid.across, full_scale});
         vkCmdDraw(rec.cmd(), 3, 1, 0, 0);
       });
-  return colour;
+  return color;
 }
 
 }  // namespace sg::sandbox

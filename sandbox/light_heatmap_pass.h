@@ -1,5 +1,5 @@
 #pragma once
-// A debug view: how many lights each 16x16 screen tile shades, as colour over the picture, read
+// A debug view: how many lights each 16x16 screen tile shades, as color over the picture, read
 // from light culling's lists (LightTiles::ranges). Like the depth overlay, a pass no engine
 // file knows.
 #include "rendergraph/core/render_graph.h"
@@ -15,11 +15,11 @@ namespace sg::sandbox {
 
 class LightHeatmapPass {
  public:
-  LightHeatmapPass(vk::VulkanContext& context, rg::Format colour_format);
+  LightHeatmapPass(vk::VulkanContext& context, rg::Format color_format);
 
-  // Draws over `colour` (the frame, whose size the tiles were culled at) and returns its new
+  // Draws over `color` (the frame, whose size the tiles were culled at) and returns its new
   // version.
-  rg::ImageHandle add_to(rg::RenderGraph& graph, const LightTiles& tiles, rg::ImageHandle colour) const;
+  rg::ImageHandle add_to(rg::RenderGraph& graph, const LightTiles& tiles, rg::ImageHandle color) const;
 
  private:
   vk::PipelineLayout layout_;

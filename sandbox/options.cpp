@@ -90,7 +90,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--depth-overlay", o.depth_overlay,
                "Show the depth buffer in the bottom-right quarter (the render graph's extension example)");
   app.add_flag("--light-heatmap", o.light_heatmap,
-               "Colour each 16x16 screen tile by the lights it shades (tiled lighting's lists; white: a full "
+               "Color each 16x16 screen tile by the lights it shades (tiled lighting's lists; white: a full "
                "list)");
 
   app.add_option("--scene", o.scene, "Scene: default, stress, or a .gltf/.glb file")->capture_default_str();
@@ -215,7 +215,7 @@ void add_options(CLI::App& app, Options& o) {
   add_choice(app, "--view", o.view, {{"lit", LightingView::lit}, {"shadows", LightingView::shadows}},
              "lit: the picture; shadows: a debug view of white diffuse surfaces under white lights, "
              "shadows at full density, no ambient");
-  app.add_option("--exposure", o.exposure, "Multiplies the lit colour before tone mapping")
+  app.add_option("--exposure", o.exposure, "Multiplies the lit color before tone mapping")
       ->check(CLI::Range(1e-3f, 1e3f))
       ->capture_default_str();
   add_choice(app, "--animate", o.animate, {{"on", true}, {"off", false}},

@@ -222,12 +222,12 @@ void SandboxFrame::declare_passes(uint32_t slot, const std::optional<PresentTarg
   const RenderedFrame targets =
       renderer_.add_passes(graph_, imports_, frame_image, slot, scene_.pose, scene_.lens);
   if (depth_capture_) depth_capture_->add_to(context_, graph_, imports_, targets.depth);
-  rg::ImageHandle colour = targets.colour;
-  if (depth_overlay_enabled_) colour = depth_overlay_.add_to(graph_, targets.depth, colour, scene_.lens);
+  rg::ImageHandle color = targets.color;
+  if (depth_overlay_enabled_) color = depth_overlay_.add_to(graph_, targets.depth, color, scene_.lens);
   const bool heatmap = ui_ ? ui_->light_heatmap() : light_heatmap_.has_value();
-  if (heatmap && targets.light_tiles) colour = light_heatmap_->add_to(graph_, *targets.light_tiles, colour);
-  if (ui_pass_) colour = ui_pass_->add_to(graph_, colour, targets.shadow_atlas, slot);
-  if (present) add_present(graph_, imports_, colour, *present);
+  if (heatmap && targets.light_tiles) color = light_heatmap_->add_to(graph_, *targets.light_tiles, color);
+  if (ui_pass_) color = ui_pass_->add_to(graph_, color, targets.shadow_atlas, slot);
+  if (present) add_present(graph_, imports_, color, *present);
 }
 
 void SandboxFrame::execute(const vk::FrameSlot& frame) {

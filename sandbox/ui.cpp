@@ -50,7 +50,7 @@ void edit(ecs::World& world, ecs::Entity entity, Widget widget) {
 template <class Light>
 void edit_light_parameters(ecs::World& world, ecs::Entity entity) {
   edit<Light>(world, entity, [](Light& light) {
-    bool changed = ImGui::ColorEdit3("colour", glm::value_ptr(light.color));
+    bool changed = ImGui::ColorEdit3("color", glm::value_ptr(light.color));
     changed |= ImGui::DragFloat("intensity", &light.intensity, 0.05f, 0.0f, 1e6f);
     if constexpr (requires { light.range; })
       changed |= ImGui::DragFloat("range", &light.range, 0.05f, 0.01f, 1e4f);
@@ -367,7 +367,7 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
       changed |= ImGui::DragFloat("pcf radius", &shadow.pcf_radius, 0.05f, 0.0f, 16.0f);
       changed |= ImGui::DragFloat("light size", &shadow.light_size, 0.01f, 0.0f, 10.0f);
       changed |= ImGui::SliderFloat("density", &shadow.density, 0.0f, 1.0f);
-      changed |= ImGui::ColorEdit3("shadow colour", glm::value_ptr(shadow.shadow_color));
+      changed |= ImGui::ColorEdit3("shadow color", glm::value_ptr(shadow.shadow_color));
       int resolution = static_cast<int>(shadow.resolution);
       if (ImGui::SliderInt("resolution", &resolution, 16, 4096)) {
         shadow.resolution = static_cast<uint32_t>(resolution);

@@ -1,8 +1,8 @@
 #pragma once
 // The sandbox's panels, with Dear ImGui: frame facts (CPU and GPU time, shadow views drawn and
 // kept, shadow memory) and a light editor (pick a light by type and name; edit its position,
-// colour, intensity, range, cone, and every shadow setting: algorithm, biases, PCF radius, light
-// size, density, shadow colour, resolution; add and remove lights; orbit or bob them; play or
+// color, intensity, range, cone, and every shadow setting: algorithm, biases, PCF radius, light
+// size, density, shadow color, resolution; add and remove lights; orbit or bob them; play or
 // pause animation). Edits are writes to the ECS world like any system's,
 // so change ticks and the shadow cache see them. UiPass draws the result.
 //

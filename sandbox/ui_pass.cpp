@@ -47,7 +47,7 @@ vk::Image upload_font_atlas(vk::VulkanContext& context) {
 
 }  // namespace
 
-UiPass::UiPass(vk::VulkanContext& context, rg::Format colour_format, uint32_t frames_in_flight)
+UiPass::UiPass(vk::VulkanContext& context, rg::Format color_format, uint32_t frames_in_flight)
     : font_atlas_(upload_font_atlas(context)),
       sampler_(vk::create_sampler(context.device(), VK_FILTER_LINEAR)),
       layout_(context.device(),
@@ -65,7 +65,7 @@ UiPass::UiPass(vk::VulkanContext& context, rg::Format colour_format, uint32_t fr
   desc.vertex_attributes = {{0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ImDrawVert, pos)},
                             {1, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ImDrawVert, uv)},
                             {2, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(ImDrawVert, col)}};
-  desc.color_formats = {vk::to_vk(colour_format)};
+  desc.color_formats = {vk::to_vk(color_format)};
   desc.cull_mode = VK_CULL_MODE_NONE;
   desc.blend = vk::Blend::alpha;
   desc.layout = layout_.get();
@@ -93,15 +93,15 @@ void UiPass::prepare(uint32_t slot, const ImDrawData* draw_data, std::span<const
   indices_.write(slot, std::span<const ImDrawIdx>(index_scratch_));
 }
 
-rg::ImageHandle UiPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colour, rg::ImageHandle shadow_atlas,
+rg::ImageHandle UiPass::add_to(rg::RenderGraph& graph, rg::ImageHandle color, rg::ImageHandle shadow_atlas,
                                uint32_t slot) const {
-  if (draw_data_ == nullptr || draw_data_->TotalIdxCount == 0) return colour;
+  if (draw_data_ == nullptr || draw_data_->TotalIdxCount == 0) return color;
   const bool maps = !depth_views_.empty();
   graph.add_pass(
       "ui",
       [&](rg::PassBuilder& b) {
         if (maps) b.read(shadow_atlas, rg::Usage::sampled_fragment);
-        colour = b.write(colour, rg::Usage::colour_attachment);  // no clear: over the frame
+        color = b.write(color, rg::Usage::color_attachment);  // no clear: over the frame
       },
       [this, slot, maps, shadow_atlas](const vk::PassRecorder& rec) {
         VkDescriptorSet atlas_set = VK_NULL_HANDLE;
@@ -161,7 +161,7 @@ rg::ImageHandle UiPass::add_to(rg::RenderGraph& graph, rg::ImageHandle colour, r
           index_base += uint32_t(list->IdxBuffer.Size);
         }
       });
-  return colour;
+  return color;
 }
 
 }  // namespace sg::sandbox

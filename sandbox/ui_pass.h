@@ -26,16 +26,16 @@ namespace sg::sandbox {
 
 class UiPass {
  public:
-  UiPass(vk::VulkanContext& context, rg::Format colour_format, uint32_t frames_in_flight);
+  UiPass(vk::VulkanContext& context, rg::Format color_format, uint32_t frames_in_flight);
 
   // Copies the frame's triangles into the slot's buffers; `draw_data` (ImGui::GetDrawData after
   // ImGui::Render) and `depth_views` (texture ids 1, 2, ...: SandboxUi::depth_views) are read
   // now and when the pass records.
   void prepare(uint32_t slot, const ImDrawData* draw_data, std::span<const UiDepthView> depth_views);
 
-  // Draws over `colour`, reading `shadow_atlas` for the shadow maps shown, and returns
-  // `colour`'s new version; nothing when there is nothing to draw.
-  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle colour, rg::ImageHandle shadow_atlas,
+  // Draws over `color`, reading `shadow_atlas` for the shadow maps shown, and returns
+  // `color`'s new version; nothing when there is nothing to draw.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle color, rg::ImageHandle shadow_atlas,
                          uint32_t slot) const;
 
  private:

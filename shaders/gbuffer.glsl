@@ -8,7 +8,7 @@
 // Positions come back from the depth buffer: every byte a pixel writes here costs raster
 // hardware time on GPUs that have little of it (docs/PERFORMANCE.md).
 layout(location = 0) out vec4 out_normal;  // xyz: unit normal; w: Blinn shininess s
-layout(location = 1) out vec4 out_albedo;  // rgb: base colour; a: specular strength kS
+layout(location = 1) out vec4 out_albedo;  // rgb: base color; a: specular strength kS
 
 // Writes the fragment's G-buffer texels and returns its surface.
 SurfacePoint write_gbuffer() {

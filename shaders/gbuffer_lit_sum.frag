@@ -1,8 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // The G-buffer (gbuffer.glsl) and the start of the lit sum, the ambient term times the base
-// colour (what lighting_ambient.glsl writes in a pass of its own); the background is the
-// target's clear colour. For deferred lighting in fragment passes (--deferred-passes fragment),
+// color (what lighting_ambient.glsl writes in a pass of its own); the background is the
+// target's clear color. For deferred lighting in fragment passes (--deferred-passes fragment),
 // which then need no pass of their own for it.
 #include "gbuffer.glsl"
 

@@ -24,9 +24,9 @@ const uint NO_SHADOW_MAP = 0xFFFFFFFFu;
 struct Light {
   vec4 position_range;        // xyz: world position (point, spot, cylinder); w: range R (point, spot; 0 otherwise)
   vec4 direction_type;        // xyz: unit direction the light travels (spot, directional, cylinder); w: unused
-  vec4 color_intensity;       // rgb: linear colour; a: intensity
+  vec4 color_intensity;       // rgb: linear color; a: intensity
   vec4 shape;                 // spot: x cos(inner), y cos(outer); cylinder: z inner radius r, w outer radius R
-  vec4 shadow_color_density;  // rgb: shadow colour sc; a: density
+  vec4 shadow_color_density;  // rgb: shadow color sc; a: density
   vec4 shadow_bias;           // x: constant bias b0, y: slope bias b1, z: pcf radius (texels), w: light size (world units)
   uvec4 info;                 // x: type (LIGHT_*); y: falloff (FALLOFF_*); z: algorithm (SHADOW_*);
                               // w: the shadow atlas layer of its map (or of all six cube faces), or NO_SHADOW_MAP

@@ -10,14 +10,14 @@
 #include "shadow_sampling.glsl"
 
 // The shadow-only debug view (LightingView::shadows): white surfaces under white lights, diffuse
-// only, each light's shadow at full density and no shadow colour: the algorithm's shade as it
-// falls, without textures, colours or highlights in the way.
+// only, each light's shadow at full density and no shadow color: the algorithm's shade as it
+// falls, without textures, colors or highlights in the way.
 // constant_id 0 is left to the including shader's own constant.
 layout(constant_id = 1) const bool SHADOW_ONLY_VIEW = false;
 
 // One light at world_pos. `reach` folds the light's falloff, spot cone and cylinder lambda
-// into its radiance; where it is zero the light adds nothing (not even shadow colour) and its
-// shadow map is not read. The shadow colour term is weighted by lambda as section 2's formula
+// into its radiance; where it is zero the light adds nothing (not even shadow color) and its
+// shadow map is not read. The shadow color term is weighted by lambda as section 2's formula
 // has it (lambda is 1 for every light but the cylinder).
 //
 // `shadow_kind` and `algorithm` are the light's own (light_shadow_kind, info.z); shade_light

@@ -1,5 +1,5 @@
 // The lighting model of docs/LIGHTING.md section 2: extended Blinn with shadow density and
-// shadow colour. `shade` is the light's shadow factor (1 = fully shadowed).
+// shadow color. `shade` is the light's shadow factor (1 = fully shadowed).
 #ifndef SG_LIGHTING_GLSL
 #define SG_LIGHTING_GLSL
 
@@ -13,7 +13,7 @@ struct SurfacePoint {
 };
 
 // One light's contribution, without the ambient term (added once per fragment).
-// radiance: light colour * intensity * attenuation (lambda * A folded in).
+// radiance: light color * intensity * attenuation (lambda * A folded in).
 vec3 blinn_light(SurfacePoint p, vec3 to_light, vec3 radiance, float shade, float density,
                  vec3 shadow_color) {
   float sh = density * shade;

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // The start of tiled deferred lighting's lit sum, every pixel: the ambient term kA * IA times the
-// G-buffer's base colour, or the background colour where no surface was drawn. Written here
+// G-buffer's base color, or the background color where no surface was drawn. Written here
 // rather than as a G-buffer target: on GPUs with little raster hardware the G-buffer's cost
 // follows the bytes it writes per pixel (docs/PERFORMANCE.md).
 #include "bindings.glsl"
@@ -14,7 +14,7 @@ layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
 layout(set = 0, binding = hdr_binding, rgba16f) uniform writeonly image2D hdr;
 
 layout(push_constant) uniform Constants {
-  vec4 background_ambient;  // rgb: the background colour; w: the ambient term
+  vec4 background_ambient;  // rgb: the background color; w: the ambient term
   uvec4 screen;             // x width, y height
 } frame;
 
@@ -22,7 +22,7 @@ void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(frame.screen.x) || pixel.y >= int(frame.screen.y)) return;
   bool background = is_background_depth(texelFetch(scene_depth, pixel, 0).r);
-  vec3 colour = background ? frame.background_ambient.rgb
+  vec3 color = background ? frame.background_ambient.rgb
                            : frame.background_ambient.w * texelFetch(gbuffer_albedo, pixel, 0).rgb;
-  imageStore(hdr, pixel, vec4(colour, 1.0));
+  imageStore(hdr, pixel, vec4(color, 1.0));
 }

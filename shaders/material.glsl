@@ -1,4 +1,4 @@
-// The surface a fragment of an instance shows: base colour from the material's factor and
+// The surface a fragment of an instance shows: base color from the material's factor and
 // texture, specular strength and shininess (scene_interface.glsl's Instance). Shared by the
 // forward and G-buffer passes, so both light the same surface. Fragment shaders after
 // scene.vert only.
@@ -15,12 +15,12 @@
 // of the G-buffer pass on lavapipe).
 layout(location = 0) in vec3 in_world_position;
 layout(location = 1) in vec3 in_normal;
-layout(location = 2) flat in vec4 in_base_color_specular;  // rgb: base colour; a: specular strength kS
+layout(location = 2) flat in vec4 in_base_color_specular;  // rgb: base color; a: specular strength kS
 layout(location = 3) in vec2 in_uv;
-// x: Blinn shininess s; y: texture layer or -1; z: base colour alpha; w: the mask's cutoff
+// x: Blinn shininess s; y: texture layer or -1; z: base color alpha; w: the mask's cutoff
 layout(location = 4) flat in vec4 in_material;
 
-// The base colour, factor times texture: rgb and alpha.
+// The base color, factor times texture: rgb and alpha.
 vec4 fragment_base_color() {
   vec4 color = vec4(in_base_color_specular.rgb, in_material.z);
   int texture_index = int(in_material.y);

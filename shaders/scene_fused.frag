@@ -9,7 +9,7 @@
 // (docs/PERFORMANCE.md).
 //
 // The transparent variant (systems/transparent_pass.h) gives the surface's alpha for blending,
-// its colour tone-mapped only where frame.counts.w is 1: into the fused path's frame, or as a
+// its color tone-mapped only where frame.counts.w is 1: into the fused path's frame, or as a
 // lit sum after the every-light path.
 #include "light_shading.glsl"
 #include "material.glsl"

@@ -7,9 +7,9 @@
 
 struct Instance {
   mat4 model;
-  vec4 base_color_specular; // rgb: base colour, a: specular strength kS
-  vec4 material;            // x: Blinn shininess s, y: base colour texture index or -1,
-                            // z: base colour alpha, w: mask's alpha cutoff (0: no cut-out)
+  vec4 base_color_specular; // rgb: base color, a: specular strength kS
+  vec4 material;            // x: Blinn shininess s, y: base color texture index or -1,
+                            // z: base color alpha, w: mask's alpha cutoff (0: no cut-out)
 };
 
 layout(std430, set = 0, binding = instances_binding) readonly buffer Instances { Instance instances[]; };

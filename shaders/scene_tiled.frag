@@ -7,7 +7,7 @@
 // no light of, so the shader holds only the shadow code the frame uses.
 //
 // The transparent variant (systems/transparent_pass.h) gives the surface's alpha for blending,
-// and where frame.counts.w is 1 the colour tone-mapped with the exposure in counts.z, for a frame
+// and where frame.counts.w is 1 the color tone-mapped with the exposure in counts.z, for a frame
 // that is already (the fused path's): the curve is the identity below its knee, where blending
 // after it is blending before.
 #include "light_shading.glsl"

@@ -18,7 +18,7 @@ float shadow_alpha_threshold(float cutoff, uvec2 texel) {
 }
 
 // Whether a caster with `material` (scene_instances.glsl's Instance::material: y its texture
-// layer or -1, z its base colour alpha, w its cutoff) is cut out at `uv`, at `texel` of the
+// layer or -1, z its base color alpha, w its cutoff) is cut out at `uv`, at `texel` of the
 // atlas. The texture array has one level, so level 0 is what texture() would sample, and compute
 // shaders may call this too.
 bool shadow_cut_out(vec4 material, vec2 uv, uvec2 texel) {

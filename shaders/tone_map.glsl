@@ -1,4 +1,4 @@
-// Exposure and tone mapping of the lit sum (docs/LIGHTING.md's linear colour) into displayable
+// Exposure and tone mapping of the lit sum (docs/LIGHTING.md's linear color) into displayable
 // [0, 1]. Also compiled as C++ (systems/tone_map.cpp) for tests: keep to what both languages
 // read alike.
 #ifndef SG_TONE_MAP_GLSL
@@ -6,8 +6,8 @@
 
 // Below TONE_KNEE the curve is the identity: scenes lit within range look exactly as the
 // lighting model computes them. Above it the brightest channel is compressed smoothly towards 1
-// (continuous in value and slope at the knee), and the colour scaled with it, which keeps its
-// hue where a per-channel clamp would turn bright colours white or yellow.
+// (continuous in value and slope at the knee), and the color scaled with it, which keeps its
+// hue where a per-channel clamp would turn bright colors white or yellow.
 const float TONE_KNEE = 0.8f;
 
 float compress_highlight(float x) {

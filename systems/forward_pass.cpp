@@ -65,8 +65,8 @@ ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, uint32_t width, uint3
         targets.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
                                 rg::Usage::depth_attachment, camera_depth_clear);
         targets.lit_sum =
-            b.write(b.create_image("lit sum", {width, height, lit_sum_format}), rg::Usage::colour_attachment,
-                    rg::ClearValue::colour_of(background_colour.r, background_colour.g, background_colour.b));
+            b.write(b.create_image("lit sum", {width, height, lit_sum_format}), rg::Usage::color_attachment,
+                    rg::ClearValue::color_of(background_color.r, background_color.g, background_color.b));
       },
       [this, &scene, slot, constants,
        pipelines = pipelines_.at(static_cast<uint32_t>(view_)).get()](const vk::PassRecorder& rec) {

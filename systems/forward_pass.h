@@ -24,7 +24,7 @@ class GpuTextures;
 class ShadowAtlas;
 
 struct ForwardTargets {
-  rg::ImageHandle lit_sum;  // linear HDR colour (rgba32f), for tone mapping
+  rg::ImageHandle lit_sum;  // linear HDR color (rgba32f), for tone mapping
   rg::ImageHandle depth;    // transient D32, readable by later passes (depth-tested or sampled)
 };
 

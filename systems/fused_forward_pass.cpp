@@ -14,7 +14,7 @@
 namespace sg {
 namespace {
 
-// The tone curve of shaders/tone_map.glsl, compiled here as C++, for the background's clear colour.
+// The tone curve of shaders/tone_map.glsl, compiled here as C++, for the background's clear color.
 namespace glsl {
 using namespace glm;
 #include "shaders/tone_map.glsl"
@@ -54,15 +54,15 @@ FusedTargets FusedForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle de
                                       rg::ImageHandle atlas, const vk::Buffer& lights, const GpuScene& scene,
                                       uint32_t slot, FrameConstants constants, float exposure) const {
   constants.counts.z = std::bit_cast<uint32_t>(exposure);
-  const glm::vec3 background = glsl::tone_map(background_colour, exposure);
+  const glm::vec3 background = glsl::tone_map(background_color, exposure);
   FusedTargets targets;
   graph.add_pass(
       "fused forward",
       [&](rg::PassBuilder& b) {
         b.read(atlas, rg::Usage::sampled_fragment);
         targets.depth = b.write(depth, rg::Usage::depth_attachment);  // tested, not written
-        targets.frame = b.write(frame, rg::Usage::colour_attachment,
-                                rg::ClearValue::colour_of(background.r, background.g, background.b));
+        targets.frame = b.write(frame, rg::Usage::color_attachment,
+                                rg::ClearValue::color_of(background.r, background.g, background.b));
       },
       [this, &scene, &lights, slot, constants, atlas,
        pipelines = pipelines_.at(key_).get()](const vk::PassRecorder& rec) {

@@ -54,19 +54,19 @@ void GBufferPass::prepare(uint32_t slot, const GpuScene& scene) {
 GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height, const GpuScene& scene,
                             uint32_t slot, const FrameConstants& constants) const {
   GBuffer g;
-  const rg::ClearValue nothing = rg::ClearValue::colour_of(0.0f, 0.0f, 0.0f, 0.0f);
+  const rg::ClearValue nothing = rg::ClearValue::color_of(0.0f, 0.0f, 0.0f, 0.0f);
   graph.add_pass(
       "g-buffer",
       [&](rg::PassBuilder& b) {
         const auto target = [&](const char* name, rg::Format format, rg::ClearValue clear) {
-          return b.write(b.create_image(name, {width, height, format}), rg::Usage::colour_attachment, clear);
+          return b.write(b.create_image(name, {width, height, format}), rg::Usage::color_attachment, clear);
         };
         g.normal = target("g-buffer normal", normal_format, nothing);
         g.albedo = target("g-buffer albedo", albedo_format, nothing);
         if (writes_lit_sum_) {
           g.lit_sum = target(
               "lit sum", TiledLightingPass::lit_sum_format,
-              rg::ClearValue::colour_of(background_colour.r, background_colour.g, background_colour.b, 1.0f));
+              rg::ClearValue::color_of(background_color.r, background_color.g, background_color.b, 1.0f));
         }
         g.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
                           rg::Usage::depth_attachment, camera_depth_clear);

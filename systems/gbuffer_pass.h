@@ -21,10 +21,10 @@ class GpuTextures;
 
 struct GBuffer {
   rg::ImageHandle normal;  // rgba16f: unit normal, shininess
-  rg::ImageHandle albedo;  // rgba8: base colour, specular strength
+  rg::ImageHandle albedo;  // rgba8: base color, specular strength
   rg::ImageHandle depth;   // D32, reversed: 0 where no surface was drawn; world positions come back from it
   // The lit sum's start (TiledLightingPass::lit_sum_format): the ambient term times the base
-  // colour, the background colour where no surface was drawn. Invalid unless the pass writes it.
+  // color, the background color where no surface was drawn. Invalid unless the pass writes it.
   rg::ImageHandle lit_sum;
 };
 

@@ -51,13 +51,13 @@ uint32_t draw_class_of(const scene::Material& material) {
 }
 
 vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
-                                              std::vector<VkFormat> colour_formats, VkPipelineLayout layout,
+                                              std::vector<VkFormat> color_formats, VkPipelineLayout layout,
                                               std::string name) {
   vk::GraphicsPipelineDesc desc;
   desc.vertex_spirv = scene_vert;
   desc.fragment_spirv = fragment;
   scene_vertex_input(desc, VertexInput::surface);
-  desc.color_formats = std::move(colour_formats);
+  desc.color_formats = std::move(color_formats);
   desc.depth_format = vk::to_vk(camera_depth_format);
   desc.depth_compare = camera_depth_test;
   desc.layout = layout;

@@ -63,10 +63,10 @@ std::vector<VkDescriptorSetLayoutBinding> lit_camera_bindings(
     std::vector<VkDescriptorSetLayoutBinding> more = {});
 
 // A pipeline that draws the scene from the camera (shaders/scene.vert, draw_camera_pass) into
-// `colour_formats` with `fragment`, depth-tested against camera_depth_format; callers may
+// `color_formats` with `fragment`, depth-tested against camera_depth_format; callers may
 // adjust the rest.
 vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
-                                              std::vector<VkFormat> colour_formats, VkPipelineLayout layout,
+                                              std::vector<VkFormat> color_formats, VkPipelineLayout layout,
                                               std::string name);
 
 class GpuScene {

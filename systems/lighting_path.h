@@ -36,7 +36,7 @@ constexpr LightingPath cpu_lighting_for(uint32_t lights) {
 // several times slower (docs/PERFORMANCE.md). automatic: compute.
 enum class DeferredPasses { automatic, compute, fragment };
 
-// Where deferred lighting's lit sum starts (the ambient term times the base colour, the background
+// Where deferred lighting's lit sum starts (the ambient term times the base color, the background
 // where no surface was drawn) when its group passes run in compute: a full-screen compute pass,
 // or a third G-buffer target. The target costs the G-buffer more than the pass costs on GPUs with
 // little raster hardware (H200, default scene, 1920x1080: +0.57 ms against 0.012) and less on

@@ -8,7 +8,7 @@ namespace sg {
 struct GpuInstance {
   glm::mat4 model;  // the normal matrix is derived from it where needed (scene.vert)
   glm::vec4 base_color_specular;
-  glm::vec4 material;  // x: shininess, y: base colour texture index or -1, z: base colour alpha,
+  glm::vec4 material;  // x: shininess, y: base color texture index or -1, z: base color alpha,
                        // w: mask's alpha cutoff (0: no cut-out), transparent_cutoff if blended
 };
 static_assert(sizeof(GpuInstance) == 96);
@@ -18,7 +18,7 @@ static_assert(sizeof(GpuInstance) == 96);
 inline constexpr float transparent_cutoff = -1.0f;
 
 // Where no surface is drawn: every lighting path's lit sum starts from it.
-inline constexpr glm::vec3 background_colour{0.02f, 0.02f, 0.03f};
+inline constexpr glm::vec3 background_color{0.02f, 0.02f, 0.03f};
 
 struct FrameConstants {
   glm::mat4 view_projection;

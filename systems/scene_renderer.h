@@ -7,7 +7,7 @@
 //   renderer.prepare(slot, pose, lens, w, h);     // shadow tiles and caching, this slot's GPU buffers
 //   RenderedFrame f = renderer.add_passes(graph, imports, frame, slot, pose, lens);
 //
-// `frame` is any colour image of a format given at construction (imported or transient); the
+// `frame` is any color image of a format given at construction (imported or transient); the
 // returned handles let later passes (overlays, copies, presentation) read the results. The
 // shadow atlas is imported through `imports` as "shadow atlas".
 #include <cstddef>
@@ -72,7 +72,7 @@ struct RendererSettings {
 };
 
 struct RenderedFrame {
-  rg::ImageHandle colour;        // the frame image's newest version: the tone-mapped picture
+  rg::ImageHandle color;         // the frame image's newest version: the tone-mapped picture
   rg::ImageHandle depth;         // the camera's D32 depth buffer (transient)
   rg::ImageHandle shadow_atlas;  // every shadow map, this frame's newest version
   // The tiled paths' light lists (invalid handles with --naive's every-light forward).

@@ -65,8 +65,8 @@ ForwardTargets TiledForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
         targets.depth = b.write(depth, rg::Usage::depth_attachment);  // tested, not written
         targets.lit_sum =
             b.write(b.create_image("lit sum", {screen.width, screen.height, ForwardPass::lit_sum_format}),
-                    rg::Usage::colour_attachment,
-                    rg::ClearValue::colour_of(background_colour.r, background_colour.g, background_colour.b));
+                    rg::Usage::color_attachment,
+                    rg::ClearValue::color_of(background_color.r, background_color.g, background_color.b));
       },
       [this, &scene, &lights, slot, constants, tiles, atlas,
        pipelines = pipelines_.at(pipeline_key(groups_present_, view_)).get()](const vk::PassRecorder& rec) {

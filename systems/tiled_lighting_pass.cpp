@@ -22,7 +22,7 @@ using namespace bindings;
 constexpr VkShaderStageFlags compute_stage = VK_SHADER_STAGE_COMPUTE_BIT;
 
 struct AmbientConstants {
-  glm::vec4 background_ambient;  // rgb: the background colour; w: the ambient term
+  glm::vec4 background_ambient;  // rgb: the background color; w: the ambient term
   glm::uvec4 screen;             // width, height
 };
 
@@ -56,7 +56,7 @@ DeferredPasses resolve(DeferredPasses passes) {
 }
 
 bool starts_in_gbuffer(DeferredPasses passes, LitSumStart start, const vk::VulkanContext& context) {
-  if (passes == DeferredPasses::fragment) return true;  // they blend into a colour attachment
+  if (passes == DeferredPasses::fragment) return true;  // they blend into a color attachment
   if (start != LitSumStart::automatic) return start == LitSumStart::gbuffer;
   return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
 }
@@ -67,7 +67,7 @@ VkShaderStageFlags stages_of(DeferredPasses passes) {
 }
 
 // `bindings`, and in compute the lit sum as a storage image (fragment passes write it as their
-// colour attachment).
+// color attachment).
 std::vector<VkDescriptorSetLayoutBinding> with_lit_sum(std::vector<VkDescriptorSetLayoutBinding> bindings,
                                                        DeferredPasses passes) {
   if (passes == DeferredPasses::compute) {
@@ -154,7 +154,7 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
   const rg::Usage sampled = compute ? rg::Usage::sampled_compute : rg::Usage::sampled_fragment;
   const rg::Usage storage = compute ? rg::Usage::storage_compute : rg::Usage::storage_fragment;
   // Fragment passes add to the lit sum by blending; every pixel of it is written by the first.
-  const rg::Usage lit_sum_usage = compute ? rg::Usage::storage_compute : rg::Usage::colour_attachment;
+  const rg::Usage lit_sum_usage = compute ? rg::Usage::storage_compute : rg::Usage::color_attachment;
   rg::ImageHandle lit_sum = gbuffer.lit_sum;
   if (lit_sum_from_gbuffer_ != lit_sum.valid()) {
     throw std::logic_error(lit_sum_from_gbuffer_
@@ -173,7 +173,7 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
         },
         [this, albedo = gbuffer.albedo, depth = gbuffer.depth,
          constants =
-             AmbientConstants{glm::vec4(background_colour, ambient), {screen.width, screen.height, 0, 0}}](
+             AmbientConstants{glm::vec4(background_color, ambient), {screen.width, screen.height, 0, 0}}](
             rg::ImageHandle lit_sum, const vk::PassRecorder& rec) {
           const VkDescriptorSet set =
               ambient_layout_.write(rec.allocate_set(ambient_layout_))

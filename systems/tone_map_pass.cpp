@@ -28,7 +28,7 @@ rg::ImageHandle ToneMapPass::add_to(rg::RenderGraph& graph, rg::ImageHandle lit_
       "tone map",
       [&](rg::PassBuilder& b) {
         b.read(lit_sum, rg::Usage::sampled_fragment);
-        output = b.write(output, rg::Usage::colour_attachment);  // every pixel is written
+        output = b.write(output, rg::Usage::color_attachment);  // every pixel is written
       },
       [this, lit_sum, exposure](const vk::PassRecorder& rec) {
         rec.set_full_viewport();

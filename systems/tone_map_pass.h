@@ -1,7 +1,7 @@
 #pragma once
 // Exposure and tone mapping (shaders/tone_map.glsl) as a render-graph pass: the lit sum of
 // either lighting path into the displayable frame. The curve is the identity below its knee, so
-// a scene lit within range looks as the lighting model computes it; brighter colours are
+// a scene lit within range looks as the lighting model computes it; brighter colors are
 // compressed towards 1 instead of clipping.
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"

@@ -25,7 +25,7 @@ constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 
 // shaders/transparent_depth.frag's target and what it is cleared to: no transparent surface.
 constexpr rg::Format depth_bounds_format = rg::Format::rg32_sfloat;
-constexpr rg::ClearValue no_depth_bounds = rg::ClearValue::colour_of(0.0f, -1.0f, 0.0f, 0.0f);
+constexpr rg::ClearValue no_depth_bounds = rg::ClearValue::color_of(0.0f, -1.0f, 0.0f, 0.0f);
 
 // Groups take the low light_group_count bits, the view the next byte, tiled the next, the
 // format the rest.
@@ -107,7 +107,7 @@ LightTiles TransparentPass::add_light_tiles(rg::RenderGraph& graph, rg::ImageHan
         b.read(depth, rg::Usage::depth_attachment);  // tested, not written
         bounds =
             b.write(b.create_image("transparent depths", {screen.width, screen.height, depth_bounds_format}),
-                    rg::Usage::colour_attachment, no_depth_bounds);
+                    rg::Usage::color_attachment, no_depth_bounds);
       },
       [this, &scene, slot, constants, pipelines = depth_pipelines_.get()](const vk::PassRecorder& rec) {
         const VkDescriptorSet set = depth_layout_.write(rec.allocate_set(depth_layout_))
@@ -133,7 +133,7 @@ rg::ImageHandle TransparentPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
           b.read(tiles->ranges, rg::Usage::storage_fragment);
         }
         b.read(depth, rg::Usage::depth_attachment);  // tested, not written
-        target = b.write(target, rg::Usage::colour_attachment);
+        target = b.write(target, rg::Usage::color_attachment);
       },
       [this, &scene, &lights, slot, constants, tiles, atlas,
        pipelines = pipelines_.at(key_).get()](const vk::PassRecorder& rec) {

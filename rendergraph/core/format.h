@@ -26,7 +26,7 @@ enum class Format : std::uint32_t {
 // Size of one texel; 0 for Format::undefined.
 std::uint32_t bytes_per_texel(Format format);
 
-// Depth formats take the depth aspect in barriers and views; all others the colour aspect.
+// Depth formats take the depth aspect in barriers and views; all others the color aspect.
 bool is_depth(Format format);
 
 std::string_view format_name(Format format);

@@ -75,7 +75,7 @@ std::optional<std::uint32_t> PassBuilder::declare(std::uint32_t resource_index, 
                                               quoted(resource.name) + " as " +
                                               std::string(usage_name(usage)));
   }
-  if (clear && usage != Usage::colour_attachment && usage != Usage::depth_attachment) {
+  if (clear && usage != Usage::color_attachment && usage != Usage::depth_attachment) {
     return fail(ErrorKind::invalid_usage, "clears " + quoted(resource.name) + " used as " +
                                               std::string(usage_name(usage)) +
                                               "; only attachment writes can clear");

@@ -133,7 +133,7 @@ class PassBuilder {
   // Returns the version this pass produces; later passes must use it instead of `image`.
   [[nodiscard]] ImageHandle write(ImageHandle image, Usage usage,
                                   SubresourceRange range = SubresourceRange::all());
-  // An attachment write that first clears the range to `clear` (colour or depth attachments).
+  // An attachment write that first clears the range to `clear` (color or depth attachments).
   [[nodiscard]] ImageHandle write(ImageHandle image, Usage usage, ClearValue clear,
                                   SubresourceRange range = SubresourceRange::all());
   [[nodiscard]] BufferHandle write(BufferHandle buffer, Usage usage);

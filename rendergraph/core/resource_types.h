@@ -103,13 +103,13 @@ template <>
 inline constexpr bool is_flag_enum<BufferUsage> = true;
 
 // What an attachment write starts from instead of the attachment's earlier contents: the
-// executor turns it into VK_ATTACHMENT_LOAD_OP_CLEAR. Colour attachments use `colour`, depth
+// executor turns it into VK_ATTACHMENT_LOAD_OP_CLEAR. Color attachments use `color`, depth
 // attachments `depth`.
 struct ClearValue {
-  std::array<float, 4> colour{0.0f, 0.0f, 0.0f, 0.0f};
+  std::array<float, 4> color{0.0f, 0.0f, 0.0f, 0.0f};
   float depth = 1.0f;
 
-  static constexpr ClearValue colour_of(float r, float g, float b, float a = 1.0f) {
+  static constexpr ClearValue color_of(float r, float g, float b, float a = 1.0f) {
     return {{r, g, b, a}, 1.0f};
   }
   static constexpr ClearValue depth_of(float depth) { return {{}, depth}; }

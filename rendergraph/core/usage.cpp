@@ -29,7 +29,7 @@ std::optional<ResourceState> usage_state(Usage usage, Direction direction, Resou
       return ResourceState{depth_tests,
                            Access::depth_stencil_attachment_read | Access::depth_stencil_attachment_write,
                            ImageLayout::attachment_optimal};
-    case Usage::colour_attachment:
+    case Usage::color_attachment:
       if (!image || read) return std::nullopt;
       return ResourceState{PipelineStage::color_attachment_output,
                            Access::color_attachment_read | Access::color_attachment_write,
@@ -68,7 +68,7 @@ std::optional<ResourceState> usage_state(Usage usage, Direction direction, Resou
 ImageUsage image_usage(Usage usage, Direction direction) {
   switch (usage) {
     case Usage::depth_attachment: return ImageUsage::depth_stencil_attachment;
-    case Usage::colour_attachment: return ImageUsage::color_attachment;
+    case Usage::color_attachment: return ImageUsage::color_attachment;
     case Usage::sampled_fragment:
     case Usage::sampled_compute: return ImageUsage::sampled;
     case Usage::storage_vertex:
@@ -94,7 +94,7 @@ BufferUsage buffer_usage(Usage usage, Direction direction) {
     case Usage::vertex: return BufferUsage::vertex;
     case Usage::index: return BufferUsage::index;
     case Usage::depth_attachment:
-    case Usage::colour_attachment:
+    case Usage::color_attachment:
     case Usage::sampled_fragment:
     case Usage::sampled_compute: return BufferUsage::none;
   }
@@ -104,7 +104,7 @@ BufferUsage buffer_usage(Usage usage, Direction direction) {
 std::string_view usage_name(Usage usage) {
   switch (usage) {
     case Usage::depth_attachment: return "depth_attachment";
-    case Usage::colour_attachment: return "colour_attachment";
+    case Usage::color_attachment: return "color_attachment";
     case Usage::sampled_fragment: return "sampled_fragment";
     case Usage::sampled_compute: return "sampled_compute";
     case Usage::storage_vertex: return "storage_vertex";

@@ -14,17 +14,17 @@
 namespace sg::rg {
 
 enum class Usage : std::uint8_t {
-  depth_attachment,   // image; read: depth test only; write: depth test and write
-  colour_attachment,  // image; write only (a colour attachment may also be blended, so it reads)
-  sampled_fragment,   // image; read only
-  sampled_compute,    // image; read only
-  storage_vertex,     // image or buffer; write includes read (read-modify-write)
-  storage_fragment,   // image or buffer
-  storage_compute,    // image or buffer
-  transfer,           // image or buffer; read: copy source, write: copy/clear destination
-  indirect,           // buffer; read only (draw/dispatch arguments)
-  vertex,             // buffer; read only
-  index,              // buffer; read only
+  depth_attachment,  // image; read: depth test only; write: depth test and write
+  color_attachment,  // image; write only (a color attachment may also be blended, so it reads)
+  sampled_fragment,  // image; read only
+  sampled_compute,   // image; read only
+  storage_vertex,    // image or buffer; write includes read (read-modify-write)
+  storage_fragment,  // image or buffer
+  storage_compute,   // image or buffer
+  transfer,          // image or buffer; read: copy source, write: copy/clear destination
+  indirect,          // buffer; read only (draw/dispatch arguments)
+  vertex,            // buffer; read only
+  index,             // buffer; read only
 };
 
 enum class Direction : std::uint8_t { read, write };

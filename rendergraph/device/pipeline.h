@@ -16,12 +16,12 @@ class VulkanContext;
 
 UniqueShaderModule create_shader_module(VulkanContext& context, std::span<const uint32_t> spirv);
 
-// How a fragment's colour meets the attachment's.
+// How a fragment's color meets the attachment's.
 enum class Blend {
   none,   // replaces it
-  alpha,  // colour = src * src alpha + dst * (1 - src alpha), for overlays
-  add,    // colour = src + dst, for sums built pass by pass
-  max,    // colour = max(src, dst) per channel, for bounds
+  alpha,  // color = src * src alpha + dst * (1 - src alpha), for overlays
+  add,    // color = src + dst, for sums built pass by pass
+  max,    // color = max(src, dst) per channel, for bounds
 };
 
 struct GraphicsPipelineDesc {

@@ -1,5 +1,5 @@
 #pragma once
-// Copies a colour image back to the CPU (screenshots, tests).
+// Copies a color image back to the CPU (screenshots, tests).
 #include <cstdint>
 #include <vector>
 

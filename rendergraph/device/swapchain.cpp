@@ -82,7 +82,7 @@ bool Swapchain::recreate(VkExtent2D wanted) {
   }
   constexpr VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
   if ((caps.supportedUsageFlags & usage) != usage) {
-    throw VulkanError("the window surface does not allow transfer-destination colour images");
+    throw VulkanError("the window surface does not allow transfer-destination color images");
   }
 
   VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};

@@ -39,7 +39,7 @@ VkExtent2D mip_extent(const rg::ImageDesc& desc, uint32_t mip) {
 }
 
 bool is_attachment(rg::Usage usage) {
-  return usage == rg::Usage::colour_attachment || usage == rg::Usage::depth_attachment;
+  return usage == rg::Usage::color_attachment || usage == rg::Usage::depth_attachment;
 }
 
 }  // namespace
@@ -167,7 +167,7 @@ void GraphExecutor::collect_timings(uint32_t slot_index) {
 
 void GraphExecutor::record_pass(VkCommandBuffer cmd, const rg::CompiledPass& pass,
                                 const rg::PassDeclaration& declaration, PassRecorder& recorder) {
-  colour_attachments_.clear();
+  color_attachments_.clear();
   VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   bool has_depth = false;
   VkExtent2D extent{~0u, ~0u};
@@ -194,27 +194,27 @@ void GraphExecutor::record_pass(VkCommandBuffer cmd, const rg::CompiledPass& pas
       if (access.usage == rg::Usage::depth_attachment) {
         attachment.clearValue.depthStencil = {clear.depth, 0};
       } else {
-        attachment.clearValue.color = {{clear.colour[0], clear.colour[1], clear.colour[2], clear.colour[3]}};
+        attachment.clearValue.color = {{clear.color[0], clear.color[1], clear.color[2], clear.color[3]}};
       }
     }
     if (access.usage == rg::Usage::depth_attachment) {
       depth = attachment;
       has_depth = true;
     } else {
-      colour_attachments_.push_back(attachment);
+      color_attachments_.push_back(attachment);
     }
     const VkExtent2D size = mip_extent(desc, range.base_mip);
     extent = {std::min(extent.width, size.width), std::min(extent.height, size.height)};
     layers = std::max(layers, range.layer_count);
   }
 
-  const bool raster = has_depth || !colour_attachments_.empty();
+  const bool raster = has_depth || !color_attachments_.empty();
   if (raster) {
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = {{0, 0}, extent};
     rendering.layerCount = layers;
-    rendering.colorAttachmentCount = static_cast<uint32_t>(colour_attachments_.size());
-    rendering.pColorAttachments = colour_attachments_.data();
+    rendering.colorAttachmentCount = static_cast<uint32_t>(color_attachments_.size());
+    rendering.pColorAttachments = color_attachments_.data();
     rendering.pDepthAttachment = has_depth ? &depth : nullptr;
     vkCmdBeginRendering(cmd, &rendering);
     recorder.render_extent_ = extent;

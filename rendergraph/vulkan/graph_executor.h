@@ -98,7 +98,7 @@ class GraphExecutor {
   std::vector<PhysicalResource> physical_;
   std::vector<double> pass_ms_;
   BarrierScratch barrier_scratch_;
-  std::vector<VkRenderingAttachmentInfo> colour_attachments_;
+  std::vector<VkRenderingAttachmentInfo> color_attachments_;
 };
 
 }  // namespace sg::vk

@@ -7,7 +7,7 @@
 //     vkCmdDraw(rec.cmd(), 3, 1, 0, 0);
 //   }
 //
-// For a raster pass (one that declared colour or depth attachments) rendering has already begun
+// For a raster pass (one that declared color or depth attachments) rendering has already begun
 // with those attachments, in declaration order, and ends after the function returns; the pass
 // only binds and draws.
 #include <optional>

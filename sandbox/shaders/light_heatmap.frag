@@ -1,5 +1,5 @@
 #version 460
-// How many lights each screen tile shades (light culling's lists, light_tiles.comp), as a colour
+// How many lights each screen tile shades (light culling's lists, light_tiles.comp), as a color
 // over the picture: none transparent, then blue through green and yellow to red at
 // pass.full_scale lights, and white where a tile's list is full (MAX_LIGHTS_PER_TILE: lights
 // beyond it are dropped).
@@ -15,7 +15,7 @@ layout(push_constant) uniform HeatMap {
   float full_scale;  // lights at which the ramp reaches red
 } pass;
 
-layout(location = 0) out vec4 out_colour;
+layout(location = 0) out vec4 out_color;
 
 void main() {
   uvec2 tile = uvec2(gl_FragCoord.xy) / LIGHT_TILE_SIZE;
@@ -24,11 +24,11 @@ void main() {
   for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) lights += ranges[first + g].y;
   if (lights == 0u) discard;
   if (lights >= MAX_LIGHTS_PER_TILE) {
-    out_colour = vec4(1.0, 1.0, 1.0, 0.6);
+    out_color = vec4(1.0, 1.0, 1.0, 0.6);
     return;
   }
   float t = clamp(float(lights) / pass.full_scale, 0.0, 1.0);
   vec3 ramp = t < 0.5 ? mix(vec3(0.0, 0.2, 1.0), vec3(0.0, 1.0, 0.2), t * 2.0)
                       : mix(vec3(1.0, 1.0, 0.0), vec3(1.0, 0.0, 0.0), t * 2.0 - 1.0);
-  out_colour = vec4(ramp, 0.45);
+  out_color = vec4(ramp, 0.45);
 }

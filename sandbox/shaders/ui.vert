@@ -1,9 +1,9 @@
 #version 460
-// Dear ImGui's vertices (ImDrawVert: position in pixels, uv into the font atlas, colour) into
+// Dear ImGui's vertices (ImDrawVert: position in pixels, uv into the font atlas, color) into
 // clip space: clip = position * scale + translate (sandbox/ui_pass.cpp).
 layout(location = 0) in vec2 in_position;
 layout(location = 1) in vec2 in_uv;
-layout(location = 2) in vec4 in_colour;
+layout(location = 2) in vec4 in_color;
 
 layout(push_constant) uniform UiTransform {
   vec2 scale;
@@ -11,10 +11,10 @@ layout(push_constant) uniform UiTransform {
 } transform;
 
 layout(location = 0) out vec2 out_uv;
-layout(location = 1) out vec4 out_colour;
+layout(location = 1) out vec4 out_color;
 
 void main() {
   out_uv = in_uv;
-  out_colour = in_colour;
+  out_color = in_color;
   gl_Position = vec4(in_position * transform.scale + transform.translate, 0.0, 1.0);
 }

@@ -8,9 +8,9 @@
 layout(set = 0, binding = 0) uniform sampler2DArray shadow_atlas;
 
 layout(location = 0) in vec2 in_uv;
-layout(location = 1) in vec4 in_colour;
+layout(location = 1) in vec4 in_color;
 
-layout(location = 0) out vec4 out_colour;
+layout(location = 0) out vec4 out_color;
 
 layout(push_constant) uniform DepthView {
   layout(offset = 16) vec4 depth;  // x: atlas layer; y: near, z: far (perspective); w: 1 when linear
@@ -21,5 +21,5 @@ void main() {
   float near = view.depth.y, far = view.depth.z;
   float linear = view.depth.w > 0.5 ? stored
                                     : (perspective_view_depth(stored, near, far) - near) / (far - near);
-  out_colour = vec4(vec3(linear), 1.0) * in_colour;
+  out_color = vec4(vec3(linear), 1.0) * in_color;
 }

@@ -5,7 +5,7 @@
 // Errors (SceneError): unknown light type; negative or zero range; negative intensity;
 // non-finite numbers; a spot light without its "spot" object; spot cones with inner < 0,
 // outer <= 0, outer > pi/2 or inner > outer; a node referencing a light that does not exist.
-// Clamped with a warning: colour components outside [0, 1]; inner == outer (the smooth rim
+// Clamped with a warning: color components outside [0, 1]; inner == outer (the smooth rim
 // would divide by zero, so inner becomes 0.9 * outer).
 //
 // Absent range means infinite in the extension; the renderer needs a finite one, so we use the

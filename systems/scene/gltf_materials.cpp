@@ -39,10 +39,10 @@ std::vector<Material> import_materials(const tinygltf::Model& model, Scene& scen
       if (image >= 0 && !scene.textures.textures[static_cast<std::size_t>(image)].pixels.empty()) {
         material.base_color_texture = static_cast<std::uint32_t>(image);
       } else {
-        warn(scene, object + ": base colour texture has no decoded image; ignored");
+        warn(scene, object + ": base color texture has no decoded image; ignored");
       }
       if (pbr.baseColorTexture.texCoord != 0) {
-        warn(scene, object + ": base colour texture uses TEXCOORD_" +
+        warn(scene, object + ": base color texture uses TEXCOORD_" +
                         std::to_string(pbr.baseColorTexture.texCoord) + "; TEXCOORD_0 used instead");
       }
     }

@@ -1,6 +1,6 @@
 #pragma once
 // Step 6 of import: images into the TextureLibrary (texture i of the library is glTF image i)
-// and glTF materials into Material values. Only the base colour (factor and texture) maps to
+// and glTF materials into Material values. Only the base color (factor and texture) maps to
 // the engine's Blinn model; kS and the shininess keep Material's defaults. Samplers are
 // ignored (the renderer samples with repeat and linear filtering).
 #include <vector>

@@ -2,7 +2,7 @@
 // Light components (docs/LIGHTING.md section 1). A light entity also carries
 // LocalTransform/WorldTransform and a ShadowSettings; its position is the world matrix's
 // translation and it shines down its local -Z axis (the glTF KHR_lights_punctual convention,
-// used for built-in lights too). Colours are linear RGB; intensity multiplies the colour.
+// used for built-in lights too). Colors are linear RGB; intensity multiplies the color.
 #include <cstdint>
 
 #include <glm/glm.hpp>

@@ -10,7 +10,7 @@ namespace sg::scene {
 
 inline constexpr std::uint32_t no_texture = std::numeric_limits<std::uint32_t>::max();
 
-// How the base colour's alpha (factor times texture) is read, as glTF's material.alphaMode:
+// How the base color's alpha (factor times texture) is read, as glTF's material.alphaMode:
 // ignored (opaque), a cut-out at alpha_cutoff (mask), or the surface's coverage, blended over
 // what lies behind it (blend).
 enum class AlphaMode : std::uint8_t { opaque, mask, blend };

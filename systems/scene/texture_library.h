@@ -1,6 +1,6 @@
 #pragma once
 // Decoded images for materials: always 8-bit RGBA, rows top to bottom, as the renderer uploads
-// them. Colour data is sRGB-encoded as stored in the file (upload as an sRGB format).
+// them. Color data is sRGB-encoded as stored in the file (upload as an sRGB format).
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -67,22 +67,22 @@ TEST(EstimateRequest, SumsMipsAndLayersAndAlignsImagesTo64KiB) {
 // memory, reports the bytes saved, and its first barrier waits for the first's last reads.
 TEST(CompiledAliasing, SequentialIntermediatesShareOneHeap) {
   RenderGraph graph;
-  ImageHandle swapchain = graph.import_image("swapchain", screen_colour_desc, acquired, presentable);
+  ImageHandle swapchain = graph.import_image("swapchain", screen_color_desc, acquired, presentable);
   ImageHandle a{};
   ImageHandle b_image{};
   graph.add_pass("draw a", QueueType::graphics, [&](PassBuilder& b) {
-    a = b.write(b.create_image("a", screen_colour_desc), Usage::colour_attachment);
+    a = b.write(b.create_image("a", screen_color_desc), Usage::color_attachment);
   });
   graph.add_pass("compose a", QueueType::graphics, [&](PassBuilder& b) {
     b.read(a, Usage::sampled_fragment);
-    swapchain = b.write(swapchain, Usage::colour_attachment);
+    swapchain = b.write(swapchain, Usage::color_attachment);
   });
   graph.add_pass("draw b", QueueType::graphics, [&](PassBuilder& b) {
-    b_image = b.write(b.create_image("b", screen_colour_desc), Usage::colour_attachment);
+    b_image = b.write(b.create_image("b", screen_color_desc), Usage::color_attachment);
   });
   graph.add_pass("compose b", QueueType::graphics, [&](PassBuilder& b) {
     b.read(b_image, Usage::sampled_fragment);
-    swapchain = b.write(swapchain, Usage::colour_attachment);
+    swapchain = b.write(swapchain, Usage::color_attachment);
   });
   const auto plan = compile_ok(graph);
 

@@ -16,14 +16,14 @@ const ImageBarrier& only_image_barrier(const BarrierBatch& batch) {
 
 TEST(Barriers, TransientDepthIsDiscardedThenTransitionedForSampling) {
   RenderGraph graph;
-  ImageHandle swapchain = graph.import_image("swapchain", screen_colour_desc, acquired, presentable);
+  ImageHandle swapchain = graph.import_image("swapchain", screen_color_desc, acquired, presentable);
   ImageHandle depth{};
   graph.add_pass("depth prepass", QueueType::graphics, [&](PassBuilder& b) {
     depth = b.write(b.create_image("depth", {1280, 720, Format::d32_sfloat}), Usage::depth_attachment);
   });
   graph.add_pass("lighting", QueueType::graphics, [&](PassBuilder& b) {
     b.read(depth, Usage::sampled_fragment);
-    swapchain = b.write(swapchain, Usage::colour_attachment);
+    swapchain = b.write(swapchain, Usage::color_attachment);
   });
   const auto plan = compile_ok(graph);
 
@@ -42,7 +42,7 @@ TEST(Barriers, TransientDepthIsDiscardedThenTransitionedForSampling) {
   EXPECT_EQ(before_lighting.images[1].resource, swapchain.index);
   EXPECT_EQ(before_lighting.images[1].dependency,
             (Dependency{PipelineStage::color_attachment_output, Access::none,
-                        PipelineStage::color_attachment_output, colour_read_write, ImageLayout::undefined,
+                        PipelineStage::color_attachment_output, color_read_write, ImageLayout::undefined,
                         ImageLayout::attachment_optimal}));
 
   const ImageBarrier& present = only_image_barrier(plan->final_barriers);
@@ -57,13 +57,13 @@ class CubeFace : public ::testing::Test {
  protected:
   void build(const std::vector<RangeState>& initial) {
     ImageHandle cubes = graph.import_image("point shadows", cube_array_desc, initial, sampled_in_fragment);
-    ImageHandle swapchain = graph.import_image("swapchain", screen_colour_desc, acquired, presentable);
+    ImageHandle swapchain = graph.import_image("swapchain", screen_color_desc, acquired, presentable);
     graph.add_pass("light 1 face 3", QueueType::graphics, [&](PassBuilder& b) {
       cubes = b.write(cubes, Usage::depth_attachment, SubresourceRange::cube_face(1, 3));
     });
     graph.add_pass("lighting", QueueType::graphics, [&](PassBuilder& b) {
       b.read(cubes, Usage::sampled_fragment, SubresourceRange::cube(1));
-      swapchain = b.write(swapchain, Usage::colour_attachment);
+      swapchain = b.write(swapchain, Usage::color_attachment);
     });
   }
 

@@ -25,8 +25,8 @@ TEST(AttachmentClear, IsRecordedOnTheWriteAccess) {
 TEST(AttachmentClear, IsRefusedForUsagesThatAreNotAttachments) {
   RenderGraph graph;
   graph.add_pass("copy", QueueType::transfer, [&](PassBuilder& b) {
-    ImageHandle image = b.create_image("image", screen_colour_desc);
-    (void)b.write(image, Usage::transfer, ClearValue::colour_of(1, 0, 0));
+    ImageHandle image = b.create_image("image", screen_color_desc);
+    (void)b.write(image, Usage::transfer, ClearValue::color_of(1, 0, 0));
   });
   ASSERT_EQ(graph.errors().size(), 1u);
   EXPECT_EQ(graph.errors()[0].kind, ErrorKind::invalid_usage);
@@ -36,16 +36,16 @@ TEST(AttachmentClear, IsRefusedForUsagesThatAreNotAttachments) {
 TEST(AttachmentClear, ChangesTheShapeButItsValueDoesNot) {
   const auto shape_with = [](std::optional<ClearValue> clear) {
     RenderGraph graph;
-    graph.add_pass("colour", QueueType::graphics, [&](PassBuilder& b) {
-      ImageHandle image = b.create_image("image", screen_colour_desc);
+    graph.add_pass("color", QueueType::graphics, [&](PassBuilder& b) {
+      ImageHandle image = b.create_image("image", screen_color_desc);
       image =
-          clear ? b.write(image, Usage::colour_attachment, *clear) : b.write(image, Usage::colour_attachment);
+          clear ? b.write(image, Usage::color_attachment, *clear) : b.write(image, Usage::color_attachment);
       b.mark_side_effects();
     });
     return graph_shape(graph);
   };
-  EXPECT_NE(shape_with(std::nullopt), shape_with(ClearValue::colour_of(0, 0, 0)));
-  EXPECT_EQ(shape_with(ClearValue::colour_of(0, 0, 0)), shape_with(ClearValue::colour_of(1, 1, 1)));
+  EXPECT_NE(shape_with(std::nullopt), shape_with(ClearValue::color_of(0, 0, 0)));
+  EXPECT_EQ(shape_with(ClearValue::color_of(0, 0, 0)), shape_with(ClearValue::color_of(1, 1, 1)));
 }
 
 // The atlas is written layer by layer and sampled; the next frame's import must start from the

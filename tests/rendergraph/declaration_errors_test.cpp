@@ -97,9 +97,9 @@ TEST_F(DeclarationErrors, DisjointLayersAndCompatibleReadsDoNotConflict) {
 }
 
 TEST_F(DeclarationErrors, WritingAnImportWithoutAFinalState) {
-  const ImageHandle history = graph.import_image("taa history", screen_colour_desc, sampled_in_fragment);
+  const ImageHandle history = graph.import_image("taa history", screen_color_desc, sampled_in_fragment);
   graph.add_pass("resolve", QueueType::graphics,
-                 [&](PassBuilder& b) { (void)b.write(history, Usage::colour_attachment); });
+                 [&](PassBuilder& b) { (void)b.write(history, Usage::color_attachment); });
 
   const GraphError error = only_error(graph);
   EXPECT_EQ(error.kind, ErrorKind::missing_final_state);
@@ -110,7 +110,7 @@ TEST_F(DeclarationErrors, UsagesThatDoNotExistInThatDirectionOrKind) {
   const BufferHandle lights = graph.import_buffer("lights", {4096}, {});
   graph.add_pass("nonsense", QueueType::graphics, [&](PassBuilder& b) {
     (void)b.write(atlas, Usage::sampled_fragment);
-    b.read(atlas, Usage::colour_attachment);
+    b.read(atlas, Usage::color_attachment);
     b.read(lights, Usage::depth_attachment);
     b.read(atlas, Usage::indirect);
   });
@@ -152,7 +152,7 @@ TEST_F(DeclarationErrors, HandlesFromAnotherGraphOrNowhere) {
 }
 
 TEST_F(DeclarationErrors, CompileReportsEveryErrorAndNoPlan) {
-  graph.add_pass("a", QueueType::graphics, [&](PassBuilder& b) { b.read(atlas, Usage::colour_attachment); });
+  graph.add_pass("a", QueueType::graphics, [&](PassBuilder& b) { b.read(atlas, Usage::color_attachment); });
   graph.add_pass("b", QueueType::graphics, [&](PassBuilder& b) {
     b.read(atlas, Usage::sampled_fragment, SubresourceRange::layer(99));
   });

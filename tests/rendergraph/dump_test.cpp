@@ -16,7 +16,7 @@ class Dumps : public ::testing::Test {
  protected:
   Dumps() {
     ImageHandle atlas = graph.import_image("atlas", shadow_atlas_desc, ResourceState{}, sampled_in_fragment);
-    ImageHandle swapchain = graph.import_image("swapchain", screen_colour_desc, acquired, presentable);
+    ImageHandle swapchain = graph.import_image("swapchain", screen_color_desc, acquired, presentable);
     ImageHandle hdr{};
     ImageHandle bloom{};
     ImageHandle sharp{};
@@ -25,23 +25,23 @@ class Dumps : public ::testing::Test {
     });
     graph.add_pass("lighting", QueueType::graphics, [&](PassBuilder& b) {
       b.read(atlas, Usage::sampled_fragment);
-      hdr = b.write(b.create_image("hdr", screen_colour_desc), Usage::colour_attachment);
+      hdr = b.write(b.create_image("hdr", screen_color_desc), Usage::color_attachment);
     });
     graph.add_pass("debug", QueueType::graphics, [&](PassBuilder& b) {
       b.read(hdr, Usage::sampled_fragment);
-      (void)b.write(b.create_image("debug", screen_colour_desc), Usage::colour_attachment);
+      (void)b.write(b.create_image("debug", screen_color_desc), Usage::color_attachment);
     });
     graph.add_pass("bloom", QueueType::compute, [&](PassBuilder& b) {
       b.read(hdr, Usage::sampled_compute);
-      bloom = b.write(b.create_image("bloom", screen_colour_desc), Usage::storage_compute);
+      bloom = b.write(b.create_image("bloom", screen_color_desc), Usage::storage_compute);
     });
     graph.add_pass("sharpen", QueueType::graphics, [&](PassBuilder& b) {
       b.read(bloom, Usage::sampled_fragment);
-      sharp = b.write(b.create_image("sharp", screen_colour_desc), Usage::colour_attachment);
+      sharp = b.write(b.create_image("sharp", screen_color_desc), Usage::color_attachment);
     });
     graph.add_pass("tonemap", QueueType::graphics, [&](PassBuilder& b) {
       b.read(sharp, Usage::sampled_fragment);
-      swapchain = b.write(swapchain, Usage::colour_attachment);
+      swapchain = b.write(swapchain, Usage::color_attachment);
     });
     plan = compile_ok(graph);
   }

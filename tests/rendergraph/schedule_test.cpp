@@ -19,7 +19,7 @@ class FrameSchedule : public ::testing::Test {
   FrameSchedule() {
     ImageHandle atlas =
         graph.import_image("atlas", shadow_atlas_desc, sampled_in_fragment, sampled_in_fragment);
-    ImageHandle swapchain = graph.import_image("swapchain", screen_colour_desc, acquired, presentable);
+    ImageHandle swapchain = graph.import_image("swapchain", screen_color_desc, acquired, presentable);
     ImageHandle depth{};
     graph.add_pass("shadow", QueueType::graphics, [&](PassBuilder& b) {
       atlas = b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(0));
@@ -29,12 +29,12 @@ class FrameSchedule : public ::testing::Test {
     });
     graph.add_pass("debug view", QueueType::graphics, [&](PassBuilder& b) {
       b.read(depth, Usage::sampled_fragment);
-      (void)b.write(b.create_image("debug", screen_colour_desc), Usage::colour_attachment);
+      (void)b.write(b.create_image("debug", screen_color_desc), Usage::color_attachment);
     });
     graph.add_pass("lighting", QueueType::graphics, [&](PassBuilder& b) {
       b.read(atlas, Usage::sampled_fragment);
       b.read(depth, Usage::depth_attachment);
-      swapchain = b.write(swapchain, Usage::colour_attachment);
+      swapchain = b.write(swapchain, Usage::color_attachment);
     });
     graph.add_pass("readback", QueueType::transfer, [&](PassBuilder& b) {
       b.read(depth, Usage::transfer);
@@ -73,11 +73,11 @@ TEST(Schedule, CullingFollowsChainsOfUnreadPasses) {
   RenderGraph graph;
   ImageHandle a{};
   graph.add_pass("make a", QueueType::compute, [&](PassBuilder& b) {
-    a = b.write(b.create_image("a", screen_colour_desc), Usage::storage_compute);
+    a = b.write(b.create_image("a", screen_color_desc), Usage::storage_compute);
   });
   graph.add_pass("a to b", QueueType::compute, [&](PassBuilder& b) {
     b.read(a, Usage::sampled_compute);
-    (void)b.write(b.create_image("b", screen_colour_desc), Usage::storage_compute);
+    (void)b.write(b.create_image("b", screen_color_desc), Usage::storage_compute);
   });
   const auto plan = compile_ok(graph);
   EXPECT_TRUE(plan->passes.empty());
@@ -106,7 +106,7 @@ TEST(Schedule, APartialWriteKeepsTheWriterOfTheRestAlive) {
 TEST(Schedule, AWriterWaitsForTheReadersOfTheVersionItReplaces) {
   RenderGraph graph;
   ImageHandle history =
-      graph.import_image("history", screen_colour_desc, sampled_in_fragment, sampled_in_fragment);
+      graph.import_image("history", screen_color_desc, sampled_in_fragment, sampled_in_fragment);
   graph.add_pass("reproject", QueueType::graphics, [&](PassBuilder& b) {
     b.read(history, Usage::sampled_fragment);
     b.mark_side_effects();
@@ -116,7 +116,7 @@ TEST(Schedule, AWriterWaitsForTheReadersOfTheVersionItReplaces) {
     b.mark_side_effects();
   });
   graph.add_pass("store history", QueueType::graphics,
-                 [&](PassBuilder& b) { history = b.write(history, Usage::colour_attachment); });
+                 [&](PassBuilder& b) { history = b.write(history, Usage::color_attachment); });
   const auto plan = compile_ok(graph);
   EXPECT_EQ(pass_named(*plan, "store history").depends_on, (std::vector<std::uint32_t>{0, 1}));
 }

@@ -85,7 +85,7 @@ TEST(ReusedMemoryState, WaitsForThePreviousOwnerButKeepsNothing) {
   SyncState state = reused_memory_state(previous);
   EXPECT_EQ(state.layout, ImageLayout::undefined);
   const auto dependency = advance(
-      state, {PipelineStage::color_attachment_output, colour_read_write, ImageLayout::attachment_optimal});
+      state, {PipelineStage::color_attachment_output, color_read_write, ImageLayout::attachment_optimal});
   ASSERT_TRUE(dependency);
   EXPECT_EQ(dependency->src_stages, PipelineStage::fragment_shader);
   EXPECT_EQ(dependency->old_layout, ImageLayout::undefined);

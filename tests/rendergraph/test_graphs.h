@@ -15,19 +15,19 @@ namespace sg::rg::testing {
 
 inline constexpr ImageDesc shadow_atlas_desc{2048, 2048, Format::d32_sfloat, 16, 1, false};
 inline constexpr ImageDesc cube_array_desc{512, 512, Format::d16_unorm, 24, 1, true};  // 4 cubes
-inline constexpr ImageDesc screen_colour_desc{1280, 720, Format::rgba16_sfloat, 1, 1, false};
+inline constexpr ImageDesc screen_color_desc{1280, 720, Format::rgba16_sfloat, 1, 1, false};
 
 inline constexpr PipelineStage depth_tests =
     PipelineStage::early_fragment_tests | PipelineStage::late_fragment_tests;
 inline constexpr Access depth_read_write =
     Access::depth_stencil_attachment_read | Access::depth_stencil_attachment_write;
-inline constexpr Access colour_read_write = Access::color_attachment_read | Access::color_attachment_write;
+inline constexpr Access color_read_write = Access::color_attachment_read | Access::color_attachment_write;
 
 // How a shadow map is left for the lighting pass of the next frame.
 inline constexpr ResourceState sampled_in_fragment{
     PipelineStage::fragment_shader, Access::shader_sampled_read, ImageLayout::read_only_optimal};
 inline constexpr ResourceState presentable{PipelineStage::none, Access::none, ImageLayout::present_src};
-// A swapchain image right after acquire: its semaphore wait is at colour attachment output.
+// A swapchain image right after acquire: its semaphore wait is at color attachment output.
 inline constexpr ResourceState acquired{PipelineStage::color_attachment_output, Access::none,
                                         ImageLayout::undefined};
 

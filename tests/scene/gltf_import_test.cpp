@@ -200,7 +200,7 @@ TEST(GltfImport, MatrixWithShearIsApproximatedWithAWarning) {
   EXPECT_TRUE(has_warning(scene, "nodes[0]: matrix has shear"));
 }
 
-TEST(GltfImport, BaseColourFactorAndTexture) {
+TEST(GltfImport, BaseColorFactorAndTexture) {
   TempDir dir;
   GltfWriter file;
   // A 1x1 red PNG, as stb_image_write would produce it.

@@ -14,7 +14,7 @@ namespace {
 using glsl::TONE_KNEE;
 using glsl::tone_map;
 
-TEST(ToneMap, LeavesColoursBelowTheKneeAsTheyAre) {
+TEST(ToneMap, LeavesColorsBelowTheKneeAsTheyAre) {
   // The single-light tests compare pixels with the lighting formula: tone mapping must not move
   // them while the scene is lit within range.
   for (const glm::vec3 c :
@@ -34,7 +34,7 @@ TEST(ToneMap, CompressesHighlightsBelowOneKeepingHue) {
       EXPECT_LT(mapped.x, 1.0f);
       EXPECT_GT(mapped.x, previous);
     }
-    EXPECT_NEAR(mapped.y / mapped.x, 0.5f, 1e-5f) << "the colour is scaled, not clipped per channel";
+    EXPECT_NEAR(mapped.y / mapped.x, 0.5f, 1e-5f) << "the color is scaled, not clipped per channel";
     EXPECT_NEAR(mapped.z / mapped.x, 0.25f, 1e-5f);
     previous = mapped.x;
   }

@@ -76,7 +76,7 @@ class AlphaMaterials : public GpuTest {
     return vk::read_rgba8(context, frame.image());
   }
 
-  // The linear colour where `scene`'s camera sees world point `p`.
+  // The linear color where `scene`'s camera sees world point `p`.
   static glm::vec3 seen(const vk::Rgba8Image& image, const sandbox::SandboxScene& scene, glm::vec3 p) {
     const glm::vec4 clip =
         projection_matrix(scene.lens, float(width) / height) * view_matrix(scene.pose) * glm::vec4(p, 1.0f);
@@ -86,7 +86,7 @@ class AlphaMaterials : public GpuTest {
     return {vk::srgb_to_linear(pixel[0]), vk::srgb_to_linear(pixel[1]), vk::srgb_to_linear(pixel[2])};
   }
 
-  // The mean linear colour over a horizontal 0.4 m square around `centre`.
+  // The mean linear color over a horizontal 0.4 m square around `centre`.
   static glm::vec3 mean_seen(const vk::Rgba8Image& image, const sandbox::SandboxScene& scene,
                              glm::vec3 centre) {
     glm::vec3 sum(0.0f);
@@ -160,7 +160,7 @@ TEST_F(AlphaMaterials, AMaskedCardShowsAndCastsItsTexturesShape) {
 
 // A blue pane of alpha 0.5 (alphaMode BLEND) and an opaque card like it, 1 m above a grey floor,
 // under a sun slanting towards +X with PCF: seen through the pane, the floor is half the floor's
-// colour and half the card's, on every lighting path; the floor in the pane's shadow (seen
+// color and half the card's, on every lighting path; the floor in the pane's shadow (seen
 // beside the pane) gets about half of what the card takes away, on every way of drawing shadow
 // views.
 TEST_F(AlphaMaterials, ATransparentPaneTintsWhatIsBehindAndCastsAPartialShadow) {
@@ -223,7 +223,7 @@ TEST_F(AlphaMaterials, OverlappingPanesBlendBackToFront) {
     glass.alpha_mode = scene::AlphaMode::blend;
     scene::add_instance(scene.scene, quad, {{0.0f, height, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
                         glass);
-    // The same colour opaque, as a reference, 4 m off.
+    // The same color opaque, as a reference, 4 m off.
     scene::add_instance(scene.scene, quad, {{4.0f, height, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
                         matte(glm::vec4(glm::vec3(color), 1.0f)));
   }
@@ -241,7 +241,7 @@ TEST_F(AlphaMaterials, OverlappingPanesBlendBackToFront) {
     const glm::vec3 floor = mean_seen(image, scene, {-2.0f, 0.0f, 3.0f});
     const glm::vec3 opaque_red = mean_seen(image, scene, {4.0f, 2.0f, 0.0f});  // the red card over the blue
     const glm::vec3 through = mean_seen(image, scene, {0.0f, 2.0f, 0.0f});
-    // The blue card's lit colour, as the red's with the channels swapped (same light, same height).
+    // The blue card's lit color, as the red's with the channels swapped (same light, same height).
     const glm::vec3 opaque_blue(opaque_red.b, opaque_red.g, opaque_red.r);
     const glm::vec3 expected = 0.5f * opaque_red + 0.25f * opaque_blue + 0.25f * floor;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(through[c], expected[c], 0.03f) << "channel " << c;
@@ -329,7 +329,7 @@ TEST_F(AlphaMaterials, ADoubleSidedCardShowsItsBackFaceLitFromItsSide) {
   };
   for (const LightingPath path : every_path) {
     SCOPED_TRACE(std::string(lighting_path_name(path)));
-    EXPECT_NEAR(card_seen(false, path), background_colour.g, 0.01f) << "the background";
+    EXPECT_NEAR(card_seen(false, path), background_color.g, 0.01f) << "the background";
     EXPECT_GT(card_seen(true, path), 0.4f) << "the lit back face";
   }
 }

@@ -58,19 +58,19 @@ TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
   for (uint32_t frame = 0; frame < 12; ++frame) {
     std::vector<ecs::Entity> all = instances_of(world);
     ASSERT_GT(all.size(), 2000u);
-    // Most frames move a few instances and recolour one; some change the instance set.
+    // Most frames move a few instances and recolor one; some change the instance set.
     ecs::Entity moved;
     for (int m = 0; m < 40; ++m) {
       moved = all[random() % all.size()];
       world.get_mut<ecs::LocalTransform>(moved).translation.x += 0.5f;
     }
-    const auto recolour = [&](ecs::Entity entity, int channel) {
+    const auto recolor = [&](ecs::Entity entity, int channel) {
       if (world.has<scene::Material>(entity)) {
         world.get_mut<scene::Material>(entity).base_color[channel] = float(frame) / 12.0f;
       }
     };
-    recolour(all[random() % all.size()], 0);
-    recolour(moved, 1);  // moved and recoloured in one frame
+    recolor(all[random() % all.size()], 0);
+    recolor(moved, 1);  // moved and recolored in one frame
     if (frame == 3) scene::add_instance(s, 0, {{1.0f, 2.0f, 3.0f}}, scene::Material{});
     if (frame == 5) world.destroy(all[random() % all.size()]);
     if (frame == 7) world.get_mut<scene::MeshInstance>(all[random() % all.size()]).casts_shadow = false;
@@ -238,7 +238,7 @@ TEST_F(GpuSceneTest, AMaterialThatChangesDrawClassLaysTheInstancesOutAgain) {
     gpu.gather(s.world);
   };
   edit([](scene::Material& m) { m.base_color = glm::vec4(1, 0, 0, 1); });
-  EXPECT_FALSE(gpu.laid_out_in_last_gather()) << "a new colour stays in its class";
+  EXPECT_FALSE(gpu.laid_out_in_last_gather()) << "a new color stays in its class";
   edit([](scene::Material& m) { m.alpha_mode = scene::AlphaMode::mask; });
   EXPECT_TRUE(gpu.laid_out_in_last_gather());
   EXPECT_TRUE(gpu.has_draw_class(draw_masked));
@@ -273,7 +273,7 @@ TEST_F(GpuSceneTest, MovedInstancesAreMovingUntilTheNextLayout) {
     return static_cast<uint32_t>(std::find(keys.begin(), keys.end(), ecs::entity_key(entity)) - keys.begin());
   };
   frame([&] { s.world.get_mut<scene::Material>(painted).base_color = glm::vec4(1, 0, 0, 1); });
-  EXPECT_TRUE(gpu.moving_instances().empty()) << "a new colour moves nothing";
+  EXPECT_TRUE(gpu.moving_instances().empty()) << "a new color moves nothing";
   frame([&] { s.world.get_mut<ecs::LocalTransform>(moved).translation.y = 2.0f; });
   const uint32_t m = instance_of(moved);
   EXPECT_TRUE(gpu.moving(m));

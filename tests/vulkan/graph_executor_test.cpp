@@ -21,7 +21,7 @@ namespace {
 using namespace sg::rg;
 
 constexpr uint32_t size = 16;
-constexpr ImageDesc colour_desc{size, size, Format::rgba8_unorm};
+constexpr ImageDesc color_desc{size, size, Format::rgba8_unorm};
 constexpr ResourceState transfer_source{PipelineStage::all_transfer, Access::transfer_read,
                                         ImageLayout::transfer_src_optimal};
 
@@ -80,8 +80,8 @@ void add_copy(RenderGraph& graph, const char* name, ImageHandle source, ImageHan
 ImageHandle add_clear(RenderGraph& graph, const char* name, ClearValue clear) {
   ImageHandle image;
   graph.add_pass(name, QueueType::graphics, [&](PassBuilder& b) {
-    image = b.create_image(name, colour_desc);
-    image = b.write(image, Usage::colour_attachment, clear);
+    image = b.create_image(name, color_desc);
+    image = b.write(image, Usage::color_attachment, clear);
   });
   return image;
 }
@@ -100,7 +100,7 @@ void expect_every_pixel(const vk::Rgba8Image& image, uint8_t r, uint8_t g, uint8
 TEST_F(GraphExecutorTest, ClearsAndCopiesThroughTransientsIntoTheImportedImage) {
   RenderGraph graph;
   ImageHandle out = import_output(graph);
-  const ImageHandle red = add_clear(graph, "red", ClearValue::colour_of(1, 0, 0));
+  const ImageHandle red = add_clear(graph, "red", ClearValue::color_of(1, 0, 0));
   add_copy(graph, "copy", red, out);
   run(graph);
   frames.wait_idle();
@@ -112,9 +112,9 @@ TEST_F(GraphExecutorTest, AliasedTransientsKeepTheirOwnContents) {
   // and synchronization validation must find the reuse of the memory properly ordered.
   RenderGraph graph;
   ImageHandle out = import_output(graph);
-  const ImageHandle red = add_clear(graph, "red", ClearValue::colour_of(1, 0, 0));
+  const ImageHandle red = add_clear(graph, "red", ClearValue::color_of(1, 0, 0));
   add_copy(graph, "copy red", red, out);
-  const ImageHandle blue = add_clear(graph, "blue", ClearValue::colour_of(0, 0, 1));
+  const ImageHandle blue = add_clear(graph, "blue", ClearValue::color_of(0, 0, 1));
   add_copy(graph, "copy blue", blue, out);
   run(graph);
   frames.wait_idle();
@@ -130,7 +130,7 @@ TEST_F(GraphExecutorTest, ImportedStatesCarryAcrossFramesAndLoadKeepsContents) {
   {
     RenderGraph graph;
     ImageHandle out = import_output(graph);
-    add_copy(graph, "copy green", add_clear(graph, "green", ClearValue::colour_of(0, 1, 0)), out);
+    add_copy(graph, "copy green", add_clear(graph, "green", ClearValue::color_of(0, 1, 0)), out);
     run(graph);
   }
   {
@@ -140,7 +140,7 @@ TEST_F(GraphExecutorTest, ImportedStatesCarryAcrossFramesAndLoadKeepsContents) {
     ASSERT_EQ(initial.size(), 1u);
     EXPECT_EQ(initial[0].state, transfer_source);
     graph.add_pass("load only", QueueType::graphics,
-                   [&](PassBuilder& b) { out = b.write(out, Usage::colour_attachment); });
+                   [&](PassBuilder& b) { out = b.write(out, Usage::color_attachment); });
     run(graph);
   }
   frames.wait_idle();
@@ -151,7 +151,7 @@ TEST_F(GraphExecutorTest, ARecreatedImportStartsUndefined) {
   {
     RenderGraph graph;
     ImageHandle out = import_output(graph);
-    add_copy(graph, "copy green", add_clear(graph, "green", ClearValue::colour_of(0, 1, 0)), out);
+    add_copy(graph, "copy green", add_clear(graph, "green", ClearValue::color_of(0, 1, 0)), out);
     run(graph);
   }
   frames.wait_idle();
@@ -167,7 +167,7 @@ TEST_F(GraphExecutorTest, ARecreatedImportStartsUndefined) {
   ImageHandle out = import_output(graph);
   // The old image's states would make the first barrier claim a layout the new one never had.
   EXPECT_TRUE(graph.resources()[out.index].initial_states.empty());
-  add_copy(graph, "copy red", add_clear(graph, "red", ClearValue::colour_of(1, 0, 0)), out);
+  add_copy(graph, "copy red", add_clear(graph, "red", ClearValue::color_of(1, 0, 0)), out);
   run(graph);
   frames.wait_idle();
   expect_every_pixel(vk::read_rgba8(context, output), 255, 0, 0);
@@ -178,7 +178,7 @@ TEST_F(GraphExecutorTest, ReportsPerPassGpuMillisecondsAfterTheSlotComesAround) 
   for (uint32_t frame = 0; frame <= frames.frames_in_flight(); ++frame) {
     RenderGraph graph;
     ImageHandle out = import_output(graph);
-    add_copy(graph, "copy", add_clear(graph, "red", ClearValue::colour_of(1, 0, 0)), out);
+    add_copy(graph, "copy", add_clear(graph, "red", ClearValue::color_of(1, 0, 0)), out);
     run(graph);
   }
   frames.wait_idle();
@@ -196,7 +196,7 @@ TEST_F(GraphExecutorTest, ReportsPerPassGpuMillisecondsAfterTheSlotComesAround) 
 TEST_F(GraphExecutorTest, AnUnboundImportIsAClearError) {
   RenderGraph graph;
   ImageHandle out = import_output(graph);
-  add_copy(graph, "copy", add_clear(graph, "red", ClearValue::colour_of(1, 0, 0)), out);
+  add_copy(graph, "copy", add_clear(graph, "red", ClearValue::color_of(1, 0, 0)), out);
   const CompileResult compiled = compile(graph);
   vk::FrameSlot& frame = frames.begin_frame();
   try {
@@ -221,11 +221,11 @@ TEST_F(GraphExecutorTest, RendersIntoOneLayerOfAnImportedArrayAndLeavesTheOthers
   const ImageDesc desc{size, size, Format::rgba8_unorm, 3};
   ImageHandle array = graph.import_image("layers", desc, ResourceState{}, transfer_source);
   graph.add_pass("all grey", QueueType::graphics, [&](PassBuilder& b) {
-    array = b.write(array, Usage::colour_attachment, ClearValue::colour_of(0.5f, 0.5f, 0.5f));
+    array = b.write(array, Usage::color_attachment, ClearValue::color_of(0.5f, 0.5f, 0.5f));
   });
   graph.add_pass("layer 1 white", QueueType::graphics, [&](PassBuilder& b) {
     array =
-        b.write(array, Usage::colour_attachment, ClearValue::colour_of(1, 1, 1), SubresourceRange::layer(1));
+        b.write(array, Usage::color_attachment, ClearValue::color_of(1, 1, 1), SubresourceRange::layer(1));
   });
   const CompileResult compiled = compile(graph);
   ASSERT_TRUE(compiled.errors.empty());

@@ -100,7 +100,7 @@ TEST_F(SandboxFrameTest, DefaultSceneRendersThroughTheGraph) {
   // Nothing moves in the default scene: later frames keep every map.
   const vk::Rgba8Image image = render(lit_by(LightingPath::deferred), 3);
   EXPECT_EQ(passes, lighting);
-  // Something was drawn: the picture is not a single colour.
+  // Something was drawn: the picture is not a single color.
   const uint8_t* first = image.at(0, 0);
   bool varied = false;
   for (uint32_t y = 0; y < height && !varied; ++y) {
@@ -141,7 +141,7 @@ double share_differing(const vk::Rgba8Image& a, const vk::Rgba8Image& b, int lev
 }
 
 // Deferred lighting against a forward path: the same formulas, but the G-buffer has 16-bit
-// normals and 8-bit base colours, and deferred takes positions back from the depth buffer, a
+// normals and 8-bit base colors, and deferred takes positions back from the depth buffer, a
 // hair from the rasterizer's: a pixel on a shadow's very edge may fall on the other side.
 void expect_same_but_edges(const vk::Rgba8Image& forward, const vk::Rgba8Image& deferred) {
   EXPECT_LE(share_differing(forward, deferred, 2), 0.001) << "pixels more than 2 levels of 255 apart";
@@ -218,7 +218,7 @@ TEST_F(SandboxFrameTest, DeferredGroupsOfManyLightsMatchForward) {
 // Deferred lighting's passes as compute dispatches or as fragment passes blending into the lit sum,
 // and in compute the lit sum started by a pass of its own or by the G-buffer: the same shading code
 // over the same tiles, so the same picture to rounding (the 16-bit sum, and the G-buffer's ambient
-// term takes the base colour before its 8-bit storage).
+// term takes the base color before its 8-bit storage).
 TEST_F(SandboxFrameTest, DeferredLightingInFragmentPassesMatchesCompute) {
   sandbox::Options options = lit_by(LightingPath::deferred);
   options.deferred_passes = DeferredPasses::compute;
@@ -257,7 +257,7 @@ TEST_F(SandboxFrameTest, AutomaticLightingFusesAFewLightsOnACpuDevice) {
 }
 
 // The shadow-only view: white surfaces under white light, so every pixel is grey but the
-// background (the clear colour, as in the top-left corner), on every lighting path alike, and
+// background (the clear color, as in the top-left corner), on every lighting path alike, and
 // unlike the lit picture.
 TEST_F(SandboxFrameTest, TheShadowOnlyViewIsGreyOnEveryLightingPath) {
   const auto grey_fraction = [](const vk::Rgba8Image& image) {
@@ -427,24 +427,24 @@ TEST_F(SandboxFrameTest, PausedAnimationRedrawsNoShadowMap) {
   frames.wait_idle();
 }
 
-// --light-heatmap colours the tiles by how many lights light culling kept for them: the default
+// --light-heatmap colors the tiles by how many lights light culling kept for them: the default
 // scene's floor is lit everywhere, so most of the picture changes; every-light forward (--naive)
 // has no tiles and so no heat map.
-TEST_F(SandboxFrameTest, TheLightHeatMapColoursTheLitTiles) {
+TEST_F(SandboxFrameTest, TheLightHeatMapColorsTheLitTiles) {
   const vk::Rgba8Image plain = render(sandbox::Options{}, 1);
   sandbox::Options heat;
   heat.light_heatmap = true;
-  const vk::Rgba8Image coloured = render(heat, 1);
+  const vk::Rgba8Image colored = render(heat, 1);
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "light heat map"), 1);
-  EXPECT_GT(largest_difference(plain, coloured), 40);
+  EXPECT_GT(largest_difference(plain, colored), 40);
   heat.naive = true;
   render(heat, 1);
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "light heat map"), 0);
 }
 
-// A material's base-colour texture multiplies its base colour: a white floor with a green
+// A material's base-color texture multiplies its base color: a white floor with a green
 // texture renders green, the same floor without it grey.
-TEST_F(SandboxFrameTest, MaterialTexturesTintTheBaseColour) {
+TEST_F(SandboxFrameTest, MaterialTexturesTintTheBaseColor) {
   const auto floor_pixel = [&](bool textured) {
     sandbox::SandboxScene scene;
     scene.scene.name = "textured floor";

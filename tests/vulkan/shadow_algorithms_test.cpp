@@ -2,10 +2,10 @@
 // box and one light (tests/support/floor_box_scene.h); every render goes through the sandbox's frame graph
 // with validation and synchronization validation on.
 //
-// The shadow factor of each pixel is measured, not guessed from colours: the scene is rendered
+// The shadow factor of each pixel is measured, not guessed from colors: the scene is rendered
 // with shadows (S), without (U) and with the light off (D), and in linear light
 // shade = (U - S) / (U - D), which is the `shade` of docs/LIGHTING.md section 2 for a black shadow
-// colour and density 1 (the floor has no specular term, so the (1 - shade) * S term vanishes).
+// color and density 1 (the floor has no specular term, so the (1 - shade) * S term vanishes).
 #include <algorithm>
 #include <cmath>
 #include <optional>

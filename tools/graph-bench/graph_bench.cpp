@@ -24,7 +24,7 @@ void add_gbuffer(RenderGraph& graph, ImageHandle& depth, ImageHandle& normals) {
   graph.add_pass("gbuffer", QueueType::graphics, [&](PassBuilder& b) {
     depth = b.write(b.create_image("depth", {1920, 1080, Format::d32_sfloat}), Usage::depth_attachment);
     normals =
-        b.write(b.create_image("normals", {1920, 1080, Format::rgba16_sfloat}), Usage::colour_attachment);
+        b.write(b.create_image("normals", {1920, 1080, Format::rgba16_sfloat}), Usage::color_attachment);
   });
 }
 
@@ -37,7 +37,7 @@ RenderGraph build_frame(std::uint32_t passes) {
                          ResourceState{PipelineStage::none, Access::none, ImageLayout::present_src});
   if (passes == 1) {
     graph.add_pass("clear", QueueType::graphics,
-                   [&](PassBuilder& b) { swapchain = b.write(swapchain, Usage::colour_attachment); });
+                   [&](PassBuilder& b) { swapchain = b.write(swapchain, Usage::color_attachment); });
     return graph;
   }
   ImageHandle atlas = graph.import_image("shadow atlas", atlas_desc, sampled, sampled);
@@ -54,7 +54,7 @@ RenderGraph build_frame(std::uint32_t passes) {
       ImageHandle moments{};
       graph.add_pass("moments " + light, QueueType::graphics, [&](PassBuilder& b) {
         moments = b.write(b.create_image("moments " + light, {1024, 1024, Format::rg16_sfloat}),
-                          Usage::colour_attachment);
+                          Usage::color_attachment);
       });
       graph.add_pass("blur " + light, QueueType::compute, [&](PassBuilder& b) {
         b.read(moments, Usage::sampled_compute);
@@ -76,7 +76,7 @@ RenderGraph build_frame(std::uint32_t passes) {
     b.read(normals, Usage::sampled_fragment);
     b.read(atlas, Usage::sampled_fragment);
     b.read(cubes, Usage::sampled_fragment);
-    swapchain = b.write(swapchain, Usage::colour_attachment);
+    swapchain = b.write(swapchain, Usage::color_attachment);
   });
   return graph;
 }

@@ -32,7 +32,7 @@ vk::Image make_depth_target(vk::VulkanContext& context, uint32_t size, uint32_t 
 // Records UNDEFINED -> DEPTH_ATTACHMENT_OPTIMAL for every layer (the contents are discarded).
 void begin_depth_writes(VkCommandBuffer cmd, const vk::Image& target);
 
-// Begins dynamic rendering into `view` (a depth attachment of `layer_count` layers, no colour),
+// Begins dynamic rendering into `view` (a depth attachment of `layer_count` layers, no color),
 // loading or clearing to 1, and sets the viewport and scissor to the whole size x size target.
 void begin_depth_pass(VkCommandBuffer cmd, VkImageView view, uint32_t size, VkAttachmentLoadOp load,
                       uint32_t layer_count = 1);

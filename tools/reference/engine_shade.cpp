@@ -34,7 +34,7 @@ constexpr float saturated_step = 1.0f / 16.0f;
 constexpr int max_exposure_attempts = 8;
 
 // The peak_quantile of the lit surface pixels of `picture` (0 if none is lit). Surfaces only: the
-// background's clear colour is no light's.
+// background's clear color is no light's.
 float bright_quantile(const std::vector<float>& picture, const vk::DepthImage& depth) {
   std::vector<float> lit;
   for (size_t i = 0; i < picture.size(); ++i) {

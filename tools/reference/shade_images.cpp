@@ -10,8 +10,8 @@ constexpr uint8_t not_measured[4] = {0, 0, 64, 255};
 
 uint8_t byte(float value) { return uint8_t(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f)); }
 
-template <typename Colour>
-vk::Rgba8Image image(uint32_t width, uint32_t height, const std::vector<bool>& measured, Colour colour) {
+template <typename Color>
+vk::Rgba8Image image(uint32_t width, uint32_t height, const std::vector<bool>& measured, Color color) {
   vk::Rgba8Image out{width, height, std::vector<uint8_t>(size_t{width} * height * 4)};
   for (size_t i = 0; i < measured.size(); ++i) {
     uint8_t* pixel = &out.pixels[i * 4];
@@ -19,7 +19,7 @@ vk::Rgba8Image image(uint32_t width, uint32_t height, const std::vector<bool>& m
       std::copy(std::begin(not_measured), std::end(not_measured), pixel);
       continue;
     }
-    colour(i, pixel);
+    color(i, pixel);
     pixel[3] = 255;
   }
   return out;
