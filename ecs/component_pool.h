@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "ecs/owning_group.h"
 #include "ecs/sparse_set.h"
 
 namespace sg::ecs {

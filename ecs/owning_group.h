@@ -5,10 +5,9 @@
 #include <vector>
 
 #include "ecs/entity.h"
+#include "ecs/fwd.h"
 
 namespace sg::ecs {
-
-class SparseSet;
 
 // Keeps the entities that have every one of its pools' components in the first size() slots of
 // each of those pools, in the same order, so that a query over them walks parallel arrays with no

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "ecs/query.h"
 #include "ecs/thread_pool.h"
 #include "ecs/world.h"
 

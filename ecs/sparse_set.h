@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "ecs/entity.h"
+#include "ecs/fwd.h"
 #include "ecs/large_array.h"
-#include "ecs/owning_group.h"
 
 namespace sg::ecs {
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ecs/hierarchy.h"
+#include "ecs/query.h"
 #include "ecs/transform.h"
 
 namespace sg::ecs {

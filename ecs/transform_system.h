@@ -2,6 +2,7 @@
 
 #include <cstddef>
 
+#include "ecs/fwd.h"
 #include "ecs/world.h"
 
 namespace sg::ecs {

@@ -14,11 +14,9 @@
 #include "ecs/component_pool.h"
 #include "ecs/entity.h"
 #include "ecs/entity_registry.h"
+#include "ecs/fwd.h"
 
 namespace sg::ecs {
-
-template <typename... Components>
-class Query;
 
 // Entities and their components. Any copyable or movable struct is a component; nothing needs
 // registering.
@@ -211,7 +209,3 @@ class World {
 };
 
 }  // namespace sg::ecs
-
-// World::query returns a Query, so including the world gives you queries too. query.h includes
-// this header first; the include guard makes the cycle harmless.
-#include "ecs/query.h"

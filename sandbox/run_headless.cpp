@@ -5,6 +5,7 @@
 #include <variant>
 #include <vector>
 
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/frame_ring.h"

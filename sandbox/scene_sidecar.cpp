@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "ecs/transform_system.h"
 #include "systems/scene/lights.h"

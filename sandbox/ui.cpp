@@ -11,6 +11,7 @@
 #include <imgui.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"

@@ -2,9 +2,38 @@
 
 #include <string>
 
+#include "rendergraph/vulkan/plan_translation.h"
+#include "shaders/scene.vert.spv.h"
 #include "systems/gpu_textures.h"
+#include "systems/light_resources.h"
+#include "systems/shader_bindings.h"
 
 namespace sg {
+
+std::vector<VkDescriptorSetLayoutBinding> lit_camera_bindings(
+    std::vector<VkDescriptorSetLayoutBinding> more) {
+  constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+  more.insert(more.begin(), {{bindings::instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                              VK_SHADER_STAGE_VERTEX_BIT | fragment, nullptr},
+                             {bindings::material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                              1, fragment, nullptr}});
+  return LightResources::bindings(fragment, std::move(more));
+}
+
+vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
+                                              std::vector<VkFormat> color_formats, VkPipelineLayout layout,
+                                              std::string name) {
+  vk::GraphicsPipelineDesc desc;
+  desc.vertex_spirv = scene_vert;
+  desc.fragment_spirv = fragment;
+  scene_vertex_input(desc, VertexInput::surface);
+  desc.color_formats = std::move(color_formats);
+  desc.depth_format = vk::to_vk(camera_depth_format);
+  desc.depth_compare = camera_depth_test;
+  desc.layout = layout;
+  desc.name = std::move(name);
+  return desc;
+}
 
 void CameraPipelines::prepare(vk::VulkanContext& context, const GpuScene& scene) {
   for (uint32_t draw_class = 0; draw_class < draw_class_count; ++draw_class) {

@@ -1,11 +1,15 @@
 #pragma once
-// A camera pass's pipelines, one per draw class (gpu_scene.h: double-sided, masked), each made
-// the first time the scene has instances of its class: most scenes draw only single-sided,
-// unmasked surfaces, and a pipeline that culls nothing or may discard costs raster work on every
-// surface it draws.
+// What the passes that draw the scene from the camera share in setting up their pipelines: the
+// lit passes' bindings, the camera pipeline, and a pass's pipelines, one per draw class
+// (gpu_scene.h: double-sided, masked, transparent), each made the first time the scene has
+// instances of its class: most scenes draw only single-sided, unmasked surfaces, and a pipeline
+// that culls nothing or may discard costs raster work on every surface it draws.
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
+#include <string>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -13,6 +17,19 @@
 #include "systems/gpu_scene.h"
 
 namespace sg {
+
+// The descriptor bindings of a pass that draws the scene from the camera and lights its surfaces
+// in the fragment shader (material.glsl, light_shading.glsl): the light resources, the instances
+// and the material textures, then `more`.
+std::vector<VkDescriptorSetLayoutBinding> lit_camera_bindings(
+    std::vector<VkDescriptorSetLayoutBinding> more = {});
+
+// A pipeline that draws the scene from the camera (shaders/scene.vert, draw_camera_pass) into
+// `color_formats` with `fragment`, depth-tested against camera_depth_format; callers may
+// adjust the rest.
+vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
+                                              std::vector<VkFormat> color_formats, VkPipelineLayout layout,
+                                              std::string name);
 
 class CameraPipelines {
  public:

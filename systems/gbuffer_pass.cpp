@@ -9,7 +9,6 @@
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
 #include "systems/shader_bindings.h"
-#include "systems/tiled_lighting_pass.h"
 
 namespace sg {
 namespace {
@@ -33,7 +32,7 @@ GBufferPass::GBufferPass(vk::VulkanContext& context, uint32_t frames_in_flight, 
       slot_sets_(layout_.allocate_sets(frames_in_flight)),
       pipelines_([writes_lit_sum, layout = layout_.get(), &textures](uint32_t draw_class) {
         std::vector<VkFormat> formats{vk::to_vk(normal_format), vk::to_vk(albedo_format)};
-        if (writes_lit_sum) formats.push_back(vk::to_vk(TiledLightingPass::lit_sum_format));
+        if (writes_lit_sum) formats.push_back(vk::to_vk(GBuffer::lit_sum_format));
         vk::GraphicsPipelineDesc desc =
             camera_pipeline_desc(writes_lit_sum ? std::span<const uint32_t>(gbuffer_lit_sum_frag)
                                                 : std::span<const uint32_t>(gbuffer_frag),
@@ -65,7 +64,7 @@ GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t hei
         g.albedo = target("g-buffer albedo", albedo_format, nothing);
         if (writes_lit_sum_) {
           g.lit_sum = target(
-              "lit sum", TiledLightingPass::lit_sum_format,
+              "lit sum", GBuffer::lit_sum_format,
               rg::ClearValue::color_of(background_color.r, background_color.g, background_color.b, 1.0f));
         }
         g.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),

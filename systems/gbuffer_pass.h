@@ -23,9 +23,11 @@ struct GBuffer {
   rg::ImageHandle normal;  // rgba16f: unit normal, shininess
   rg::ImageHandle albedo;  // rgba8: base color, specular strength
   rg::ImageHandle depth;   // D32, reversed: 0 where no surface was drawn; world positions come back from it
-  // The lit sum's start (TiledLightingPass::lit_sum_format): the ambient term times the base
-  // color, the background color where no surface was drawn. Invalid unless the pass writes it.
+  // The lit sum's start (of lit_sum_format): the ambient term times the base color, the
+  // background color where no surface was drawn. Invalid unless the pass writes it.
   rg::ImageHandle lit_sum;
+  // The deferred lit sum's format: this pass may start it, TiledLightingPass adds the lights.
+  static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
 };
 
 class GBufferPass {

@@ -5,11 +5,10 @@
 #include <cstring>
 #include <utility>
 
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "rendergraph/device/upload.h"
 #include "rendergraph/vulkan/pass_recorder.h"
-#include "shaders/scene.vert.spv.h"
-#include "systems/light_resources.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
 #include "systems/shader_bindings.h"
@@ -34,35 +33,10 @@ void scene_vertex_input(vk::GraphicsPipelineDesc& desc, VertexInput input) {
       {2, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<uint32_t>(offsetof(scene::Vertex, uv))});
 }
 
-std::vector<VkDescriptorSetLayoutBinding> lit_camera_bindings(
-    std::vector<VkDescriptorSetLayoutBinding> more) {
-  constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
-  more.insert(more.begin(), {{bindings::instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
-                              VK_SHADER_STAGE_VERTEX_BIT | fragment, nullptr},
-                             {bindings::material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                              1, fragment, nullptr}});
-  return LightResources::bindings(fragment, std::move(more));
-}
-
 uint32_t draw_class_of(const scene::Material& material) {
   return (material.double_sided ? draw_double_sided : 0u) |
          (material.alpha_mode == scene::AlphaMode::mask ? draw_masked : 0u) |
          (material.alpha_mode == scene::AlphaMode::blend ? draw_blended : 0u);
-}
-
-vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
-                                              std::vector<VkFormat> color_formats, VkPipelineLayout layout,
-                                              std::string name) {
-  vk::GraphicsPipelineDesc desc;
-  desc.vertex_spirv = scene_vert;
-  desc.fragment_spirv = fragment;
-  scene_vertex_input(desc, VertexInput::surface);
-  desc.color_formats = std::move(color_formats);
-  desc.depth_format = vk::to_vk(camera_depth_format);
-  desc.depth_compare = camera_depth_test;
-  desc.layout = layout;
-  desc.name = std::move(name);
-  return desc;
 }
 
 GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes, uint32_t frames_in_flight)

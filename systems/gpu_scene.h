@@ -56,19 +56,6 @@ inline constexpr uint32_t draw_blended = 4;  // transparent
 inline constexpr uint32_t draw_class_count = 8;
 uint32_t draw_class_of(const scene::Material& material);
 
-// The descriptor bindings of a pass that draws the scene from the camera and lights its surfaces
-// in the fragment shader (material.glsl, light_shading.glsl): the light resources, the instances
-// and the material textures, then `more`.
-std::vector<VkDescriptorSetLayoutBinding> lit_camera_bindings(
-    std::vector<VkDescriptorSetLayoutBinding> more = {});
-
-// A pipeline that draws the scene from the camera (shaders/scene.vert, draw_camera_pass) into
-// `color_formats` with `fragment`, depth-tested against camera_depth_format; callers may
-// adjust the rest.
-vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,
-                                              std::vector<VkFormat> color_formats, VkPipelineLayout layout,
-                                              std::string name);
-
 class GpuScene {
  public:
   GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes, uint32_t frames_in_flight);

@@ -41,7 +41,7 @@ class TiledLightingPass {
   // reads no light lists (SINGLE_LIGHT). add_to uses them.
   void prepare(const shadows::FrameLights& lights, LightingView view);
 
-  static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
+  static constexpr rg::Format lit_sum_format = GBuffer::lit_sum_format;
 
   // Adds the ambient pass, which creates the lit sum (unless the G-buffer pass started it:
   // GBuffer::lit_sum, which lit_sum_from_gbuffer() requires), and one pass per group with lights

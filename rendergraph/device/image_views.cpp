@@ -1,9 +1,20 @@
 #include "rendergraph/device/image_views.h"
 
-#include "rendergraph/device/resources.h"
 #include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
+
+VkImageAspectFlags aspect_of(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_D16_UNORM:
+    case VK_FORMAT_D32_SFLOAT:
+    case VK_FORMAT_X8_D24_UNORM_PACK32: return VK_IMAGE_ASPECT_DEPTH_BIT;
+    case VK_FORMAT_D16_UNORM_S8_UINT:
+    case VK_FORMAT_D24_UNORM_S8_UINT:
+    case VK_FORMAT_D32_SFLOAT_S8_UINT: return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+    default: return VK_IMAGE_ASPECT_COLOR_BIT;
+  }
+}
 
 ImageViewCache::ImageViewCache(VkDevice device, VkImage image, VkFormat format)
     : device_(device), image_(image), format_(format) {}

@@ -9,6 +9,9 @@
 
 namespace sg::vk {
 
+// Depth, stencil or color aspect of a format.
+VkImageAspectFlags aspect_of(VkFormat format);
+
 struct ViewKey {
   uint32_t base_mip = 0;
   uint32_t mip_count = 1;

@@ -97,7 +97,4 @@ class Image {
   uint64_t serial_ = 0;
 };
 
-// Depth, stencil or color aspect of a format.
-VkImageAspectFlags aspect_of(VkFormat format);
-
 }  // namespace sg::vk

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "ecs/transform_system.h"
 

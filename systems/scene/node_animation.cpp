@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ecs/query.h"
 #include "ecs/transform.h"
 
 namespace sg::scene {

@@ -1,5 +1,6 @@
 #include "systems/scene/scene_queries.h"
 
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"

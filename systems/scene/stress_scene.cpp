@@ -6,6 +6,7 @@
 
 #include "ecs/transform_system.h"
 #include "systems/scene/builtin_scene_builders.h"
+#include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"

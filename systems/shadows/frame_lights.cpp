@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "ecs/query.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
 

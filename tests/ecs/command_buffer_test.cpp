@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "ecs/command_buffer.h"
+#include "ecs/query.h"
 #include "test_components.h"
 
 namespace sg::ecs {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "ecs/query.h"
 #include "ecs/world.h"
 #include "test_components.h"
 

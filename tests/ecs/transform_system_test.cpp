@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "ecs/hierarchy.h"
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "ecs/transform_system.h"
 

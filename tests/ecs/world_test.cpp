@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "ecs/query.h"
 #include "ecs/world.h"
 #include "test_components.h"
 

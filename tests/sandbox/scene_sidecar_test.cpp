@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "sandbox/scene_sidecar.h"
 #include "systems/scene/builtin_scenes.h"

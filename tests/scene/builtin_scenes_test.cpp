@@ -5,6 +5,7 @@
 #include <set>
 #include <vector>
 
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "ecs/transform_system.h"
 #include "systems/scene/builtin_scenes.h"

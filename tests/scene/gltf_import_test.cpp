@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "ecs/hierarchy.h"
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "ecs/transform_system.h"
 #include "gltf_writer.h"

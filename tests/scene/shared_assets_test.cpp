@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "ecs/query.h"
 #include "ecs/transform_system.h"
 #include "systems/scene/gltf_import.h"
 #include "systems/scene/lights.h"

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include "ecs/query.h"
 #include "ecs/thread_pool.h"
 #include "ecs/transform_system.h"
 #include "systems/scene/camera.h"

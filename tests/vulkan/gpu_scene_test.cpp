@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "ecs/query.h"
 #include "ecs/thread_pool.h"
 #include "ecs/transform_system.h"
 #include "systems/gpu_scene.h"

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "ecs/query.h"
 #include "ecs/transform_system.h"
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"

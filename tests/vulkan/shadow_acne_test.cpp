@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
+#include "ecs/query.h"
 #include "ecs/transform_system.h"
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"

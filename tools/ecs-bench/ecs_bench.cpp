@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "ecs/query.h"
 #include "ecs/thread_pool.h"
 #include "ecs/transform.h"
 #include "ecs/world.h"

@@ -1,5 +1,6 @@
 #include "tools/reference/reference_lights.h"
 
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/shadow_settings.h"

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "ecs/hierarchy.h"
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
