@@ -24,8 +24,8 @@ const int tile_lights_binding = 13;
 const int tile_ranges_binding = 14;
 const int group_tiles_binding = 15;
 const int group_commands_binding = 16;
-// Transparent surfaces' depth bounds per pixel (light_tiles_interface.glsl's transparent variant).
-const int transparent_depths_binding = 27;
+// Transparent surfaces' depth bounds per tile (light_tiles_interface.glsl's transparent variant).
+const int transparent_bounds_binding = 27;
 
 // GPU-driven shadow views (shadow_views.glsl): the casters' bounds, their meshes, the culled
 // (caster, view) pairs, their counts per draw, and the indirect commands built from them.

@@ -48,6 +48,7 @@ void main() {
       nearest = max(nearest, thread_nearest[t]);
       farthest = min(farthest, thread_farthest[t]);
     }
+    bound_by_transparent_surfaces(tile, nearest, farthest);
     has_surfaces = !is_background_depth(nearest);
     tile_sphere = visible_sphere_of_tile(gl_WorkGroupID.xy, nearest, farthest);
   }

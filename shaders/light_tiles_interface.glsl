@@ -5,8 +5,8 @@
 // finds each group's range in that list. Every tile with lights of a group is appended to that
 // group's tile list, whose length is the group's indirect dispatch (tiled_lighting.comp) and the
 // instance count of its indirect draw (tiled_lighting.vert). Both shaders write the same lists.
-// Their transparent variants (systems/transparent_pass.h) bound each tile by the transparent
-// surfaces in front of the opaque ones too.
+// Their transparent variants (systems/transparent_pass.h) bound each tile by where transparent
+// surfaces may lie in it too.
 #ifndef SG_LIGHT_TILES_INTERFACE_GLSL
 #define SG_LIGHT_TILES_INTERFACE_GLSL
 
@@ -19,9 +19,11 @@
 layout(std430, set = 0, binding = lights_binding) readonly buffer Lights { Light lights[]; };
 layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
 #ifdef TRANSPARENT_BOUNDS
-// Per pixel, the transparent surfaces in front of the opaque one: x the nearest's depth, y minus
-// the farthest's (both kept by a max blend); x is 0 where there are none.
-layout(set = 0, binding = transparent_depths_binding) uniform sampler2D transparent_depths;
+// Per tile, where transparent surfaces may lie (systems/transparent_tile_bounds.h): x the nearest
+// depth, y the farthest; x is 0 where there are none.
+layout(std430, set = 0, binding = transparent_bounds_binding) readonly buffer TransparentBounds {
+  vec2 transparent_bounds[];
+};
 #endif
 layout(std430, set = 0, binding = tile_lights_binding) writeonly buffer TileLights { uint tile_lights[]; };
 // Per tile and group: x the first entry in tile_lights, y how many.
@@ -54,11 +56,16 @@ void bound_by_pixel(ivec2 pixel, inout float nearest, inout float farthest) {
     nearest = max(nearest, depth);
     farthest = min(farthest, depth);
   }
+}
+
+// Widens a tile's depth bounds by where transparent surfaces may lie in it, in the transparent
+// variants; nothing otherwise.
+void bound_by_transparent_surfaces(uint tile, inout float nearest, inout float farthest) {
 #ifdef TRANSPARENT_BOUNDS
-  vec2 bounds = texelFetch(transparent_depths, pixel, 0).rg;
+  vec2 bounds = transparent_bounds[tile];
   if (bounds.x > 0.0) {
     nearest = max(nearest, bounds.x);
-    farthest = min(farthest, -bounds.y);
+    farthest = min(farthest, bounds.y);
   }
 #endif
 }

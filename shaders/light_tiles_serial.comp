@@ -22,6 +22,7 @@ void main() {
   for (int y = origin.y; y < end.y; ++y) {
     for (int x = origin.x; x < end.x; ++x) bound_by_pixel(ivec2(x, y), nearest, farthest);
   }
+  bound_by_transparent_surfaces(tile, nearest, farthest);
 
   uint group_first[LIGHT_GROUP_COUNT];
   uint group_count[LIGHT_GROUP_COUNT];

@@ -91,6 +91,8 @@ class GpuScene {
   bool has_transparent() const;
   // Orders the transparent instances back to front as seen from `eye`, by their bounds' centres.
   void order_transparent(const glm::vec3& eye);
+  // The transparent instances in that order.
+  std::span<const uint32_t> transparent_order() const { return transparent_order_; }
   // As draw_camera_pass, the transparent instances in that order, one draw each.
   void draw_transparent(const vk::PassRecorder& rec, std::span<const VkPipeline, draw_class_count> pipelines,
                         const vk::PipelineLayout& layout, VkDescriptorSet set,

@@ -70,8 +70,7 @@ std::vector<VkDescriptorSetLayoutBinding> culling_bindings(bool transparent_boun
       {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
       {group_commands_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr}};
   if (transparent_bounds) {
-    bindings.push_back(
-        {transparent_depths_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute, nullptr});
+    bindings.push_back({transparent_bounds_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr});
   }
   return bindings;
 }
@@ -108,10 +107,10 @@ LightTilesPass::LightTilesPass(vk::VulkanContext& context, LightCullingShape sha
 
 LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
                                   uint32_t light_count, const glm::mat4& view_projection,
-                                  const LightTiles* outputs, rg::ImageHandle transparent_depths) const {
-  if (transparent_depths.valid() != transparent_bounds_) {
+                                  const LightTiles* outputs, const vk::Buffer* transparent_bounds) const {
+  if ((transparent_bounds != nullptr) != transparent_bounds_) {
     throw std::logic_error(
-        "LightTilesPass::add_to: transparent depths given to a pass made without them, or "
+        "LightTilesPass::add_to: transparent bounds given to a pass made without them, or "
         "missing on one made with them");
   }
   const rg::ImageDesc& screen = graph.resources()[depth.index].image;
@@ -137,7 +136,6 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
       "light tiles",
       [&](rg::PassBuilder& b) {
         b.read(depth, rg::Usage::sampled_compute);
-        if (transparent_depths.valid()) b.read(transparent_depths, rg::Usage::sampled_compute);
         const auto output = [&](const rg::BufferHandle* given, const char* name, uint64_t bytes) {
           return b.write(given ? *given : b.create_buffer(name, {bytes}), rg::Usage::storage_compute);
         };
@@ -147,7 +145,7 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
         out.commands = b.write(reset_commands, rg::Usage::storage_compute);
         return out;
       },
-      [this, depth, transparent_depths, grid, &lights, light_count, screen,
+      [this, depth, transparent_bounds, grid, &lights, light_count, screen,
        inverse = glm::inverse(view_projection)](const LightTiles& written, const vk::PassRecorder& rec) {
         vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
         writer.buffer(lights_binding, lights.handle())
@@ -156,9 +154,7 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
             .buffer(tile_ranges_binding, rec.buffer(written.ranges))
             .buffer(group_tiles_binding, rec.buffer(written.tiles))
             .buffer(group_commands_binding, rec.buffer(written.commands));
-        if (transparent_depths.valid()) {
-          writer.image(transparent_depths_binding, rec.view(transparent_depths), nearest_.get());
-        }
+        if (transparent_bounds) writer.buffer(transparent_bounds_binding, transparent_bounds->handle());
         const VkDescriptorSet set = writer.update();
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
         layout_.bind_compute(rec.cmd(), set);

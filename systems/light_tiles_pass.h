@@ -47,8 +47,8 @@ enum class LightCullingShape { automatic, workgroup_per_tile, thread_per_tile };
 
 class LightTilesPass {
  public:
-  // With `transparent_bounds`, tiles are bounded by transparent surfaces' depths as well
-  // (add_to's `transparent_depths`, TransparentPass).
+  // With `transparent_bounds`, tiles are bounded by where transparent surfaces may lie as well
+  // (add_to's `transparent_bounds`, TransparentPass).
   explicit LightTilesPass(vk::VulkanContext& context, LightCullingShape shape = LightCullingShape::automatic,
                           bool transparent_bounds = false);
   LightCullingShape shape() const { return shape_; }
@@ -64,13 +64,14 @@ class LightTilesPass {
 
   // Culls the first `light_count` records of `lights` (sorted by group) against the tiles of
   // `depth` (the scene's D32 depth, rendered with `view_projection`), and on a pass made with
-  // transparent bounds of `transparent_depths` too (rg32_sfloat, as
-  // shaders/light_tiles_interface.glsl reads it). Writes into `outputs` when given (imported
-  // buffers of the sizes above), else into new transients; returns the outputs' new versions.
-  // `lights` must live until the frame is recorded.
+  // transparent bounds against `transparent_bounds` too (transparent_tile_bounds, a vec2 a tile).
+  // Writes into `outputs` when given (imported buffers of the sizes above), else into new
+  // transients; returns the outputs' new versions. `lights` and `transparent_bounds` must live
+  // until the frame is recorded.
   LightTiles add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
                     uint32_t light_count, const glm::mat4& view_projection,
-                    const LightTiles* outputs = nullptr, rg::ImageHandle transparent_depths = {}) const;
+                    const LightTiles* outputs = nullptr,
+                    const vk::Buffer* transparent_bounds = nullptr) const;
 
  private:
   LightCullingShape shape_;

@@ -51,6 +51,7 @@ double lap(std::chrono::steady_clock::time_point& mark) {
 SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene, uint32_t frames_in_flight,
                              rg::Format frame_format, const RendererSettings& settings)
     : context_(context),
+      frames_in_flight_(frames_in_flight),
       frame_format_(frame_format),
       settings_(settings),
       lighting_(settings.lighting == LightingPath::automatic ? fastest_lighting : settings.lighting),
@@ -172,11 +173,12 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
       break;
   }
   if (gpu_scene_.has_transparent()) {
-    if (!transparent_) transparent_.emplace(context_, textures_);
+    if (!transparent_) transparent_.emplace(context_, frames_in_flight_, textures_);
     gpu_scene_.order_transparent(pose.eye);
     // Lit as the opaque surfaces were: from tile lists, or by every light.
     const bool tiled = lighting_ == LightingPath::deferred || lighting_ == LightingPath::forward;
-    transparent_->prepare(lit_format(), tiled, lights_.group_begin, settings_.view, gpu_scene_);
+    transparent_->prepare(lit_format(), tiled, lights_.group_begin, settings_.view, gpu_scene_, slot,
+                          camera.view_projection, {width, height});
   }
   cpu_steps_.views = lap(mark);
 }

@@ -150,6 +150,7 @@ class SceneRenderer {
 
  private:
   vk::VulkanContext& context_;
+  uint32_t frames_in_flight_;
   rg::Format frame_format_;
   RendererSettings settings_;
   LightingPath lighting_;

@@ -8,13 +8,12 @@
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
-#include "shaders/depth_prepass.vert.spv.h"
 #include "shaders/scene_fused_transparent.frag.spv.h"
 #include "shaders/scene_tiled_transparent.frag.spv.h"
-#include "shaders/transparent_depth.frag.spv.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
 #include "systems/shader_bindings.h"
+#include "systems/transparent_tile_bounds.h"
 
 namespace sg {
 namespace {
@@ -22,10 +21,6 @@ namespace {
 using namespace bindings;
 constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
-
-// shaders/transparent_depth.frag's target and what it is cleared to: no transparent surface.
-constexpr rg::Format depth_bounds_format = rg::Format::rg32_sfloat;
-constexpr rg::ClearValue no_depth_bounds = rg::ClearValue::color_of(0.0f, -1.0f, 0.0f, 0.0f);
 
 // Groups take the low light_group_count bits, the view the next byte, tiled the next, the
 // format the rest.
@@ -36,31 +31,13 @@ uint64_t pipeline_key(rg::Format format, bool tiled, uint32_t groups_present, Li
 
 }  // namespace
 
-TransparentPass::TransparentPass(vk::VulkanContext& context, const GpuTextures& textures)
+TransparentPass::TransparentPass(vk::VulkanContext& context, uint32_t frames_in_flight,
+                                 const GpuTextures& textures)
     : context_(context),
       textures_(textures),
       light_resources_(context),
       light_tiles_(context, LightCullingShape::automatic, true),
-      depth_layout_(context.device(),
-                    {{instances_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT}},
-                    vk::push_constants<FrameConstants>(VK_SHADER_STAGE_VERTEX_BIT)),
-      depth_pipelines_(
-          [layout = depth_layout_.get()](uint32_t draw_class) {
-            vk::GraphicsPipelineDesc desc;
-            desc.vertex_spirv = depth_prepass_vert;
-            desc.fragment_spirv = transparent_depth_frag;
-            scene_vertex_input(desc, VertexInput::position);
-            desc.color_formats = {vk::to_vk(depth_bounds_format)};
-            desc.blend = vk::Blend::max;
-            desc.depth_format = vk::to_vk(camera_depth_format);
-            desc.depth_compare = camera_depth_test;
-            desc.depth_write = false;
-            desc.cull_mode = draw_class & draw_double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-            desc.layout = layout;
-            desc.name = "transparent depths";
-            return desc;
-          },
-          true),
+      tile_bounds_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "transparent tile bounds"),
       tiled_layout_(context.device(),
                     lit_camera_bindings(
                         {{tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fragment, nullptr},
@@ -71,9 +48,16 @@ TransparentPass::TransparentPass(vk::VulkanContext& context, const GpuTextures& 
 
 void TransparentPass::prepare(rg::Format format, bool tiled,
                               const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-                              LightingView view, const GpuScene& scene) {
+                              LightingView view, const GpuScene& scene, uint32_t slot,
+                              const glm::mat4& view_projection, glm::uvec2 screen) {
   tiled_ = tiled;
-  if (tiled) depth_pipelines_.prepare(context_, scene);
+  if (tiled) {
+    boxes_.clear();
+    const std::span<const scene::Aabb> bounds = scene.instance_bounds();
+    for (const uint32_t i : scene.transparent_order()) boxes_.push_back(bounds[i]);
+    transparent_tile_bounds(view_projection, LightTileGrid::of(screen.x, screen.y), screen, boxes_, bounds_);
+    tile_bounds_.write(slot, std::span<const glm::vec2>(bounds_));
+  }
   const uint32_t groups = shadows::groups_present(group_begin);
   key_ = pipeline_key(format, tiled, groups, view);
   const VkPipelineLayout layout = (tiled ? tiled_layout_ : every_light_layout_).get();
@@ -95,35 +79,15 @@ void TransparentPass::prepare(rg::Format format, bool tiled,
       .first->second.prepare(context_, scene);
 }
 
-LightTiles TransparentPass::add_light_tiles(rg::RenderGraph& graph, rg::ImageHandle depth,
-                                            const vk::Buffer& lights, uint32_t light_count,
-                                            const GpuScene& scene, uint32_t slot,
-                                            const FrameConstants& constants) const {
-  const rg::ImageDesc& screen = graph.resources()[depth.index].image;
-  rg::ImageHandle bounds;
-  graph.add_pass(
-      "transparent depths",
-      [&](rg::PassBuilder& b) {
-        b.read(depth, rg::Usage::depth_attachment);  // tested, not written
-        bounds =
-            b.write(b.create_image("transparent depths", {screen.width, screen.height, depth_bounds_format}),
-                    rg::Usage::color_attachment, no_depth_bounds);
-      },
-      [this, &scene, slot, constants, pipelines = depth_pipelines_.get()](const vk::PassRecorder& rec) {
-        const VkDescriptorSet set = depth_layout_.write(rec.allocate_set(depth_layout_))
-                                        .buffer(instances_binding, scene.instances(slot).handle())
-                                        .update();
-        scene.draw_transparent(rec, pipelines, depth_layout_, set, constants);
-      });
-  return light_tiles_.add_to(graph, depth, lights, light_count, constants.view_projection, nullptr, bounds);
-}
-
 rg::ImageHandle TransparentPass::add_to(rg::RenderGraph& graph, rg::ImageHandle target, rg::ImageHandle depth,
                                         rg::ImageHandle atlas, const vk::Buffer& lights, uint32_t light_count,
                                         const GpuScene& scene, uint32_t slot,
                                         const FrameConstants& constants) const {
   std::optional<LightTiles> tiles;
-  if (tiled_) tiles = add_light_tiles(graph, depth, lights, light_count, scene, slot, constants);
+  if (tiled_) {
+    tiles = light_tiles_.add_to(graph, depth, lights, light_count, constants.view_projection, nullptr,
+                                &tile_bounds_.buffer(slot));
+  }
   graph.add_pass(
       "transparent",
       [&](rg::PassBuilder& b) {

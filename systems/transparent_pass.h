@@ -3,23 +3,19 @@
 // opaque lighting and before tone mapping, on every lighting path. Where the opaque surfaces
 // were lit from light lists per screen tile (deferred, tiled forward), so are these:
 //
-//   transparent depths       (raster)   per pixel the nearest and farthest depth of the
-//                                       transparent surfaces in front of the opaque one
-//   light tiles              (compute)  light culling bounded by those depths and the opaque ones
-//                                       (LightTilesPass with transparent bounds), so that each
-//                                       tile's lights reach its transparent surfaces too
-//   transparent              (raster)   the surfaces back to front (GpuScene::order_transparent),
-//                                       each lit by its tile's lights and their shadows as the
-//                                       opaque surfaces are (shaders/scene_tiled.frag's
-//                                       transparent variant), blended over the target by its
-//                                       alpha, depth-tested against the opaque depth, not
-//                                       writing it
+//   light tiles   (compute)  light culling bounded by the opaque depths and by where the
+//                            transparent instances' boxes lie on screen (transparent_tile_bounds,
+//                            on the CPU), so that each tile's lights reach its transparent
+//                            surfaces too
+//   transparent   (raster)   the surfaces back to front (GpuScene::order_transparent), each lit
+//                            by its tile's lights and their shadows as the opaque surfaces are
+//                            (shaders/scene_tiled.frag's transparent variant), blended over the
+//                            target by its alpha, depth-tested against the opaque depth, not
+//                            writing it
 //
 // Where every light lit every pixel (fused, every light), the last pass alone, lighting with
 // every light as they did (shaders/scene_fused.frag's transparent variant): a frame of a few
-// lights pays no culling for a few transparent pixels (on lavapipe the tiled passes cost 2.4 ms
-// of the shared ShadowsSpot scene's 9.9 at 1280x720, 2026-12-01, when they began with a copy of
-// the opaque depth).
+// lights pays no second culling for a few transparent pixels.
 //
 // The target is a lit sum, or the frame where the path tone-maps as it lights (fused).
 // Surfaces are sorted as wholes, by their bounds' centres: intersecting or nested transparent
@@ -28,13 +24,18 @@
 #include <array>
 #include <cstdint>
 #include <unordered_map>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/frame_buffers.h"
 #include "systems/camera_pipelines.h"
 #include "systems/light_resources.h"
 #include "systems/light_tiles_pass.h"
 #include "systems/lighting_path.h"
+#include "systems/scene/aabb.h"
 #include "systems/scene_gpu_types.h"
 #include "systems/shadows/light_groups.h"
 
@@ -51,14 +52,15 @@ class GpuTextures;
 class TransparentPass {
  public:
   // `textures` must outlive the pass.
-  TransparentPass(vk::VulkanContext& context, const GpuTextures& textures);
+  TransparentPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);
 
   // Makes the pipelines for a target of `format`, lit from tile lists (`tiled`) or by every
   // light, for the groups that have lights (group_begin as in shadows::FrameLights), `view` and
-  // the transparent classes `scene` has.
+  // the transparent classes `scene` has. Tiled, writes the slot's tile bounds for a camera of
+  // `view_projection` over `screen` pixels, from `scene`'s transparent instances.
   void prepare(rg::Format format, bool tiled,
                const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view,
-               const GpuScene& scene);
+               const GpuScene& scene, uint32_t slot, const glm::mat4& view_projection, glm::uvec2 screen);
 
   // Blends the transparent surfaces of `scene` (as ordered for this frame) over `target`, as
   // prepared, tone-mapping them first where `constants.counts.w` is 1; returns its new version.
@@ -69,17 +71,13 @@ class TransparentPass {
                          const GpuScene& scene, uint32_t slot, const FrameConstants& constants) const;
 
  private:
-  // The light tiles for the transparent surfaces (the passes before the last).
-  LightTiles add_light_tiles(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
-                             uint32_t light_count, const GpuScene& scene, uint32_t slot,
-                             const FrameConstants& constants) const;
-
   vk::VulkanContext& context_;
   const GpuTextures& textures_;
   LightResources light_resources_;
   LightTilesPass light_tiles_;
-  vk::PipelineLayout depth_layout_;
-  CameraPipelines depth_pipelines_;
+  vk::FrameBuffers tile_bounds_;  // transparent_tile_bounds, per slot
+  std::vector<scene::Aabb> boxes_;
+  std::vector<glm::vec2> bounds_;
   vk::PipelineLayout tiled_layout_;                          // scene_tiled.frag's: the lights, the tile lists
   vk::PipelineLayout every_light_layout_;                    // scene_fused.frag's: the lights
   std::unordered_map<uint64_t, CameraPipelines> pipelines_;  // by pipeline_key

@@ -13,7 +13,6 @@ std::uint32_t bytes_per_texel(Format format) {
     case Format::rg16_sfloat:
     case Format::r32_sfloat:
     case Format::d32_sfloat: return 4;
-    case Format::rg32_sfloat:
     case Format::rgba16_sfloat: return 8;
     case Format::rgba32_sfloat: return 16;
   }
@@ -30,7 +29,6 @@ std::string_view format_name(Format format) {
     case Format::bgra8_unorm: return "bgra8_unorm";
     case Format::bgra8_srgb: return "bgra8_srgb";
     case Format::rg16_sfloat: return "rg16_sfloat";
-    case Format::rg32_sfloat: return "rg32_sfloat";
     case Format::rgba16_sfloat: return "rgba16_sfloat";
     case Format::rgba32_sfloat: return "rgba32_sfloat";
     case Format::r32_sfloat: return "r32_sfloat";

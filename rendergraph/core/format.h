@@ -15,7 +15,6 @@ enum class Format : std::uint32_t {
   bgra8_unorm = 44,     // VK_FORMAT_B8G8R8A8_UNORM
   bgra8_srgb = 50,      // VK_FORMAT_B8G8R8A8_SRGB
   rg16_sfloat = 83,     // VK_FORMAT_R16G16_SFLOAT (shadow moments)
-  rg32_sfloat = 103,    // VK_FORMAT_R32G32_SFLOAT (depth bounds)
   rgba16_sfloat = 97,   // VK_FORMAT_R16G16B16A16_SFLOAT
   rgba32_sfloat = 109,  // VK_FORMAT_R32G32B32A32_SFLOAT (exact world positions, HDR sums)
   r32_sfloat = 100,     // VK_FORMAT_R32_SFLOAT

@@ -43,8 +43,8 @@ VkPipelineColorBlendAttachmentState attachment_blend(Blend blend) {
   a.dstColorBlendFactor = alpha ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE;
   a.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
   a.dstAlphaBlendFactor = a.dstColorBlendFactor;
-  a.colorBlendOp = blend == Blend::max ? VK_BLEND_OP_MAX : VK_BLEND_OP_ADD;  // max ignores the factors
-  a.alphaBlendOp = a.colorBlendOp;
+  a.colorBlendOp = VK_BLEND_OP_ADD;
+  a.alphaBlendOp = VK_BLEND_OP_ADD;
   return a;
 }
 

@@ -21,7 +21,6 @@ enum class Blend {
   none,   // replaces it
   alpha,  // color = src * src alpha + dst * (1 - src alpha), for overlays
   add,    // color = src + dst, for sums built pass by pass
-  max,    // color = max(src, dst) per channel, for bounds
 };
 
 struct GraphicsPipelineDesc {

@@ -77,7 +77,6 @@ static_assert(value(Format::rgba8_srgb) == VK_FORMAT_R8G8B8A8_SRGB);
 static_assert(value(Format::bgra8_unorm) == VK_FORMAT_B8G8R8A8_UNORM);
 static_assert(value(Format::bgra8_srgb) == VK_FORMAT_B8G8R8A8_SRGB);
 static_assert(value(Format::rg16_sfloat) == VK_FORMAT_R16G16_SFLOAT);
-static_assert(value(Format::rg32_sfloat) == VK_FORMAT_R32G32_SFLOAT);
 static_assert(value(Format::rgba16_sfloat) == VK_FORMAT_R16G16B16A16_SFLOAT);
 static_assert(value(Format::rgba32_sfloat) == VK_FORMAT_R32G32B32A32_SFLOAT);
 static_assert(value(Format::r32_sfloat) == VK_FORMAT_R32_SFLOAT);
@@ -114,7 +113,6 @@ Format from_vk(VkFormat format) {
     case Format::bgra8_unorm:
     case Format::bgra8_srgb:
     case Format::rg16_sfloat:
-    case Format::rg32_sfloat:
     case Format::rgba16_sfloat:
     case Format::rgba32_sfloat:
     case Format::r32_sfloat:
