@@ -131,7 +131,8 @@ void add_options(CLI::App& app, Options& o) {
   }
   app.add_option_function<std::string>(
          "--algorithm", [&o](const std::string& name) { o.algorithm = scene::parse_shadow_algorithm(name); },
-         "Shadow algorithm for every light, overriding the scene's")
+         "Shadow algorithm every light starts with, instead of the scene's (the panel and scripts may change "
+         "it)")
       ->check(CLI::IsMember(algorithm_names));
   add_choice(app, "--shadows", o.shadows, {{"on", true}, {"off", false}},
              "on: every light casts its shadow; off: none does");

@@ -37,7 +37,7 @@ struct Options {
   std::string stats_path;                           // --stats: JSON facts about the run; empty: none
   bool depth_overlay = false;                       // --depth-overlay: the render-graph extension example
   bool light_heatmap = false;                       // --light-heatmap: lights per screen tile
-  std::optional<scene::ShadowAlgorithm> algorithm;  // --algorithm: every light uses this one
+  std::optional<scene::ShadowAlgorithm> algorithm;  // --algorithm: every light starts with this one
   bool shadows = true;                              // --shadows off: no light casts a shadow
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;  // --cube-shadows layered|six
   shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;  // --shadow-views

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "ecs/query.h"
 #include "ecs/transform_system.h"
 #include "rendergraph/device/context.h"
 #include "rendergraph/vulkan/pass_recorder.h"
@@ -15,6 +16,7 @@
 #include "sandbox/scene_sidecar.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/node_animation.h"
+#include "systems/scene/shadow_settings.h"
 
 namespace sg::sandbox {
 namespace {
@@ -55,7 +57,6 @@ void add_present(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHan
 
 RendererSettings renderer_settings(const Options& options) {
   RendererSettings settings;
-  settings.lights.algorithm = options.algorithm;
   settings.lights.shadows = options.shadows;
   settings.cube_shadows = options.cube_shadows;
   settings.lighting = options.lighting;
@@ -101,6 +102,12 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, cons
     ui_->set_view(options.view);
     ui_->set_light_heatmap(options.light_heatmap);
     ui_pass_ = std::make_unique<UiPass>(context, frame_format, frames_in_flight);
+  }
+  // --algorithm sets every light's algorithm once, here: the panels and scripts may change it
+  // afterwards, and a per-frame override would undo their edits.
+  if (options.algorithm) {
+    scene.scene.world.query<scene::ShadowSettings>().for_each(
+        [&](scene::ShadowSettings& shadow) { shadow.algorithm = *options.algorithm; });
   }
 }
 

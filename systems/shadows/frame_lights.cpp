@@ -35,7 +35,6 @@ void name_view(const ecs::World& world, ecs::Entity entity, const char* kind, si
 }
 
 scene::ShadowSettings with_overrides(scene::ShadowSettings shadow, const LightOverrides& overrides) {
-  if (overrides.algorithm) shadow.algorithm = *overrides.algorithm;
   shadow.casts_shadow = shadow.casts_shadow && overrides.shadows;
   return shadow;
 }

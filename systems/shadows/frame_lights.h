@@ -11,7 +11,6 @@
 //   sort_by_group   orders the records by light group, the order the lighting passes read.
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,9 +27,10 @@
 
 namespace sg::shadows {
 
-// Command-line overrides applied to every light (--algorithm, --shadows off).
+// What applies to every light each frame, whatever its own settings say (--shadows off). A
+// setting a light may change afterwards, such as its algorithm, is set in the world instead,
+// once, so that an edit is not overwritten.
 struct LightOverrides {
-  std::optional<scene::ShadowAlgorithm> algorithm;
   bool shadows = true;
 
   friend bool operator==(const LightOverrides&, const LightOverrides&) = default;
