@@ -7,6 +7,7 @@
 #include <cstring>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "rendergraph/device/context.h"
@@ -187,24 +188,27 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
     static_restore_pipeline_ = vk::create_compute_pipeline(
         context, {shadow_static_restore_comp, {}, static_layers_layout_.get(), "shadow static restore"});
   }
-  vk::GraphicsPipelineDesc desc = shadow_pipeline_desc(raster_layout_.get());
-  desc.vertex_spirv = shadow_batch_vert;
-  desc.name = "shadow batch maps";
-  map_pipeline_ = vk::create_graphics_pipeline(context, desc);
-  desc.fragment_spirv = shadow_cube_frag;
-  desc.name = "shadow batch cube faces";
-  face_pipeline_ = vk::create_graphics_pipeline(context, desc);
+  opaque_ = make_raster_pipelines(false);
+}
+
+ShadowViewBatch::RasterPipelines ShadowViewBatch::make_raster_pipelines(bool cut_out) const {
+  using Spirv = std::span<const uint32_t>;
+  vk::GraphicsPipelineDesc desc = cut_out ? shadow_cut_out_pipeline_desc(raster_layout_.get(), textures_)
+                                          : shadow_pipeline_desc(raster_layout_.get());
+  const std::string suffix = cut_out ? " cut out" : "";
+  RasterPipelines made;
+  desc.vertex_spirv = cut_out ? Spirv(shadow_batch_cut_out_vert) : Spirv(shadow_batch_vert);
+  if (cut_out) desc.fragment_spirv = shadow_cut_out_frag;  // 2D maps need none otherwise
+  desc.name = "shadow batch maps" + suffix;
+  made.map = vk::create_graphics_pipeline(context_, desc);
+  desc.fragment_spirv = cut_out ? Spirv(shadow_cube_cut_out_frag) : Spirv(shadow_cube_frag);
+  desc.name = "shadow batch cube faces" + suffix;
+  made.face = vk::create_graphics_pipeline(context_, desc);
+  return made;
 }
 
 void ShadowViewBatch::make_cut_out_pipelines() {
-  vk::GraphicsPipelineDesc desc = shadow_cut_out_pipeline_desc(raster_layout_.get(), textures_);
-  desc.vertex_spirv = shadow_batch_cut_out_vert;
-  desc.fragment_spirv = shadow_cut_out_frag;
-  desc.name = "shadow batch maps cut out";
-  map_cut_out_pipeline_ = vk::create_graphics_pipeline(context_, desc);
-  desc.fragment_spirv = shadow_cube_cut_out_frag;
-  desc.name = "shadow batch cube faces cut out";
-  face_cut_out_pipeline_ = vk::create_graphics_pipeline(context_, desc);
+  cut_out_ = make_raster_pipelines(true);
   if (compute_raster_pipeline_) {
     compute_raster_cut_out_pipeline_ = vk::create_compute_pipeline(
         context_, {shadow_raster_cut_out_comp, material_pass_constants(0, 0, textures_),
@@ -303,7 +307,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
   const std::span<const VkDrawIndexedIndirectCommand> groups = scene.caster_groups();
   const std::span<const scene::Aabb> bounds = scene.instance_bounds();
   first_cut_out_group_ = scene.first_cut_out_group();
-  if (first_cut_out_group_ < groups.size() && !map_cut_out_pipeline_) make_cut_out_pipelines();
+  if (first_cut_out_group_ < groups.size() && !cut_out_.map) make_cut_out_pipelines();
   uint32_t caster_count = 0;
   for (uint32_t g = 0; g < groups.size(); ++g) {
     const VkDrawIndexedIndirectCommand& group = groups[g];
@@ -696,10 +700,10 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
           vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
           vkCmdDrawIndexedIndirect(rec.cmd(), commands, draws_header_bytes + first * stride, count, stride);
         };
-        draw(map_pipeline_.get(), 0, opaque);
-        draw(map_cut_out_pipeline_.get(), opaque, group_count - opaque);
-        draw(face_pipeline_.get(), group_count, opaque);
-        draw(face_cut_out_pipeline_.get(), group_count + opaque, group_count - opaque);
+        draw(opaque_.map.get(), 0, opaque);
+        draw(cut_out_.map.get(), opaque, group_count - opaque);
+        draw(opaque_.face.get(), group_count, opaque);
+        draw(cut_out_.face.get(), group_count + opaque, group_count - opaque);
       });
   return atlas;
 }

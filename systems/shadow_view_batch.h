@@ -140,13 +140,18 @@ class ShadowViewBatch {
   vk::UniquePipeline cull_pipeline_;
   vk::UniquePipeline draws_pipeline_;
   vk::UniquePipeline scatter_pipeline_;
-  vk::UniquePipeline map_pipeline_;
-  vk::UniquePipeline face_pipeline_;
   vk::UniquePipeline compute_raster_pipeline_;
-  // Cut-out casters' (shaders/shadow_cut_out.glsl), made with the first scene that has them.
+  // The hardware raster's, for opaque casters or cut-out ones (shaders/shadow_cut_out.glsl).
+  struct RasterPipelines {
+    vk::UniquePipeline map;   // shadow_batch.vert
+    vk::UniquePipeline face;  // shadow_batch.vert, shadow_cube.frag
+  };
+  RasterPipelines make_raster_pipelines(bool cut_out) const;
+  RasterPipelines opaque_;
+  // The cut-out casters' pipelines, the hardware raster's and the compute raster's, made with the
+  // first scene that has such casters.
   void make_cut_out_pipelines();
-  vk::UniquePipeline map_cut_out_pipeline_;
-  vk::UniquePipeline face_cut_out_pipeline_;
+  RasterPipelines cut_out_;
   vk::UniquePipeline compute_raster_cut_out_pipeline_;
   vk::UniquePipeline static_save_pipeline_;
   vk::UniquePipeline static_restore_pipeline_;

@@ -57,6 +57,20 @@ scene::Texture half_transparent(uint32_t columns) {
   return texture;
 }
 
+// A scene whose meshes are a unit box (box_mesh) and a unit quad facing up (quad_mesh), with a
+// 20 x 20 m floor of `floor_color`, its top at y = 0.
+constexpr uint32_t box_mesh = 0;
+constexpr uint32_t quad_mesh = 1;
+sandbox::SandboxScene floor_scene(const char* name, glm::vec4 floor_color) {
+  sandbox::SandboxScene scene;
+  scene.scene.name = name;
+  scene::add_box_mesh(scene.scene.meshes);
+  scene::add_quad_mesh(scene.scene.meshes);
+  scene::add_instance(scene.scene, box_mesh,
+                      {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}}, matte(floor_color));
+  return scene;
+}
+
 class AlphaMaterials : public GpuTest {
  protected:
   // One frame of `scene` on `lighting`, its shadow views drawn by `shadow_path`.
@@ -104,18 +118,13 @@ class AlphaMaterials : public GpuTest {
 // would shade it too.
 TEST_F(AlphaMaterials, AMaskedCardShowsAndCastsItsTexturesShape) {
   const auto masked_card = [](bool point_light) {
-    sandbox::SandboxScene scene;
-    scene.scene.name = "masked card";
-    const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
-    const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
+    sandbox::SandboxScene scene = floor_scene("masked card", {0.1f, 0.8f, 0.1f, 1.0f});
     scene.scene.textures.textures.push_back(half_transparent(8));
-    scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
-                        matte({0.1f, 0.8f, 0.1f, 1.0f}));
     scene::Material card = matte(glm::vec4(1.0f));
     card.base_color_texture = 0;
     card.alpha_mode = scene::AlphaMode::mask;
-    scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {4.0f, 1.0f, 4.0f}},
-                        card);
+    scene::add_instance(scene.scene, quad_mesh,
+                        {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {4.0f, 1.0f, 4.0f}}, card);
     scene::ShadowSettings hard;
     hard.algorithm = scene::ShadowAlgorithm::hard;
     hard.resolution = 512;  // the compute raster's largest on a CPU device
@@ -164,17 +173,13 @@ TEST_F(AlphaMaterials, AMaskedCardShowsAndCastsItsTexturesShape) {
 // beside the pane) gets about half of what the card takes away, on every way of drawing shadow
 // views.
 TEST_F(AlphaMaterials, ATransparentPaneTintsWhatIsBehindAndCastsAPartialShadow) {
-  sandbox::SandboxScene scene;
-  scene.scene.name = "pane";
-  const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
-  const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
-  scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
-                      matte(glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
+  sandbox::SandboxScene scene = floor_scene("pane", glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
   scene::Material glass = matte({0.2f, 0.2f, 0.9f, 0.5f});
   glass.alpha_mode = scene::AlphaMode::blend;
-  scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
+  scene::add_instance(scene.scene, quad_mesh, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
                       glass);
-  scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, -4.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
+  scene::add_instance(scene.scene, quad_mesh,
+                      {{0.0f, 1.0f, -4.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
                       matte(glm::vec4(0.2f, 0.2f, 0.9f, 1.0f)));
   scene::ShadowSettings pcf;
   pcf.algorithm = scene::ShadowAlgorithm::pcf;
@@ -210,21 +215,17 @@ TEST_F(AlphaMaterials, ATransparentPaneTintsWhatIsBehindAndCastsAPartialShadow) 
 // blended back to front, the floor shows through both as half the red, a quarter of the blue and
 // a quarter of the floor (blue over red would be the other way round), on every lighting path.
 TEST_F(AlphaMaterials, OverlappingPanesBlendBackToFront) {
-  sandbox::SandboxScene scene;
-  scene.scene.name = "panes";
-  const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
-  const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
-  scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
-                      matte(glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
+  sandbox::SandboxScene scene = floor_scene("panes", glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
   const glm::vec4 red{0.9f, 0.1f, 0.1f, 0.5f};
   const glm::vec4 blue{0.1f, 0.1f, 0.9f, 0.5f};
   for (const auto& [color, height] : {std::pair{red, 2.0f}, std::pair{blue, 1.0f}}) {
     scene::Material glass = matte(color);
     glass.alpha_mode = scene::AlphaMode::blend;
-    scene::add_instance(scene.scene, quad, {{0.0f, height, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
-                        glass);
+    scene::add_instance(scene.scene, quad_mesh,
+                        {{0.0f, height, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}}, glass);
     // The same color opaque, as a reference, 4 m off.
-    scene::add_instance(scene.scene, quad, {{4.0f, height, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
+    scene::add_instance(scene.scene, quad_mesh,
+                        {{4.0f, height, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
                         matte(glm::vec4(glm::vec3(color), 1.0f)));
   }
   scene::ShadowSettings no_shadow;
@@ -277,15 +278,11 @@ TEST_F(AlphaMaterials, APaneOverTheBackgroundIsLitByTheLightsNearIt) {
 // without the box: the box casts no shadow of the light it holds.
 TEST_F(AlphaMaterials, ATransparentBoxShutsInNoLight) {
   const auto floor_lit = [&](bool boxed, const ShadowPath& shadow_path) {
-    sandbox::SandboxScene scene;
-    scene.scene.name = "lantern";
-    const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
-    scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
-                        matte(glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)));
+    sandbox::SandboxScene scene = floor_scene("lantern", glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
     if (boxed) {
       scene::Material glass = matte({0.9f, 0.9f, 0.9f, 0.9f});
       glass.alpha_mode = scene::AlphaMode::blend;
-      scene::add_instance(scene.scene, box, {{0.0f, 1.5f, 0.0f}, glm::quat(1, 0, 0, 0), glm::vec3(1.0f)},
+      scene::add_instance(scene.scene, box_mesh, {{0.0f, 1.5f, 0.0f}, glm::quat(1, 0, 0, 0), glm::vec3(1.0f)},
                           glass);
     }
     scene::ShadowSettings shadow;
