@@ -42,9 +42,6 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
                          summarize(phases.views)};
   stats.wall_frame_ms = summarize(record.wall_frame_ms);
   stats.lighting = lighting_path_name(frame.renderer().lighting());
-  if (const std::optional<DeferredPasses> passes = frame.renderer().deferred_passes()) {
-    stats.deferred_passes = *passes == DeferredPasses::compute ? "compute" : "fragment";
-  }
   if (record.gpu_times) {
     stats.gpu_frame_ms = summarize(record.gpu_times->frame_ms());
     stats.passes = record.gpu_times->pass_summaries();

@@ -187,28 +187,19 @@ void add_options(CLI::App& app, Options& o) {
               {"deferred", LightingPath::deferred},
               {"fused", LightingPath::fused}},
              "forward: a depth prepass, light lists per 16x16 screen tile, one forward pass; deferred: a "
-             "G-buffer, light lists, a pass per light group (--deferred-passes); fused: a depth prepass "
+             "G-buffer, light lists, a compute pass per light group; fused: a depth prepass "
              "and one forward pass of every light that tone-maps too (a few lights on CPU devices); auto: "
              "the fastest for this kind of device");
-  add_choice(app, "--deferred-passes", o.deferred_passes,
-             {{"auto", DeferredPasses::automatic},
-              {"compute", DeferredPasses::compute},
-              {"fragment", DeferredPasses::fragment}},
-             "How deferred lighting's per-pixel passes run: compute dispatches, or fragment passes over "
-             "the tiles with lights that blend into the lit sum (the G-buffer starting it); auto: "
-             "compute, measured faster on GPUs and on lavapipe");
   add_choice(
       app, "--lit-sum-start", o.lit_sum_start,
       {{"auto", LitSumStart::automatic}, {"pass", LitSumStart::pass}, {"gbuffer", LitSumStart::gbuffer}},
-      "Where deferred lighting in compute starts the lit sum (ambient light and background): a "
-      "full-screen pass of its own, or a G-buffer target; auto: the G-buffer on CPU devices, the "
-      "pass on GPUs (fragment passes always take the G-buffer's)");
+      "Where deferred lighting starts the lit sum (ambient light and background): a full-screen "
+      "pass of its own, or a G-buffer target; auto: the G-buffer on CPU devices, the pass on GPUs");
   CLI::Option* naive = app.add_flag(
       "--naive", o.naive,
       "The source documents' way, as a baseline: a pass per shadow view and six per cube, every map "
       "every frame, every caster in every shadow view, every light at every pixel");
   naive->excludes("--lighting")
-      ->excludes("--deferred-passes")
       ->excludes("--lit-sum-start")
       ->excludes("--cube-shadows")
       ->excludes("--shadow-views")

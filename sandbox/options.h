@@ -48,11 +48,10 @@ struct Options {
   uint32_t threads = 0;  // --threads: threads of the frame's parallel CPU work; 0: one per hardware thread
   bool shadow_cache = true;   // --shadow-cache off: redraw every map every frame
   bool shadow_layers = true;  // --shadow-layers off: no static layers, every redraw draws every caster
-  LightingPath lighting = LightingPath::automatic;             // --lighting auto|forward|deferred
-  DeferredPasses deferred_passes = DeferredPasses::automatic;  // --deferred-passes auto|compute|fragment
-  LitSumStart lit_sum_start = LitSumStart::automatic;          // --lit-sum-start auto|pass|gbuffer
-  float exposure = 1.0f;                                       // --exposure
-  LightingView view = LightingView::lit;                       // --view lit|shadows
+  LightingPath lighting = LightingPath::automatic;     // --lighting auto|forward|deferred
+  LitSumStart lit_sum_start = LitSumStart::automatic;  // --lit-sum-start auto|pass|gbuffer
+  float exposure = 1.0f;                               // --exposure
+  LightingView view = LightingView::lit;               // --view lit|shadows
   bool animate = true;  // --animate off: glTF animations and the stress scene's orbits stand still
   // --sidecar on|off: start from <scene>.shadowgraph.json (the saved edits). On from the command
   // line; off for programs that build Options themselves (tests, tools), so a stray file in their

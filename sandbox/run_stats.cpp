@@ -58,7 +58,6 @@ Json stats_json(const RunStats& stats) {
             {"prepare_views", summary_json(stats.cpu_phases_ms.views)}}},
           {"wall_frame_ms", summary_json(stats.wall_frame_ms)},
           {"lighting", stats.lighting},
-          {"deferred_passes", stats.deferred_passes ? Json(*stats.deferred_passes) : Json()},
           {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},
           {"passes", passes},
           {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},

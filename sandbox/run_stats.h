@@ -24,7 +24,6 @@
 //                                                // present to present in a window, frame start
 //                                                // to frame start headless; null under 2 frames
 //   "lighting": "deferred",                      // the lighting path used: forward, deferred
-//   "deferred_passes": "fragment",               // deferred's: compute or fragment; null without it
 //   "gpu_frame_ms": {"median": ..., "min": ..., "max": ...},  // null without GPU timestamps
 //   "passes": [{"name": "lighting", "gpu_ms": {"median": ..., "min": ..., "max": ...}}],
 //   "validation_errors": 0,                      // null when the validation layer was off
@@ -85,7 +84,6 @@ struct RunStats {
   } cpu_phases_ms;
   std::optional<TimeSummary> wall_frame_ms;
   std::string lighting;
-  std::optional<std::string> deferred_passes;
   std::optional<TimeSummary> gpu_frame_ms;  // unset when the device has no timestamps
   std::vector<PassTime> passes;             // in execution order
   // Unset when the validation layer was off: 0 would claim a check that never ran.

@@ -60,7 +60,6 @@ RendererSettings renderer_settings(const Options& options) {
   settings.lights.shadows = options.shadows;
   settings.cube_shadows = options.cube_shadows;
   settings.lighting = options.lighting;
-  settings.deferred_passes = options.deferred_passes;
   settings.lit_sum_start = options.lit_sum_start;
   settings.exposure = options.exposure;
   settings.view = options.view;

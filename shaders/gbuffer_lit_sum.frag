@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // The G-buffer (gbuffer.glsl) and the start of the lit sum, the ambient term times the base
 // color (what lighting_ambient.glsl writes in a pass of its own); the background is the
-// target's clear color. For deferred lighting in fragment passes (--deferred-passes fragment),
-// which then need no pass of their own for it.
+// target's clear color. Where --lit-sum-start says the G-buffer (CPU devices by default), which
+// saves the lighting a full-screen pass.
 #include "gbuffer.glsl"
 
 layout(location = 2) out vec4 out_lit_sum;

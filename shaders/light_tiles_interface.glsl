@@ -3,8 +3,8 @@
 // depth, background excluded) by a sphere, lists every light that reaches it in light-index
 // order, and, since the records are sorted by light group (systems/shadows/frame_lights.h),
 // finds each group's range in that list. Every tile with lights of a group is appended to that
-// group's tile list, whose length is the group's indirect dispatch (tiled_lighting.comp) and the
-// instance count of its indirect draw (tiled_lighting.vert). Both shaders write the same lists.
+// group's tile list, whose length is the group's indirect dispatch (tiled_lighting.comp). Both
+// shaders write the same lists.
 // Their transparent variants (systems/transparent_pass.h) bound each tile by where transparent
 // surfaces may lie in it too.
 #ifndef SG_LIGHT_TILES_INTERFACE_GLSL
@@ -30,9 +30,8 @@ layout(std430, set = 0, binding = tile_lights_binding) writeonly buffer TileLigh
 layout(std430, set = 0, binding = tile_ranges_binding) writeonly buffer TileRanges { uvec2 tile_ranges[]; };
 // Per group, tile_count slots: the tiles that have lights of the group, in no particular order.
 layout(std430, set = 0, binding = group_tiles_binding) writeonly buffer GroupTiles { uint group_tiles[]; };
-// Per group a VkDispatchIndirectCommand (x counts the group's tiles; y = z = 1), then per group a
-// VkDrawIndirectCommand (y counts them; 6 vertices, first instance the group's first slot in
-// group_tiles), all at a 16-byte stride.
+// Per group a VkDispatchIndirectCommand (x counts the group's tiles; y = z = 1), at a 16-byte
+// stride.
 layout(std430, set = 0, binding = group_commands_binding) buffer GroupCommands { uvec4 group_commands[]; };
 
 layout(push_constant) uniform Constants {
@@ -79,12 +78,11 @@ vec4 visible_sphere_of_tile(uvec2 tile_xy, float nearest, float farthest) {
 }
 
 // Records that `tile`'s lights of `group` are the `count` entries of its list from `first` on,
-// and, when there are any, lists the tile for the group's dispatch and draw.
+// and, when there are any, lists the tile for the group's dispatch.
 void publish_group_range(uint tile, uint group, uint first, uint count) {
   tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(tile * MAX_LIGHTS_PER_TILE + first, count);
   if (count == 0u) return;
   uint k = atomicAdd(group_commands[group].x, 1u);
-  atomicAdd(group_commands[LIGHT_GROUP_COUNT + group].y, 1u);
   group_tiles[group * frame.screen.w + k] = tile;
 }
 

@@ -1,9 +1,7 @@
-// Tiled deferred lighting of one light group (light_groups.glsl), shared by its two shapes: a
-// compute dispatch of one workgroup per tile (tiled_lighting.comp, GPUs) and a raster pass of one
-// quad per tile, added to the lit sum by blending (tiled_lighting.vert/.frag,
-// --deferred-passes fragment; the G-buffer then starts the lit sum). The group is a
-// specialization constant, so a pipeline contains that group's shadow code and no other: a pixel
-// pays for the lights of its tile and for the algorithm each uses.
+// Tiled deferred lighting of one light group (light_groups.glsl): what tiled_lighting.comp reads
+// and how it shades a pixel. The group is a specialization constant, so a pipeline contains that
+// group's shadow code and no other: a pixel pays for the lights of its tile and for the algorithm
+// each uses.
 #ifndef SG_TILED_LIGHTING_GLSL
 #define SG_TILED_LIGHTING_GLSL
 

@@ -29,14 +29,10 @@ struct CullConstants {
   glm::uvec4 counts;  // lights
 };
 
-// Every group's dispatch starts at zero workgroups (the culling counts them) of height and depth
-// 1, its draw at zero instances (counted too) of six vertices, from its slots in the tile lists.
-std::array<glm::uvec4, 2 * light_group_count> empty_commands(LightTileGrid grid) {
-  std::array<glm::uvec4, 2 * light_group_count> commands;
-  for (uint32_t group = 0; group < light_group_count; ++group) {
-    commands[group] = glm::uvec4(0u, 1u, 1u, 0u);
-    commands[light_group_count + group] = glm::uvec4(6u, 0u, 0u, group * grid.count());
-  }
+// Every group's dispatch starts at zero workgroups (the culling counts them) of height and depth 1.
+std::array<glm::uvec4, light_group_count> empty_commands() {
+  std::array<glm::uvec4, light_group_count> commands;
+  commands.fill(glm::uvec4(0u, 1u, 1u, 0u));
   return commands;
 }
 
@@ -91,11 +87,8 @@ uint64_t LightTilesPass::ranges_bytes(LightTileGrid grid) {
 uint64_t LightTilesPass::tiles_bytes(LightTileGrid grid) {
   return uint64_t{grid.count()} * light_group_count * sizeof(uint32_t);
 }
-uint64_t LightTilesPass::commands_bytes() { return 2 * light_group_count * sizeof(glm::uvec4); }
+uint64_t LightTilesPass::commands_bytes() { return light_group_count * sizeof(glm::uvec4); }
 uint64_t LightTilesPass::dispatch_offset(uint32_t group) { return group * sizeof(glm::uvec4); }
-uint64_t LightTilesPass::draw_offset(uint32_t group) {
-  return (light_group_count + group) * sizeof(glm::uvec4);
-}
 
 LightTilesPass::LightTilesPass(vk::VulkanContext& context, LightCullingShape shape, bool transparent_bounds)
     : shape_(resolve(shape, context)),
@@ -125,8 +118,8 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
                       rg::Usage::transfer);
           return commands;
         },
-        [grid](rg::BufferHandle written, const vk::PassRecorder& rec) {
-          const auto commands = empty_commands(grid);
+        [](rg::BufferHandle written, const vk::PassRecorder& rec) {
+          const auto commands = empty_commands();
           vkCmdUpdateBuffer(rec.cmd(), rec.buffer(written), 0, sizeof(commands), commands.data());
         });
     return commands;

@@ -1,7 +1,7 @@
 #pragma once
 // Light culling for tiled lighting (shaders/light_tiles.comp): per screen tile of
 // LIGHT_TILE_SIZE pixels, the lights that reach the tile's visible surfaces, grouped by light
-// group, and per group the tiles to shade with their indirect dispatch and draw.
+// group, and per group the tiles to shade with their indirect dispatch.
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -27,8 +27,7 @@ struct LightTiles {
   rg::BufferHandle lights;  // per tile, MAX_LIGHTS_PER_TILE light indices
   rg::BufferHandle ranges;  // per tile and group: first entry, count
   rg::BufferHandle tiles;   // per group, the tiles that have its lights
-  // Per group a VkDispatchIndirectCommand (a workgroup per tile), then per group a
-  // VkDrawIndirectCommand (a six-vertex instance per tile), all at a 16-byte stride.
+  // Per group a VkDispatchIndirectCommand (a workgroup per tile), at a 16-byte stride.
   rg::BufferHandle commands;
 };
 
@@ -58,9 +57,8 @@ class LightTilesPass {
   static uint64_t ranges_bytes(LightTileGrid grid);
   static uint64_t tiles_bytes(LightTileGrid grid);
   static uint64_t commands_bytes();
-  // Offsets in `commands` of `group`'s dispatch and draw.
+  // The offset in `commands` of `group`'s dispatch.
   static uint64_t dispatch_offset(uint32_t group);
-  static uint64_t draw_offset(uint32_t group);
 
   // Culls the first `light_count` records of `lights` (sorted by group) against the tiles of
   // `depth` (the scene's D32 depth, rendered with `view_projection`), and on a pass made with

@@ -7,8 +7,8 @@ namespace sg {
 // How the frame is lit. Both tiled paths cull lights per 16x16 screen tile and shade a pixel
 // only with its tile's lights, each with its own algorithm:
 // - forward: depth prepass, light culling, one forward pass;
-// - deferred: G-buffer, light culling, a pass per light group (each holding one algorithm's
-//   code; DeferredPasses says whether compute or fragment);
+// - deferred: G-buffer, light culling, a compute pass per light group (each holding one
+//   algorithm's code);
 // - every_light: one forward pass with every light at every pixel (the --naive baseline);
 // - fused: depth prepass, then one forward pass with every light at every pixel, holding only
 //   the frame's light groups' code, that tone-maps into the frame: the fewest full-screen passes,
@@ -27,22 +27,12 @@ constexpr LightingPath cpu_lighting_for(uint32_t lights) {
   return lights <= 4 ? LightingPath::fused : LightingPath::deferred;
 }
 
-// How deferred lighting's per-light-group passes run: compute dispatches writing a storage image
-// (the lit sum started as LitSumStart says), or fragment passes over one quad per tile with
-// lights of the group, adding into the lit sum by blending (the G-buffer pass starts it, which
-// saves a full-screen pass). Compute measured faster on both kinds of device: on lavapipe (idle
-// VM, default scene, 1280x720) 157-165 ms a frame against 169-170, the group passes 10-15%
-// slower as fragment passes than the ambient pass they save; on the H200 fragment passes are
-// several times slower (docs/PERFORMANCE.md). automatic: compute.
-enum class DeferredPasses { automatic, compute, fragment };
-
 // Where deferred lighting's lit sum starts (the ambient term times the base color, the background
-// where no surface was drawn) when its group passes run in compute: a full-screen compute pass,
-// or a third G-buffer target. The target costs the G-buffer more than the pass costs on GPUs with
-// little raster hardware (H200, default scene, 1920x1080: +0.57 ms against 0.012) and less on
-// lavapipe, whose compute passes store to images lane by lane (1280x720: +2.6 ms against 6.5).
-// automatic: the G-buffer on CPU devices, the pass on GPUs. Fragment passes always add to the
-// G-buffer's.
+// where no surface was drawn): a full-screen compute pass, or a third G-buffer target. The target
+// costs the G-buffer more than the pass costs on GPUs with little raster hardware (H200, default
+// scene, 1920x1080: +0.57 ms against 0.012) and less on lavapipe, whose compute passes store to
+// images lane by lane (1280x720: +2.6 ms against 6.5).
+// automatic: the G-buffer on CPU devices, the pass on GPUs.
 enum class LitSumStart { automatic, pass, gbuffer };
 
 // What the lighting writes: the lit picture, or the shadow-only debug view (white diffuse surfaces

@@ -85,7 +85,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       break;
     case LightingPath::automatic:  // resolved above
     case LightingPath::deferred: {
-      TiledLightingPass lighting(context, settings.deferred_passes, settings.lit_sum_start);
+      TiledLightingPass lighting(context, settings.lit_sum_start);
       const bool lit_sum_from_gbuffer = lighting.lit_sum_from_gbuffer();
       deferred_.emplace(GBufferPass(context, frames_in_flight, textures_, lit_sum_from_gbuffer),
                         LightTilesPass(context), std::move(lighting));

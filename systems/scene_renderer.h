@@ -51,8 +51,7 @@ struct RendererSettings {
   shadows::LightOverrides lights;
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
   LightingPath lighting = LightingPath::automatic;
-  DeferredPasses deferred_passes = DeferredPasses::automatic;  // the deferred path's
-  LitSumStart lit_sum_start = LitSumStart::automatic;          // the deferred path's
+  LitSumStart lit_sum_start = LitSumStart::automatic;  // the deferred path's
   bool cull_casters = true;  // off: every shadow view draws every caster (the naive baseline)
   // Batched falls back to per-light where the device cannot draw views into atlas layers at once.
   shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;
@@ -106,10 +105,6 @@ class SceneRenderer {
   // The lighting path in use: the settings' one, or for automatic the one chosen for the device.
   // The last prepared frame's (automatic resolved).
   LightingPath lighting() const { return lighting_; }
-  // The deferred path's passes (compute or fragment), where the renderer has that path.
-  std::optional<DeferredPasses> deferred_passes() const {
-    return deferred_ ? std::optional(deferred_->lighting.passes()) : std::nullopt;
-  }
   const GpuScene& gpu_scene() const { return gpu_scene_; }
   const shadows::FrameLights& lights() const { return lights_; }
   const ShadowAtlas& shadow_atlas() const { return atlas_; }

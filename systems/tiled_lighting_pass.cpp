@@ -10,8 +10,6 @@
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/lighting_ambient.comp.spv.h"
 #include "shaders/tiled_lighting.comp.spv.h"
-#include "shaders/tiled_lighting.frag.spv.h"
-#include "shaders/tiled_lighting.vert.spv.h"
 #include "systems/scene_gpu_types.h"
 #include "systems/shader_bindings.h"
 
@@ -50,39 +48,16 @@ LightingConstants with_group_light(LightingConstants constants, uint32_t light) 
   return constants;
 }
 
-// Compute measured faster on both kinds of device (lighting_path.h).
-DeferredPasses resolve(DeferredPasses passes) {
-  return passes == DeferredPasses::automatic ? DeferredPasses::compute : passes;
-}
-
-bool starts_in_gbuffer(DeferredPasses passes, LitSumStart start, const vk::VulkanContext& context) {
-  if (passes == DeferredPasses::fragment) return true;  // they blend into a color attachment
+bool starts_in_gbuffer(LitSumStart start, const vk::VulkanContext& context) {
   if (start != LitSumStart::automatic) return start == LitSumStart::gbuffer;
   return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
 }
 
-VkShaderStageFlags stages_of(DeferredPasses passes) {
-  return passes == DeferredPasses::compute ? VK_SHADER_STAGE_COMPUTE_BIT
-                                           : VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-}
-
-// `bindings`, and in compute the lit sum as a storage image (fragment passes write it as their
-// color attachment).
-std::vector<VkDescriptorSetLayoutBinding> with_lit_sum(std::vector<VkDescriptorSetLayoutBinding> bindings,
-                                                       DeferredPasses passes) {
-  if (passes == DeferredPasses::compute) {
-    bindings.push_back({hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT});
-  }
-  return bindings;
-}
-
 }  // namespace
 
-TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses passes, LitSumStart start)
+TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart start)
     : context_(context),
-      passes_(resolve(passes)),
-      lit_sum_from_gbuffer_(starts_in_gbuffer(passes_, start, context)),
-      stages_(stages_of(passes_)),
+      lit_sum_from_gbuffer_(starts_in_gbuffer(start, context)),
       light_resources_(context),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       ambient_layout_(context.device(),
@@ -95,18 +70,17 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, DeferredPasses 
               ? vk::create_compute_pipeline(
                     context, {lighting_ambient_comp, {}, ambient_layout_.get(), "lighting ambient"})
               : vk::UniquePipeline{}),
-      layout_(
-          context.device(),
-          LightResources::bindings(
-              stages_,
-              with_lit_sum({{scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages_},
-                            {gbuffer_normal_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages_},
-                            {gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages_},
-                            {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages_},
-                            {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages_},
-                            {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages_}},
-                           passes_)),
-          vk::push_constants<LightingConstants>(stages_)) {}
+      layout_(context.device(),
+              LightResources::bindings(
+                  compute_stage,
+                  {{scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
+                   {gbuffer_normal_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
+                   {gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
+                   {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
+                   {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
+                   {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
+                   {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute_stage}}),
+              vk::push_constants<LightingConstants>(compute_stage)) {}
 
 void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView view) {
   current_.fill(VK_NULL_HANDLE);
@@ -124,17 +98,7 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
     // 4: whether the group has a single light.
     const std::vector<uint32_t> constants{group, static_cast<uint32_t>(view), 0u, types, single};
     const std::string name = "tiled lighting " + group_name(group);
-    pipeline =
-        in_compute()
-            ? vk::create_compute_pipeline(context_, {tiled_lighting_comp, constants, layout_.get(), name})
-            : vk::create_graphics_pipeline(context_, {.vertex_spirv = tiled_lighting_vert,
-                                                      .fragment_spirv = tiled_lighting_frag,
-                                                      .fragment_specialization = constants,
-                                                      .color_formats = {vk::to_vk(lit_sum_format)},
-                                                      .cull_mode = VK_CULL_MODE_NONE,
-                                                      .blend = vk::Blend::add,
-                                                      .layout = layout_.get(),
-                                                      .name = name});
+    pipeline = vk::create_compute_pipeline(context_, {tiled_lighting_comp, constants, layout_.get(), name});
     current_[group] = pipeline.get();
   }
 }
@@ -150,11 +114,6 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
                                     glm::vec4(camera_position, 0.0f),
                                     {screen.width, screen.height, grid.across, grid.count()},
                                     {}};
-  const bool compute = in_compute();
-  const rg::Usage sampled = compute ? rg::Usage::sampled_compute : rg::Usage::sampled_fragment;
-  const rg::Usage storage = compute ? rg::Usage::storage_compute : rg::Usage::storage_fragment;
-  // Fragment passes add to the lit sum by blending; every pixel of it is written by the first.
-  const rg::Usage lit_sum_usage = compute ? rg::Usage::storage_compute : rg::Usage::color_attachment;
   rg::ImageHandle lit_sum = gbuffer.lit_sum;
   if (lit_sum_from_gbuffer_ != lit_sum.valid()) {
     throw std::logic_error(lit_sum_from_gbuffer_
@@ -193,15 +152,15 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
         "lighting " + group_name(group),
         [&](rg::PassBuilder& b) {
           for (const rg::ImageHandle image : {atlas, gbuffer.depth, gbuffer.normal, gbuffer.albedo}) {
-            b.read(image, sampled);
+            b.read(image, rg::Usage::sampled_compute);
           }
-          b.read(tiles.lights, storage);
-          b.read(tiles.ranges, storage);
-          b.read(tiles.tiles, compute ? storage : rg::Usage::storage_vertex);
+          for (const rg::BufferHandle buffer : {tiles.lights, tiles.ranges, tiles.tiles}) {
+            b.read(buffer, rg::Usage::storage_compute);
+          }
           b.read(tiles.commands, rg::Usage::indirect);
-          lit_sum = b.write(lit_sum, lit_sum_usage);
+          lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
         },
-        [this, compute, group, gbuffer, tiles, atlas, lit_sum, &lights,
+        [this, group, gbuffer, tiles, atlas, lit_sum, &lights,
          constants = with_group_light(constants, group_light_[group]),
          pipeline = current_[group]](const vk::PassRecorder& rec) {
           const VkSampler nearest = nearest_.get();
@@ -211,24 +170,15 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
               .image(gbuffer_albedo_binding, rec.view(gbuffer.albedo), nearest)
               .buffer(tile_lights_binding, rec.buffer(tiles.lights))
               .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
-              .buffer(group_tiles_binding, rec.buffer(tiles.tiles));
-          if (compute) writer.image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
+              .buffer(group_tiles_binding, rec.buffer(tiles.tiles))
+              .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
           const VkDescriptorSet set =
               light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
-          if (compute) {
-            vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-            layout_.bind_compute(rec.cmd(), set);
-            layout_.push(rec.cmd(), constants);
-            vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.commands),
-                                  LightTilesPass::dispatch_offset(group));
-            return;
-          }
-          rec.set_full_viewport();
-          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-          layout_.bind(rec.cmd(), set);
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+          layout_.bind_compute(rec.cmd(), set);
           layout_.push(rec.cmd(), constants);
-          vkCmdDrawIndirect(rec.cmd(), rec.buffer(tiles.commands), LightTilesPass::draw_offset(group), 1,
-                            sizeof(VkDrawIndirectCommand));
+          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.commands),
+                                LightTilesPass::dispatch_offset(group));
         });
   }
   return lit_sum;

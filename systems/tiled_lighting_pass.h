@@ -2,9 +2,9 @@
 // Tiled deferred lighting: the lit sum starts from the ambient term and the background (a
 // compute pass, shaders/lighting_ambient.comp, or the G-buffer pass itself: LitSumStart), then
 // for each light group that has lights one pass with that group's shadow code compiled in
-// (shaders/tiled_lighting.glsl), over the tiles that have lights of the group (an indirect
-// dispatch or draw from LightTilesPass), adding them to the lit sum. The group passes are compute
-// dispatches or fragment passes (DeferredPasses, lighting_path.h).
+// (shaders/tiled_lighting.comp), over the tiles that have lights of the group (an indirect
+// dispatch from LightTilesPass), adding them to the lit sum. Fragment passes over a quad per tile
+// lost on both kinds of device (docs/PERFORMANCE.md) and are gone.
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -30,10 +30,8 @@ namespace sg {
 
 class TiledLightingPass {
  public:
-  // `passes` and `start` automatic are resolved for the context's device (passes() and
-  // lit_sum_from_gbuffer() say how).
-  TiledLightingPass(vk::VulkanContext& context, DeferredPasses passes,
-                    LitSumStart start = LitSumStart::automatic);
+  // `start` automatic is resolved for the context's device (lit_sum_from_gbuffer() says how).
+  explicit TiledLightingPass(vk::VulkanContext& context, LitSumStart start = LitSumStart::automatic);
 
   // Picks, and compiles when first needed, the pipeline of each group that has lights in
   // `lights` (sorted by group): each holds one algorithm's shadow code and only the code of the
@@ -52,19 +50,13 @@ class TiledLightingPass {
                          rg::ImageHandle atlas, const vk::Buffer& lights, const glm::mat4& view_projection,
                          const glm::vec3& camera_position, float ambient) const;
 
-  // compute or fragment.
-  DeferredPasses passes() const { return passes_; }
   // Whether the G-buffer pass must start the lit sum (GBufferPass's writes_lit_sum), the
   // ambient pass then left out (LitSumStart, lighting_path.h).
   bool lit_sum_from_gbuffer() const { return lit_sum_from_gbuffer_; }
 
  private:
-  bool in_compute() const { return passes_ == DeferredPasses::compute; }
-
   vk::VulkanContext& context_;
-  DeferredPasses passes_;
   bool lit_sum_from_gbuffer_;
-  VkShaderStageFlags stages_;  // what reads the passes' resources
   LightResources light_resources_;
   vk::UniqueSampler nearest_;  // G-buffer reads
   vk::PipelineLayout ambient_layout_;

@@ -121,12 +121,9 @@ TEST(SandboxOptions, ShadowStorageAndAnimationOptions) {
 TEST(SandboxOptions, LightingOptions) {
   const Options defaults = parse_ok({});
   EXPECT_EQ(defaults.lighting, LightingPath::automatic);
-  EXPECT_EQ(defaults.deferred_passes, DeferredPasses::automatic);
   EXPECT_EQ(defaults.exposure, 1.0f);
   EXPECT_FALSE(defaults.naive);
   EXPECT_EQ(parse_ok({"--lighting", "forward"}).lighting, LightingPath::forward);
-  EXPECT_EQ(parse_ok({"--deferred-passes", "compute"}).deferred_passes, DeferredPasses::compute);
-  EXPECT_EQ(parse_ok({"--deferred-passes", "fragment"}).deferred_passes, DeferredPasses::fragment);
   EXPECT_EQ(defaults.lit_sum_start, LitSumStart::automatic);
   EXPECT_EQ(parse_ok({"--lit-sum-start", "pass"}).lit_sum_start, LitSumStart::pass);
   EXPECT_EQ(parse_ok({"--lit-sum-start", "gbuffer"}).lit_sum_start, LitSumStart::gbuffer);
@@ -135,8 +132,8 @@ TEST(SandboxOptions, LightingOptions) {
   for (const std::vector<std::string>& bad : {std::vector<std::string>{"--lighting", "raytraced"},
                                               {"--exposure", "0"},
                                               {"--naive", "--lighting", "deferred"},
-                                              {"--deferred-passes", "vertex"},
-                                              {"--naive", "--deferred-passes", "compute"},
+                                              {"--deferred-passes", "compute"},
+                                              {"--naive", "--lit-sum-start", "pass"},
                                               {"--naive", "--cube-shadows", "layered"}}) {
     EXPECT_EQ(parse(bad).exit_code, 2) << bad[0] << " " << bad[1];
   }

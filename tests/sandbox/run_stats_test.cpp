@@ -79,7 +79,6 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                          TimeSummary{0.125, 0.0625, 0.5}, TimeSummary{0.0625, 0.03125, 0.125}};
   stats.wall_frame_ms = TimeSummary{16.5, 16.25, 33.0};
   stats.lighting = "deferred";
-  stats.deferred_passes = "fragment";
   stats.gpu_frame_ms = TimeSummary{0.5, 0.25, 0.875};
   stats.passes = {{"shadow_atlas", {0.125, 0.0625, 0.25}}, {"lighting", {0.375, 0.25, 0.5}}};
   stats.validation_errors = 4;
@@ -103,7 +102,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 14u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 13u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);
@@ -127,7 +126,6 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   expect_summary(phases.at("prepare_upload"), *stats.cpu_phases_ms.upload);
   expect_summary(phases.at("prepare_views"), *stats.cpu_phases_ms.views);
   EXPECT_EQ(json.at("lighting"), "deferred");
-  EXPECT_EQ(json.at("deferred_passes"), "fragment");
   expect_summary(json.at("gpu_frame_ms"), *stats.gpu_frame_ms);
   const nlohmann::json& passes = json.at("passes");
   ASSERT_EQ(passes.size(), 2u);

@@ -252,19 +252,13 @@ void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullin
   // The scene is meant to exercise the culling: many listings, few lights on a tile's boundary.
   EXPECT_GT(listed, 200u);
   EXPECT_LT(undecided, listed / 50 + 1);
-  // Each group dispatches and draws exactly the tiles that have its lights (its draw from its own
-  // slots of the tile lists); the sky corner has none.
+  // Each group dispatches exactly the tiles that have its lights; the sky corner has none.
   for (uint32_t group = 0; group < groups; ++group) {
     uint32_t with_lights = 0;
     for (uint32_t tile = 0; tile < grid.count(); ++tile) with_lights += ranges[tile * groups + group].y > 0;
     EXPECT_EQ(commands[group].x, with_lights);
     EXPECT_EQ(commands[group].y, 1u);
     EXPECT_EQ(commands[group].z, 1u);
-    const glm::uvec4 draw = commands[groups + group];
-    EXPECT_EQ(draw.x, 6u);
-    EXPECT_EQ(draw.y, with_lights);
-    EXPECT_EQ(draw.z, 0u);
-    EXPECT_EQ(draw.w, group * grid.count());
   }
   EXPECT_EQ(ranges[0].y + ranges[1].y, 0u) << "the sky tile (0, 0) lists no lights";
 }
