@@ -183,13 +183,11 @@ void add_options(CLI::App& app, Options& o) {
       "caster");
   add_choice(app, "--lighting", o.lighting,
              {{"auto", LightingPath::automatic},
-              {"forward", LightingPath::forward},
               {"deferred", LightingPath::deferred},
               {"fused", LightingPath::fused}},
-             "forward: a depth prepass, light lists per 16x16 screen tile, one forward pass; deferred: a "
-             "G-buffer, light lists, a compute pass per light group; fused: a depth prepass "
-             "and one forward pass of every light that tone-maps too (a few lights on CPU devices); auto: "
-             "the fastest for this kind of device");
+             "deferred: a G-buffer, light lists per 16x16 screen tile, a compute pass per light group; "
+             "fused: a depth prepass and one forward pass of every light that tone-maps too (a few "
+             "lights on CPU devices); auto: the fastest for this kind of device");
   add_choice(
       app, "--lit-sum-start", o.lit_sum_start,
       {{"auto", LitSumStart::automatic}, {"pass", LitSumStart::pass}, {"gbuffer", LitSumStart::gbuffer}},

@@ -4,9 +4,8 @@
 
 namespace sg {
 
-// How the frame is lit. Both tiled paths cull lights per 16x16 screen tile and shade a pixel
-// only with its tile's lights, each with its own algorithm:
-// - forward: depth prepass, light culling, one forward pass;
+// How the frame is lit, each light with its own algorithm (docs/PERFORMANCE.md says where each
+// wins; tiled forward lighting won nowhere and is gone):
 // - deferred: G-buffer, light culling, a compute pass per light group (each holding one
 //   algorithm's code);
 // - every_light: one forward pass with every light at every pixel (the --naive baseline);
@@ -15,7 +14,7 @@ namespace sg {
 //   for a few lights on CPU devices;
 // - automatic: on GPUs deferred; on CPU devices each frame cpu_lighting_for's choice
 //   (SceneRenderer::lighting says which).
-enum class LightingPath { automatic, forward, deferred, every_light, fused };
+enum class LightingPath { automatic, deferred, every_light, fused };
 
 // automatic's choice on a CPU device for a frame of `lights` lights: fused while its cost, every
 // light at every pixel, stays below deferred's, whose passes cost more but a pixel only its
@@ -42,7 +41,6 @@ enum class LightingView : uint32_t { lit = 0, shadows = 1 };
 constexpr std::string_view lighting_path_name(LightingPath path) {
   switch (path) {
     case LightingPath::automatic: return "auto";
-    case LightingPath::forward: return "forward";
     case LightingPath::deferred: return "deferred";
     case LightingPath::every_light: return "every light";
     case LightingPath::fused: return "fused";

@@ -23,7 +23,8 @@ inline constexpr glm::vec3 background_color{0.02f, 0.02f, 0.03f};
 struct FrameConstants {
   glm::mat4 view_projection;
   glm::vec4 camera_position;  // w: ambient term kA * IA
-  // x: lights; y: light tiles across the screen (tiled forward); z: the exposure's bits (fused)
+  // x: lights; y: light tiles across the screen (transparent_tiled.frag); z: the exposure's bits
+  // (fused); w: 1 where the transparent pass blends into a tone-mapped frame
   glm::uvec4 counts;
 };
 static_assert(sizeof(FrameConstants) <= 128, "Vulkan guarantees only 128 bytes of push constants");

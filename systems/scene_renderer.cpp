@@ -76,10 +76,6 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
   }
   switch (lighting_) {
     case LightingPath::every_light: every_light_.emplace(context, frames_in_flight, textures_); break;
-    case LightingPath::forward:
-      tiled_forward_.emplace(DepthPrepass(context, textures_), TiledForwardPass(context, textures_),
-                             LightTilesPass(context));
-      break;
     case LightingPath::fused:
       fused_.emplace(DepthPrepass(context, textures_), FusedForwardPass(context, textures_, frame_format));
       break;
@@ -158,10 +154,6 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     case LightingPath::every_light:
       every_light_->prepare(slot, gpu_scene_, records, atlas_, settings_.view);
       break;
-    case LightingPath::forward:
-      tiled_forward_->prepass.prepare(gpu_scene_);
-      tiled_forward_->forward.prepare(lights_.group_begin, settings_.view, gpu_scene_);
-      break;
     case LightingPath::fused:
       fused_->prepass.prepare(gpu_scene_);
       fused_->forward.prepare(lights_.group_begin, settings_.view, gpu_scene_);
@@ -176,7 +168,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     if (!transparent_) transparent_.emplace(context_, frames_in_flight_, textures_);
     gpu_scene_.order_transparent(pose.eye);
     // Lit as the opaque surfaces were: from tile lists, or by every light.
-    const bool tiled = lighting_ == LightingPath::deferred || lighting_ == LightingPath::forward;
+    const bool tiled = lighting_ == LightingPath::deferred;
     transparent_->prepare(lit_format(), tiled, lights_.group_begin, settings_.view, gpu_scene_, slot,
                           camera.view_projection, {width, height});
   }
@@ -261,15 +253,6 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
         every_light_->add_to(graph, target.width, target.height, atlas, gpu_scene_, slot, constants);
     lit_sum = lit.lit_sum;
     depth = lit.depth;
-  } else if (lighting_ == LightingPath::forward) {
-    depth = tiled_forward_->prepass.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
-    const LightTiles tiles =
-        tiled_forward_->light_tiles.add_to(graph, depth, records, light_count, view_projection);
-    const ForwardTargets lit =
-        tiled_forward_->forward.add_to(graph, depth, tiles, atlas, records, gpu_scene_, slot, constants);
-    lit_sum = lit.lit_sum;
-    depth = lit.depth;  // the forward pass's version: later readers must take the newest
-    light_tiles = tiles;
   } else {
     const GBuffer gbuffer =
         deferred_->gbuffer.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
@@ -290,8 +273,7 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
 rg::Format SceneRenderer::lit_format() const {
   switch (lighting_) {
     case LightingPath::fused: return frame_format_;
-    case LightingPath::every_light:
-    case LightingPath::forward: return ForwardPass::lit_sum_format;
+    case LightingPath::every_light: return ForwardPass::lit_sum_format;
     case LightingPath::automatic:  // resolved
     case LightingPath::deferred: break;
   }

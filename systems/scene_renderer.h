@@ -36,7 +36,6 @@
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_schedule.h"
 #include "systems/shadows/shadow_view_path.h"
-#include "systems/tiled_forward_pass.h"
 #include "systems/tiled_lighting_pass.h"
 #include "systems/tone_map_pass.h"
 #include "systems/transparent_pass.h"
@@ -164,11 +163,6 @@ class SceneRenderer {
   std::vector<scene::Aabb> moved_casters_;
   CpuSteps cpu_steps_;
   // The passes of the path in use only: a CPU driver compiles a pipeline slowly.
-  struct TiledForward {
-    DepthPrepass prepass;
-    TiledForwardPass forward;
-    LightTilesPass light_tiles;
-  };
   struct Fused {
     DepthPrepass prepass;
     FusedForwardPass forward;
@@ -179,7 +173,6 @@ class SceneRenderer {
     TiledLightingPass lighting;
   };
   std::optional<ForwardPass> every_light_;
-  std::optional<TiledForward> tiled_forward_;
   std::optional<Deferred> deferred_;
   std::optional<Fused> fused_;
   std::optional<TransparentPass> transparent_;  // made with the first transparent surface

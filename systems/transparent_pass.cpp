@@ -9,7 +9,7 @@
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "shaders/scene_fused_transparent.frag.spv.h"
-#include "shaders/scene_tiled_transparent.frag.spv.h"
+#include "shaders/transparent_tiled.frag.spv.h"
 #include "systems/gpu_scene.h"
 #include "systems/gpu_textures.h"
 #include "systems/shader_bindings.h"
@@ -62,7 +62,7 @@ void TransparentPass::prepare(rg::Format format, bool tiled,
   key_ = pipeline_key(format, tiled, groups, view);
   const VkPipelineLayout layout = (tiled ? tiled_layout_ : every_light_layout_).get();
   const std::span<const uint32_t> fragment_shader =
-      tiled ? std::span<const uint32_t>(scene_tiled_transparent_frag) : scene_fused_transparent_frag;
+      tiled ? std::span<const uint32_t>(transparent_tiled_frag) : scene_fused_transparent_frag;
   pipelines_
       .try_emplace(
           key_,

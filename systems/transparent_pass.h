@@ -1,7 +1,7 @@
 #pragma once
 // Transparent surfaces (glTF alphaMode BLEND, the draw classes with draw_blended), after the
 // opaque lighting and before tone mapping, on every lighting path. Where the opaque surfaces
-// were lit from light lists per screen tile (deferred, tiled forward), so are these:
+// were lit from light lists per screen tile (deferred), so are these:
 //
 //   light tiles   (compute)  light culling bounded by the opaque depths and by where the
 //                            transparent instances' boxes lie on screen (transparent_tile_bounds,
@@ -9,7 +9,7 @@
 //                            surfaces too
 //   transparent   (raster)   the surfaces back to front (GpuScene::order_transparent), each lit
 //                            by its tile's lights and their shadows as the opaque surfaces are
-//                            (shaders/scene_tiled.frag's transparent variant), blended over the
+//                            (shaders/transparent_tiled.frag), blended over the
 //                            target by its alpha, depth-tested against the opaque depth, not
 //                            writing it
 //
@@ -78,8 +78,8 @@ class TransparentPass {
   vk::FrameBuffers tile_bounds_;  // transparent_tile_bounds, per slot
   std::vector<scene::Aabb> boxes_;
   std::vector<glm::vec2> bounds_;
-  vk::PipelineLayout tiled_layout_;                          // scene_tiled.frag's: the lights, the tile lists
-  vk::PipelineLayout every_light_layout_;                    // scene_fused.frag's: the lights
+  vk::PipelineLayout tiled_layout_;        // transparent_tiled.frag's: the lights, the tile lists
+  vk::PipelineLayout every_light_layout_;  // scene_fused.frag's: the lights
   std::unordered_map<uint64_t, CameraPipelines> pipelines_;  // by pipeline_key
   uint64_t key_ = 0;                                         // this frame's
   bool tiled_ = false;                                       // this frame's

@@ -123,7 +123,7 @@ TEST(SandboxOptions, LightingOptions) {
   EXPECT_EQ(defaults.lighting, LightingPath::automatic);
   EXPECT_EQ(defaults.exposure, 1.0f);
   EXPECT_FALSE(defaults.naive);
-  EXPECT_EQ(parse_ok({"--lighting", "forward"}).lighting, LightingPath::forward);
+  EXPECT_EQ(parse_ok({"--lighting", "fused"}).lighting, LightingPath::fused);
   EXPECT_EQ(defaults.lit_sum_start, LitSumStart::automatic);
   EXPECT_EQ(parse_ok({"--lit-sum-start", "pass"}).lit_sum_start, LitSumStart::pass);
   EXPECT_EQ(parse_ok({"--lit-sum-start", "gbuffer"}).lit_sum_start, LitSumStart::gbuffer);

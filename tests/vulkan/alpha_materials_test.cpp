@@ -26,7 +26,8 @@ namespace {
 constexpr uint32_t width = 96;
 constexpr uint32_t height = 96;
 
-constexpr LightingPath every_path[] = {LightingPath::deferred, LightingPath::forward, LightingPath::fused};
+constexpr LightingPath every_path[] = {LightingPath::deferred, LightingPath::fused,
+                                       LightingPath::every_light};
 
 // The ways shadow views are drawn, each with its own cut-out shaders.
 struct ShadowPath {

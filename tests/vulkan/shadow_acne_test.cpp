@@ -503,9 +503,6 @@ TEST_F(ShadowAcne, DirectionalLightOnTheComputeRaster) {
 }
 
 // The forward paths shade the rasterized positions.
-TEST_F(ShadowAcne, SpotLightsOnForwardLighting) { run(Kind::spot, LightingPath::forward, hardware); }
-TEST_F(ShadowAcne, PointLightsOnForwardLighting) { run(Kind::point, LightingPath::forward, hardware); }
-TEST_F(ShadowAcne, CylinderLightsOnForwardLighting) { run(Kind::cylinder, LightingPath::forward, hardware); }
 TEST_F(ShadowAcne, SpotLightsOnFusedLighting) { run(Kind::spot, LightingPath::fused, hardware); }
 TEST_F(ShadowAcne, PointLightsOnFusedLighting) { run(Kind::point, LightingPath::fused, hardware); }
 TEST_F(ShadowAcne, CylinderLightsOnFusedLighting) { run(Kind::cylinder, LightingPath::fused, hardware); }

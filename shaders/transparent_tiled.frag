@@ -1,21 +1,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// variant transparent TRANSPARENT
-// Tiled forward lighting: ambient plus the lights of this pixel's screen tile (light_tiles.comp
-// ran on a depth prepass), group by group, each group's shadow kind and algorithm a constant.
-// GROUPS_PRESENT (a specialization constant, bit g for group g) removes the groups the frame has
-// no light of, so the shader holds only the shadow code the frame uses.
-//
-// The transparent variant (systems/transparent_pass.h) gives the surface's alpha for blending,
-// and where frame.counts.w is 1 the color tone-mapped with the exposure in counts.z, for a frame
-// that is already (the fused path's): the curve is the identity below its knee, where blending
-// after it is blending before.
+// Transparent surfaces lit from tile lists (systems/transparent_pass.h): ambient plus the lights
+// of this pixel's screen tile (light_tiles.comp, its transparent variant), group by group, each
+// group's shadow kind and algorithm a constant, and the surface's alpha for blending. Where
+// frame.counts.w is 1 the color is tone-mapped with the exposure in counts.z, for a frame that
+// is already: the curve is the identity below its knee, where blending after it is blending
+// before. GROUPS_PRESENT (a specialization constant, bit g for group g) removes the groups the
+// frame has no light of, so the shader holds only the shadow code the frame uses.
 #include "light_shading.glsl"
 #include "light_tiles.glsl"
 #include "material.glsl"
-#ifdef TRANSPARENT
 #include "tone_map.glsl"
-#endif
 
 layout(constant_id = 0) const uint GROUPS_PRESENT = 0x7FFu;
 
@@ -58,10 +53,6 @@ void main() {
   color += shade_group(8u, tile, p);
   color += shade_group(9u, tile, p);
   color += shade_group(10u, tile, p);
-#ifdef TRANSPARENT
   if (frame.counts.w == 1u) color = tone_map(color, uintBitsToFloat(frame.counts.z));
   out_color = vec4(color, fragment_base_color().a);
-#else
-  out_color = vec4(color, 1.0);
-#endif
 }
