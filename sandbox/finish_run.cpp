@@ -14,7 +14,7 @@
 namespace sg::sandbox {
 
 int finish_run(const Options& options, vk::VulkanContext& context, const SandboxScene& scene,
-               const SandboxFrame& frame, const RunRecord& record) {
+               SandboxFrame& frame, const RunRecord& record) {
   const bool rendered = !record.cpu_frame_ms.empty();
   if (!options.screenshot.empty() && !rendered) {
     std::printf("shadowgraph: no frame was rendered, so no screenshot was written\n");
@@ -51,6 +51,11 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
   const ShadowAtlas& atlas = renderer.shadow_atlas();
   const shadows::ShadowScheduleStats& schedule = renderer.shadow_stats();
   stats.shadow_map_bytes = atlas.bytes();
+  stats.dropped_light_pairs = frame.take_dropped_light_pairs();
+  if (stats.dropped_light_pairs > 0) {
+    std::printf("shadowgraph: %llu (tile, light) pairs were left out of full light lists over the run\n",
+                static_cast<unsigned long long>(stats.dropped_light_pairs));
+  }
   const std::optional<shadows::ShadowRaster> raster = renderer.shadow_raster();
   stats.shadows = {
       renderer.shadow_views() == shadows::ShadowViewPath::batched ? "batched" : "per-light",

@@ -32,6 +32,6 @@ struct RunRecord {
 // Shared ending: writes the screenshot and the --stats file if asked for, prints a summary of
 // the run, and returns 0, or 3 when the validation layer reported errors.
 int finish_run(const Options& options, vk::VulkanContext& context, const SandboxScene& scene,
-               const SandboxFrame& frame, const RunRecord& record);
+               SandboxFrame& frame, const RunRecord& record);
 
 }  // namespace sg::sandbox

@@ -62,6 +62,7 @@ Json stats_json(const RunStats& stats) {
           {"passes", passes},
           {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},
           {"shadow_map_bytes", stats.shadow_map_bytes},
+          {"dropped_light_pairs", stats.dropped_light_pairs},
           {"shadows",
            {{"views", shadows.views},
             {"raster", shadows.raster ? Json(*shadows.raster) : Json()},

@@ -28,6 +28,8 @@
 //   "passes": [{"name": "lighting", "gpu_ms": {"median": ..., "min": ..., "max": ...}}],
 //   "validation_errors": 0,                      // null when the validation layer was off
 //   "shadow_map_bytes": 0,                       // GPU memory holding shadow maps (the atlas image)
+//   "dropped_light_pairs": 0,                    // (tile, light) pairs left out of full light
+//                                                // lists over the run: lights missing there
 //   "shadows": {
 //     "views": "batched",                        // batched or per-light (--shadow-views)
 //     "raster": "compute",                       // batched: compute or hardware; per-light: null
@@ -89,6 +91,7 @@ struct RunStats {
   // Unset when the validation layer was off: 0 would claim a check that never ran.
   std::optional<std::uint32_t> validation_errors;
   std::uint64_t shadow_map_bytes = 0;
+  std::uint64_t dropped_light_pairs = 0;
 
   struct Shadows {
     std::string views;

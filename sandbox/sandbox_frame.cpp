@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -112,6 +111,10 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, cons
 
 SandboxFrame::~SandboxFrame() = default;
 
+uint64_t SandboxFrame::take_dropped_light_pairs() {
+  return std::exchange(dropped_light_pairs_, 0) + renderer_.drain_dropped_light_pairs();
+}
+
 bool SandboxFrame::ui_wants_input() const { return ui_ && ui_->wants_input(); }
 
 void SandboxFrame::resize(VkExtent2D extent) {
@@ -158,6 +161,7 @@ void SandboxFrame::record(const vk::FrameSlot& frame, double time_seconds,
   shadow_views_rendered_.push_back(shadows.views_rendered);
   shadow_views_cached_.push_back(shadows.views_cached);
   shadow_views_moving_only_.push_back(shadows.views_moving_only);
+  dropped_light_pairs_ += renderer_.dropped_light_pairs();
   declare_passes(frame.slot, present);
   timed(phase_ms_.declare);
   execute(frame);

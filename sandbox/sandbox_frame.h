@@ -102,6 +102,9 @@ class SandboxFrame {
   const std::vector<double>& shadow_views_rendered() const { return shadow_views_rendered_; }
   const std::vector<double>& shadow_views_cached() const { return shadow_views_cached_; }
   const std::vector<double>& shadow_views_moving_only() const { return shadow_views_moving_only_; }
+  // With the GPU idle: the (tile, light) pairs the frames recorded so far left out of full light
+  // lists (SceneRenderer::dropped_light_pairs), counted from zero again after.
+  uint64_t take_dropped_light_pairs();
 
  private:
   UiFacts ui_facts() const;
@@ -134,6 +137,7 @@ class SandboxFrame {
   std::vector<double> shadow_views_rendered_;
   std::vector<double> shadow_views_cached_;
   std::vector<double> shadow_views_moving_only_;
+  uint64_t dropped_light_pairs_ = 0;
 };
 
 }  // namespace sg::sandbox

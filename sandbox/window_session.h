@@ -45,6 +45,7 @@ class WindowSession {
   vk::VulkanContext& context() { return *context_; }
   SandboxScene& scene() { return scene_; }
   const SandboxFrame& sandbox_frame() const { return *frame_; }
+  SandboxFrame& sandbox_frame() { return *frame_; }
   VkExtent2D swapchain_extent() const;
   const std::vector<double>& frame_ms() const { return frame_ms_; }
   // Present to present, after the first frame.

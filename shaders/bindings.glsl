@@ -26,6 +26,8 @@ const int group_tiles_binding = 15;
 const int group_commands_binding = 16;
 // Transparent surfaces' depth bounds per tile (light_tiles_interface.glsl's transparent variant).
 const int transparent_bounds_binding = 27;
+// How many (tile, light) pairs did not fit a tile's list this frame (light_tiles_interface.glsl).
+const int light_tiles_feedback_binding = 28;
 
 // GPU-driven shadow views (shadow_views.glsl): the casters' bounds, their meshes, the culled
 // (caster, view) pairs, their counts per draw, and the indirect commands built from them.

@@ -4,6 +4,8 @@
 #define SG_LIGHT_TILE_LAYOUT_GLSL
 
 const uint LIGHT_TILE_SIZE = 16u;       // pixels per tile side; one workgroup per tile
-const uint MAX_LIGHTS_PER_TILE = 256u;  // beyond this a tile drops its highest-numbered lights
+// Beyond this a tile drops its highest-numbered lights; the culling counts what it drops
+// (LightTilesPass::take_dropped_pairs) and the renderer reports it.
+const uint MAX_LIGHTS_PER_TILE = 256u;
 
 #endif

@@ -75,6 +75,7 @@ void main() {
       sum += count;
     }
     total = min(sum, MAX_LIGHTS_PER_TILE);
+    count_dropped(sum, total);
   }
   barrier();
   uint slot = first_slot[local];

@@ -33,6 +33,14 @@ layout(std430, set = 0, binding = group_tiles_binding) writeonly buffer GroupTil
 // Per group a VkDispatchIndirectCommand (x counts the group's tiles; y = z = 1), at a 16-byte
 // stride.
 layout(std430, set = 0, binding = group_commands_binding) buffer GroupCommands { uvec4 group_commands[]; };
+// The (tile, light) pairs that did not fit MAX_LIGHTS_PER_TILE, summed over the frame's tiles
+// (zeroed by the CPU before the frame).
+layout(std430, set = 0, binding = light_tiles_feedback_binding) buffer Feedback { uint dropped_pairs; };
+
+// Counts the lights that reach a tile but did not fit its list.
+void count_dropped(uint reached, uint listed) {
+  if (reached > listed) atomicAdd(dropped_pairs, reached - listed);
+}
 
 layout(push_constant) uniform Constants {
   mat4 inverse_view_projection;

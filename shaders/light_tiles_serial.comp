@@ -32,10 +32,13 @@ void main() {
   }
   uint first = tile * MAX_LIGHTS_PER_TILE;
   uint count = 0u;
+  uint reached = 0u;
   if (!is_background_depth(nearest)) {
     vec4 sphere = visible_sphere_of_tile(tile_xy, nearest, farthest);
-    for (uint i = 0u; i < frame.counts.x && count < MAX_LIGHTS_PER_TILE; ++i) {
+    for (uint i = 0u; i < frame.counts.x; ++i) {
       if (!light_reaches_sphere(lights[i], sphere)) continue;
+      ++reached;
+      if (count == MAX_LIGHTS_PER_TILE) continue;  // counted, not listed
       tile_lights[first + count] = i;
       uint group = group_of(i);
       if (group_count[group] == 0u) group_first[group] = count;
@@ -43,5 +46,6 @@ void main() {
       ++count;
     }
   }
+  count_dropped(reached, count);
   for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) publish_group_range(tile, g, group_first[g], group_count[g]);
 }

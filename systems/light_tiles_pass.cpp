@@ -1,6 +1,7 @@
 #include "systems/light_tiles_pass.h"
 
 #include <array>
+#include <cstring>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -64,7 +65,8 @@ std::vector<VkDescriptorSetLayoutBinding> culling_bindings(bool transparent_boun
       {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
       {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
       {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
-      {group_commands_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr}};
+      {group_commands_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
+      {light_tiles_feedback_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr}};
   if (transparent_bounds) {
     bindings.push_back({transparent_bounds_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr});
   }
@@ -90,17 +92,32 @@ uint64_t LightTilesPass::tiles_bytes(LightTileGrid grid) {
 uint64_t LightTilesPass::commands_bytes() { return light_group_count * sizeof(glm::uvec4); }
 uint64_t LightTilesPass::dispatch_offset(uint32_t group) { return group * sizeof(glm::uvec4); }
 
-LightTilesPass::LightTilesPass(vk::VulkanContext& context, LightCullingShape shape, bool transparent_bounds)
+LightTilesPass::LightTilesPass(vk::VulkanContext& context, uint32_t frames_in_flight, LightCullingShape shape,
+                               bool transparent_bounds)
     : shape_(resolve(shape, context)),
       transparent_bounds_(transparent_bounds),
+      feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light tiles feedback"),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       layout_(context.device(), culling_bindings(transparent_bounds),
               vk::push_constants<CullConstants>(compute)),
-      pipeline_(culling_pipeline(context, shape_, transparent_bounds, layout_.get())) {}
+      pipeline_(culling_pipeline(context, shape_, transparent_bounds, layout_.get())) {
+  // The slots' buffers start with whatever their memory held: nothing dropped yet.
+  for (uint32_t slot = 0; slot < frames_in_flight; ++slot) take_dropped_pairs(slot);
+}
 
-LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
-                                  uint32_t light_count, const glm::mat4& view_projection,
-                                  const LightTiles* outputs, const vk::Buffer* transparent_bounds) const {
+uint64_t LightTilesPass::take_dropped_pairs(uint32_t slot) {
+  uint32_t dropped = 0;
+  const vk::Buffer& buffer = feedback_.buffer(slot);
+  if (buffer.size() >= sizeof(dropped)) std::memcpy(&dropped, buffer.mapped(), sizeof(dropped));
+  const uint32_t zero = 0;
+  feedback_.write(slot, std::span<const uint32_t>(&zero, 1));
+  return dropped;
+}
+
+LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, uint32_t slot, rg::ImageHandle depth,
+                                  const vk::Buffer& lights, uint32_t light_count,
+                                  const glm::mat4& view_projection, const LightTiles* outputs,
+                                  const vk::Buffer* transparent_bounds) const {
   if ((transparent_bounds != nullptr) != transparent_bounds_) {
     throw std::logic_error(
         "LightTilesPass::add_to: transparent bounds given to a pass made without them, or "
@@ -138,7 +155,7 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
         out.commands = b.write(reset_commands, rg::Usage::storage_compute);
         return out;
       },
-      [this, depth, transparent_bounds, grid, &lights, light_count, screen,
+      [this, slot, depth, transparent_bounds, grid, &lights, light_count, screen,
        inverse = glm::inverse(view_projection)](const LightTiles& written, const vk::PassRecorder& rec) {
         vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
         writer.buffer(lights_binding, lights.handle())
@@ -146,7 +163,8 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth,
             .buffer(tile_lights_binding, rec.buffer(written.lights))
             .buffer(tile_ranges_binding, rec.buffer(written.ranges))
             .buffer(group_tiles_binding, rec.buffer(written.tiles))
-            .buffer(group_commands_binding, rec.buffer(written.commands));
+            .buffer(group_commands_binding, rec.buffer(written.commands))
+            .buffer(light_tiles_feedback_binding, feedback_.buffer(slot).handle());
         if (transparent_bounds) writer.buffer(transparent_bounds_binding, transparent_bounds->handle());
         const VkDescriptorSet set = writer.update();
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());

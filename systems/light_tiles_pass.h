@@ -8,6 +8,7 @@
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/unique_handle.h"
 
 namespace sg::vk {
@@ -48,8 +49,8 @@ class LightTilesPass {
  public:
   // With `transparent_bounds`, tiles are bounded by where transparent surfaces may lie as well
   // (add_to's `transparent_bounds`, TransparentPass).
-  explicit LightTilesPass(vk::VulkanContext& context, LightCullingShape shape = LightCullingShape::automatic,
-                          bool transparent_bounds = false);
+  LightTilesPass(vk::VulkanContext& context, uint32_t frames_in_flight,
+                 LightCullingShape shape = LightCullingShape::automatic, bool transparent_bounds = false);
   LightCullingShape shape() const { return shape_; }
 
   // Bytes of each output for `grid`, for callers that provide their own buffers.
@@ -65,15 +66,21 @@ class LightTilesPass {
   // transparent bounds against `transparent_bounds` too (transparent_tile_bounds, a vec2 a tile).
   // Writes into `outputs` when given (imported buffers of the sizes above), else into new
   // transients; returns the outputs' new versions. `lights` and `transparent_bounds` must live
-  // until the frame is recorded.
-  LightTiles add_to(rg::RenderGraph& graph, rg::ImageHandle depth, const vk::Buffer& lights,
+  // until the frame is recorded. The slot's count of dropped pairs (take_dropped_pairs) grows.
+  LightTiles add_to(rg::RenderGraph& graph, uint32_t slot, rg::ImageHandle depth, const vk::Buffer& lights,
                     uint32_t light_count, const glm::mat4& view_projection,
                     const LightTiles* outputs = nullptr,
                     const vk::Buffer* transparent_bounds = nullptr) const;
 
+  // After FrameRing::begin_frame returned `slot`, before add_to: the (tile, light) pairs the frame
+  // that last used the slot could not list (more than MAX_LIGHTS_PER_TILE lights reached a
+  // tile), and zero for this frame.
+  uint64_t take_dropped_pairs(uint32_t slot);
+
  private:
   LightCullingShape shape_;
   bool transparent_bounds_;
+  vk::FrameBuffers feedback_;  // per slot: the dropped pairs
   vk::UniqueSampler nearest_;
   vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;

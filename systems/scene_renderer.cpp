@@ -84,7 +84,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       TiledLightingPass lighting(context, settings.lit_sum_start);
       const bool lit_sum_from_gbuffer = lighting.lit_sum_from_gbuffer();
       deferred_.emplace(GBufferPass(context, frames_in_flight, textures_, lit_sum_from_gbuffer),
-                        LightTilesPass(context), std::move(lighting));
+                        LightTilesPass(context, frames_in_flight), std::move(lighting));
       break;
     }
   }
@@ -172,6 +172,16 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     transparent_->prepare(lit_format(), tiled, lights_.group_begin, settings_.view, gpu_scene_, slot,
                           camera.view_projection, {width, height});
   }
+  // What the frame that last used this slot could not list, now that its fence has passed.
+  dropped_light_pairs_ = take_dropped_light_pairs(slot);
+  if (dropped_light_pairs_ > 0 && frames_since_drop_message_ >= 300) {
+    std::printf(
+        "shadowgraph: %llu (tile, light) pairs left out of full light lists (more than %u lights reach a "
+        "tile); those lights are missing there\n",
+        static_cast<unsigned long long>(dropped_light_pairs_), tiles::MAX_LIGHTS_PER_TILE);
+    frames_since_drop_message_ = 0;
+  }
+  ++frames_since_drop_message_;
   cpu_steps_.views = lap(mark);
 }
 
@@ -257,7 +267,7 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
     const GBuffer gbuffer =
         deferred_->gbuffer.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
     const LightTiles tiles =
-        deferred_->light_tiles.add_to(graph, gbuffer.depth, records, light_count, view_projection);
+        deferred_->light_tiles.add_to(graph, slot, gbuffer.depth, records, light_count, view_projection);
     lit_sum = deferred_->lighting.add_to(graph, gbuffer, tiles, atlas, records, view_projection, pose.eye,
                                          ambient_term);
     depth = gbuffer.depth;
@@ -268,6 +278,17 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
         transparent_->add_to(graph, lit_sum, depth, atlas, records, light_count, gpu_scene_, slot, constants);
   }
   return {tone_map_.add_to(graph, lit_sum, frame, settings_.exposure), depth, atlas, light_tiles};
+}
+
+uint64_t SceneRenderer::take_dropped_light_pairs(uint32_t slot) {
+  return (deferred_ ? deferred_->light_tiles.take_dropped_pairs(slot) : 0) +
+         (transparent_ ? transparent_->take_dropped_pairs(slot) : 0);
+}
+
+uint64_t SceneRenderer::drain_dropped_light_pairs() {
+  uint64_t dropped = 0;
+  for (uint32_t slot = 0; slot < frames_in_flight_; ++slot) dropped += take_dropped_light_pairs(slot);
+  return dropped;
 }
 
 rg::Format SceneRenderer::lit_format() const {

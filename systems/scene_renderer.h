@@ -106,6 +106,11 @@ class SceneRenderer {
   LightingPath lighting() const { return lighting_; }
   const GpuScene& gpu_scene() const { return gpu_scene_; }
   const shadows::FrameLights& lights() const { return lights_; }
+  // The (tile, light) pairs left out of full light lists by the frame read back in the last
+  // prepare (frames in flight ago): lights missing from some tiles' lighting.
+  uint64_t dropped_light_pairs() const { return dropped_light_pairs_; }
+  // With the GPU idle: the pairs the frames not read back yet left out (every slot's).
+  uint64_t drain_dropped_light_pairs();
   const ShadowAtlas& shadow_atlas() const { return atlas_; }
   const shadows::ShadowScheduleStats& shadow_stats() const { return schedule_.stats(); }
   // The path in use: the settings' one, or per-light where batching is not supported.
@@ -178,10 +183,13 @@ class SceneRenderer {
   std::optional<TransparentPass> transparent_;  // made with the first transparent surface
   // The format of the image the path lights into: its lit sum, or the frame (fused).
   rg::Format lit_format() const;
+  uint64_t take_dropped_light_pairs(uint32_t slot);
   ToneMapPass tone_map_;
   vk::FrameBuffers light_records_;
   std::size_t max_light_records_;  // what the device's texel buffers hold (maxTexelBufferElements)
   shadows::FrameLights lights_;
+  uint64_t dropped_light_pairs_ = 0;
+  uint64_t frames_since_drop_message_ = 300;  // a message at most every 300 frames
 };
 
 }  // namespace sg

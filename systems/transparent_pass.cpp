@@ -36,7 +36,7 @@ TransparentPass::TransparentPass(vk::VulkanContext& context, uint32_t frames_in_
     : context_(context),
       textures_(textures),
       light_resources_(context),
-      light_tiles_(context, LightCullingShape::automatic, true),
+      light_tiles_(context, frames_in_flight, LightCullingShape::automatic, true),
       tile_bounds_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "transparent tile bounds"),
       tiled_layout_(context.device(),
                     lit_camera_bindings(
@@ -85,7 +85,7 @@ rg::ImageHandle TransparentPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
                                         const FrameConstants& constants) const {
   std::optional<LightTiles> tiles;
   if (tiled_) {
-    tiles = light_tiles_.add_to(graph, depth, lights, light_count, constants.view_projection, nullptr,
+    tiles = light_tiles_.add_to(graph, slot, depth, lights, light_count, constants.view_projection, nullptr,
                                 &tile_bounds_.buffer(slot));
   }
   graph.add_pass(

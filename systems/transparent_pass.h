@@ -62,6 +62,9 @@ class TransparentPass {
                const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view,
                const GpuScene& scene, uint32_t slot, const glm::mat4& view_projection, glm::uvec2 screen);
 
+  // LightTilesPass::take_dropped_pairs of the transparent surfaces' light tiles.
+  uint64_t take_dropped_pairs(uint32_t slot) { return light_tiles_.take_dropped_pairs(slot); }
+
   // Blends the transparent surfaces of `scene` (as ordered for this frame) over `target`, as
   // prepared, tone-mapping them first where `constants.counts.w` is 1; returns its new version.
   // `depth`: the opaque surfaces'. `lights` (the first `light_count` records) and `scene` are

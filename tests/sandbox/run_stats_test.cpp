@@ -83,6 +83,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.passes = {{"shadow_atlas", {0.125, 0.0625, 0.25}}, {"lighting", {0.375, 0.25, 0.5}}};
   stats.validation_errors = 4;
   stats.shadow_map_bytes = 67'108'864;
+  stats.dropped_light_pairs = 12;
   stats.shadows = {"batched",
                    "compute",
                    1ull << 30,
@@ -102,7 +103,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 13u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 14u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);
@@ -136,6 +137,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   }
   EXPECT_EQ(json.at("validation_errors"), 4);
   EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
+  EXPECT_EQ(json.at("dropped_light_pairs"), 12);
   const nlohmann::json& shadows = json.at("shadows");
   EXPECT_EQ(shadows.size(), 13u) << shadows.dump(2);
   EXPECT_EQ(shadows.at("views"), "batched");

@@ -123,6 +123,16 @@ bool lights_point(const shadows::GpuLight& light, const glm::vec3& point) {
 
 class LightTilesTest : public GpuTest {
  protected:
+  // One culling of `lights` against `depth` on the device, read back.
+  struct Culled {
+    std::vector<uint32_t> entries;
+    std::vector<glm::uvec2> ranges;
+    std::vector<uint32_t> tiles_of_group;
+    std::vector<glm::uvec4> commands;
+    uint64_t dropped = 0;  // LightTilesPass::take_dropped_pairs
+  };
+  Culled cull(const shadows::FrameLights& lights, LightCullingShape shape, const std::vector<float>& depth,
+              const glm::mat4& view_projection);
   void expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape);
 };
 
@@ -135,13 +145,47 @@ TEST_F(LightTilesTest, ListsOfAnInvocationPerTileMatchABruteForceCpuAssignment) 
   expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::thread_per_tile);
 }
 
-void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape) {
-  const shadows::FrameLights lights = scattered_lights();
+// 300 point lights that reach everything on screen: every tile with a surface lists 256 of them
+// and counts the 44 it leaves out, in both shapes of the culling.
+TEST_F(LightTilesTest, AFullTileCountsTheLightsItLeavesOut) {
+  scene::Scene scene;
+  for (int i = 0; i < 300; ++i) {
+    scene::PointLight point;
+    point.range = 100.0f;
+    scene::add_light(scene, point, {{0.0f, 0.0f, -10.0f - 0.01f * i}}, scene::ShadowSettings{}, "crowd");
+  }
+  ecs::update_world_transforms(scene.world, 0);
+  shadows::FrameLights lights;
+  shadows::gather_lights(scene.world, {glm::vec3(-20.0f), glm::vec3(20.0f)}, {false}, lights);
+  shadows::sort_by_group(lights);
   const glm::mat4 view_projection =
       projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
   const std::vector<float> depth = scene_depth(view_projection);
   const LightTileGrid grid = LightTileGrid::of(width, height);
+  uint64_t tiles_with_surfaces = 0;
+  for (uint32_t tile = 0; tile < grid.count(); ++tile) {
+    const uint32_t x0 = tile % grid.across * tiles::LIGHT_TILE_SIZE,
+                   y0 = tile / grid.across * tiles::LIGHT_TILE_SIZE;
+    bool surface = false;
+    for (uint32_t y = y0; y < std::min(y0 + tiles::LIGHT_TILE_SIZE, height); ++y) {
+      for (uint32_t x = x0; x < std::min(x0 + tiles::LIGHT_TILE_SIZE, width); ++x) {
+        surface = surface || depth[y * width + x] != camera_far_depth;
+      }
+    }
+    tiles_with_surfaces += surface;
+  }
+  ASSERT_GT(tiles_with_surfaces, 0u);
+  for (const LightCullingShape shape :
+       {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
+    const Culled culled = cull(lights, shape, depth, view_projection);
+    EXPECT_EQ(culled.dropped, tiles_with_surfaces * (300 - tiles::MAX_LIGHTS_PER_TILE));
+  }
+}
 
+LightTilesTest::Culled LightTilesTest::cull(const shadows::FrameLights& lights, LightCullingShape shape,
+                                            const std::vector<float>& depth,
+                                            const glm::mat4& view_projection) {
+  const LightTileGrid grid = LightTileGrid::of(width, height);
   vk::Image depth_image(context, {{width, height},
                                   VK_FORMAT_D32_SFLOAT,
                                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
@@ -178,22 +222,35 @@ void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullin
   };
   const LightTiles outputs{import("tile lights", tile_lights), import("tile ranges", tile_ranges),
                            import("group tiles", group_tiles), import("commands", group_commands)};
-  LightTilesPass pass(context, shape);
-  ASSERT_EQ(pass.shape(), shape);
-  pass.add_to(graph, depth_handle, records, uint32_t(lights.records.size()), view_projection, &outputs);
-  const rg::CompileResult compiled = rg::compile(graph);
-  ASSERT_TRUE(compiled.ok()) << compiled.errors.front().message;
   vk::FrameRing frames(context);
-  vk::GraphExecutor executor(context, frames.frames_in_flight());
+  LightTilesPass pass(context, frames.frames_in_flight(), shape);
+  EXPECT_EQ(pass.shape(), shape);
   vk::FrameSlot& frame = frames.begin_frame();
+  EXPECT_EQ(pass.take_dropped_pairs(frame.slot), 0u) << "nothing culled in this slot yet";
+  pass.add_to(graph, frame.slot, depth_handle, records, uint32_t(lights.records.size()), view_projection,
+              &outputs);
+  const rg::CompileResult compiled = rg::compile(graph);
+  EXPECT_TRUE(compiled.ok());
+  vk::GraphExecutor executor(context, frames.frames_in_flight());
   executor.execute(frame.cmd, frame.slot, frame.frame_number, graph, compiled.plan, imports);
   frames.submit();
   frames.wait_idle();
+  return {contents<uint32_t>(tile_lights), contents<glm::uvec2>(tile_ranges), contents<uint32_t>(group_tiles),
+          contents<glm::uvec4>(group_commands), pass.take_dropped_pairs(frame.slot)};
+}
 
-  const std::vector<uint32_t> entries = contents<uint32_t>(tile_lights);
-  const std::vector<glm::uvec2> ranges = contents<glm::uvec2>(tile_ranges);
-  const std::vector<uint32_t> tiles_of_group = contents<uint32_t>(group_tiles);
-  const std::vector<glm::uvec4> commands = contents<glm::uvec4>(group_commands);
+void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape) {
+  const shadows::FrameLights lights = scattered_lights();
+  const glm::mat4 view_projection =
+      projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
+  const std::vector<float> depth = scene_depth(view_projection);
+  const LightTileGrid grid = LightTileGrid::of(width, height);
+  const Culled culled = cull(lights, shape, depth, view_projection);
+  EXPECT_EQ(culled.dropped, 0u) << "no tile is full";
+  const std::vector<uint32_t>& entries = culled.entries;
+  const std::vector<glm::uvec2>& ranges = culled.ranges;
+  const std::vector<uint32_t>& tiles_of_group = culled.tiles_of_group;
+  const std::vector<glm::uvec4>& commands = culled.commands;
   const std::vector<TileLightSets> reference =
       reference_light_tiles(depth, width, height, view_projection, lights.records);
   ASSERT_EQ(reference.size(), grid.count());
