@@ -19,10 +19,10 @@
 // corners lie within the tile and edge functions are exact. A thread rasterizes a small triangle
 // alone; one covering more than SMALL_TRIANGLE texels of bounding box goes to a queue that the
 // whole workgroup then rasterizes together, so a floor filling the tile does not hold one thread
-// for thousands of texels; past 16 texels, which measured best on the H200 (3.58-3.60 ms against
-// 3.87-3.88 at 64, 4.06-4.12 at 256 and 3.66-3.68 at 4 for 4,096 lights). 128 threads a workgroup: on the H200 the large triangles' texels
-// outweigh the idle lanes of casters with fewer triangles (6.1 ms against 9.3 with 64 for 1,024
-// lights, docs/PERFORMANCE.md).
+// for thousands of texels; past 16 texels, which measured best on the H200 (2026-12-01: 3.58-3.60
+// ms against 3.87-3.88 at 64, 4.06-4.12 at 256 and 3.66-3.68 at 4 for 4,096 lights). 128 threads
+// a workgroup: on the H200 the large triangles' texels outweigh the idle lanes of casters with
+// fewer triangles (2026-11-30: 6.1 ms against 9.3 with 64 for 1,024 lights, docs/PERFORMANCE.md).
 //
 // Casters with a cut-out (shadow_cut_out.glsl) are the cut_out variant's: it carries each
 // corner's uv through clipping and tests the material at every texel. Each variant passes over

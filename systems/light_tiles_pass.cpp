@@ -37,7 +37,7 @@ std::array<glm::uvec4, light_group_count> empty_commands() {
   return commands;
 }
 
-// Measured on lavapipe, `default` scene at 1280x720: a workgroup per tile 14.5-14.7 ms (4 x 4
+// Measured on lavapipe (2026-11-30), `default` scene at 1280x720: a workgroup per tile 14.5-14.7 ms (4 x 4
 // threads; 17.8 with 8 x 8), an invocation per tile 3.4-6.2 ms; 1,024 lights at 640x360: 9.6
 // against 3.6 ms. On the H200 with 1,024 lights, 8 x 8 threads per tile take 0.11 ms.
 LightCullingShape resolve(LightCullingShape shape, const vk::VulkanContext& context) {

@@ -18,7 +18,7 @@ enum class LightingPath { automatic, deferred, every_light, fused };
 
 // automatic's choice on a CPU device for a frame of `lights` lights: fused while its cost, every
 // light at every pixel, stays below deferred's, whose passes cost more but a pixel only its
-// tile's lights. On lavapipe at 1280x720, stress scene of 4.8k triangles with the sun, maps
+// tile's lights. On lavapipe at 1280x720 (2026-11-30), stress scene of 4.8k triangles with the sun, maps
 // cached: 3 lights fused 23.4 against deferred 41.9 ms a frame, 4 lights 42.5 against 50.1, 5
 // lights 70.6 against 53.9; the default scene (6 lights) about 250 against 200
 // (docs/PERFORMANCE.md).
@@ -29,7 +29,7 @@ constexpr LightingPath cpu_lighting_for(uint32_t lights) {
 // Where deferred lighting's lit sum starts (the ambient term times the base color, the background
 // where no surface was drawn): a full-screen compute pass, or a third G-buffer target. The target
 // costs the G-buffer more than the pass costs on GPUs with little raster hardware (H200, default
-// scene, 1920x1080: +0.57 ms against 0.012) and less on lavapipe, whose compute passes store to
+// scene, 1920x1080, 2026-11-30: +0.57 ms against 0.012) and less on lavapipe, whose compute passes store to
 // images lane by lane (1280x720: +2.6 ms against 6.5).
 // automatic: the G-buffer on CPU devices, the pass on GPUs.
 enum class LitSumStart { automatic, pass, gbuffer };

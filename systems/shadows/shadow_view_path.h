@@ -15,11 +15,11 @@ enum class ShadowViewPath { batched, per_light };
 enum class ShadowRaster { automatic, hardware, compute };
 
 // automatic's choice on a GPU for a frame's due `views`, `large_tile_texels` the area of those
-// of large_tile texels a side or more: whichever a cost model fitted to the H200 predicts is
-// cheaper (docs/PERFORMANCE.md). The raster hardware pays about 13 us a view, for setting up small
-// views' triangles, plus 0.5 ms; compute about 2 us a view, plus 2.5 ns a texel of large tiles,
-// whose large triangles a workgroup per caster and view fills slowly (one 2048-texel spot map of
-// 54k triangles took 7.1 ms in compute, 0.34 ms on the hardware).
+// of large_tile texels a side or more: whichever a cost model fitted to the H200 on 2026-11-30
+// predicts is cheaper (docs/PERFORMANCE.md). The raster hardware pays about 13 us a view, for setting up
+// small views' triangles, plus 0.5 ms; compute about 2 us a view, plus 2.5 ns a texel of large tiles, whose
+// large triangles a workgroup per caster and view fills slowly (one 2048-texel spot map of 54k triangles
+// took 7.1 ms in compute, 0.34 ms on the hardware).
 inline constexpr std::uint32_t large_tile = 512;
 inline ShadowRaster raster_for_views(std::uint32_t views, std::uint64_t large_tile_texels) {
   const double hardware_ms = 0.5 + 0.013 * views;
