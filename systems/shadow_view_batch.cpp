@@ -30,7 +30,6 @@
 #include "systems/shader_bindings.h"
 #include "systems/shadow_atlas.h"
 #include "systems/shadows/atlas_tile_coords.h"
-#include "systems/shadows/radix_sort.h"
 
 namespace sg {
 namespace {
@@ -83,13 +82,6 @@ float as_float(uint32_t bits) { return std::bit_cast<float>(bits); }
 // that frames drawing different numbers of views keep the graph's shape, and with it the
 // compiled plan and its memory (rg::PlanCache), instead of recompiling and reallocating.
 uint64_t frame_steady(uint64_t bytes) { return std::bit_ceil(std::max<uint64_t>(bytes, 256)); }
-
-bool same_page_and_size(const shadows::AtlasTile& a, const shadows::AtlasTile& b) {
-  return a.page == b.page && a.size == b.size;
-}
-bool same_row(const shadows::AtlasTile& a, const shadows::AtlasTile& b) {
-  return same_page_and_size(a, b) && a.y == b.y;
-}
 
 VkClearRect tile_clear(const shadows::AtlasTile& tile) {
   return {{{int32_t(tile.x), int32_t(tile.y)}, {tile.size, tile.size}}, tile.page, 1};
@@ -296,8 +288,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
   if (raster_ == shadows::ShadowRaster::compute) {
     place_depths();
   } else {
-    depth_places_.assign(count, glm::uvec2(0u));
-    placed_tiles_.clear();
+    depth_placement_.place_nowhere(count);
   }
 
   // The casters of each group (a mesh's casters, consecutive instances), one after the other;
@@ -339,7 +330,8 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     // Below 2^32: the static layers are bound whole, within maxStorageBufferRange (atlas_shape).
     const auto layer = static_cast<uint32_t>((uint64_t{tile.page} * page_size + tile.y) * page_size + tile.x);
     views[v] = {view_projection, shadows::tile_clip_transform(tile, page_size), position_far,
-                glm::uvec4(tile.page, kind, tile.size, 0u), glm::uvec4(depth_places_[v], layer, page_size)};
+                glm::uvec4(tile.page, kind, tile.size, 0u),
+                glm::uvec4(depth_placement_.places()[v], layer, page_size)};
     clears_[v] = tile_clear(tile);
   };
   ecs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
@@ -406,89 +398,18 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
   }
 }
 
-// Per-region overhead dominates copying thousands of small squares (docs/PERFORMANCE.md), so
-// due tiles of one size side by side on a row of a page share one region, and such a run
-// directly below one of the same columns extends that run's region downward: a block of due
-// tiles copies as one rectangle, its depths row-major in one rectangle of the buffer.
-//
-// The places depend on the due views' tiles alone: while every light redraws every frame and
-// none moves in the atlas, they are the last frame's, and the sort is skipped.
 void ShadowViewBatch::place_depths() {
-  if (view_tiles_ == placed_tiles_) return;
-  placed_tiles_ = view_tiles_;
-  depth_places_.assign(view_tiles_.size(), glm::uvec2(0u));
-  // By page, size, row, column, packed into 40 bits: tiles lie on multiples of their size, so
-  // rows and columns count tiles, not texels (below 2^11 for pages of up to 2^11 of the smallest
-  // tiles), which leaves four byte-wide passes of the radix sort instead of six. Were a count
-  // larger, tiles would only sort out of place and share fewer regions: merging checks them.
-  placed_.resize(view_tiles_.size());
-  for (size_t v = 0; v < view_tiles_.size(); ++v) {
-    const shadows::AtlasTile& t = view_tiles_[v];
-    const auto level = static_cast<uint64_t>(std::countr_zero(t.size));
-    placed_[v] = {uint64_t{t.page} << 26 | level << 22 | uint64_t{t.y / t.size} << 11 | (t.x / t.size),
-                  static_cast<uint32_t>(v)};
-  }
-  shadows::radix_sort(
-      placed_, placed_scratch_, [](const Placed& p) { return p.key; }, 40);
-  const auto tile_at = [&](size_t k) -> const shadows::AtlasTile& { return view_tiles_[placed_[k].view]; };
-
-  // Runs of side-by-side tiles, row by row; each joins the region of the run above it when that
-  // run spans the same columns (runs of a row come in column order, so one cursor finds it).
-  runs_.clear();
-  regions_.clear();
-  size_t row_begin = 0;  // the current row's first run
-  size_t above = 0;      // the row above's runs: [above, above_end), empty when it has none
-  size_t above_end = 0;
-  for (size_t begin = 0; begin < placed_.size();) {
-    const shadows::AtlasTile& first = tile_at(begin);
-    size_t end = begin + 1;
-    while (end < placed_.size()) {
-      const shadows::AtlasTile& next = tile_at(end);
-      if (!same_row(next, first) || next.x != tile_at(end - 1).x + first.size) break;
-      ++end;
-    }
-    const auto width = static_cast<uint32_t>(end - begin) * first.size;
-    if (runs_.empty() || !same_row(tile_at(runs_[row_begin].begin), first)) {
-      const bool below = !runs_.empty() && same_page_and_size(tile_at(runs_[row_begin].begin), first) &&
-                         tile_at(runs_[row_begin].begin).y + first.size == first.y;
-      above = below ? row_begin : 0;
-      above_end = below ? runs_.size() : 0;
-      row_begin = runs_.size();
-    }
-    while (above < above_end && tile_at(runs_[above].begin).x < first.x) ++above;
-    uint32_t region = static_cast<uint32_t>(regions_.size());
-    if (above < above_end && tile_at(runs_[above].begin).x == first.x && runs_[above].width == width) {
-      region = runs_[above].region;
-      regions_[region].height += first.size;
-    } else {
-      regions_.push_back({first, width, first.size, 0});
-    }
-    runs_.push_back({begin, end, width, region});
-    begin = end;
-  }
-
+  if (!depth_placement_.place(view_tiles_)) return;
   copies_.clear();
-  depth_texels_ = 0;
-  for (DepthRegion& region : regions_) {
-    region.offset = depth_texels_;
+  for (const shadows::DepthRegion& region : depth_placement_.regions()) {
     VkBufferImageCopy copy{};
-    copy.bufferOffset = depth_texels_ * sizeof(float);
+    copy.bufferOffset = region.offset * sizeof(float);
     copy.bufferRowLength = region.width;
     copy.bufferImageHeight = region.height;
     copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, region.corner.page, 1};
     copy.imageOffset = {int32_t(region.corner.x), int32_t(region.corner.y), 0};
     copy.imageExtent = {region.width, region.height, 1};
     copies_.push_back(copy);
-    depth_texels_ += uint64_t{region.width} * region.height;
-  }
-  for (const Run& run : runs_) {
-    const DepthRegion& region = regions_[run.region];
-    for (size_t k = run.begin; k < run.end; ++k) {
-      const shadows::AtlasTile& tile = tile_at(k);
-      const uint64_t texel =
-          region.offset + uint64_t{tile.y - region.corner.y} * region.width + (tile.x - region.corner.x);
-      depth_places_[placed_[k].view] = {static_cast<uint32_t>(texel), region.width};
-    }
   }
 }
 
@@ -516,8 +437,9 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
         b.counts = p.write(p.create_buffer("shadow draw counts", {counts_header_bytes + 2 * draw_count * 4}),
                            rg::Usage::transfer);
         if (compute) {
-          b.depths = p.write(p.create_buffer("shadow depths", {frame_steady(depth_texels_ * sizeof(float))}),
-                             rg::Usage::transfer);
+          b.depths = p.write(
+              p.create_buffer("shadow depths", {frame_steady(depth_placement_.texels() * sizeof(float))}),
+              rg::Usage::transfer);
         }
         return b;
       },

@@ -46,6 +46,7 @@
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/gpu_scene.h"
+#include "systems/shadows/depth_placement.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_view_path.h"
 
@@ -183,33 +184,11 @@ class ShadowViewBatch {
   // Compute raster: where each view's depths go in the depth buffer (View::raster's x and y, by
   // view), and the copies into the atlas.
   void place_depths();
-  std::vector<shadows::AtlasTile> view_tiles_;    // per view
-  std::vector<glm::uvec2> depth_places_;          // per view
-  std::vector<shadows::AtlasTile> placed_tiles_;  // the view_tiles_ depth_places_ and copies_ are for
-  struct Placed {
-    uint64_t key;  // page, size, row, column (place_depths)
-    uint32_t view;
-  };
+  std::vector<shadows::AtlasTile> view_tiles_;  // per view
+  shadows::DepthPlacement depth_placement_;
+  std::vector<VkBufferImageCopy> copies_;  // depth_placement_'s regions
   std::vector<uint8_t> drawn_as_;     // per light (maps, then cubes): not, with every caster, moving ones
   std::vector<uint32_t> first_view_;  // per light (maps, then cubes): its first view, if drawn
-  std::vector<Placed> placed_;        // the views by page, size, row, column
-  std::vector<Placed> placed_scratch_;
-  // place_depths: a rectangle of due tiles copied as one region, and a row's run of them.
-  struct DepthRegion {
-    shadows::AtlasTile corner;  // its top-left tile
-    uint32_t width = 0;         // texels, also the rows' pitch in the depth buffer
-    uint32_t height = 0;        // texels
-    uint64_t offset = 0;        // its first texel in the depth buffer
-  };
-  struct Run {
-    size_t begin, end;  // in placed_
-    uint32_t width;     // texels
-    uint32_t region;
-  };
-  std::vector<DepthRegion> regions_;
-  std::vector<Run> runs_;
-  std::vector<VkBufferImageCopy> copies_;
-  uint64_t depth_texels_ = 0;
 };
 
 }  // namespace sg
