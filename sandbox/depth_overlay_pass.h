@@ -4,12 +4,9 @@
 // bottom-right quarter of the frame. rendergraph/README.md walks through it.
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/scene/camera.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg::sandbox {
 

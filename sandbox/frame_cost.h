@@ -3,11 +3,8 @@
 // rest: what the algorithm-costs and reference tools compare between shadow algorithms.
 #include <cstdint>
 
+#include "rendergraph/device/fwd.h"
 #include "sandbox/options.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg::sandbox {
 

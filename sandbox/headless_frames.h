@@ -2,11 +2,8 @@
 // The offscreen frame loop shared by the headless sandbox and the tools that measure its frame.
 #include <cstdint>
 
+#include "rendergraph/device/fwd.h"
 #include "sandbox/run.h"
-
-namespace sg::vk {
-class FrameRing;
-}
 
 namespace sg::sandbox {
 

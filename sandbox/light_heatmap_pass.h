@@ -4,12 +4,9 @@
 // file knows.
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/light_tiles_pass.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg::sandbox {
 

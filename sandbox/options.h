@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "rendergraph/device/fwd.h"
 #include "systems/lighting_path.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"
@@ -14,10 +15,6 @@
 
 namespace CLI {
 class App;
-}
-
-namespace sg::vk {
-struct ContextOptions;
 }
 
 namespace sg::sandbox {

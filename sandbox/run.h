@@ -2,11 +2,8 @@
 // The sandbox's two ways to run the same frame: offscreen (a PNG at the end) or in a window.
 #include <vector>
 
+#include "rendergraph/device/fwd.h"
 #include "sandbox/options.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg::sandbox {
 

@@ -14,13 +14,10 @@
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/resources.h"
 #include "rendergraph/device/unique_handle.h"
 #include "sandbox/ui.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg::sandbox {
 

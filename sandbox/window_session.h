@@ -9,18 +9,13 @@
 
 #include <vulkan/vulkan.h>
 
+#include "rendergraph/device/fwd.h"
 #include "sandbox/fly_camera.h"
 #include "sandbox/gpu_time_log.h"
 #include "sandbox/options.h"
 #include "sandbox/scene_setup.h"
 
 struct GLFWwindow;
-
-namespace sg::vk {
-class FrameRing;
-class Swapchain;
-class VulkanContext;
-}  // namespace sg::vk
 
 namespace sg::sandbox {
 

@@ -7,12 +7,9 @@
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/fwd.h"
 #include "systems/camera_pipelines.h"
 #include "systems/scene_gpu_types.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg {
 

@@ -7,15 +7,11 @@
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/fwd.h"
 #include "systems/camera_pipelines.h"
 #include "systems/light_resources.h"
 #include "systems/lighting_path.h"
 #include "systems/scene_gpu_types.h"
-
-namespace sg::vk {
-class Buffer;
-class VulkanContext;
-}  // namespace sg::vk
 
 namespace sg {
 

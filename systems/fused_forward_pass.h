@@ -12,16 +12,12 @@
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/fwd.h"
 #include "systems/camera_pipelines.h"
 #include "systems/light_resources.h"
 #include "systems/lighting_path.h"
 #include "systems/scene_gpu_types.h"
 #include "systems/shadows/light_groups.h"
-
-namespace sg::vk {
-class Buffer;
-class VulkanContext;
-}  // namespace sg::vk
 
 namespace sg {
 

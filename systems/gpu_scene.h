@@ -19,6 +19,7 @@
 #include "rendergraph/core/resource_types.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/device/resources.h"
 #include "systems/camera.h"
@@ -26,10 +27,6 @@
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/scene_gpu_types.h"
-
-namespace sg::vk {
-class PassRecorder;
-}
 
 namespace sg {
 

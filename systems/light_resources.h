@@ -9,12 +9,8 @@
 
 #include "rendergraph/core/resource_types.h"
 #include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
-
-namespace sg::vk {
-class PassRecorder;
-class VulkanContext;
-}  // namespace sg::vk
 
 namespace sg {
 

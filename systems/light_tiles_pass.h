@@ -9,12 +9,8 @@
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
-
-namespace sg::vk {
-class Buffer;
-class VulkanContext;
-}  // namespace sg::vk
 
 namespace sg {
 

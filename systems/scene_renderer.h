@@ -18,6 +18,7 @@
 #include "ecs/world.h"
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/vulkan/graph_imports.h"
 #include "systems/depth_prepass.h"
 #include "systems/forward_pass.h"
@@ -39,10 +40,6 @@
 #include "systems/tiled_lighting_pass.h"
 #include "systems/tone_map_pass.h"
 #include "systems/transparent_pass.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg {
 

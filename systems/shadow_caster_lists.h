@@ -16,10 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "rendergraph/device/frame_buffers.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
+#include "rendergraph/device/fwd.h"
 
 namespace sg {
 

@@ -14,15 +14,12 @@
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/gpu_scene.h"
 #include "systems/shadow_caster_lists.h"
 #include "systems/shadows/cube_shadow_mode.h"
 #include "systems/shadows/frame_lights.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg {
 

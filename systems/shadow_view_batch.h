@@ -44,15 +44,12 @@
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/gpu_scene.h"
 #include "systems/shadows/depth_placement.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_view_path.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg {
 

@@ -13,6 +13,7 @@
 
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/gbuffer_pass.h"
 #include "systems/light_resources.h"
@@ -20,11 +21,6 @@
 #include "systems/lighting_path.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/light_groups.h"
-
-namespace sg::vk {
-class Buffer;
-class VulkanContext;
-}  // namespace sg::vk
 
 namespace sg {
 

@@ -5,11 +5,8 @@
 // compressed towards 1 instead of clipping.
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg {
 

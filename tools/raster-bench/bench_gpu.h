@@ -8,11 +8,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "rendergraph/device/fwd.h"
 #include "rendergraph/device/resources.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg::raster_bench {
 

@@ -13,15 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "rendergraph/device/fwd.h"
 #include "sandbox/frame_cost.h"
 #include "sandbox/options.h"
 #include "systems/scene/shadow_settings.h"
 #include "tools/reference/metrics.h"
 #include "tools/reference/reference_lights.h"
-
-namespace sg::vk {
-class VulkanContext;
-}
 
 namespace sg::reference {
 
