@@ -6,7 +6,7 @@
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
-#include "systems/light_tiles_pass.h"
+#include "systems/lighting/light_tiles_pass.h"
 
 namespace sg::sandbox {
 

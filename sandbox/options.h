@@ -5,7 +5,7 @@
 #include <string>
 
 #include "rendergraph/device/fwd.h"
-#include "systems/lighting_path.h"
+#include "systems/lighting/lighting_path.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/shadow_settings.h"

@@ -30,7 +30,7 @@
 #include "sandbox/scene_setup.h"
 #include "sandbox/ui.h"
 #include "sandbox/ui_pass.h"
-#include "systems/scene_renderer.h"
+#include "systems/renderer/scene_renderer.h"
 
 namespace sg::sandbox {
 

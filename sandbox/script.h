@@ -20,7 +20,7 @@
 
 #include <glm/glm.hpp>
 
-#include "systems/lighting_path.h"
+#include "systems/lighting/lighting_path.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/shadow_settings.h"
 

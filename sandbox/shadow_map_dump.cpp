@@ -10,7 +10,7 @@
 
 #include "rendergraph/device/readback.h"
 #include "sandbox/png.h"
-#include "systems/scene_renderer.h"
+#include "systems/renderer/scene_renderer.h"
 
 namespace sg::sandbox {
 namespace {

@@ -19,7 +19,7 @@
 
 #include "ecs/entity.h"
 #include "ecs/world.h"
-#include "systems/lighting_path.h"
+#include "systems/lighting/lighting_path.h"
 #include "systems/scene/aabb.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"

@@ -1,4 +1,4 @@
-// The camera's depth buffer as the lighting passes read it: reversed (systems/camera.h), 1 at
+// The camera's depth buffer as the lighting passes read it: reversed (systems/gpu/camera.h), 1 at
 // the near plane, 0 at the far plane and where nothing was drawn.
 #ifndef SG_CAMERA_DEPTH_GLSL
 #define SG_CAMERA_DEPTH_GLSL

@@ -5,7 +5,7 @@
 // finds each group's range in that list. Every tile with lights of a group is appended to that
 // group's tile list, whose length is the group's indirect dispatch (tiled_lighting.comp). Both
 // shaders write the same lists.
-// Their transparent variants (systems/transparent_pass.h) bound each tile by where transparent
+// Their transparent variants (systems/lighting/transparent_pass.h) bound each tile by where transparent
 // surfaces may lie in it too.
 #ifndef SG_LIGHT_TILES_INTERFACE_GLSL
 #define SG_LIGHT_TILES_INTERFACE_GLSL
@@ -19,7 +19,7 @@
 layout(std430, set = 0, binding = lights_binding) readonly buffer Lights { Light lights[]; };
 layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
 #ifdef TRANSPARENT_BOUNDS
-// Per tile, where transparent surfaces may lie (systems/transparent_tile_bounds.h): x the nearest
+// Per tile, where transparent surfaces may lie (systems/lighting/transparent_tile_bounds.h): x the nearest
 // depth, y the farthest; x is 0 where there are none.
 layout(std430, set = 0, binding = transparent_bounds_binding) readonly buffer TransparentBounds {
   vec2 transparent_bounds[];

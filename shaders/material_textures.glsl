@@ -5,9 +5,9 @@
 
 #include "bindings.glsl"
 
-// Every material texture of the scene, one per layer (systems/gpu_textures.h).
+// Every material texture of the scene, one per layer (systems/gpu/gpu_textures.h).
 layout(set = 0, binding = material_textures_binding) uniform sampler2DArray base_color_textures;
-// What a pipeline's materials need (material_pass_constants, systems/gpu_textures.h), a bit
+// What a pipeline's materials need (material_pass_constants, systems/gpu/gpu_textures.h), a bit
 // each; constant_id 0 and 1 are the including shaders' own. Bit 0, textures: clear for a scene
 // without images, as a CPU driver samples the texture for every fragment whatever the branch
 // says (it runs both sides of every branch). Bit 1, a mask's cut-out: only pipelines that draw

@@ -8,7 +8,7 @@
 // full-screen pass costs milliseconds, and this path has two: the depth prepass and this one
 // (docs/PERFORMANCE.md).
 //
-// The transparent variant (systems/transparent_pass.h) gives the surface's alpha for blending,
+// The transparent variant (systems/lighting/transparent_pass.h) gives the surface's alpha for blending,
 // its color tone-mapped only where frame.counts.w is 1: into the fused path's frame, or as a
 // lit sum after the every-light path.
 #include "light_shading.glsl"

@@ -1,4 +1,4 @@
-// The scene's instances (systems/scene_gpu_types.h, GpuInstance on the C++ side), for every
+// The scene's instances (systems/gpu/scene_gpu_types.h, GpuInstance on the C++ side), for every
 // shader that places meshes in the world.
 #ifndef SG_SCENE_INSTANCES_GLSL
 #define SG_SCENE_INSTANCES_GLSL

@@ -1,7 +1,7 @@
 // What the shadow batch's compute passes share (shadow_cull.comp, shadow_draws.comp,
 // shadow_scatter.comp, shadow_raster.comp): their push constants, the casters, and the per-draw
 // counts. Pairs come in two lists: list 0 (`total`), and list 1 (`moving_total`), the moving
-// casters' pairs, drawn after the static layers are saved (systems/shadow_view_batch.h).
+// casters' pairs, drawn after the static layers are saved (systems/shadow_maps/shadow_view_batch.h).
 #ifndef SG_SHADOW_BATCH_COMPUTE_GLSL
 #define SG_SHADOW_BATCH_COMPUTE_GLSL
 

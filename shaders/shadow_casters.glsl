@@ -1,4 +1,4 @@
-// The casters a shadow view draws (systems/shadow_caster_lists.h): instance k of a view's draw
+// The casters a shadow view draws (systems/shadow_maps/shadow_caster_lists.h): instance k of a view's draw
 // is instance view_instances[k] of the Instances buffer.
 #ifndef SG_SHADOW_CASTERS_GLSL
 #define SG_SHADOW_CASTERS_GLSL

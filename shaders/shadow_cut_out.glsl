@@ -1,4 +1,4 @@
-// Shadow casters with a cut-out (systems/gpu_scene.h's draw_masked and draw_blended classes)
+// Shadow casters with a cut-out (systems/gpu/gpu_scene.h's draw_masked and draw_blended classes)
 // leave no depth where their surface is not. A mask cuts at its cutoff (glTF's alphaCutoff), as
 // the camera passes do. A transparent surface (a negative cutoff in its instance's material)
 // covers a share of the shadow texels equal to its alpha, each texel cut against a threshold of

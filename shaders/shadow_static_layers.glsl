@@ -3,7 +3,7 @@
 // (shadow_static_save.comp) the squares of views drawn with their still casters go into their
 // layers; without (shadow_static_restore.comp) the layers of views whose still casters have not
 // changed go into their squares, for the moving casters to be drawn over
-// (systems/shadow_view_batch.h). Workgroups (x, y) take the views view_base + x, x + the x
+// (systems/shadow_maps/shadow_view_batch.h). Workgroups (x, y) take the views view_base + x, x + the x
 // count, ..., texels [y, y + 1) * TEXELS_PER_WORKGROUP of each: a large tile (a 1024-texel map
 // holds a million) is shared by several. Two shaders rather than a flag, so that each declares
 // only what it writes.
@@ -14,7 +14,7 @@
 
 layout(local_size_x = 256) in;
 
-const uint TEXELS_PER_WORKGROUP = 65536u;  // systems/shadow_view_batch.cpp's
+const uint TEXELS_PER_WORKGROUP = 65536u;  // systems/shadow_maps/shadow_view_batch.cpp's
 
 #if SAVE
 layout(std430, set = 0, binding = shadow_depths_binding) readonly buffer Depths { uint depths[]; };

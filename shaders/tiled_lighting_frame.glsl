@@ -1,4 +1,4 @@
-// The push constants of tiled deferred lighting's passes (systems/tiled_lighting_pass.cpp,
+// The push constants of tiled deferred lighting's passes (systems/lighting/tiled_lighting_pass.cpp,
 // LightingConstants), shared by their compute and raster shapes.
 #ifndef SG_TILED_LIGHTING_FRAME_GLSL
 #define SG_TILED_LIGHTING_FRAME_GLSL

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Transparent surfaces lit from tile lists (systems/transparent_pass.h): ambient plus the lights
+// Transparent surfaces lit from tile lists (systems/lighting/transparent_pass.h): ambient plus the lights
 // of this pixel's screen tile (light_tiles.comp, its transparent variant), group by group, each
 // group's shadow kind and algorithm a constant, and the surface's alpha for blending. Where
 // frame.counts.w is 1 the color is tone-mapped with the exposure in counts.z, for a frame that

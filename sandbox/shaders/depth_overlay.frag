@@ -11,7 +11,7 @@ layout(location = 0) out vec4 out_color;
 
 void main() {
   float d = texture(depth_buffer, in_uv).r;
-  // Inverse of the camera's reversed perspective depth (1 at znear, 0 at zfar, systems/camera.h):
+  // Inverse of the camera's reversed perspective depth (1 at znear, 0 at zfar, systems/gpu/camera.h):
   // view distance along the axis.
   float view_z = lens.znear * lens.zfar / (lens.znear + d * (lens.zfar - lens.znear));
   float grey = 1.0 - clamp(view_z / lens.shown_distance, 0.0, 1.0);

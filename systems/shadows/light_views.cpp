@@ -17,7 +17,7 @@ glm::mat4 look_along(glm::vec3 position, glm::vec3 direction) {
   return glm::mat4_cast(glm::conjugate(orientation)) * glm::translate(glm::mat4(1.0f), -position);
 }
 
-// Vulkan's NDC y points down; the camera flips its projection the same way (systems/camera.cpp).
+// Vulkan's NDC y points down; the camera flips its projection the same way (systems/gpu/camera.cpp).
 glm::mat4 flip_y(glm::mat4 projection) {
   projection[0][1] = -projection[0][1];
   projection[1][1] = -projection[1][1];

@@ -1,5 +1,5 @@
 #pragma once
-// The cameras that render shadow maps, in the engine's conventions (systems/camera.h):
+// The cameras that render shadow maps, in the engine's conventions (systems/gpu/camera.h):
 // right-handed world, Vulkan clip space with depth 0 at the near plane and 1 at the far plane,
 // rendered with a positive-height viewport. The receiver side (shaders/shadow_sampling.glsl)
 // maps clip space to map uv with u = (x + 1) / 2, v = (y + 1) / 2, as the rasterizer does.
@@ -14,7 +14,7 @@ namespace sg::shadows {
 // A 2D shadow map's camera (spot, directional, cylinder lights).
 struct LightView {
   glm::mat4 view{1.0f};        // world -> light view space (rigid; the light looks down -Z)
-  glm::mat4 projection{1.0f};  // Vulkan clip space, NDC y down like systems/camera.cpp
+  glm::mat4 projection{1.0f};  // Vulkan clip space, NDC y down like systems/gpu/camera.cpp
   float near = 0.0f;           // world units along the light's axis
   float far = 1.0f;
   bool orthographic = false;

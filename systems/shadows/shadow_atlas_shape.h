@@ -1,5 +1,5 @@
 #pragma once
-// The shape of the shadow atlas (systems/shadow_atlas.h): square pages of page_size texels, the
+// The shape of the shadow atlas (systems/shadow_maps/shadow_atlas.h): square pages of page_size texels, the
 // layers of one D32 2D-array image, as many as the memory budget and the device allow, and, where
 // the renderer keeps static layers, a buffer of floats holding as many pages. Plain data so the
 // policy is tested without a GPU.

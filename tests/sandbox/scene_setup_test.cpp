@@ -7,7 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "sandbox/scene_setup.h"
-#include "systems/camera.h"
+#include "systems/gpu/camera.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene_error.h"
 #include "systems/scene/scene_queries.h"

@@ -1,11 +1,11 @@
-// The camera's reversed depth (systems/camera.h): 1 at the near plane, 0 at the far plane, and
+// The camera's reversed depth (systems/gpu/camera.h): 1 at the near plane, 0 at the far plane, and
 // world positions rebuilt from a stored depth, as deferred lighting does, stay on their surface
 // far from the camera.
 #include <gtest/gtest.h>
 
 #include <glm/glm.hpp>
 
-#include "systems/camera.h"
+#include "systems/gpu/camera.h"
 
 namespace sg {
 namespace {

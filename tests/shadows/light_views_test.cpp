@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
-#include "systems/camera.h"
+#include "systems/gpu/camera.h"
 #include "systems/shadows/light_formulas.h"
 #include "systems/shadows/light_views.h"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "systems/camera.h"
+#include "systems/gpu/camera.h"
 
 namespace sg::test {
 namespace glsl {
@@ -25,7 +25,7 @@ std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, u
   std::vector<TileLightSets> tiles(across * down);
   for (uint32_t ty = 0; ty < down; ++ty) {
     for (uint32_t tx = 0; tx < across; ++tx) {
-      // Reversed depths (systems/camera.h): the nearest surface has the greatest.
+      // Reversed depths (systems/gpu/camera.h): the nearest surface has the greatest.
       float nearest = camera_far_depth, farthest = camera_near_depth;
       for (uint32_t y = ty * size; y < std::min(height, (ty + 1) * size); ++y) {
         for (uint32_t x = tx * size; x < std::min(width, (tx + 1) * size); ++x) {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-#include "systems/camera.h"
+#include "systems/gpu/camera.h"
 
 namespace sg::test {
 

@@ -1,7 +1,7 @@
 #pragma once
 // CPU ground truth for the shadow tests: which floor points a box hides from a point or spot
 // light, and which pixels of a camera image show lit or shadowed floor, by exact ray casting
-// with the renderer's own camera matrices (systems/camera.h).
+// with the renderer's own camera matrices (systems/gpu/camera.h).
 #include <cstdint>
 #include <optional>
 #include <span>

@@ -5,7 +5,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "systems/camera.h"
+#include "systems/gpu/camera.h"
 #include "tests/support/shadow_reference.h"
 
 namespace sg::test {

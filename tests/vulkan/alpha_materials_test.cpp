@@ -14,7 +14,7 @@
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
 #include "sandbox/sandbox_frame.h"
-#include "systems/camera.h"
+#include "systems/gpu/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"

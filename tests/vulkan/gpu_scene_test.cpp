@@ -11,7 +11,7 @@
 #include "ecs/query.h"
 #include "ecs/thread_pool.h"
 #include "ecs/transform_system.h"
-#include "systems/gpu_scene.h"
+#include "systems/gpu/gpu_scene.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"

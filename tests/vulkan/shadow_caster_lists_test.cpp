@@ -5,14 +5,14 @@
 #include <gtest/gtest.h>
 
 #include "ecs/transform_system.h"
-#include "systems/gpu_scene.h"
+#include "systems/gpu/gpu_scene.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/mesh_instance.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene.h"
 #include "systems/scene/scene_builder.h"
 #include "systems/scene/scene_queries.h"
-#include "systems/shadow_caster_lists.h"
+#include "systems/shadow_maps/shadow_caster_lists.h"
 #include "vulkan_test_context.h"
 
 namespace sg::test {

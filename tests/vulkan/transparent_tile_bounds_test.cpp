@@ -1,11 +1,11 @@
-// Where transparent instances lie per light tile (systems/transparent_tile_bounds.h), on the CPU.
-#include "systems/transparent_tile_bounds.h"
+// Where transparent instances lie per light tile (systems/lighting/transparent_tile_bounds.h), on the CPU.
+#include "systems/lighting/transparent_tile_bounds.h"
 
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "systems/camera.h"
+#include "systems/gpu/camera.h"
 #include "systems/scene/camera.h"
 
 namespace sg::test {

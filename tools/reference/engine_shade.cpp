@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "ecs/query.h"
-#include "systems/camera.h"
+#include "systems/gpu/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/shadows/frame_lights.h"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <optional>
 
-#include "systems/camera.h"
+#include "systems/gpu/camera.h"
 
 namespace sg::reference {
 namespace {

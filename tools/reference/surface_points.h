@@ -1,6 +1,6 @@
 #pragma once
 // The surface points a frame shows: each pixel's depth taken back to world space with the
-// renderer's own camera matrices (systems/camera.h), so that the reference tests visibility from
+// renderer's own camera matrices (systems/gpu/camera.h), so that the reference tests visibility from
 // exactly the points the engine shaded.
 #include <cstdint>
 #include <vector>

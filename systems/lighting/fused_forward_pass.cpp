@@ -1,0 +1,78 @@
+#include "systems/lighting/fused_forward_pass.h"
+
+#include <bit>
+
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/pipeline.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/scene_fused.frag.spv.h"
+#include "systems/gpu/gpu_scene.h"
+#include "systems/gpu/gpu_textures.h"
+#include "systems/gpu/shader_bindings.h"
+
+namespace sg {
+namespace {
+
+// The tone curve of shaders/tone_map.glsl, compiled here as C++, for the background's clear color.
+namespace glsl {
+using namespace glm;
+#include "shaders/tone_map.glsl"
+}  // namespace glsl
+
+using namespace bindings;
+constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+}  // namespace
+
+FusedForwardPass::FusedForwardPass(vk::VulkanContext& context, const GpuTextures& textures,
+                                   rg::Format frame_format)
+    : context_(context),
+      textures_(textures),
+      frame_format_(frame_format),
+      light_resources_(context),
+      layout_(context.device(), lit_camera_bindings(), vk::push_constants<FrameConstants>(both_stages)) {}
+
+void FusedForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
+                               LightingView view, const GpuScene& scene) {
+  const uint32_t groups = shadows::groups_present(group_begin);
+  key_ = groups | static_cast<uint32_t>(view) << 16;  // groups take the low light_group_count bits
+  pipelines_
+      .try_emplace(key_,
+                   [layout = layout_.get(), &textures = textures_, format = frame_format_, groups,
+                    view](uint32_t draw_class) {
+                     vk::GraphicsPipelineDesc desc =
+                         camera_pipeline_desc(scene_fused_frag, {vk::to_vk(format)}, layout, "fused forward");
+                     desc.fragment_specialization =
+                         material_pass_constants(groups, static_cast<uint32_t>(view), textures);
+                     return for_draw_class(after_depth_prepass(std::move(desc)), draw_class);
+                   })
+      .first->second.prepare(context_, scene);
+}
+
+FusedTargets FusedForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth, rg::ImageHandle frame,
+                                      rg::ImageHandle atlas, const vk::Buffer& lights, const GpuScene& scene,
+                                      uint32_t slot, FrameConstants constants, float exposure) const {
+  constants.counts.z = std::bit_cast<uint32_t>(exposure);
+  const glm::vec3 background = glsl::tone_map(background_color, exposure);
+  FusedTargets targets;
+  graph.add_pass(
+      "fused forward",
+      [&](rg::PassBuilder& b) {
+        b.read(atlas, rg::Usage::sampled_fragment);
+        targets.depth = b.write(depth, rg::Usage::depth_attachment);  // tested, not written
+        targets.frame = b.write(frame, rg::Usage::color_attachment,
+                                rg::ClearValue::color_of(background.r, background.g, background.b));
+      },
+      [this, &scene, &lights, slot, constants, atlas,
+       pipelines = pipelines_.at(key_).get()](const vk::PassRecorder& rec) {
+        vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
+        writer.buffer(instances_binding, scene.instances(slot).handle())
+            .image(material_textures_binding, textures_.array().view(), textures_.sampler());
+        const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+        scene.draw_camera_pass(rec, pipelines, layout_, set, constants, slot);
+      });
+  return targets;
+}
+
+}  // namespace sg

@@ -1,0 +1,184 @@
+#include "systems/lighting/light_tiles_pass.h"
+
+#include <array>
+#include <cstring>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/pipeline.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/light_tiles.comp.spv.h"
+#include "shaders/light_tiles_serial.comp.spv.h"
+#include "shaders/light_tiles_serial_transparent.comp.spv.h"
+#include "shaders/light_tiles_transparent.comp.spv.h"
+#include "systems/gpu/shader_bindings.h"
+#include "systems/shadows/light_groups.h"
+
+namespace sg {
+namespace {
+
+using namespace bindings;
+using shadows::light_group_count;
+constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+
+struct CullConstants {
+  glm::mat4 inverse_view_projection;
+  glm::uvec4 screen;  // width, height, tiles across, tiles in all
+  glm::uvec4 counts;  // lights
+};
+
+// Every group's dispatch starts at zero workgroups (the culling counts them) of height and depth 1.
+std::array<glm::uvec4, light_group_count> empty_commands() {
+  std::array<glm::uvec4, light_group_count> commands;
+  commands.fill(glm::uvec4(0u, 1u, 1u, 0u));
+  return commands;
+}
+
+// Measured on lavapipe (2026-11-30), `default` scene at 1280x720: a workgroup per tile 14.5-14.7 ms (4 x 4
+// threads; 17.8 with 8 x 8), an invocation per tile 3.4-6.2 ms; 1,024 lights at 640x360: 9.6
+// against 3.6 ms. On the H200 with 1,024 lights, 8 x 8 threads per tile take 0.11 ms.
+LightCullingShape resolve(LightCullingShape shape, const vk::VulkanContext& context) {
+  if (shape != LightCullingShape::automatic) return shape;
+  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
+             ? LightCullingShape::thread_per_tile
+             : LightCullingShape::workgroup_per_tile;
+}
+
+vk::UniquePipeline culling_pipeline(vk::VulkanContext& context, LightCullingShape shape,
+                                    bool transparent_bounds, VkPipelineLayout layout) {
+  using Spirv = std::span<const uint32_t>;
+  const bool serial = shape == LightCullingShape::thread_per_tile;
+  const Spirv spirv =
+      transparent_bounds
+          ? (serial ? Spirv(light_tiles_serial_transparent_comp) : Spirv(light_tiles_transparent_comp))
+          : (serial ? Spirv(light_tiles_serial_comp) : Spirv(light_tiles_comp));
+  return vk::create_compute_pipeline(context, {spirv, {}, layout, "light tiles"});
+}
+
+std::vector<VkDescriptorSetLayoutBinding> culling_bindings(bool transparent_bounds) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings{
+      {lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
+      {scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute, nullptr},
+      {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
+      {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
+      {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
+      {group_commands_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
+      {light_tiles_feedback_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr}};
+  if (transparent_bounds) {
+    bindings.push_back({transparent_bounds_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr});
+  }
+  return bindings;
+}
+
+}  // namespace
+
+LightTileGrid LightTileGrid::of(uint32_t width, uint32_t height) {
+  return {(width + tiles::LIGHT_TILE_SIZE - 1) / tiles::LIGHT_TILE_SIZE,
+          (height + tiles::LIGHT_TILE_SIZE - 1) / tiles::LIGHT_TILE_SIZE};
+}
+
+uint64_t LightTilesPass::lights_bytes(LightTileGrid grid) {
+  return uint64_t{grid.count()} * tiles::MAX_LIGHTS_PER_TILE * sizeof(uint32_t);
+}
+uint64_t LightTilesPass::ranges_bytes(LightTileGrid grid) {
+  return uint64_t{grid.count()} * light_group_count * sizeof(glm::uvec2);
+}
+uint64_t LightTilesPass::tiles_bytes(LightTileGrid grid) {
+  return uint64_t{grid.count()} * light_group_count * sizeof(uint32_t);
+}
+uint64_t LightTilesPass::commands_bytes() { return light_group_count * sizeof(glm::uvec4); }
+uint64_t LightTilesPass::dispatch_offset(uint32_t group) { return group * sizeof(glm::uvec4); }
+
+LightTilesPass::LightTilesPass(vk::VulkanContext& context, uint32_t frames_in_flight, LightCullingShape shape,
+                               bool transparent_bounds)
+    : shape_(resolve(shape, context)),
+      transparent_bounds_(transparent_bounds),
+      feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light tiles feedback"),
+      nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
+      layout_(context.device(), culling_bindings(transparent_bounds),
+              vk::push_constants<CullConstants>(compute)),
+      pipeline_(culling_pipeline(context, shape_, transparent_bounds, layout_.get())) {
+  // The slots' buffers start with whatever their memory held: nothing dropped yet.
+  for (uint32_t slot = 0; slot < frames_in_flight; ++slot) take_dropped_pairs(slot);
+}
+
+uint64_t LightTilesPass::take_dropped_pairs(uint32_t slot) {
+  uint32_t dropped = 0;
+  const vk::Buffer& buffer = feedback_.buffer(slot);
+  if (buffer.size() >= sizeof(dropped)) std::memcpy(&dropped, buffer.mapped(), sizeof(dropped));
+  const uint32_t zero = 0;
+  feedback_.write(slot, std::span<const uint32_t>(&zero, 1));
+  return dropped;
+}
+
+LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, uint32_t slot, rg::ImageHandle depth,
+                                  const vk::Buffer& lights, uint32_t light_count,
+                                  const glm::mat4& view_projection, const LightTiles* outputs,
+                                  const vk::Buffer* transparent_bounds) const {
+  if ((transparent_bounds != nullptr) != transparent_bounds_) {
+    throw std::logic_error(
+        "LightTilesPass::add_to: transparent bounds given to a pass made without them, or "
+        "missing on one made with them");
+  }
+  const rg::ImageDesc& screen = graph.resources()[depth.index].image;
+  const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
+  const rg::BufferHandle reset_commands = [&] {
+    rg::BufferHandle commands;
+    graph.add_pass(
+        "light tiles reset",
+        [&](rg::PassBuilder& b) {
+          commands =
+              b.write(outputs ? outputs->commands : b.create_buffer("tile commands", {commands_bytes()}),
+                      rg::Usage::transfer);
+          return commands;
+        },
+        [](rg::BufferHandle written, const vk::PassRecorder& rec) {
+          const auto commands = empty_commands();
+          vkCmdUpdateBuffer(rec.cmd(), rec.buffer(written), 0, sizeof(commands), commands.data());
+        });
+    return commands;
+  }();
+  LightTiles out;
+  graph.add_pass(
+      "light tiles",
+      [&](rg::PassBuilder& b) {
+        b.read(depth, rg::Usage::sampled_compute);
+        const auto output = [&](const rg::BufferHandle* given, const char* name, uint64_t bytes) {
+          return b.write(given ? *given : b.create_buffer(name, {bytes}), rg::Usage::storage_compute);
+        };
+        out.lights = output(outputs ? &outputs->lights : nullptr, "tile lights", lights_bytes(grid));
+        out.ranges = output(outputs ? &outputs->ranges : nullptr, "tile ranges", ranges_bytes(grid));
+        out.tiles = output(outputs ? &outputs->tiles : nullptr, "group tiles", tiles_bytes(grid));
+        out.commands = b.write(reset_commands, rg::Usage::storage_compute);
+        return out;
+      },
+      [this, slot, depth, transparent_bounds, grid, &lights, light_count, screen,
+       inverse = glm::inverse(view_projection)](const LightTiles& written, const vk::PassRecorder& rec) {
+        vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
+        writer.buffer(lights_binding, lights.handle())
+            .image(scene_depth_binding, rec.view(depth), nearest_.get())
+            .buffer(tile_lights_binding, rec.buffer(written.lights))
+            .buffer(tile_ranges_binding, rec.buffer(written.ranges))
+            .buffer(group_tiles_binding, rec.buffer(written.tiles))
+            .buffer(group_commands_binding, rec.buffer(written.commands))
+            .buffer(light_tiles_feedback_binding, feedback_.buffer(slot).handle());
+        if (transparent_bounds) writer.buffer(transparent_bounds_binding, transparent_bounds->handle());
+        const VkDescriptorSet set = writer.update();
+        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.get());
+        layout_.bind_compute(rec.cmd(), set);
+        layout_.push(rec.cmd(), CullConstants{inverse,
+                                              {screen.width, screen.height, grid.across, grid.count()},
+                                              {light_count, 0u, 0u, 0u}});
+        if (shape_ == LightCullingShape::thread_per_tile) {
+          vkCmdDispatch(rec.cmd(), (grid.count() + 7) / 8, 1, 1);  // light_tiles_serial.comp: 8 tiles a group
+        } else {
+          vkCmdDispatch(rec.cmd(), grid.across, grid.down, 1);
+        }
+      });
+  return out;
+}
+
+}  // namespace sg

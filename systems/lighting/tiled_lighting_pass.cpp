@@ -1,0 +1,187 @@
+#include "systems/lighting/tiled_lighting_pass.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/pipeline.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "shaders/lighting_ambient.comp.spv.h"
+#include "shaders/tiled_lighting.comp.spv.h"
+#include "systems/gpu/scene_gpu_types.h"
+#include "systems/gpu/shader_bindings.h"
+
+namespace sg {
+namespace {
+
+using namespace bindings;
+constexpr VkShaderStageFlags compute_stage = VK_SHADER_STAGE_COMPUTE_BIT;
+
+struct AmbientConstants {
+  glm::vec4 background_ambient;  // rgb: the background color; w: the ambient term
+  glm::uvec4 screen;             // width, height
+};
+
+// shaders/tiled_lighting_frame.glsl's push constants.
+struct LightingConstants {
+  glm::mat4 inverse_view_projection;
+  glm::vec4 camera_position;
+  glm::uvec4 screen;  // width, height, tiles across, tiles in all
+  glm::uvec4 lights;  // x: a single-light group's light (SINGLE_LIGHT)
+};
+
+std::string group_name(uint32_t group) {
+  switch (shadows::group_shadow_kind(group)) {
+    case shadows::ShadowKind::none: return "unshadowed";
+    case shadows::ShadowKind::map:
+      return "2d " + std::string(scene::to_string(shadows::group_algorithm(group)));
+    case shadows::ShadowKind::cube:
+      return "cube " + std::string(scene::to_string(shadows::group_algorithm(group)));
+  }
+  return "group " + std::to_string(group);
+}
+
+LightingConstants with_group_light(LightingConstants constants, uint32_t light) {
+  constants.lights.x = light;
+  return constants;
+}
+
+bool starts_in_gbuffer(LitSumStart start, const vk::VulkanContext& context) {
+  if (start != LitSumStart::automatic) return start == LitSumStart::gbuffer;
+  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+}
+
+}  // namespace
+
+TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart start)
+    : context_(context),
+      lit_sum_from_gbuffer_(starts_in_gbuffer(start, context)),
+      light_resources_(context),
+      nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
+      ambient_layout_(context.device(),
+                      {{gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
+                       {scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
+                       {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute_stage}},
+                      vk::push_constants<AmbientConstants>(compute_stage)),
+      ambient_pipeline_(
+          !lit_sum_from_gbuffer_
+              ? vk::create_compute_pipeline(
+                    context, {lighting_ambient_comp, {}, ambient_layout_.get(), "lighting ambient"})
+              : vk::UniquePipeline{}),
+      layout_(context.device(),
+              LightResources::bindings(
+                  compute_stage,
+                  {{scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
+                   {gbuffer_normal_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
+                   {gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
+                   {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
+                   {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
+                   {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
+                   {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute_stage}}),
+              vk::push_constants<LightingConstants>(compute_stage)) {}
+
+void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView view) {
+  current_.fill(VK_NULL_HANDLE);
+  for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+    const uint32_t types = lights.group_types[group];  // bit t for type t (lights_interface.glsl)
+    if (types == 0) continue;                          // no light of the group this frame
+    const uint32_t first = lights.group_begin[group];
+    const uint32_t single = lights.group_begin[group + 1] == first + 1 ? 1u : 0u;
+    group_light_[group] = first;
+    vk::UniquePipeline& pipeline =
+        pipelines_[group | types << 8 | static_cast<uint32_t>(view) << 16 | single << 24];
+    current_[group] = pipeline.get();
+    if (pipeline) continue;
+    // constant_id 0: the group; 1: the view; 2: material.glsl's, unused here; 3: the light types;
+    // 4: whether the group has a single light.
+    const std::vector<uint32_t> constants{group, static_cast<uint32_t>(view), 0u, types, single};
+    const std::string name = "tiled lighting " + group_name(group);
+    pipeline = vk::create_compute_pipeline(context_, {tiled_lighting_comp, constants, layout_.get(), name});
+    current_[group] = pipeline.get();
+  }
+}
+
+rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer& gbuffer,
+                                          const LightTiles& tiles, rg::ImageHandle atlas,
+                                          const vk::Buffer& lights, const glm::mat4& view_projection,
+                                          const glm::vec3& camera_position, float ambient) const {
+  // A copy: declaring images may move the graph's resource list.
+  const rg::ImageDesc screen = graph.resources()[gbuffer.albedo.index].image;
+  const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
+  const LightingConstants constants{glm::inverse(view_projection),
+                                    glm::vec4(camera_position, 0.0f),
+                                    {screen.width, screen.height, grid.across, grid.count()},
+                                    {}};
+  rg::ImageHandle lit_sum = gbuffer.lit_sum;
+  if (lit_sum_from_gbuffer_ != lit_sum.valid()) {
+    throw std::logic_error(lit_sum_from_gbuffer_
+                               ? "TiledLightingPass: the G-buffer must start the lit sum"
+                               : "TiledLightingPass: the lit sum starts in the ambient pass");
+  }
+  if (!lit_sum.valid()) {
+    graph.add_pass(
+        "lighting ambient",
+        [&](rg::PassBuilder& b) {
+          b.read(gbuffer.albedo, rg::Usage::sampled_compute);
+          b.read(gbuffer.depth, rg::Usage::sampled_compute);
+          lit_sum = b.write(b.create_image("lit sum", {screen.width, screen.height, lit_sum_format}),
+                            rg::Usage::storage_compute);
+          return lit_sum;
+        },
+        [this, albedo = gbuffer.albedo, depth = gbuffer.depth,
+         constants =
+             AmbientConstants{glm::vec4(background_color, ambient), {screen.width, screen.height, 0, 0}}](
+            rg::ImageHandle lit_sum, const vk::PassRecorder& rec) {
+          const VkDescriptorSet set =
+              ambient_layout_.write(rec.allocate_set(ambient_layout_))
+                  .image(gbuffer_albedo_binding, rec.view(albedo), nearest_.get())
+                  .image(scene_depth_binding, rec.view(depth), nearest_.get())
+                  .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL)
+                  .update();
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, ambient_pipeline_.get());
+          ambient_layout_.bind_compute(rec.cmd(), set);
+          ambient_layout_.push(rec.cmd(), constants);
+          vkCmdDispatch(rec.cmd(), (constants.screen.x + 15) / 16, (constants.screen.y + 15) / 16, 1);
+        });
+  }
+  for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+    if (current_[group] == VK_NULL_HANDLE) continue;  // no light of the group this frame
+    graph.add_pass(
+        "lighting " + group_name(group),
+        [&](rg::PassBuilder& b) {
+          for (const rg::ImageHandle image : {atlas, gbuffer.depth, gbuffer.normal, gbuffer.albedo}) {
+            b.read(image, rg::Usage::sampled_compute);
+          }
+          for (const rg::BufferHandle buffer : {tiles.lights, tiles.ranges, tiles.tiles}) {
+            b.read(buffer, rg::Usage::storage_compute);
+          }
+          b.read(tiles.commands, rg::Usage::indirect);
+          lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
+        },
+        [this, group, gbuffer, tiles, atlas, lit_sum, &lights,
+         constants = with_group_light(constants, group_light_[group]),
+         pipeline = current_[group]](const vk::PassRecorder& rec) {
+          const VkSampler nearest = nearest_.get();
+          vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
+          writer.image(scene_depth_binding, rec.view(gbuffer.depth), nearest)
+              .image(gbuffer_normal_binding, rec.view(gbuffer.normal), nearest)
+              .image(gbuffer_albedo_binding, rec.view(gbuffer.albedo), nearest)
+              .buffer(tile_lights_binding, rec.buffer(tiles.lights))
+              .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
+              .buffer(group_tiles_binding, rec.buffer(tiles.tiles))
+              .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
+          const VkDescriptorSet set =
+              light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+          layout_.bind_compute(rec.cmd(), set);
+          layout_.push(rec.cmd(), constants);
+          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.commands),
+                                LightTilesPass::dispatch_offset(group));
+        });
+  }
+  return lit_sum;
+}
+
+}  // namespace sg

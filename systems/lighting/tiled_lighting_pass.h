@@ -1,0 +1,69 @@
+#pragma once
+// Tiled deferred lighting: the lit sum starts from the ambient term and the background (a
+// compute pass, shaders/lighting_ambient.comp, or the G-buffer pass itself: LitSumStart), then
+// for each light group that has lights one pass with that group's shadow code compiled in
+// (shaders/tiled_lighting.comp), over the tiles that have lights of the group (an indirect
+// dispatch from LightTilesPass), adding them to the lit sum. Fragment passes over a quad per tile
+// lost on both kinds of device (docs/PERFORMANCE.md) and are gone.
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+
+#include <glm/glm.hpp>
+
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/fwd.h"
+#include "rendergraph/device/unique_handle.h"
+#include "systems/lighting/gbuffer_pass.h"
+#include "systems/lighting/light_resources.h"
+#include "systems/lighting/light_tiles_pass.h"
+#include "systems/lighting/lighting_path.h"
+#include "systems/shadows/frame_lights.h"
+#include "systems/shadows/light_groups.h"
+
+namespace sg {
+
+class TiledLightingPass {
+ public:
+  // `start` automatic is resolved for the context's device (lit_sum_from_gbuffer() says how).
+  explicit TiledLightingPass(vk::VulkanContext& context, LitSumStart start = LitSumStart::automatic);
+
+  // Picks, and compiles when first needed, the pipeline of each group that has lights in
+  // `lights` (sorted by group): each holds one algorithm's shadow code and only the code of the
+  // light types the group has this frame (LIGHT_TYPES), for `view`; a group with a single light
+  // reads no light lists (SINGLE_LIGHT). add_to uses them.
+  void prepare(const shadows::FrameLights& lights, LightingView view);
+
+  static constexpr rg::Format lit_sum_format = GBuffer::lit_sum_format;
+
+  // Adds the ambient pass, which creates the lit sum (unless the G-buffer pass started it:
+  // GBuffer::lit_sum, which lit_sum_from_gbuffer() requires), and one pass per group with lights
+  // in the last prepare(); returns the lit sum's newest version. `lights`, the records prepare() saw,
+  // must live until the frame is recorded. Positions come from the depth buffer through the
+  // camera's `view_projection`; `ambient` is the ambient term kA * IA.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles,
+                         rg::ImageHandle atlas, const vk::Buffer& lights, const glm::mat4& view_projection,
+                         const glm::vec3& camera_position, float ambient) const;
+
+  // Whether the G-buffer pass must start the lit sum (GBufferPass's writes_lit_sum), the
+  // ambient pass then left out (LitSumStart, lighting_path.h).
+  bool lit_sum_from_gbuffer() const { return lit_sum_from_gbuffer_; }
+
+ private:
+  vk::VulkanContext& context_;
+  bool lit_sum_from_gbuffer_;
+  LightResources light_resources_;
+  vk::UniqueSampler nearest_;  // G-buffer reads
+  vk::PipelineLayout ambient_layout_;
+  vk::UniquePipeline ambient_pipeline_;  // unless the G-buffer starts the lit sum
+  vk::PipelineLayout layout_;
+  // By group | light types << 8 | LightingView << 16 | single light << 24.
+  std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;
+  // This frame's, by group; null for a group without lights.
+  std::array<VkPipeline, shadows::light_group_count> current_{};
+  // This frame's first record of each group: the group's light where it has one (SINGLE_LIGHT).
+  std::array<uint32_t, shadows::light_group_count> group_light_{};
+};
+
+}  // namespace sg

@@ -1,0 +1,192 @@
+#pragma once
+// Renders an ECS scene through the render graph: the shadow maps due this frame, the lighting
+// (lighting_path.h), then exposure and tone mapping into the frame. It takes three of the
+// frame's phases (SandboxFrame::record names all five):
+//
+//   renderer.gather(world);                       // read the world: drawables and lights, on the CPU
+//   renderer.prepare(slot, pose, lens, w, h);     // shadow tiles and caching, this slot's GPU buffers
+//   RenderedFrame f = renderer.add_passes(graph, imports, frame, slot, pose, lens);
+//
+// `frame` is any color image of a format given at construction (imported or transient); the
+// returned handles let later passes (overlays, copies, presentation) read the results. The
+// shadow atlas is imported through `imports` as "shadow atlas".
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include "ecs/thread_pool.h"
+#include "ecs/world.h"
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/fwd.h"
+#include "rendergraph/vulkan/graph_imports.h"
+#include "systems/gpu/gpu_scene.h"
+#include "systems/gpu/gpu_textures.h"
+#include "systems/lighting/depth_prepass.h"
+#include "systems/lighting/forward_pass.h"
+#include "systems/lighting/fused_forward_pass.h"
+#include "systems/lighting/gbuffer_pass.h"
+#include "systems/lighting/light_tiles_pass.h"
+#include "systems/lighting/lighting_path.h"
+#include "systems/lighting/tiled_lighting_pass.h"
+#include "systems/lighting/tone_map_pass.h"
+#include "systems/lighting/transparent_pass.h"
+#include "systems/scene/camera.h"
+#include "systems/scene/scene.h"
+#include "systems/shadow_maps/shadow_atlas.h"
+#include "systems/shadow_maps/shadow_passes.h"
+#include "systems/shadow_maps/shadow_view_batch.h"
+#include "systems/shadows/cube_shadow_mode.h"
+#include "systems/shadows/frame_lights.h"
+#include "systems/shadows/shadow_schedule.h"
+#include "systems/shadows/shadow_view_path.h"
+
+namespace sg {
+
+struct RendererSettings {
+  shadows::LightOverrides lights;
+  shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
+  LightingPath lighting = LightingPath::automatic;
+  LitSumStart lit_sum_start = LitSumStart::automatic;  // the deferred path's
+  bool cull_casters = true;  // off: every shadow view draws every caster (the naive baseline)
+  // Batched falls back to per-light where the device cannot draw views into atlas layers at once.
+  shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;
+  shadows::ShadowRaster shadow_raster = shadows::ShadowRaster::automatic;  // the batched path's
+  shadows::ShadowResolution shadow_resolution = shadows::ShadowResolution::screen;
+  uint64_t shadow_memory_bytes = 0;  // the atlas's budget; 0: the device's default
+  uint32_t shadow_view_budget = shadows::default_shadow_view_budget;  // views redrawn a frame; 0: all due
+  bool cache_shadows = true;  // off: every map is redrawn every frame (within the view budget)
+  // Where the compute raster may run: keep a static layer per map (ShadowViewBatch), so that maps
+  // wrong only through moving casters redraw just those.
+  bool static_shadow_layers = true;
+  float exposure = 1.0f;  // multiplies the lit sum before tone mapping
+  LightingView view = LightingView::lit;
+  // Threads that run a frame's CPU work split in pieces, the calling thread included; 0: one per
+  // hardware thread.
+  uint32_t cpu_threads = 0;
+};
+
+struct RenderedFrame {
+  rg::ImageHandle color;         // the frame image's newest version: the tone-mapped picture
+  rg::ImageHandle depth;         // the camera's D32 depth buffer (transient)
+  rg::ImageHandle shadow_atlas;  // every shadow map, this frame's newest version
+  // The tiled paths' light lists (invalid handles with --naive's every-light forward).
+  std::optional<LightTiles> light_tiles;
+};
+
+class SceneRenderer {
+ public:
+  // docs/LIGHTING.md section 2's default ambient term kA * IA.
+  static constexpr float ambient = 0.15f;
+
+  // Uploads `scene`'s meshes and textures; the scene's world is read by gather() each frame.
+  // `frame_format` is the format of the images add_passes draws the picture into.
+  SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene, uint32_t frames_in_flight,
+                rg::Format frame_format, const RendererSettings& settings = {});
+
+  // Reads the world's drawables and lights into CPU lists. Transforms must be up to date. Once a
+  // frame, each followed by prepare(): the shadow schedule learns what moved from the last gather
+  // alone.
+  void gather(const ecs::World& world);
+  // Gives the gathered lights their shadow tiles (their importance measured from the camera
+  // `pose` and `lens` on a `width` x `height` frame), decides which maps are redrawn, and writes
+  // everything the frame's passes read into the slot's buffers and descriptor sets. Call after
+  // FrameRing::begin_frame gave `slot`.
+  void prepare(uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens, uint32_t width,
+               uint32_t height);
+  // Declares the shadow passes, the lighting and the tone mapping into `frame`.
+  RenderedFrame add_passes(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHandle frame,
+                           uint32_t slot, const scene::CameraPose& pose, const scene::Camera& lens);
+
+  // The lighting path in use: the settings' one, or for automatic the one chosen for the device.
+  // The last prepared frame's (automatic resolved).
+  LightingPath lighting() const { return lighting_; }
+  const GpuScene& gpu_scene() const { return gpu_scene_; }
+  const shadows::FrameLights& lights() const { return lights_; }
+  // The (tile, light) pairs left out of full light lists by the frame read back in the last
+  // prepare (frames in flight ago): lights missing from some tiles' lighting.
+  uint64_t dropped_light_pairs() const { return dropped_light_pairs_; }
+  // With the GPU idle: the pairs the frames not read back yet left out (every slot's).
+  uint64_t drain_dropped_light_pairs();
+  const ShadowAtlas& shadow_atlas() const { return atlas_; }
+  const shadows::ShadowScheduleStats& shadow_stats() const { return schedule_.stats(); }
+  // The path in use: the settings' one, or per-light where batching is not supported.
+  shadows::ShadowViewPath shadow_views() const {
+    return batch_ ? shadows::ShadowViewPath::batched : shadows::ShadowViewPath::per_light;
+  }
+  // The batched path's raster (never automatic); unset on the per-light path.
+  std::optional<shadows::ShadowRaster> shadow_raster() const {
+    return batch_ ? std::optional(batch_->raster()) : std::nullopt;
+  }
+  // Caster instances drawn into shadow views: the batch's count (read back a few frames late) or
+  // the per-light passes' CPU culling.
+  uint64_t shadow_caster_draws() const;
+  const RendererSettings& settings() const { return settings_; }
+  // The threads gather() and prepare() split their work over, idle in between: the frame's
+  // systems that run before gather() (the transform update) may use them too.
+  ecs::ThreadPool& workers() { return workers_; }
+  const ecs::ThreadPool& workers() const { return workers_; }
+  // Switches the picture between lit and shadow-only from the next prepare() on.
+  void set_view(LightingView view) { settings_.view = view; }
+  // The batched shadow views' raster from the next frame on (ShadowViewBatch::set_raster); no
+  // effect on per-light passes.
+  void set_shadow_raster(shadows::ShadowRaster raster) {
+    if (batch_) batch_->set_raster(raster);
+  }
+
+  // CPU milliseconds of the last gather() and prepare(), by step: where a CPU frame goes.
+  struct CpuSteps {
+    double instances = 0.0;  // gather: drawables (GpuScene::gather)
+    double lights = 0.0;     // gather: light records and shadow views (gather_lights)
+    double schedule = 0.0;   // prepare: caster boxes, tiles, caching, sorting by light group
+    double upload = 0.0;     // prepare: instance and light buffers of the slot
+    double views = 0.0;      // prepare: the shadow views' records, casters and batches; lighting pipelines
+  };
+  const CpuSteps& cpu_steps() const { return cpu_steps_; }
+
+ private:
+  vk::VulkanContext& context_;
+  uint32_t frames_in_flight_;
+  rg::Format frame_format_;
+  RendererSettings settings_;
+  LightingPath lighting_;
+  bool lighting_per_frame_;  // automatic on a CPU device: cpu_lighting_for each frame
+  ecs::ThreadPool workers_;  // CPU work of a frame that splits into independent chunks
+  GpuScene gpu_scene_;
+  GpuTextures textures_;
+  ShadowAtlas atlas_;
+  shadows::ShadowSchedule schedule_;
+  std::optional<ShadowViewBatch> batch_;
+  std::optional<ShadowPasses> per_light_;
+  // The frame's casters for the schedule: all of them after a new layout, else what moved.
+  shadows::CasterUpdate caster_update();
+  std::vector<shadows::CasterBounds> casters_;
+  std::vector<scene::Aabb> still_changes_;  // where casters that start moving stood
+  std::vector<scene::Aabb> moved_casters_;
+  CpuSteps cpu_steps_;
+  // The passes of the path in use only: a CPU driver compiles a pipeline slowly.
+  struct Fused {
+    DepthPrepass prepass;
+    FusedForwardPass forward;
+  };
+  struct Deferred {
+    GBufferPass gbuffer;
+    LightTilesPass light_tiles;
+    TiledLightingPass lighting;
+  };
+  std::optional<ForwardPass> every_light_;
+  std::optional<Deferred> deferred_;
+  std::optional<Fused> fused_;
+  std::optional<TransparentPass> transparent_;  // made with the first transparent surface
+  // The format of the image the path lights into: its lit sum, or the frame (fused).
+  rg::Format lit_format() const;
+  uint64_t take_dropped_light_pairs(uint32_t slot);
+  ToneMapPass tone_map_;
+  vk::FrameBuffers light_records_;
+  std::size_t max_light_records_;  // what the device's texel buffers hold (maxTexelBufferElements)
+  shadows::FrameLights lights_;
+  uint64_t dropped_light_pairs_ = 0;
+  uint64_t frames_since_drop_message_ = 300;  // a message at most every 300 frames
+};
+
+}  // namespace sg

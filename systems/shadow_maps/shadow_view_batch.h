@@ -1,0 +1,191 @@
+#pragma once
+// Every shadow view due this frame drawn by a handful of passes, driven by the GPU: shadow views
+// are data, not passes. The CPU writes one record per view (a 2D map, or one face of a point
+// light's cube: its matrix, its atlas tile and frustum) and one per shadow
+// caster (world bounds, mesh, instance); then
+//
+//   shadow cull      (compute)  every caster against every view's frustum -> (caster, view) pairs
+//   shadow draws     (compute)  counts -> one indirect draw per (view kind, mesh), and dispatches
+// then, rasterizing with the hardware (shadows::ShadowRaster::hardware):
+//   shadow scatter   (compute)  the pairs sorted into those draws' instance ranges
+//   shadow views     (raster)   clears the views' tiles, then two multi-draw indirect calls
+//                               (2D maps depth only; cube faces with shadow_cube.frag) draw
+//                               every pair into its tile of its atlas layer
+// or in compute (shadows::ShadowRaster::compute):
+//   shadow raster    (compute)  a workgroup per pair writes its triangles' depths into the
+//                               views' squares of a depth buffer (shaders/shadow_raster.comp)
+//   shadow copy      (transfer) the squares into their atlas tiles
+//
+// With static layers (the atlas's, ShadowAtlas), the compute raster draws moving casters
+// (GpuScene::moving) apart: a view drawn with every caster is culled against the still casters
+// (pair list 0), rasterized, and its square saved as its static layer ("shadow static save")
+// before the moving casters (list 1) are drawn over it ("shadow raster moving"); a view that only
+// moving casters made wrong (ShadowMapView::moving_casters_only) starts from its static layer
+// ("shadow static restore") and gets list 1 alone. A frame whose views are mostly redrawn for a
+// few moving casters then draws those casters, not the scene. The hardware raster draws every
+// caster into every view and keeps no layers (static_layers_kept()).
+//
+// so CPU time grows with views and casters, not with their product, and the number of passes is
+// fixed. Casters of masked or transparent materials (GpuScene::first_cut_out_group) are drawn with
+// the shaders' cut_out variants (shaders/shadow_cut_out.glsl); a transparent caster holding a
+// view's light is culled from that view. The hardware raster needs shaderOutputLayer (gl_Layer from the
+// vertex stage, shaders/shadow_batch.vert); supported() says whether the device has it.
+//
+// Culled pairs live in a buffer of a fixed capacity. The GPU reports how many pairs it kept
+// (read back when the frame slot comes round again); when they did not fit, capacity grows and
+// all_casters_kept() says so, so that the caller re-renders the views that lost casters.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "ecs/thread_pool.h"
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/descriptors.h"
+#include "rendergraph/device/frame_buffers.h"
+#include "rendergraph/device/fwd.h"
+#include "rendergraph/device/unique_handle.h"
+#include "systems/gpu/gpu_scene.h"
+#include "systems/shadows/depth_placement.h"
+#include "systems/shadows/frame_lights.h"
+#include "systems/shadows/shadow_view_path.h"
+
+namespace sg {
+
+class GpuTextures;
+
+class ShadowViewBatch {
+ public:
+  // `raster` automatic: the hardware on CPU devices; on GPUs, each frame's choice of
+  // shadows::raster_for_views. `static_layers`: the atlas has them (may_raster_in_compute).
+  // `textures`: the materials' (cut-out casters read their alpha), kept by reference.
+  ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures,
+                  shadows::ShadowRaster raster, bool static_layers);
+
+  static bool supported(const vk::VulkanContext& context);
+  // Whether frames may rasterize in compute with `raster` on this device, and so keep static
+  // layers.
+  static bool may_raster_in_compute(const vk::VulkanContext& context, shadows::ShadowRaster raster);
+  // The raster of the last prepared frame (never automatic).
+  shadows::ShadowRaster raster() const { return raster_; }
+  // The raster of the frames prepared from now on. Compute or automatic (on a GPU) only on a
+  // batch made with one of them, else std::logic_error.
+  void set_raster(shadows::ShadowRaster raster);
+
+  // After FrameRing::begin_frame returned `slot`, before prepare: false when the frame that last
+  // used the slot kept more pairs than it could store, so some of its views missed casters and
+  // must be rendered again (the capacity has grown since).
+  bool all_casters_kept(uint32_t slot);
+  // CPU side of a frame: the records of the views of `lights` that render this frame (`render`),
+  // in an atlas of `page_size` texels a page, and of `scene`'s casters. With `pool`, the view
+  // and caster records are written on its threads, straight into the slot's buffers.
+  void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene, uint32_t page_size,
+               ecs::ThreadPool* pool = nullptr);
+  // Whether the prepared frame keeps the static layers of the views it draws with every caster
+  // (compute raster with static layers); when not, moving_casters_only views are drawn with
+  // every caster too.
+  bool static_layers_kept() const { return layered_; }
+
+  // Adds the passes (none when no view renders) and returns the atlas's newest version. `scene`
+  // is read when the passes record. `static_layers`: the atlas's, imported, when it has them.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, rg::BufferHandle static_layers,
+                         const GpuScene& scene, uint32_t slot) const;
+
+  uint32_t views() const { return view_count_; }
+  // Pairs (caster, view) the GPU kept in the last frame read back: instances drawn into views.
+  uint64_t kept_pairs() const { return kept_pairs_; }
+
+  // Must match ShadowView of shaders/shadow_views.glsl.
+  struct View {
+    glm::mat4 view_projection;
+    glm::vec4 tile;
+    glm::vec4 position_far;
+    glm::uvec4 info;
+    glm::uvec4 raster;
+  };
+  struct Caster {
+    glm::vec4 min_mesh;
+    glm::vec4 max_instance;
+  };
+
+ private:
+  rg::ImageHandle add_hardware_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
+                                      uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle counts,
+                                      rg::BufferHandle draws) const;
+  rg::ImageHandle add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
+                                     uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle moving_pairs,
+                                     rg::BufferHandle counts, rg::BufferHandle draws, rg::BufferHandle depths,
+                                     rg::BufferHandle static_layers) const;
+  // Copies the depths of views [first, first + count) into their static layers (`save`) or back.
+  // The handles move on to the versions written.
+  void add_static_layer_pass(rg::RenderGraph& graph, const char* name, uint32_t slot, bool save,
+                             uint32_t first, uint32_t count, rg::BufferHandle& depths,
+                             rg::BufferHandle& static_layers) const;
+
+  vk::VulkanContext& context_;
+  const GpuTextures& textures_;
+  shadows::ShadowRaster setting_;  // hardware, compute, or automatic: chosen per frame
+  shadows::ShadowRaster raster_;   // this frame's
+  bool has_static_layers_;
+  bool layered_ = false;  // this frame's: static layers kept, moving casters drawn apart
+  vk::PipelineLayout cull_layout_;
+  vk::PipelineLayout draws_layout_;
+  vk::PipelineLayout scatter_layout_;
+  vk::PipelineLayout raster_layout_;
+  vk::PipelineLayout compute_raster_layout_;
+  vk::PipelineLayout static_layers_layout_;
+  vk::UniquePipeline cull_pipeline_;
+  vk::UniquePipeline draws_pipeline_;
+  vk::UniquePipeline scatter_pipeline_;
+  vk::UniquePipeline compute_raster_pipeline_;
+  // The hardware raster's, for opaque casters or cut-out ones (shaders/shadow_cut_out.glsl).
+  struct RasterPipelines {
+    vk::UniquePipeline map;   // shadow_batch.vert
+    vk::UniquePipeline face;  // shadow_batch.vert, shadow_cube.frag
+  };
+  RasterPipelines make_raster_pipelines(bool cut_out) const;
+  RasterPipelines opaque_;
+  // The cut-out casters' pipelines, the hardware raster's and the compute raster's, made with the
+  // first scene that has such casters.
+  void make_cut_out_pipelines();
+  RasterPipelines cut_out_;
+  vk::UniquePipeline compute_raster_cut_out_pipeline_;
+  vk::UniquePipeline static_save_pipeline_;
+  vk::UniquePipeline static_restore_pipeline_;
+  uint32_t max_views_per_dispatch_ = 0;
+
+  vk::FrameBuffers view_buffers_;
+  vk::FrameBuffers caster_buffers_;
+  vk::FrameBuffers mesh_buffers_;
+  vk::FrameBuffers feedback_;
+  // Per pair list: the capacity each slot's last frame had, the limit it may grow to, this
+  // frame's.
+  struct PairCapacity {
+    std::vector<uint64_t> in_slot;
+    uint64_t limit = uint64_t{1} << 22;
+    uint64_t now = 0;
+  };
+  std::array<PairCapacity, 2> capacity_;
+  uint64_t kept_pairs_ = 0;
+
+  uint32_t view_count_ = 0;           // this frame's, their records in view_buffers_
+  uint32_t full_views_ = 0;           // the first views, drawn with every caster; then moving ones alone
+  uint32_t caster_count_ = 0;         // this frame's records of all casters in caster_buffers_
+  uint32_t first_cut_out_group_ = 0;  // this frame's GpuScene::first_cut_out_group
+  uint32_t moving_count_ = 0;         // layered: the moving casters' records after them
+  std::vector<uint32_t> group_first_caster_;  // by caster group: its first caster record
+  std::vector<uint32_t> moving_casters_;      // layered: the moving casters' instances
+  std::vector<glm::uvec4> meshes_;
+  std::vector<VkClearRect> clears_;
+  // Compute raster: where each view's depths go in the depth buffer (View::raster's x and y, by
+  // view), and the copies into the atlas.
+  void place_depths();
+  std::vector<shadows::AtlasTile> view_tiles_;  // per view
+  shadows::DepthPlacement depth_placement_;
+  std::vector<VkBufferImageCopy> copies_;  // depth_placement_'s regions
+  std::vector<uint8_t> drawn_as_;     // per light (maps, then cubes): not, with every caster, moving ones
+  std::vector<uint32_t> first_view_;  // per light (maps, then cubes): its first view, if drawn
+};
+
+}  // namespace sg
