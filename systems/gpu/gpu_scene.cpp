@@ -248,7 +248,7 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   commands_.clear();
   class_commands_.fill({});
   caster_groups_.clear();
-  first_cut_out_group_ = 0;
+  first_cut_out_group_ = 0;  // the opaque groups come first: their count
   // One command per (draw class, mesh) over its instances, and a caster group over its casters
   // (first).
   for (size_t begin = 0; begin < count;) {
@@ -271,8 +271,7 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
       if (casters > 0) {
         VkDrawIndexedIndirectCommand group = command;
         group.instanceCount = casters;
-        if (!(draw_class & (draw_masked | draw_blended)))
-          first_cut_out_group_ = static_cast<uint32_t>(caster_groups_.size()) + 1;
+        if (!(draw_class & (draw_masked | draw_blended))) ++first_cut_out_group_;
         caster_groups_.push_back(group);
       }
     }
@@ -330,22 +329,22 @@ bool GpuScene::has_transparent() const {
 }
 
 void GpuScene::order_transparent(const glm::vec3& eye) {
-  transparent_order_.clear();
+  // (minus the squared distance of the bounds' centre, instance): ascending is farthest first.
+  transparent_by_distance_.clear();
   for (uint32_t draw_class = 0; draw_class < draw_class_count; ++draw_class) {
     if (!(draw_class & draw_blended)) continue;
     const CommandRange& range = class_commands_[draw_class];
     for (uint32_t c = range.first; c < range.first + range.count; ++c) {
-      for (uint32_t k = 0; k < commands_[c].instanceCount; ++k)
-        transparent_order_.push_back(commands_[c].firstInstance + k);
+      for (uint32_t i = commands_[c].firstInstance;
+           i < commands_[c].firstInstance + commands_[c].instanceCount; ++i) {
+        const glm::vec3 to_centre = 0.5f * (bounds_[i].min + bounds_[i].max) - eye;
+        transparent_by_distance_.push_back({-glm::dot(to_centre, to_centre), i});
+      }
     }
   }
-  transparent_distances_.resize(bounds_.size());
-  for (const uint32_t i : transparent_order_) {
-    const glm::vec3 centre = 0.5f * (bounds_[i].min + bounds_[i].max);
-    transparent_distances_[i] = glm::dot(centre - eye, centre - eye);
-  }
-  std::sort(transparent_order_.begin(), transparent_order_.end(),
-            [&](uint32_t a, uint32_t b) { return transparent_distances_[a] > transparent_distances_[b]; });
+  std::sort(transparent_by_distance_.begin(), transparent_by_distance_.end());
+  transparent_order_.clear();
+  for (const auto& [distance, instance] : transparent_by_distance_) transparent_order_.push_back(instance);
 }
 
 void GpuScene::draw_transparent(const vk::PassRecorder& rec,

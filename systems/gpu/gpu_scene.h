@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -206,7 +207,7 @@ class GpuScene {
   std::vector<VkDrawIndexedIndirectCommand> caster_groups_;
   uint32_t first_cut_out_group_ = 0;
   std::vector<uint32_t> transparent_order_;  // order_transparent's
-  std::vector<float> transparent_distances_;
+  std::vector<std::pair<float, uint32_t>> transparent_by_distance_;
 };
 
 }  // namespace sg

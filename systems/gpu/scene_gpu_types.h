@@ -1,6 +1,9 @@
 #pragma once
 // C++ mirrors of shaders/scene_interface.glsl. std430/push-constant layout: vec4-aligned
 // members only, so the C++ layout matches without padding rules to remember.
+#include <bit>
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 namespace sg {
@@ -23,10 +26,17 @@ inline constexpr glm::vec3 background_color{0.02f, 0.02f, 0.03f};
 struct FrameConstants {
   glm::mat4 view_projection;
   glm::vec4 camera_position;  // w: ambient term kA * IA
-  // x: lights; y: light tiles across the screen (transparent_tiled.frag); z: the exposure's bits
-  // (fused); w: 1 where the transparent pass blends into a tone-mapped frame
+  // x: lights; y: light tiles across the screen (transparent_tiled.frag); z, w: tone_mapping's
   glm::uvec4 counts;
 };
 static_assert(sizeof(FrameConstants) <= 128, "Vulkan guarantees only 128 bytes of push constants");
+
+// `constants` for a pass that tone-maps what it lights, into the frame (the fused path, and
+// transparent surfaces blended over its frame): counts.z the exposure's bits, counts.w 1.
+inline FrameConstants tone_mapping(FrameConstants constants, float exposure) {
+  constants.counts.z = std::bit_cast<uint32_t>(exposure);
+  constants.counts.w = 1;
+  return constants;
+}
 
 }  // namespace sg

@@ -53,7 +53,7 @@ void FusedForwardPass::prepare(const std::array<uint32_t, shadows::light_group_c
 FusedTargets FusedForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle depth, rg::ImageHandle frame,
                                       rg::ImageHandle atlas, const vk::Buffer& lights, const GpuScene& scene,
                                       uint32_t slot, FrameConstants constants, float exposure) const {
-  constants.counts.z = std::bit_cast<uint32_t>(exposure);
+  constants = tone_mapping(constants, exposure);
   const glm::vec3 background = glsl::tone_map(background_color, exposure);
   FusedTargets targets;
   graph.add_pass(

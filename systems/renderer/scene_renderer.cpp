@@ -247,11 +247,8 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
     FusedTargets fused = fused_->forward.add_to(graph, prepass, frame, atlas, records, gpu_scene_, slot,
                                                 constants, settings_.exposure);
     if (gpu_scene_.has_transparent()) {
-      FrameConstants tone_mapped = constants;  // blended into the tone-mapped frame
-      tone_mapped.counts.z = std::bit_cast<uint32_t>(settings_.exposure);
-      tone_mapped.counts.w = 1;
       fused.frame = transparent_->add_to(graph, fused.frame, fused.depth, atlas, records, light_count,
-                                         gpu_scene_, slot, tone_mapped);
+                                         gpu_scene_, slot, tone_mapping(constants, settings_.exposure));
     }
     return {fused.frame, fused.depth, atlas, std::nullopt};
   }

@@ -38,6 +38,24 @@ void expect_same_boxes(std::span<const scene::Aabb> a, std::span<const scene::Aa
   }
 }
 
+// Two boxes of default material, at x = 0 and x = 4, their transforms up to date and the tick
+// past them, as a renderer finds a loaded scene.
+struct TwoBoxes {
+  scene::Scene scene;
+  uint32_t box = 0;  // the mesh
+  ecs::Entity first;
+  ecs::Entity second;
+};
+TwoBoxes two_boxes() {
+  TwoBoxes boxes;
+  boxes.box = scene::add_box_mesh(boxes.scene.meshes);
+  boxes.first = scene::add_instance(boxes.scene, boxes.box, {{0.0f, 0.0f, 0.0f}}, scene::Material{});
+  boxes.second = scene::add_instance(boxes.scene, boxes.box, {{4.0f, 0.0f, 0.0f}}, scene::Material{});
+  ecs::update_world_transforms(boxes.scene.world, 0);
+  boxes.scene.world.advance_tick();
+  return boxes;
+}
+
 class GpuSceneTest : public GpuTest {};
 
 // On a pool, with instances in several chunks of the scene's bounds, so that moves fall into
@@ -129,12 +147,9 @@ TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
 }
 
 TEST_F(GpuSceneTest, AFrameWithoutWritesKeepsEveryInstance) {
-  scene::Scene s;
-  const uint32_t box = scene::add_box_mesh(s.meshes);
-  const ecs::Entity moved = scene::add_instance(s, box, {{0.0f, 0.0f, 0.0f}}, scene::Material{});
-  scene::add_instance(s, box, {{4.0f, 0.0f, 0.0f}}, scene::Material{});
-  ecs::update_world_transforms(s.world, 0);
-  s.world.advance_tick();
+  TwoBoxes boxes = two_boxes();
+  scene::Scene& s = boxes.scene;
+  const ecs::Entity moved = boxes.first;
   GpuScene gpu(context, s.meshes, 1);
   gpu.gather(s.world);
   const scene::Aabb before = gpu.instance_bounds()[0];
@@ -223,12 +238,9 @@ TEST_F(GpuSceneTest, SceneBoundsShrinkWhenABoxThatHeldAFaceMovesIn) {
 // Instances are drawn class by class: a material edit within a class re-places the instance
 // alone, one that makes it masked or double-sided lays the instances out again, into that class.
 TEST_F(GpuSceneTest, AMaterialThatChangesDrawClassLaysTheInstancesOutAgain) {
-  scene::Scene s;
-  const uint32_t box = scene::add_box_mesh(s.meshes);
-  const ecs::Entity card = scene::add_instance(s, box, {{0.0f, 0.0f, 0.0f}}, scene::Material{});
-  scene::add_instance(s, box, {{4.0f, 0.0f, 0.0f}}, scene::Material{});
-  ecs::update_world_transforms(s.world, 0);
-  s.world.advance_tick();
+  TwoBoxes boxes = two_boxes();
+  scene::Scene& s = boxes.scene;
+  const ecs::Entity card = boxes.first;
   GpuScene gpu(context, s.meshes, 1);
   gpu.gather(s.world);
   EXPECT_TRUE(gpu.has_draw_class(0));
@@ -253,12 +265,10 @@ TEST_F(GpuSceneTest, AMaterialThatChangesDrawClassLaysTheInstancesOutAgain) {
 // An instance whose bounds change becomes moving, and stays so until the next layout; a material
 // edit alone moves nothing.
 TEST_F(GpuSceneTest, MovedInstancesAreMovingUntilTheNextLayout) {
-  scene::Scene s;
-  const uint32_t box = scene::add_box_mesh(s.meshes);
-  const ecs::Entity moved = scene::add_instance(s, box, {{0.0f, 0.0f, 0.0f}}, scene::Material{});
-  const ecs::Entity painted = scene::add_instance(s, box, {{4.0f, 0.0f, 0.0f}}, scene::Material{});
-  ecs::update_world_transforms(s.world, 0);
-  s.world.advance_tick();
+  TwoBoxes boxes = two_boxes();
+  scene::Scene& s = boxes.scene;
+  const ecs::Entity moved = boxes.first;
+  const ecs::Entity painted = boxes.second;
   GpuScene gpu(context, s.meshes, 1);
   gpu.gather(s.world);
   EXPECT_TRUE(gpu.moving_instances().empty());
@@ -286,7 +296,7 @@ TEST_F(GpuSceneTest, MovedInstancesAreMovingUntilTheNextLayout) {
   EXPECT_EQ(std::vector<uint32_t>(gpu.moving_instances().begin(), gpu.moving_instances().end()),
             std::vector<uint32_t>{m});
 
-  frame([&] { scene::add_instance(s, box, {{8.0f, 0.0f, 0.0f}}, scene::Material{}); });
+  frame([&] { scene::add_instance(s, boxes.box, {{8.0f, 0.0f, 0.0f}}, scene::Material{}); });
   ASSERT_TRUE(gpu.laid_out_in_last_gather());
   EXPECT_TRUE(gpu.moving_instances().empty()) << "a new layout makes every instance still";
   EXPECT_FALSE(gpu.moving(instance_of(moved)));
