@@ -1,4 +1,4 @@
-// The scalar formulas of docs/LIGHTING.md that light_shading.glsl and
+// The scalar formulas of docs/ALGORITHMS.md that light_shading.glsl and
 // shadow_sampling.glsl use. This file is also compiled as C++ (systems/shadows/
 // light_formulas.cpp, GLM standing in for the GLSL built-ins), so the CPU tests check the very
 // code the GPU runs. Keep it to what both languages read the same way: float, vec*, uvec*,
@@ -43,8 +43,8 @@ float shadow_bias(float n_dot_l, float constant_bias, float slope_bias) {
 
 // The perspective light projections (light_views.h: Vulkan depth, 0 at near n, 1 at far f) store
 // d = (f - n f / z) / (f - n) for a point at view depth z (its distance along the light's axis).
-// The inverse is docs/LIGHTING.md section 4.4's zView = Py / (d - Px) for this projection, with Px = f / (f - n)
-// and Py = -n f / (f - n), which simplifies to n f / (f - d (f - n)).
+// The inverse is docs/ALGORITHMS.md section 4.4's zView = Py / (d - Px) for this projection, with
+// Px = f / (f - n) and Py = -n f / (f - n), which simplifies to n f / (f - d (f - n)).
 float perspective_view_depth(float stored_depth, float near, float far) {
   return near * far / (far - stored_depth * (far - near));
 }
@@ -132,7 +132,7 @@ uvec3 pcg3d(uvec3 v) {
 }
 
 // Three uniform numbers in (0, 1] for sample `index` at a pixel: a pattern per pixel, which
-// docs/LIGHTING.md section 4 allows. Every lighting path shades a pixel with the same numbers
+// docs/ALGORITHMS.md section 4.3 allows. Every lighting path shades a pixel with the same numbers
 // (deferred lighting has the position from the depth buffer, not the rasterizer's bits), and a
 // static view gets the same numbers every frame: no time enters.
 vec3 pixel_random(uvec2 pixel, uint index) {
@@ -141,7 +141,7 @@ vec3 pixel_random(uvec2 pixel, uint index) {
 }
 
 // Two independent standard normal numbers from two uniform ones in (0, 1] (Box-Muller, for the
-// random rotations of docs/LIGHTING.md section 4.3): sqrt(-2 ln u1) * (cos(2 pi u2), sin(2 pi u2)).
+// random rotations of docs/ALGORITHMS.md section 4.3): sqrt(-2 ln u1) * (cos(2 pi u2), sin(2 pi u2)).
 vec2 gaussian_pair(vec2 u) {
   float radius = sqrt(-2.0f * log(u.x));
   float angle = 6.28318531f * u.y;

@@ -1,4 +1,4 @@
-// Every light's contribution at a surface point (docs/LIGHTING.md section 2), each with
+// Every light's contribution at a surface point (docs/ALGORITHMS.md section 2), each with
 // its own shadow algorithm (shadow_sampling.glsl). The ambient term is not part of the sum: add
 // it once per surface point, as blinn_light expects.
 #ifndef SG_LIGHT_SHADING_GLSL

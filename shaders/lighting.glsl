@@ -1,4 +1,4 @@
-// The lighting model of docs/LIGHTING.md section 2: extended Blinn with shadow density and
+// The lighting model of docs/ALGORITHMS.md section 2: extended Blinn with shadow density and
 // shadow color. `shade` is the light's shadow factor (1 = fully shadowed).
 #ifndef SG_LIGHTING_GLSL
 #define SG_LIGHTING_GLSL

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Forward lighting: ambient plus every light of the frame at every pixel, each with its own
-// shadow algorithm (docs/LIGHTING.md sections 2 and 4), into the linear HDR sum that tone mapping
+// shadow algorithm (docs/ALGORITHMS.md sections 2 and 4), into the linear HDR sum that tone mapping
 // turns into the picture.
 #include "light_shading.glsl"
 #include "material.glsl"

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // variant cut_out SHADOW_CUT_OUT
 // Point-light cube faces store distance / far instead of the projection's depth, so that
-// receivers compare length(fragWorld - P) / far in any direction (docs/LIGHTING.md section 3).
+// receivers compare length(fragWorld - P) / far in any direction (docs/ALGORITHMS.md section 3).
 // Clear the faces to 1 (nothing within range) and depth-test LESS. Distances beyond far (the
 // face corners reach past it) store 1, which reads as "nothing within range" too. The light's
 // position and far plane come from the vertex stage (shadow_map.vert, shadow_cube_layered.vert,

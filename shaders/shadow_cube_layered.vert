@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // variant cut_out SHADOW_CUT_OUT
-// All six faces of one point light's cube in one draw (the single-pass option of docs/LIGHTING.md
+// All six faces of one point light's cube in one draw (the single-pass option of docs/ALGORITHMS.md
 // section 3), with shadow_cube.frag, in the per-light baseline. Draw the casters as for one face
 // but with instanceCount x 6 (firstInstance unchanged): copy k of a draw renders caster
 // gl_BaseInstance + k / 6 of the view's list (shadow_casters.glsl) into face k % 6. The faces

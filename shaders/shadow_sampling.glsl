@@ -1,4 +1,4 @@
-// The five per-light shadow algorithms of docs/LIGHTING.md section 4, on 2D maps (spot,
+// The five per-light shadow algorithms of docs/ALGORITHMS.md section 4, on 2D maps (spot,
 // directional and cylinder lights: a square tile of one shadow_atlas layer) and on point
 // lights' cube maps (six tiles of one layer, one per face). Entry point: light_shadow_as(). Every function returns the shadow factor
 // `shade` in [0, 1], 1 = fully shadowed; a point outside the map or beyond its far plane is lit.

@@ -1,4 +1,4 @@
-// Exposure and tone mapping of the lit sum (docs/LIGHTING.md's linear color) into displayable
+// Exposure and tone mapping of the lit sum (docs/ALGORITHMS.md section 5) into displayable
 // [0, 1]. Also compiled as C++ (systems/tone_map.cpp) for tests: keep to what both languages
 // read alike.
 #ifndef SG_TONE_MAP_GLSL

@@ -1,5 +1,5 @@
 #pragma once
-// Light components (docs/LIGHTING.md section 1). A light entity also carries
+// Light components (docs/ALGORITHMS.md section 1). A light entity also carries
 // LocalTransform/WorldTransform and a ShadowSettings; its position is the world matrix's
 // translation and it shines down its local -Z axis (the glTF KHR_lights_punctual convention,
 // used for built-in lights too). Colors are linear RGB; intensity multiplies the color.
@@ -11,7 +11,7 @@
 
 namespace sg::scene {
 
-// Distance falloff (docs/LIGHTING.md section 2). Built-in scenes use the linear window,
+// Distance falloff (docs/ALGORITHMS.md section 2.2). Built-in scenes use the linear window,
 // imported glTF lights the extension's own windowed inverse square.
 enum class FalloffMode : std::uint8_t {
   linear_window,  // A = max(1 - d/R, 0)
@@ -39,7 +39,7 @@ struct DirectionalLight {
   float intensity = 1.0f;
 };
 
-// docs/LIGHTING.md's "target direct" light: a beam along -Z, full strength within inner_radius
+// docs/ALGORITHMS.md's "target direct" light: a beam along -Z, full strength within inner_radius
 // of its axis, fading linearly to zero at outer_radius, nothing behind the light.
 struct CylinderLight {
   glm::vec3 color{1.0f};

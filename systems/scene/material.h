@@ -1,5 +1,5 @@
 #pragma once
-// Surface parameters of the extended Blinn model (docs/LIGHTING.md section 2). Each mesh
+// Surface parameters of the extended Blinn model (docs/ALGORITHMS.md section 2). Each mesh
 // instance entity carries its own copy, so the renderer reads it beside the instance.
 #include <cstdint>
 #include <limits>
@@ -16,7 +16,7 @@ inline constexpr std::uint32_t no_texture = std::numeric_limits<std::uint32_t>::
 enum class AlphaMode : std::uint8_t { opaque, mask, blend };
 
 struct Material {
-  glm::vec4 base_color{0.5f, 0.5f, 0.5f, 1.0f};   // linear RGBA; docs/LIGHTING.md's default grey
+  glm::vec4 base_color{0.5f, 0.5f, 0.5f, 1.0f};   // linear RGBA; docs/ALGORITHMS.md's default grey
   std::uint32_t base_color_texture = no_texture;  // index into TextureLibrary; multiplies base_color
   float specular = 0.25f;                         // kS, as the foundation's built-in scene
   float shininess = 32.0f;                        // Blinn exponent s

@@ -30,7 +30,7 @@ vk::GraphicsPipelineDesc shadow_pipeline_desc(VkPipelineLayout layout) {
   vk::GraphicsPipelineDesc desc;
   scene_vertex_input(desc, VertexInput::position);
   desc.depth_format = vk::to_vk(ShadowAtlas::depth_format);
-  // Receivers apply each light's own bias (docs/LIGHTING.md section 4), so casters are drawn as
+  // Receivers apply each light's own bias (docs/ALGORITHMS.md section 4.6), so casters are drawn as
   // they are, both faces: thin and open meshes cast too.
   desc.cull_mode = VK_CULL_MODE_NONE;
   desc.layout = layout;

@@ -2,7 +2,7 @@
 // The shaders' lighting and shadow formulas on the CPU: these are the functions of
 // shaders/light_formulas.glsl, compiled as C++ from that very file (light_formulas.cpp), so
 // tests and CPU references evaluate exactly what the GPU does. The GLSL file documents each
-// formula and its source in docs/LIGHTING.md.
+// formula and its source in docs/ALGORITHMS.md.
 #include <cstdint>
 
 #include <glm/glm.hpp>

@@ -53,7 +53,7 @@ LightView cylinder_light_view(glm::vec3 position, glm::vec3 direction, float out
 
 // The six faces of a point light's cube map, in Vulkan's face order +X, -X, +Y, -Y, +Z, -Z:
 // face f of cube c is layer 6c + f of the cube array. Each face is lookAt(P, P + axis, up)
-// with docs/LIGHTING.md section 3's up vectors, 90 degrees, aspect 1, near shadow_near_plane(range),
+// with docs/ALGORITHMS.md section 3.3's up vectors, 90 degrees, aspect 1, near shadow_near_plane(range),
 // far = range. Unlike every other engine projection these keep NDC y pointing up (no flip):
 // that is what makes the rendered face images line up with Vulkan's cube-map addressing, so that
 // sampling with direction fragWorld - P reads the texel rendered in that direction (proved in

@@ -1,4 +1,4 @@
-// shaders/light_formulas.glsl, compiled as C++, against docs/LIGHTING.md's formulas and against
+// shaders/light_formulas.glsl, compiled as C++, against docs/ALGORITHMS.md's formulas and against
 // the light views' actual projections.
 #include <cmath>
 
@@ -76,7 +76,7 @@ TEST(LightFormulas, PerspectiveDepthRoundTripsThroughTheSpotProjection) {
     EXPECT_NEAR(perspective_stored_depth_slope(z, n, f), (stored_at(z + h) - stored_at(z - h)) / (2.0f * h),
                 1e-2f * perspective_stored_depth_slope(z, n, f))
         << "view depth " << z;
-    // docs/LIGHTING.md 4.4's form for this projection: zView = Py / (d - Px).
+    // docs/ALGORITHMS.md 4.4's form for this projection: zView = Py / (d - Px).
     const float px = f / (f - n), py = -n * f / (f - n);
     EXPECT_NEAR(py / (stored - px), z, 1e-4f * z);
   }
