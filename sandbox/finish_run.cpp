@@ -2,19 +2,20 @@
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/readback.h"
-#include "sandbox/gpu_time_log.h"
-#include "sandbox/png.h"
 #include "sandbox/run.h"
 #include "sandbox/run_stats.h"
 #include "sandbox/sandbox_frame.h"
-#include "sandbox/scene_setup.h"
 #include "sandbox/shadow_map_dump.h"
+#include "systems/frame/gpu_time_log.h"
+#include "systems/frame/png.h"
+#include "systems/frame/scene_view.h"
 #include "systems/scene/scene_queries.h"
 
 namespace sg::sandbox {
 
-int finish_run(const Options& options, vk::VulkanContext& context, const SandboxScene& scene,
-               SandboxFrame& frame, const RunRecord& record) {
+int finish_run(const Options& options, vk::VulkanContext& context, const SceneView& scene,
+               SandboxFrame& sandbox_frame, const RunRecord& record) {
+  Frame& frame = sandbox_frame.frame();
   const bool rendered = !record.cpu_frame_ms.empty();
   if (!options.screenshot.empty() && !rendered) {
     std::printf("shadowgraph: no frame was rendered, so no screenshot was written\n");
@@ -35,13 +36,13 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
   stats.scene_name = scene.scene.name;
   stats.scene = scene::scene_stats(scene.scene);
   stats.cpu_frame_ms = summarize(record.cpu_frame_ms);
-  const SandboxFrame::PhaseTimes& phases = frame.phase_ms();
+  const Frame::PhaseTimes& phases = frame.phase_ms();
   stats.cpu_phases_ms = {summarize(phases.update),  summarize(phases.gather),   summarize(phases.prepare),
                          summarize(phases.declare), summarize(phases.execute),  summarize(phases.instances),
                          summarize(phases.lights),  summarize(phases.schedule), summarize(phases.upload),
                          summarize(phases.views)};
   stats.wall_frame_ms = summarize(record.wall_frame_ms);
-  stats.lighting = lighting_path_name(frame.renderer().lighting());
+  stats.lighting = to_string(frame.renderer().lighting());
   if (record.gpu_times) {
     stats.gpu_frame_ms = summarize(record.gpu_times->frame_ms());
     stats.passes = record.gpu_times->pass_summaries();
@@ -57,21 +58,19 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
                 static_cast<unsigned long long>(stats.dropped_light_pairs));
   }
   const std::optional<shadows::ShadowRaster> raster = renderer.shadow_raster();
-  stats.shadows = {
-      renderer.shadow_views() == shadows::ShadowViewPath::batched ? "batched" : "per-light",
-      raster ? std::optional<std::string>(raster == shadows::ShadowRaster::compute ? "compute" : "hardware")
-             : std::nullopt,
-      atlas.shape().budget_bytes,
-      atlas.shape().page_size,
-      atlas.pages(),
-      schedule.texels_used * atlas.texel_bytes(),
-      schedule.lights_per_resolution,
-      schedule.lights_without_shadow,
-      schedule.lights_waiting,
-      summarize(frame.shadow_views_rendered()),
-      summarize(frame.shadow_views_cached()),
-      summarize(frame.shadow_views_moving_only()),
-      renderer.shadow_caster_draws()};
+  stats.shadows = {std::string(to_string(renderer.shadow_views())),
+                   raster ? std::optional<std::string>(to_string(*raster)) : std::nullopt,
+                   atlas.shape().budget_bytes,
+                   atlas.shape().page_size,
+                   atlas.pages(),
+                   schedule.texels_used * atlas.texel_bytes(),
+                   schedule.lights_per_resolution,
+                   schedule.lights_without_shadow,
+                   schedule.lights_waiting,
+                   summarize(frame.shadow_views_rendered()),
+                   summarize(frame.shadow_views_cached()),
+                   summarize(frame.shadow_views_moving_only()),
+                   renderer.shadow_caster_draws()};
 
   if (stats.cpu_frame_ms) {
     std::printf("shadowgraph: %llu frames, CPU frame time median %.2f ms (min %.2f, max %.2f)\n",
@@ -136,6 +135,9 @@ int finish_run(const Options& options, vk::VulkanContext& context, const Sandbox
   std::printf("shadowgraph: GPU memory %.1f MiB used in %u blocks (%.1f MiB reserved)\n",
               double(memory.used_bytes) / (1 << 20), memory.block_count,
               double(memory.reserved_bytes) / (1 << 20));
+  for (const Setting<Options>& setting : options_table()) {
+    stats.settings.push_back({std::string(setting.info.name), setting.info.type, setting.get(options)});
+  }
   if (!options.stats_path.empty()) {
     write_stats_json(options.stats_path, stats);
     std::printf("shadowgraph: wrote %s\n", options.stats_path.c_str());

@@ -10,13 +10,12 @@
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
-#include "sandbox/gpu_time_log.h"
-#include "sandbox/headless_frames.h"
-#include "sandbox/png.h"
 #include "sandbox/run.h"
 #include "sandbox/sandbox_frame.h"
-#include "sandbox/scene_setup.h"
 #include "sandbox/script.h"
+#include "systems/frame/gpu_time_log.h"
+#include "systems/frame/png.h"
+#include "systems/frame/scene_view.h"
 #include "systems/scene/scene.h"
 #include "systems/scene/shadow_settings.h"
 
@@ -36,7 +35,7 @@ ecs::Entity light_named(const ecs::World& world, const std::string& name, const 
 }
 
 // Runs `steps` (script.h) on `frame`, rendering where they wait.
-RunRecord run_script(const Options& options, vk::VulkanContext& context, SandboxScene& scene,
+RunRecord run_script(const Options& options, vk::VulkanContext& context, SceneView& scene,
                      SandboxFrame& frame, vk::FrameRing& frames, GpuTimeLog& gpu_times) {
   const std::vector<ScriptStep> steps = load_script(options.script);
   ecs::World& world = scene.scene.world;
@@ -64,20 +63,16 @@ RunRecord run_script(const Options& options, vk::VulkanContext& context, Sandbox
           } else if constexpr (std::is_same_v<Command, ScriptStep::Camera>) {
             scene.pose = command.pose;
           } else if constexpr (std::is_same_v<Command, ScriptStep::Wait>) {
-            RunRecord part =
-                render_headless_frames(frame, frames, command.frames, gpu_times, false, rendered);
+            record.append(
+                render_headless_frames(frame.frame(), frames, command.frames, gpu_times, false, rendered));
             rendered += command.frames;
-            record.cpu_frame_ms.insert(record.cpu_frame_ms.end(), part.cpu_frame_ms.begin(),
-                                       part.cpu_frame_ms.end());
-            record.wall_frame_ms.insert(record.wall_frame_ms.end(), part.wall_frame_ms.begin(),
-                                        part.wall_frame_ms.end());
           } else if constexpr (std::is_same_v<Command, ScriptStep::View>) {
             frame.set_view(command.view);
           } else if constexpr (std::is_same_v<Command, ScriptStep::Save>) {
             frame.save_edits();
           } else if constexpr (std::is_same_v<Command, ScriptStep::Screenshot>) {
             if (rendered == 0) throw std::runtime_error(where + ": nothing rendered yet (wait N first)");
-            write_png(command.path, vk::read_rgba8(context, frame.image()));
+            write_png(command.path, vk::read_rgba8(context, frame.frame().image()));
             std::printf("shadowgraph: wrote %s\n", command.path.c_str());
           }
         },
@@ -89,18 +84,19 @@ RunRecord run_script(const Options& options, vk::VulkanContext& context, Sandbox
 }  // namespace
 
 int run_headless(const Options& options) {
-  SandboxScene scene = load_sandbox_scene(options, float(options.width) / float(options.height));
-  vk::VulkanContext context(context_options(options));
+  const FrameSettings& settings = options.frame;
+  SceneView scene = load_scene_view(settings, float(settings.width) / float(settings.height));
+  vk::VulkanContext context(context_options(settings));
   std::printf("shadowgraph: headless on %s, %ux%u, scene %s, camera from %s\n", context.device_name().c_str(),
-              options.width, options.height, scene.scene.name.c_str(), scene.camera_source.c_str());
+              settings.width, settings.height, scene.scene.name.c_str(), scene.camera_source.c_str());
 
   vk::FrameRing frames(context);
   SandboxFrame frame(context, scene, options, frames.frames_in_flight());
-  frame.resize({options.width, options.height});
+  frame.frame().resize({settings.width, settings.height});
   GpuTimeLog gpu_times;
   const RunRecord record =
       options.script.empty()
-          ? render_headless_frames(frame, frames, options.frames.value_or(3), gpu_times, true)
+          ? render_headless_frames(frame.frame(), frames, options.frames.value_or(3), gpu_times, true)
           : run_script(options, context, scene, frame, frames, gpu_times);
   return finish_run(options, context, scene, frame, record);
 }

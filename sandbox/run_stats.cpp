@@ -19,6 +19,18 @@ Json summary_json(const std::optional<TimeSummary>& summary) {
   return {{"median", summary->median}, {"min", summary->min}, {"max", summary->max}};
 }
 
+Json setting_json(const RunStats::EchoedSetting& setting) {
+  if (!setting.value) return nullptr;
+  switch (setting.type) {
+    case SettingType::flag: return *setting.value == "true";
+    case SettingType::whole: return std::stoull(*setting.value);
+    case SettingType::number: return std::stod(*setting.value);
+    case SettingType::choice:
+    case SettingType::text: return *setting.value;
+  }
+  return *setting.value;
+}
+
 Json stats_json(const RunStats& stats) {
   const scene::SceneStats& scene = stats.scene;
   Json passes = Json::array();
@@ -30,6 +42,9 @@ Json stats_json(const RunStats& stats) {
   for (const auto& [resolution, lights] : shadows.lights_per_resolution) {
     per_resolution[std::to_string(resolution)] = lights;
   }
+  Json settings = Json::object();
+  for (const RunStats::EchoedSetting& setting : stats.settings)
+    settings[setting.name] = setting_json(setting);
   return {{"device", stats.device},
           {"resolution", {{"width", stats.width}, {"height", stats.height}}},
           {"frames", stats.frames},
@@ -76,19 +91,11 @@ Json stats_json(const RunStats& stats) {
             {"views_rendered", summary_json(shadows.views_rendered)},
             {"views_cached", summary_json(shadows.views_cached)},
             {"views_moving_only", summary_json(shadows.views_moving_only)},
-            {"caster_draws", shadows.caster_draws}}}};
+            {"caster_draws", shadows.caster_draws}}},
+          {"settings", settings}};
 }
 
 }  // namespace
-
-std::optional<TimeSummary> summarize(std::span<const double> samples) {
-  if (samples.empty()) return std::nullopt;
-  std::vector<double> sorted(samples.begin(), samples.end());
-  std::sort(sorted.begin(), sorted.end());
-  const std::size_t middle = sorted.size() / 2;
-  const double median = sorted.size() % 2 == 1 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2.0;
-  return TimeSummary{median, sorted.front(), sorted.back()};
-}
 
 void write_stats_json(const std::string& path, const RunStats& stats) {
   const std::string text = stats_json(stats).dump(2) + "\n";

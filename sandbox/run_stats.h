@@ -44,7 +44,11 @@
 //     "views_moving_only": {"median": ..., "min": ..., "max": ...},  // of views_rendered: moving
 //                                                  // casters drawn alone over static layers
 //     "caster_draws": 0                          // caster instances drawn into views, a late frame
-//   }
+//   },
+//   "settings": {"width": 1280, "lighting": "auto", "camera": null, "headless": true, ...}
+//                                                // every option of the run by name (the
+//                                                // settings tables): numbers, true/false for
+//                                                // flags, text for the rest; null when unset
 // }
 #include <cstdint>
 #include <optional>
@@ -52,24 +56,11 @@
 #include <string>
 #include <vector>
 
+#include "systems/frame/setting.h"
+#include "systems/frame/time_summary.h"
 #include "systems/scene/scene_queries.h"
 
 namespace sg::sandbox {
-
-struct TimeSummary {
-  double median = 0.0;  // the mean of the two middle samples when their count is even
-  double min = 0.0;
-  double max = 0.0;
-};
-
-// std::nullopt for no samples: there is nothing to summarize, and zeros would read as a
-// measurement.
-std::optional<TimeSummary> summarize(std::span<const double> samples);
-
-struct PassTime {
-  std::string name;
-  TimeSummary gpu_ms;
-};
 
 struct RunStats {
   std::string device;
@@ -92,6 +83,13 @@ struct RunStats {
   std::optional<std::uint32_t> validation_errors;
   std::uint64_t shadow_map_bytes = 0;
   std::uint64_t dropped_light_pairs = 0;
+  // Every setting's value as the command line writes it (Setting::get), in the table's order.
+  struct EchoedSetting {
+    std::string name;
+    SettingType type = SettingType::text;
+    std::optional<std::string> value;
+  };
+  std::vector<EchoedSetting> settings;
 
   struct Shadows {
     std::string views;

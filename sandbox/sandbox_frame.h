@@ -1,143 +1,55 @@
 #pragma once
-// The sandbox's frame. record() runs the frame's five phases, in this order and nowhere else:
-//
-//   1. update   systems that write the world: the panels' edits (--ui), animation, then world
-//               transforms
-//   2. gather   read-only systems over a const World: drawables and lights into CPU lists
-//   3. prepare  shadow storage, caster culling, this frame slot's GPU buffers and descriptors
-//   4. declare  the frame graph: shadow passes, lighting (SceneRenderer) -> [depth overlay,
-//               --depth-overlay] -> [ui, --ui] -> [present, in a window]
-//   5. execute  compile (plans come from a PlanCache: shapes repeat) and record the commands
-//
-// The picture lands in the persistent "frame" image (imported into each graph, left in
-// TRANSFER_SRC), which screenshots read and the present pass blits to the swapchain image.
+// The sandbox's frame: the engine's (systems/frame/frame.h) with the sandbox's additions, through
+// its FrameExtension: the panels (--ui; their edits in the update phase), the depth overlay
+// (--depth-overlay, the render graph's extension example), the light heat map (--light-heatmap
+// or the panels' switch) and the panels' pass over the picture.
 #include <cstdint>
 #include <memory>
 #include <optional>
 
-#include <vulkan/vulkan.h>
-
-#include "rendergraph/core/plan_cache.h"
-#include "rendergraph/core/render_graph.h"
-#include "rendergraph/device/frame_ring.h"
-#include "rendergraph/device/resources.h"
-#include "rendergraph/vulkan/graph_executor.h"
-#include "rendergraph/vulkan/graph_imports.h"
-#include "sandbox/depth_capture.h"
 #include "sandbox/depth_overlay_pass.h"
 #include "sandbox/light_heatmap_pass.h"
 #include "sandbox/options.h"
-#include "sandbox/scene_setup.h"
 #include "sandbox/ui.h"
 #include "sandbox/ui_pass.h"
-#include "systems/renderer/scene_renderer.h"
+#include "systems/frame/frame.h"
+
+struct GLFWwindow;
 
 namespace sg::sandbox {
-
-// A swapchain image to present this frame on. The submission must wait for its acquire
-// semaphore at `acquire_wait_stage`.
-struct PresentTarget {
-  VkImage image = VK_NULL_HANDLE;
-  VkFormat format = VK_FORMAT_UNDEFINED;
-  VkExtent2D extent{};
-};
-inline constexpr VkPipelineStageFlags2 acquire_wait_stage = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-
-// The frame image's format: what screenshots read and the present pass blits.
-inline constexpr rg::Format frame_format = rg::Format::rgba8_srgb;
-
-// What the command line asks of the renderer (--algorithm, --shadows, --cube-shadows,
-// --lighting, --exposure).
-RendererSettings renderer_settings(const Options& options);
 
 class SandboxFrame {
  public:
   // `window`: the panels read their input from it (nullptr: headless, panels without input).
-  SandboxFrame(vk::VulkanContext& context, SandboxScene& scene, const Options& options,
-               uint32_t frames_in_flight, GLFWwindow* window = nullptr);
+  SandboxFrame(vk::VulkanContext& context, SceneView& view, const Options& options, uint32_t frames_in_flight,
+               GLFWwindow* window = nullptr);
   ~SandboxFrame();
 
-  // (Re)creates the frame image. The GPU must not be using the old one (wait idle first).
-  void resize(VkExtent2D extent);
-
-  // ring.begin_frame(), waking the worker threads of record()'s batches shortly before the wait
-  // for the GPU ends: asleep since the last frame, they took longer to wake than the frame's
-  // first batches take to run.
-  vk::FrameSlot& begin(vk::FrameRing& ring);
-  // Runs the frame's phases for the scene at `time_seconds` and records the commands into
-  // `frame.cmd`.
-  void record(const vk::FrameSlot& frame, double time_seconds,
-              const std::optional<PresentTarget>& present = std::nullopt);
-
-  const vk::Image& image() const { return image_; }
-  const SceneRenderer& renderer() const { return renderer_; }
-  const rg::RenderGraph& graph() const { return graph_; }
-  const std::shared_ptr<const rg::CompiledPlan>& plan() const { return plan_; }
-  vk::GraphExecutor& executor() { return executor_; }
-  const vk::GraphExecutor& executor() const { return executor_; }
+  Frame& frame() { return frame_; }
+  const Frame& frame() const { return frame_; }
   // Whether the panels take the mouse or keyboard this frame (false without panels).
   bool ui_wants_input() const;
   // Lit picture or shadow-only view, from the next record() on (the panels' "view" follows).
   void set_view(LightingView view);
-  // The shadow raster from the next record() on (SceneRenderer::set_shadow_raster).
-  void set_shadow_raster(shadows::ShadowRaster raster) { renderer_.set_shadow_raster(raster); }
   // Writes the lights and camera beside the scene (scene_sidecar.h), as the panels' save does.
   void save_edits() const;
   // The panels (nullptr without --ui).
   SandboxUi* ui() { return ui_.get(); }
-  // From the next record() on, each frame also copies the camera's depth buffer into an image
-  // kept after the frame (depth_capture.h), which read_captured_depth returns once the frame's
-  // commands have completed.
-  void capture_depth() { depth_capture_.emplace(); }
-  vk::DepthImage read_captured_depth() const;
-
-  // Per recorded frame: CPU milliseconds of each phase of record(), and of the renderer's steps
-  // within gather and prepare (SceneRenderer::CpuSteps).
-  struct PhaseTimes {
-    std::vector<double> update, gather, prepare, declare, execute;
-    std::vector<double> instances, lights, schedule, upload, views;
-  };
-  const PhaseTimes& phase_ms() const { return phase_ms_; }
-  // Per recorded frame: shadow views (2D maps, cube faces) drawn, and kept from earlier frames.
-  const std::vector<double>& shadow_views_rendered() const { return shadow_views_rendered_; }
-  const std::vector<double>& shadow_views_cached() const { return shadow_views_cached_; }
-  const std::vector<double>& shadow_views_moving_only() const { return shadow_views_moving_only_; }
-  // With the GPU idle: the (tile, light) pairs the frames recorded so far left out of full light
-  // lists (SceneRenderer::dropped_light_pairs), counted from zero again after.
-  uint64_t take_dropped_light_pairs();
 
  private:
+  FrameExtension extension();
   UiFacts ui_facts() const;
-  // Advances the animation clock by `seconds` while animation plays, then runs the systems.
-  void update(double seconds);
-  void declare_passes(uint32_t slot, const std::optional<PresentTarget>& present);
-  void execute(const vk::FrameSlot& frame);
 
   vk::VulkanContext& context_;
-  SandboxScene& scene_;
+  SceneView& view_;
+  std::string scene_name_;  // --scene: where the sidecar of saved edits goes
   bool depth_overlay_enabled_;
-  bool animate_;                    // --animate; the panels' "play" decides when they exist
-  double animation_seconds_ = 0.0;  // advances only while animation plays
-  std::string scene_name_;          // --scene: where the sidecar of saved edits goes
-  double last_time_seconds_ = 0.0;
-  SceneRenderer renderer_;
   DepthOverlayPass depth_overlay_;
   std::optional<LightHeatmapPass> light_heatmap_;  // with --light-heatmap or the panels
   std::unique_ptr<SandboxUi> ui_;                  // with --ui
   std::unique_ptr<UiPass> ui_pass_;
-  std::optional<DepthCapture> depth_capture_;  // after capture_depth()
-  vk::GraphExecutor executor_;
-  rg::PlanCache plans_;
-  vk::GraphImports imports_;
-  vk::Image image_;
-  ecs::Tick transforms_updated_ = 0;
-  rg::RenderGraph graph_;
-  std::shared_ptr<const rg::CompiledPlan> plan_;
-  PhaseTimes phase_ms_;
-  std::vector<double> shadow_views_rendered_;
-  std::vector<double> shadow_views_cached_;
-  std::vector<double> shadow_views_moving_only_;
-  uint64_t dropped_light_pairs_ = 0;
+  const ImDrawData* panels_ = nullptr;  // this frame's, built in the update phase
+  Frame frame_;                         // last: its extension calls into the members above
 };
 
 }  // namespace sg::sandbox

@@ -42,7 +42,7 @@ std::vector<ScriptStep> parse_script(const std::string& text, const std::string&
       if (rest.empty()) fail(path, line, "select takes a light's name");
       step.command = ScriptStep::Select{rest};
     } else if (command == "algorithm") {
-      const std::optional<scene::ShadowAlgorithm> algorithm = scene::parse_shadow_algorithm(rest);
+      const std::optional<scene::ShadowAlgorithm> algorithm = parse_enum<scene::ShadowAlgorithm>(rest);
       if (!algorithm) fail(path, line, "unknown shadow algorithm \"" + rest + "\"");
       step.command = ScriptStep::Algorithm{*algorithm};
     } else if (command == "resolution") {

@@ -9,7 +9,7 @@
 #include <system_error>
 
 #include "rendergraph/device/readback.h"
-#include "sandbox/png.h"
+#include "systems/frame/png.h"
 #include "systems/renderer/scene_renderer.h"
 
 namespace sg::sandbox {

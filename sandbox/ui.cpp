@@ -162,8 +162,8 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
   constexpr const char* views[] = {"lit", "shadows only"};
   ImGui::Combo("view", &view_, views, IM_ARRAYSIZE(views));
   ImGui::Checkbox("lights per tile (heat map)", &light_heatmap_);
-  if (light_heatmap_ && (facts.lighting == lighting_path_name(LightingPath::fused) ||
-                         facts.lighting == lighting_path_name(LightingPath::every_light))) {
+  if (light_heatmap_ && (facts.lighting == to_string(LightingPath::fused) ||
+                         facts.lighting == to_string(LightingPath::every_light))) {
     ImGui::SameLine();
     ImGui::TextDisabled("(no light lists on this path)");
   }
@@ -358,7 +358,7 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
       int algorithm = static_cast<int>(shadow.algorithm);
       const char* names[std::size(scene::all_shadow_algorithms)];
       for (size_t a = 0; a < std::size(names); ++a)
-        names[a] = scene::to_string(scene::all_shadow_algorithms[a]).data();
+        names[a] = to_string(scene::all_shadow_algorithms[a]).data();
       if (ImGui::Combo("algorithm", &algorithm, names, int(std::size(names)))) {
         shadow.algorithm = static_cast<scene::ShadowAlgorithm>(algorithm);
         changed = true;

@@ -14,8 +14,8 @@
 #include "rendergraph/device/readback.h"
 #include "rendergraph/device/swapchain.h"
 #include "rendergraph/device/vulkan_error.h"
-#include "sandbox/png.h"
 #include "sandbox/sandbox_frame.h"
+#include "systems/frame/png.h"
 #include "systems/scene/scene_queries.h"
 
 namespace sg::sandbox {
@@ -30,9 +30,10 @@ VkExtent2D framebuffer_extent(GLFWwindow* window) {
 }  // namespace
 
 WindowSession::WindowSession(const Options& options)
-    : scene_(load_sandbox_scene(options, float(options.width) / float(options.height))) {
+    : scene_(load_scene_view(options.frame, float(options.frame.width) / float(options.frame.height))) {
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-  window_ = glfwCreateWindow(int(options.width), int(options.height), "Shadowgraph", nullptr, nullptr);
+  window_ =
+      glfwCreateWindow(int(options.frame.width), int(options.frame.height), "Shadowgraph", nullptr, nullptr);
   if (!window_) throw std::runtime_error("cannot create a GLFW window");
   // Key presses and wheel steps arrive as events; held keys and the cursor are polled (fly_input).
   glfwSetWindowUserPointer(window_, this);
@@ -46,7 +47,7 @@ WindowSession::WindowSession(const Options& options)
     static_cast<WindowSession*>(glfwGetWindowUserPointer(w))->scroll_ += float(steps);
   });
 
-  vk::ContextOptions vulkan_options = context_options(options);
+  vk::ContextOptions vulkan_options = context_options(options.frame);
   vulkan_options.presentation = true;
   uint32_t extension_count = 0;
   const char** extensions = glfwGetRequiredInstanceExtensions(&extension_count);
@@ -82,15 +83,15 @@ VkExtent2D WindowSession::swapchain_extent() const {
 bool WindowSession::fit_to_window() {
   // recreate() waits for the device to go idle, so the old frame image is free too.
   if (!swapchain_->recreate(framebuffer_extent(window_))) return false;
-  frame_->resize(swapchain_->extent());
+  frame_->frame().resize(swapchain_->extent());
   return true;
 }
 
 void WindowSession::finish() {
   frames_->wait_idle();
   for (uint32_t slot = 0; slot < frames_->frames_in_flight(); ++slot) {
-    frame_->executor().collect_timings(slot);
-    gpu_times_.add(frame_->executor().latest_timings());
+    frame_->frame().executor().collect_timings(slot);
+    gpu_times_.add(frame_->frame().executor().latest_timings());
   }
 }
 
@@ -126,7 +127,7 @@ FrameResult WindowSession::frame() {
     return ready_ ? FrameResult::swapchain_recreated : FrameResult::minimized;
   }
 
-  vk::FrameSlot& frame = frame_->begin(*frames_);
+  vk::FrameSlot& frame = frame_->frame().begin(*frames_);
   const std::optional<uint32_t> image = swapchain_->acquire(frame.image_acquired);
   if (!image) {
     ready_ = false;
@@ -144,8 +145,9 @@ FrameResult WindowSession::frame() {
   fly(fly_camera_, scene_.pose, input, static_cast<float>(now - last_frame_seconds_), bounds,
       scene_.lens.yfov);
   last_frame_seconds_ = now;
-  frame_->record(frame, now - start_seconds_,
-                 PresentTarget{swapchain_->image(*image), swapchain_->format(), swapchain_->extent()});
+  frame_->frame().record(
+      frame, now - start_seconds_,
+      PresentTarget{swapchain_->image(*image), swapchain_->format(), swapchain_->extent()});
   const vk::SemaphoreWait wait{frame.image_acquired, acquire_wait_stage};
   const VkSemaphore signal = swapchain_->render_finished(*image);
   frames_->submit({&wait, 1}, {&signal, 1});
@@ -157,11 +159,11 @@ FrameResult WindowSession::frame() {
     wall_frame_ms_.push_back(std::chrono::duration<double, std::milli>(presented - *last_present_).count());
   }
   last_present_ = presented;
-  gpu_times_.add(frame_->executor().latest_timings());
+  gpu_times_.add(frame_->frame().executor().latest_timings());
   if (std::exchange(screenshot_, false)) {
     frames_->wait_idle();
     const std::string path = "shadowgraph-" + std::to_string(++screenshots_) + ".png";
-    write_png(path, vk::read_rgba8(*context_, frame_->image()));
+    write_png(path, vk::read_rgba8(*context_, frame_->frame().image()));
     std::printf("shadowgraph: wrote %s\n", path.c_str());
   }
   return FrameResult::rendered;

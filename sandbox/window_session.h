@@ -11,9 +11,9 @@
 
 #include "rendergraph/device/fwd.h"
 #include "sandbox/fly_camera.h"
-#include "sandbox/gpu_time_log.h"
 #include "sandbox/options.h"
-#include "sandbox/scene_setup.h"
+#include "systems/frame/gpu_time_log.h"
+#include "systems/frame/scene_view.h"
 
 struct GLFWwindow;
 
@@ -38,7 +38,7 @@ class WindowSession {
 
   GLFWwindow* window() const { return window_; }
   vk::VulkanContext& context() { return *context_; }
-  SandboxScene& scene() { return scene_; }
+  SceneView& scene() { return scene_; }
   const SandboxFrame& sandbox_frame() const { return *frame_; }
   SandboxFrame& sandbox_frame() { return *frame_; }
   VkExtent2D swapchain_extent() const;
@@ -52,7 +52,7 @@ class WindowSession {
   FlyInput fly_input();
 
   GLFWwindow* window_ = nullptr;
-  SandboxScene scene_;
+  SceneView scene_;
   std::unique_ptr<vk::VulkanContext> context_;
   std::unique_ptr<vk::Swapchain> swapchain_;
   std::unique_ptr<vk::FrameRing> frames_;

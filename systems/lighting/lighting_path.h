@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
-#include <string_view>
+
+#include "systems/scene/enum_names.h"
 
 namespace sg {
 
@@ -15,6 +16,12 @@ namespace sg {
 // - automatic: on GPUs deferred; on CPU devices each frame cpu_lighting_for's choice
 //   (SceneRenderer::lighting says which).
 enum class LightingPath { automatic, deferred, every_light, fused };
+constexpr EnumNames<LightingPath, 4> enum_names(LightingPath) {
+  return {{{LightingPath::automatic, "auto"},
+           {LightingPath::deferred, "deferred"},
+           {LightingPath::every_light, "every light"},
+           {LightingPath::fused, "fused"}}};
+}
 
 // automatic's choice on a CPU device for a frame of `lights` lights: fused while its cost, every
 // light at every pixel, stays below deferred's, whose passes cost more but a pixel only its
@@ -33,19 +40,15 @@ constexpr LightingPath cpu_lighting_for(uint32_t lights) {
 // images lane by lane (1280x720: +2.6 ms against 6.5).
 // automatic: the G-buffer on CPU devices, the pass on GPUs.
 enum class LitSumStart { automatic, pass, gbuffer };
+constexpr EnumNames<LitSumStart, 3> enum_names(LitSumStart) {
+  return {{{LitSumStart::automatic, "auto"}, {LitSumStart::pass, "pass"}, {LitSumStart::gbuffer, "gbuffer"}}};
+}
 
 // What the lighting writes: the lit picture, or the shadow-only debug view (white diffuse surfaces
 // under white lights of the same intensities, shadows at full density, no ambient).
 enum class LightingView : uint32_t { lit = 0, shadows = 1 };
-
-constexpr std::string_view lighting_path_name(LightingPath path) {
-  switch (path) {
-    case LightingPath::automatic: return "auto";
-    case LightingPath::deferred: return "deferred";
-    case LightingPath::every_light: return "every light";
-    case LightingPath::fused: return "fused";
-  }
-  return "unknown";
+constexpr EnumNames<LightingView, 2> enum_names(LightingView) {
+  return {{{LightingView::lit, "lit"}, {LightingView::shadows, "shadows"}}};
 }
 
 }  // namespace sg

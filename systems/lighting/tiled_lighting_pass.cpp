@@ -35,10 +35,8 @@ struct LightingConstants {
 std::string group_name(uint32_t group) {
   switch (shadows::group_shadow_kind(group)) {
     case shadows::ShadowKind::none: return "unshadowed";
-    case shadows::ShadowKind::map:
-      return "2d " + std::string(scene::to_string(shadows::group_algorithm(group)));
-    case shadows::ShadowKind::cube:
-      return "cube " + std::string(scene::to_string(shadows::group_algorithm(group)));
+    case shadows::ShadowKind::map: return "2d " + std::string(to_string(shadows::group_algorithm(group)));
+    case shadows::ShadowKind::cube: return "cube " + std::string(to_string(shadows::group_algorithm(group)));
   }
   return "group " + std::to_string(group);
 }

@@ -60,7 +60,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       workers_(settings.cpu_threads == 0 ? ecs::ThreadPool::default_workers() : settings.cpu_threads - 1),
       gpu_scene_(context, scene.meshes, frames_in_flight),
       textures_(context, scene.textures),
-      atlas_(context, settings.shadow_memory_bytes, keeps_static_layers(context, settings)),
+      atlas_(context, uint64_t{settings.shadow_memory_mib} << 20, keeps_static_layers(context, settings)),
       schedule_({atlas_.shape().page_size, atlas_.shape().max_pages, shadows::min_shadow_resolution},
                 atlas_.static_layers() != nullptr, settings.shadow_resolution),
       tone_map_(context, frame_format),

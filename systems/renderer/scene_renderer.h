@@ -27,44 +27,19 @@
 #include "systems/lighting/fused_forward_pass.h"
 #include "systems/lighting/gbuffer_pass.h"
 #include "systems/lighting/light_tiles_pass.h"
-#include "systems/lighting/lighting_path.h"
 #include "systems/lighting/tiled_lighting_pass.h"
 #include "systems/lighting/tone_map_pass.h"
 #include "systems/lighting/transparent_pass.h"
+#include "systems/renderer/renderer_settings.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
 #include "systems/shadow_maps/shadow_atlas.h"
 #include "systems/shadow_maps/shadow_passes.h"
 #include "systems/shadow_maps/shadow_view_batch.h"
-#include "systems/shadows/cube_shadow_mode.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_schedule.h"
-#include "systems/shadows/shadow_view_path.h"
 
 namespace sg {
-
-struct RendererSettings {
-  shadows::LightOverrides lights;
-  shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
-  LightingPath lighting = LightingPath::automatic;
-  LitSumStart lit_sum_start = LitSumStart::automatic;  // the deferred path's
-  bool cull_casters = true;  // off: every shadow view draws every caster (the naive baseline)
-  // Batched falls back to per-light where the device cannot draw views into atlas layers at once.
-  shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;
-  shadows::ShadowRaster shadow_raster = shadows::ShadowRaster::automatic;  // the batched path's
-  shadows::ShadowResolution shadow_resolution = shadows::ShadowResolution::screen;
-  uint64_t shadow_memory_bytes = 0;  // the atlas's budget; 0: the device's default
-  uint32_t shadow_view_budget = shadows::default_shadow_view_budget;  // views redrawn a frame; 0: all due
-  bool cache_shadows = true;  // off: every map is redrawn every frame (within the view budget)
-  // Where the compute raster may run: keep a static layer per map (ShadowViewBatch), so that maps
-  // wrong only through moving casters redraw just those.
-  bool static_shadow_layers = true;
-  float exposure = 1.0f;  // multiplies the lit sum before tone mapping
-  LightingView view = LightingView::lit;
-  // Threads that run a frame's CPU work split in pieces, the calling thread included; 0: one per
-  // hardware thread.
-  uint32_t cpu_threads = 0;
-};
 
 struct RenderedFrame {
   rg::ImageHandle color;         // the frame image's newest version: the tone-mapped picture
@@ -76,7 +51,7 @@ struct RenderedFrame {
 
 class SceneRenderer {
  public:
-  // docs/LIGHTING.md section 2's default ambient term kA * IA.
+  // docs/ALGORITHMS.md section 2.6's default ambient term kA * IA.
   static constexpr float ambient = 0.15f;
 
   // Uploads `scene`'s meshes and textures; the scene's world is read by gather() each frame.

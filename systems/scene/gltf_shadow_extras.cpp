@@ -55,7 +55,8 @@ ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::strin
     settings.resolution = static_cast<std::uint32_t>(std::lround(*resolution));
   }
   if (const auto found = extras.find("algorithm"); found != extras.end()) {
-    const auto parsed = found->is_string() ? parse_shadow_algorithm(found->get<std::string>()) : std::nullopt;
+    const auto parsed =
+        found->is_string() ? parse_enum<ShadowAlgorithm>(found->get<std::string>()) : std::nullopt;
     if (parsed) {
       settings.algorithm = *parsed;
     } else {

@@ -1,24 +1,25 @@
 #pragma once
-// Per-light shadow parameters (docs/LIGHTING.md section 4). Every light entity carries
+// Per-light shadow parameters (docs/ALGORITHMS.md section 4). Every light entity carries
 // one; imported lights take them from the glTF light's `extras` (gltf_lights.h lists the keys).
 #include <cstdint>
-#include <optional>
-#include <string_view>
 
 #include <glm/glm.hpp>
+
+#include "systems/scene/enum_names.h"
 
 namespace sg::scene {
 
 enum class ShadowAlgorithm : std::uint8_t { hard, pcf, noise, pcss, pcss_noise };
 
-inline constexpr ShadowAlgorithm all_shadow_algorithms[] = {ShadowAlgorithm::hard, ShadowAlgorithm::pcf,
-                                                            ShadowAlgorithm::noise, ShadowAlgorithm::pcss,
-                                                            ShadowAlgorithm::pcss_noise};
-
-// "hard", "pcf", "noise", "pcss", "pcss_noise": the names used by extras and command lines.
-std::string_view to_string(ShadowAlgorithm algorithm);
-// The inverse of to_string; nullopt for any other text (case-sensitive).
-std::optional<ShadowAlgorithm> parse_shadow_algorithm(std::string_view name);
+// The names extras, command lines, scripts and the sidecar use.
+constexpr EnumNames<ShadowAlgorithm, 5> enum_names(ShadowAlgorithm) {
+  return {{{ShadowAlgorithm::hard, "hard"},
+           {ShadowAlgorithm::pcf, "pcf"},
+           {ShadowAlgorithm::noise, "noise"},
+           {ShadowAlgorithm::pcss, "pcss"},
+           {ShadowAlgorithm::pcss_noise, "pcss_noise"}}};
+}
+inline constexpr auto all_shadow_algorithms = enum_values<ShadowAlgorithm>();
 
 // Biases are in normalized linear depth, so that one value means the same distance anywhere in
 // a map: view depth / far for spot maps, depth across near..far for orthographic maps

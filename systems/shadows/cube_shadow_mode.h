@@ -1,4 +1,5 @@
 #pragma once
+#include "systems/scene/enum_names.h"
 
 namespace sg::shadows {
 
@@ -6,5 +7,8 @@ namespace sg::shadows {
 // six cube faces: in one pass whose vertex shader moves each copy of a caster into its face's
 // atlas tile (layered), or in six passes, one per face.
 enum class CubeShadowMode { layered, six_passes };
+constexpr EnumNames<CubeShadowMode, 2> enum_names(CubeShadowMode) {
+  return {{{CubeShadowMode::layered, "layered"}, {CubeShadowMode::six_passes, "six"}}};
+}
 
 }  // namespace sg::shadows

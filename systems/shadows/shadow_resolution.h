@@ -1,4 +1,5 @@
 #pragma once
+#include "systems/scene/enum_names.h"
 
 namespace sg::shadows {
 
@@ -8,5 +9,8 @@ namespace sg::shadows {
 // budget demotes the lights least important on screen first, and a light out of sight gets no
 // tile.
 enum class ShadowResolution { screen, requested };
+constexpr EnumNames<ShadowResolution, 2> enum_names(ShadowResolution) {
+  return {{{ShadowResolution::screen, "screen"}, {ShadowResolution::requested, "requested"}}};
+}
 
 }  // namespace sg::shadows

@@ -1,18 +1,28 @@
 #pragma once
 #include <cstdint>
 
+#include "systems/scene/enum_names.h"
+
 namespace sg::shadows {
 
 // How the shadow views due in a frame are drawn: all at once, culled and batched on the GPU
 // (ShadowViewBatch, needs shaderOutputLayer), or one render-graph pass per light with casters
 // culled on the CPU (ShadowPasses), the baseline.
 enum class ShadowViewPath { batched, per_light };
+constexpr EnumNames<ShadowViewPath, 2> enum_names(ShadowViewPath) {
+  return {{{ShadowViewPath::batched, "batched"}, {ShadowViewPath::per_light, "per-light"}}};
+}
 
 // How the batched path rasterizes the views: with the raster hardware (one multi-draw indirect
 // pass), or in compute (shaders/shadow_raster.comp), which is faster where the hardware sets up
 // the small views' triangles slowly. automatic: on CPU devices the hardware; on GPUs chosen each
 // frame by raster_for_views (measured in docs/PERFORMANCE.md).
 enum class ShadowRaster { automatic, hardware, compute };
+constexpr EnumNames<ShadowRaster, 3> enum_names(ShadowRaster) {
+  return {{{ShadowRaster::automatic, "auto"},
+           {ShadowRaster::hardware, "hardware"},
+           {ShadowRaster::compute, "compute"}}};
+}
 
 // automatic's choice on a GPU for a frame's due `views`, `large_tile_texels` the area of those
 // of large_tile texels a side or more: whichever a cost model fitted to the H200 on 2026-11-30

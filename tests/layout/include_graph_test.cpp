@@ -94,6 +94,26 @@ TEST(IncludeGraph, FoldersDependOnEachOtherOneWayOnly) {
   EXPECT_EQ(find_cycle(folder_graph(module_graph())), "");
 }
 
+// The layers: the ECS and the render graph know nothing of the systems, the engine (systems/)
+// and the tools nothing of the application (sandbox/), so tools render the engine's frame
+// without the sandbox's options.
+TEST(IncludeGraph, LowerLayersNeverIncludeHigherOnes) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> never{
+      {"ecs/", {"rendergraph/", "systems/", "sandbox/", "tools/"}},
+      {"rendergraph/", {"systems/", "sandbox/", "tools/"}},
+      {"systems/", {"sandbox/", "tools/"}},
+      {"tools/", {"sandbox/"}}};
+  for (const auto& [module, edges] : module_graph()) {
+    for (const auto& [lower, higher] : never) {
+      if (!module.starts_with(lower)) continue;
+      for (const std::string& target : edges) {
+        for (const std::string& folder : higher)
+          EXPECT_FALSE(target.starts_with(folder)) << module << " -> " << target;
+      }
+    }
+  }
+}
+
 TEST(IncludeGraph, FindsACycleWhereThereIsOne) {
   const Graph looped{{"a", {"b"}}, {"b", {"c"}}, {"c", {"a"}}};
   EXPECT_EQ(find_cycle(looped), "a -> b -> c -> a");

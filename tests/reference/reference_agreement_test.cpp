@@ -34,8 +34,8 @@ class EmbreeReference : public GpuTest {
 
   Agreement compare(const ShadowScene& s) {
     const CameraImage view = floor_camera({width, height});
-    sandbox::SandboxScene scene{build_shadow_scene(s, s.intensity), view.pose, view.lens, "test"};
-    sandbox::Options options;
+    SceneView scene{build_shadow_scene(s, s.intensity), view.pose, view.lens, "test"};
+    FrameSettings options;
     options.width = width;
     options.height = height;
     ecs::ThreadPool pool;

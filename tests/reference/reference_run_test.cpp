@@ -14,7 +14,7 @@ namespace {
 class ReferenceRun : public GpuTest {
  protected:
   reference::ReferenceReport run(const reference::ReferenceSettings& settings) {
-    sandbox::Options options;
+    FrameSettings options;
     options.width = 160;
     options.height = 90;
     return reference::run_reference(context, options, settings);
@@ -57,7 +57,7 @@ TEST_F(ReferenceRun, PointLightPcssIsAsCloseToTheSoftReferenceAsSpotPcss) {
     settings.algorithms = {scene::ShadowAlgorithm::pcss};
     settings.light_filter = light;
     settings.soft_samples = 16;
-    sandbox::Options options;
+    FrameSettings options;
     options.width = 320;
     options.height = 180;
     const reference::ReferenceReport report = reference::run_reference(context, options, settings);
@@ -77,7 +77,7 @@ TEST_F(ReferenceRun, PointLightPcssIsAsCloseToTheSoftReferenceAsSpotPcss) {
 // deferred path and seen from 145 metres, where the camera's depth once put 39% of their lit
 // pixels in acne. Hard shadows, so any darkening of a lit pixel outside the edge band is acne.
 TEST_F(ReferenceRun, SmallSpotMapsSeenFromAfarHaveNoAcne) {
-  sandbox::Options options;
+  FrameSettings options;
   options.width = 960;
   options.height = 540;
   options.scene = "stress";
@@ -86,8 +86,8 @@ TEST_F(ReferenceRun, SmallSpotMapsSeenFromAfarHaveNoAcne) {
   options.scene_params.spot_lights = 24;
   options.scene_params.moving_fraction = 0.0f;
   options.camera = scene::CameraPose{{14.0f, 50.0f, 150.0f}, {14.0f, 0.0f, 14.0f}};
-  options.lighting = LightingPath::deferred;
-  options.shadow_resolution = shadows::ShadowResolution::requested;
+  options.renderer.lighting = LightingPath::deferred;
+  options.renderer.shadow_resolution = shadows::ShadowResolution::requested;
   reference::ReferenceSettings settings;
   settings.algorithms = {scene::ShadowAlgorithm::hard};
   settings.light_filter = "spot";
@@ -117,7 +117,7 @@ TEST_F(ReferenceRun, ShadowsSpotLightsItsFloorPastItsTransparentMarker) {
   const std::filesystem::path file =
       std::filesystem::path(SHADOWGRAPH_SHARED_ASSETS) / "ShadowsSpot" / "shadows-spot.gltf";
   if (!std::filesystem::exists(file)) GTEST_SKIP() << "shared asset absent: " << file;
-  sandbox::Options options;
+  FrameSettings options;
   options.width = 320;
   options.height = 180;
   options.scene = file.string();

@@ -1,6 +1,9 @@
 // The sandbox's command line: defaults, each option, and each refusal (exit code 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -27,16 +30,16 @@ Options parse_ok(const std::vector<std::string>& args) {
 TEST(SandboxOptions, DefaultsComeFromTheSceneLibrary) {
   const Options options = parse_ok({});
   const scene::BuiltinSceneParams defaults;
-  EXPECT_EQ(options.scene, "default");
-  EXPECT_FALSE(options.camera.has_value());
-  EXPECT_EQ(options.scene_params.triangles, defaults.triangles);
-  EXPECT_EQ(options.scene_params.point_lights, defaults.point_lights);
-  EXPECT_EQ(options.scene_params.spot_lights, defaults.spot_lights);
-  EXPECT_EQ(options.scene_params.moving_fraction, defaults.moving_fraction);
-  EXPECT_EQ(options.scene_params.seed, defaults.seed);
+  EXPECT_EQ(options.frame.scene, "default");
+  EXPECT_FALSE(options.frame.camera.has_value());
+  EXPECT_EQ(options.frame.scene_params.triangles, defaults.triangles);
+  EXPECT_EQ(options.frame.scene_params.point_lights, defaults.point_lights);
+  EXPECT_EQ(options.frame.scene_params.spot_lights, defaults.spot_lights);
+  EXPECT_EQ(options.frame.scene_params.moving_fraction, defaults.moving_fraction);
+  EXPECT_EQ(options.frame.scene_params.seed, defaults.seed);
   EXPECT_TRUE(options.stats_path.empty());
-  EXPECT_EQ(options.width, 1280u);
-  EXPECT_EQ(options.height, 720u);
+  EXPECT_EQ(options.frame.width, 1280u);
+  EXPECT_EQ(options.frame.height, 720u);
   EXPECT_FALSE(options.frames.has_value());
   EXPECT_TRUE(options.vsync);
 }
@@ -46,28 +49,28 @@ TEST(SandboxOptions, ExistingOptionsStillWork) {
       parse_ok({"--headless", "--width", "320", "--height", "200", "--frames", "5", "--screenshot", "a.png",
                 "--device", "llvmpipe", "--validation", "--no-vsync"});
   EXPECT_TRUE(options.headless);
-  EXPECT_EQ(options.width, 320u);
-  EXPECT_EQ(options.height, 200u);
+  EXPECT_EQ(options.frame.width, 320u);
+  EXPECT_EQ(options.frame.height, 200u);
   EXPECT_EQ(options.frames, 5u);
   EXPECT_EQ(options.screenshot, "a.png");
-  EXPECT_EQ(options.device, "llvmpipe");
-  EXPECT_TRUE(options.validation);
+  EXPECT_EQ(options.frame.device, "llvmpipe");
+  EXPECT_TRUE(options.frame.validation);
   EXPECT_FALSE(options.vsync);
 }
 
 TEST(SandboxOptions, ShadowOptions) {
   const Options defaults = parse_ok({});
-  EXPECT_FALSE(defaults.algorithm.has_value());
-  EXPECT_TRUE(defaults.shadows);
-  EXPECT_EQ(defaults.cube_shadows, shadows::CubeShadowMode::layered);
+  EXPECT_FALSE(defaults.frame.algorithm.has_value());
+  EXPECT_TRUE(defaults.frame.renderer.lights.shadows);
+  EXPECT_EQ(defaults.frame.renderer.cube_shadows, shadows::CubeShadowMode::layered);
   EXPECT_FALSE(defaults.depth_overlay);
   EXPECT_TRUE(defaults.dump_shadow_maps.empty());
 
   const Options options = parse_ok({"--algorithm", "pcss_noise", "--shadows", "off", "--cube-shadows", "six",
                                     "--depth-overlay", "--dump-shadow-maps", "maps"});
-  EXPECT_EQ(options.algorithm, scene::ShadowAlgorithm::pcss_noise);
-  EXPECT_FALSE(options.shadows);
-  EXPECT_EQ(options.cube_shadows, shadows::CubeShadowMode::six_passes);
+  EXPECT_EQ(options.frame.algorithm, scene::ShadowAlgorithm::pcss_noise);
+  EXPECT_FALSE(options.frame.renderer.lights.shadows);
+  EXPECT_EQ(options.frame.renderer.cube_shadows, shadows::CubeShadowMode::six_passes);
   EXPECT_TRUE(options.depth_overlay);
   EXPECT_EQ(options.dump_shadow_maps, "maps");
 
@@ -80,30 +83,30 @@ TEST(SandboxOptions, ShadowOptions) {
 
 TEST(SandboxOptions, ShadowStorageAndAnimationOptions) {
   const Options defaults = parse_ok({});
-  EXPECT_EQ(defaults.shadow_views, shadows::ShadowViewPath::batched);
-  EXPECT_EQ(defaults.shadow_raster, shadows::ShadowRaster::automatic);
-  EXPECT_EQ(defaults.shadow_memory_mib, 0u);
-  EXPECT_EQ(defaults.shadow_updates, shadows::default_shadow_view_budget);
-  EXPECT_EQ(defaults.threads, 0u);
-  EXPECT_TRUE(defaults.shadow_cache);
-  EXPECT_TRUE(defaults.shadow_layers);
-  EXPECT_TRUE(defaults.animate);
-  EXPECT_TRUE(defaults.sidecar);  // from the command line; Options{} has it off
-  EXPECT_FALSE(Options{}.sidecar);
+  EXPECT_EQ(defaults.frame.renderer.shadow_views, shadows::ShadowViewPath::batched);
+  EXPECT_EQ(defaults.frame.renderer.shadow_raster, shadows::ShadowRaster::automatic);
+  EXPECT_EQ(defaults.frame.renderer.shadow_memory_mib, 0u);
+  EXPECT_EQ(defaults.frame.renderer.shadow_view_budget, shadows::default_shadow_view_budget);
+  EXPECT_EQ(defaults.frame.renderer.cpu_threads, 0u);
+  EXPECT_TRUE(defaults.frame.renderer.cache_shadows);
+  EXPECT_TRUE(defaults.frame.renderer.static_shadow_layers);
+  EXPECT_TRUE(defaults.frame.animate);
+  EXPECT_TRUE(defaults.frame.sidecar);  // from the command line; Options{} has it off
+  EXPECT_FALSE(Options{}.frame.sidecar);
 
   const Options options =
       parse_ok({"--shadow-views", "per-light", "--shadow-raster", "compute", "--shadow-memory", "128",
                 "--shadow-updates", "0", "--shadow-cache", "off", "--shadow-layers", "off", "--animate",
                 "off", "--sidecar", "off", "--threads", "4"});
-  EXPECT_EQ(options.shadow_views, shadows::ShadowViewPath::per_light);
-  EXPECT_EQ(options.shadow_raster, shadows::ShadowRaster::compute);
-  EXPECT_EQ(options.shadow_memory_mib, 128u);
-  EXPECT_EQ(options.shadow_updates, 0u);
-  EXPECT_FALSE(options.shadow_cache);
-  EXPECT_FALSE(options.shadow_layers);
-  EXPECT_FALSE(options.animate);
-  EXPECT_FALSE(options.sidecar);
-  EXPECT_EQ(options.threads, 4u);
+  EXPECT_EQ(options.frame.renderer.shadow_views, shadows::ShadowViewPath::per_light);
+  EXPECT_EQ(options.frame.renderer.shadow_raster, shadows::ShadowRaster::compute);
+  EXPECT_EQ(options.frame.renderer.shadow_memory_mib, 128u);
+  EXPECT_EQ(options.frame.renderer.shadow_view_budget, 0u);
+  EXPECT_FALSE(options.frame.renderer.cache_shadows);
+  EXPECT_FALSE(options.frame.renderer.static_shadow_layers);
+  EXPECT_FALSE(options.frame.animate);
+  EXPECT_FALSE(options.frame.sidecar);
+  EXPECT_EQ(options.frame.renderer.cpu_threads, 4u);
 
   for (const std::vector<std::string>& bad : {std::vector<std::string>{"--shadow-views", "some"},
                                               {"--threads", "-2"},
@@ -120,15 +123,15 @@ TEST(SandboxOptions, ShadowStorageAndAnimationOptions) {
 
 TEST(SandboxOptions, LightingOptions) {
   const Options defaults = parse_ok({});
-  EXPECT_EQ(defaults.lighting, LightingPath::automatic);
-  EXPECT_EQ(defaults.exposure, 1.0f);
-  EXPECT_FALSE(defaults.naive);
-  EXPECT_EQ(parse_ok({"--lighting", "fused"}).lighting, LightingPath::fused);
-  EXPECT_EQ(defaults.lit_sum_start, LitSumStart::automatic);
-  EXPECT_EQ(parse_ok({"--lit-sum-start", "pass"}).lit_sum_start, LitSumStart::pass);
-  EXPECT_EQ(parse_ok({"--lit-sum-start", "gbuffer"}).lit_sum_start, LitSumStart::gbuffer);
-  EXPECT_EQ(parse_ok({"--lighting", "deferred", "--exposure", "0.5"}).exposure, 0.5f);
-  EXPECT_TRUE(parse_ok({"--naive"}).naive);
+  EXPECT_EQ(defaults.frame.renderer.lighting, LightingPath::automatic);
+  EXPECT_EQ(defaults.frame.renderer.exposure, 1.0f);
+  EXPECT_FALSE(defaults.frame.naive);
+  EXPECT_EQ(parse_ok({"--lighting", "fused"}).frame.renderer.lighting, LightingPath::fused);
+  EXPECT_EQ(defaults.frame.renderer.lit_sum_start, LitSumStart::automatic);
+  EXPECT_EQ(parse_ok({"--lit-sum-start", "pass"}).frame.renderer.lit_sum_start, LitSumStart::pass);
+  EXPECT_EQ(parse_ok({"--lit-sum-start", "gbuffer"}).frame.renderer.lit_sum_start, LitSumStart::gbuffer);
+  EXPECT_EQ(parse_ok({"--lighting", "deferred", "--exposure", "0.5"}).frame.renderer.exposure, 0.5f);
+  EXPECT_TRUE(parse_ok({"--naive"}).frame.naive);
   for (const std::vector<std::string>& bad : {std::vector<std::string>{"--lighting", "raytraced"},
                                               {"--exposure", "0"},
                                               {"--naive", "--lighting", "deferred"},
@@ -143,42 +146,42 @@ TEST(SandboxOptions, SceneOptions) {
   const Options options =
       parse_ok({"--scene", "stress", "--scene-triangles", "5000", "--point-lights", "4", "--spot-lights", "0",
                 "--moving-lights", "0.5", "--seed", "42", "--stats", "out.json"});
-  EXPECT_EQ(options.scene, "stress");
-  EXPECT_EQ(options.scene_params.triangles, 5000u);
-  EXPECT_EQ(options.scene_params.point_lights, 4u);
-  EXPECT_EQ(options.scene_params.spot_lights, 0u);
-  EXPECT_EQ(options.scene_params.moving_fraction, 0.5f);
-  EXPECT_EQ(options.scene_params.seed, 42u);
+  EXPECT_EQ(options.frame.scene, "stress");
+  EXPECT_EQ(options.frame.scene_params.triangles, 5000u);
+  EXPECT_EQ(options.frame.scene_params.point_lights, 4u);
+  EXPECT_EQ(options.frame.scene_params.spot_lights, 0u);
+  EXPECT_EQ(options.frame.scene_params.moving_fraction, 0.5f);
+  EXPECT_EQ(options.frame.scene_params.seed, 42u);
   EXPECT_EQ(options.stats_path, "out.json");
-  EXPECT_EQ(parse_ok({"--scene", "models/room.gltf"}).scene, "models/room.gltf");
+  EXPECT_EQ(parse_ok({"--scene", "models/room.gltf"}).frame.scene, "models/room.gltf");
 }
 
 TEST(SandboxOptions, BoundaryValuesAreAccepted) {
   const Options options = parse_ok({"--scene-triangles", std::to_string(max_scene_triangles),
                                     "--point-lights", std::to_string(max_lights_per_type), "--moving-lights",
                                     "1", "--seed", "18446744073709551615"});
-  EXPECT_EQ(options.scene_params.triangles, max_scene_triangles);
-  EXPECT_EQ(options.scene_params.point_lights, max_lights_per_type);
-  EXPECT_EQ(options.scene_params.moving_fraction, 1.0f);
-  EXPECT_EQ(options.scene_params.seed, 18446744073709551615u);
-  EXPECT_EQ(parse_ok({"--moving-lights", "0"}).scene_params.moving_fraction, 0.0f);
+  EXPECT_EQ(options.frame.scene_params.triangles, max_scene_triangles);
+  EXPECT_EQ(options.frame.scene_params.point_lights, max_lights_per_type);
+  EXPECT_EQ(options.frame.scene_params.moving_fraction, 1.0f);
+  EXPECT_EQ(options.frame.scene_params.seed, 18446744073709551615u);
+  EXPECT_EQ(parse_ok({"--moving-lights", "0"}).frame.scene_params.moving_fraction, 0.0f);
 }
 
 TEST(SandboxOptions, NumbersAreDecimal) {
   // CLI11 alone would read a leading zero as octal (010 -> 8).
-  EXPECT_EQ(parse_ok({"--seed", "010"}).scene_params.seed, 10u);
-  EXPECT_EQ(parse_ok({"--point-lights", "07"}).scene_params.point_lights, 7u);
+  EXPECT_EQ(parse_ok({"--seed", "010"}).frame.scene_params.seed, 10u);
+  EXPECT_EQ(parse_ok({"--point-lights", "07"}).frame.scene_params.point_lights, 7u);
 }
 
 TEST(SandboxOptions, CameraIsParsed) {
   const Options options = parse_ok({"--camera", "1,2.5,-3,0,0,10"});
-  ASSERT_TRUE(options.camera.has_value());
-  EXPECT_EQ(options.camera->eye, glm::vec3(1, 2.5f, -3));
-  EXPECT_EQ(options.camera->target, glm::vec3(0, 0, 10));
+  ASSERT_TRUE(options.frame.camera.has_value());
+  EXPECT_EQ(options.frame.camera->eye, glm::vec3(1, 2.5f, -3));
+  EXPECT_EQ(options.frame.camera->target, glm::vec3(0, 0, 10));
   // A leading minus sign is not taken for an option.
   const Options negative = parse_ok({"--camera", "-4,1,0,0,0,0"});
-  ASSERT_TRUE(negative.camera.has_value());
-  EXPECT_EQ(negative.camera->eye, glm::vec3(-4, 1, 0));
+  ASSERT_TRUE(negative.frame.camera.has_value());
+  EXPECT_EQ(negative.frame.camera->eye, glm::vec3(-4, 1, 0));
 }
 
 struct Refusal {
@@ -227,6 +230,44 @@ TEST(SandboxOptions, HelpExitsWithZero) {
   for (const char* option : {"--scene", "--camera", "--scene-triangles", "--point-lights", "--spot-lights",
                              "--moving-lights", "--seed", "--stats"}) {
     EXPECT_NE(printed.find(option), std::string::npos) << option;
+  }
+}
+
+// The README's option list is the table's (options_table), option for option: a setting added,
+// renamed or reworded in the table and not in the README fails here, with the list to paste.
+TEST(SandboxOptions, TheReadmeListsEveryOptionAsTheTableDeclaresIt) {
+  std::ifstream file(std::string(SHADOWGRAPH_SOURCE_DIR) + "/README.md");
+  std::stringstream readme;
+  readme << file.rdbuf();
+  const std::string text = readme.str();
+  const std::string opening = "build/sandbox/shadowgraph-sandbox [options]\n";
+  const size_t start = text.find(opening);
+  ASSERT_NE(start, std::string::npos) << "the README has no option list";
+  const size_t first = start + opening.size();
+  const std::string listed = text.substr(first, text.find("```", first) - first);
+  const std::string expected = option_list();
+  if (listed != expected) {
+    std::ofstream("readme_options.txt") << expected;
+    FAIL() << "README.md's option list differs from the settings tables; the list they declare is in "
+              "readme_options.txt (the test's working folder):\n"
+           << expected;
+  }
+}
+
+// Every setting has a help text, a unique name, and a value that --stats can echo.
+TEST(SandboxOptions, EverySettingIsDeclaredOnce) {
+  std::vector<std::string_view> names;
+  const Options defaults = parse_ok({});
+  for (const Setting<Options>& setting : options_table()) {
+    EXPECT_FALSE(setting.info.help.empty()) << setting.info.name;
+    EXPECT_EQ(std::count(names.begin(), names.end(), setting.info.name), 0) << setting.info.name;
+    names.push_back(setting.info.name);
+    if (setting.info.type == SettingType::choice && setting.get(defaults)) {
+      const std::string value = *setting.get(defaults);
+      EXPECT_NE(std::find(setting.info.choices.begin(), setting.info.choices.end(), value),
+                setting.info.choices.end())
+          << setting.info.name << "'s default is not one of its choices";
+    }
   }
 }
 

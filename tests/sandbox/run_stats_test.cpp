@@ -97,13 +97,18 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                    TimeSummary{20.0, 0.0, 40.0},
                    TimeSummary{60.0, 6.0, 600.0},
                    98'765};
+  stats.settings = {{"width", SettingType::whole, "640"},
+                    {"exposure", SettingType::number, "0.5"},
+                    {"naive", SettingType::flag, "true"},
+                    {"lighting", SettingType::choice, "deferred"},
+                    {"camera", SettingType::text, std::nullopt}};
 
   TempDir dir;
   const std::string path = dir.path("stats.json").string();
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 14u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 15u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);
@@ -138,6 +143,12 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(json.at("validation_errors"), 4);
   EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
   EXPECT_EQ(json.at("dropped_light_pairs"), 12);
+  // Settings keep their types: numbers, true/false for flags, null when unset.
+  EXPECT_EQ(json.at("settings"), nlohmann::json({{"width", 640},
+                                                 {"exposure", 0.5},
+                                                 {"naive", true},
+                                                 {"lighting", "deferred"},
+                                                 {"camera", nullptr}}));
   const nlohmann::json& shadows = json.at("shadows");
   EXPECT_EQ(shadows.size(), 13u) << shadows.dump(2);
   EXPECT_EQ(shadows.at("views"), "batched");

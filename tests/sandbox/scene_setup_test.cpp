@@ -6,7 +6,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "sandbox/scene_setup.h"
+#include "systems/frame/scene_view.h"
 #include "systems/gpu/camera.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene_error.h"
@@ -42,11 +42,11 @@ std::string write_scene(const TempDir& dir, bool with_camera, const char* camera
   return file.write_gltf(dir, with_camera ? "with_camera" : "no_camera").string();
 }
 
-TEST(SandboxScene, UsesTheGltfCamera) {
+TEST(SceneView, UsesTheGltfCamera) {
   TempDir dir;
-  Options options;
+  FrameSettings options;
   options.scene = write_scene(dir, true, "Overview");
-  const SandboxScene loaded = load_sandbox_scene(options, 16.0f / 9.0f);
+  const SceneView loaded = load_scene_view(options, 16.0f / 9.0f);
   EXPECT_EQ(loaded.camera_source, "glTF camera 'Overview'");
   expect_near(loaded.pose.eye, {1, 2, 3});
   expect_near(loaded.pose.target, {0, 2, 3});
@@ -71,7 +71,7 @@ std::string write_scene_with_camera_rotation(const TempDir& dir, const glm::quat
 
 // The sandbox's view matrix of `loaded` sends points where the camera node's own frame puts
 // them: the inverse of its world transform (glTF cameras look down -Z, +Y up, roll included).
-void expect_view_of_camera_node(const SandboxScene& loaded) {
+void expect_view_of_camera_node(const SceneView& loaded) {
   const std::optional<ecs::Entity> camera = scene::first_camera(loaded.scene);
   ASSERT_TRUE(camera.has_value());
   const glm::mat4 node = loaded.scene.world.get<ecs::WorldTransform>(*camera).matrix;
@@ -83,24 +83,24 @@ void expect_view_of_camera_node(const SandboxScene& loaded) {
   }
 }
 
-TEST(SandboxScene, ARolledGltfCameraKeepsItsRoll) {
+TEST(SceneView, ARolledGltfCameraKeepsItsRoll) {
   TempDir dir;
-  Options options;
+  FrameSettings options;
   // Looking down -Z, rolled 90 degrees: the picture's top is world -X.
   options.scene = write_scene_with_camera_rotation(
       dir, glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 0, 1)), "rolled");
-  const SandboxScene loaded = load_sandbox_scene(options, 1.0f);
+  const SceneView loaded = load_scene_view(options, 1.0f);
   expect_near(loaded.pose.up, {-1, 0, 0});
   expect_view_of_camera_node(loaded);
 }
 
-TEST(SandboxScene, AGltfCameraLookingStraightDownIsNotTurned) {
+TEST(SceneView, AGltfCameraLookingStraightDownIsNotTurned) {
   TempDir dir;
-  Options options;
+  FrameSettings options;
   // Pitched down 90 degrees: looking down world -Y, the picture's top towards world -Z.
   options.scene =
       write_scene_with_camera_rotation(dir, glm::angleAxis(glm::radians(-90.0f), glm::vec3(1, 0, 0)), "down");
-  const SandboxScene loaded = load_sandbox_scene(options, 1.0f);
+  const SceneView loaded = load_scene_view(options, 1.0f);
   expect_near(glm::normalize(loaded.pose.target - loaded.pose.eye), {0, -1, 0});
   expect_near(loaded.pose.up, {0, 0, -1});
   expect_view_of_camera_node(loaded);
@@ -108,7 +108,7 @@ TEST(SandboxScene, AGltfCameraLookingStraightDownIsNotTurned) {
 
 // --camera looking straight down has no +Y to roll around: the view picks another up and still
 // sees what lies below, instead of a degenerate matrix and a blank picture.
-TEST(SandboxScene, ACommandLineCameraLookingStraightDownSeesTheGround) {
+TEST(SceneView, ACommandLineCameraLookingStraightDownSeesTheGround) {
   const scene::CameraPose pose = scene::parse_camera("0,12,0,0,0,0");
   const glm::mat4 clip = projection_matrix(scene::Camera{}, 1.0f) * view_matrix(pose);
   const glm::vec4 below = clip * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
@@ -119,11 +119,11 @@ TEST(SandboxScene, ACommandLineCameraLookingStraightDownSeesTheGround) {
   EXPECT_LT(std::abs(aside.x / aside.w), 1.0f);  // two metres aside, 12 below: in the picture
 }
 
-TEST(SandboxScene, AFileWithoutLightsGetsTheSandboxSun) {
+TEST(SceneView, AFileWithoutLightsGetsTheSandboxSun) {
   TempDir dir;
-  Options options;
+  FrameSettings options;
   options.scene = write_scene(dir, false);
-  SandboxScene loaded = load_sandbox_scene(options, 1.0f);
+  SceneView loaded = load_scene_view(options, 1.0f);
   const scene::SceneStats stats = scene::scene_stats(loaded.scene);
   EXPECT_EQ(stats.directional_lights, 1u);
   EXPECT_EQ(stats.shadow_casting_lights, 1u);
@@ -132,35 +132,35 @@ TEST(SandboxScene, AFileWithoutLightsGetsTheSandboxSun) {
 
   // The built-in scenes bring their own lights and get none added.
   options.scene = "default";
-  SandboxScene builtin = load_sandbox_scene(options, 1.0f);
+  SceneView builtin = load_scene_view(options, 1.0f);
   EXPECT_EQ(scene::scene_stats(builtin.scene).directional_lights, 1u);
 }
 
-TEST(SandboxScene, UnnamedGltfCamera) {
+TEST(SceneView, UnnamedGltfCamera) {
   TempDir dir;
-  Options options;
+  FrameSettings options;
   options.scene = write_scene(dir, true);
-  EXPECT_EQ(load_sandbox_scene(options, 1.0f).camera_source, "glTF camera");
+  EXPECT_EQ(load_scene_view(options, 1.0f).camera_source, "glTF camera");
 }
 
-TEST(SandboxScene, CommandLineCameraWinsAndKeepsTheSceneLens) {
+TEST(SceneView, CommandLineCameraWinsAndKeepsTheSceneLens) {
   TempDir dir;
-  Options options;
+  FrameSettings options;
   options.scene = write_scene(dir, true, "Overview");
   options.camera = scene::CameraPose{{5, 6, 7}, {0, 1, 0}};
-  const SandboxScene loaded = load_sandbox_scene(options, 1.0f);
+  const SceneView loaded = load_scene_view(options, 1.0f);
   EXPECT_EQ(loaded.camera_source, "--camera");
   EXPECT_EQ(loaded.pose.eye, glm::vec3(5, 6, 7));
   EXPECT_EQ(loaded.pose.target, glm::vec3(0, 1, 0));
   EXPECT_FLOAT_EQ(loaded.lens.yfov, 0.7f);
 }
 
-TEST(SandboxScene, FramesTheBoundsWithoutACamera) {
+TEST(SceneView, FramesTheBoundsWithoutACamera) {
   TempDir dir;
-  Options options;
+  FrameSettings options;
   options.scene = write_scene(dir, false);
   const float aspect = 2.0f;
-  SandboxScene loaded = load_sandbox_scene(options, aspect);
+  SceneView loaded = load_scene_view(options, aspect);
   EXPECT_EQ(loaded.camera_source, "framed bounds");
   EXPECT_FLOAT_EQ(loaded.lens.yfov, scene::Camera{}.yfov);
   expect_near(loaded.pose.target, {0.5f, 0.5f, 0.0f});  // the triangle's box centre
@@ -169,32 +169,32 @@ TEST(SandboxScene, FramesTheBoundsWithoutACamera) {
   expect_near(loaded.pose.eye, expected.eye);
 }
 
-TEST(SandboxScene, BuiltinSceneBringsItsCamera) {
-  Options options;  // --scene default
-  const SandboxScene loaded = load_sandbox_scene(options, 1.0f);
+TEST(SceneView, BuiltinSceneBringsItsCamera) {
+  FrameSettings options;  // --scene default
+  const SceneView loaded = load_scene_view(options, 1.0f);
   EXPECT_EQ(loaded.scene.name, "default");
   EXPECT_EQ(loaded.camera_source, "built-in camera");
   expect_near(loaded.pose.eye, {0, 5, 9});  // default_scene.cpp's camera
 }
 
-TEST(SandboxScene, StressParametersReachTheScene) {
-  Options options;
+TEST(SceneView, StressParametersReachTheScene) {
+  FrameSettings options;
   options.scene = "stress";
   options.scene_params.triangles = 2000;
   options.scene_params.point_lights = 3;
   options.scene_params.spot_lights = 2;
-  SandboxScene loaded = load_sandbox_scene(options, 1.0f);
+  SceneView loaded = load_scene_view(options, 1.0f);
   const scene::SceneStats stats = scene::scene_stats(loaded.scene);
   EXPECT_EQ(stats.point_lights, 3u);
   EXPECT_EQ(stats.spot_lights, 2u);
   EXPECT_GE(stats.triangles, 2000u);
 }
 
-TEST(SandboxScene, LoadErrorsPropagate) {
-  Options options;
+TEST(SceneView, LoadErrorsPropagate) {
+  FrameSettings options;
   options.scene = "/no/such/dir/missing.gltf";
   try {
-    load_sandbox_scene(options, 1.0f);
+    load_scene_view(options, 1.0f);
     ADD_FAILURE() << "loaded a missing file";
   } catch (const scene::SceneError& error) {
     EXPECT_NE(std::string(error.what()).find("missing.gltf"), std::string::npos) << error.what();

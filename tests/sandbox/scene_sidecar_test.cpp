@@ -7,7 +7,7 @@
 
 #include "ecs/query.h"
 #include "ecs/transform.h"
-#include "sandbox/scene_sidecar.h"
+#include "systems/frame/scene_sidecar.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/scene_builder.h"

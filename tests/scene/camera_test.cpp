@@ -74,11 +74,11 @@ TEST(Camera, AddedCameraLooksAtItsTarget) {
 
 TEST(ShadowSettingsNames, RoundTripAndRefuseUnknown) {
   for (const ShadowAlgorithm algorithm : all_shadow_algorithms) {
-    EXPECT_EQ(parse_shadow_algorithm(to_string(algorithm)), algorithm);
+    EXPECT_EQ(parse_enum<ShadowAlgorithm>(to_string(algorithm)), algorithm);
   }
   EXPECT_EQ(to_string(ShadowAlgorithm::pcss_noise), "pcss_noise");
-  EXPECT_FALSE(parse_shadow_algorithm("PCF").has_value());
-  EXPECT_FALSE(parse_shadow_algorithm("").has_value());
+  EXPECT_FALSE(parse_enum<ShadowAlgorithm>("PCF").has_value());
+  EXPECT_FALSE(parse_enum<ShadowAlgorithm>("").has_value());
 }
 
 }  // namespace

@@ -13,7 +13,7 @@
 #include "ecs/transform_system.h"
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
-#include "sandbox/sandbox_frame.h"
+#include "systems/frame/frame.h"
 #include "systems/gpu/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
@@ -62,8 +62,8 @@ scene::Texture half_transparent(uint32_t columns) {
 // 20 x 20 m floor of `floor_color`, its top at y = 0.
 constexpr uint32_t box_mesh = 0;
 constexpr uint32_t quad_mesh = 1;
-sandbox::SandboxScene floor_scene(const char* name, glm::vec4 floor_color) {
-  sandbox::SandboxScene scene;
+SceneView floor_scene(const char* name, glm::vec4 floor_color) {
+  SceneView scene;
   scene.scene.name = name;
   scene::add_box_mesh(scene.scene.meshes);
   scene::add_quad_mesh(scene.scene.meshes);
@@ -75,15 +75,15 @@ sandbox::SandboxScene floor_scene(const char* name, glm::vec4 floor_color) {
 class AlphaMaterials : public GpuTest {
  protected:
   // One frame of `scene` on `lighting`, its shadow views drawn by `shadow_path`.
-  vk::Rgba8Image render(sandbox::SandboxScene& scene, LightingPath lighting,
+  vk::Rgba8Image render(SceneView& scene, LightingPath lighting,
                         const ShadowPath& shadow_path = every_shadow_path[0]) {
-    sandbox::Options options;
-    options.lighting = lighting;
-    options.shadow_views = shadow_path.views;
-    options.shadow_raster = shadow_path.raster;
+    FrameSettings options;
+    options.renderer.lighting = lighting;
+    options.renderer.shadow_views = shadow_path.views;
+    options.renderer.shadow_raster = shadow_path.raster;
     options.animate = false;
     vk::FrameRing frames(context);
-    sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
+    Frame frame(context, scene, options, frames.frames_in_flight());
     frame.resize({width, height});
     frame.record(frames.begin_frame(), 0.0);
     frames.submit();
@@ -92,7 +92,7 @@ class AlphaMaterials : public GpuTest {
   }
 
   // The linear color where `scene`'s camera sees world point `p`.
-  static glm::vec3 seen(const vk::Rgba8Image& image, const sandbox::SandboxScene& scene, glm::vec3 p) {
+  static glm::vec3 seen(const vk::Rgba8Image& image, const SceneView& scene, glm::vec3 p) {
     const glm::vec4 clip =
         projection_matrix(scene.lens, float(width) / height) * view_matrix(scene.pose) * glm::vec4(p, 1.0f);
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
@@ -102,8 +102,7 @@ class AlphaMaterials : public GpuTest {
   }
 
   // The mean linear color over a horizontal 0.4 m square around `centre`.
-  static glm::vec3 mean_seen(const vk::Rgba8Image& image, const sandbox::SandboxScene& scene,
-                             glm::vec3 centre) {
+  static glm::vec3 mean_seen(const vk::Rgba8Image& image, const SceneView& scene, glm::vec3 centre) {
     glm::vec3 sum(0.0f);
     for (int i = -2; i <= 2; ++i) {
       for (int k = -2; k <= 2; ++k) sum += seen(image, scene, centre + glm::vec3(0.1f * i, 0.0f, 0.1f * k));
@@ -119,7 +118,7 @@ class AlphaMaterials : public GpuTest {
 // would shade it too.
 TEST_F(AlphaMaterials, AMaskedCardShowsAndCastsItsTexturesShape) {
   const auto masked_card = [](bool point_light) {
-    sandbox::SandboxScene scene = floor_scene("masked card", {0.1f, 0.8f, 0.1f, 1.0f});
+    SceneView scene = floor_scene("masked card", {0.1f, 0.8f, 0.1f, 1.0f});
     scene.scene.textures.textures.push_back(half_transparent(8));
     scene::Material card = matte(glm::vec4(1.0f));
     card.base_color_texture = 0;
@@ -143,7 +142,7 @@ TEST_F(AlphaMaterials, AMaskedCardShowsAndCastsItsTexturesShape) {
     scene.pose = {{0.0f, 8.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
     return scene;
   };
-  const auto check = [&](sandbox::SandboxScene& scene, LightingPath lighting, const ShadowPath& shadow_path,
+  const auto check = [&](SceneView& scene, LightingPath lighting, const ShadowPath& shadow_path,
                          float lit_x) {
     const vk::Rgba8Image image = render(scene, lighting, shadow_path);
     const glm::vec3 opaque = seen(image, scene, {-1.0f, 1.0f, 0.0f});
@@ -155,12 +154,12 @@ TEST_F(AlphaMaterials, AMaskedCardShowsAndCastsItsTexturesShape) {
     EXPECT_GT(lit.g, 2.0f * shadowed.g)
         << "the floor is lit through the hole, in the opaque half's shadow beside";
   };
-  sandbox::SandboxScene sun = masked_card(false);
+  SceneView sun = masked_card(false);
   for (const LightingPath path : every_path) {
-    SCOPED_TRACE(std::string(lighting_path_name(path)));
+    SCOPED_TRACE(std::string(to_string(path)));
     check(sun, path, every_shadow_path[0], 1.6f);
   }
-  sandbox::SandboxScene bulb = masked_card(true);
+  SceneView bulb = masked_card(true);
   for (const ShadowPath& shadow_path : every_shadow_path) {
     SCOPED_TRACE(shadow_path.name);
     check(sun, LightingPath::deferred, shadow_path, 1.6f);
@@ -174,7 +173,7 @@ TEST_F(AlphaMaterials, AMaskedCardShowsAndCastsItsTexturesShape) {
 // beside the pane) gets about half of what the card takes away, on every way of drawing shadow
 // views.
 TEST_F(AlphaMaterials, ATransparentPaneTintsWhatIsBehindAndCastsAPartialShadow) {
-  sandbox::SandboxScene scene = floor_scene("pane", glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+  SceneView scene = floor_scene("pane", glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
   scene::Material glass = matte({0.2f, 0.2f, 0.9f, 0.5f});
   glass.alpha_mode = scene::AlphaMode::blend;
   scene::add_instance(scene.scene, quad_mesh, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
@@ -191,7 +190,7 @@ TEST_F(AlphaMaterials, ATransparentPaneTintsWhatIsBehindAndCastsAPartialShadow) 
   ecs::update_world_transforms(scene.scene.world, 0);
   scene.pose = {{0.0f, 9.0f, 0.01f}, {0.0f, 0.0f, -2.0f}};
   for (const LightingPath path : every_path) {
-    SCOPED_TRACE(std::string(lighting_path_name(path)));
+    SCOPED_TRACE(std::string(to_string(path)));
     const vk::Rgba8Image image = render(scene, path);
     const glm::vec3 open = mean_seen(image, scene, {3.5f, 0.0f, 0.0f});
     const glm::vec3 card = mean_seen(image, scene, {-0.5f, 1.0f, -4.0f});
@@ -216,7 +215,7 @@ TEST_F(AlphaMaterials, ATransparentPaneTintsWhatIsBehindAndCastsAPartialShadow) 
 // blended back to front, the floor shows through both as half the red, a quarter of the blue and
 // a quarter of the floor (blue over red would be the other way round), on every lighting path.
 TEST_F(AlphaMaterials, OverlappingPanesBlendBackToFront) {
-  sandbox::SandboxScene scene = floor_scene("panes", glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+  SceneView scene = floor_scene("panes", glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
   const glm::vec4 red{0.9f, 0.1f, 0.1f, 0.5f};
   const glm::vec4 blue{0.1f, 0.1f, 0.9f, 0.5f};
   for (const auto& [color, height] : {std::pair{red, 2.0f}, std::pair{blue, 1.0f}}) {
@@ -238,7 +237,7 @@ TEST_F(AlphaMaterials, OverlappingPanesBlendBackToFront) {
   ecs::update_world_transforms(scene.scene.world, 0);
   scene.pose = {{2.0f, 9.0f, 0.01f}, {2.0f, 0.0f, 0.0f}};
   for (const LightingPath path : every_path) {
-    SCOPED_TRACE(std::string(lighting_path_name(path)));
+    SCOPED_TRACE(std::string(to_string(path)));
     const vk::Rgba8Image image = render(scene, path);
     const glm::vec3 floor = mean_seen(image, scene, {-2.0f, 0.0f, 3.0f});
     const glm::vec3 opaque_red = mean_seen(image, scene, {4.0f, 2.0f, 0.0f});  // the red card over the blue
@@ -254,7 +253,7 @@ TEST_F(AlphaMaterials, OverlappingPanesBlendBackToFront) {
 // the tiles over the pane have no opaque surface, yet their lights for transparent surfaces
 // include the light, on every lighting path.
 TEST_F(AlphaMaterials, APaneOverTheBackgroundIsLitByTheLightsNearIt) {
-  sandbox::SandboxScene scene;
+  SceneView scene;
   scene.scene.name = "pane in the dark";
   const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
   scene::Material glass = matte({0.9f, 0.9f, 0.9f, 0.5f});
@@ -268,7 +267,7 @@ TEST_F(AlphaMaterials, APaneOverTheBackgroundIsLitByTheLightsNearIt) {
   ecs::update_world_transforms(scene.scene.world, 0);
   scene.pose = {{0.0f, 6.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
   for (const LightingPath path : every_path) {
-    SCOPED_TRACE(std::string(lighting_path_name(path)));
+    SCOPED_TRACE(std::string(to_string(path)));
     const vk::Rgba8Image image = render(scene, path);
     // Lit: about half of 0.9 times the light's 0.8 at that distance; by ambient alone, 0.07.
     EXPECT_GT(mean_seen(image, scene, {0.0f, 1.0f, 0.0f}).g, 0.25f);
@@ -279,7 +278,7 @@ TEST_F(AlphaMaterials, APaneOverTheBackgroundIsLitByTheLightsNearIt) {
 // without the box: the box casts no shadow of the light it holds.
 TEST_F(AlphaMaterials, ATransparentBoxShutsInNoLight) {
   const auto floor_lit = [&](bool boxed, const ShadowPath& shadow_path) {
-    sandbox::SandboxScene scene = floor_scene("lantern", glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+    SceneView scene = floor_scene("lantern", glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
     if (boxed) {
       scene::Material glass = matte({0.9f, 0.9f, 0.9f, 0.9f});
       glass.alpha_mode = scene::AlphaMode::blend;
@@ -309,7 +308,7 @@ TEST_F(AlphaMaterials, ATransparentBoxShutsInNoLight) {
 // flipped normal.
 TEST_F(AlphaMaterials, ADoubleSidedCardShowsItsBackFaceLitFromItsSide) {
   const auto card_seen = [&](bool double_sided, LightingPath path) {
-    sandbox::SandboxScene scene;
+    SceneView scene;
     scene.scene.name = "card";
     const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
     scene::Material card = matte({0.9f, 0.9f, 0.9f, 1.0f});
@@ -326,7 +325,7 @@ TEST_F(AlphaMaterials, ADoubleSidedCardShowsItsBackFaceLitFromItsSide) {
     return seen(image, scene, {0.5f, 1.0f, 0.5f}).g;
   };
   for (const LightingPath path : every_path) {
-    SCOPED_TRACE(std::string(lighting_path_name(path)));
+    SCOPED_TRACE(std::string(to_string(path)));
     EXPECT_NEAR(card_seen(false, path), background_color.g, 0.01f) << "the background";
     EXPECT_GT(card_seen(true, path), 0.4f) << "the lit back face";
   }

@@ -1,5 +1,5 @@
 // Renders an ECS scene through the sandbox's frame graph offscreen and checks floor pixels
-// against the lighting formula of docs/LIGHTING.md section 2, evaluated here on the CPU from the
+// against the lighting formula of docs/ALGORITHMS.md section 2, evaluated here on the CPU from the
 // scene's parameters. Validation and synchronization validation are on (GpuTest).
 #include <cmath>
 #include <optional>
@@ -12,7 +12,7 @@
 #include "ecs/transform_system.h"
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
-#include "sandbox/sandbox_frame.h"
+#include "systems/frame/frame.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"
@@ -46,7 +46,7 @@ ecs::LocalTransform placement(const OrientedBox& box) {
 // A 20 x 20 m floor (top at y = 0), three boxes, and a sun with no shadow: every unoccluded
 // floor pixel follows the formula exactly.
 struct FloorScene {
-  sandbox::SandboxScene sandbox;
+  SceneView sandbox;
   std::vector<OrientedBox> boxes;
   scene::Material floor_material;
   scene::DirectionalLight sun;
@@ -103,7 +103,7 @@ TEST_F(OffscreenRender, FloorMatchesLightingFormula) {
   FloorScene s = make_floor_scene();
   {
     vk::FrameRing frames(context);
-    sandbox::SandboxFrame frame(context, s.sandbox, sandbox::Options{}, frames.frames_in_flight());
+    Frame frame(context, s.sandbox, FrameSettings{}, frames.frames_in_flight());
     frame.resize({width, height});
     for (int i = 0; i < 3; ++i) {  // later frames exercise the between-frame barriers
       vk::FrameSlot& slot = frames.begin_frame();

@@ -25,7 +25,7 @@
 #include "ecs/transform_system.h"
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
-#include "sandbox/sandbox_frame.h"
+#include "systems/frame/frame.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"
@@ -111,8 +111,8 @@ scene::ShadowSettings shadow_of(Cell cell) {
 // The floor, a plank per cell and, but for directional lights, a light per cell (in cell order,
 // row by row; maps above `max_size` held to it); a directional scene gets one sun, whose settings
 // the caller sets per frame.
-sandbox::SandboxScene build(Kind kind, std::vector<Box>& planks, uint32_t max_size) {
-  sandbox::SandboxScene out;
+SceneView build(Kind kind, std::vector<Box>& planks, uint32_t max_size) {
+  SceneView out;
   scene::Scene& scene = out.scene;
   scene.name = "acne";
   const uint32_t box = scene::add_box_mesh(scene.meshes);
@@ -186,7 +186,7 @@ struct Measured {
     std::ostringstream out;
     out << label << " (lit / acne / shadowed / detached per algorithm and tile size):\n";
     for (uint32_t row = 0; row < rows; ++row) {
-      out << "  " << scene::to_string(scene::all_shadow_algorithms[row]) << ":";
+      out << "  " << to_string(scene::all_shadow_algorithms[row]) << ":";
       for (uint32_t column = 0; column < columns; ++column) {
         const Tally& t = cells[index_of(column, row)];
         out << "  " << tile_sizes[column] << " " << t.lit << "/" << t.acne << "/" << t.shadowed << "/"
@@ -370,7 +370,7 @@ class ShadowAcne : public GpuTest {
   static constexpr shadows::ShadowRaster compute = shadows::ShadowRaster::compute;
 
   // Linear green channel of one frame of `frame`.
-  std::vector<float> render(sandbox::SandboxFrame& frame) {
+  std::vector<float> render(Frame& frame) {
     frame.record(frames.begin_frame(), 0.0);
     frames.submit();
     frames.wait_idle();
@@ -382,22 +382,21 @@ class ShadowAcne : public GpuTest {
     return out;
   }
 
-  std::unique_ptr<sandbox::SandboxFrame> frame_of(sandbox::SandboxScene& scene, LightingPath lighting,
-                                                  shadows::ShadowRaster raster) {
-    sandbox::Options options;
+  std::unique_ptr<Frame> frame_of(SceneView& scene, LightingPath lighting, shadows::ShadowRaster raster) {
+    FrameSettings options;
     options.animate = false;
-    options.view = LightingView::shadows;
-    options.lighting = lighting;
-    options.shadow_raster = raster;
-    options.shadow_resolution = shadows::ShadowResolution::requested;
-    options.shadow_memory_mib = 512;  // room for every map at its size: the budget demotes none
-    auto frame = std::make_unique<sandbox::SandboxFrame>(context, scene, options, frames.frames_in_flight());
+    options.renderer.view = LightingView::shadows;
+    options.renderer.lighting = lighting;
+    options.renderer.shadow_raster = raster;
+    options.renderer.shadow_resolution = shadows::ShadowResolution::requested;
+    options.renderer.shadow_memory_mib = 512;  // room for every map at its size: the budget demotes none
+    auto frame = std::make_unique<Frame>(context, scene, options, frames.frames_in_flight());
     frame->resize({width, height});
     return frame;
   }
 
   // Every light of `scene` casting its shadow or none.
-  static void set_shadows(sandbox::SandboxScene& scene, bool on) {
+  static void set_shadows(SceneView& scene, bool on) {
     scene.scene.world.query<scene::ShadowSettings>().for_each(
         [&](scene::ShadowSettings& s) { s.casts_shadow = on; });
   }
@@ -405,7 +404,7 @@ class ShadowAcne : public GpuTest {
   // Each light in sight has its map pinned to its cell's size (cube faces at most a quarter
   // page), and of every size at least three lie away from their page's corner (only a page's first
   // tile is at it): the atlas offsets are measured.
-  void expect_placed_as_asked(const sandbox::SandboxFrame& frame, uint32_t max_size) {
+  void expect_placed_as_asked(const Frame& frame, uint32_t max_size) {
     const shadows::FrameLights& lights = frame.renderer().lights();
     std::array<int, columns> off_corner{};
     const auto expect_tile = [&](const std::string& view, uint32_t cap, const shadows::AtlasTile& tile) {
@@ -430,8 +429,8 @@ class ShadowAcne : public GpuTest {
   void run(Kind kind, LightingPath lighting, shadows::ShadowRaster raster,
            uint32_t max_size = tile_sizes.back()) {
     std::vector<Box> planks;
-    sandbox::SandboxScene scene = build(kind, planks, max_size);
-    const std::unique_ptr<sandbox::SandboxFrame> frame = frame_of(scene, lighting, raster);
+    SceneView scene = build(kind, planks, max_size);
+    const std::unique_ptr<Frame> frame = frame_of(scene, lighting, raster);
     int shadowed = 0;
     for (const View& view : views) {
       scene.pose = view.pose;
@@ -459,8 +458,7 @@ class ShadowAcne : public GpuTest {
       for (uint32_t index = 0; index < columns * rows; ++index) {
         const Tally& t = measured.cells[index];
         const Cell cell = cell_of(index % columns, index / columns);
-        const std::string where =
-            std::string(scene::to_string(cell.algorithm)) + " at " + std::to_string(cell.size);
+        const std::string where = std::string(to_string(cell.algorithm)) + " at " + std::to_string(cell.size);
         if (t.acne > 0) faults += where + ": lit floor darkened at " + std::to_string(t.acne) + " pixels\n";
         if (t.detached > 0)
           faults += where + ": a plank's shadow missing at " + std::to_string(t.detached) + " pixels\n";

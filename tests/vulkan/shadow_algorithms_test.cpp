@@ -4,7 +4,7 @@
 //
 // The shadow factor of each pixel is measured, not guessed from colors: the scene is rendered
 // with shadows (S), without (U) and with the light off (D), and in linear light
-// shade = (U - S) / (U - D), which is the `shade` of docs/LIGHTING.md section 2 for a black shadow
+// shade = (U - S) / (U - D), which is the `shade` of docs/ALGORITHMS.md section 2 for a black shadow
 // color and density 1 (the floor has no specular term, so the (1 - shade) * S term vanishes).
 #include <algorithm>
 #include <cmath>
@@ -14,10 +14,11 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
+#include "ecs/query.h"
 #include "ecs/transform_system.h"
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
-#include "sandbox/sandbox_frame.h"
+#include "systems/frame/frame.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"
@@ -39,12 +40,12 @@ ecs::LocalTransform downward_light(glm::vec3 position) {
 
 CameraImage camera() { return floor_camera({width, height}); }
 
-sandbox::SandboxScene sandbox_scene(scene::Scene scene) {
-  sandbox::SandboxScene out{std::move(scene), camera().pose, camera().lens, "test"};
+SceneView sandbox_scene(scene::Scene scene) {
+  SceneView out{std::move(scene), camera().pose, camera().lens, "test"};
   return out;
 }
 
-sandbox::SandboxScene build(const ShadowScene& s, float intensity) {
+SceneView build(const ShadowScene& s, float intensity) {
   return sandbox_scene(build_shadow_scene(s, intensity));
 }
 
@@ -53,16 +54,16 @@ class ShadowAlgorithms : public GpuTest {
   // Linear green channel of the last of `frames` frames.
   std::vector<float> render(const ShadowScene& s, float intensity, bool shadows, uint32_t frames = 1,
                             std::vector<uint8_t>* first_frame = nullptr) {
-    sandbox::SandboxScene scene = build(s, intensity);
-    sandbox::Options options;
-    options.shadows = shadows;
+    SceneView scene = build(s, intensity);
+    FrameSettings options;
+    options.renderer.lights.shadows = shadows;
     return render(scene, options, frames, first_frame);
   }
 
-  std::vector<float> render(sandbox::SandboxScene& scene, const sandbox::Options& options,
-                            uint32_t frames = 1, std::vector<uint8_t>* first_frame = nullptr) {
+  std::vector<float> render(SceneView& scene, const FrameSettings& options, uint32_t frames = 1,
+                            std::vector<uint8_t>* first_frame = nullptr) {
     vk::FrameRing ring(context);
-    sandbox::SandboxFrame frame(context, scene, options, ring.frames_in_flight());
+    Frame frame(context, scene, options, ring.frames_in_flight());
     frame.resize({width, height});
     std::vector<float> out(size_t{width} * height);
     for (uint32_t i = 0; i < frames; ++i) {
@@ -154,7 +155,7 @@ TEST_F(ShadowAlgorithms, FilteredAlgorithmsAreIntermediateOnlyNearTheEdge) {
   for (const scene::ShadowAlgorithm algorithm :
        {scene::ShadowAlgorithm::pcf, scene::ShadowAlgorithm::noise}) {
     for (const LightKind kind : {LightKind::spot, LightKind::point}) {
-      SCOPED_TRACE(std::string(scene::to_string(algorithm)) + (kind == LightKind::spot ? " spot" : " point"));
+      SCOPED_TRACE(std::string(to_string(algorithm)) + (kind == LightKind::spot ? " spot" : " point"));
       // A coarse map makes the filter several pixels wide on screen. Cube faces are coarser at
       // the floor's grazing angles, where a 128-texel face would need more than the default
       // bias: they get 512 texels and a wider kernel instead.
@@ -209,7 +210,7 @@ TEST_F(ShadowAlgorithms, HalfDensityDarkensHalfAsMuch) {
 TEST_F(ShadowAlgorithms, DefaultBiasLeavesTheLitFloorClean) {
   for (const scene::ShadowAlgorithm algorithm : scene::all_shadow_algorithms) {
     for (const LightKind kind : {LightKind::spot, LightKind::point}) {
-      SCOPED_TRACE(std::string(scene::to_string(algorithm)) + (kind == LightKind::spot ? " spot" : " point"));
+      SCOPED_TRACE(std::string(to_string(algorithm)) + (kind == LightKind::spot ? " spot" : " point"));
       ShadowScene s = with(kind, algorithm);
       if (kind == LightKind::point) s.light_position = {-2.5f, 4.0f, -1.5f};
       const Classification c = classify(shade(s), reference(s, 4));
@@ -225,7 +226,7 @@ TEST_F(ShadowAlgorithms, DefaultBiasLeavesTheLitFloorClean) {
 TEST_F(ShadowAlgorithms, GrazingLightLeavesAnEmptyFloorLit) {
   for (const scene::ShadowAlgorithm algorithm : scene::all_shadow_algorithms) {
     for (const LightKind kind : {LightKind::spot, LightKind::point}) {
-      SCOPED_TRACE(std::string(scene::to_string(algorithm)) + (kind == LightKind::spot ? " spot" : " point"));
+      SCOPED_TRACE(std::string(to_string(algorithm)) + (kind == LightKind::spot ? " spot" : " point"));
       ShadowScene s = with(kind, algorithm);
       s.with_box = false;
       s.light_position = {-7.0f, 1.5f, -1.0f};
@@ -245,7 +246,7 @@ TEST_F(ShadowAlgorithms, NoiseIsStableFromFrameToFrame) {
     const ShadowScene s = with(LightKind::spot, algorithm, 128);
     std::vector<uint8_t> first;
     render(s, s.intensity, true, 3, &first);
-    EXPECT_EQ(first, last_pixels) << scene::to_string(algorithm);
+    EXPECT_EQ(first, last_pixels) << to_string(algorithm);
   }
 }
 
@@ -256,7 +257,7 @@ TEST_F(ShadowAlgorithms, FiveLightsEachRenderWithTheirOwnAlgorithm) {
   constexpr float spacing = 4.0f;
   const auto build_row = [&]() {
     uint32_t box = 0;
-    sandbox::SandboxScene out = sandbox_scene(floor_scene("five lights", box));
+    SceneView out = sandbox_scene(floor_scene("five lights", box));
     scene::Scene& scene = out.scene;
     for (int i = 0; i < 5; ++i) {
       const float x = (i - 2) * spacing;
@@ -273,14 +274,14 @@ TEST_F(ShadowAlgorithms, FiveLightsEachRenderWithTheirOwnAlgorithm) {
       shadow.resolution = 64;  // coarse, so that the filters differ by whole pixels
       shadow.light_size = 0.6f;
       scene::add_light(scene, light, downward_light({x, 4.0f, 0.0f}), shadow,
-                       std::string(scene::to_string(shadow.algorithm)));
+                       std::string(to_string(shadow.algorithm)));
     }
     ecs::update_world_transforms(scene.world, 0);
     out.pose = {{0.0f, 14.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
     return out;
   };
-  sandbox::SandboxScene mixed_scene = build_row();
-  const std::vector<float> mixed = render(mixed_scene, sandbox::Options{});
+  SceneView mixed_scene = build_row();
+  const std::vector<float> mixed = render(mixed_scene, FrameSettings{});
 
   // Which disc each pixel of the floor belongs to (-1: none).
   CameraImage view{mixed_scene.pose, mixed_scene.lens, {width, height}};
@@ -298,13 +299,13 @@ TEST_F(ShadowAlgorithms, FiveLightsEachRenderWithTheirOwnAlgorithm) {
 
   std::vector<std::vector<float>> uniform(5);
   for (int a = 0; a < 5; ++a) {
-    sandbox::SandboxScene scene = build_row();
-    sandbox::Options options;
-    options.algorithm = scene::all_shadow_algorithms[a];
-    uniform[a] = render(scene, options);
+    SceneView scene = build_row();
+    scene.scene.world.query<scene::ShadowSettings>().for_each(
+        [&](scene::ShadowSettings& shadow) { shadow.algorithm = scene::all_shadow_algorithms[a]; });
+    uniform[a] = render(scene, FrameSettings{});
   }
   for (int i = 0; i < 5; ++i) {
-    SCOPED_TRACE(scene::to_string(scene::all_shadow_algorithms[i]));
+    SCOPED_TRACE(to_string(scene::all_shadow_algorithms[i]));
     int pixels = 0, same_as_own = 0, differs_from_hard = 0;
     for (size_t p = 0; p < mixed.size(); ++p) {
       if (disc[p] != i) continue;

@@ -9,7 +9,7 @@
 #include "ecs/transform_system.h"
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
-#include "sandbox/sandbox_frame.h"
+#include "systems/frame/frame.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
@@ -22,9 +22,9 @@ namespace {
 // A floor larger than every map, a crate and a pillar; a beam (orthographic), a spot and a point
 // light whose views clip the floor on every side and the pillar at their near planes. `crate`,
 // `point_light`: where to say which entities the crate and the point light are.
-sandbox::SandboxScene clipped_scene(ecs::Entity* crate = nullptr, uint32_t resolution = 256,
-                                    ecs::Entity* point_light = nullptr) {
-  sandbox::SandboxScene scene;
+SceneView clipped_scene(ecs::Entity* crate = nullptr, uint32_t resolution = 256,
+                        ecs::Entity* point_light = nullptr) {
+  SceneView scene;
   scene.scene.name = "clipped";
   const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
   const uint32_t column = scene::add_cylinder_mesh(scene.scene.meshes, 16);
@@ -62,7 +62,7 @@ sandbox::SandboxScene clipped_scene(ecs::Entity* crate = nullptr, uint32_t resol
 }
 
 // Every texel of every shadow view of `frame`'s lights, in view order (maps, then cube faces).
-std::vector<float> view_depths(vk::VulkanContext& context, const sandbox::SandboxFrame& frame) {
+std::vector<float> view_depths(vk::VulkanContext& context, const Frame& frame) {
   const shadows::FrameLights& lights = frame.renderer().lights();
   std::vector<float> out;
   const auto read = [&](const shadows::AtlasTile& tile) {
@@ -90,17 +90,16 @@ class ShadowRasterTest : public GpuTest {
  protected:
   // A 64x48 frame of `scene`, still, whose shadows `raster` draws (set_shadow_raster may change
   // it between frames when `raster` is compute).
-  std::unique_ptr<sandbox::SandboxFrame> frame_of(sandbox::SandboxScene& scene,
-                                                  shadows::ShadowRaster raster) {
-    sandbox::Options options;
-    options.shadow_raster = raster;
+  std::unique_ptr<Frame> frame_of(SceneView& scene, shadows::ShadowRaster raster) {
+    FrameSettings options;
+    options.renderer.shadow_raster = raster;
     options.animate = false;
-    auto frame = std::make_unique<sandbox::SandboxFrame>(context, scene, options, frames.frames_in_flight());
+    auto frame = std::make_unique<Frame>(context, scene, options, frames.frames_in_flight());
     frame->resize({64, 48});
     return frame;
   }
   // Records one frame of `frame` and waits for it; the frame's shadow counts.
-  const shadows::ShadowScheduleStats& draw(sandbox::SandboxFrame& frame) {
+  const shadows::ShadowScheduleStats& draw(Frame& frame) {
     frame.record(frames.begin_frame(), 0.0);
     frames.submit();
     frames.wait_idle();
@@ -109,8 +108,8 @@ class ShadowRasterTest : public GpuTest {
 
   // Every texel of every shadow view, in view order, rendered with `raster`.
   std::vector<float> depths(shadows::ShadowRaster raster) {
-    sandbox::SandboxScene scene = clipped_scene();
-    const std::unique_ptr<sandbox::SandboxFrame> frame = frame_of(scene, raster);
+    SceneView scene = clipped_scene();
+    const std::unique_ptr<Frame> frame = frame_of(scene, raster);
     draw(*frame);
     EXPECT_EQ(frame->renderer().lights().maps.size(), 2u);
     EXPECT_EQ(frame->renderer().lights().cubes.size(), 1u);
@@ -139,8 +138,8 @@ TEST_F(ShadowRasterTest, ComputeRasterWritesWhatTheHardwareWrites) {
 TEST_F(ShadowRasterTest, MovingCastersOverStaticLayersMatchDrawingEveryCaster) {
   ecs::Entity crate;
   // 512 texels: the layers' passes share a tile among workgroups past 256 (65,536 texels).
-  sandbox::SandboxScene scene = clipped_scene(&crate, 512);
-  const std::unique_ptr<sandbox::SandboxFrame> layered = frame_of(scene, shadows::ShadowRaster::compute);
+  SceneView scene = clipped_scene(&crate, 512);
+  const std::unique_ptr<Frame> layered = frame_of(scene, shadows::ShadowRaster::compute);
   draw(*layered);
   const std::vector<float> still = view_depths(context, *layered);
   ASSERT_EQ(still.size(), 8u * 512 * 512);
@@ -153,7 +152,7 @@ TEST_F(ShadowRasterTest, MovingCastersOverStaticLayersMatchDrawingEveryCaster) {
   EXPECT_EQ(layered->renderer().shadow_stats().views_moving_only, 2u + 6u) << "both maps and the cube";
   const std::vector<float> moved = view_depths(context, *layered);
 
-  const std::unique_ptr<sandbox::SandboxFrame> fresh = frame_of(scene, shadows::ShadowRaster::compute);
+  const std::unique_ptr<Frame> fresh = frame_of(scene, shadows::ShadowRaster::compute);
   EXPECT_EQ(draw(*fresh).views_moving_only, 0u);
   const std::vector<float> everything = view_depths(context, *fresh);
   ASSERT_EQ(moved.size(), everything.size());
@@ -167,20 +166,20 @@ TEST_F(ShadowRasterTest, MovingCastersOverStaticLayersMatchDrawingEveryCaster) {
 TEST_F(ShadowRasterTest, AHardwareFrameKeepsNoStaticLayers) {
   ecs::Entity crate;
   ecs::Entity point;
-  sandbox::SandboxScene scene = clipped_scene(&crate, 256, &point);
-  const std::unique_ptr<sandbox::SandboxFrame> layered = frame_of(scene, shadows::ShadowRaster::compute);
+  SceneView scene = clipped_scene(&crate, 256, &point);
+  const std::unique_ptr<Frame> layered = frame_of(scene, shadows::ShadowRaster::compute);
   draw(*layered);
   scene.scene.world.get_mut<ecs::LocalTransform>(crate).translation.x = 1.3f;  // out of the layers
   draw(*layered);
   scene.scene.world.get_mut<ecs::LocalTransform>(point).translation.x = 0.1f;
-  layered->set_shadow_raster(shadows::ShadowRaster::hardware);
+  layered->renderer().set_shadow_raster(shadows::ShadowRaster::hardware);
   EXPECT_EQ(draw(*layered).views_rendered, 6u) << "the point light's cube";
   scene.scene.world.get_mut<ecs::LocalTransform>(crate).translation.x = 1.6f;
-  layered->set_shadow_raster(shadows::ShadowRaster::compute);
+  layered->renderer().set_shadow_raster(shadows::ShadowRaster::compute);
   EXPECT_EQ(draw(*layered).views_moving_only, 2u) << "the maps alone";
   const std::vector<float> moved = view_depths(context, *layered);
 
-  const std::unique_ptr<sandbox::SandboxFrame> fresh = frame_of(scene, shadows::ShadowRaster::compute);
+  const std::unique_ptr<Frame> fresh = frame_of(scene, shadows::ShadowRaster::compute);
   draw(*fresh);
   const std::vector<float> everything = view_depths(context, *fresh);
   ASSERT_EQ(moved.size(), everything.size());

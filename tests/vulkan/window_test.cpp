@@ -36,9 +36,9 @@ sandbox::FrameResult render_until_rendered(sandbox::WindowSession& session) {
 
 TEST_F(WindowTest, SwapchainFollowsWindowResize) {
   sandbox::Options options;
-  options.width = 200;
-  options.height = 150;
-  options.validation = true;
+  options.frame.width = 200;
+  options.frame.height = 150;
+  options.frame.validation = true;
   sandbox::WindowSession session(options);
   ASSERT_EQ(render_until_rendered(session), sandbox::FrameResult::rendered);
   EXPECT_EQ(session.swapchain_extent().width, 200u);
@@ -58,9 +58,9 @@ TEST_F(WindowTest, SwapchainFollowsWindowResize) {
 // zero-sized swapchain test below.
 TEST_F(WindowTest, TheSandboxSurvivesResizeMinimizeAndRestore) {
   sandbox::Options options;
-  options.width = 200;
-  options.height = 150;
-  options.validation = true;
+  options.frame.width = 200;
+  options.frame.height = 150;
+  options.frame.validation = true;
   options.ui = true;
   sandbox::WindowSession session(options);
   ASSERT_EQ(render_until_rendered(session), sandbox::FrameResult::rendered);

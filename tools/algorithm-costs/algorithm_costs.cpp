@@ -1,11 +1,11 @@
 // shadowgraph-algorithm-costs: the GPU cost of each shadow algorithm, per shadowed light, on a
-// sandbox scene (issue 6's comparison of the five algorithms).
+// scene (the comparison of the five algorithms).
 //
 // For each algorithm it renders the scene with every light forced to it (--algorithm), and once
 // with shadows off; the lighting passes' extra time over "off" (every pass but the shadow maps),
 // divided by the lights that cast a shadow, is the algorithm's cost per light at that resolution. Shadow-map
-// passes do not depend on the algorithm and are reported once. Prints a Markdown table; every sandbox option
-// applies.
+// passes do not depend on the algorithm and are reported once. Prints a Markdown table; every frame setting
+// (systems/frame/frame_settings.h) applies.
 #include <cstdio>
 #include <exception>
 #include <optional>
@@ -15,44 +15,45 @@
 #include <CLI/CLI.hpp>
 
 #include "rendergraph/device/context.h"
-#include "sandbox/frame_cost.h"
-#include "sandbox/options.h"
+#include "systems/frame/command_line.h"
+#include "systems/frame/frame_cost.h"
+#include "systems/frame/frame_settings.h"
 
-using sg::sandbox::FrameCost;
-using sg::sandbox::Options;
+using sg::FrameCost;
+using sg::FrameSettings;
 
 int main(int argc, char** argv) {
-  Options options;
-  options.width = 640;
-  options.height = 360;
+  FrameSettings settings;
+  settings.width = 640;
+  settings.height = 360;
   uint32_t frames = 20;
-  CLI::App app{"Measures each shadow algorithm's GPU cost per light on a sandbox scene."};
-  sg::sandbox::add_options(app, options);
+  CLI::App app{"Measures each shadow algorithm's GPU cost per light on a scene."};
+  sg::add_settings(app, sg::frame_settings_table(), settings);
   app.add_option("--timed-frames", frames, "Frames per algorithm (the median is reported)")
       ->check(CLI::Range(3u, 100000u))
       ->capture_default_str();
-  if (const std::optional<int> exit_code = sg::sandbox::parse_command_line(app, argc, argv, options)) {
+  if (const std::optional<int> exit_code = sg::parse_command_line(app, argc, argv)) {
     return *exit_code;
   }
   try {
-    sg::vk::VulkanContext context(sg::sandbox::context_options(options));
+    sg::vk::VulkanContext context(sg::context_options(settings));
     std::printf("device: %s, %ux%u, scene %s, %u frames per row\n\n", context.device_name().c_str(),
-                options.width, options.height, options.scene.c_str(), frames);
-    Options off = options;
-    off.shadows = false;
-    const FrameCost base = sg::sandbox::measure_frame_cost(context, off, frames);
+                settings.width, settings.height, settings.scene.c_str(), frames);
+    FrameSettings off = settings;
+    off.renderer.lights.shadows = false;
+    const FrameCost base = sg::measure_frame_cost(context, off, frames);
     std::printf(
         "| algorithm | lighting passes (ms) | over shadows off (ms) | per shadowed light (ms) | shadow maps "
         "(ms) | GPU frame (ms) |\n");
     std::printf("|---|---:|---:|---:|---:|---:|\n");
     std::printf("| off | %.3f | - | - | - | %.3f |\n", base.lighting_ms, base.frame_ms);
     for (const sg::scene::ShadowAlgorithm algorithm : sg::scene::all_shadow_algorithms) {
-      Options run = options;
+      FrameSettings run = settings;
       run.algorithm = algorithm;
-      const FrameCost m = sg::sandbox::measure_frame_cost(context, run, frames);
+      const FrameCost m = sg::measure_frame_cost(context, run, frames);
       const double extra = m.lighting_ms - base.lighting_ms;
       std::printf("| %s | %.3f | %.3f | %.4f | %.3f | %.3f |\n",
-                  std::string(sg::scene::to_string(algorithm)).c_str(), m.lighting_ms, extra,
+                  std::string(sg::to_string(algorithm)).c_str(), m.lighting_ms, extra,
                   m.shadowed_lights ? extra / m.shadowed_lights : 0.0, m.shadow_maps_ms, m.frame_ms);
       std::fflush(stdout);
     }

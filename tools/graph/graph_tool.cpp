@@ -1,10 +1,10 @@
-// shadowgraph-graph: renders a few headless frames of a sandbox scene and writes the frame's
+// shadowgraph-graph: renders a few headless frames of a scene and writes the frame's
 // compiled render graph as Graphviz DOT and as JSON (with the last timed frame's per-pass GPU
 // milliseconds), plus a PNG of the DOT when Graphviz's `dot` is installed.
 //
 //   shadowgraph-graph --scene default --out frame     -> frame.dot, frame.json, frame.png
 //
-// Every sandbox option (scene, size, overlay, device...) applies.
+// Every frame setting (scene, size, lighting, device...; systems/frame/frame_settings.h) applies.
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -17,11 +17,11 @@
 #include "rendergraph/core/dump.h"
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/frame_ring.h"
-#include "sandbox/gpu_time_log.h"
-#include "sandbox/headless_frames.h"
-#include "sandbox/options.h"
-#include "sandbox/sandbox_frame.h"
-#include "sandbox/scene_setup.h"
+#include "systems/frame/command_line.h"
+#include "systems/frame/frame.h"
+#include "systems/frame/gpu_time_log.h"
+#include "systems/frame/headless_frames.h"
+#include "systems/frame/scene_view.h"
 
 namespace {
 
@@ -37,28 +37,31 @@ bool dot_available() { return std::system("command -v dot >/dev/null 2>&1") == 0
 }  // namespace
 
 int main(int argc, char** argv) {
-  sg::sandbox::Options options;
-  options.width = 640;
-  options.height = 360;
+  sg::FrameSettings settings;
+  settings.width = 640;
+  settings.height = 360;
   std::string out = "frame";
-  CLI::App app{"Writes the sandbox frame's compiled render graph as DOT, JSON and PNG."};
-  sg::sandbox::add_options(app, options);
+  uint32_t frame_count = 0;
+  CLI::App app{"Writes the frame's compiled render graph as DOT, JSON and PNG."};
+  sg::add_settings(app, sg::frame_settings_table(), settings);
+  app.add_option("--frames", frame_count, "Frames to render before the dump (0: frames in flight + 1)")
+      ->check(CLI::Range(0u, 100000u))
+      ->capture_default_str();
   app.add_option("--out", out, "Output path without extension")->capture_default_str();
-  if (const std::optional<int> exit_code = sg::sandbox::parse_command_line(app, argc, argv, options)) {
+  if (const std::optional<int> exit_code = sg::parse_command_line(app, argc, argv)) {
     return *exit_code;
   }
 
   try {
-    sg::sandbox::SandboxScene scene =
-        sg::sandbox::load_sandbox_scene(options, float(options.width) / float(options.height));
-    sg::vk::VulkanContext context(sg::sandbox::context_options(options));
+    sg::SceneView view = sg::load_scene_view(settings, float(settings.width) / float(settings.height));
+    sg::vk::VulkanContext context(sg::context_options(settings));
     sg::vk::FrameRing frames(context);
-    sg::sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
-    frame.resize({options.width, options.height});
+    sg::Frame frame(context, view, settings, frames.frames_in_flight());
+    frame.resize({settings.width, settings.height});
     // A few frames, so that the dumped plan is one the cache served, as in a running sandbox.
-    sg::sandbox::GpuTimeLog gpu_times;
-    sg::sandbox::render_headless_frames(frame, frames, options.frames.value_or(frames.frames_in_flight() + 1),
-                                        gpu_times);
+    sg::GpuTimeLog gpu_times;
+    sg::render_headless_frames(frame, frames, frame_count > 0 ? frame_count : frames.frames_in_flight() + 1,
+                               gpu_times);
 
     // The last frame's graph and plan; its timings when they are that frame's.
     const auto& timings = frame.executor().latest_timings();

@@ -71,22 +71,17 @@ void set_intensity(ecs::World& world, ecs::Entity entity, float intensity) {
   with_light(world, entity, [&](auto& light) { light.intensity = intensity; });
 }
 
-sandbox::Options frame_options(sandbox::Options options) {
-  options.view = LightingView::shadows;
-  options.animate = false;  // the reference is traced against the scene as it stands
-  options.ui = false;
-  options.depth_overlay = false;
-  options.light_heatmap = false;
-  return options;
+FrameSettings shadow_view(FrameSettings settings) {
+  settings.renderer.view = LightingView::shadows;
+  settings.animate = false;  // the reference is traced against the scene as it stands
+  return settings;
 }
 
 }  // namespace
 
-EngineShade::EngineShade(vk::VulkanContext& context, sandbox::SandboxScene& scene,
-                         const sandbox::Options& options)
+EngineShade::EngineShade(vk::VulkanContext& context, SceneView& scene, const FrameSettings& settings)
     : context_(context), scene_(scene), ring_(context) {
-  const sandbox::Options settings = frame_options(options);
-  frame_ = std::make_unique<sandbox::SandboxFrame>(context, scene, settings, ring_.frames_in_flight());
+  frame_ = std::make_unique<Frame>(context, scene, shadow_view(settings), ring_.frames_in_flight());
   frame_->resize({settings.width, settings.height});
   frame_->capture_depth();
   const ecs::World& world = scene.scene.world;

@@ -1,5 +1,5 @@
 #pragma once
-// The engine's shadow of one light at a time, measured from the sandbox's own frame: the
+// The engine's shadow of one light at a time, measured from the engine's own frame: the
 // shadow-only view (LightingView::shadows: white diffuse surfaces, no ambient, the shadow at full
 // density) rendered with every other light dark, once with the light's shadow and once without.
 // In linear light the ratio of the two is the light's visibility, 1 - shade, at every pixel the
@@ -10,9 +10,9 @@
 
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
-#include "sandbox/options.h"
-#include "sandbox/sandbox_frame.h"
-#include "sandbox/scene_setup.h"
+#include "systems/frame/frame.h"
+#include "systems/frame/frame_settings.h"
+#include "systems/frame/scene_view.h"
 #include "systems/scene/shadow_settings.h"
 #include "tools/reference/reference_lights.h"
 
@@ -26,9 +26,9 @@ struct EngineVisibility {
 
 class EngineShade {
  public:
-  // Renders `scene` (animation off) at options.width x options.height. The scene's lights are
+  // Renders `scene` (animation off) at settings.width x settings.height. The scene's lights are
   // changed while a light is isolated and restored when this is destroyed.
-  EngineShade(vk::VulkanContext& context, sandbox::SandboxScene& scene, const sandbox::Options& options);
+  EngineShade(vk::VulkanContext& context, SceneView& scene, const FrameSettings& settings);
   ~EngineShade();
   EngineShade(const EngineShade&) = delete;
   EngineShade& operator=(const EngineShade&) = delete;
@@ -49,9 +49,9 @@ class EngineShade {
   std::vector<float> render();
 
   vk::VulkanContext& context_;
-  sandbox::SandboxScene& scene_;
+  SceneView& scene_;
   vk::FrameRing ring_;
-  std::unique_ptr<sandbox::SandboxFrame> frame_;
+  std::unique_ptr<Frame> frame_;
   uint64_t frames_ = 0;
   struct SavedLight {
     ecs::Entity entity;

@@ -1,6 +1,6 @@
 // shadowgraph-reference: how far each shadow algorithm is from ray-traced visibility, light by
-// light, on any scene the sandbox opens (run_reference.h says how). Every sandbox option applies
-// (scene, camera, size, device); the frame is the headless sandbox's with animation off.
+// light, on any scene the sandbox opens (run_reference.h says how). Every frame setting applies
+// (scene, camera, size, device: systems/frame/frame_settings.h); animation is off.
 #include <cstdio>
 #include <exception>
 #include <optional>
@@ -10,22 +10,23 @@
 #include <CLI/CLI.hpp>
 
 #include "rendergraph/device/context.h"
-#include "sandbox/options.h"
+#include "systems/frame/command_line.h"
+#include "systems/frame/frame_settings.h"
 #include "tools/reference/report.h"
 #include "tools/reference/run_reference.h"
 
 int main(int argc, char** argv) {
-  sg::sandbox::Options options;
-  options.width = 640;
-  options.height = 360;
+  sg::FrameSettings frame;
+  frame.width = 640;
+  frame.height = 360;
   sg::reference::ReferenceSettings settings;
   std::vector<std::string> algorithm_names;
   std::string json_path = "reference.json";
   settings.image_folder = "reference";
   settings.cost_frames = 10;
 
-  CLI::App app{"Compares each shadow algorithm with a ray-traced (Embree) reference on a sandbox scene."};
-  sg::sandbox::add_options(app, options);
+  CLI::App app{"Compares each shadow algorithm with a ray-traced (Embree) reference on a scene."};
+  sg::add_settings(app, sg::frame_settings_table(), frame);
   app.add_option("--algorithms", algorithm_names, "Algorithms to compare (default: all five)")
       ->delimiter(',')
       ->check(CLI::IsMember({"hard", "pcf", "noise", "pcss", "pcss_noise"}));
@@ -58,13 +59,13 @@ int main(int argc, char** argv) {
                  "Frames per algorithm for the GPU cost on the whole scene (0: not measured)")
       ->check(CLI::Range(0u, 100000u))
       ->capture_default_str();
-  if (const std::optional<int> exit_code = sg::sandbox::parse_command_line(app, argc, argv, options)) {
+  if (const std::optional<int> exit_code = sg::parse_command_line(app, argc, argv)) {
     return *exit_code;
   }
   if (!algorithm_names.empty()) {
     settings.algorithms.clear();
     for (const std::string& name : algorithm_names) {
-      settings.algorithms.push_back(*sg::scene::parse_shadow_algorithm(name));
+      settings.algorithms.push_back(*sg::parse_enum<sg::scene::ShadowAlgorithm>(name));
     }
   }
   if (settings.cost_frames > 0 && settings.cost_frames < 3) {
@@ -72,9 +73,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    sg::vk::VulkanContext context(sg::sandbox::context_options(options));
+    sg::vk::VulkanContext context(sg::context_options(frame));
     const sg::reference::ReferenceReport report =
-        sg::reference::run_reference(context, options, settings, [](const std::string& line) {
+        sg::reference::run_reference(context, frame, settings, [](const std::string& line) {
           std::printf("%s\n", line.c_str());
           std::fflush(stdout);
         });

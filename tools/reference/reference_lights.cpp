@@ -30,16 +30,6 @@ void collect(const scene::Scene& scene, LightType type, std::vector<ReferenceLig
 
 }  // namespace
 
-std::string_view to_string(LightType type) {
-  switch (type) {
-    case LightType::point: return "point";
-    case LightType::spot: return "spot";
-    case LightType::directional: return "directional";
-    case LightType::cylinder: return "cylinder";
-  }
-  return "?";
-}
-
 std::vector<ReferenceLight> shadowed_lights(const scene::Scene& scene) {
   std::vector<ReferenceLight> out;
   collect<scene::SpotLight>(scene, LightType::spot, out);

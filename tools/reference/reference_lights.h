@@ -7,13 +7,19 @@
 #include <glm/glm.hpp>
 
 #include "ecs/entity.h"
+#include "systems/scene/enum_names.h"
 #include "systems/scene/scene.h"
 
 namespace sg::reference {
 
 enum class LightType { point, spot, directional, cylinder };
 
-std::string_view to_string(LightType type);
+constexpr EnumNames<LightType, 4> enum_names(LightType) {
+  return {{{LightType::point, "point"},
+           {LightType::spot, "spot"},
+           {LightType::directional, "directional"},
+           {LightType::cylinder, "cylinder"}}};
+}
 
 struct ReferenceLight {
   ecs::Entity entity;

@@ -34,10 +34,9 @@ void print_tables(std::FILE* out, const ReferenceReport& report) {
       const ShadowMetrics& m = run.metrics;
       std::fprintf(out, "| %s | %s | %s | %u | %.2f%% | %.3f | %.3f | %.3f | %.3f | %.2f%% | %llu |\n",
                    light.name.c_str(), std::string(to_string(light.type)).c_str(),
-                   std::string(scene::to_string(run.algorithm)).c_str(), run.resolution,
-                   100.0 * m.misclassified, m.penumbra.mean_absolute, m.penumbra.rms,
-                   m.umbra_and_lit.mean_absolute, m.umbra_and_lit.rms, 100.0 * m.acne,
-                   static_cast<unsigned long long>(m.measured));
+                   std::string(to_string(run.algorithm)).c_str(), run.resolution, 100.0 * m.misclassified,
+                   m.penumbra.mean_absolute, m.penumbra.rms, m.umbra_and_lit.mean_absolute,
+                   m.umbra_and_lit.rms, 100.0 * m.acne, static_cast<unsigned long long>(m.measured));
     }
   }
   if (report.costs.empty()) return;
@@ -57,7 +56,7 @@ nlohmann::json to_json(const ReferenceReport& report) {
     nlohmann::json runs = nlohmann::json::array();
     for (const AlgorithmRun& run : light.runs) {
       const ShadowMetrics& m = run.metrics;
-      runs.push_back({{"algorithm", scene::to_string(run.algorithm)},
+      runs.push_back({{"algorithm", to_string(run.algorithm)},
                       {"requested_resolution", run.requested_resolution},
                       {"resolution", run.resolution},
                       {"measured", m.measured},

@@ -8,8 +8,8 @@
 
 #include "ecs/thread_pool.h"
 #include "rendergraph/device/context.h"
-#include "sandbox/png.h"
-#include "sandbox/scene_setup.h"
+#include "systems/frame/png.h"
+#include "systems/frame/scene_view.h"
 #include "tools/reference/engine_shade.h"
 #include "tools/reference/ray_scene.h"
 #include "tools/reference/scene_triangles.h"
@@ -87,7 +87,7 @@ LightReport compare_light(EngineShade& engine, const SurfacePoints& points, cons
       }
       const ShadowMetrics metrics = shadow_metrics(images, settings.edge_band);
       result.runs.push_back({algorithm, resolution, render.resolution, metrics});
-      const std::string name(scene::to_string(algorithm));
+      const std::string name(to_string(algorithm));
       std::snprintf(line, sizeof(line),
                     "  %-10s map %4u: misclassified %.2f%%, penumbra MAE %.3f, acne %.2f%%", name.c_str(),
                     render.resolution, 100.0 * metrics.misclassified, metrics.penumbra.mean_absolute,
@@ -95,49 +95,47 @@ LightReport compare_light(EngineShade& engine, const SurfacePoints& points, cons
       say(progress, line);
       if (settings.image_folder.empty()) continue;
       if (result.runs.size() == 1) {
-        sandbox::write_png(stem + "_reference_hard.png", visibility_image(w, h, hard, images.measured));
-        sandbox::write_png(stem + "_reference_soft.png", visibility_image(w, h, soft, images.measured));
+        write_png(stem + "_reference_hard.png", visibility_image(w, h, hard, images.measured));
+        write_png(stem + "_reference_soft.png", visibility_image(w, h, soft, images.measured));
       }
       const std::string run = stem + "_" + name + "_" + std::to_string(resolution);
-      sandbox::write_png(run + "_engine.png", visibility_image(w, h, render.visibility, images.measured));
+      write_png(run + "_engine.png", visibility_image(w, h, render.visibility, images.measured));
       // Hard shadows are compared with the hard reference, the filtered ones with the soft.
       const std::vector<float>& truth = algorithm == scene::ShadowAlgorithm::hard ? hard : soft;
-      sandbox::write_png(run + "_difference.png",
-                         difference_image(w, h, render.visibility, truth, images.measured));
+      write_png(run + "_difference.png", difference_image(w, h, render.visibility, truth, images.measured));
     }
   }
   return result;
 }
 
-std::vector<AlgorithmCost> measure_costs(vk::VulkanContext& context, const sandbox::Options& options,
+std::vector<AlgorithmCost> measure_costs(vk::VulkanContext& context, const FrameSettings& frame,
                                          const ReferenceSettings& settings,
                                          const std::function<void(const std::string&)>& progress) {
   // Every map redrawn every frame: the cost of a frame whose lights or casters all move.
-  sandbox::Options timed = options;
-  timed.shadow_cache = false;
-  timed.view = LightingView::lit;
+  FrameSettings timed = frame;
+  timed.renderer.cache_shadows = false;
+  timed.renderer.view = LightingView::lit;
   std::vector<AlgorithmCost> out;
-  sandbox::Options off = timed;
-  off.shadows = false;
+  FrameSettings off = timed;
+  off.renderer.lights.shadows = false;
   say(progress, "cost: shadows off");
-  out.push_back({"off", sandbox::measure_frame_cost(context, off, settings.cost_frames)});
+  out.push_back({"off", measure_frame_cost(context, off, settings.cost_frames)});
   for (const scene::ShadowAlgorithm algorithm : settings.algorithms) {
-    sandbox::Options run = timed;
+    FrameSettings run = timed;
     run.algorithm = algorithm;
-    say(progress, "cost: " + std::string(scene::to_string(algorithm)));
-    out.push_back({std::string(scene::to_string(algorithm)),
-                   sandbox::measure_frame_cost(context, run, settings.cost_frames)});
+    say(progress, "cost: " + std::string(to_string(algorithm)));
+    out.push_back(
+        {std::string(to_string(algorithm)), measure_frame_cost(context, run, settings.cost_frames)});
   }
   return out;
 }
 
 }  // namespace
 
-ReferenceReport run_reference(vk::VulkanContext& context, const sandbox::Options& options,
+ReferenceReport run_reference(vk::VulkanContext& context, const FrameSettings& frame,
                               const ReferenceSettings& settings,
                               const std::function<void(const std::string&)>& progress) {
-  sandbox::SandboxScene scene =
-      sandbox::load_sandbox_scene(options, float(options.width) / float(options.height));
+  SceneView scene = load_scene_view(frame, float(frame.width) / float(frame.height));
   for (const std::string& name : settings.no_shadow_from) {
     if (stop_casting(scene.scene, name) == 0) {
       throw std::runtime_error("scene '" + scene.scene.name + "' has no shadow-casting mesh named like '" +
@@ -149,9 +147,9 @@ ReferenceReport run_reference(vk::VulkanContext& context, const sandbox::Options
 
   ReferenceReport report;
   report.device = context.device_name();
-  report.scene = options.scene;
-  report.width = options.width;
-  report.height = options.height;
+  report.scene = frame.scene;
+  report.width = frame.width;
+  report.height = frame.height;
   report.soft_samples = settings.soft_samples;
   report.edge_band = settings.edge_band;
 
@@ -162,7 +160,7 @@ ReferenceReport run_reference(vk::VulkanContext& context, const sandbox::Options
   const RayScene surfaces(triangles.surfaces);
   ecs::ThreadPool pool;
   {
-    EngineShade engine(context, scene, options);
+    EngineShade engine(context, scene, frame);
     const SurfacePoints points = surface_points(engine.depth(), scene.pose, scene.lens, surfaces, pool);
     for (size_t l = 0; l < lights.size(); ++l) {
       say(progress, "light " + std::to_string(l + 1) + "/" + std::to_string(lights.size()) + " '" +
@@ -170,7 +168,7 @@ ReferenceReport run_reference(vk::VulkanContext& context, const sandbox::Options
       report.lights.push_back(compare_light(engine, points, casters, lights[l], settings, pool, progress));
     }
   }
-  if (settings.cost_frames > 0) report.costs = measure_costs(context, options, settings, progress);
+  if (settings.cost_frames > 0) report.costs = measure_costs(context, frame, settings, progress);
   return report;
 }
 

@@ -1,12 +1,12 @@
 #pragma once
-// shadowgraph-reference's run: the engine's shadows of a sandbox scene, light by light and
+// shadowgraph-reference's run: the engine's shadows of a scene, light by light and
 // algorithm by algorithm, against ray-traced visibility from the same surface points.
 //
 //   1. render the scene's frame and take its depth buffer back to world-space surface points;
 //   2. per shadowed light: trace the hard and the soft reference (visibility.h), then render the
 //      light alone once without its shadow and once per (algorithm, resolution) with it
 //      (engine_shade.h), and compare (metrics.h); optionally write the pictures;
-//   3. optionally, the GPU cost of each algorithm on the whole scene (sandbox/frame_cost.h).
+//   3. optionally, the GPU cost of each algorithm on the whole scene (systems/frame/frame_cost.h).
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "rendergraph/device/fwd.h"
-#include "sandbox/frame_cost.h"
-#include "sandbox/options.h"
+#include "systems/frame/frame_cost.h"
+#include "systems/frame/frame_settings.h"
 #include "systems/scene/shadow_settings.h"
 #include "tools/reference/metrics.h"
 #include "tools/reference/reference_lights.h"
@@ -53,7 +53,7 @@ struct LightReport {
 
 struct AlgorithmCost {
   std::string algorithm;  // a ShadowAlgorithm's name, or "off" (no shadows)
-  sandbox::FrameCost cost;
+  FrameCost cost;
 };
 
 struct ReferenceReport {
@@ -70,7 +70,7 @@ struct ReferenceReport {
 // Runs the whole comparison; `progress` (may be empty) hears one line per step. Throws
 // std::exception with a message for a scene that cannot be loaded or has no shadowed light
 // left after the filters.
-ReferenceReport run_reference(vk::VulkanContext& context, const sandbox::Options& options,
+ReferenceReport run_reference(vk::VulkanContext& context, const FrameSettings& frame,
                               const ReferenceSettings& settings,
                               const std::function<void(const std::string&)>& progress = {});
 

@@ -1,14 +1,14 @@
 #pragma once
-// The scene the sandbox renders and the view it starts from, chosen from the command line.
+// The scene a frame renders and the view it starts from, chosen by the frame settings.
 #include <string>
 
-#include "sandbox/options.h"
+#include "systems/frame/frame_settings.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
 
-namespace sg::sandbox {
+namespace sg {
 
-struct SandboxScene {
+struct SceneView {
   scene::Scene scene;
   scene::CameraPose pose;
   scene::Camera lens;
@@ -17,15 +17,17 @@ struct SandboxScene {
   std::string camera_source;
 };
 
-// Loads options.scene with options.scene_params (scene::load_scene) and picks the view:
+// Loads settings.scene with settings.scene_params (scene::load_scene) and picks the view:
 // - pose: --camera when given; else the scene's first camera (eye at its world translation,
 //   looking down its world -Z); else scene::frame_bounds of the scene's bounds, using the
 //   lens's field of view and `aspect` (viewport width / height).
 // - lens: the scene's first camera's, also under --camera (the file's field of view belongs to
 //   the scene, --camera only moves the eye); scene::Camera{} when the scene has none.
+// Then the saved edits beside the scene (scene_sidecar.h; with settings.sidecar, the pose only
+// without --camera), then settings.algorithm for every light.
 // A scene without any light gets a directional "sandbox sun" with a shadow (and a warning), so
 // that files that bring no lights still show their shapes and shadows.
 // Throws scene::SceneError when the scene cannot be loaded.
-SandboxScene load_sandbox_scene(const Options& options, float aspect);
+SceneView load_scene_view(const FrameSettings& settings, float aspect);
 
-}  // namespace sg::sandbox
+}  // namespace sg

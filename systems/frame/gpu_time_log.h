@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "rendergraph/vulkan/graph_executor.h"
-#include "sandbox/run_stats.h"
+#include "systems/frame/time_summary.h"
 
-namespace sg::sandbox {
+namespace sg {
 
 class GpuTimeLog {
  public:
@@ -31,4 +31,4 @@ class GpuTimeLog {
   std::vector<PassSamples> passes_;
 };
 
-}  // namespace sg::sandbox
+}  // namespace sg

@@ -1,13 +1,13 @@
-#include "sandbox/headless_frames.h"
+#include "systems/frame/headless_frames.h"
 
 #include <chrono>
 #include <cstdio>
 
 #include "rendergraph/device/frame_ring.h"
-#include "sandbox/gpu_time_log.h"
-#include "sandbox/sandbox_frame.h"
+#include "systems/frame/frame.h"
+#include "systems/frame/gpu_time_log.h"
 
-namespace sg::sandbox {
+namespace sg {
 namespace {
 
 double milliseconds(std::chrono::steady_clock::duration elapsed) {
@@ -16,8 +16,13 @@ double milliseconds(std::chrono::steady_clock::duration elapsed) {
 
 }  // namespace
 
-RunRecord render_headless_frames(SandboxFrame& frame, vk::FrameRing& ring, uint32_t count,
-                                 GpuTimeLog& gpu_times, bool progress, uint64_t first_frame) {
+void RunRecord::append(const RunRecord& later) {
+  cpu_frame_ms.insert(cpu_frame_ms.end(), later.cpu_frame_ms.begin(), later.cpu_frame_ms.end());
+  wall_frame_ms.insert(wall_frame_ms.end(), later.wall_frame_ms.begin(), later.wall_frame_ms.end());
+}
+
+RunRecord render_headless_frames(Frame& frame, vk::FrameRing& ring, uint32_t count, GpuTimeLog& gpu_times,
+                                 bool progress, uint64_t first_frame) {
   constexpr double frame_seconds = 1.0 / 60.0;
   RunRecord record{{}, {}, &gpu_times};
   auto previous_start = std::chrono::steady_clock::now();
@@ -47,4 +52,4 @@ RunRecord render_headless_frames(SandboxFrame& frame, vk::FrameRing& ring, uint3
   return record;
 }
 
-}  // namespace sg::sandbox
+}  // namespace sg

@@ -1,4 +1,4 @@
-#include "sandbox/scene_sidecar.h"
+#include "systems/frame/scene_sidecar.h"
 
 #include <fstream>
 #include <stdexcept>
@@ -14,7 +14,7 @@
 #include "systems/scene/scene_builder.h"
 #include "systems/scene/shadow_settings.h"
 
-namespace sg::sandbox {
+namespace sg {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -67,7 +67,7 @@ Json light_json(const scene::Scene& scene, const std::string& name, ecs::Entity 
                   {"outer_radius", beam->outer_radius}});
   }
   const scene::ShadowSettings& s = world.get<scene::ShadowSettings>(entity);
-  light["shadow"] = {{"algorithm", std::string(scene::to_string(s.algorithm))},
+  light["shadow"] = {{"algorithm", std::string(to_string(s.algorithm))},
                      {"constant_bias", s.constant_bias},
                      {"slope_bias", s.slope_bias},
                      {"pcf_radius", s.pcf_radius},
@@ -154,7 +154,7 @@ class Reader {
       if (!s.is_object()) fail(where, "is not an object");
       if (s.contains("algorithm")) {
         const auto algorithm = s.at("algorithm").is_string()
-                                   ? scene::parse_shadow_algorithm(s.at("algorithm").get<std::string>())
+                                   ? parse_enum<scene::ShadowAlgorithm>(s.at("algorithm").get<std::string>())
                                    : std::nullopt;
         if (!algorithm) fail(where + ".algorithm", "is not hard, pcf, noise, pcss or pcss_noise");
         light.shadow.algorithm = *algorithm;
@@ -263,4 +263,4 @@ void apply_sidecar(const std::filesystem::path& path, scene::Scene& scene, scene
   ecs::update_world_transforms(scene.world, 0);
 }
 
-}  // namespace sg::sandbox
+}  // namespace sg

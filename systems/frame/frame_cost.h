@@ -1,12 +1,12 @@
 #pragma once
-// The GPU cost of the sandbox's frame under given options, split into shadow-map passes and the
+// The GPU cost of the frame under given settings, split into shadow-map passes and the
 // rest: what the algorithm-costs and reference tools compare between shadow algorithms.
 #include <cstdint>
 
 #include "rendergraph/device/fwd.h"
-#include "sandbox/options.h"
+#include "systems/frame/frame_settings.h"
 
-namespace sg::sandbox {
+namespace sg {
 
 struct FrameCost {
   double lighting_ms = 0.0;      // the median per frame of every pass but the shadow-map passes
@@ -15,8 +15,8 @@ struct FrameCost {
   uint32_t shadowed_lights = 0;  // lights with a shadow map in the last frame
 };
 
-// Loads options.scene and renders `frames` headless frames of it (render_headless_frames), after
+// Loads settings.scene and renders `frames` headless frames of it (render_headless_frames), after
 // half as many (at least 2) that warm the device up and are not counted.
-FrameCost measure_frame_cost(vk::VulkanContext& context, const Options& options, uint32_t frames);
+FrameCost measure_frame_cost(vk::VulkanContext& context, const FrameSettings& settings, uint32_t frames);
 
-}  // namespace sg::sandbox
+}  // namespace sg

@@ -1,11 +1,11 @@
-#include "sandbox/depth_capture.h"
+#include "systems/frame/depth_capture.h"
 
 #include <stdexcept>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 
-namespace sg::sandbox {
+namespace sg {
 namespace {
 
 constexpr rg::ResourceState transfer_source{rg::PipelineStage::all_transfer, rg::Access::transfer_read,
@@ -46,4 +46,4 @@ vk::DepthImage DepthCapture::read(vk::VulkanContext& context) const {
   return vk::read_depth_layer(context, *image_, 0, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
 }
 
-}  // namespace sg::sandbox
+}  // namespace sg

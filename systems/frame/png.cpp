@@ -1,10 +1,10 @@
-#include "sandbox/png.h"
+#include "systems/frame/png.h"
 
 #include <stdexcept>
 
 #include <stb_image_write.h>
 
-namespace sg::sandbox {
+namespace sg {
 
 void write_png(const std::string& path, const vk::Rgba8Image& image) {
   const int stride = static_cast<int>(image.width * 4);
@@ -15,4 +15,4 @@ void write_png(const std::string& path, const vk::Rgba8Image& image) {
   }
 }
 
-}  // namespace sg::sandbox
+}  // namespace sg

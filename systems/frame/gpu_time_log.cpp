@@ -1,9 +1,9 @@
-#include "sandbox/gpu_time_log.h"
+#include "systems/frame/gpu_time_log.h"
 
 #include <algorithm>
 #include <numeric>
 
-namespace sg::sandbox {
+namespace sg {
 
 void GpuTimeLog::add(const std::optional<vk::FrameTimings>& timings) {
   if (!timings || (last_frame_ && *last_frame_ == timings->frame_number)) return;
@@ -32,4 +32,4 @@ std::vector<PassTime> GpuTimeLog::pass_summaries() const {
   return summaries;
 }
 
-}  // namespace sg::sandbox
+}  // namespace sg

@@ -1,21 +1,21 @@
-#include "sandbox/frame_cost.h"
+#include "systems/frame/frame_cost.h"
 
 #include <algorithm>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/frame_ring.h"
-#include "sandbox/gpu_time_log.h"
-#include "sandbox/headless_frames.h"
-#include "sandbox/sandbox_frame.h"
-#include "sandbox/scene_setup.h"
+#include "systems/frame/frame.h"
+#include "systems/frame/gpu_time_log.h"
+#include "systems/frame/headless_frames.h"
+#include "systems/frame/scene_view.h"
 
-namespace sg::sandbox {
+namespace sg {
 
-FrameCost measure_frame_cost(vk::VulkanContext& context, const Options& options, uint32_t frames) {
-  SandboxScene scene = load_sandbox_scene(options, float(options.width) / float(options.height));
+FrameCost measure_frame_cost(vk::VulkanContext& context, const FrameSettings& settings, uint32_t frames) {
+  SceneView view = load_scene_view(settings, float(settings.width) / float(settings.height));
   vk::FrameRing ring(context);
-  SandboxFrame frame(context, scene, options, ring.frames_in_flight());
-  frame.resize({options.width, options.height});
+  Frame frame(context, view, settings, ring.frames_in_flight());
+  frame.resize({settings.width, settings.height});
   // The first frames pay for first use (pipelines, memory, and on GPUs clocks rising from idle,
   // which made the first configuration a tool measured look several times slower than the same
   // one measured later): rendered, not counted.
@@ -34,4 +34,4 @@ FrameCost measure_frame_cost(vk::VulkanContext& context, const Options& options,
   return cost;
 }
 
-}  // namespace sg::sandbox
+}  // namespace sg

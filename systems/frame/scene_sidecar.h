@@ -10,7 +10,7 @@
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
 
-namespace sg::sandbox {
+namespace sg {
 
 std::filesystem::path sidecar_path(const std::string& scene);
 
@@ -24,4 +24,4 @@ void save_sidecar(const std::filesystem::path& path, const scene::Scene& scene,
 // for malformed content, leaving the scene unchanged.
 void apply_sidecar(const std::filesystem::path& path, scene::Scene& scene, scene::CameraPose& pose);
 
-}  // namespace sg::sandbox
+}  // namespace sg

@@ -10,7 +10,7 @@
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/graph_imports.h"
 
-namespace sg::sandbox {
+namespace sg {
 
 class DepthCapture {
  public:
@@ -26,4 +26,4 @@ class DepthCapture {
   std::optional<vk::Image> image_;
 };
 
-}  // namespace sg::sandbox
+}  // namespace sg

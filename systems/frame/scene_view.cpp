@@ -1,25 +1,25 @@
-#include "sandbox/scene_setup.h"
+#include "systems/frame/scene_view.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
-#include "sandbox/scene_sidecar.h"
-
-#include <algorithm>
-
+#include "ecs/query.h"
 #include "ecs/transform.h"
 #include "ecs/transform_system.h"
+#include "systems/frame/scene_sidecar.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/scene_builder.h"
 #include "systems/scene/scene_queries.h"
 
-namespace sg::sandbox {
+namespace sg {
 namespace {
 
-std::string scene_camera_source(const Options& options, const scene::Scene& scene, ecs::Entity camera) {
+std::string scene_camera_source(const FrameSettings& settings, const scene::Scene& scene,
+                                ecs::Entity camera) {
   const auto& builtin = scene::builtin_scene_names;
-  if (std::find(builtin.begin(), builtin.end(), options.scene) != builtin.end()) {
+  if (std::find(builtin.begin(), builtin.end(), settings.scene) != builtin.end()) {
     return "built-in camera";
   }
   const scene::Name* name = scene.world.try_get<scene::Name>(camera);
@@ -46,35 +46,41 @@ void add_default_light(scene::Scene& scene) {
 
 }  // namespace
 
-SandboxScene load_sandbox_scene(const Options& options, float aspect) {
-  SandboxScene result{scene::load_scene(options.scene, options.scene_params), {}, {}, {}};
+SceneView load_scene_view(const FrameSettings& settings, float aspect) {
+  SceneView result{scene::load_scene(settings.scene, settings.scene_params), {}, {}, {}};
   add_default_light(result.scene);
   const std::optional<ecs::Entity> camera = scene::first_camera(result.scene);
   if (camera) result.lens = result.scene.world.get<scene::Camera>(*camera);
 
-  if (options.camera) {
-    result.pose = *options.camera;
+  if (settings.camera) {
+    result.pose = *settings.camera;
     result.camera_source = "--camera";
   } else if (camera) {
     result.pose = scene::camera_pose(result.scene.world.get<ecs::WorldTransform>(*camera));
-    result.camera_source = scene_camera_source(options, result.scene, *camera);
+    result.camera_source = scene_camera_source(settings, result.scene, *camera);
   } else {
     result.pose = scene::frame_bounds(scene::scene_bounds(result.scene), result.lens.yfov, aspect);
     result.camera_source = "framed bounds";
   }
   // The user's saved edits, unless the command line names the camera or asks for the scene as is.
-  const std::filesystem::path sidecar = sidecar_path(options.scene);
-  if (options.sidecar && std::filesystem::exists(sidecar)) {
+  const std::filesystem::path sidecar = sidecar_path(settings.scene);
+  if (settings.sidecar && std::filesystem::exists(sidecar)) {
     scene::CameraPose pose = result.pose;
     apply_sidecar(sidecar, result.scene, pose);
-    if (!options.camera) {
+    if (!settings.camera) {
       result.pose = pose;
       result.camera_source = sidecar.string();
     }
     std::printf("shadowgraph: lights%s from %s (--sidecar off ignores it)\n",
-                options.camera ? "" : " and camera", sidecar.string().c_str());
+                settings.camera ? "" : " and camera", sidecar.string().c_str());
+  }
+  // --algorithm sets every light's algorithm once, here: the panels and scripts may change it
+  // afterwards, and a per-frame override would undo their edits.
+  if (settings.algorithm) {
+    result.scene.world.query<scene::ShadowSettings>().for_each(
+        [&](scene::ShadowSettings& shadow) { shadow.algorithm = *settings.algorithm; });
   }
   return result;
 }
 
-}  // namespace sg::sandbox
+}  // namespace sg

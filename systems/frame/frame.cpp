@@ -1,0 +1,158 @@
+#include "systems/frame/frame.h"
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "ecs/transform_system.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/vulkan/pass_recorder.h"
+#include "rendergraph/vulkan/plan_translation.h"
+#include "systems/scene/node_animation.h"
+
+namespace sg {
+namespace {
+
+constexpr rg::ResourceState transfer_source{rg::PipelineStage::all_transfer, rg::Access::transfer_read,
+                                            rg::ImageLayout::transfer_src_optimal};
+
+// Blits the frame onto the swapchain image (scaling if sizes differ) and leaves it presentable.
+void add_present(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHandle frame,
+                 const PresentTarget& target) {
+  // The first use chains with the acquire semaphore's wait at acquire_wait_stage; the contents
+  // of an acquired image are not needed (UNDEFINED).
+  rg::ImageHandle swapchain = imports.import_image(
+      graph, "swapchain", target.image, target.format, target.extent,
+      rg::ResourceState{rg::PipelineStage::all_transfer, rg::Access::none, rg::ImageLayout::undefined},
+      rg::ResourceState{rg::PipelineStage::none, rg::Access::none, rg::ImageLayout::present_src});
+  graph.add_pass(
+      "present",
+      [&](rg::PassBuilder& b) {
+        b.read(frame, rg::Usage::transfer);
+        swapchain = b.write(swapchain, rg::Usage::transfer);
+      },
+      [frame, swapchain, &graph](const vk::PassRecorder& rec) {
+        const rg::ImageDesc& src = graph.resources()[frame.index].image;
+        const rg::ImageDesc& dst = graph.resources()[swapchain.index].image;
+        VkImageBlit region{};
+        region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.srcOffsets[1] = {int32_t(src.width), int32_t(src.height), 1};
+        region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.dstOffsets[1] = {int32_t(dst.width), int32_t(dst.height), 1};
+        vkCmdBlitImage(rec.cmd(), rec.image(frame), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       rec.image(swapchain), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region,
+                       VK_FILTER_LINEAR);
+      });
+}
+
+}  // namespace
+
+Frame::Frame(vk::VulkanContext& context, SceneView& view, const FrameSettings& settings,
+             uint32_t frames_in_flight, FrameExtension extension)
+    : context_(context),
+      view_(view),
+      extension_(std::move(extension)),
+      playing_(settings.animate),
+      renderer_(context, view.scene, frames_in_flight, frame_format, settings.effective_renderer()),
+      executor_(context, frames_in_flight) {}
+
+uint64_t Frame::take_dropped_light_pairs() {
+  return std::exchange(dropped_light_pairs_, 0) + renderer_.drain_dropped_light_pairs();
+}
+
+void Frame::resize(VkExtent2D extent) {
+  image_ = vk::Image(context_, {extent, vk::to_vk(frame_format),
+                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, 1, 1,
+                                VK_IMAGE_VIEW_TYPE_2D, "frame"});
+}
+
+vk::FrameSlot& Frame::begin(vk::FrameRing& ring) {
+  // Woken workers wait for a batch this long before they sleep again: half of it leaves room
+  // for a wait that ends later than the last one did.
+  return ring.begin_frame([this] { renderer_.workers().wake(); }, ecs::ThreadPool::spin_time / 2);
+}
+
+void Frame::record(const vk::FrameSlot& frame, double time_seconds,
+                   const std::optional<PresentTarget>& present) {
+  auto mark = std::chrono::steady_clock::now();
+  const auto timed = [&](std::vector<double>& samples) {
+    const auto now = std::chrono::steady_clock::now();
+    samples.push_back(std::chrono::duration<double, std::milli>(now - mark).count());
+    mark = now;
+  };
+  const double seconds = time_seconds - last_time_seconds_;  // since the last frame
+  last_time_seconds_ = time_seconds;
+  if (extension_.update) extension_.update(seconds);
+  update(seconds);
+  timed(phase_ms_.update);
+  renderer_.gather(std::as_const(view_.scene.world));
+  timed(phase_ms_.gather);
+  renderer_.prepare(frame.slot, view_.pose, view_.lens, image_.extent().width, image_.extent().height);
+  if (extension_.prepare) extension_.prepare(frame.slot);
+  timed(phase_ms_.prepare);
+  const SceneRenderer::CpuSteps& steps = renderer_.cpu_steps();
+  phase_ms_.instances.push_back(steps.instances);
+  phase_ms_.lights.push_back(steps.lights);
+  phase_ms_.schedule.push_back(steps.schedule);
+  phase_ms_.upload.push_back(steps.upload);
+  phase_ms_.views.push_back(steps.views);
+  const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
+  shadow_views_rendered_.push_back(shadows.views_rendered);
+  shadow_views_cached_.push_back(shadows.views_cached);
+  shadow_views_moving_only_.push_back(shadows.views_moving_only);
+  dropped_light_pairs_ += renderer_.dropped_light_pairs();
+  declare_passes(frame.slot, present);
+  timed(phase_ms_.declare);
+  execute(frame);
+  timed(phase_ms_.execute);
+}
+
+double Frame::last_cpu_ms() const {
+  const auto last = [](const std::vector<double>& samples) { return samples.empty() ? 0.0 : samples.back(); };
+  return last(phase_ms_.update) + last(phase_ms_.gather) + last(phase_ms_.prepare) + last(phase_ms_.declare) +
+         last(phase_ms_.execute);
+}
+
+vk::DepthImage Frame::read_captured_depth() const {
+  if (!depth_capture_) throw std::logic_error("Frame::read_captured_depth: capture_depth() was not called");
+  return depth_capture_->read(context_);
+}
+
+void Frame::update(double seconds) {
+  ecs::World& world = view_.scene.world;
+  // Paused, nothing is written, so cached shadow maps stay valid.
+  if (playing_) {
+    animation_seconds_ += seconds;
+    const auto time = static_cast<float>(animation_seconds_);
+    scene::animate_orbits(world, time, &renderer_.workers());
+    scene::animate_bobs(world, time, &renderer_.workers());
+    scene::animate_nodes(world, time);
+  }
+  ecs::update_world_transforms(world, transforms_updated_, &renderer_.workers());
+  transforms_updated_ = world.tick();
+  world.advance_tick();
+}
+
+void Frame::declare_passes(uint32_t slot, const std::optional<PresentTarget>& present) {
+  graph_ = rg::RenderGraph();
+  const rg::ImageHandle frame_image = imports_.import_image(graph_, "frame", image_, transfer_source);
+  const RenderedFrame targets =
+      renderer_.add_passes(graph_, imports_, frame_image, slot, view_.pose, view_.lens);
+  if (depth_capture_) depth_capture_->add_to(context_, graph_, imports_, targets.depth);
+  rg::ImageHandle color = targets.color;
+  if (extension_.add_passes) color = extension_.add_passes(graph_, targets, color, slot);
+  if (present) add_present(graph_, imports_, color, *present);
+}
+
+void Frame::execute(const vk::FrameSlot& frame) {
+  rg::CompileResult compiled = plans_.get_or_compile(graph_);
+  if (!compiled.ok()) {
+    throw std::logic_error("the frame graph does not compile: " + compiled.errors.front().message);
+  }
+  plan_ = compiled.plan;
+  executor_.execute(frame.cmd, frame.slot, frame.frame_number, graph_, plan_, imports_.resources());
+  imports_.remember(*plan_);
+}
+
+}  // namespace sg

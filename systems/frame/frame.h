@@ -1,0 +1,147 @@
+#pragma once
+// The engine's frame. record() runs the frame's five phases, in this order and nowhere else:
+//
+//   1. update   systems that write the world: the application's edits (FrameExtension::update),
+//               animation, then world transforms
+//   2. gather   read-only systems over a const World: drawables and lights into CPU lists
+//   3. prepare  shadow storage, caster culling, this frame slot's GPU buffers and descriptors
+//   4. declare  the frame graph: shadow passes, lighting (SceneRenderer) -> [the application's
+//               passes over the picture] -> [present, to a swapchain image]
+//   5. execute  compile (plans come from a PlanCache: shapes repeat) and record the commands
+//
+// The picture lands in the persistent "frame" image (imported into each graph, left in
+// TRANSFER_SRC), which screenshots read and the present pass blits to the swapchain image.
+//
+//   SceneView view = load_scene_view(settings, aspect);
+//   vk::FrameRing ring(context);
+//   Frame frame(context, view, settings, ring.frames_in_flight());
+//   frame.resize({settings.width, settings.height});
+//   frame.record(frame.begin(ring), seconds);
+//   ring.submit();
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/core/plan_cache.h"
+#include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/frame_ring.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/vulkan/graph_executor.h"
+#include "rendergraph/vulkan/graph_imports.h"
+#include "systems/frame/depth_capture.h"
+#include "systems/frame/frame_settings.h"
+#include "systems/frame/scene_view.h"
+#include "systems/renderer/scene_renderer.h"
+
+namespace sg {
+
+// A swapchain image to present this frame on. The submission must wait for its acquire
+// semaphore at `acquire_wait_stage`.
+struct PresentTarget {
+  VkImage image = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  VkExtent2D extent{};
+};
+inline constexpr VkPipelineStageFlags2 acquire_wait_stage = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+
+// The frame image's format: what screenshots read and the present pass blits.
+inline constexpr rg::Format frame_format = rg::Format::rgba8_srgb;
+
+// What an application adds to the frame (the sandbox: its panels and overlays); each is optional.
+struct FrameExtension {
+  // In the update phase, before the systems: `seconds` since the last frame.
+  std::function<void(double seconds)> update;
+  // In the prepare phase, after the renderer's.
+  std::function<void(uint32_t slot)> prepare;
+  // In the declare phase: passes over the lit picture `color`, returning its newest version.
+  std::function<rg::ImageHandle(rg::RenderGraph& graph, const RenderedFrame& rendered, rg::ImageHandle color,
+                                uint32_t slot)>
+      add_passes;
+};
+
+class Frame {
+ public:
+  // Renders `view` (kept by reference: the application may move the camera and edit the world
+  // between frames) with `settings`' renderer settings and animation.
+  Frame(vk::VulkanContext& context, SceneView& view, const FrameSettings& settings, uint32_t frames_in_flight,
+        FrameExtension extension = {});
+
+  // (Re)creates the frame image. The GPU must not be using the old one (wait idle first).
+  void resize(VkExtent2D extent);
+
+  // ring.begin_frame(), waking the worker threads of record()'s batches shortly before the wait
+  // for the GPU ends: asleep since the last frame, they took longer to wake than the frame's
+  // first batches take to run.
+  vk::FrameSlot& begin(vk::FrameRing& ring);
+  // Runs the frame's phases for the scene at `time_seconds` and records the commands into
+  // `frame.cmd`.
+  void record(const vk::FrameSlot& frame, double time_seconds,
+              const std::optional<PresentTarget>& present = std::nullopt);
+
+  // Whether animation advances with time (the settings' animate to start with).
+  bool playing() const { return playing_; }
+  void set_playing(bool playing) { playing_ = playing; }
+
+  const vk::Image& image() const { return image_; }
+  SceneRenderer& renderer() { return renderer_; }
+  const SceneRenderer& renderer() const { return renderer_; }
+  const rg::RenderGraph& graph() const { return graph_; }
+  const std::shared_ptr<const rg::CompiledPlan>& plan() const { return plan_; }
+  vk::GraphExecutor& executor() { return executor_; }
+  const vk::GraphExecutor& executor() const { return executor_; }
+  // From the next record() on, each frame also copies the camera's depth buffer into an image
+  // kept after the frame (depth_capture.h), which read_captured_depth returns once the frame's
+  // commands have completed.
+  void capture_depth() { depth_capture_.emplace(); }
+  vk::DepthImage read_captured_depth() const;
+
+  // Per recorded frame: CPU milliseconds of each phase of record(), and of the renderer's steps
+  // within gather and prepare (SceneRenderer::CpuSteps).
+  struct PhaseTimes {
+    std::vector<double> update, gather, prepare, declare, execute;
+    std::vector<double> instances, lights, schedule, upload, views;
+  };
+  const PhaseTimes& phase_ms() const { return phase_ms_; }
+  // The last recorded frame's CPU milliseconds, all phases.
+  double last_cpu_ms() const;
+  // Per recorded frame: shadow views (2D maps, cube faces) drawn, and kept from earlier frames.
+  const std::vector<double>& shadow_views_rendered() const { return shadow_views_rendered_; }
+  const std::vector<double>& shadow_views_cached() const { return shadow_views_cached_; }
+  const std::vector<double>& shadow_views_moving_only() const { return shadow_views_moving_only_; }
+  // With the GPU idle: the (tile, light) pairs the frames recorded so far left out of full light
+  // lists (SceneRenderer::dropped_light_pairs), counted from zero again after.
+  uint64_t take_dropped_light_pairs();
+
+ private:
+  // Advances the animation clock by `seconds` while animation plays, then runs the systems.
+  void update(double seconds);
+  void declare_passes(uint32_t slot, const std::optional<PresentTarget>& present);
+  void execute(const vk::FrameSlot& frame);
+
+  vk::VulkanContext& context_;
+  SceneView& view_;
+  FrameExtension extension_;
+  bool playing_;
+  double animation_seconds_ = 0.0;  // advances only while animation plays
+  double last_time_seconds_ = 0.0;
+  SceneRenderer renderer_;
+  std::optional<DepthCapture> depth_capture_;  // after capture_depth()
+  vk::GraphExecutor executor_;
+  rg::PlanCache plans_;
+  vk::GraphImports imports_;
+  vk::Image image_;
+  ecs::Tick transforms_updated_ = 0;
+  rg::RenderGraph graph_;
+  std::shared_ptr<const rg::CompiledPlan> plan_;
+  PhaseTimes phase_ms_;
+  std::vector<double> shadow_views_rendered_;
+  std::vector<double> shadow_views_cached_;
+  std::vector<double> shadow_views_moving_only_;
+  uint64_t dropped_light_pairs_ = 0;
+};
+
+}  // namespace sg

@@ -1,0 +1,171 @@
+#include "systems/frame/frame_settings.h"
+
+#include <vector>
+
+#include "rendergraph/device/context.h"
+
+namespace sg {
+namespace {
+
+using S = FrameSettings;
+
+std::string camera_text(const scene::CameraPose& pose) {
+  std::string text;
+  for (const glm::vec3& point : {pose.eye, pose.target}) {
+    for (int i = 0; i < 3; ++i) {
+      if (!text.empty()) text += ',';
+      text += setting_text::format(point[i]);
+    }
+  }
+  return text;
+}
+
+std::vector<Setting<S>> make_table() {
+  Setting<S> camera{
+      {"camera", "EX,EY,EZ,TX,TY,TZ",
+       "eye and target; otherwise the scene's first camera, or one that frames the scene's bounds",
+       SettingType::text},
+      [](const S& s) { return s.camera ? std::optional(camera_text(*s.camera)) : std::nullopt; },
+      [](S& s, const std::string& text) { s.camera = scene::parse_camera(text); }};
+  // The --camera text's own errors (SceneError) already name --camera and the text.
+  Setting<S> naive = flag<S>(
+      "naive", [](auto& s) -> auto& { return s.naive; },
+      "the source documents' frame as a baseline: a pass per shadow view and six per cube, "
+      "every map every frame, every caster in every shadow view, every light at every pixel");
+  naive.info.excludes = {"lighting", "lit-sum-start", "cube-shadows", "shadow-views", "shadow-cache"};
+  Setting<S> shadow_memory{
+      {"shadow-memory",
+       "MiB",
+       "the shadow atlas's budget (0: an eighth of the GPU's memory, 64 to 2048 MiB); over it the least "
+       "important lights lose resolution, then their shadow",
+       SettingType::whole,
+       {},
+       0.0,
+       double(1u << 20)},
+      [](const S& s) { return std::optional(setting_text::format(s.renderer.shadow_memory_mib)); },
+      [](S& s, const std::string& text) {
+        s.renderer.shadow_memory_mib = setting_text::parse<uint32_t>(text);
+      }};
+
+  return {
+      whole<S>(
+          "width", "W", [](auto& s) -> auto& { return s.width; }, 1, 16384, "output width in pixels"),
+      whole<S>(
+          "height", "H", [](auto& s) -> auto& { return s.height; }, 1, 16384, "output height in pixels"),
+      text<S>(
+          "device", "NAME", [](auto& s) -> auto& { return s.device; },
+          "use the Vulkan device whose name contains NAME (case-insensitive)"),
+      flag<S>(
+          "validation", [](auto& s) -> auto& { return s.validation; },
+          "Khronos validation layer on (also SHADOWGRAPH_VALIDATION=1)"),
+      text<S>(
+          "scene", "NAME|PATH", [](auto& s) -> auto& { return s.scene; },
+          "default, stress, or a .gltf/.glb file"),
+      camera,
+      on_off<S>(
+          "sidecar", [](auto& s) -> auto& { return s.sidecar; },
+          "start from the lights and camera saved beside the scene (SCENE.shadowgraph.json: the "
+          "panels' save button, a script's save; for built-in scenes in the working folder)"),
+      whole<S>(
+          "scene-triangles", "T", [](auto& s) -> auto& { return s.scene_params.triangles; }, 1,
+          max_scene_triangles, "stress scene: triangles to reach"),
+      whole<S>(
+          "point-lights", "N", [](auto& s) -> auto& { return s.scene_params.point_lights; }, 0,
+          max_lights_per_type, "stress scene: point lights"),
+      whole<S>(
+          "spot-lights", "N", [](auto& s) -> auto& { return s.scene_params.spot_lights; }, 0,
+          max_lights_per_type, "stress scene: spot lights"),
+      number<S>(
+          "moving-lights", "F", [](auto& s) -> auto& { return s.scene_params.moving_fraction; }, 0.0, 1.0,
+          "stress scene: fraction of lights and crates that move each frame"),
+      whole<S>(
+          "seed", "S", [](auto& s) -> auto& { return s.scene_params.seed; }, 0, UINT64_MAX,
+          "stress scene: random seed (equal seeds, equal scenes)"),
+      on_off<S>(
+          "animate", [](auto& s) -> auto& { return s.animate; },
+          "play the scene's glTF animations (node translation, rotation, scale; LINEAR, STEP, "
+          "CUBICSPLINE; lights included, looping; skinned meshes stay in their bind pose) and the "
+          "stress scene's orbits; headless frames advance 1/60 s each; the panels' \"play\" pauses "
+          "and resumes"),
+      choice<S>(
+          "algorithm", [](auto& s) -> auto& { return s.algorithm; },
+          "every light starts with this shadow algorithm (default: each light's own, from the "
+          "scene); the light panel and scripts may change it afterwards"),
+      on_off<S>(
+          "shadows", [](auto& s) -> auto& { return s.renderer.lights.shadows; },
+          "off: no light casts a shadow, for comparisons"),
+      choice<S>(
+          "shadow-views", [](auto& s) -> auto& { return s.renderer.shadow_views; },
+          "batched: the frame's due shadow views culled and drawn on the GPU in a few passes; "
+          "per-light: a pass per view, casters culled on the CPU, the baseline"),
+      choice<S>(
+          "shadow-raster", [](auto& s) -> auto& { return s.renderer.shadow_raster; },
+          "batched views rasterized by a multi-draw indirect pass or in compute (auto: on GPUs "
+          "chosen each frame by a cost model, compute for many small views, hardware for a few "
+          "views with large tiles; the raster hardware on CPU devices)"),
+      choice<S>(
+          "shadow-resolution", [](auto& s) -> auto& { return s.renderer.shadow_resolution; },
+          "screen: each light's map as many texels as its reach spans on screen, at most the "
+          "light's own resolution; requested: the light's own resolution wherever it is seen, to "
+          "pin quality or measure a tile size at any distance"),
+      shadow_memory,
+      whole<S>(
+          "shadow-updates", "N", [](auto& s) -> auto& { return s.renderer.shadow_view_budget; }, 0, 1u << 24,
+          "shadow views (2D maps, cube faces) redrawn per frame at most, stalest first (0: every "
+          "view due)"),
+      on_off<S>(
+          "shadow-cache", [](auto& s) -> auto& { return s.renderer.cache_shadows; },
+          "on: a map is redrawn only when its light, or a caster in its reach, moved; off: every "
+          "map every frame"),
+      on_off<S>(
+          "shadow-layers", [](auto& s) -> auto& { return s.renderer.static_shadow_layers; },
+          "compute raster: keep each map's still casters as a layer (twice the shadow memory) and "
+          "redraw moving casters alone over it"),
+      choice<S>(
+          "cube-shadows", [](auto& s) -> auto& { return s.renderer.cube_shadows; },
+          "per-light views: a point light's cube in one pass (layered) or six"),
+      whole<S>(
+          "threads", "N", [](auto& s) -> auto& { return s.renderer.cpu_threads; }, 0, 1024,
+          "threads for the frame's CPU work split in pieces (gathering, shadow scheduling), the "
+          "frame's own included (0: one per hardware thread)"),
+      choice<S>("lighting", [](auto& s) -> auto& { return s.renderer.lighting; },
+                "deferred: G-buffer, light lists, a pass per light group; fused: depth prepass and one "
+                "forward pass of every light that tone-maps too (auto: deferred on GPUs; on CPU devices "
+                "chosen each frame, fused for up to four lights, deferred for more)",
+                {"auto", "deferred", "fused"}),
+      choice<S>(
+          "lit-sum-start", [](auto& s) -> auto& { return s.renderer.lit_sum_start; },
+          "where deferred lighting starts the lit sum (ambient term, background): a full-screen "
+          "pass, or a G-buffer target (auto: the G-buffer on CPU devices, the pass on GPUs)"),
+      number<S>(
+          "exposure", "E", [](auto& s) -> auto& { return s.renderer.exposure; }, 1e-3, 1e3,
+          "multiplies the lit color before tone mapping"),
+      choice<S>(
+          "view", [](auto& s) -> auto& { return s.renderer.view; },
+          "shadows: a debug view of white diffuse surfaces under white lights, each light's "
+          "shadow at full density, no ambient"),
+      naive,
+  };
+}
+
+}  // namespace
+
+std::span<const Setting<FrameSettings>> frame_settings_table() {
+  static const std::vector<Setting<FrameSettings>> table = make_table();
+  return table;
+}
+
+FrameSettings command_line_defaults() {
+  FrameSettings settings;
+  settings.sidecar = true;
+  return settings;
+}
+
+vk::ContextOptions context_options(const FrameSettings& settings) {
+  vk::ContextOptions context;
+  context.validation = settings.validation || vk::validation_requested_by_environment();
+  context.device_name = settings.device;
+  return context;
+}
+
+}  // namespace sg

@@ -1,0 +1,15 @@
+#include "systems/renderer/renderer_settings.h"
+
+namespace sg {
+
+RendererSettings naive_baseline(RendererSettings settings) {
+  settings.shadow_views = shadows::ShadowViewPath::per_light;
+  settings.cache_shadows = false;
+  settings.shadow_view_budget = 0;
+  settings.cube_shadows = shadows::CubeShadowMode::six_passes;
+  settings.cull_casters = false;
+  settings.lighting = LightingPath::every_light;
+  return settings;
+}
+
+}  // namespace sg

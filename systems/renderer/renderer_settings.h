@@ -1,0 +1,42 @@
+#pragma once
+// How the renderer draws a frame: plain data, set from the command line through the settings table
+// (systems/frame/frame_settings.h) or by code.
+#include <cstdint>
+
+#include "systems/lighting/lighting_path.h"
+#include "systems/shadows/cube_shadow_mode.h"
+#include "systems/shadows/frame_lights.h"
+#include "systems/shadows/shadow_resolution.h"
+#include "systems/shadows/shadow_view_path.h"
+
+namespace sg {
+
+struct RendererSettings {
+  shadows::LightOverrides lights;
+  shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
+  LightingPath lighting = LightingPath::automatic;
+  LitSumStart lit_sum_start = LitSumStart::automatic;  // the deferred path's
+  bool cull_casters = true;  // off: every shadow view draws every caster (the naive baseline)
+  // Batched falls back to per-light where the device cannot draw views into atlas layers at once.
+  shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;
+  shadows::ShadowRaster shadow_raster = shadows::ShadowRaster::automatic;  // the batched path's
+  shadows::ShadowResolution shadow_resolution = shadows::ShadowResolution::screen;
+  uint32_t shadow_memory_mib = 0;  // the atlas's budget; 0: the device's default
+  uint32_t shadow_view_budget = shadows::default_shadow_view_budget;  // views redrawn a frame; 0: all due
+  bool cache_shadows = true;  // off: every map is redrawn every frame (within the view budget)
+  // Where the compute raster may run: keep a static layer per map (ShadowViewBatch), so that maps
+  // wrong only through moving casters redraw just those.
+  bool static_shadow_layers = true;
+  float exposure = 1.0f;  // multiplies the lit sum before tone mapping
+  LightingView view = LightingView::lit;
+  // Threads that run a frame's CPU work split in pieces, the calling thread included; 0: one per
+  // hardware thread.
+  uint32_t cpu_threads = 0;
+};
+
+// `settings` turned into the source documents' frame, the baseline to measure against (--naive): a
+// pass per shadow view and six per cube, every map every frame, every caster in every view,
+// forward lighting of every light at every pixel.
+RendererSettings naive_baseline(RendererSettings settings);
+
+}  // namespace sg
