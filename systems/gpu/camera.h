@@ -15,7 +15,7 @@ namespace sg {
 // standard direction (0 at near) and znear 0.05, a floor 100-250 units away came back up to 5 cm
 // off its plane, more than the shadow bias at a spot light's pool, which striped it with acne
 // (stress scene, 1920x1080, 29% of a 128-texel spot light's lit pixels; lavapipe and H200 alike,
-// 2026-12-01; tests/shadows/camera_depth_test.cpp).
+// 2026-12-01; tests/systems/shadows/camera_depth_test.cpp).
 inline constexpr float camera_near_depth = 1.0f;
 inline constexpr float camera_far_depth = 0.0f;
 

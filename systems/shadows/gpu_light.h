@@ -1,7 +1,7 @@
 #pragma once
 // The GPU record of one light: all lights of a frame are one array of GpuLight in one storage
 // buffer, read by the lighting shaders as `Light lights[]` (shaders/light_record.glsl, whose
-// field comments say what each component holds). tests/shadows/light_record_layout_test.cpp
+// field comments say what each component holds). tests/systems/shadows/light_record_layout_test.cpp
 // checks every offset against glslang's reflection of the shader declaration.
 #include <array>
 #include <cstddef>

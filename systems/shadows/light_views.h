@@ -57,7 +57,7 @@ LightView cylinder_light_view(glm::vec3 position, glm::vec3 direction, float out
 // far = range. Unlike every other engine projection these keep NDC y pointing up (no flip):
 // that is what makes the rendered face images line up with Vulkan's cube-map addressing, so that
 // sampling with direction fragWorld - P reads the texel rendered in that direction (proved in
-// tests/shadows/light_views_test.cpp). It also mirrors the image, so triangles wind the other way
+// tests/systems/shadows/light_views_test.cpp). It also mirrors the image, so triangles wind the other way
 // than in 2D light maps: a cube-face pipeline that culls must flip its front face.
 struct CubeViews {
   std::array<glm::mat4, 6> view_projection;  // std140/std430 mat4[6]: copy as is to the GPU

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sandbox/run_stats.h"
-#include "tests/scene/gltf_writer.h"
+#include "tests/support/gltf_writer.h"
 
 namespace sg::sandbox {
 namespace {

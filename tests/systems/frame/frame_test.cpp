@@ -1,0 +1,393 @@
+// The engine's frame on lavapipe with validation and synchronization validation on (GpuTest
+// fails on any report): the built-in scenes, every lighting and shadow-view path against the
+// others, and the passes the plan runs.
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "ecs/query.h"
+#include "ecs/transform_system.h"
+#include "rendergraph/device/frame_ring.h"
+#include "rendergraph/device/readback.h"
+#include "systems/frame/frame.h"
+#include "systems/scene/camera.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/primitive_meshes.h"
+#include "systems/scene/scene_builder.h"
+#include "tests/support/gpu_test.h"
+
+namespace sg::test {
+namespace {
+
+constexpr uint32_t width = 128;
+constexpr uint32_t height = 96;
+
+std::vector<std::string> executed_passes(const rg::CompiledPlan& plan) {
+  std::vector<std::string> names;
+  for (const rg::CompiledPass& pass : plan.passes) names.push_back(pass.name);
+  return names;
+}
+
+class FrameTest : public GpuTest {
+ protected:
+  // Renders `frame_count` frames of `settings`' scene and returns the last picture.
+  vk::Rgba8Image render(const FrameSettings& options, uint32_t frame_count) {
+    SceneView scene = load_scene_view(options, float(width) / height);
+    vk::FrameRing frames(context);
+    Frame frame(context, scene, options, frames.frames_in_flight());
+    frame.resize({width, height});
+    for (uint32_t i = 0; i < frame_count; ++i) {
+      vk::FrameSlot& slot = frames.begin_frame();
+      frame.record(slot, i / 60.0);
+      frames.submit();
+    }
+    frames.wait_idle();
+    passes = executed_passes(*frame.plan());
+    shadow_stats = frame.renderer().shadow_stats();
+    return vk::read_rgba8(context, frame.image());
+  }
+
+  std::vector<std::string> passes;
+  shadows::ShadowScheduleStats shadow_stats;  // the last frame's
+};
+
+// Every shadow view due in a frame: culled, sorted into draws and drawn by these passes.
+const std::vector<std::string> batched_shadow_passes{"shadow cull reset", "shadow cull", "shadow draws",
+                                                     "shadow scatter", "shadow views"};
+
+std::vector<std::string> followed_by(std::vector<std::string> passes, const std::vector<std::string>& more) {
+  passes.insert(passes.end(), more.begin(), more.end());
+  return passes;
+}
+
+// The stress scene with `triangles`, `points` point and `spots` spot lights, `moving` of them
+// moving.
+FrameSettings stress(uint64_t triangles, uint32_t points, uint32_t spots, float moving) {
+  FrameSettings options;
+  options.scene = "stress";
+  options.scene_params.triangles = triangles;
+  options.scene_params.point_lights = points;
+  options.scene_params.spot_lights = spots;
+  options.scene_params.moving_fraction = moving;
+  return options;
+}
+
+FrameSettings lit_by(LightingPath lighting) {
+  FrameSettings options;
+  options.renderer.lighting = lighting;
+  return options;
+}
+
+int largest_difference(const vk::Rgba8Image& a, const vk::Rgba8Image& b) {
+  int largest = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    largest = std::max(largest, std::abs(int(a.pixels[i]) - int(b.pixels[i])));
+  return largest;
+}
+
+// The share of pixels whose worst channel differs by more than `levels` of 255.
+double share_differing(const vk::Rgba8Image& a, const vk::Rgba8Image& b, int levels) {
+  size_t differing = 0;
+  for (size_t i = 0; i < a.pixels.size(); i += 4) {
+    int largest = 0;
+    for (size_t c = 0; c < 3; ++c)
+      largest = std::max(largest, std::abs(int(a.pixels[i + c]) - int(b.pixels[i + c])));
+    differing += largest > levels;
+  }
+  return double(differing) / double(a.pixels.size() / 4);
+}
+
+// Deferred lighting against a forward path: the same formulas, but the G-buffer has 16-bit
+// normals and 8-bit base colors, and deferred takes positions back from the depth buffer, a
+// hair from the rasterizer's: a pixel on a shadow's very edge may fall on the other side.
+void expect_same_but_edges(const vk::Rgba8Image& forward, const vk::Rgba8Image& deferred) {
+  EXPECT_LE(share_differing(forward, deferred, 2), 0.001) << "pixels more than 2 levels of 255 apart";
+}
+
+TEST_F(FrameTest, DefaultSceneRendersThroughTheGraph) {
+  const std::vector<std::string> lighting{"g-buffer",
+                                          "light tiles reset",
+                                          "light tiles",
+                                          "lighting 2d hard",
+                                          "lighting 2d pcf",
+                                          "lighting 2d noise",
+                                          "lighting 2d pcss_noise",
+                                          "lighting cube hard",
+                                          "lighting cube pcss",
+                                          "tone map"};
+  // The first frame draws every shadow view (lavapipe has shaderOutputLayer, so they are
+  // batched), then the G-buffer (which on a CPU device starts the lit sum with the ambient term),
+  // light culling, one lighting pass per light group the scene uses (its six lights use six of
+  // the eleven), tone mapping.
+  render(lit_by(LightingPath::deferred), 1);
+  EXPECT_EQ(passes, followed_by(batched_shadow_passes, lighting));
+  // Nothing moves in the default scene: later frames keep every map.
+  const vk::Rgba8Image image = render(lit_by(LightingPath::deferred), 3);
+  EXPECT_EQ(passes, lighting);
+  // Something was drawn: the picture is not a single color.
+  const uint8_t* first = image.at(0, 0);
+  bool varied = false;
+  for (uint32_t y = 0; y < height && !varied; ++y) {
+    for (uint32_t x = 0; x < width && !varied; ++x) varied = !std::equal(first, first + 3, image.at(x, y));
+  }
+  EXPECT_TRUE(varied);
+}
+
+TEST_F(FrameTest, MovingStressSceneStaysCleanAcrossFrames) {
+  FrameSettings options = stress(3000, 3, 3, 0.5f);
+  options.renderer.lighting = LightingPath::fused;
+  render(options, 4);
+  // Moving lights redraw their maps every frame.
+  EXPECT_EQ(passes, followed_by(batched_shadow_passes, {"depth prepass", "fused forward"}));
+  options.renderer.lighting = LightingPath::deferred;
+  render(options, 4);
+  EXPECT_EQ(passes.back(), "tone map");
+}
+
+// Every lighting path lights the same surfaces with the same formulas (the forward paths with the
+// same positions, so they agree everywhere), and the noise algorithms draw their numbers per
+// pixel, so every path draws the same.
+TEST_F(FrameTest, EveryLightingPathRendersTheSamePicture) {
+  const vk::Rgba8Image forward = render(lit_by(LightingPath::every_light), 2);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "forward"), 1);
+  const vk::Rgba8Image deferred = render(lit_by(LightingPath::deferred), 2);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
+  expect_same_but_edges(forward, deferred);
+
+  // The naive baseline: a pass per view and six per cube, every map every frame, every caster in
+  // every view, every light at every pixel.
+  FrameSettings naive;
+  naive.naive = true;
+  const vk::Rgba8Image baseline = render(naive, 2);
+  EXPECT_EQ(std::count_if(passes.begin(), passes.end(),
+                          [](const std::string& name) { return name.find(" face ") != std::string::npos; }),
+            12);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "light tiles"), 0);
+  EXPECT_LE(largest_difference(baseline, forward), 2) << "levels of 255 in the worst channel";
+  expect_same_but_edges(baseline, deferred);
+
+  // Every light at every pixel again, tone mapped in the same pass.
+  const vk::Rgba8Image fused = render(lit_by(LightingPath::fused), 2);
+  EXPECT_EQ(passes.back(), "fused forward");
+  EXPECT_LE(largest_difference(fused, forward), 2);
+}
+
+// Passes added after the lighting (tools' depth capture, overlays) read the camera's depth as the
+// lighting left it: every path hands on its newest version, and the depths agree.
+TEST_F(FrameTest, EveryLightingPathHandsTheCameraDepthToLaterPasses) {
+  std::vector<std::vector<float>> depths;
+  for (const LightingPath lighting :
+       {LightingPath::every_light, LightingPath::deferred, LightingPath::fused}) {
+    FrameSettings options = lit_by(lighting);
+    SceneView scene = load_scene_view(options, float(width) / height);
+    vk::FrameRing frames(context);
+    Frame frame(context, scene, options, frames.frames_in_flight());
+    frame.resize({width, height});
+    frame.capture_depth();
+    frame.record(frames.begin_frame(), 0.0);
+    frames.submit();
+    frames.wait_idle();
+    depths.push_back(frame.read_captured_depth().depths);
+  }
+  const std::vector<float>& forward = depths.front();
+  EXPECT_GT(std::count_if(forward.begin(), forward.end(), [](float d) { return d > camera_far_depth; }),
+            long(forward.size() / 2))
+      << "the scene fills most of the picture";
+  for (size_t path = 1; path < depths.size(); ++path) EXPECT_EQ(depths[path], forward) << "path " << path;
+}
+
+// A group with one light shades from its record alone (SINGLE_LIGHT), a group with several from
+// each tile's list: with every light on pcf, the stress scene's three point lights share one
+// group and its three spots and the sun another, and deferred still draws what forward lighting
+// of every light draws.
+TEST_F(FrameTest, DeferredGroupsOfManyLightsMatchForward) {
+  FrameSettings options = stress(3000, 3, 3, 0.0f);
+  options.algorithm = scene::ShadowAlgorithm::pcf;
+  options.renderer.lighting = LightingPath::every_light;
+  const vk::Rgba8Image forward = render(options, 2);
+  options.renderer.lighting = LightingPath::deferred;
+  const vk::Rgba8Image deferred = render(options, 2);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "lighting 2d pcf"), 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "lighting cube pcf"), 1);
+  expect_same_but_edges(forward, deferred);
+}
+
+// Deferred lighting's lit sum started by a pass of its own or by the G-buffer: the same shading
+// code over the same tiles, so the same picture to rounding (the 16-bit sum, and the G-buffer's
+// ambient term takes the base color before its 8-bit storage).
+TEST_F(FrameTest, DeferredLightingStartedByTheGBufferMatchesItsOwnPass) {
+  FrameSettings options = lit_by(LightingPath::deferred);
+  options.renderer.lit_sum_start = LitSumStart::pass;
+  const vk::Rgba8Image own_pass = render(options, 2);
+  const std::vector<std::string> own_pass_passes = passes;
+  options.renderer.lit_sum_start = LitSumStart::gbuffer;
+  const vk::Rgba8Image from_gbuffer = render(options, 2);
+  std::vector<std::string> with_ambient_pass = passes;
+  with_ambient_pass.insert(std::find(with_ambient_pass.begin(), with_ambient_pass.end(), "lighting 2d hard"),
+                           "lighting ambient");
+  EXPECT_EQ(own_pass_passes, with_ambient_pass);
+  EXPECT_LE(largest_difference(own_pass, from_gbuffer), 1) << "levels of 255 in the worst channel";
+  EXPECT_LT(share_differing(own_pass, from_gbuffer, 0), 0.05);
+}
+
+// automatic on a CPU device, each frame: the fused forward pass for up to four lights (fewest
+// full-screen passes), deferred for more; the default scene has six lights.
+TEST_F(FrameTest, AutomaticLightingFusesAFewLightsOnACpuDevice) {
+  render(FrameSettings{}, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
+  FrameSettings four_lights = stress(3000, 2, 1, 0.0f);  // two point lights, a spot light and the sun
+  render(four_lights, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "fused forward"), 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "tone map"), 0);
+  FrameSettings five_lights = stress(3000, 2, 2, 0.0f);
+  render(five_lights, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
+}
+
+// The shadow-only view: white surfaces under white light, so every pixel is grey but the
+// background (the clear color, as in the top-left corner), on every lighting path alike, and
+// unlike the lit picture.
+TEST_F(FrameTest, TheShadowOnlyViewIsGreyOnEveryLightingPath) {
+  const auto grey_fraction = [](const vk::Rgba8Image& image) {
+    size_t grey = 0;
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+      const int r = image.pixels[i], g = image.pixels[i + 1], b = image.pixels[i + 2];
+      grey += (std::abs(r - g) <= 1 && std::abs(g - b) <= 1) ||
+              std::equal(&image.pixels[i], &image.pixels[i + 3], image.at(0, 0));
+    }
+    return double(grey) / double(image.pixels.size() / 4);
+  };
+  const vk::Rgba8Image lit = render(lit_by(LightingPath::deferred), 1);
+  std::vector<vk::Rgba8Image> views;
+  for (const LightingPath path : {LightingPath::deferred, LightingPath::every_light, LightingPath::fused}) {
+    FrameSettings options = lit_by(path);
+    options.renderer.view = LightingView::shadows;
+    views.push_back(render(options, 1));
+  }
+  EXPECT_EQ(grey_fraction(views[0]), 1.0);
+  EXPECT_LT(grey_fraction(lit), 0.5);
+  expect_same_but_edges(views[1], views[0]);
+  EXPECT_LE(largest_difference(views[1], views[2]), 2);
+}
+
+TEST_F(FrameTest, SixPassCubesRenderTheSamePictureAsLayeredCubes) {
+  FrameSettings layered;
+  layered.renderer.shadow_views = shadows::ShadowViewPath::per_light;
+  FrameSettings six = layered;
+  six.renderer.cube_shadows = shadows::CubeShadowMode::six_passes;
+  const vk::Rgba8Image a = render(layered, 1);
+  const vk::Rgba8Image b = render(six, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "shadow warm point face 3"), 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "shadow warm point face 0") +
+                std::count(passes.begin(), passes.end(), "shadow cool point face 5"),
+            2);
+  EXPECT_EQ(std::count_if(passes.begin(), passes.end(),
+                          [](const std::string& name) { return name.starts_with("shadow"); }),
+            4 + 2 * 6);
+  int differing = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) differing += std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 1;
+  EXPECT_EQ(differing, 0);
+}
+
+// The GPU-driven batch draws each view into its tile by moving clip space; the per-light passes
+// set a viewport on the tile. Both rasterize the same triangles into the same texels.
+TEST_F(FrameTest, BatchedShadowViewsRenderTheSamePictureAsPerLightPasses) {
+  FrameSettings per_light;
+  per_light.renderer.shadow_views = shadows::ShadowViewPath::per_light;
+  const vk::Rgba8Image a = render(per_light, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "shadow warm point"), 1);
+  const vk::Rgba8Image b = render(FrameSettings{}, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "shadow views"), 1);
+  EXPECT_LE(largest_difference(a, b), 1);
+}
+
+// A frame whose maps were all kept from earlier frames shows what drawing them again shows.
+TEST_F(FrameTest, CachedShadowsArePixelIdenticalToShadowsDrawnFromScratch) {
+  for (const shadows::ShadowViewPath views :
+       {shadows::ShadowViewPath::batched, shadows::ShadowViewPath::per_light}) {
+    FrameSettings cached;
+    cached.renderer.shadow_views = views;
+    const vk::Rgba8Image kept = render(cached, 3);
+    EXPECT_EQ(std::count_if(passes.begin(), passes.end(),
+                            [](const std::string& name) { return name.starts_with("shadow"); }),
+              0)
+        << "the third frame draws no shadow view";
+    FrameSettings fresh = cached;
+    fresh.renderer.cache_shadows = false;
+    const vk::Rgba8Image drawn = render(fresh, 3);
+    EXPECT_GT(std::count_if(passes.begin(), passes.end(),
+                            [](const std::string& name) { return name.starts_with("shadow"); }),
+              0);
+    EXPECT_EQ(kept.pixels, drawn.pixels);
+  }
+}
+
+// Issue 11's limit case: 400 point lights (2,400 cube faces, past the 2,048 layers a cube array
+// could hold) and 2,100 spot lights, tiny maps in a small window, clean under validation and
+// synchronization validation; the lights beyond the budget lose resolution, then their shadow.
+TEST_F(FrameTest, ThousandsOfShadowedLightsStayWithinDeviceLimits) {
+  FrameSettings options = stress(2000, 400, 2100, 0.0f);
+  options.renderer.shadow_memory_mib = 16;  // one page of 2048 x 2048
+  render(options, 2);
+  EXPECT_EQ(passes.back(), "tone map");
+  // The first frame drew as many views as the per-frame budget allows, the second the rest.
+  constexpr uint32_t views = 2100 + 1 + 400 * 6;  // spots, the sun, cube faces
+  EXPECT_EQ(shadow_stats.views_rendered + shadow_stats.views_cached, views);
+  EXPECT_EQ(shadow_stats.views_cached, shadows::default_shadow_view_budget);
+  EXPECT_EQ(shadow_stats.lights_waiting, 0u);
+  // The budget holds 2048^2 texels: most lights got the smallest tiles.
+  EXPECT_EQ(shadow_stats.pages_used, 1u);
+  ASSERT_FALSE(shadow_stats.lights_per_resolution.empty());
+  EXPECT_EQ(shadow_stats.lights_per_resolution.front().first, shadows::min_shadow_resolution);
+  EXPECT_GT(shadow_stats.lights_per_resolution.front().second, 1000u);
+}
+
+// A material's base-color texture multiplies its base color: a white floor with a green
+// texture renders green, the same floor without it grey.
+TEST_F(FrameTest, MaterialTexturesTintTheBaseColor) {
+  const auto floor_pixel = [&](bool textured) {
+    SceneView scene;
+    scene.scene.name = "textured floor";
+    const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
+    scene.scene.textures.textures.push_back({"green", 2, 2, std::vector<uint8_t>(16, 0)});
+    for (size_t texel = 0; texel < 4; ++texel) {
+      scene.scene.textures.textures[0].pixels[texel * 4 + 1] = 255;
+      scene.scene.textures.textures[0].pixels[texel * 4 + 3] = 255;
+    }
+    scene::Material white;
+    white.base_color = glm::vec4(1.0f);
+    white.specular = 0.0f;
+    if (textured) white.base_color_texture = 0;
+    scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
+                        white);
+    scene::add_light(
+        scene.scene, scene::DirectionalLight{glm::vec3(1.0f), 0.5f},
+        {glm::vec3(0.0f, 5.0f, 0.0f), scene::look_rotation({0, 5, 0}, {0.1f, 0, 0}), glm::vec3(1.0f)},
+        scene::ShadowSettings{}, "sun");
+    ecs::update_world_transforms(scene.scene.world, 0);
+    scene.pose = {{0.0f, 6.0f, 0.1f}, {0.0f, 0.0f, 0.0f}};
+    vk::FrameRing frames(context);
+    Frame frame(context, scene, FrameSettings{}, frames.frames_in_flight());
+    frame.resize({width, height});
+    frame.record(frames.begin_frame(), 0.0);
+    frames.submit();
+    frames.wait_idle();
+    const vk::Rgba8Image image = vk::read_rgba8(context, frame.image());
+    const uint8_t* p = image.at(width / 2, height / 2);
+    return std::array<int, 3>{p[0], p[1], p[2]};
+  };
+  const std::array<int, 3> green = floor_pixel(true);
+  const std::array<int, 3> grey = floor_pixel(false);
+  EXPECT_GT(green[1], 100);
+  EXPECT_LT(green[0], 5);
+  EXPECT_LT(green[2], 5);
+  EXPECT_EQ(grey[0], grey[1]);
+  EXPECT_EQ(grey[1], grey[2]);
+  EXPECT_EQ(grey[1], green[1]) << "white times green keeps green's full strength";
+}
+
+}  // namespace
+}  // namespace sg::test

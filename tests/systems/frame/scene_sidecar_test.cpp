@@ -1,0 +1,91 @@
+// The lights and camera saved beside a scene, and applied to it again.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "ecs/query.h"
+#include "ecs/transform.h"
+#include "systems/frame/scene_sidecar.h"
+#include "systems/scene/builtin_scenes.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/scene_builder.h"
+#include "systems/scene/scene_queries.h"
+#include "systems/scene/shadow_settings.h"
+#include "tests/support/gltf_writer.h"
+
+namespace sg::test {
+namespace {
+
+ecs::Entity named(const scene::Scene& scene, const std::string& name) {
+  ecs::Entity found = ecs::null_entity;
+  scene.world.query<const scene::Name, const scene::ShadowSettings>().for_each(
+      [&](ecs::Entity entity, const scene::Name& n, const scene::ShadowSettings&) {
+        if (n.value == name) found = entity;
+      });
+  return found;
+}
+
+TEST(SceneSidecar, EditedLightsAndCameraComeBack) {
+  scene::test::TempDir dir;
+  const std::filesystem::path path = dir.path("default.shadowgraph.json");
+  {
+    scene::Scene edited = scene::build_scene("default");
+    const ecs::Entity spot = named(edited, "spot east");
+    ASSERT_NE(spot, ecs::null_entity);
+    edited.world.get_mut<scene::ShadowSettings>(spot).algorithm = scene::ShadowAlgorithm::hard;
+    edited.world.get_mut<ecs::LocalTransform>(spot).translation = {3, 3, 1};
+    edited.world.get_mut<scene::SpotLight>(spot).outer_cone = 0.5f;
+    edited.world.destroy(named(edited, "beam"));
+    scene::add_light(edited, scene::PointLight{glm::vec3(1, 0, 0), 2.0f, 4.0f},
+                     ecs::LocalTransform{{1, 2, 3}}, {}, "added");
+    save_sidecar(path, edited, {{1, 5, 6}, {0, 0, 0}, {0, 1, 0}});
+  }
+  scene::Scene fresh = scene::build_scene("default");
+  scene::CameraPose pose;
+  apply_sidecar(path, fresh, pose);
+  EXPECT_EQ(pose.eye, glm::vec3(1, 5, 6));
+  const ecs::Entity spot = named(fresh, "spot east");
+  ASSERT_NE(spot, ecs::null_entity);
+  EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(spot).algorithm, scene::ShadowAlgorithm::hard);
+  EXPECT_EQ(fresh.world.get<ecs::LocalTransform>(spot).translation, glm::vec3(3, 3, 1));
+  EXPECT_FLOAT_EQ(fresh.world.get<scene::SpotLight>(spot).outer_cone, 0.5f);
+  EXPECT_EQ(named(fresh, "beam"), ecs::null_entity);
+  const ecs::Entity added = named(fresh, "added");
+  ASSERT_NE(added, ecs::null_entity);
+  EXPECT_FLOAT_EQ(fresh.world.get<scene::PointLight>(added).range, 4.0f);
+  EXPECT_EQ(scene::scene_stats(fresh).cylinder_lights, 0u);
+}
+
+TEST(SceneSidecar, MalformedFilesAreRefusedLeavingTheSceneAsItWas) {
+  scene::test::TempDir dir;
+  const auto refusal = [&](const std::string& text) {
+    const std::filesystem::path path = dir.path("bad.json");
+    std::ofstream(path) << text;
+    scene::Scene scene = scene::build_scene("default");
+    scene::CameraPose pose;
+    const scene::SceneStats before = scene::scene_stats(scene);
+    try {
+      apply_sidecar(path, scene, pose);
+    } catch (const std::runtime_error& error) {
+      EXPECT_EQ(scene::scene_stats(scene).shadow_casting_lights, before.shadow_casting_lights);
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refusal("{ not json").find("bad.json: not JSON"), std::string::npos);
+  EXPECT_NE(
+      refusal(R"({"lights": [{"name": "x", "type": "torch"}]})").find("bad.json: lights[0].type: is not"),
+      std::string::npos);
+  EXPECT_NE(refusal(R"({"lights": [{"name": "x", "type": "spot", "range": -1}]})").find("lights[0].range"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"lights": [{"name": "x", "type": "point", "shadow": {"algorithm": "soft"}}]})")
+                .find("lights[0].shadow.algorithm"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}})").find("camera"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace sg::test

@@ -1,0 +1,324 @@
+// Tiled light culling on lavapipe against a brute-force CPU assignment of the same lights to the
+// same tiles (tests/support/light_tiles_reference.h), with validation on.
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "ecs/transform_system.h"
+#include "rendergraph/core/compile.h"
+#include "rendergraph/device/frame_ring.h"
+#include "rendergraph/device/resources.h"
+#include "rendergraph/device/upload.h"
+#include "rendergraph/vulkan/graph_executor.h"
+#include "systems/gpu/camera.h"
+#include "systems/lighting/light_tiles_pass.h"
+#include "systems/scene/scene_builder.h"
+#include "systems/shadows/frame_lights.h"
+#include "tests/support/gpu_test.h"
+#include "tests/support/light_tiles_reference.h"
+
+namespace sg::test {
+namespace {
+
+constexpr uint32_t width = 200;  // not a multiple of the tile size: partial tiles at the edges
+constexpr uint32_t height = 120;
+
+// Lights of every type and several groups scattered in front of a camera at the origin looking
+// down -Z, spots aimed at the floor, sorted by group as the renderer uploads them.
+shadows::FrameLights scattered_lights() {
+  scene::Scene scene;
+  uint32_t seed = 12345;
+  const auto random = [&seed] {
+    seed = seed * 1664525u + 1013904223u;
+    return float(seed >> 8) / float(1u << 24);
+  };
+  for (int i = 0; i < 60; ++i) {
+    const glm::vec3 position(random() * 30.0f - 15.0f, random() * 8.0f - 3.0f, -2.0f - random() * 26.0f);
+    const glm::vec3 target(position.x + random() * 6.0f - 3.0f, -4.0f, position.z + random() * 6.0f - 3.0f);
+    scene::ShadowSettings shadow;
+    shadow.algorithm = scene::all_shadow_algorithms[i % 5];
+    shadow.casts_shadow = i % 4 != 0;
+    const ecs::LocalTransform local{position, scene::look_rotation(position, target), glm::vec3(1.0f)};
+    if (i % 3 == 0) {
+      scene::SpotLight spot;
+      spot.range = 4.0f + random() * 8.0f;
+      spot.outer_cone = 0.2f + random() * 0.6f;
+      spot.inner_cone = spot.outer_cone * 0.5f;
+      scene::add_light(scene, spot, local, shadow, "spot");
+    } else if (i == 7 || i == 29) {
+      scene::add_light(scene, scene::CylinderLight{glm::vec3(1.0f), 1.0f, 0.5f, 1.5f}, local, shadow, "beam");
+    } else {
+      scene::PointLight point;
+      point.range = 1.0f + random() * 6.0f;
+      scene::add_light(scene, point, local, shadow, "point");
+    }
+  }
+  scene::add_light(scene, scene::DirectionalLight{}, ecs::LocalTransform{}, scene::ShadowSettings{}, "sun");
+  ecs::update_world_transforms(scene.world, 0);
+  shadows::FrameLights lights;
+  shadows::gather_lights(scene.world, {glm::vec3(-20.0f), glm::vec3(20.0f)}, {}, lights);
+  // Every shadow in the same place: culling only reads which group a light is in.
+  for (const shadows::ShadowMapView& map : lights.maps) {
+    shadows::set_shadow_map(lights.records[map.light], 0, {0.0f, 0.0f, 1.0f, 1.0f}, 1024, map.view);
+  }
+  for (const shadows::ShadowCubeView& cube : lights.cubes) {
+    shadows::set_shadow_cube(lights.records[cube.light], 0, {}, 0.25f, 256, cube.views,
+                             glm::vec3(cube.position_far));
+  }
+  shadows::sort_by_group(lights);
+  return lights;
+}
+
+// What the camera sees: a floor at y = -4 and a wall at z = -30, and a corner of sky (the far depth).
+std::vector<float> scene_depth(const glm::mat4& view_projection) {
+  const glm::mat4 inverse = glm::inverse(view_projection);
+  std::vector<float> depth(width * height, camera_far_depth);
+  for (uint32_t y = 0; y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) {
+      if (x < 40 && y < 30) continue;
+      const glm::vec2 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f);
+      const glm::vec4 far_point = inverse * glm::vec4(ndc, camera_far_depth, 1.0f);
+      const glm::vec3 ray = glm::normalize(glm::vec3(far_point) / far_point.w);
+      float t = -30.0f / ray.z;                          // the wall
+      if (ray.y < 0.0f) t = std::min(t, -4.0f / ray.y);  // the floor, where nearer
+      const glm::vec4 clip = view_projection * glm::vec4(ray * t, 1.0f);
+      depth[y * width + x] = clip.z / clip.w;
+    }
+  }
+  return depth;
+}
+
+vk::Buffer readable(vk::VulkanContext& context, uint64_t bytes, VkBufferUsageFlags usage) {
+  return vk::Buffer(context,
+                    {bytes, usage | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                     vk::MemoryUsage::readback, "light tiles output"});
+}
+
+template <class T>
+std::vector<T> contents(const vk::Buffer& buffer) {
+  std::vector<T> items(buffer.size() / sizeof(T));
+  std::memcpy(items.data(), buffer.mapped(), items.size() * sizeof(T));
+  return items;
+}
+
+// Independently of the shared tile tests: whether `light` lights `point` at all (inside its
+// range, cone or beam). Culling may keep lights that reach no pixel, never drop one that does.
+bool lights_point(const shadows::GpuLight& light, const glm::vec3& point) {
+  const auto type = shadows::GpuLightType(light.info.x);
+  const glm::vec3 offset = point - glm::vec3(light.position_range);
+  const glm::vec3 axis = glm::vec3(light.direction_type);
+  switch (type) {
+    case shadows::GpuLightType::directional: return true;
+    case shadows::GpuLightType::cylinder:
+      return glm::dot(offset, axis) >= 0.0f && glm::length(glm::cross(axis, offset)) <= light.shape.w;
+    case shadows::GpuLightType::point: return glm::length(offset) <= light.position_range.w;
+    case shadows::GpuLightType::spot:
+      return glm::length(offset) <= light.position_range.w &&
+             glm::dot(axis, offset) >= light.shape.y * glm::length(offset);
+  }
+  return false;
+}
+
+class LightTilesTest : public GpuTest {
+ protected:
+  // One culling of `lights` against `depth` on the device, read back.
+  struct Culled {
+    std::vector<uint32_t> entries;
+    std::vector<glm::uvec2> ranges;
+    std::vector<uint32_t> tiles_of_group;
+    std::vector<glm::uvec4> commands;
+    uint64_t dropped = 0;  // LightTilesPass::take_dropped_pairs
+  };
+  Culled cull(const shadows::FrameLights& lights, LightCullingShape shape, const std::vector<float>& depth,
+              const glm::mat4& view_projection);
+  void expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape);
+};
+
+// Both shapes of the culling, whatever the device would pick.
+TEST_F(LightTilesTest, ListsMatchABruteForceCpuAssignment) {
+  expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::workgroup_per_tile);
+}
+
+TEST_F(LightTilesTest, ListsOfAnInvocationPerTileMatchABruteForceCpuAssignment) {
+  expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::thread_per_tile);
+}
+
+// 300 point lights that reach everything on screen: every tile with a surface lists 256 of them
+// and counts the 44 it leaves out, in both shapes of the culling.
+TEST_F(LightTilesTest, AFullTileCountsTheLightsItLeavesOut) {
+  scene::Scene scene;
+  for (int i = 0; i < 300; ++i) {
+    scene::PointLight point;
+    point.range = 100.0f;
+    scene::add_light(scene, point, {{0.0f, 0.0f, -10.0f - 0.01f * i}}, scene::ShadowSettings{}, "crowd");
+  }
+  ecs::update_world_transforms(scene.world, 0);
+  shadows::FrameLights lights;
+  shadows::gather_lights(scene.world, {glm::vec3(-20.0f), glm::vec3(20.0f)}, {false}, lights);
+  shadows::sort_by_group(lights);
+  const glm::mat4 view_projection =
+      projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
+  const std::vector<float> depth = scene_depth(view_projection);
+  const LightTileGrid grid = LightTileGrid::of(width, height);
+  uint64_t tiles_with_surfaces = 0;
+  for (uint32_t tile = 0; tile < grid.count(); ++tile) {
+    const uint32_t x0 = tile % grid.across * tiles::LIGHT_TILE_SIZE,
+                   y0 = tile / grid.across * tiles::LIGHT_TILE_SIZE;
+    bool surface = false;
+    for (uint32_t y = y0; y < std::min(y0 + tiles::LIGHT_TILE_SIZE, height); ++y) {
+      for (uint32_t x = x0; x < std::min(x0 + tiles::LIGHT_TILE_SIZE, width); ++x) {
+        surface = surface || depth[y * width + x] != camera_far_depth;
+      }
+    }
+    tiles_with_surfaces += surface;
+  }
+  ASSERT_GT(tiles_with_surfaces, 0u);
+  for (const LightCullingShape shape :
+       {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
+    const Culled culled = cull(lights, shape, depth, view_projection);
+    EXPECT_EQ(culled.dropped, tiles_with_surfaces * (300 - tiles::MAX_LIGHTS_PER_TILE));
+  }
+}
+
+LightTilesTest::Culled LightTilesTest::cull(const shadows::FrameLights& lights, LightCullingShape shape,
+                                            const std::vector<float>& depth,
+                                            const glm::mat4& view_projection) {
+  const LightTileGrid grid = LightTileGrid::of(width, height);
+  vk::Image depth_image(context, {{width, height},
+                                  VK_FORMAT_D32_SFLOAT,
+                                  VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                  1,
+                                  1,
+                                  VK_IMAGE_VIEW_TYPE_2D,
+                                  "test depth"});
+  vk::Buffer records(context, {lights.records.size() * sizeof(shadows::GpuLight),
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::upload, "test lights"});
+  std::memcpy(records.mapped(), lights.records.data(), records.size());
+  vk::UploadBatch upload(context);
+  upload.copy_to_image(depth_image, 1, std::as_bytes(std::span<const float>(depth)));
+  upload.submit();
+  const vk::Buffer tile_lights = readable(context, LightTilesPass::lights_bytes(grid), 0);
+  const vk::Buffer tile_ranges = readable(context, LightTilesPass::ranges_bytes(grid), 0);
+  const vk::Buffer group_tiles = readable(context, LightTilesPass::tiles_bytes(grid), 0);
+  const vk::Buffer group_commands =
+      readable(context, LightTilesPass::commands_bytes(), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+
+  rg::RenderGraph graph;
+  const rg::ResourceState sampled{rg::PipelineStage::all_commands, rg::Access::shader_sampled_read,
+                                  rg::ImageLayout::read_only_optimal};
+  const rg::ResourceState host_read{rg::PipelineStage::host, rg::Access::host_read,
+                                    rg::ImageLayout::undefined};
+  vk::ImportedResources imports;
+  const rg::ImageHandle depth_handle =
+      graph.import_image("depth", {width, height, rg::Format::d32_sfloat}, sampled, sampled);
+  imports.bind(depth_handle, depth_image);
+  const auto import = [&](const char* name, const vk::Buffer& buffer) {
+    const rg::BufferHandle handle =
+        graph.import_buffer(name, {buffer.size()}, rg::ResourceState{}, host_read);
+    imports.bind(handle, buffer);
+    return handle;
+  };
+  const LightTiles outputs{import("tile lights", tile_lights), import("tile ranges", tile_ranges),
+                           import("group tiles", group_tiles), import("commands", group_commands)};
+  vk::FrameRing frames(context);
+  LightTilesPass pass(context, frames.frames_in_flight(), shape);
+  EXPECT_EQ(pass.shape(), shape);
+  vk::FrameSlot& frame = frames.begin_frame();
+  EXPECT_EQ(pass.take_dropped_pairs(frame.slot), 0u) << "nothing culled in this slot yet";
+  pass.add_to(graph, frame.slot, depth_handle, records, uint32_t(lights.records.size()), view_projection,
+              &outputs);
+  const rg::CompileResult compiled = rg::compile(graph);
+  EXPECT_TRUE(compiled.ok());
+  vk::GraphExecutor executor(context, frames.frames_in_flight());
+  executor.execute(frame.cmd, frame.slot, frame.frame_number, graph, compiled.plan, imports);
+  frames.submit();
+  frames.wait_idle();
+  return {contents<uint32_t>(tile_lights), contents<glm::uvec2>(tile_ranges), contents<uint32_t>(group_tiles),
+          contents<glm::uvec4>(group_commands), pass.take_dropped_pairs(frame.slot)};
+}
+
+void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape) {
+  const shadows::FrameLights lights = scattered_lights();
+  const glm::mat4 view_projection =
+      projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
+  const std::vector<float> depth = scene_depth(view_projection);
+  const LightTileGrid grid = LightTileGrid::of(width, height);
+  const Culled culled = cull(lights, shape, depth, view_projection);
+  EXPECT_EQ(culled.dropped, 0u) << "no tile is full";
+  const std::vector<uint32_t>& entries = culled.entries;
+  const std::vector<glm::uvec2>& ranges = culled.ranges;
+  const std::vector<uint32_t>& tiles_of_group = culled.tiles_of_group;
+  const std::vector<glm::uvec4>& commands = culled.commands;
+  const std::vector<TileLightSets> reference =
+      reference_light_tiles(depth, width, height, view_projection, lights.records);
+  ASSERT_EQ(reference.size(), grid.count());
+
+  const uint32_t groups = shadows::light_group_count;
+  size_t listed = 0, undecided = 0;
+  for (uint32_t tile = 0; tile < grid.count(); ++tile) {
+    std::vector<uint32_t> gpu;
+    for (uint32_t group = 0; group < groups; ++group) {
+      const glm::uvec2 range = ranges[tile * groups + group];
+      for (uint32_t j = 0; j < range.y; ++j) {
+        const uint32_t light = entries[range.x + j];
+        // Each group's range holds lights of that group only.
+        EXPECT_GE(light, lights.group_begin[group]);
+        EXPECT_LT(light, lights.group_begin[group + 1]);
+        gpu.push_back(light);
+      }
+      if (range.y > 0) {
+        const auto first = tiles_of_group.begin() + group * grid.count();
+        EXPECT_NE(std::find(first, first + commands[group].x, tile), first + commands[group].x)
+            << "tile " << tile << " is missing from group " << group << "'s dispatch";
+      }
+    }
+    EXPECT_TRUE(std::is_sorted(gpu.begin(), gpu.end()));
+    const TileLightSets& cpu = reference[tile];
+    EXPECT_TRUE(std::includes(gpu.begin(), gpu.end(), cpu.must.begin(), cpu.must.end())) << "tile " << tile;
+    EXPECT_TRUE(std::includes(cpu.may.begin(), cpu.may.end(), gpu.begin(), gpu.end())) << "tile " << tile;
+    listed += gpu.size();
+    undecided += cpu.may.size() - cpu.must.size();
+  }
+  // Every light that reaches a visible pixel is in that pixel's tile.
+  const glm::mat4 inverse = glm::inverse(view_projection);
+  size_t reached = 0;
+  for (uint32_t y = 0; y < height; y += 3) {
+    for (uint32_t x = 0; x < width; x += 3) {
+      const float d = depth[y * width + x];
+      if (d <= camera_far_depth) continue;
+      const glm::vec4 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f, d, 1.0f);
+      const glm::vec4 world = inverse * ndc;
+      const glm::vec3 point = glm::vec3(world) / world.w;
+      const uint32_t tile = (y / 16) * grid.across + x / 16;
+      for (uint32_t light = 0; light < lights.records.size(); ++light) {
+        if (!lights_point(lights.records[light], point)) continue;
+        ++reached;
+        const uint32_t group = std::upper_bound(lights.group_begin.begin(), lights.group_begin.end(), light) -
+                               lights.group_begin.begin() - 1;
+        const glm::uvec2 range = ranges[tile * groups + group];
+        const auto first = entries.begin() + range.x;
+        EXPECT_NE(std::find(first, first + range.y, light), first + range.y)
+            << "light " << light << " reaches pixel (" << x << ", " << y << ") but tile " << tile
+            << " drops it";
+      }
+    }
+  }
+  EXPECT_GT(reached, 1000u);
+  // The scene is meant to exercise the culling: many listings, few lights on a tile's boundary.
+  EXPECT_GT(listed, 200u);
+  EXPECT_LT(undecided, listed / 50 + 1);
+  // Each group dispatches exactly the tiles that have its lights; the sky corner has none.
+  for (uint32_t group = 0; group < groups; ++group) {
+    uint32_t with_lights = 0;
+    for (uint32_t tile = 0; tile < grid.count(); ++tile) with_lights += ranges[tile * groups + group].y > 0;
+    EXPECT_EQ(commands[group].x, with_lights);
+    EXPECT_EQ(commands[group].y, 1u);
+    EXPECT_EQ(commands[group].z, 1u);
+  }
+  EXPECT_EQ(ranges[0].y + ranges[1].y, 0u) << "the sky tile (0, 0) lists no lights";
+}
+
+}  // namespace
+}  // namespace sg::test

@@ -1,0 +1,325 @@
+// The five shadow algorithms on lavapipe against a CPU ray-cast reference (issue 6): a floor, a
+// box and one light (tests/support/floor_box_scene.h); every render goes through the sandbox's frame graph
+// with validation and synchronization validation on.
+//
+// The shadow factor of each pixel is measured, not guessed from colors: the scene is rendered
+// with shadows (S), without (U) and with the light off (D), and in linear light
+// shade = (U - S) / (U - D), which is the `shade` of docs/ALGORITHMS.md section 2 for a black shadow
+// color and density 1 (the floor has no specular term, so the (1 - shade) * S term vanishes).
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <glm/glm.hpp>
+
+#include "ecs/query.h"
+#include "ecs/transform_system.h"
+#include "rendergraph/device/frame_ring.h"
+#include "rendergraph/device/readback.h"
+#include "systems/frame/frame.h"
+#include "systems/scene/lights.h"
+#include "systems/scene/primitive_meshes.h"
+#include "systems/scene/scene_builder.h"
+#include "tests/support/floor_box_scene.h"
+#include "tests/support/gpu_test.h"
+#include "tests/support/shadow_reference.h"
+
+namespace sg::test {
+namespace {
+
+constexpr uint32_t width = 160;
+constexpr uint32_t height = 120;
+// Pixels where the light adds less than this (linear) to the floor are not measured.
+constexpr float min_light = 0.08f;
+
+ecs::LocalTransform downward_light(glm::vec3 position) {
+  return aimed_light(position, glm::vec3(0.0f, -1.0f, 0.001f));
+}
+
+CameraImage camera() { return floor_camera({width, height}); }
+
+SceneView sandbox_scene(scene::Scene scene) {
+  SceneView out{std::move(scene), camera().pose, camera().lens, "test"};
+  return out;
+}
+
+SceneView build(const ShadowScene& s, float intensity) {
+  return sandbox_scene(build_shadow_scene(s, intensity));
+}
+
+class ShadowAlgorithms : public GpuTest {
+ protected:
+  // Linear green channel of the last of `frames` frames.
+  std::vector<float> render(const ShadowScene& s, float intensity, bool shadows, uint32_t frames = 1,
+                            std::vector<uint8_t>* first_frame = nullptr) {
+    SceneView scene = build(s, intensity);
+    FrameSettings options;
+    options.renderer.lights.shadows = shadows;
+    return render(scene, options, frames, first_frame);
+  }
+
+  std::vector<float> render(SceneView& scene, const FrameSettings& options, uint32_t frames = 1,
+                            std::vector<uint8_t>* first_frame = nullptr) {
+    vk::FrameRing ring(context);
+    Frame frame(context, scene, options, ring.frames_in_flight());
+    frame.resize({width, height});
+    std::vector<float> out(size_t{width} * height);
+    for (uint32_t i = 0; i < frames; ++i) {
+      vk::FrameSlot& slot = ring.begin_frame();
+      frame.record(slot, 0.0);
+      ring.submit();
+      ring.wait_idle();
+      if (i == 0 && first_frame) *first_frame = vk::read_rgba8(context, frame.image()).pixels;
+    }
+    const vk::Rgba8Image image = vk::read_rgba8(context, frame.image());
+    last_pixels = image.pixels;
+    for (uint32_t y = 0; y < height; ++y) {
+      for (uint32_t x = 0; x < width; ++x) out[size_t{y} * width + x] = vk::srgb_to_linear(image.at(x, y)[1]);
+    }
+    return out;
+  }
+
+  // Measured shade per pixel; nullopt where the light barely reaches.
+  std::vector<std::optional<float>> shade(const ShadowScene& s) {
+    const std::vector<float> shadowed = render(s, s.intensity, true);
+    const std::vector<float> unshadowed = render(s, s.intensity, false);
+    const std::vector<float> dark = render(s, 0.0f, false);
+    std::vector<std::optional<float>> out(shadowed.size());
+    for (size_t i = 0; i < out.size(); ++i) {
+      const float light = unshadowed[i] - dark[i];
+      if (light >= min_light) out[i] = std::clamp((unshadowed[i] - shadowed[i]) / light, 0.0f, 1.0f);
+    }
+    return out;
+  }
+
+  FloorPixels reference(const ShadowScene& s, int band) { return floor_reference(s, {width, height}, band); }
+
+  std::vector<uint8_t> last_pixels;
+};
+
+struct Classification {
+  int measured = 0;                   // floor pixels outside the band with a measurement
+  int misclassified = 0;              // measured shade on the other side of 0.5 from the reference
+  int shadowed = 0;                   // reference says shadowed
+  int intermediate_outside_band = 0;  // 0.1 < shade < 0.9 away from the edge
+  int intermediate = 0;               // anywhere
+  int lit_but_darkened = 0;           // reference lit, shade > 0.1 (acne)
+};
+
+Classification classify(const std::vector<std::optional<float>>& shade, const FloorPixels& reference) {
+  Classification c;
+  for (size_t i = 0; i < shade.size(); ++i) {
+    if (!shade[i]) continue;
+    const float value = *shade[i];
+    const bool intermediate = value > 0.1f && value < 0.9f;
+    c.intermediate += intermediate;
+    const FloorPixel expected = reference.pixels[i];
+    if (expected != FloorPixel::lit && expected != FloorPixel::shadowed) continue;
+    ++c.measured;
+    c.shadowed += expected == FloorPixel::shadowed;
+    c.misclassified += (value > 0.5f) != (expected == FloorPixel::shadowed);
+    c.intermediate_outside_band += intermediate;
+    c.lit_but_darkened += expected == FloorPixel::lit && value > 0.1f;
+  }
+  return c;
+}
+
+ShadowScene with(LightKind kind, scene::ShadowAlgorithm algorithm, uint32_t resolution = 1024) {
+  ShadowScene s;
+  s.kind = kind;
+  s.shadow.algorithm = algorithm;
+  s.shadow.resolution = resolution;
+  return s;
+}
+
+TEST_F(ShadowAlgorithms, HardSpotShadowMatchesRayCastingAwayFromTheEdge) {
+  const ShadowScene s = with(LightKind::spot, scene::ShadowAlgorithm::hard);
+  const Classification c = classify(shade(s), reference(s, 2));
+  ASSERT_GT(c.measured, 2000);
+  ASSERT_GT(c.shadowed, 100) << "the box must cast a visible shadow";
+  EXPECT_LE(c.misclassified, c.measured / 100) << c.misclassified << " of " << c.measured;
+}
+
+TEST_F(ShadowAlgorithms, HardPointShadowMatchesRayCastingAwayFromTheEdge) {
+  ShadowScene s = with(LightKind::point, scene::ShadowAlgorithm::hard);
+  s.light_position = {-2.5f, 4.0f, -1.5f};
+  const Classification c = classify(shade(s), reference(s, 2));
+  ASSERT_GT(c.measured, 2000);
+  ASSERT_GT(c.shadowed, 100);
+  EXPECT_LE(c.misclassified, c.measured / 100) << c.misclassified << " of " << c.measured;
+}
+
+TEST_F(ShadowAlgorithms, FilteredAlgorithmsAreIntermediateOnlyNearTheEdge) {
+  for (const scene::ShadowAlgorithm algorithm :
+       {scene::ShadowAlgorithm::pcf, scene::ShadowAlgorithm::noise}) {
+    for (const LightKind kind : {LightKind::spot, LightKind::point}) {
+      SCOPED_TRACE(std::string(to_string(algorithm)) + (kind == LightKind::spot ? " spot" : " point"));
+      // A coarse map makes the filter several pixels wide on screen. Cube faces are coarser at
+      // the floor's grazing angles, where a 128-texel face would need more than the default
+      // bias: they get 512 texels and a wider kernel instead.
+      ShadowScene s = with(kind, algorithm, kind == LightKind::spot ? 128 : 512);
+      if (kind == LightKind::point) {
+        s.light_position = {-2.5f, 4.0f, -1.5f};
+        s.shadow.pcf_radius = 4.0f;
+      }
+      const std::vector<std::optional<float>> measured = shade(s);
+      const Classification near_edge = classify(measured, reference(s, 1));
+      const Classification wide = classify(measured, reference(s, 5));
+      EXPECT_GT(near_edge.intermediate, 20) << "the filter softens the edge";
+      EXPECT_LE(wide.intermediate_outside_band, wide.measured / 200);
+      EXPECT_LE(wide.misclassified, wide.measured / 100);
+    }
+  }
+}
+
+TEST_F(ShadowAlgorithms, PcssPenumbraWidensWithTheBlockerDistance) {
+  int penumbra[2] = {0, 0};
+  const float heights[2] = {0.3f, 2.5f};
+  for (int i = 0; i < 2; ++i) {
+    ShadowScene s = with(LightKind::spot, scene::ShadowAlgorithm::pcss);
+    s.shadow.light_size = 0.6f;
+    s.box_bottom = heights[i];
+    penumbra[i] = classify(shade(s), reference(s, 1)).intermediate;
+  }
+  EXPECT_GT(penumbra[1], penumbra[0] * 3 / 2) << "low " << penumbra[0] << ", high " << penumbra[1];
+}
+
+TEST_F(ShadowAlgorithms, HalfDensityDarkensHalfAsMuch) {
+  ShadowScene full = with(LightKind::spot, scene::ShadowAlgorithm::hard);
+  ShadowScene half = full;
+  half.shadow.density = 0.5f;
+  const std::vector<float> unshadowed = render(full, full.intensity, false);
+  const std::vector<float> dark_full = render(full, full.intensity, true);
+  const std::vector<float> dark_half = render(half, half.intensity, true);
+  const FloorPixels expected = reference(full, 2);
+  double sum_full = 0.0, sum_half = 0.0;
+  int counted = 0;
+  for (size_t i = 0; i < unshadowed.size(); ++i) {
+    if (expected.pixels[i] != FloorPixel::shadowed) continue;
+    sum_full += unshadowed[i] - dark_full[i];
+    sum_half += unshadowed[i] - dark_half[i];
+    ++counted;
+  }
+  ASSERT_GT(counted, 100);
+  ASSERT_GT(sum_full / counted, 0.1);
+  EXPECT_NEAR(sum_half / sum_full, 0.5, 0.05);
+}
+
+TEST_F(ShadowAlgorithms, DefaultBiasLeavesTheLitFloorClean) {
+  for (const scene::ShadowAlgorithm algorithm : scene::all_shadow_algorithms) {
+    for (const LightKind kind : {LightKind::spot, LightKind::point}) {
+      SCOPED_TRACE(std::string(to_string(algorithm)) + (kind == LightKind::spot ? " spot" : " point"));
+      ShadowScene s = with(kind, algorithm);
+      if (kind == LightKind::point) s.light_position = {-2.5f, 4.0f, -1.5f};
+      const Classification c = classify(shade(s), reference(s, 4));
+      ASSERT_GT(c.measured, 2000);
+      EXPECT_LE(c.lit_but_darkened, c.measured / 1000) << "acne: lit floor pixels measured as shadowed";
+    }
+  }
+}
+
+// Acne is worst where light grazes a surface. A floor with nothing on it, lit from low at the
+// side, must come out lit everywhere, whatever the algorithm: the kernels compare against the
+// receiver's plane, and texel-sized slopes are within the bias.
+TEST_F(ShadowAlgorithms, GrazingLightLeavesAnEmptyFloorLit) {
+  for (const scene::ShadowAlgorithm algorithm : scene::all_shadow_algorithms) {
+    for (const LightKind kind : {LightKind::spot, LightKind::point}) {
+      SCOPED_TRACE(std::string(to_string(algorithm)) + (kind == LightKind::spot ? " spot" : " point"));
+      ShadowScene s = with(kind, algorithm);
+      s.with_box = false;
+      s.light_position = {-7.0f, 1.5f, -1.0f};
+      s.aim = glm::normalize(glm::vec3(1.0f, -0.35f, 0.1f));
+      s.intensity = 3.0f;
+      const Classification c = classify(shade(s), reference(s, 0));
+      ASSERT_GT(c.measured, 1000);
+      EXPECT_EQ(c.shadowed, 0);
+      EXPECT_LE(c.lit_but_darkened, c.measured / 1000) << "acne at grazing incidence";
+    }
+  }
+}
+
+TEST_F(ShadowAlgorithms, NoiseIsStableFromFrameToFrame) {
+  for (const scene::ShadowAlgorithm algorithm :
+       {scene::ShadowAlgorithm::noise, scene::ShadowAlgorithm::pcss_noise}) {
+    const ShadowScene s = with(LightKind::spot, algorithm, 128);
+    std::vector<uint8_t> first;
+    render(s, s.intensity, true, 3, &first);
+    EXPECT_EQ(first, last_pixels) << to_string(algorithm);
+  }
+}
+
+// Five spot lights side by side, each over its own box and floor disc, each with its own
+// algorithm. Each disc must look exactly as when every light uses that disc's algorithm, and
+// the discs of the filtered algorithms must differ from the hard one's.
+TEST_F(ShadowAlgorithms, FiveLightsEachRenderWithTheirOwnAlgorithm) {
+  constexpr float spacing = 4.0f;
+  const auto build_row = [&]() {
+    uint32_t box = 0;
+    SceneView out = sandbox_scene(floor_scene("five lights", box));
+    scene::Scene& scene = out.scene;
+    for (int i = 0; i < 5; ++i) {
+      const float x = (i - 2) * spacing;
+      scene::add_instance(
+          scene, box, {{x + 0.2f, 1.2f, 0.1f}, glm::angleAxis(0.4f, glm::vec3(0, 1, 0)), {0.7f, 0.3f, 0.6f}},
+          scene::Material{});
+      scene::SpotLight light;
+      light.intensity = 1.6f;
+      light.range = 8.0f;
+      light.inner_cone = glm::radians(15.0f);
+      light.outer_cone = glm::radians(22.0f);
+      scene::ShadowSettings shadow;
+      shadow.algorithm = scene::all_shadow_algorithms[i];
+      shadow.resolution = 64;  // coarse, so that the filters differ by whole pixels
+      shadow.light_size = 0.6f;
+      scene::add_light(scene, light, downward_light({x, 4.0f, 0.0f}), shadow,
+                       std::string(to_string(shadow.algorithm)));
+    }
+    ecs::update_world_transforms(scene.world, 0);
+    out.pose = {{0.0f, 14.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
+    return out;
+  };
+  SceneView mixed_scene = build_row();
+  const std::vector<float> mixed = render(mixed_scene, FrameSettings{});
+
+  // Which disc each pixel of the floor belongs to (-1: none).
+  CameraImage view{mixed_scene.pose, mixed_scene.lens, {width, height}};
+  std::vector<int> disc(mixed.size(), -1);
+  for (uint32_t y = 0; y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) {
+      const std::optional<glm::vec3> p = hit_floor(pixel_ray(view, x, y));
+      if (!p) continue;
+      const int i = static_cast<int>(std::lround(p->x / spacing)) + 2;
+      if (i >= 0 && i < 5 && glm::length(glm::vec2(p->x - (i - 2) * spacing, p->z)) < 1.8f) {
+        disc[size_t{y} * width + x] = i;
+      }
+    }
+  }
+
+  std::vector<std::vector<float>> uniform(5);
+  for (int a = 0; a < 5; ++a) {
+    SceneView scene = build_row();
+    scene.scene.world.query<scene::ShadowSettings>().for_each(
+        [&](scene::ShadowSettings& shadow) { shadow.algorithm = scene::all_shadow_algorithms[a]; });
+    uniform[a] = render(scene, FrameSettings{});
+  }
+  for (int i = 0; i < 5; ++i) {
+    SCOPED_TRACE(to_string(scene::all_shadow_algorithms[i]));
+    int pixels = 0, same_as_own = 0, differs_from_hard = 0;
+    for (size_t p = 0; p < mixed.size(); ++p) {
+      if (disc[p] != i) continue;
+      ++pixels;
+      same_as_own += std::abs(mixed[p] - uniform[i][p]) < 1e-6f;
+      differs_from_hard += std::abs(mixed[p] - uniform[0][p]) > 0.01f;
+    }
+    ASSERT_GT(pixels, 100);
+    EXPECT_EQ(same_as_own, pixels) << "the disc must look as with its own algorithm everywhere";
+    if (i > 0) {
+      EXPECT_GT(differs_from_hard, 5) << "the algorithm must be visible";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sg::test
