@@ -4,10 +4,13 @@
 namespace sg::ecs {
 
 class World;
-class ThreadPool;
 class SparseSet;
 class OwningGroup;
 template <typename... Components>
 class Query;
 
 }  // namespace sg::ecs
+
+namespace sg::jobs {
+class ThreadPool;
+}  // namespace sg::jobs

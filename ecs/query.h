@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "ecs/jobs/thread_pool.h"
 #include "ecs/query.h"
-#include "ecs/thread_pool.h"
 #include "ecs/world.h"
 
 namespace sg::ecs {
@@ -81,13 +81,13 @@ class Query {
   // costs tens of nanoseconds (a matrix, a sine) pays for its tasks' bookkeeping with fewer
   // entities, and thousands of them already share well in tasks of about a thousand.
   template <typename Fn>
-  void for_each_parallel(ThreadPool& threads, Fn&& fn,
+  void for_each_parallel(jobs::ThreadPool& threads, Fn&& fn,
                          std::size_t entities_per_task = default_entities_per_task) {
     run(fn, &threads, entities_per_task);
   }
   // The same on `threads`, or for_each when it is null (systems that take an optional pool).
   template <typename Fn>
-  void for_each_parallel(ThreadPool* threads, Fn&& fn,
+  void for_each_parallel(jobs::ThreadPool* threads, Fn&& fn,
                          std::size_t entities_per_task = default_entities_per_task) {
     run(fn, threads, entities_per_task);
   }
@@ -130,7 +130,7 @@ class Query {
   static constexpr std::size_t default_entities_per_task = 16384;
 
   template <typename Fn>
-  void run(Fn& fn, ThreadPool* threads, std::size_t entities_per_task) {
+  void run(Fn& fn, jobs::ThreadPool* threads, std::size_t entities_per_task) {
     // An entity must have every component: one empty pool leaves nothing to visit (and no
     // change history to collect).
     if (std::apply([](const auto*... pools) { return ((pools->size() == 0) || ...); }, pools_)) return;
@@ -141,19 +141,20 @@ class Query {
         ((is_mutable<Components> ? std::get<I>(pools_)->mark_all_changed(now) : void()), ...);
       }
       (std::index_sequence_for<Components...>{});
-      run_in_pieces(threads, std::get<0>(pools_)->size(), entities_per_task,
-                    [&](std::size_t begin, std::size_t end) { for_each_slot(fn, begin, end); });
+      jobs::run_in_pieces(threads, std::get<0>(pools_)->size(), entities_per_task,
+                          [&](std::size_t begin, std::size_t end) { for_each_slot(fn, begin, end); });
       return;
     }
     if (watched_ != nullptr) {
       // Collected first, so writes made by the callback cannot change what this pass visits.
       std::vector<std::uint32_t> changed;
       watched_->collect_changed_since(since_, changed);
-      run_in_pieces(threads, changed.size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
-        visit_range(
-            watched_, [&](std::size_t i) { return changed[i]; }, begin, end, now, fn,
-            std::index_sequence_for<Components...>{}, nullptr);
-      });
+      jobs::run_in_pieces(threads, changed.size(), entities_per_task,
+                          [&](std::size_t begin, std::size_t end) {
+                            visit_range(
+                                watched_, [&](std::size_t i) { return changed[i]; }, begin, end, now, fn,
+                                std::index_sequence_for<Components...>{}, nullptr);
+                          });
       return;
     }
     const auto identity = [](std::size_t i) { return static_cast<std::uint32_t>(i); };
@@ -163,7 +164,7 @@ class Query {
       const bool plain =
           excluded_.empty() &&
           std::apply([&](const auto*... pools) { return ((pools->owner() == group) && ...); }, pools_);
-      run_in_pieces(threads, group->size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
+      jobs::run_in_pieces(threads, group->size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
         if (plain) {
           mark_range_changed(begin, end, now);
           for_each_slot(fn, begin, end);
@@ -174,7 +175,7 @@ class Query {
       });
       return;
     }
-    run_in_pieces(threads, driver->size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
+    jobs::run_in_pieces(threads, driver->size(), entities_per_task, [&](std::size_t begin, std::size_t end) {
       visit_range(driver, identity, begin, end, now, fn, std::index_sequence_for<Components...>{}, nullptr);
     });
   }

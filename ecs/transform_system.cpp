@@ -86,7 +86,7 @@ void update_subtree(World& world, Entity root, Visited& updated, std::vector<Ent
 
 }  // namespace
 
-void update_world_transforms(World& world, Tick since, ThreadPool* threads) {
+void update_world_transforms(World& world, Tick since, jobs::ThreadPool* threads) {
   // Most moving things (crates, lights) have neither parent nor children: their world matrix is
   // their local one, with none of a subtree's lookups and in any order, so in parallel.
   world.query<const LocalTransform, WorldTransform>()

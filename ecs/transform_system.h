@@ -15,7 +15,7 @@ namespace sg::ecs {
 // Run it once per frame after the systems that move things, passing the tick of its previous
 // run (0 the first time, to compute everything). With `threads`, entities outside any hierarchy
 // (no Parent, no Children) are computed on them.
-void update_world_transforms(World& world, Tick since, ThreadPool* threads = nullptr);
+void update_world_transforms(World& world, Tick since, jobs::ThreadPool* threads = nullptr);
 
 // Entities per parallel task of a per-entity update that costs tens of nanoseconds (a matrix, a
 // sine): a frame's few thousand moving things then share the threads (a task is handed out for

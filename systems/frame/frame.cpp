@@ -70,7 +70,7 @@ void Frame::resize(VkExtent2D extent) {
 vk::FrameSlot& Frame::begin(vk::FrameRing& ring) {
   // Woken workers wait for a batch this long before they sleep again: half of it leaves room
   // for a wait that ends later than the last one did.
-  return ring.begin_frame([this] { renderer_.workers().wake(); }, ecs::ThreadPool::spin_time / 2);
+  return ring.begin_frame([this] { renderer_.workers().wake(); }, jobs::ThreadPool::spin_time / 2);
 }
 
 void Frame::record(const vk::FrameSlot& frame, double time_seconds,

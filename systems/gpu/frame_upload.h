@@ -5,7 +5,7 @@
 #include <cstring>
 #include <span>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 #include "rendergraph/device/frame_buffers.h"
 
 namespace sg {
@@ -14,11 +14,11 @@ namespace sg {
 // memory go faster from several cores, and a thousand lights' records are half a megabyte.
 template <class T>
 const vk::Buffer& write_in_pieces(vk::FrameBuffers& buffers, uint32_t slot, std::span<const T> items,
-                                  ecs::ThreadPool* pool) {
+                                  jobs::ThreadPool* pool) {
   const vk::Buffer& buffer = buffers.reserve(slot, items.size_bytes());
   auto* mapped = static_cast<T*>(buffer.mapped());
   constexpr size_t piece = (std::size_t{64} << 10) / sizeof(T) + 1;  // about 64 KiB
-  ecs::run_in_pieces(pool, items.size(), piece, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, items.size(), piece, [&](size_t begin, size_t end) {
     if (begin < end) std::memcpy(mapped + begin, items.data() + begin, (end - begin) * sizeof(T));
   });
   return buffer;

@@ -59,7 +59,7 @@ GpuScene::GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes,
   upload.submit();
 }
 
-void GpuScene::gather(const ecs::World& world, ecs::ThreadPool* pool) {
+void GpuScene::gather(const ecs::World& world, jobs::ThreadPool* pool) {
   // The frame's writes carry the tick the previous gather ran at (the frame loop advances the
   // tick just before gathering), so "new" means written at or after it.
   const ecs::Tick since = gathered_at_ == 0 ? 0 : gathered_at_ - 1;
@@ -84,7 +84,7 @@ void GpuScene::place(const ecs::World& world, size_t i) {
   keys_[i] = ecs::entity_key(entity);
 }
 
-bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::ThreadPool* pool) {
+bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, jobs::ThreadPool* pool) {
   // Anything that adds, removes or reorders instances is rare (editing, streaming): it regathers
   // everything. Moves and material edits touch only their instances.
   if (!world.removed_since<scene::MeshInstance>(since).empty() ||
@@ -145,7 +145,7 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   // replaced_by_chunk_, gathered into changed_ and their bounds after.
   replaced_by_chunk_.resize(instance_count());
   chunk_changes_.assign(chunk_bounds_.size(), 0);
-  ecs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, regrown_chunks_.size(), 1, [&](size_t begin, size_t end) {
     for (size_t n = begin; n < end; ++n) {
       const uint32_t chunk = regrown_chunks_[n];
       const size_t first = size_t{chunk} * instances_per_chunk;
@@ -177,9 +177,9 @@ bool GpuScene::gather_changes(const ecs::World& world, ecs::Tick since, ecs::Thr
   return true;
 }
 
-void GpuScene::regrow_scene_bounds(ecs::ThreadPool* pool) {
+void GpuScene::regrow_scene_bounds(jobs::ThreadPool* pool) {
   chunk_bounds_.resize((bounds_.size() + instances_per_chunk - 1) / instances_per_chunk);
-  ecs::run_in_pieces(pool, chunk_bounds_.size(), 1, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, chunk_bounds_.size(), 1, [&](size_t begin, size_t end) {
     for (size_t chunk = begin; chunk < end; ++chunk) regrow_chunk(chunk);
   });
   grow_scene_bounds();
@@ -196,7 +196,7 @@ void GpuScene::grow_scene_bounds() {
   for (const scene::Aabb& chunk : chunk_bounds_) scene::grow(scene_bounds_, chunk);
 }
 
-void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
+void GpuScene::gather_all(const ecs::World& world, jobs::ThreadPool* pool) {
   // Only what orders the instances here; their data is read below, in parallel.
   items_.clear();
   world.query<const ecs::WorldTransform, const scene::MeshInstance>().for_each(
@@ -240,7 +240,7 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   bounds_.resize(count);
   keys_.resize(count);
   constexpr size_t piece = 256;  // small, so threads that wake late still find work
-  ecs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) place(world, i);
   });
   regrow_scene_bounds(pool);
@@ -279,7 +279,7 @@ void GpuScene::gather_all(const ecs::World& world, ecs::ThreadPool* pool) {
   }
 }
 
-void GpuScene::upload(uint32_t slot, ecs::ThreadPool* pool) {
+void GpuScene::upload(uint32_t slot, jobs::ThreadPool* pool) {
   // Megabytes a frame with many instances, so a slot gets only the records written since it was
   // last uploaded, unless the layout changed or its buffer is new. Copies run in chunks on the
   // pool, as writes into mapped GPU memory go faster from several cores; chunks of 1,024 records,
@@ -291,7 +291,7 @@ void GpuScene::upload(uint32_t slot, ecs::ThreadPool* pool) {
   auto* mapped = static_cast<GpuInstance*>(buffer.mapped());
   const uint64_t uploaded_at = std::exchange(uploaded_at_[slot], gathers_);
   const bool everything = grows || uploaded_at < laid_out_at_;
-  ecs::run_in_pieces(pool, instances.size(), 1024, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, instances.size(), 1024, [&](size_t begin, size_t end) {
     if (everything) {
       std::memcpy(mapped + begin, instances.data() + begin, (end - begin) * sizeof(GpuInstance));
       return;

@@ -15,7 +15,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 #include "ecs/world.h"
 #include "rendergraph/core/resource_types.h"
 #include "rendergraph/device/descriptors.h"
@@ -69,11 +69,11 @@ class GpuScene {
   // same world, let its tick advance between frames (ecs::World::advance_tick) so that a
   // frame's writes are told from the previous frame's, and keep its removal history back to the
   // previous call (ecs::World::forget_removals_before).
-  void gather(const ecs::World& world, ecs::ThreadPool* pool = nullptr);
+  void gather(const ecs::World& world, jobs::ThreadPool* pool = nullptr);
   // Writes what gather() found into the slot's instance and indirect-draw buffers: only the
   // instances gathered since the slot was last written, unless the order changed or the buffer
   // had to grow (with `pool`, the copy runs on its threads).
-  void upload(uint32_t slot, ecs::ThreadPool* pool = nullptr);
+  void upload(uint32_t slot, jobs::ThreadPool* pool = nullptr);
 
   // Binds the vertex and index buffers (scene::Vertex at binding 0, 32-bit indices); false when
   // the scene has no geometry, and nothing may be drawn.
@@ -157,10 +157,10 @@ class GpuScene {
   void place(const ecs::World& world, size_t i);
   // Re-places the instances written at or after `since`; false, having changed nothing, when
   // instances were added, removed or reordered.
-  bool gather_changes(const ecs::World& world, ecs::Tick since, ecs::ThreadPool* pool);
-  void gather_all(const ecs::World& world, ecs::ThreadPool* pool);
+  bool gather_changes(const ecs::World& world, ecs::Tick since, jobs::ThreadPool* pool);
+  void gather_all(const ecs::World& world, jobs::ThreadPool* pool);
   // The scene's bounds from every instance's.
-  void regrow_scene_bounds(ecs::ThreadPool* pool);
+  void regrow_scene_bounds(jobs::ThreadPool* pool);
   // chunk_bounds_[chunk] from its instances' bounds.
   void regrow_chunk(size_t chunk);
   // The scene's bounds from every chunk's.

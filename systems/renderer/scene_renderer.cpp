@@ -57,7 +57,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       lighting_(settings.lighting == LightingPath::automatic ? fastest_lighting : settings.lighting),
       lighting_per_frame_(settings.lighting == LightingPath::automatic &&
                           context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU),
-      workers_(settings.cpu_threads == 0 ? ecs::ThreadPool::default_workers() : settings.cpu_threads - 1),
+      workers_(settings.cpu_threads == 0 ? jobs::ThreadPool::default_workers() : settings.cpu_threads - 1),
       gpu_scene_(context, scene.meshes, frames_in_flight),
       textures_(context, scene.textures),
       atlas_(context, uint64_t{settings.shadow_memory_mib} << 20, keeps_static_layers(context, settings)),

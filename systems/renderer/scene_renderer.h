@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 #include "ecs/world.h"
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/frame_buffers.h"
@@ -99,8 +99,8 @@ class SceneRenderer {
   const RendererSettings& settings() const { return settings_; }
   // The threads gather() and prepare() split their work over, idle in between: the frame's
   // systems that run before gather() (the transform update) may use them too.
-  ecs::ThreadPool& workers() { return workers_; }
-  const ecs::ThreadPool& workers() const { return workers_; }
+  jobs::ThreadPool& workers() { return workers_; }
+  const jobs::ThreadPool& workers() const { return workers_; }
   // Switches the picture between lit and shadow-only from the next prepare() on.
   void set_view(LightingView view) { settings_.view = view; }
   // The batched shadow views' raster from the next frame on (ShadowViewBatch::set_raster); no
@@ -125,8 +125,8 @@ class SceneRenderer {
   rg::Format frame_format_;
   RendererSettings settings_;
   LightingPath lighting_;
-  bool lighting_per_frame_;  // automatic on a CPU device: cpu_lighting_for each frame
-  ecs::ThreadPool workers_;  // CPU work of a frame that splits into independent chunks
+  bool lighting_per_frame_;   // automatic on a CPU device: cpu_lighting_for each frame
+  jobs::ThreadPool workers_;  // CPU work of a frame that splits into independent chunks
   GpuScene gpu_scene_;
   GpuTextures textures_;
   ShadowAtlas atlas_;

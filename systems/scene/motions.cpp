@@ -8,7 +8,7 @@
 
 namespace sg::scene {
 
-void animate_orbits(ecs::World& world, float time, ecs::ThreadPool* threads) {
+void animate_orbits(ecs::World& world, float time, jobs::ThreadPool* threads) {
   world.query<ecs::LocalTransform, const OrbitMotion>().for_each_parallel(
       threads,
       [time](ecs::LocalTransform& local, const OrbitMotion& orbit) {
@@ -18,7 +18,7 @@ void animate_orbits(ecs::World& world, float time, ecs::ThreadPool* threads) {
       ecs::motion_entities_per_task);
 }
 
-void animate_bobs(ecs::World& world, float time, ecs::ThreadPool* threads) {
+void animate_bobs(ecs::World& world, float time, jobs::ThreadPool* threads) {
   world.query<ecs::LocalTransform, const BobMotion>().for_each_parallel(
       threads,
       [time](ecs::LocalTransform& local, const BobMotion& bob) {

@@ -28,9 +28,9 @@ struct BobMotion {
 
 // Sets every OrbitMotion entity's translation for `time` (rotation untouched); with `threads`,
 // on them.
-void animate_orbits(ecs::World& world, float time, ecs::ThreadPool* threads = nullptr);
+void animate_orbits(ecs::World& world, float time, jobs::ThreadPool* threads = nullptr);
 
 // Sets every BobMotion entity's height for `time`; with `threads`, on them.
-void animate_bobs(ecs::World& world, float time, ecs::ThreadPool* threads = nullptr);
+void animate_bobs(ecs::World& world, float time, jobs::ThreadPool* threads = nullptr);
 
 }  // namespace sg::scene

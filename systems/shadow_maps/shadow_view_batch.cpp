@@ -235,7 +235,7 @@ bool ShadowViewBatch::all_casters_kept(uint32_t slot) {
 }
 
 void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene,
-                              uint32_t page_size, ecs::ThreadPool* pool) {
+                              uint32_t page_size, jobs::ThreadPool* pool) {
   // Where each drawn view goes: the views drawn with every caster first, then those drawn with
   // the moving casters alone (the cull's two dispatches take a range each). How each light is
   // drawn is read on the pool, a byte a light (the views lie hundreds of bytes apart), the places
@@ -250,7 +250,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     return !view.render ? skipped : view.moving_casters_only ? moving_casters : every_caster;
   };
   drawn_as_.resize(light_count);
-  ecs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i)
       drawn_as_[i] = i < map_count ? drawn_as(lights.maps[i]) : drawn_as(lights.cubes[i - map_count]);
   });
@@ -265,7 +265,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     if (pass == every_caster) full_views_ = next;
   }
   view_tiles_.resize(next);
-  ecs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       if (first_view_[i] == not_drawn) continue;
       if (i < map_count) {
@@ -334,7 +334,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
                 glm::uvec4(depth_placement_.places()[v], layer, page_size)};
     clears_[v] = tile_clear(tile);
   };
-  ecs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const uint32_t first = first_view_[i];
       if (first == not_drawn) continue;
@@ -366,7 +366,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
       caster_buffers_.reserve(slot, (caster_count + moving_count_) * sizeof(Caster)).mapped());
   // Pieces of 512 casters (16 KiB of records): 15,000 casters in pieces of 2,048 left half of
   // 16 threads without a piece.
-  ecs::run_in_pieces(pool, caster_count, 512, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, caster_count, 512, [&](size_t begin, size_t end) {
     auto g = static_cast<uint32_t>(
         std::upper_bound(group_first_caster_.begin(), group_first_caster_.end(), begin) -
         group_first_caster_.begin() - 1);
@@ -377,7 +377,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
       casters[c] = {glm::vec4(bounds[i].min, as_float(group)), glm::vec4(bounds[i].max, as_float(i))};
     }
   });
-  ecs::run_in_pieces(pool, moving_count_, 1024, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, moving_count_, 1024, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       const uint32_t i = moving_casters_[k];
       casters[caster_count + k] = {glm::vec4(bounds[i].min, as_float(group_word(i, group_of(i), true))),

@@ -40,7 +40,7 @@
 
 #include <glm/glm.hpp>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/frame_buffers.h"
@@ -81,7 +81,7 @@ class ShadowViewBatch {
   // in an atlas of `page_size` texels a page, and of `scene`'s casters. With `pool`, the view
   // and caster records are written on its threads, straight into the slot's buffers.
   void prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene, uint32_t page_size,
-               ecs::ThreadPool* pool = nullptr);
+               jobs::ThreadPool* pool = nullptr);
   // Whether the prepared frame keeps the static layers of the views it draws with every caster
   // (compute raster with static layers); when not, moving_casters_only views are drawn with
   // every caster too.

@@ -137,7 +137,7 @@ ShadowKind shadow_kind(const GpuLight& record) {
 uint64_t light_key(ecs::Entity entity) { return ecs::entity_key(entity); }
 
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
-                   FrameLights& out, ecs::ThreadPool* pool) {
+                   FrameLights& out, jobs::ThreadPool* pool) {
   const ecs::Tick since = out.gathered_at;
   out.gathered_at = world.tick();
   const scene::Aabb bounds =
@@ -164,7 +164,7 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
   // Pieces of 64 lights: a light's views and record take about half a microsecond, a kept one
   // a tenth of that. Pieces of 16 balanced a thousand lights no better on an H200 host, and the
   // pieces' neighbouring bytes of `named` share cache lines.
-  ecs::run_in_pieces(pool, gathered.size(), 64, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, gathered.size(), 64, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const auto index = static_cast<uint32_t>(i);
       const GatheredLight& light = gathered[i];
@@ -202,7 +202,7 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
   scratch.last_overrides = overrides;
 }
 
-void sort_by_group(FrameLights& out, ecs::ThreadPool* pool) {
+void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
   FrameLights::Scratch& scratch = out.scratch;
   const auto group_of = [](const GpuLight& record) {
     return light_group(shadow_kind(record), algorithm_of(record));
@@ -218,7 +218,7 @@ void sort_by_group(FrameLights& out, ecs::ThreadPool* pool) {
   scratch.records.resize(count);
   scratch.piece_groups.assign(pieces * light_group_count, 0);
   scratch.piece_types.assign(pieces * light_group_count, 0);
-  ecs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
     uint32_t* groups = &scratch.piece_groups[begin / piece * light_group_count];
     uint32_t* types = &scratch.piece_types[begin / piece * light_group_count];
     for (size_t i = begin; i < end; ++i) {
@@ -246,7 +246,7 @@ void sort_by_group(FrameLights& out, ecs::ThreadPool* pool) {
       next[g] += std::exchange(piece_group, next[g]);
     }
   }
-  ecs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
     uint32_t* places = &scratch.piece_groups[begin / piece * light_group_count];
     for (size_t i = begin; i < end; ++i) {
       const uint32_t place = places[scratch.moved_to[i]]++;
@@ -258,7 +258,7 @@ void sort_by_group(FrameLights& out, ecs::ThreadPool* pool) {
   // The views lie hundreds of bytes apart: thousands of them are pointed at their records' new
   // places on the pool.
   const size_t map_count = out.maps.size();
-  ecs::run_in_pieces(pool, map_count + out.cubes.size(), piece, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, map_count + out.cubes.size(), piece, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       uint32_t& light = v < map_count ? out.maps[v].light : out.cubes[v - map_count].light;
       light = scratch.moved_to[light];

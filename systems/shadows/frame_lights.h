@@ -16,7 +16,7 @@
 
 #include <glm/glm.hpp>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 #include "ecs/world.h"
 #include "systems/scene/aabb.h"
 #include "systems/scene/shadow_settings.h"
@@ -139,11 +139,11 @@ struct FrameLights {
 // record from then: the result is what gathering afresh gives, for less (view matrices, names),
 // however ShadowSchedule and sort_by_group changed `out` in between.
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
-                   FrameLights& out, ecs::ThreadPool* pool = nullptr);
+                   FrameLights& out, jobs::ThreadPool* pool = nullptr);
 
 // Orders the records by light group (stably, so lights keep the world's order within a group),
 // from each record's type, algorithm and whether it has a shadow map, and points the views at
 // their records' new places. With `pool`, the records are counted and copied on its threads.
-void sort_by_group(FrameLights& lights, ecs::ThreadPool* pool = nullptr);
+void sort_by_group(FrameLights& lights, jobs::ThreadPool* pool = nullptr);
 
 }  // namespace sg::shadows

@@ -6,7 +6,7 @@
 #include <cassert>
 #include <cmath>
 
-#include "ecs/parallel_pieces.h"
+#include "ecs/jobs/parallel_pieces.h"
 
 #include "systems/shadows/radix_sort.h"
 
@@ -70,7 +70,7 @@ uint32_t ShadowAtlasPlanner::wanted_resolution(const ShadowRequest& request, uin
 }
 
 void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
-                              ecs::ThreadPool* pool) {
+                              jobs::ThreadPool* pool) {
   assert(out.size() == requests.size());
   ++plans_;
   match_lights(requests, pool);
@@ -83,7 +83,7 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   // order, here, and those still shadowed are placed anew.
   tiles_.resize(requests.size());
   retiled_.resize(requests.size());
-  const size_t retiled_count = ecs::keep_in_pieces(
+  const size_t retiled_count = jobs::keep_in_pieces(
       pool, requests.size(), lights_per_piece, keep_scratch_,
       [&](size_t i) {
         if (light_of_request_[i] == no_light) return false;
@@ -112,7 +112,7 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   // counts into its piece's tally.
   const size_t pieces = (requests.size() + lights_per_piece - 1) / lights_per_piece;
   tallies_.assign(std::max<size_t>(pieces, 1), Tally{});
-  ecs::run_in_pieces(pool, requests.size(), lights_per_piece, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, requests.size(), lights_per_piece, [&](size_t begin, size_t end) {
     Tally& tally = tallies_[begin / lights_per_piece];
     for (size_t i = begin; i < end; ++i) {
       ShadowPlacement& placement = out[i];
@@ -153,7 +153,7 @@ void ShadowAtlasPlanner::order_least_important_first(std::span<const ShadowReque
   }
 }
 
-void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, ecs::ThreadPool* pool) {
+void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool) {
   const size_t previous_requests = light_of_request_.size();
   light_of_request_.resize(requests.size());
   resolution_.assign(requests.size(), 0);
@@ -168,7 +168,7 @@ void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, e
   // found without a lookup by key, on the pool (the last plan gave each light to one request, so
   // no two requests take the same light here). The rest are listed for a lookup by key after.
   unmatched_.resize(requests.size());
-  const size_t unmatched_count = ecs::keep_in_pieces(
+  const size_t unmatched_count = jobs::keep_in_pieces(
       pool, requests.size(), lights_per_piece, keep_scratch_,
       [&](size_t i) {
         const uint32_t index = i < previous_requests ? light_of_request_[i] : no_light;

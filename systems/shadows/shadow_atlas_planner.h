@@ -34,7 +34,7 @@
 #include <utility>
 #include <vector>
 
-#include "ecs/parallel_pieces.h"
+#include "ecs/jobs/parallel_pieces.h"
 
 #include "systems/shadows/shadow_atlas_pages.h"
 
@@ -88,7 +88,7 @@ class ShadowAtlasPlanner {
   // in the same order every frame. A key requested twice in one plan() gets a shadow only once.
   // With `pool`, the per-light passes that need no shared state run on it (same result).
   void plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
-            ecs::ThreadPool* pool = nullptr);
+            jobs::ThreadPool* pool = nullptr);
   // The last plan()'s.
   const AtlasStats& stats() const { return stats_; }
   // A line for the log when the budget's effect (lights demoted or dropped) differs from the last
@@ -120,7 +120,7 @@ class ShadowAtlasPlanner {
   uint32_t tier_count() const;
   uint32_t tier_of(uint32_t resolution) const;
   uint32_t wanted_resolution(const ShadowRequest& request, uint32_t previous) const;
-  void match_lights(std::span<const ShadowRequest> requests, ecs::ThreadPool* pool);
+  void match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool);
   void release_lights_not_requested();
   void fit_budget(std::span<const ShadowRequest> requests);
   // by_importance_: the requests with a shadow, least important first, ties by key so that the
@@ -161,7 +161,7 @@ class ShadowAtlasPlanner {
   std::vector<uint32_t> resolution_;
   std::vector<uint32_t> unmatched_;  // requests not matched by their place in the last plan
   std::vector<uint32_t> retiled_;    // by rank: the requests whose light changed resolution or kind
-  ecs::KeepScratch keep_scratch_;
+  jobs::KeepScratch keep_scratch_;
   std::vector<std::array<AtlasTile, 6>> tiles_;
   // Per tier (0: page_size, 1: half that, ...): the 2D maps and cubes the budget holds.
   std::vector<uint64_t> maps_per_tier_;

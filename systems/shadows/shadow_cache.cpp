@@ -12,7 +12,7 @@ namespace sg::shadows {
 
 void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes,
                        uint32_t view_budget, bool static_layers, std::span<uint8_t> render,
-                       std::span<uint8_t> usable, ecs::ThreadPool* pool) {
+                       std::span<uint8_t> usable, jobs::ThreadPool* pool) {
   if (render.size() != lights.size() || usable.size() != lights.size()) {
     throw std::invalid_argument(
         "sg::shadows::ShadowCache::plan: render and usable need one element per light");
@@ -76,7 +76,7 @@ void ShadowCache::static_layers_not_kept() {
 // Only lights not dirty already are worth testing; unbounded ones are marked on any change.
 void ShadowCache::mark_by_casters(std::span<const ShadowCacheLight> lights,
                                   std::span<const scene::Aabb> boxes, bool LightState::*flag,
-                                  ecs::ThreadPool* pool) {
+                                  jobs::ThreadPool* pool) {
   if (boxes.empty()) return;
   candidates_.clear();
   candidate_reach_.clear();

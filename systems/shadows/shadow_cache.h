@@ -91,7 +91,7 @@ class ShadowCache {
   // `pool`, the lights are tested against the boxes on it.
   void plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes, uint32_t view_budget,
             bool static_layers, std::span<uint8_t> render, std::span<uint8_t> usable,
-            ecs::ThreadPool* pool = nullptr);
+            jobs::ThreadPool* pool = nullptr);
 
   // The last plan's counts.
   const ShadowCacheStats& stats() const { return stats_; }
@@ -120,7 +120,7 @@ class ShadowCache {
 
   // Sets `flag` on the lights not dirty at all yet whose reach meets one of `boxes`.
   void mark_by_casters(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> boxes,
-                       bool LightState::*flag, ecs::ThreadPool* pool);
+                       bool LightState::*flag, jobs::ThreadPool* pool);
   void choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
                       std::span<uint8_t> render);
 

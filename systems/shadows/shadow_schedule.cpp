@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "ecs/parallel_pieces.h"
+#include "ecs/jobs/parallel_pieces.h"
 
 #include "systems/shadows/align_by_key.h"
 #include "systems/shadows/atlas_tile_coords.h"
@@ -49,7 +49,7 @@ ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas, bool static_layers, Sha
     : planner_(atlas), page_size_(atlas.page_size), static_layers_(static_layers), resolution_(resolution) {}
 
 void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
-                              uint32_t view_budget, ecs::ThreadPool* pool) {
+                              uint32_t view_budget, jobs::ThreadPool* pool) {
   // Requests: maps first, then cubes, each in the lights' order. A light whose reach is out of
   // the camera's sight shades nothing visible: it asks for no tile at all. Importances, floors
   // and compact copies of what the planner and the cache need of each view are worked out on
@@ -65,7 +65,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   const bool same_counts =
       rendered_maps_.size() == map_count && rendered_cubes_.size() == lights.cubes.size();
   pieces_aligned_.assign(std::max<size_t>((view_count + views_per_piece - 1) / views_per_piece, 1), 1);
-  ecs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
     bool aligned = same_counts;
     for (size_t v = begin; v < end; ++v) {
       if (v < map_count) {
@@ -103,7 +103,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   // the pass above made.
   request_of_.assign(view_count, no_request);
   requests_.resize(view_count);
-  const size_t request_count = ecs::keep_in_pieces(
+  const size_t request_count = jobs::keep_in_pieces(
       pool, view_count, views_per_piece, keep_scratch_,
       [&](size_t v) { return view_requests_[v].importance > 0.0f; },
       [&](size_t v, size_t r) {
@@ -116,7 +116,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
 
   cache_lights_.resize(view_count);
   cache_index_.resize(requests_.size());
-  const size_t cached_count = ecs::keep_in_pieces(
+  const size_t cached_count = jobs::keep_in_pieces(
       pool, view_count, views_per_piece, keep_scratch_,
       [&](size_t v) { return request_of_[v] != no_request && placements_[request_of_[v]].resolution != 0; },
       [&](size_t v, size_t k) {
@@ -154,7 +154,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   };
   // A cached map was rendered from where its light was then: the record samples it with that
   // view, not the light's present one.
-  ecs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       if (v < map_count) {
         ShadowMapView& map = lights.maps[v];

@@ -15,7 +15,7 @@
 
 #include <glm/glm.hpp>
 
-#include "ecs/parallel_pieces.h"
+#include "ecs/jobs/parallel_pieces.h"
 
 #include "systems/shadows/caster_changes.h"
 #include "systems/shadows/frame_lights.h"
@@ -85,7 +85,7 @@ class ShadowSchedule {
   // rendered (0: no cap). With a `pool`, the per-light work runs in pieces on it (the same
   // result).
   void schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
-                uint32_t view_budget, ecs::ThreadPool* pool = nullptr);
+                uint32_t view_budget, jobs::ThreadPool* pool = nullptr);
   // Every map must be rendered again (the atlas image was recreated).
   void invalidate_all() { cache_.invalidate_all(); }
   // ShadowCache::forget_static_layers and static_layers_not_kept.
@@ -113,7 +113,7 @@ class ShadowSchedule {
   std::vector<ShadowRequest> view_requests_;
   std::vector<ShadowCacheLight> view_cache_lights_;
   std::vector<uint8_t> pieces_aligned_;  // per piece of views: its views' rendered entries are theirs
-  ecs::KeepScratch keep_scratch_;
+  jobs::KeepScratch keep_scratch_;
   std::vector<ShadowRequest> requests_;
   std::vector<ShadowPlacement> placements_;
   std::vector<ShadowCacheLight> cache_lights_;

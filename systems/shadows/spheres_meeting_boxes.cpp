@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 
 namespace sg::shadows {
 namespace {
@@ -90,7 +90,7 @@ bool sphere_meets_box(const glm::vec4& sphere, const scene::Aabb& box) {
 // cache. Binning 100,000 spheres scattered their writes over megabytes and cost more than all the
 // tests it saved.
 void SpheresMeetingBoxes::find(std::span<const glm::vec4> spheres, std::span<const scene::Aabb> boxes,
-                               std::span<uint8_t> met, ecs::ThreadPool* pool) {
+                               std::span<uint8_t> met, jobs::ThreadPool* pool) {
   if (spheres.empty() || boxes.empty()) return;
   const Grid grid = grid_for(spheres, boxes);
 
@@ -115,7 +115,7 @@ void SpheresMeetingBoxes::find(std::span<const glm::vec4> spheres, std::span<con
   cell_begin_[0] = 0;
 
   constexpr size_t spheres_per_piece = 256;
-  ecs::run_in_pieces(pool, spheres.size(), spheres_per_piece, [&](size_t begin, size_t end) {
+  jobs::run_in_pieces(pool, spheres.size(), spheres_per_piece, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       if (met[i] != 0) continue;
       grid.for_each_cell(footprint_min(spheres[i]), footprint_max(spheres[i]), [&](size_t cell) {

@@ -11,7 +11,7 @@
 
 #include "systems/scene/aabb.h"
 
-namespace sg::ecs {
+namespace sg::jobs {
 class ThreadPool;
 }
 
@@ -29,7 +29,7 @@ class SpheresMeetingBoxes {
   // one mean sphere diameter wide, at most about twice as many as spheres and boxes together. A
   // call allocates nothing once grown. With a `pool`, the spheres are looked up in pieces on it.
   void find(std::span<const glm::vec4> spheres, std::span<const scene::Aabb> boxes, std::span<uint8_t> met,
-            ecs::ThreadPool* pool = nullptr);
+            jobs::ThreadPool* pool = nullptr);
 
  private:
   // The grid: cell c holds boxes cell_boxes_[cell_begin_[c]] .. cell_boxes_[cell_begin_[c + 1] - 1].

@@ -181,7 +181,7 @@ TEST(OwningGroup, ParallelQueriesOverTheGroupMarkEveryVisitedComponent) {
   }
   const Tick since = world.tick();
   world.advance_tick();
-  ThreadPool threads(3);
+  jobs::ThreadPool threads(3);
   world.query<Position, const Velocity>().for_each_parallel(
       threads, [](Position& position, const Velocity& velocity) { position.x += velocity.x; }, 100);
   std::size_t changed = 0;

@@ -44,7 +44,7 @@ std::vector<Entity> visit_serially(Query query) {
 }
 
 template <typename Query>
-std::vector<Entity> visit_in_parallel(Query query, ThreadPool& threads, std::size_t entities_per_task) {
+std::vector<Entity> visit_in_parallel(Query query, jobs::ThreadPool& threads, std::size_t entities_per_task) {
   std::mutex mutex;
   std::vector<Entity> visited;
   query.for_each_parallel(
@@ -59,7 +59,7 @@ std::vector<Entity> visit_in_parallel(Query query, ThreadPool& threads, std::siz
 
 TEST(ParallelQuery, VisitsTheSameEntitiesAsSerialIteration) {
   World world = make_world();
-  ThreadPool threads(3);
+  jobs::ThreadPool threads(3);
   // The default tasks, and small uneven ones (many tasks, the last one short).
   const auto check = [&](auto query) {
     const std::vector<Entity> serial = visit_serially(query);
@@ -82,7 +82,7 @@ TEST(ParallelQuery, VisitsTheSameEntitiesAsSerialIteration) {
 TEST(ParallelQuery, WritesAndChangeMarksMatchSerialIteration) {
   World serial_world = make_world();
   World parallel_world = make_world();
-  ThreadPool threads(3);
+  jobs::ThreadPool threads(3);
   const auto move = [](Position& position, const Velocity& velocity) {
     position.x += velocity.x;
     position.y += velocity.y;

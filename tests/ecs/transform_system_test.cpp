@@ -122,7 +122,7 @@ TEST(TransformSystem, ThreadsGiveTheSerialResult) {
   const Entity lone_child = spawn(world, {0.0f, 0.0f, 2.0f});
   set_parent(world, child, root);
   set_parent(world, lone_child, standalone[6]);  // standalone[6] becomes a parent
-  ThreadPool threads(1);
+  jobs::ThreadPool threads(1);
   update_world_transforms(world, 0, &threads);
 
   const Tick last_run = world.tick();

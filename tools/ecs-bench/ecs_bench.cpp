@@ -11,8 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include "ecs/jobs/thread_pool.h"
 #include "ecs/query.h"
-#include "ecs/thread_pool.h"
 #include "ecs/transform.h"
 #include "ecs/world.h"
 
@@ -484,7 +484,7 @@ void sparse_iterate_raw(benchmark::State& state) {
 void transform_update_ecs(benchmark::State& state) {
   World world;
   world.create_many(entity_count, LocalTransform{glm::vec3{1.0f, 2.0f, 3.0f}}, WorldTransform{});
-  sg::ecs::ThreadPool threads(static_cast<unsigned>(state.range(0)) - 1);
+  sg::jobs::ThreadPool threads(static_cast<unsigned>(state.range(0)) - 1);
   const auto update = [](const LocalTransform& local, WorldTransform& world_transform) {
     world_transform.matrix = sg::ecs::to_matrix(local);
   };
@@ -508,7 +508,7 @@ void transform_update_ecs(benchmark::State& state) {
 // (0: back to back, as within a phase; 1000: the workers have gone back to sleep). Each of
 // 4 tasks per thread spins for about a microsecond.
 void thread_pool_batch(benchmark::State& state) {
-  sg::ecs::ThreadPool threads(static_cast<unsigned>(state.range(0)) - 1);
+  sg::jobs::ThreadPool threads(static_cast<unsigned>(state.range(0)) - 1);
   const auto gap = std::chrono::microseconds(state.range(1));
   const auto spin = [](std::chrono::nanoseconds duration) {
     const auto until = std::chrono::steady_clock::now() + duration;

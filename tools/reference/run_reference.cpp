@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 #include "rendergraph/device/context.h"
 #include "systems/frame/png.h"
 #include "systems/frame/scene_view.h"
@@ -61,7 +61,7 @@ scene::ShadowSettings run_settings(scene::ShadowSettings shadow, const Reference
 // algorithm of `settings` measured against them (and pictured, with an image folder).
 LightReport compare_light(EngineShade& engine, const SurfacePoints& points, const RayScene& casters,
                           const ReferenceLight& light, const ReferenceSettings& settings,
-                          ecs::ThreadPool& pool, const std::function<void(const std::string&)>& progress) {
+                          jobs::ThreadPool& pool, const std::function<void(const std::string&)>& progress) {
   LightReport result{light.name, light.type, 0.0, {}};
   const auto start = std::chrono::steady_clock::now();
   const std::vector<float> hard = hard_visibility(casters, points, light, pool);
@@ -158,7 +158,7 @@ ReferenceReport run_reference(vk::VulkanContext& context, const FrameSettings& f
                     std::to_string(lights.size()) + " shadowed lights to compare");
   const RayScene casters(triangles.casters);
   const RayScene surfaces(triangles.surfaces);
-  ecs::ThreadPool pool;
+  jobs::ThreadPool pool;
   {
     EngineShade engine(context, scene, frame);
     const SurfacePoints points = surface_points(engine.depth(), scene.pose, scene.lens, surfaces, pool);

@@ -29,7 +29,7 @@ glm::vec3 unproject(const glm::mat4& clip_to_world, uint32_t width, uint32_t hei
 }
 
 SurfacePoints surface_points(const vk::DepthImage& depth, const scene::CameraPose& pose,
-                             const scene::Camera& lens, const RayScene& surfaces, ecs::ThreadPool& pool) {
+                             const scene::Camera& lens, const RayScene& surfaces, jobs::ThreadPool& pool) {
   const glm::mat4 to_world = clip_to_world(pose, lens, depth.width, depth.height);
   SurfacePoints out{depth.width, depth.height, pose.eye,
                     std::vector<SurfacePoint>(size_t{depth.width} * depth.height)};

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 #include "rendergraph/device/readback.h"
 #include "systems/scene/camera.h"
 #include "tools/reference/ray_scene.h"
@@ -40,6 +40,6 @@ glm::vec3 unproject(const glm::mat4& clip_to_world, uint32_t width, uint32_t hei
 
 // Every pixel of `depth` as a surface point; normals from rays cast against `surfaces`.
 SurfacePoints surface_points(const vk::DepthImage& depth, const scene::CameraPose& pose,
-                             const scene::Camera& lens, const RayScene& surfaces, ecs::ThreadPool& pool);
+                             const scene::Camera& lens, const RayScene& surfaces, jobs::ThreadPool& pool);
 
 }  // namespace sg::reference

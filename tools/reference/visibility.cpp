@@ -67,7 +67,7 @@ glm::vec2 disc_sample(uint32_t k, uint32_t side, uint32_t x, uint32_t y) {
 }
 
 template <typename PerPixel>
-std::vector<float> per_pixel(const SurfacePoints& points, ecs::ThreadPool& pool, PerPixel visibility) {
+std::vector<float> per_pixel(const SurfacePoints& points, jobs::ThreadPool& pool, PerPixel visibility) {
   std::vector<float> out(points.points.size(), 0.0f);
   pool.run(points.height, [&](size_t row) {
     const auto y = static_cast<uint32_t>(row);
@@ -82,7 +82,7 @@ std::vector<float> per_pixel(const SurfacePoints& points, ecs::ThreadPool& pool,
 }  // namespace
 
 std::vector<float> hard_visibility(const RayScene& casters, const SurfacePoints& points,
-                                   const ReferenceLight& light, ecs::ThreadPool& pool) {
+                                   const ReferenceLight& light, jobs::ThreadPool& pool) {
   return per_pixel(points, pool, [&](const SurfacePoint& point, uint32_t, uint32_t) {
     const ShadowRay ray = start(point, points.eye);
     bool blocked = false;
@@ -101,7 +101,7 @@ std::vector<float> hard_visibility(const RayScene& casters, const SurfacePoints&
 }
 
 std::vector<float> soft_visibility(const RayScene& casters, const SurfacePoints& points,
-                                   const ReferenceLight& light, uint32_t samples, ecs::ThreadPool& pool) {
+                                   const ReferenceLight& light, uint32_t samples, jobs::ThreadPool& pool) {
   const auto side = static_cast<uint32_t>(std::ceil(std::sqrt(float(std::max(samples, 1u)))));
   const uint32_t count = side * side;
   const bool positional = light.type == LightType::point || light.type == LightType::spot;

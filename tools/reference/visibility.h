@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 #include "tools/reference/ray_scene.h"
 #include "tools/reference/reference_lights.h"
 #include "tools/reference/surface_points.h"
@@ -16,13 +16,13 @@ namespace sg::reference {
 // direction (unbounded), or against a cylinder light's direction back to the plane of its
 // position (a point behind that plane is not lit by it at all and counts as lit here).
 std::vector<float> hard_visibility(const RayScene& casters, const SurfacePoints& points,
-                                   const ReferenceLight& light, ecs::ThreadPool& pool);
+                                   const ReferenceLight& light, jobs::ThreadPool& pool);
 
 // The fraction of `samples` rays (rounded up to a square, stratified and jittered per pixel)
 // that reach an emitter of the light's `light_size`: a disc of that diameter facing the point
 // (point, spot), or a cone of directions that wide seen from one unit away (directional,
 // cylinder). What PCSS approximates.
 std::vector<float> soft_visibility(const RayScene& casters, const SurfacePoints& points,
-                                   const ReferenceLight& light, uint32_t samples, ecs::ThreadPool& pool);
+                                   const ReferenceLight& light, uint32_t samples, jobs::ThreadPool& pool);
 
 }  // namespace sg::reference

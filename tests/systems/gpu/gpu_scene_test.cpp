@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "ecs/jobs/thread_pool.h"
 #include "ecs/query.h"
-#include "ecs/thread_pool.h"
 #include "ecs/transform_system.h"
 #include "systems/gpu/gpu_scene.h"
 #include "systems/scene/builtin_scenes.h"
@@ -69,7 +69,7 @@ TEST_F(GpuSceneTest, IncrementalGatherEqualsAFreshGatherEveryFrame) {
   ecs::World& world = s.world;
   constexpr uint32_t slots = 2;
   GpuScene kept(context, s.meshes, slots);
-  ecs::ThreadPool pool(3);
+  jobs::ThreadPool pool(3);
   std::mt19937 random(7);
   ecs::Tick transforms_at = 0;
 

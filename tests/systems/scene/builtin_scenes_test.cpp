@@ -157,7 +157,7 @@ TEST(Motions, ThreadsMoveEverythingAsSerialCallsDo) {
   params.moving_fraction = 1.0f;
   Scene serial = build_scene("stress", params);
   Scene threaded = build_scene("stress", params);
-  ecs::ThreadPool threads(2);
+  jobs::ThreadPool threads(2);
   animate_orbits(serial.world, 2.5f);
   animate_bobs(serial.world, 2.5f);
   animate_orbits(threaded.world, 2.5f, &threads);

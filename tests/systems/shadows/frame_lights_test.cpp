@@ -11,8 +11,8 @@
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include "ecs/jobs/thread_pool.h"
 #include "ecs/query.h"
-#include "ecs/thread_pool.h"
 #include "ecs/transform_system.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
@@ -90,7 +90,7 @@ TEST(FrameLights, AThreadPoolGathersTheSameLights) {
   ecs::update_world_transforms(scene.world, 0);
   FrameLights serial;
   FrameLights pooled;
-  ecs::ThreadPool pool(3);
+  jobs::ThreadPool pool(3);
   gather_lights(scene.world, bounds, {}, serial);
   gather_lights(scene.world, bounds, {}, pooled, &pool);
 
@@ -373,7 +373,7 @@ TEST(FrameLights, AGatherKeepingUnchangedLightsEqualsAFreshGather) {
   scene::add_light(scene, scene::CylinderLight{}, above, shadow_at(512), "");
   ecs::World& world = scene.world;
   ecs::update_world_transforms(world, 0);
-  ecs::ThreadPool pool(3);
+  jobs::ThreadPool pool(3);
   FrameLights kept;
   ShadowSchedule schedule(AtlasConfig{2048, 4, min_shadow_resolution}, true);
   std::mt19937 random(3);
@@ -461,7 +461,7 @@ TEST(ShadowSchedule, AThreadPoolSchedulesTheSameShadows) {
   }
   ecs::update_world_transforms(scene.world, 0);
   const ShadowCamera camera = camera_at({15.0f, 10.0f, 5.0f});
-  ecs::ThreadPool pool(3);
+  jobs::ThreadPool pool(3);
   FrameLights serial;
   FrameLights pooled;
   ShadowSchedule serial_schedule(AtlasConfig{2048, 4, min_shadow_resolution});
@@ -472,7 +472,7 @@ TEST(ShadowSchedule, AThreadPoolSchedulesTheSameShadows) {
     std::vector<CasterBounds> casters;
     for (int k = 0; k < 20; ++k) casters.push_back({uint64_t(k), crate_at(crate_z - float(k))});
     for (auto [lights, schedule, pool_used] :
-         {std::tuple(&serial, &serial_schedule, (ecs::ThreadPool*)nullptr),
+         {std::tuple(&serial, &serial_schedule, (jobs::ThreadPool*)nullptr),
           std::tuple(&pooled, &pooled_schedule, &pool)}) {
       gather_lights(scene.world, bounds, {}, *lights);
       schedule->schedule(*lights, camera, std::span<const CasterBounds>(casters), 200, pool_used);
@@ -557,7 +557,7 @@ TEST(SortByGroup, OnAThreadPoolMovesTheRecordsAsSerially) {
   }
   FrameLights pooled = serial;
   sort_by_group(serial);
-  ecs::ThreadPool pool(4);
+  jobs::ThreadPool pool(4);
   sort_by_group(pooled, &pool);
   EXPECT_EQ(pooled.group_begin, serial.group_begin);
   EXPECT_EQ(pooled.group_types, serial.group_types);

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 #include "systems/shadows/shadow_atlas_planner.h"
 
 namespace sg::shadows {
@@ -244,8 +244,8 @@ TEST(ShadowAtlasPlanner, UnchangedLightsKeepTheirTilesNewAndChangedOnesMove) {
 // still give a key asked for twice one shadow, whichever request came where last time.
 TEST(ShadowAtlasPlanner, AKeyRequestedTwiceGetsOneShadow) {
   const AtlasConfig config{.page_size = 1024, .max_pages = 1, .min_resolution = 32};
-  ecs::ThreadPool threads(3);
-  for (ecs::ThreadPool* pool : {static_cast<ecs::ThreadPool*>(nullptr), &threads}) {
+  jobs::ThreadPool threads(3);
+  for (jobs::ThreadPool* pool : {static_cast<jobs::ThreadPool*>(nullptr), &threads}) {
     ShadowAtlasPlanner planner(config);
     std::vector<ShadowRequest> requests;
     for (uint64_t key = 0; key < 200; ++key) requests.push_back(map_light(key, 32.0f));
@@ -377,7 +377,7 @@ TEST(ShadowAtlasPlanner, OnAThreadPoolPlansAsSerially) {
   const AtlasConfig config{.page_size = 1024, .max_pages = 2, .min_resolution = 32};
   ShadowAtlasPlanner serial(config);
   ShadowAtlasPlanner pooled(config);
-  ecs::ThreadPool threads(3);
+  jobs::ThreadPool threads(3);
   std::mt19937 random(5);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   std::vector<float> importance(600);

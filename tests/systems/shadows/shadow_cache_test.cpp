@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 
 #include "systems/shadows/caster_changes.h"
 #include "systems/shadows/shadow_cache.h"
@@ -184,7 +184,7 @@ TEST(ShadowCache, ChoosesTheStalestInOrderAsAPlainModelDoes) {
     const uint32_t budget = light_count + 3;
     ShadowCache serial;
     ShadowCache pooled;
-    ecs::ThreadPool threads(3);
+    jobs::ThreadPool threads(3);
     struct Model {
       bool dirty = true;
       bool valid = false;

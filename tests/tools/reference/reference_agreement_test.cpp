@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 #include "tests/support/floor_box_scene.h"
 #include "tests/support/gpu_test.h"
 #include "tools/reference/engine_shade.h"
@@ -38,7 +38,7 @@ class EmbreeReference : public GpuTest {
     FrameSettings options;
     options.width = width;
     options.height = height;
-    ecs::ThreadPool pool;
+    jobs::ThreadPool pool;
     const reference::SceneTriangles triangles = reference::scene_triangles(scene.scene);
     const reference::RayScene casters(triangles.casters);
     const reference::RayScene surfaces(triangles.surfaces);

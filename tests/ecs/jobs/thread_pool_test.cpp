@@ -11,9 +11,9 @@
 #include <thread>
 #include <vector>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 
-namespace sg::ecs {
+namespace sg::jobs {
 namespace {
 
 TEST(ThreadPool, RunsEveryTaskOnceInEveryBatch) {
@@ -122,4 +122,4 @@ TEST(ThreadPool, RethrowsATasksExceptionAfterTheOthersRan) {
 }
 
 }  // namespace
-}  // namespace sg::ecs
+}  // namespace sg::jobs

@@ -5,9 +5,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 
-namespace sg::ecs {
+namespace sg::jobs {
 
 // keep_in_pieces' working storage, kept by the caller so that a frame allocates nothing once it
 // has grown.
@@ -56,4 +56,4 @@ std::size_t keep_in_pieces(ThreadPool* pool, std::size_t count, std::size_t piec
   return first[pieces];
 }
 
-}  // namespace sg::ecs
+}  // namespace sg::jobs

@@ -1,8 +1,8 @@
-#include "ecs/thread_pool.h"
+#include "ecs/jobs/thread_pool.h"
 
 #include <stdexcept>
 
-namespace sg::ecs {
+namespace sg::jobs {
 namespace {
 
 // Spins (yielding the core to anything else runnable) until `done` or spin_time has passed.
@@ -48,7 +48,7 @@ void ThreadPool::wake() {
 
 void ThreadPool::run(std::size_t count, const Task& task) {
   if (count == 0) return;
-  if (count > UINT32_MAX) throw std::length_error("sg::ecs::ThreadPool::run: 2^32 tasks or more");
+  if (count > UINT32_MAX) throw std::length_error("sg::jobs::ThreadPool::run: 2^32 tasks or more");
   error_ = nullptr;
   task_.store(&task, std::memory_order_relaxed);
   count_.store(static_cast<std::uint32_t>(count), std::memory_order_relaxed);
@@ -105,4 +105,4 @@ void ThreadPool::work() {
   }
 }
 
-}  // namespace sg::ecs
+}  // namespace sg::jobs

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-namespace sg::ecs {
+namespace sg::jobs {
 
 // A fixed set of worker threads that run the tasks of one batch at a time, for splitting a
 // query into chunks (Query::for_each_parallel).
@@ -95,4 +95,4 @@ void run_in_pieces(ThreadPool* pool, std::size_t count, std::size_t piece_size, 
             [&](std::size_t piece) { chunk(piece * piece_size, std::min(count, (piece + 1) * piece_size)); });
 }
 
-}  // namespace sg::ecs
+}  // namespace sg::jobs

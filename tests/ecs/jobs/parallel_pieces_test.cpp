@@ -3,9 +3,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "ecs/parallel_pieces.h"
+#include "ecs/jobs/parallel_pieces.h"
 
-namespace sg::ecs {
+namespace sg::jobs {
 namespace {
 
 // The kept indices come out ranked in index order, on a pool as on one thread, with pieces that
@@ -30,4 +30,4 @@ TEST(KeepInPieces, RanksTheKeptIndicesInOrderOnAPoolAsSerially) {
 }
 
 }  // namespace
-}  // namespace sg::ecs
+}  // namespace sg::jobs
