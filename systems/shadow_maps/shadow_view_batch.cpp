@@ -8,7 +8,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <utility>
+#include <vector>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/pipeline.h"
@@ -29,31 +29,14 @@
 #include "systems/gpu/gpu_textures.h"
 #include "systems/gpu/shader_bindings.h"
 #include "systems/shadow_maps/shadow_atlas.h"
-#include "systems/shadows/atlas_tile_coords.h"
 
 namespace sg {
 namespace {
 
 using namespace bindings;
+using namespace shadow_batch;
 constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
 constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-
-// shaders/shadow_views.glsl's VIEW_KIND_* and VIEW_KINDS.
-constexpr uint32_t view_kind_map = 0;
-constexpr uint32_t view_kind_face = 1;
-constexpr uint32_t view_kinds = 2;
-
-// shaders/shadow_batch_compute.glsl's BatchConstants.
-struct BatchConstants {
-  uint32_t caster_count;
-  uint32_t group_count;
-  uint32_t capacity;
-  uint32_t view_base;
-  uint32_t caster_base = 0;
-  uint32_t list = 0;
-  uint32_t skip_moving = 0;
-  uint32_t moving_capacity = 0;
-};
 
 // shaders/shadow_static_layers.glsl's LayerConstants.
 struct LayerConstants {
@@ -64,27 +47,23 @@ struct LayerConstants {
 // shaders/shadow_static_layers.glsl's TEXELS_PER_WORKGROUP.
 constexpr uint64_t layer_texels_per_workgroup = 65536;
 
-// shaders/shadow_views.glsl's CASTER_MOVING and CASTER_BLENDED, in a caster record's group.
-constexpr uint32_t caster_moving = 0x80000000u;
-constexpr uint32_t caster_blended = 0x40000000u;
-
-constexpr VkDeviceSize counts_header_bytes = 16;  // the two lists' totals and padding
-constexpr VkDeviceSize draws_header_bytes = 48;   // the scatter's and the raster's dispatches
-constexpr VkDeviceSize raster_dispatch_offset = 16;
-constexpr VkDeviceSize moving_raster_dispatch_offset = 32;
+// shaders/shadow_batch_compute.glsl's Counts: the two lists' totals and padding, then per draw
+// its pairs and the scatter's cursor.
+constexpr VkDeviceSize counts_header_bytes = 16;
 // The workgroups of a dispatch's x that every device allows (maxComputeWorkGroupCount[0]).
 constexpr uint32_t max_workgroups_x = 65535;
-constexpr VkDeviceSize pair_bytes = 2 * sizeof(uint32_t);
-
-float as_float(uint32_t bits) { return std::bit_cast<float>(bits); }
-
-// The size to declare for a transient buffer needing `bytes`: rounded up to a power of two, so
-// that frames drawing different numbers of views keep the graph's shape, and with it the
-// compiled plan and its memory (rg::PlanCache), instead of recompiling and reallocating.
-uint64_t frame_steady(uint64_t bytes) { return std::bit_ceil(std::max<uint64_t>(bytes, 256)); }
 
 VkClearRect tile_clear(const shadows::AtlasTile& tile) {
   return {{{int32_t(tile.x), int32_t(tile.y)}, {tile.size, tile.size}}, tile.page, 1};
+}
+
+// shadows::raster_for_views's `large_tile_texels`.
+uint64_t large_tile_texels(std::span<const shadows::AtlasTile> tiles) {
+  uint64_t texels = 0;
+  for (const shadows::AtlasTile& tile : tiles) {
+    if (tile.size >= shadows::large_tile) texels += uint64_t{tile.size} * tile.size;
+  }
+  return texels;
 }
 
 // A CPU device runs both rasters on the same cores, and the hardware path measured faster there
@@ -155,9 +134,7 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
                              {shadow_depths_binding, storage, 1, compute},
                              {static_layers_binding, storage, 1, compute}},
                             vk::push_constants<LayerConstants>(compute)),
-      view_buffers_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow views"),
-      caster_buffers_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow casters"),
-      mesh_buffers_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow caster meshes"),
+      records_(context, frames_in_flight),
       feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow feedback") {
   for (PairCapacity& capacity : capacity_) capacity.in_slot.assign(frames_in_flight, 0);
   max_views_per_dispatch_ = context.properties().limits.maxComputeWorkGroupCount[1];
@@ -234,163 +211,31 @@ bool ShadowViewBatch::all_casters_kept(uint32_t slot) {
   return all_kept;
 }
 
+bool ShadowViewBatch::rasterizes_in_compute() const {
+  return raster_ == shadows::ShadowRaster::compute && records_.frame().casters > 0;
+}
+
 void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights, const GpuScene& scene,
                               uint32_t page_size, jobs::ThreadPool* pool) {
-  // Where each drawn view goes: the views drawn with every caster first, then those drawn with
-  // the moving casters alone (the cull's two dispatches take a range each). How each light is
-  // drawn is read on the pool, a byte a light (the views lie hundreds of bytes apart), the places
-  // counted here from the bytes, the tiles copied on the pool; then where compute raster puts
-  // its depths; then the view records, independent, in chunks on the pool (written once each,
-  // in order: they are most of what this frame uploads).
-  constexpr uint32_t not_drawn = UINT32_MAX;
-  constexpr uint8_t skipped = 0, every_caster = 1, moving_casters = 2;
-  const size_t map_count = lights.maps.size();
-  const size_t light_count = map_count + lights.cubes.size();
-  const auto drawn_as = [](const auto& view) {
-    return !view.render ? skipped : view.moving_casters_only ? moving_casters : every_caster;
-  };
-  drawn_as_.resize(light_count);
-  jobs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i)
-      drawn_as_[i] = i < map_count ? drawn_as(lights.maps[i]) : drawn_as(lights.cubes[i - map_count]);
-  });
-  first_view_.assign(light_count, not_drawn);
-  uint32_t next = 0;
-  for (const uint8_t pass : {every_caster, moving_casters}) {
-    for (size_t i = 0; i < light_count; ++i) {
-      if (drawn_as_[i] != pass) continue;
-      first_view_[i] = next;
-      next += i < map_count ? 1 : 6;
-    }
-    if (pass == every_caster) full_views_ = next;
-  }
-  view_tiles_.resize(next);
-  jobs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
-      if (first_view_[i] == not_drawn) continue;
-      if (i < map_count) {
-        view_tiles_[first_view_[i]] = lights.maps[i].tile;
-      } else {
-        const std::array<shadows::AtlasTile, 6>& tiles = lights.cubes[i - map_count].tiles;
-        std::copy(tiles.begin(), tiles.end(), view_tiles_.begin() + first_view_[i]);
-      }
-    }
-  });
-  const size_t count = view_tiles_.size();
-
+  const ShadowBatchFrame& frame = records_.lay_out(lights, scene, pool);
   if (setting_ == shadows::ShadowRaster::automatic) {
-    uint64_t large_texels = 0;
-    for (const shadows::AtlasTile& tile : view_tiles_) {
-      if (tile.size >= shadows::large_tile) large_texels += uint64_t{tile.size} * tile.size;
-    }
-    raster_ = shadows::raster_for_views(static_cast<uint32_t>(count), large_texels);
+    raster_ = shadows::raster_for_views(frame.views, large_tile_texels(frame.tiles));
   }
-  if (raster_ == shadows::ShadowRaster::compute) {
-    place_depths();
+  if (frame.first_cut_out_group < frame.caster_groups && !cut_out_.map) make_cut_out_pipelines();
+  // The view records say where the compute raster puts each view's depths.
+  if (rasterizes_in_compute()) {
+    place_depths(frame.tiles);
   } else {
-    depth_placement_.place_nowhere(count);
+    depth_placement_.place_nowhere(frame.views);
   }
+  const bool layered = has_static_layers_ && frame.views > 0 && rasterizes_in_compute();
+  records_.write(slot, lights, scene, page_size, depth_placement_.places(), layered, pool);
 
-  // The casters of each group (a mesh's casters, consecutive instances), one after the other;
-  // layered, the moving ones again after them all.
-  meshes_.clear();
-  group_first_caster_.clear();
-  const std::span<const VkDrawIndexedIndirectCommand> groups = scene.caster_groups();
-  const std::span<const scene::Aabb> bounds = scene.instance_bounds();
-  first_cut_out_group_ = scene.first_cut_out_group();
-  if (first_cut_out_group_ < groups.size() && !cut_out_.map) make_cut_out_pipelines();
-  uint32_t caster_count = 0;
-  for (uint32_t g = 0; g < groups.size(); ++g) {
-    const VkDrawIndexedIndirectCommand& group = groups[g];
-    meshes_.push_back({group.indexCount, group.firstIndex, std::bit_cast<uint32_t>(group.vertexOffset),
-                       g >= first_cut_out_group_ ? 1u : 0u});
-    group_first_caster_.push_back(caster_count);
-    caster_count += group.instanceCount;
-  }
-  caster_count_ = caster_count;
-  layered_ = has_static_layers_ && raster_ == shadows::ShadowRaster::compute && count > 0 && caster_count > 0;
-  if (!layered_) full_views_ = static_cast<uint32_t>(count);  // every view gets every caster
-  moving_casters_.clear();
-  if (layered_) {
-    for (const uint32_t i : scene.moving_instances()) {
-      if (scene.casts_shadow(i)) moving_casters_.push_back(i);
-    }
-  }
-  moving_count_ = static_cast<uint32_t>(moving_casters_.size());
-
-  // Records go straight into the slot's mapped buffers, from the pool's threads: writes into
-  // mapped GPU memory go faster from several cores, and a copy through a vector first cost a
-  // serial pass over half a megabyte each with a thousand lights.
-  view_count_ = static_cast<uint32_t>(count);
-  clears_.resize(count);
-  auto* views = static_cast<View*>(view_buffers_.reserve(slot, count * sizeof(View)).mapped());
-  const auto place_view = [&](uint32_t v, const glm::mat4& view_projection, const glm::vec4& position_far,
-                              uint32_t kind) {
-    const shadows::AtlasTile& tile = view_tiles_[v];
-    // Below 2^32: the static layers are bound whole, within maxStorageBufferRange (atlas_shape).
-    const auto layer = static_cast<uint32_t>((uint64_t{tile.page} * page_size + tile.y) * page_size + tile.x);
-    views[v] = {view_projection, shadows::tile_clip_transform(tile, page_size), position_far,
-                glm::uvec4(tile.page, kind, tile.size, 0u),
-                glm::uvec4(depth_placement_.places()[v], layer, page_size)};
-    clears_[v] = tile_clear(tile);
-  };
-  jobs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
-      const uint32_t first = first_view_[i];
-      if (first == not_drawn) continue;
-      if (i < lights.maps.size()) {
-        const shadows::ShadowMapView& map = lights.maps[i];
-        place_view(first, map.view.view_projection(), map.reach, view_kind_map);
-        continue;
-      }
-      const shadows::ShadowCubeView& cube = lights.cubes[i - lights.maps.size()];
-      for (uint32_t face = 0; face < 6; ++face) {
-        place_view(first + face, cube.views.view_projection[face], cube.position_far, view_kind_face);
-      }
-    }
-  });
-
-  // A caster's group word: its group, whether it moves (layered) and whether it is transparent.
-  const auto group_word = [&](uint32_t instance, uint32_t group, bool moving) {
-    return group | (moving ? caster_moving : 0u) |
-           (scene.draw_class(instance) & draw_blended ? caster_blended : 0u);
-  };
-  const auto group_of = [&](uint32_t instance) {
-    return static_cast<uint32_t>(std::upper_bound(groups.begin(), groups.end(), instance,
-                                                  [](uint32_t i, const VkDrawIndexedIndirectCommand& g) {
-                                                    return i < g.firstInstance;
-                                                  }) -
-                                 groups.begin() - 1);
-  };
-  auto* casters = static_cast<Caster*>(
-      caster_buffers_.reserve(slot, (caster_count + moving_count_) * sizeof(Caster)).mapped());
-  // Pieces of 512 casters (16 KiB of records): 15,000 casters in pieces of 2,048 left half of
-  // 16 threads without a piece.
-  jobs::run_in_pieces(pool, caster_count, 512, [&](size_t begin, size_t end) {
-    auto g = static_cast<uint32_t>(
-        std::upper_bound(group_first_caster_.begin(), group_first_caster_.end(), begin) -
-        group_first_caster_.begin() - 1);
-    for (size_t c = begin; c < end; ++c) {
-      while (g + 1 < groups.size() && c >= group_first_caster_[g + 1]) ++g;
-      const uint32_t i = groups[g].firstInstance + static_cast<uint32_t>(c - group_first_caster_[g]);
-      const uint32_t group = group_word(i, g, layered_ && scene.moving(i));
-      casters[c] = {glm::vec4(bounds[i].min, as_float(group)), glm::vec4(bounds[i].max, as_float(i))};
-    }
-  });
-  jobs::run_in_pieces(pool, moving_count_, 1024, [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k) {
-      const uint32_t i = moving_casters_[k];
-      casters[caster_count + k] = {glm::vec4(bounds[i].min, as_float(group_word(i, group_of(i), true))),
-                                   glm::vec4(bounds[i].max, as_float(i))};
-    }
-  });
-  mesh_buffers_.write(slot, std::span<const glm::uvec4>(meshes_));
   const std::array<uint32_t, 2> zeros{};
   feedback_.write(slot, std::span<const uint32_t>(zeros));
-
-  const bool drawn = view_count_ > 0 && caster_count_ > 0;
-  const std::array<uint64_t, 2> pairs{uint64_t{full_views_} * caster_count_,
-                                      uint64_t{view_count_} * moving_count_};
+  const bool drawn = frame.views > 0 && frame.casters > 0;
+  const std::array<uint64_t, 2> pairs{uint64_t{frame.full_views} * frame.casters,
+                                      uint64_t{frame.views} * frame.moving_casters};
   for (size_t list = 0; list < capacity_.size(); ++list) {
     PairCapacity& capacity = capacity_[list];
     capacity.now = std::clamp<uint64_t>(pairs[list], 1, capacity.limit);
@@ -398,8 +243,8 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
   }
 }
 
-void ShadowViewBatch::place_depths() {
-  if (!depth_placement_.place(view_tiles_)) return;
+void ShadowViewBatch::place_depths(std::span<const shadows::AtlasTile> tiles) {
+  if (!depth_placement_.place(tiles)) return;
   copies_.clear();
   for (const shadows::DepthRegion& region : depth_placement_.regions()) {
     VkBufferImageCopy copy{};
@@ -416,17 +261,17 @@ void ShadowViewBatch::place_depths() {
 rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle atlas,
                                         rg::BufferHandle static_layers, const GpuScene& scene,
                                         uint32_t slot) const {
-  if (view_count_ == 0) return atlas;
-  if (caster_count_ == 0) return add_hardware_raster(graph, atlas, scene, slot, {}, {}, {});
-  const bool compute = raster_ == shadows::ShadowRaster::compute;
-  const bool moving_list = layered_ && moving_count_ > 0;
-  const auto group_count = static_cast<uint32_t>(meshes_.size());
-  BatchConstants constants{caster_count_, group_count, static_cast<uint32_t>(capacity_[0].now), 0u};
-  constants.skip_moving = layered_ ? 1 : 0;
+  const ShadowBatchFrame& frame = records_.frame();
+  if (frame.views == 0) return atlas;
+  if (frame.casters == 0) return add_hardware_raster(graph, atlas, scene, slot, {}, {}, {});
+  const bool compute = rasterizes_in_compute();
+  const bool moving_list = frame.layered && frame.moving_casters > 0;
+  BatchConstants constants{frame.casters, frame.caster_groups, static_cast<uint32_t>(capacity_[0].now), 0u};
+  constants.skip_moving = frame.layered ? 1 : 0;
   constants.moving_capacity = static_cast<uint32_t>(capacity_[1].now);
-  const uint32_t draw_count = view_kinds * group_count;
-  const VkBuffer view_buffer = view_buffers_.buffer(slot).handle();
-  const VkBuffer caster_buffer = caster_buffers_.buffer(slot).handle();
+  const uint32_t draw_count = view_kinds * frame.caster_groups;
+  const VkBuffer view_buffer = frame.view_records;
+  const VkBuffer caster_buffer = frame.caster_records;
 
   struct Buffers {
     rg::BufferHandle counts, pairs, moving_pairs, draws, depths;
@@ -463,7 +308,8 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
         }
         return b;
       },
-      [this, constants, view_buffer, caster_buffer](const Buffers& written, const vk::PassRecorder& rec) {
+      [this, constants, frame, view_buffer, caster_buffer](const Buffers& written,
+                                                           const vk::PassRecorder& rec) {
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, cull_pipeline_.get());
         // List 0: the views drawn with every caster against every still caster (every caster,
         // unlayered); list 1: every view against the moving casters.
@@ -482,15 +328,15 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
             vkCmdDispatch(rec.cmd(), columns, std::min(max_views_per_dispatch_, view_count - base), 1);
           }
         };
-        if (full_views_ > 0) cull(written.pairs, constants, full_views_);
+        if (frame.full_views > 0) cull(written.pairs, constants, frame.full_views);
         if (written.moving_pairs.valid()) {
           BatchConstants moving = constants;
-          moving.caster_base = caster_count_;
-          moving.caster_count = moving_count_;
+          moving.caster_base = frame.casters;
+          moving.caster_count = frame.moving_casters;
           moving.capacity = constants.moving_capacity;
           moving.list = 1;
           moving.skip_moving = 0;
-          cull(written.moving_pairs, moving, views());
+          cull(written.moving_pairs, moving, frame.views);
         }
       });
   graph.add_pass(
@@ -503,9 +349,10 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
                     rg::Usage::storage_compute);
         return b;
       },
-      [this, constants, slot](const Buffers& written, const vk::PassRecorder& rec) {
+      [this, constants, slot, meshes = frame.mesh_records](const Buffers& written,
+                                                           const vk::PassRecorder& rec) {
         const VkDescriptorSet set = draws_layout_.write(rec.allocate_set(draws_layout_))
-                                        .buffer(caster_meshes_binding, mesh_buffers_.buffer(slot).handle())
+                                        .buffer(caster_meshes_binding, meshes)
                                         .buffer(draw_counts_binding, rec.buffer(written.counts))
                                         .buffer(shadow_draws_binding, rec.buffer(written.draws))
                                         .buffer(shadow_feedback_binding, feedback_.buffer(slot).handle())
@@ -520,12 +367,13 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
                  : add_hardware_raster(graph, atlas, scene, slot, b.pairs, b.counts, b.draws);
 }
 
-void ShadowViewBatch::add_static_layer_pass(rg::RenderGraph& graph, const char* name, uint32_t slot,
-                                            bool save, uint32_t first, uint32_t count,
-                                            rg::BufferHandle& depths, rg::BufferHandle& static_layers) const {
+void ShadowViewBatch::add_static_layer_pass(rg::RenderGraph& graph, const char* name, bool save,
+                                            uint32_t first, uint32_t count, rg::BufferHandle& depths,
+                                            rg::BufferHandle& static_layers) const {
+  const ShadowBatchFrame& frame = records_.frame();
   uint64_t largest = 0;
   for (uint32_t v = first; v < first + count; ++v) {
-    largest = std::max<uint64_t>(largest, uint64_t{view_tiles_[v].size} * view_tiles_[v].size);
+    largest = std::max<uint64_t>(largest, uint64_t{frame.tiles[v].size} * frame.tiles[v].size);
   }
   const auto chunks =
       static_cast<uint32_t>((largest + layer_texels_per_workgroup - 1) / layer_texels_per_workgroup);
@@ -540,9 +388,10 @@ void ShadowViewBatch::add_static_layer_pass(rg::RenderGraph& graph, const char* 
           depths = p.write(depths, rg::Usage::storage_compute);
         }
       },
-      [this, slot, save, first, count, chunks, depths, static_layers](const vk::PassRecorder& rec) {
+      [this, views = frame.view_records, save, first, count, chunks, depths,
+       static_layers](const vk::PassRecorder& rec) {
         const VkDescriptorSet set = static_layers_layout_.write(rec.allocate_set(static_layers_layout_))
-                                        .buffer(shadow_views_binding, view_buffers_.buffer(slot).handle())
+                                        .buffer(shadow_views_binding, views)
                                         .buffer(shadow_depths_binding, rec.buffer(depths))
                                         .buffer(static_layers_binding, rec.buffer(static_layers))
                                         .update();
@@ -558,10 +407,11 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
                                                      const GpuScene& scene, uint32_t slot,
                                                      rg::BufferHandle pairs, rg::BufferHandle counts,
                                                      rg::BufferHandle draws) const {
-  const auto group_count = static_cast<uint32_t>(meshes_.size());
-  const BatchConstants constants{caster_count_, group_count, static_cast<uint32_t>(capacity_[0].now), 0u};
-  const VkBuffer view_buffer = view_buffers_.buffer(slot).handle();
-  const VkBuffer caster_buffer = caster_buffers_.buffer(slot).handle();
+  const ShadowBatchFrame& frame = records_.frame();
+  const uint32_t group_count = frame.caster_groups;
+  const BatchConstants constants{frame.casters, group_count, static_cast<uint32_t>(capacity_[0].now), 0u};
+  const VkBuffer view_buffer = frame.view_records;
+  const VkBuffer caster_buffer = frame.caster_records;
   rg::BufferHandle sorted;
   if (draws.valid()) {
     // Execute gets the sorted pairs from setup: they do not exist before it runs.
@@ -588,9 +438,12 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
           vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, scatter_pipeline_.get());
           scatter_layout_.bind_compute(rec.cmd(), set);
           scatter_layout_.push(rec.cmd(), constants);
-          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(draws), 0);
+          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(draws), scatter_dispatch_offset);
         });
   }
+  // The views' tiles, cleared to the far plane before the draws.
+  std::vector<VkClearRect> clears(frame.tiles.size());
+  std::transform(frame.tiles.begin(), frame.tiles.end(), clears.begin(), tile_clear);
   graph.add_pass(
       "shadow views",
       [&](rg::PassBuilder& p) {
@@ -600,9 +453,10 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
         }
         atlas = p.write(atlas, rg::Usage::depth_attachment);  // kept: cached tiles stay
       },
-      [this, &scene, slot, group_count, view_buffer, draws, sorted](const vk::PassRecorder& rec) {
+      [this, &scene, slot, group_count, opaque = frame.first_cut_out_group, view_buffer, draws, sorted,
+       clears = std::move(clears)](const vk::PassRecorder& rec) {
         const VkClearAttachment far{VK_IMAGE_ASPECT_DEPTH_BIT, 0, {.depthStencil = {1.0f, 0}}};
-        vkCmdClearAttachments(rec.cmd(), 1, &far, static_cast<uint32_t>(clears_.size()), clears_.data());
+        vkCmdClearAttachments(rec.cmd(), 1, &far, static_cast<uint32_t>(clears.size()), clears.data());
         if (!draws.valid() || !scene.bind_geometry(rec.cmd())) return;
         rec.set_full_viewport();
         const VkDescriptorSet set =
@@ -616,7 +470,6 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
         // Per view kind, its draws by caster group: the opaque groups', then the cut-out ones'.
         const VkBuffer commands = rec.buffer(draws);
         constexpr VkDeviceSize stride = sizeof(VkDrawIndexedIndirectCommand);
-        const uint32_t opaque = first_cut_out_group_;
         const auto draw = [&](VkPipeline pipeline, uint32_t first, uint32_t count) {
           if (count == 0) return;
           vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
@@ -636,9 +489,10 @@ rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::
                                                     rg::BufferHandle counts, rg::BufferHandle draws,
                                                     rg::BufferHandle depths,
                                                     rg::BufferHandle static_layers) const {
+  const ShadowBatchFrame& frame = records_.frame();
   const auto raster = [&](const char* name, rg::BufferHandle list_pairs, uint32_t list) {
-    BatchConstants constants{caster_count_, static_cast<uint32_t>(meshes_.size()),
-                             static_cast<uint32_t>(capacity_[list].now), 0u};
+    BatchConstants constants{frame.casters, frame.caster_groups, static_cast<uint32_t>(capacity_[list].now),
+                             0u};
     constants.list = list;
     const VkDeviceSize dispatch = list == 0 ? raster_dispatch_offset : moving_raster_dispatch_offset;
     graph.add_pass(
@@ -649,14 +503,14 @@ rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::
           p.read(counts, rg::Usage::storage_compute);
           depths = p.write(depths, rg::Usage::storage_compute);
         },
-        [this, &scene, slot, constants, list_pairs, counts, draws, depths, dispatch,
-         cut_out = first_cut_out_group_ < meshes_.size()](const vk::PassRecorder& rec) {
+        [this, &scene, slot, constants, frame, list_pairs, counts, draws, depths, dispatch,
+         cut_out = frame.first_cut_out_group < frame.caster_groups](const vk::PassRecorder& rec) {
           const VkDescriptorSet set =
               compute_raster_layout_.write(rec.allocate_set(compute_raster_layout_))
                   .buffer(instances_binding, scene.instances(slot).handle())
-                  .buffer(shadow_views_binding, view_buffers_.buffer(slot).handle())
-                  .buffer(shadow_casters_binding, caster_buffers_.buffer(slot).handle())
-                  .buffer(caster_meshes_binding, mesh_buffers_.buffer(slot).handle())
+                  .buffer(shadow_views_binding, frame.view_records)
+                  .buffer(shadow_casters_binding, frame.caster_records)
+                  .buffer(caster_meshes_binding, frame.mesh_records)
                   .buffer(culled_pairs_binding, rec.buffer(list_pairs))
                   .buffer(draw_counts_binding, rec.buffer(counts))
                   .buffer(shadow_depths_binding, rec.buffer(depths))
@@ -677,14 +531,14 @@ rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::
         });
   };
   raster("shadow raster", pairs, 0);
-  if (layered_ && full_views_ > 0) {
-    add_static_layer_pass(graph, "shadow static save", slot, true, 0, full_views_, depths, static_layers);
+  if (frame.layered && frame.full_views > 0) {
+    add_static_layer_pass(graph, "shadow static save", true, 0, frame.full_views, depths, static_layers);
   }
   // The restored views' squares are not list 0's, so restoring comes late: its wait for the
   // previous frame's save would otherwise come before the frame's culling and rasterizing.
-  if (layered_ && full_views_ < view_count_) {
-    add_static_layer_pass(graph, "shadow static restore", slot, false, full_views_, view_count_ - full_views_,
-                          depths, static_layers);
+  if (frame.layered && frame.full_views < frame.views) {
+    add_static_layer_pass(graph, "shadow static restore", false, frame.full_views,
+                          frame.views - frame.full_views, depths, static_layers);
   }
   if (moving_pairs.valid()) raster("shadow raster moving", moving_pairs, 1);
   graph.add_pass(

@@ -1,8 +1,7 @@
 #pragma once
 // Every shadow view due this frame drawn by a handful of passes, driven by the GPU: shadow views
 // are data, not passes. The CPU writes one record per view (a 2D map, or one face of a point
-// light's cube: its matrix, its atlas tile and frustum) and one per shadow
-// caster (world bounds, mesh, instance); then
+// light's cube) and one per shadow caster (shadow_batch_records.h); then
 //
 //   shadow cull      (compute)  every caster against every view's frustum -> (caster, view) pairs
 //   shadow draws     (compute)  counts -> one indirect draw per (view kind, mesh), and dispatches
@@ -36,17 +35,19 @@
 // all_casters_kept() says so, so that the caller re-renders the views that lost casters.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
-#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
 
-#include "ecs/jobs/thread_pool.h"
+#include "ecs/fwd.h"
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/gpu/gpu_scene.h"
+#include "systems/shadow_maps/shadow_batch_records.h"
 #include "systems/shadows/depth_placement.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_view_path.h"
@@ -85,31 +86,21 @@ class ShadowViewBatch {
   // Whether the prepared frame keeps the static layers of the views it draws with every caster
   // (compute raster with static layers); when not, moving_casters_only views are drawn with
   // every caster too.
-  bool static_layers_kept() const { return layered_; }
+  bool static_layers_kept() const { return records_.frame().layered; }
 
   // Adds the passes (none when no view renders) and returns the atlas's newest version. `scene`
   // is read when the passes record. `static_layers`: the atlas's, imported, when it has them.
   rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, rg::BufferHandle static_layers,
                          const GpuScene& scene, uint32_t slot) const;
 
-  uint32_t views() const { return view_count_; }
+  uint32_t views() const { return records_.frame().views; }
   // Pairs (caster, view) the GPU kept in the last frame read back: instances drawn into views.
   uint64_t kept_pairs() const { return kept_pairs_; }
 
-  // Must match ShadowView of shaders/shadow_views.glsl.
-  struct View {
-    glm::mat4 view_projection;
-    glm::vec4 tile;
-    glm::vec4 position_far;
-    glm::uvec4 info;
-    glm::uvec4 raster;
-  };
-  struct Caster {
-    glm::vec4 min_mesh;
-    glm::vec4 max_instance;
-  };
-
  private:
+  // Whether the prepared frame rasterizes in compute: a frame without casters only clears its
+  // tiles, which the hardware raster's pass does whatever the raster.
+  bool rasterizes_in_compute() const;
   rg::ImageHandle add_hardware_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
                                       uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle counts,
                                       rg::BufferHandle draws) const;
@@ -119,16 +110,14 @@ class ShadowViewBatch {
                                      rg::BufferHandle static_layers) const;
   // Copies the depths of views [first, first + count) into their static layers (`save`) or back.
   // The handles move on to the versions written.
-  void add_static_layer_pass(rg::RenderGraph& graph, const char* name, uint32_t slot, bool save,
-                             uint32_t first, uint32_t count, rg::BufferHandle& depths,
-                             rg::BufferHandle& static_layers) const;
+  void add_static_layer_pass(rg::RenderGraph& graph, const char* name, bool save, uint32_t first,
+                             uint32_t count, rg::BufferHandle& depths, rg::BufferHandle& static_layers) const;
 
   vk::VulkanContext& context_;
   const GpuTextures& textures_;
   shadows::ShadowRaster setting_;  // hardware, compute, or automatic: chosen per frame
   shadows::ShadowRaster raster_;   // this frame's
   bool has_static_layers_;
-  bool layered_ = false;  // this frame's: static layers kept, moving casters drawn apart
   vk::PipelineLayout cull_layout_;
   vk::PipelineLayout draws_layout_;
   vk::PipelineLayout scatter_layout_;
@@ -155,9 +144,7 @@ class ShadowViewBatch {
   vk::UniquePipeline static_restore_pipeline_;
   uint32_t max_views_per_dispatch_ = 0;
 
-  vk::FrameBuffers view_buffers_;
-  vk::FrameBuffers caster_buffers_;
-  vk::FrameBuffers mesh_buffers_;
+  ShadowBatchRecords records_;
   vk::FrameBuffers feedback_;
   // Per pair list: the capacity each slot's last frame had, the limit it may grow to, this
   // frame's.
@@ -169,23 +156,11 @@ class ShadowViewBatch {
   std::array<PairCapacity, 2> capacity_;
   uint64_t kept_pairs_ = 0;
 
-  uint32_t view_count_ = 0;           // this frame's, their records in view_buffers_
-  uint32_t full_views_ = 0;           // the first views, drawn with every caster; then moving ones alone
-  uint32_t caster_count_ = 0;         // this frame's records of all casters in caster_buffers_
-  uint32_t first_cut_out_group_ = 0;  // this frame's GpuScene::first_cut_out_group
-  uint32_t moving_count_ = 0;         // layered: the moving casters' records after them
-  std::vector<uint32_t> group_first_caster_;  // by caster group: its first caster record
-  std::vector<uint32_t> moving_casters_;      // layered: the moving casters' instances
-  std::vector<glm::uvec4> meshes_;
-  std::vector<VkClearRect> clears_;
-  // Compute raster: where each view's depths go in the depth buffer (View::raster's x and y, by
-  // view), and the copies into the atlas.
-  void place_depths();
-  std::vector<shadows::AtlasTile> view_tiles_;  // per view
+  // Compute raster: where each view's depths go in the depth buffer, and the copies into the
+  // atlas.
+  void place_depths(std::span<const shadows::AtlasTile> tiles);
   shadows::DepthPlacement depth_placement_;
   std::vector<VkBufferImageCopy> copies_;  // depth_placement_'s regions
-  std::vector<uint8_t> drawn_as_;     // per light (maps, then cubes): not, with every caster, moving ones
-  std::vector<uint32_t> first_view_;  // per light (maps, then cubes): its first view, if drawn
 };
 
 }  // namespace sg
