@@ -1,13 +1,11 @@
 #include "systems/shadow_maps/shadow_view_batch.h"
 
 #include <algorithm>
-#include <array>
-#include <bit>
 #include <cstdio>
-#include <cstring>
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rendergraph/device/context.h"
@@ -18,9 +16,7 @@
 #include "shaders/shadow_batch_cut_out.vert.spv.h"
 #include "shaders/shadow_cube.frag.spv.h"
 #include "shaders/shadow_cube_cut_out.frag.spv.h"
-#include "shaders/shadow_cull.comp.spv.h"
 #include "shaders/shadow_cut_out.frag.spv.h"
-#include "shaders/shadow_draws.comp.spv.h"
 #include "shaders/shadow_raster.comp.spv.h"
 #include "shaders/shadow_raster_cut_out.comp.spv.h"
 #include "shaders/shadow_scatter.comp.spv.h"
@@ -47,9 +43,6 @@ struct LayerConstants {
 // shaders/shadow_static_layers.glsl's TEXELS_PER_WORKGROUP.
 constexpr uint64_t layer_texels_per_workgroup = 65536;
 
-// shaders/shadow_batch_compute.glsl's Counts: the two lists' totals and padding, then per draw
-// its pairs and the scatter's cursor.
-constexpr VkDeviceSize counts_header_bytes = 16;
 // The workgroups of a dispatch's x that every device allows (maxComputeWorkGroupCount[0]).
 constexpr uint32_t max_workgroups_x = 65535;
 
@@ -92,18 +85,6 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
       setting_(resolve(raster, context)),
       raster_(setting_ == shadows::ShadowRaster::automatic ? shadows::ShadowRaster::compute : setting_),
       has_static_layers_(static_layers),
-      cull_layout_(context.device(),
-                   {{shadow_views_binding, storage, 1, compute},
-                    {shadow_casters_binding, storage, 1, compute},
-                    {culled_pairs_binding, storage, 1, compute},
-                    {draw_counts_binding, storage, 1, compute}},
-                   vk::push_constants<BatchConstants>(compute)),
-      draws_layout_(context.device(),
-                    {{caster_meshes_binding, storage, 1, compute},
-                     {draw_counts_binding, storage, 1, compute},
-                     {shadow_draws_binding, storage, 1, compute},
-                     {shadow_feedback_binding, storage, 1, compute}},
-                    vk::push_constants<BatchConstants>(compute)),
       scatter_layout_(context.device(),
                       {{shadow_views_binding, storage, 1, compute},
                        {shadow_casters_binding, storage, 1, compute},
@@ -135,13 +116,7 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
                              {static_layers_binding, storage, 1, compute}},
                             vk::push_constants<LayerConstants>(compute)),
       records_(context, frames_in_flight),
-      feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow feedback") {
-  for (PairCapacity& capacity : capacity_) capacity.in_slot.assign(frames_in_flight, 0);
-  max_views_per_dispatch_ = context.properties().limits.maxComputeWorkGroupCount[1];
-  cull_pipeline_ =
-      vk::create_compute_pipeline(context, {shadow_cull_comp, {}, cull_layout_.get(), "shadow cull"});
-  draws_pipeline_ =
-      vk::create_compute_pipeline(context, {shadow_draws_comp, {}, draws_layout_.get(), "shadow draws"});
+      cull_(context, frames_in_flight) {
   scatter_pipeline_ = vk::create_compute_pipeline(
       context, {shadow_scatter_comp, {}, scatter_layout_.get(), "shadow scatter"});
   if (setting_ != shadows::ShadowRaster::hardware) {
@@ -195,22 +170,6 @@ void ShadowViewBatch::set_raster(shadows::ShadowRaster raster) {
   if (raster != shadows::ShadowRaster::automatic) raster_ = raster;
 }
 
-bool ShadowViewBatch::all_casters_kept(uint32_t slot) {
-  // What the GPU kept the last time this slot ran (its fence has been waited for).
-  std::array<uint32_t, 2> kept{};
-  std::memcpy(kept.data(), feedback_.buffer(slot).mapped(), sizeof(kept));
-  bool all_kept = true;
-  for (size_t list = 0; list < capacity_.size(); ++list) {
-    PairCapacity& capacity = capacity_[list];
-    if (capacity.in_slot[slot] == 0) continue;
-    if (kept[list] <= capacity.in_slot[slot]) continue;
-    capacity.limit = std::max(capacity.limit, std::bit_ceil(uint64_t{kept[list]} + kept[list] / 2));
-    all_kept = false;
-  }
-  if (capacity_[0].in_slot[slot] != 0) kept_pairs_ = uint64_t{kept[0]} + kept[1];
-  return all_kept;
-}
-
 bool ShadowViewBatch::rasterizes_in_compute() const {
   return raster_ == shadows::ShadowRaster::compute && records_.frame().casters > 0;
 }
@@ -230,17 +189,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
   }
   const bool layered = has_static_layers_ && frame.views > 0 && rasterizes_in_compute();
   records_.write(slot, lights, scene, page_size, depth_placement_.places(), layered, pool);
-
-  const std::array<uint32_t, 2> zeros{};
-  feedback_.write(slot, std::span<const uint32_t>(zeros));
-  const bool drawn = frame.views > 0 && frame.casters > 0;
-  const std::array<uint64_t, 2> pairs{uint64_t{frame.full_views} * frame.casters,
-                                      uint64_t{frame.views} * frame.moving_casters};
-  for (size_t list = 0; list < capacity_.size(); ++list) {
-    PairCapacity& capacity = capacity_[list];
-    capacity.now = std::clamp<uint64_t>(pairs[list], 1, capacity.limit);
-    capacity.in_slot[slot] = drawn && pairs[list] > 0 ? capacity.now : 0;
-  }
+  cull_.prepare(slot, frame);
 }
 
 void ShadowViewBatch::place_depths(std::span<const shadows::AtlasTile> tiles) {
@@ -263,108 +212,12 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
                                         uint32_t slot) const {
   const ShadowBatchFrame& frame = records_.frame();
   if (frame.views == 0) return atlas;
-  if (frame.casters == 0) return add_hardware_raster(graph, atlas, scene, slot, {}, {}, {});
+  if (frame.casters == 0) return add_hardware_raster(graph, atlas, scene, slot, {});
   const bool compute = rasterizes_in_compute();
-  const bool moving_list = frame.layered && frame.moving_casters > 0;
-  BatchConstants constants{frame.casters, frame.caster_groups, static_cast<uint32_t>(capacity_[0].now), 0u};
-  constants.skip_moving = frame.layered ? 1 : 0;
-  constants.moving_capacity = static_cast<uint32_t>(capacity_[1].now);
-  const uint32_t draw_count = view_kinds * frame.caster_groups;
-  const VkBuffer view_buffer = frame.view_records;
-  const VkBuffer caster_buffer = frame.caster_records;
-
-  struct Buffers {
-    rg::BufferHandle counts, pairs, moving_pairs, draws, depths;
-  } b{};
-  graph.add_pass(
-      "shadow cull reset",
-      [&](rg::PassBuilder& p) {
-        b.counts = p.write(p.create_buffer("shadow draw counts", {counts_header_bytes + 2 * draw_count * 4}),
-                           rg::Usage::transfer);
-        if (compute) {
-          b.depths = p.write(
-              p.create_buffer("shadow depths", {frame_steady(depth_placement_.texels() * sizeof(float))}),
-              rg::Usage::transfer);
-        }
-        return b;
-      },
-      [](const Buffers& written, const vk::PassRecorder& rec) {
-        vkCmdFillBuffer(rec.cmd(), rec.buffer(written.counts), 0, VK_WHOLE_SIZE, 0);
-        // The far plane, 1.0f: what a cleared tile holds.
-        if (written.depths.valid())
-          vkCmdFillBuffer(rec.cmd(), rec.buffer(written.depths), 0, VK_WHOLE_SIZE, 0x3F800000u);
-      });
-  graph.add_pass(
-      "shadow cull",
-      [&](rg::PassBuilder& p) {
-        b.counts = p.write(b.counts, rg::Usage::storage_compute);
-        b.pairs =
-            p.write(p.create_buffer("shadow culled pairs", {frame_steady(capacity_[0].now * pair_bytes)}),
-                    rg::Usage::storage_compute);
-        if (moving_list) {
-          b.moving_pairs =
-              p.write(p.create_buffer("shadow moving pairs", {frame_steady(capacity_[1].now * pair_bytes)}),
-                      rg::Usage::storage_compute);
-        }
-        return b;
-      },
-      [this, constants, frame, view_buffer, caster_buffer](const Buffers& written,
-                                                           const vk::PassRecorder& rec) {
-        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, cull_pipeline_.get());
-        // List 0: the views drawn with every caster against every still caster (every caster,
-        // unlayered); list 1: every view against the moving casters.
-        const auto cull = [&](rg::BufferHandle pairs, BatchConstants list, uint32_t view_count) {
-          const VkDescriptorSet set = cull_layout_.write(rec.allocate_set(cull_layout_))
-                                          .buffer(shadow_views_binding, view_buffer)
-                                          .buffer(shadow_casters_binding, caster_buffer)
-                                          .buffer(culled_pairs_binding, rec.buffer(pairs))
-                                          .buffer(draw_counts_binding, rec.buffer(written.counts))
-                                          .update();
-          cull_layout_.bind_compute(rec.cmd(), set);
-          const uint32_t columns = (list.caster_count + 63) / 64;
-          for (uint32_t base = 0; base < view_count; base += max_views_per_dispatch_) {
-            list.view_base = base;
-            cull_layout_.push(rec.cmd(), list);
-            vkCmdDispatch(rec.cmd(), columns, std::min(max_views_per_dispatch_, view_count - base), 1);
-          }
-        };
-        if (frame.full_views > 0) cull(written.pairs, constants, frame.full_views);
-        if (written.moving_pairs.valid()) {
-          BatchConstants moving = constants;
-          moving.caster_base = frame.casters;
-          moving.caster_count = frame.moving_casters;
-          moving.capacity = constants.moving_capacity;
-          moving.list = 1;
-          moving.skip_moving = 0;
-          cull(written.moving_pairs, moving, frame.views);
-        }
-      });
-  graph.add_pass(
-      "shadow draws",
-      [&](rg::PassBuilder& p) {
-        b.counts = p.write(b.counts, rg::Usage::storage_compute);
-        b.draws =
-            p.write(p.create_buffer("shadow draw commands",
-                                    {draws_header_bytes + draw_count * sizeof(VkDrawIndexedIndirectCommand)}),
-                    rg::Usage::storage_compute);
-        return b;
-      },
-      [this, constants, slot, meshes = frame.mesh_records](const Buffers& written,
-                                                           const vk::PassRecorder& rec) {
-        const VkDescriptorSet set = draws_layout_.write(rec.allocate_set(draws_layout_))
-                                        .buffer(caster_meshes_binding, meshes)
-                                        .buffer(draw_counts_binding, rec.buffer(written.counts))
-                                        .buffer(shadow_draws_binding, rec.buffer(written.draws))
-                                        .buffer(shadow_feedback_binding, feedback_.buffer(slot).handle())
-                                        .update();
-        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, draws_pipeline_.get());
-        draws_layout_.bind_compute(rec.cmd(), set);
-        draws_layout_.push(rec.cmd(), constants);
-        vkCmdDispatch(rec.cmd(), 1, 1, 1);
-      });
-  return compute ? add_compute_raster(graph, atlas, scene, slot, b.pairs, b.moving_pairs, b.counts, b.draws,
-                                      b.depths, static_layers)
-                 : add_hardware_raster(graph, atlas, scene, slot, b.pairs, b.counts, b.draws);
+  const ShadowCullReset reset = add_shadow_cull_reset(graph, frame, compute ? depth_placement_.texels() : 0);
+  const CulledPairs culled = cull_.add_to(graph, frame, slot, reset);
+  return compute ? add_compute_raster(graph, atlas, scene, slot, culled, reset.depths, static_layers)
+                 : add_hardware_raster(graph, atlas, scene, slot, culled);
 }
 
 void ShadowViewBatch::add_static_layer_pass(rg::RenderGraph& graph, const char* name, bool save,
@@ -405,11 +258,13 @@ void ShadowViewBatch::add_static_layer_pass(rg::RenderGraph& graph, const char* 
 
 rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg::ImageHandle atlas,
                                                      const GpuScene& scene, uint32_t slot,
-                                                     rg::BufferHandle pairs, rg::BufferHandle counts,
-                                                     rg::BufferHandle draws) const {
+                                                     const CulledPairs& culled) const {
   const ShadowBatchFrame& frame = records_.frame();
   const uint32_t group_count = frame.caster_groups;
-  const BatchConstants constants{frame.casters, group_count, static_cast<uint32_t>(capacity_[0].now), 0u};
+  const BatchConstants constants{frame.casters, group_count, static_cast<uint32_t>(culled.capacity[0]), 0u};
+  const rg::BufferHandle pairs = culled.pairs;
+  const rg::BufferHandle draws = culled.draws;
+  rg::BufferHandle counts = culled.counts;
   const VkBuffer view_buffer = frame.view_records;
   const VkBuffer caster_buffer = frame.caster_records;
   rg::BufferHandle sorted;
@@ -422,7 +277,7 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
           p.read(pairs, rg::Usage::storage_compute);
           counts = p.write(counts, rg::Usage::storage_compute);
           sorted =
-              p.write(p.create_buffer("shadow sorted pairs", {frame_steady(capacity_[0].now * pair_bytes)}),
+              p.write(p.create_buffer("shadow sorted pairs", {frame_steady(culled.capacity[0] * pair_bytes)}),
                       rg::Usage::storage_compute);
           return sorted;
         },
@@ -485,13 +340,13 @@ rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg:
 
 rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas,
                                                     const GpuScene& scene, uint32_t slot,
-                                                    rg::BufferHandle pairs, rg::BufferHandle moving_pairs,
-                                                    rg::BufferHandle counts, rg::BufferHandle draws,
-                                                    rg::BufferHandle depths,
+                                                    const CulledPairs& culled, rg::BufferHandle depths,
                                                     rg::BufferHandle static_layers) const {
   const ShadowBatchFrame& frame = records_.frame();
+  const rg::BufferHandle counts = culled.counts;
+  const rg::BufferHandle draws = culled.draws;
   const auto raster = [&](const char* name, rg::BufferHandle list_pairs, uint32_t list) {
-    BatchConstants constants{frame.casters, frame.caster_groups, static_cast<uint32_t>(capacity_[list].now),
+    BatchConstants constants{frame.casters, frame.caster_groups, static_cast<uint32_t>(culled.capacity[list]),
                              0u};
     constants.list = list;
     const VkDeviceSize dispatch = list == 0 ? raster_dispatch_offset : moving_raster_dispatch_offset;
@@ -530,7 +385,7 @@ rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::
           }
         });
   };
-  raster("shadow raster", pairs, 0);
+  raster("shadow raster", culled.pairs, 0);
   if (frame.layered && frame.full_views > 0) {
     add_static_layer_pass(graph, "shadow static save", true, 0, frame.full_views, depths, static_layers);
   }
@@ -540,7 +395,7 @@ rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::
     add_static_layer_pass(graph, "shadow static restore", false, frame.full_views,
                           frame.views - frame.full_views, depths, static_layers);
   }
-  if (moving_pairs.valid()) raster("shadow raster moving", moving_pairs, 1);
+  if (culled.moving_pairs.valid()) raster("shadow raster moving", culled.moving_pairs, 1);
   graph.add_pass(
       "shadow copy",
       [&](rg::PassBuilder& p) {

@@ -5,6 +5,7 @@
 //
 //   shadow cull      (compute)  every caster against every view's frustum -> (caster, view) pairs
 //   shadow draws     (compute)  counts -> one indirect draw per (view kind, mesh), and dispatches
+//                               (shadow_cull_pass.h)
 // then, rasterizing with the hardware (shadows::ShadowRaster::hardware):
 //   shadow scatter   (compute)  the pairs sorted into those draws' instance ranges
 //   shadow views     (raster)   clears the views' tiles, then two multi-draw indirect calls
@@ -29,11 +30,6 @@
 // the shaders' cut_out variants (shaders/shadow_cut_out.glsl); a transparent caster holding a
 // view's light is culled from that view. The hardware raster needs shaderOutputLayer (gl_Layer from the
 // vertex stage, shaders/shadow_batch.vert); supported() says whether the device has it.
-//
-// Culled pairs live in a buffer of a fixed capacity. The GPU reports how many pairs it kept
-// (read back when the frame slot comes round again); when they did not fit, capacity grows and
-// all_casters_kept() says so, so that the caller re-renders the views that lost casters.
-#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -43,11 +39,11 @@
 #include "ecs/fwd.h"
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
-#include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/gpu/gpu_scene.h"
 #include "systems/shadow_maps/shadow_batch_records.h"
+#include "systems/shadow_maps/shadow_cull_pass.h"
 #include "systems/shadows/depth_placement.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_view_path.h"
@@ -76,8 +72,8 @@ class ShadowViewBatch {
 
   // After FrameRing::begin_frame returned `slot`, before prepare: false when the frame that last
   // used the slot kept more pairs than it could store, so some of its views missed casters and
-  // must be rendered again (the capacity has grown since).
-  bool all_casters_kept(uint32_t slot);
+  // must be rendered again (the capacity has grown since; shadow_cull_pass.h).
+  bool all_casters_kept(uint32_t slot) { return cull_.all_casters_kept(slot); }
   // CPU side of a frame: the records of the views of `lights` that render this frame (`render`),
   // in an atlas of `page_size` texels a page, and of `scene`'s casters. With `pool`, the view
   // and caster records are written on its threads, straight into the slot's buffers.
@@ -95,18 +91,16 @@ class ShadowViewBatch {
 
   uint32_t views() const { return records_.frame().views; }
   // Pairs (caster, view) the GPU kept in the last frame read back: instances drawn into views.
-  uint64_t kept_pairs() const { return kept_pairs_; }
+  uint64_t kept_pairs() const { return cull_.kept_pairs(); }
 
  private:
   // Whether the prepared frame rasterizes in compute: a frame without casters only clears its
   // tiles, which the hardware raster's pass does whatever the raster.
   bool rasterizes_in_compute() const;
   rg::ImageHandle add_hardware_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
-                                      uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle counts,
-                                      rg::BufferHandle draws) const;
+                                      uint32_t slot, const CulledPairs& culled) const;
   rg::ImageHandle add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
-                                     uint32_t slot, rg::BufferHandle pairs, rg::BufferHandle moving_pairs,
-                                     rg::BufferHandle counts, rg::BufferHandle draws, rg::BufferHandle depths,
+                                     uint32_t slot, const CulledPairs& culled, rg::BufferHandle depths,
                                      rg::BufferHandle static_layers) const;
   // Copies the depths of views [first, first + count) into their static layers (`save`) or back.
   // The handles move on to the versions written.
@@ -118,14 +112,10 @@ class ShadowViewBatch {
   shadows::ShadowRaster setting_;  // hardware, compute, or automatic: chosen per frame
   shadows::ShadowRaster raster_;   // this frame's
   bool has_static_layers_;
-  vk::PipelineLayout cull_layout_;
-  vk::PipelineLayout draws_layout_;
   vk::PipelineLayout scatter_layout_;
   vk::PipelineLayout raster_layout_;
   vk::PipelineLayout compute_raster_layout_;
   vk::PipelineLayout static_layers_layout_;
-  vk::UniquePipeline cull_pipeline_;
-  vk::UniquePipeline draws_pipeline_;
   vk::UniquePipeline scatter_pipeline_;
   vk::UniquePipeline compute_raster_pipeline_;
   // The hardware raster's, for opaque casters or cut-out ones (shaders/shadow_cut_out.glsl).
@@ -142,19 +132,9 @@ class ShadowViewBatch {
   vk::UniquePipeline compute_raster_cut_out_pipeline_;
   vk::UniquePipeline static_save_pipeline_;
   vk::UniquePipeline static_restore_pipeline_;
-  uint32_t max_views_per_dispatch_ = 0;
 
   ShadowBatchRecords records_;
-  vk::FrameBuffers feedback_;
-  // Per pair list: the capacity each slot's last frame had, the limit it may grow to, this
-  // frame's.
-  struct PairCapacity {
-    std::vector<uint64_t> in_slot;
-    uint64_t limit = uint64_t{1} << 22;
-    uint64_t now = 0;
-  };
-  std::array<PairCapacity, 2> capacity_;
-  uint64_t kept_pairs_ = 0;
+  ShadowCullPass cull_;
 
   // Compute raster: where each view's depths go in the depth buffer, and the copies into the
   // atlas.
