@@ -4,27 +4,17 @@
 #include <cstdio>
 #include <span>
 #include <stdexcept>
-#include <string>
-#include <utility>
-#include <vector>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
-#include "shaders/shadow_batch.vert.spv.h"
-#include "shaders/shadow_batch_cut_out.vert.spv.h"
-#include "shaders/shadow_cube.frag.spv.h"
-#include "shaders/shadow_cube_cut_out.frag.spv.h"
-#include "shaders/shadow_cut_out.frag.spv.h"
 #include "shaders/shadow_raster.comp.spv.h"
 #include "shaders/shadow_raster_cut_out.comp.spv.h"
-#include "shaders/shadow_scatter.comp.spv.h"
 #include "shaders/shadow_static_restore.comp.spv.h"
 #include "shaders/shadow_static_save.comp.spv.h"
 #include "systems/gpu/gpu_textures.h"
 #include "systems/gpu/shader_bindings.h"
-#include "systems/shadow_maps/shadow_atlas.h"
 
 namespace sg {
 namespace {
@@ -45,10 +35,6 @@ constexpr uint64_t layer_texels_per_workgroup = 65536;
 
 // The workgroups of a dispatch's x that every device allows (maxComputeWorkGroupCount[0]).
 constexpr uint32_t max_workgroups_x = 65535;
-
-VkClearRect tile_clear(const shadows::AtlasTile& tile) {
-  return {{{int32_t(tile.x), int32_t(tile.y)}, {tile.size, tile.size}}, tile.page, 1};
-}
 
 // shadows::raster_for_views's `large_tile_texels`.
 uint64_t large_tile_texels(std::span<const shadows::AtlasTile> tiles) {
@@ -85,18 +71,6 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
       setting_(resolve(raster, context)),
       raster_(setting_ == shadows::ShadowRaster::automatic ? shadows::ShadowRaster::compute : setting_),
       has_static_layers_(static_layers),
-      scatter_layout_(context.device(),
-                      {{shadow_views_binding, storage, 1, compute},
-                       {shadow_casters_binding, storage, 1, compute},
-                       {culled_pairs_binding, storage, 1, compute},
-                       {draw_counts_binding, storage, 1, compute},
-                       {view_instances_binding, storage, 1, compute}},
-                      vk::push_constants<BatchConstants>(compute)),
-      raster_layout_(context.device(), {{instances_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT},
-                                        {shadow_views_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT},
-                                        {view_instances_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT},
-                                        {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                         1, VK_SHADER_STAGE_FRAGMENT_BIT}}),
       compute_raster_layout_(
           context.device(),
           {{instances_binding, storage, 1, compute},
@@ -116,9 +90,8 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
                              {static_layers_binding, storage, 1, compute}},
                             vk::push_constants<LayerConstants>(compute)),
       records_(context, frames_in_flight),
-      cull_(context, frames_in_flight) {
-  scatter_pipeline_ = vk::create_compute_pipeline(
-      context, {shadow_scatter_comp, {}, scatter_layout_.get(), "shadow scatter"});
+      cull_(context, frames_in_flight),
+      hardware_(context, textures) {
   if (setting_ != shadows::ShadowRaster::hardware) {
     if (context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
       std::printf(
@@ -132,32 +105,13 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
     static_restore_pipeline_ = vk::create_compute_pipeline(
         context, {shadow_static_restore_comp, {}, static_layers_layout_.get(), "shadow static restore"});
   }
-  opaque_ = make_raster_pipelines(false);
 }
 
-ShadowViewBatch::RasterPipelines ShadowViewBatch::make_raster_pipelines(bool cut_out) const {
-  using Spirv = std::span<const uint32_t>;
-  vk::GraphicsPipelineDesc desc = cut_out ? shadow_cut_out_pipeline_desc(raster_layout_.get(), textures_)
-                                          : shadow_pipeline_desc(raster_layout_.get());
-  const std::string suffix = cut_out ? " cut out" : "";
-  RasterPipelines made;
-  desc.vertex_spirv = cut_out ? Spirv(shadow_batch_cut_out_vert) : Spirv(shadow_batch_vert);
-  if (cut_out) desc.fragment_spirv = shadow_cut_out_frag;  // 2D maps need none otherwise
-  desc.name = "shadow batch maps" + suffix;
-  made.map = vk::create_graphics_pipeline(context_, desc);
-  desc.fragment_spirv = cut_out ? Spirv(shadow_cube_cut_out_frag) : Spirv(shadow_cube_frag);
-  desc.name = "shadow batch cube faces" + suffix;
-  made.face = vk::create_graphics_pipeline(context_, desc);
-  return made;
-}
-
-void ShadowViewBatch::make_cut_out_pipelines() {
-  cut_out_ = make_raster_pipelines(true);
-  if (compute_raster_pipeline_) {
-    compute_raster_cut_out_pipeline_ = vk::create_compute_pipeline(
-        context_, {shadow_raster_cut_out_comp, material_pass_constants(0, 0, textures_),
-                   compute_raster_layout_.get(), "shadow raster cut out"});
-  }
+void ShadowViewBatch::make_compute_cut_out_pipeline() {
+  if (!compute_raster_pipeline_ || compute_raster_cut_out_pipeline_) return;
+  compute_raster_cut_out_pipeline_ = vk::create_compute_pipeline(
+      context_, {shadow_raster_cut_out_comp, material_pass_constants(0, 0, textures_),
+                 compute_raster_layout_.get(), "shadow raster cut out"});
 }
 
 void ShadowViewBatch::set_raster(shadows::ShadowRaster raster) {
@@ -180,7 +134,10 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
   if (setting_ == shadows::ShadowRaster::automatic) {
     raster_ = shadows::raster_for_views(frame.views, large_tile_texels(frame.tiles));
   }
-  if (frame.first_cut_out_group < frame.caster_groups && !cut_out_.map) make_cut_out_pipelines();
+  if (frame.first_cut_out_group < frame.caster_groups) {
+    hardware_.make_cut_out_pipelines();
+    make_compute_cut_out_pipeline();
+  }
   // The view records say where the compute raster puts each view's depths.
   if (rasterizes_in_compute()) {
     place_depths(frame.tiles);
@@ -212,12 +169,12 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
                                         uint32_t slot) const {
   const ShadowBatchFrame& frame = records_.frame();
   if (frame.views == 0) return atlas;
-  if (frame.casters == 0) return add_hardware_raster(graph, atlas, scene, slot, {});
+  if (frame.casters == 0) return hardware_.add_to(graph, atlas, frame, {}, scene, slot);
   const bool compute = rasterizes_in_compute();
   const ShadowCullReset reset = add_shadow_cull_reset(graph, frame, compute ? depth_placement_.texels() : 0);
   const CulledPairs culled = cull_.add_to(graph, frame, slot, reset);
   return compute ? add_compute_raster(graph, atlas, scene, slot, culled, reset.depths, static_layers)
-                 : add_hardware_raster(graph, atlas, scene, slot, culled);
+                 : hardware_.add_to(graph, atlas, frame, culled, scene, slot);
 }
 
 void ShadowViewBatch::add_static_layer_pass(rg::RenderGraph& graph, const char* name, bool save,
@@ -254,88 +211,6 @@ void ShadowViewBatch::add_static_layer_pass(rg::RenderGraph& graph, const char* 
         static_layers_layout_.push(rec.cmd(), LayerConstants{first, count});
         vkCmdDispatch(rec.cmd(), std::min(count, max_workgroups_x), chunks, 1);
       });
-}
-
-rg::ImageHandle ShadowViewBatch::add_hardware_raster(rg::RenderGraph& graph, rg::ImageHandle atlas,
-                                                     const GpuScene& scene, uint32_t slot,
-                                                     const CulledPairs& culled) const {
-  const ShadowBatchFrame& frame = records_.frame();
-  const uint32_t group_count = frame.caster_groups;
-  const BatchConstants constants{frame.casters, group_count, static_cast<uint32_t>(culled.capacity[0]), 0u};
-  const rg::BufferHandle pairs = culled.pairs;
-  const rg::BufferHandle draws = culled.draws;
-  rg::BufferHandle counts = culled.counts;
-  const VkBuffer view_buffer = frame.view_records;
-  const VkBuffer caster_buffer = frame.caster_records;
-  rg::BufferHandle sorted;
-  if (draws.valid()) {
-    // Execute gets the sorted pairs from setup: they do not exist before it runs.
-    graph.add_pass(
-        "shadow scatter",
-        [&](rg::PassBuilder& p) {
-          p.read(draws, rg::Usage::indirect);
-          p.read(pairs, rg::Usage::storage_compute);
-          counts = p.write(counts, rg::Usage::storage_compute);
-          sorted =
-              p.write(p.create_buffer("shadow sorted pairs", {frame_steady(culled.capacity[0] * pair_bytes)}),
-                      rg::Usage::storage_compute);
-          return sorted;
-        },
-        [this, constants, view_buffer, caster_buffer, pairs, counts, draws](rg::BufferHandle sorted,
-                                                                            const vk::PassRecorder& rec) {
-          const VkDescriptorSet set = scatter_layout_.write(rec.allocate_set(scatter_layout_))
-                                          .buffer(shadow_views_binding, view_buffer)
-                                          .buffer(shadow_casters_binding, caster_buffer)
-                                          .buffer(culled_pairs_binding, rec.buffer(pairs))
-                                          .buffer(draw_counts_binding, rec.buffer(counts))
-                                          .buffer(view_instances_binding, rec.buffer(sorted))
-                                          .update();
-          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, scatter_pipeline_.get());
-          scatter_layout_.bind_compute(rec.cmd(), set);
-          scatter_layout_.push(rec.cmd(), constants);
-          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(draws), scatter_dispatch_offset);
-        });
-  }
-  // The views' tiles, cleared to the far plane before the draws.
-  std::vector<VkClearRect> clears(frame.tiles.size());
-  std::transform(frame.tiles.begin(), frame.tiles.end(), clears.begin(), tile_clear);
-  graph.add_pass(
-      "shadow views",
-      [&](rg::PassBuilder& p) {
-        if (draws.valid()) {
-          p.read(draws, rg::Usage::indirect);
-          p.read(sorted, rg::Usage::storage_vertex);
-        }
-        atlas = p.write(atlas, rg::Usage::depth_attachment);  // kept: cached tiles stay
-      },
-      [this, &scene, slot, group_count, opaque = frame.first_cut_out_group, view_buffer, draws, sorted,
-       clears = std::move(clears)](const vk::PassRecorder& rec) {
-        const VkClearAttachment far{VK_IMAGE_ASPECT_DEPTH_BIT, 0, {.depthStencil = {1.0f, 0}}};
-        vkCmdClearAttachments(rec.cmd(), 1, &far, static_cast<uint32_t>(clears.size()), clears.data());
-        if (!draws.valid() || !scene.bind_geometry(rec.cmd())) return;
-        rec.set_full_viewport();
-        const VkDescriptorSet set =
-            raster_layout_.write(rec.allocate_set(raster_layout_))
-                .buffer(instances_binding, scene.instances(slot).handle())
-                .buffer(shadow_views_binding, view_buffer)
-                .buffer(view_instances_binding, rec.buffer(sorted))
-                .image(material_textures_binding, textures_.array().view(), textures_.sampler())
-                .update();
-        raster_layout_.bind(rec.cmd(), set);
-        // Per view kind, its draws by caster group: the opaque groups', then the cut-out ones'.
-        const VkBuffer commands = rec.buffer(draws);
-        constexpr VkDeviceSize stride = sizeof(VkDrawIndexedIndirectCommand);
-        const auto draw = [&](VkPipeline pipeline, uint32_t first, uint32_t count) {
-          if (count == 0) return;
-          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-          vkCmdDrawIndexedIndirect(rec.cmd(), commands, draws_header_bytes + first * stride, count, stride);
-        };
-        draw(opaque_.map.get(), 0, opaque);
-        draw(cut_out_.map.get(), opaque, group_count - opaque);
-        draw(opaque_.face.get(), group_count, opaque);
-        draw(cut_out_.face.get(), group_count + opaque, group_count - opaque);
-      });
-  return atlas;
 }
 
 rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas,

@@ -6,7 +6,7 @@
 //   shadow cull      (compute)  every caster against every view's frustum -> (caster, view) pairs
 //   shadow draws     (compute)  counts -> one indirect draw per (view kind, mesh), and dispatches
 //                               (shadow_cull_pass.h)
-// then, rasterizing with the hardware (shadows::ShadowRaster::hardware):
+// then, rasterizing with the hardware (shadows::ShadowRaster::hardware, hardware_shadow_raster.h):
 //   shadow scatter   (compute)  the pairs sorted into those draws' instance ranges
 //   shadow views     (raster)   clears the views' tiles, then two multi-draw indirect calls
 //                               (2D maps depth only; cube faces with shadow_cube.frag) draw
@@ -42,6 +42,7 @@
 #include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/gpu/gpu_scene.h"
+#include "systems/shadow_maps/hardware_shadow_raster.h"
 #include "systems/shadow_maps/shadow_batch_records.h"
 #include "systems/shadow_maps/shadow_cull_pass.h"
 #include "systems/shadows/depth_placement.h"
@@ -97,8 +98,6 @@ class ShadowViewBatch {
   // Whether the prepared frame rasterizes in compute: a frame without casters only clears its
   // tiles, which the hardware raster's pass does whatever the raster.
   bool rasterizes_in_compute() const;
-  rg::ImageHandle add_hardware_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
-                                      uint32_t slot, const CulledPairs& culled) const;
   rg::ImageHandle add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
                                      uint32_t slot, const CulledPairs& culled, rg::BufferHandle depths,
                                      rg::BufferHandle static_layers) const;
@@ -112,29 +111,19 @@ class ShadowViewBatch {
   shadows::ShadowRaster setting_;  // hardware, compute, or automatic: chosen per frame
   shadows::ShadowRaster raster_;   // this frame's
   bool has_static_layers_;
-  vk::PipelineLayout scatter_layout_;
-  vk::PipelineLayout raster_layout_;
   vk::PipelineLayout compute_raster_layout_;
   vk::PipelineLayout static_layers_layout_;
-  vk::UniquePipeline scatter_pipeline_;
   vk::UniquePipeline compute_raster_pipeline_;
-  // The hardware raster's, for opaque casters or cut-out ones (shaders/shadow_cut_out.glsl).
-  struct RasterPipelines {
-    vk::UniquePipeline map;   // shadow_batch.vert
-    vk::UniquePipeline face;  // shadow_batch.vert, shadow_cube.frag
-  };
-  RasterPipelines make_raster_pipelines(bool cut_out) const;
-  RasterPipelines opaque_;
-  // The cut-out casters' pipelines, the hardware raster's and the compute raster's, made with the
-  // first scene that has such casters.
-  void make_cut_out_pipelines();
-  RasterPipelines cut_out_;
+  // The cut-out casters' pipeline (shaders/shadow_cut_out.glsl), made with the first scene that
+  // has such casters.
+  void make_compute_cut_out_pipeline();
   vk::UniquePipeline compute_raster_cut_out_pipeline_;
   vk::UniquePipeline static_save_pipeline_;
   vk::UniquePipeline static_restore_pipeline_;
 
   ShadowBatchRecords records_;
   ShadowCullPass cull_;
+  HardwareShadowRaster hardware_;
 
   // Compute raster: where each view's depths go in the depth buffer, and the copies into the
   // atlas.
