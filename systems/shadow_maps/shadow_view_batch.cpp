@@ -11,8 +11,6 @@
 #include "rendergraph/vulkan/plan_translation.h"
 #include "shaders/shadow_raster.comp.spv.h"
 #include "shaders/shadow_raster_cut_out.comp.spv.h"
-#include "shaders/shadow_static_restore.comp.spv.h"
-#include "shaders/shadow_static_save.comp.spv.h"
 #include "systems/gpu/gpu_textures.h"
 #include "systems/gpu/shader_bindings.h"
 
@@ -23,18 +21,6 @@ using namespace bindings;
 using namespace shadow_batch;
 constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
 constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-
-// shaders/shadow_static_layers.glsl's LayerConstants.
-struct LayerConstants {
-  uint32_t view_base;
-  uint32_t view_count;
-};
-
-// shaders/shadow_static_layers.glsl's TEXELS_PER_WORKGROUP.
-constexpr uint64_t layer_texels_per_workgroup = 65536;
-
-// The workgroups of a dispatch's x that every device allows (maxComputeWorkGroupCount[0]).
-constexpr uint32_t max_workgroups_x = 65535;
 
 // shadows::raster_for_views's `large_tile_texels`.
 uint64_t large_tile_texels(std::span<const shadows::AtlasTile> tiles) {
@@ -84,11 +70,6 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
            {mesh_indices_binding, storage, 1, compute},
            {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute}},
           vk::push_constants<BatchConstants>(compute)),
-      static_layers_layout_(context.device(),
-                            {{shadow_views_binding, storage, 1, compute},
-                             {shadow_depths_binding, storage, 1, compute},
-                             {static_layers_binding, storage, 1, compute}},
-                            vk::push_constants<LayerConstants>(compute)),
       records_(context, frames_in_flight),
       cull_(context, frames_in_flight),
       hardware_(context, textures) {
@@ -100,10 +81,7 @@ ShadowViewBatch::ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_
     }
     compute_raster_pipeline_ = vk::create_compute_pipeline(
         context, {shadow_raster_comp, {}, compute_raster_layout_.get(), "shadow raster"});
-    static_save_pipeline_ = vk::create_compute_pipeline(
-        context, {shadow_static_save_comp, {}, static_layers_layout_.get(), "shadow static save"});
-    static_restore_pipeline_ = vk::create_compute_pipeline(
-        context, {shadow_static_restore_comp, {}, static_layers_layout_.get(), "shadow static restore"});
+    static_layers_.emplace(context);
   }
 }
 
@@ -177,42 +155,6 @@ rg::ImageHandle ShadowViewBatch::add_to(rg::RenderGraph& graph, rg::ImageHandle 
                  : hardware_.add_to(graph, atlas, frame, culled, scene, slot);
 }
 
-void ShadowViewBatch::add_static_layer_pass(rg::RenderGraph& graph, const char* name, bool save,
-                                            uint32_t first, uint32_t count, rg::BufferHandle& depths,
-                                            rg::BufferHandle& static_layers) const {
-  const ShadowBatchFrame& frame = records_.frame();
-  uint64_t largest = 0;
-  for (uint32_t v = first; v < first + count; ++v) {
-    largest = std::max<uint64_t>(largest, uint64_t{frame.tiles[v].size} * frame.tiles[v].size);
-  }
-  const auto chunks =
-      static_cast<uint32_t>((largest + layer_texels_per_workgroup - 1) / layer_texels_per_workgroup);
-  graph.add_pass(
-      name,
-      [&](rg::PassBuilder& p) {
-        if (save) {
-          p.read(depths, rg::Usage::storage_compute);
-          static_layers = p.write(static_layers, rg::Usage::storage_compute);
-        } else {
-          p.read(static_layers, rg::Usage::storage_compute);
-          depths = p.write(depths, rg::Usage::storage_compute);
-        }
-      },
-      [this, views = frame.view_records, save, first, count, chunks, depths,
-       static_layers](const vk::PassRecorder& rec) {
-        const VkDescriptorSet set = static_layers_layout_.write(rec.allocate_set(static_layers_layout_))
-                                        .buffer(shadow_views_binding, views)
-                                        .buffer(shadow_depths_binding, rec.buffer(depths))
-                                        .buffer(static_layers_binding, rec.buffer(static_layers))
-                                        .update();
-        vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE,
-                          (save ? static_save_pipeline_ : static_restore_pipeline_).get());
-        static_layers_layout_.bind_compute(rec.cmd(), set);
-        static_layers_layout_.push(rec.cmd(), LayerConstants{first, count});
-        vkCmdDispatch(rec.cmd(), std::min(count, max_workgroups_x), chunks, 1);
-      });
-}
-
 rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas,
                                                     const GpuScene& scene, uint32_t slot,
                                                     const CulledPairs& culled, rg::BufferHandle depths,
@@ -262,13 +204,13 @@ rg::ImageHandle ShadowViewBatch::add_compute_raster(rg::RenderGraph& graph, rg::
   };
   raster("shadow raster", culled.pairs, 0);
   if (frame.layered && frame.full_views > 0) {
-    add_static_layer_pass(graph, "shadow static save", true, 0, frame.full_views, depths, static_layers);
+    static_layers = static_layers_->add_save(graph, frame, 0, frame.full_views, depths, static_layers);
   }
   // The restored views' squares are not list 0's, so restoring comes late: its wait for the
   // previous frame's save would otherwise come before the frame's culling and rasterizing.
   if (frame.layered && frame.full_views < frame.views) {
-    add_static_layer_pass(graph, "shadow static restore", false, frame.full_views,
-                          frame.views - frame.full_views, depths, static_layers);
+    depths = static_layers_->add_restore(graph, frame, frame.full_views, frame.views - frame.full_views,
+                                         depths, static_layers);
   }
   if (culled.moving_pairs.valid()) raster("shadow raster moving", culled.moving_pairs, 1);
   graph.add_pass(

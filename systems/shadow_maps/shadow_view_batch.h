@@ -16,14 +16,15 @@
 //                               views' squares of a depth buffer (shaders/shadow_raster.comp)
 //   shadow copy      (transfer) the squares into their atlas tiles
 //
-// With static layers (the atlas's, ShadowAtlas), the compute raster draws moving casters
-// (GpuScene::moving) apart: a view drawn with every caster is culled against the still casters
-// (pair list 0), rasterized, and its square saved as its static layer ("shadow static save")
-// before the moving casters (list 1) are drawn over it ("shadow raster moving"); a view that only
-// moving casters made wrong (ShadowMapView::moving_casters_only) starts from its static layer
-// ("shadow static restore") and gets list 1 alone. A frame whose views are mostly redrawn for a
-// few moving casters then draws those casters, not the scene. The hardware raster draws every
-// caster into every view and keeps no layers (static_layers_kept()).
+// With static layers (the atlas's, ShadowAtlas; shadow_static_layers.h), the compute raster
+// draws moving casters (GpuScene::moving) apart: a view drawn with every caster is culled
+// against the still casters (pair list 0), rasterized, and its square saved as its static layer
+// ("shadow static save") before the moving casters (list 1) are drawn over it ("shadow raster
+// moving"); a view that only moving casters made wrong (ShadowMapView::moving_casters_only)
+// starts from its static layer ("shadow static restore") and gets list 1 alone. A frame whose
+// views are mostly redrawn for a few moving casters then draws those casters, not the scene.
+// The hardware raster draws every caster into every view and keeps no layers
+// (static_layers_kept()).
 //
 // so CPU time grows with views and casters, not with their product, and the number of passes is
 // fixed. Casters of masked or transparent materials (GpuScene::first_cut_out_group) are drawn with
@@ -31,6 +32,7 @@
 // view's light is culled from that view. The hardware raster needs shaderOutputLayer (gl_Layer from the
 // vertex stage, shaders/shadow_batch.vert); supported() says whether the device has it.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -45,6 +47,7 @@
 #include "systems/shadow_maps/hardware_shadow_raster.h"
 #include "systems/shadow_maps/shadow_batch_records.h"
 #include "systems/shadow_maps/shadow_cull_pass.h"
+#include "systems/shadow_maps/shadow_static_layers.h"
 #include "systems/shadows/depth_placement.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_view_path.h"
@@ -101,10 +104,6 @@ class ShadowViewBatch {
   rg::ImageHandle add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
                                      uint32_t slot, const CulledPairs& culled, rg::BufferHandle depths,
                                      rg::BufferHandle static_layers) const;
-  // Copies the depths of views [first, first + count) into their static layers (`save`) or back.
-  // The handles move on to the versions written.
-  void add_static_layer_pass(rg::RenderGraph& graph, const char* name, bool save, uint32_t first,
-                             uint32_t count, rg::BufferHandle& depths, rg::BufferHandle& static_layers) const;
 
   vk::VulkanContext& context_;
   const GpuTextures& textures_;
@@ -112,14 +111,12 @@ class ShadowViewBatch {
   shadows::ShadowRaster raster_;   // this frame's
   bool has_static_layers_;
   vk::PipelineLayout compute_raster_layout_;
-  vk::PipelineLayout static_layers_layout_;
   vk::UniquePipeline compute_raster_pipeline_;
   // The cut-out casters' pipeline (shaders/shadow_cut_out.glsl), made with the first scene that
   // has such casters.
   void make_compute_cut_out_pipeline();
   vk::UniquePipeline compute_raster_cut_out_pipeline_;
-  vk::UniquePipeline static_save_pipeline_;
-  vk::UniquePipeline static_restore_pipeline_;
+  std::optional<ShadowStaticLayers> static_layers_;  // with the compute raster's pipelines
 
   ShadowBatchRecords records_;
   ShadowCullPass cull_;
