@@ -11,17 +11,14 @@
 //   shadow views     (raster)   clears the views' tiles, then two multi-draw indirect calls
 //                               (2D maps depth only; cube faces with shadow_cube.frag) draw
 //                               every pair into its tile of its atlas layer
-// or in compute (shadows::ShadowRaster::compute):
+// or in compute (shadows::ShadowRaster::compute, compute_shadow_raster.h):
 //   shadow raster    (compute)  a workgroup per pair writes its triangles' depths into the
 //                               views' squares of a depth buffer (shaders/shadow_raster.comp)
 //   shadow copy      (transfer) the squares into their atlas tiles
 //
-// With static layers (the atlas's, ShadowAtlas; shadow_static_layers.h), the compute raster
-// draws moving casters (GpuScene::moving) apart: a view drawn with every caster is culled
-// against the still casters (pair list 0), rasterized, and its square saved as its static layer
-// ("shadow static save") before the moving casters (list 1) are drawn over it ("shadow raster
-// moving"); a view that only moving casters made wrong (ShadowMapView::moving_casters_only)
-// starts from its static layer ("shadow static restore") and gets list 1 alone. A frame whose
+// With static layers (the atlas's, ShadowAtlas), the compute raster draws moving casters apart
+// ("shadow raster moving"), over each view's static layer of its still casters ("shadow static
+// save", "shadow static restore"; compute_shadow_raster.h, shadow_static_layers.h): a frame whose
 // views are mostly redrawn for a few moving casters then draws those casters, not the scene.
 // The hardware raster draws every caster into every view and keeps no layers
 // (static_layers_kept()).
@@ -31,24 +28,18 @@
 // the shaders' cut_out variants (shaders/shadow_cut_out.glsl); a transparent caster holding a
 // view's light is culled from that view. The hardware raster needs shaderOutputLayer (gl_Layer from the
 // vertex stage, shaders/shadow_batch.vert); supported() says whether the device has it.
+//
+// ShadowViewBatch owns the parts and chooses each frame's raster.
 #include <cstdint>
-#include <optional>
-#include <span>
-#include <vector>
-
-#include <vulkan/vulkan.h>
 
 #include "ecs/fwd.h"
 #include "rendergraph/core/render_graph.h"
-#include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/fwd.h"
-#include "rendergraph/device/unique_handle.h"
 #include "systems/gpu/gpu_scene.h"
+#include "systems/shadow_maps/compute_shadow_raster.h"
 #include "systems/shadow_maps/hardware_shadow_raster.h"
 #include "systems/shadow_maps/shadow_batch_records.h"
 #include "systems/shadow_maps/shadow_cull_pass.h"
-#include "systems/shadow_maps/shadow_static_layers.h"
-#include "systems/shadows/depth_placement.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_view_path.h"
 
@@ -101,32 +92,15 @@ class ShadowViewBatch {
   // Whether the prepared frame rasterizes in compute: a frame without casters only clears its
   // tiles, which the hardware raster's pass does whatever the raster.
   bool rasterizes_in_compute() const;
-  rg::ImageHandle add_compute_raster(rg::RenderGraph& graph, rg::ImageHandle atlas, const GpuScene& scene,
-                                     uint32_t slot, const CulledPairs& culled, rg::BufferHandle depths,
-                                     rg::BufferHandle static_layers) const;
 
   vk::VulkanContext& context_;
-  const GpuTextures& textures_;
   shadows::ShadowRaster setting_;  // hardware, compute, or automatic: chosen per frame
   shadows::ShadowRaster raster_;   // this frame's
   bool has_static_layers_;
-  vk::PipelineLayout compute_raster_layout_;
-  vk::UniquePipeline compute_raster_pipeline_;
-  // The cut-out casters' pipeline (shaders/shadow_cut_out.glsl), made with the first scene that
-  // has such casters.
-  void make_compute_cut_out_pipeline();
-  vk::UniquePipeline compute_raster_cut_out_pipeline_;
-  std::optional<ShadowStaticLayers> static_layers_;  // with the compute raster's pipelines
-
   ShadowBatchRecords records_;
   ShadowCullPass cull_;
   HardwareShadowRaster hardware_;
-
-  // Compute raster: where each view's depths go in the depth buffer, and the copies into the
-  // atlas.
-  void place_depths(std::span<const shadows::AtlasTile> tiles);
-  shadows::DepthPlacement depth_placement_;
-  std::vector<VkBufferImageCopy> copies_;  // depth_placement_'s regions
+  ComputeShadowRaster compute_;
 };
 
 }  // namespace sg

@@ -1,6 +1,6 @@
 #pragma once
 // Where the compute shadow raster puts each due view's depths: a tile-sized square of one depth
-// buffer per view, and the rectangles copied from that buffer into the atlas (ShadowViewBatch).
+// buffer per view, and the rectangles copied from that buffer into the atlas (ComputeShadowRaster).
 // Per-region overhead dominates copying thousands of small squares (docs/PERFORMANCE.md), so due
 // tiles of one size side by side on a row of a page share one region, and such a run directly
 // below one of the same columns extends that run's region downward: a block of due tiles copies
