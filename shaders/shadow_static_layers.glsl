@@ -14,7 +14,7 @@
 
 layout(local_size_x = 256) in;
 
-const uint TEXELS_PER_WORKGROUP = 65536u;  // systems/shadow_maps/shadow_view_batch.cpp's
+const uint TEXELS_PER_WORKGROUP = 65536u;  // layer_texels_per_workgroup in systems/shadow_maps/shadow_static_layers.cpp
 
 #if SAVE
 layout(std430, set = 0, binding = shadow_depths_binding) readonly buffer Depths { uint depths[]; };

@@ -3,7 +3,7 @@
 // shadow_cull.comp tests every caster against every view and keeps (caster, view) pairs,
 // shadow_draws.comp turns their counts into one indirect draw per (view kind, mesh),
 // shadow_scatter.comp sorts the pairs into those draws' instance ranges, and
-// shadow_batch.vert draws them all into their tiles. Must match systems/shadow_maps/shadow_view_batch.cpp.
+// shadow_batch.vert draws them all into their tiles. Must match systems/shadow_maps/shadow_batch_records.cpp.
 #ifndef SG_SHADOW_VIEWS_GLSL
 #define SG_SHADOW_VIEWS_GLSL
 
