@@ -21,13 +21,26 @@ std::string camera_text(const scene::CameraPose& pose) {
 }
 
 std::vector<Setting<S>> make_table() {
+  // A pose's text holds commas, a camera's name none. The pose's own errors (SceneError) already
+  // name --camera and the text; an unknown name is refused when the scene loads.
   Setting<S> camera{
-      {"camera", "EX,EY,EZ,TX,TY,TZ",
-       "eye and target; otherwise the scene's first camera, or one that frames the scene's bounds",
+      {"camera", "EX,EY,EZ,TX,TY,TZ|NAME",
+       "eye and target, or one of the scene's cameras by name (the stress scene's: overview, "
+       "street, at eye height among the lights); otherwise the scene's first camera, or one that "
+       "frames the scene's bounds",
        SettingType::text},
-      [](const S& s) { return s.camera ? std::optional(camera_text(*s.camera)) : std::nullopt; },
-      [](S& s, const std::string& text) { s.camera = scene::parse_camera(text); }};
-  // The --camera text's own errors (SceneError) already name --camera and the text.
+      [](const S& s) -> std::optional<std::string> {
+        if (s.camera) return camera_text(*s.camera);
+        if (!s.camera_name.empty()) return s.camera_name;
+        return std::nullopt;
+      },
+      [](S& s, const std::string& text) {
+        if (text.find(',') == std::string::npos) {
+          s.camera_name = text;
+        } else {
+          s.camera = scene::parse_camera(text);
+        }
+      }};
   Setting<S> naive = flag<S>(
       "naive", [](auto& s) -> auto& { return s.naive; },
       "the source documents' frame as a baseline: a pass per shadow view and six per cube, "

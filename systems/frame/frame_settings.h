@@ -19,11 +19,14 @@ namespace sg {
 struct FrameSettings {
   uint32_t width = 1280;  // the picture; a window's first size
   uint32_t height = 720;
-  std::string device;                       // a substring of the Vulkan device's name; empty: the best device
-  bool validation = false;                  // also on with SHADOWGRAPH_VALIDATION=1 (context_options)
-  std::string scene = "default";            // a built-in scene's name or a .gltf/.glb path
-  std::optional<scene::CameraPose> camera;  // unset: the scene's camera, or one framing it
-  scene::BuiltinSceneParams scene_params;   // the stress scene's size, lights and seed
+  std::string device;             // a substring of the Vulkan device's name; empty: the best device
+  bool validation = false;        // also on with SHADOWGRAPH_VALIDATION=1 (context_options)
+  std::string scene = "default";  // a built-in scene's name or a .gltf/.glb path
+  // --camera: a pose, or the name of one of the scene's cameras (camera_name); neither: the
+  // scene's first camera, or one framing it.
+  std::optional<scene::CameraPose> camera;
+  std::string camera_name;
+  scene::BuiltinSceneParams scene_params;  // the stress scene's size, lights and seed
   // Start from <scene>.shadowgraph.json (saved edits, scene_sidecar.h). On from the command line
   // (command_line_defaults), off for code that fills the settings itself (tests, tools), so that
   // a stray file in its working folder cannot change what it renders.

@@ -11,6 +11,7 @@
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/scene_builder.h"
+#include "systems/scene/scene_error.h"
 #include "systems/scene/scene_queries.h"
 
 namespace sg {
@@ -44,12 +45,30 @@ void add_default_light(scene::Scene& scene) {
   scene::warn(scene, "the scene has no lights: the sandbox added a directional light with a shadow");
 }
 
+// The scene's camera named `name`; throws SceneError listing the cameras' names when there is none.
+ecs::Entity camera_named(const scene::Scene& scene, const std::string& name) {
+  std::optional<ecs::Entity> found;
+  std::string names;
+  scene.world.query<const scene::Camera, const scene::Name>().for_each(
+      [&](ecs::Entity entity, const scene::Camera&, const scene::Name& camera) {
+        if (camera.value == name) found = entity;
+        if (!names.empty()) names += ", ";
+        names += camera.value;
+      });
+  if (found) return *found;
+  throw scene::SceneError(scene.name, "--camera " + name,
+                          "the scene has no camera of that name (its named cameras: " +
+                              (names.empty() ? std::string("none") : names) + ")");
+}
+
 }  // namespace
 
 SceneView load_scene_view(const FrameSettings& settings, float aspect) {
   SceneView result{scene::load_scene(settings.scene, settings.scene_params), {}, {}, {}};
   add_default_light(result.scene);
-  const std::optional<ecs::Entity> camera = scene::first_camera(result.scene);
+  const std::optional<ecs::Entity> camera = settings.camera_name.empty()
+                                                ? scene::first_camera(result.scene)
+                                                : camera_named(result.scene, settings.camera_name);
   if (camera) result.lens = result.scene.world.get<scene::Camera>(*camera);
 
   if (settings.camera) {
@@ -57,22 +76,24 @@ SceneView load_scene_view(const FrameSettings& settings, float aspect) {
     result.camera_source = "--camera";
   } else if (camera) {
     result.pose = scene::camera_pose(result.scene.world.get<ecs::WorldTransform>(*camera));
-    result.camera_source = scene_camera_source(settings, result.scene, *camera);
+    result.camera_source = settings.camera_name.empty() ? scene_camera_source(settings, result.scene, *camera)
+                                                        : "--camera " + settings.camera_name;
   } else {
     result.pose = scene::frame_bounds(scene::scene_bounds(result.scene), result.lens.yfov, aspect);
     result.camera_source = "framed bounds";
   }
   // The user's saved edits, unless the command line names the camera or asks for the scene as is.
   const std::filesystem::path sidecar = sidecar_path(settings.scene);
+  const bool named = settings.camera || !settings.camera_name.empty();
   if (settings.sidecar && std::filesystem::exists(sidecar)) {
     scene::CameraPose pose = result.pose;
     apply_sidecar(sidecar, result.scene, pose);
-    if (!settings.camera) {
+    if (!named) {
       result.pose = pose;
       result.camera_source = sidecar.string();
     }
-    std::printf("shadowgraph: lights%s from %s (--sidecar off ignores it)\n",
-                settings.camera ? "" : " and camera", sidecar.string().c_str());
+    std::printf("shadowgraph: lights%s from %s (--sidecar off ignores it)\n", named ? "" : " and camera",
+                sidecar.string().c_str());
   }
   // --algorithm sets every light's algorithm once, here: the panels and scripts may change it
   // afterwards, and a per-frame override would undo their edits.

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -145,7 +146,17 @@ Scene build_stress_scene(const BuiltinSceneParams& params) {
             ShadowSettings{}, "sun");
 
   ecs::update_world_transforms(scene.world, 0);
-  add_camera(scene.world, frame_bounds(scene_bounds(scene), Camera{}.yfov, 16.0f / 9.0f));
+  // "overview" frames the whole hall from above; "street" stands at eye height inside it, 2.5
+  // cells from its near edge, looking 12.5 cells along it: there the lights are near and many
+  // reach each pixel, the case to measure besides the overview (--camera street).
+  const ecs::Entity overview =
+      add_camera(scene.world, frame_bounds(scene_bounds(scene), Camera{}.yfov, 16.0f / 9.0f));
+  scene.world.add<Name>(overview, Name{"overview"});
+  const float street_z = 2.5f * cell_size;
+  const ecs::Entity street = add_camera(
+      scene.world,
+      {{center.x, 1.7f, street_z}, {center.x, 1.5f, std::min(extent, street_z + 12.5f * cell_size)}});
+  scene.world.add<Name>(street, Name{"street"});
   return scene;
 }
 

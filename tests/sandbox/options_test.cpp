@@ -235,6 +235,17 @@ TEST(SandboxOptions, HelpExitsWithZero) {
 
 // The README's option list is the table's (options_table), option for option: a setting added,
 // renamed or reworded in the table and not in the README fails here, with the list to paste.
+// --camera takes a pose (numbers, with commas) or a camera's name (checked when the scene loads).
+TEST(SandboxOptions, CameraTakesAPoseOrAName) {
+  const Options named = parse_ok({"--camera", "street"});
+  EXPECT_EQ(named.frame.camera_name, "street");
+  EXPECT_FALSE(named.frame.camera.has_value());
+  const Options posed = parse_ok({"--camera", "1,2,3,4,5,6"});
+  EXPECT_TRUE(posed.frame.camera.has_value());
+  EXPECT_TRUE(posed.frame.camera_name.empty());
+  EXPECT_EQ(parse({"--camera", "1,2,3"}).exit_code, 2);
+}
+
 TEST(SandboxOptions, TheReadmeListsEveryOptionAsTheTableDeclaresIt) {
   std::ifstream file(std::string(SHADOWGRAPH_SOURCE_DIR) + "/README.md");
   std::stringstream readme;

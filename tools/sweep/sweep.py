@@ -3,13 +3,16 @@
 
 For each light type (point, spot, mixed), light count and mode (optimized: the sandbox's
 defaults; naive: --naive), renders the stress scene headless with every light moving (so every
-shadow map is redrawn every frame) and reads its --stats. Writes sweep.csv and, when gnuplot is
+shadow map is redrawn every frame) from each of --cameras (overview: the whole hall; street:
+eye height among the lights) and reads its --stats: times, the raster used, the light-list pairs
+dropped. Writes sweep.csv and, when gnuplot is
 installed (apt-get install gnuplot-nox), sweep.png (GPU frame) and sweep_lighting.png (the
 lighting passes alone) into --out; prints progress per run and a summary table. Python's
 standard library only.
 
   python3 tools/sweep/sweep.py --out sweep-lavapipe
   python3 tools/sweep/sweep.py --counts 1,4,16,64,256,1024,4096 --width 1920 --height 1080 --out sweep-gpu
+  python3 tools/sweep/sweep.py --types mixed --cameras overview,street --modes optimized --out sweep-near
 """
 import argparse
 import csv
@@ -36,6 +39,9 @@ def parse_args():
     p.add_argument("--frames", type=int, default=8, help="frames per run (the first two are not timed)")
     p.add_argument("--triangles", type=int, default=20000, help="the stress scene's triangles")
     p.add_argument("--moving", type=float, default=1.0, help="fraction of lights that move each frame")
+    p.add_argument("--cameras", default="overview",
+                   help="the stress scene's cameras, comma-separated: overview (the whole hall from above), "
+                        "street (eye height among the lights)")
     p.add_argument("--max-frame-ms", type=float, default=4000.0,
                    help="once a type and mode takes longer per frame, its larger counts are skipped")
     p.add_argument("--timeout", type=float, default=600.0, help="seconds per run")
@@ -50,6 +56,9 @@ def parse_args():
         p.error("--counts takes whole numbers separated by commas")
     args.types = args.types.split(",")
     args.modes = args.modes.split(",")
+    args.cameras = args.cameras.split(",")
+    if any(c not in ("overview", "street") for c in args.cameras):
+        p.error("--cameras takes overview, street")
     if any(t not in ("point", "spot", "mixed") for t in args.types):
         p.error("--types takes point, spot, mixed")
     if any(m not in ("optimized", "naive") for m in args.modes):
@@ -64,8 +73,8 @@ def light_options(light_type, count):
     return ["--point-lights", str(points), "--spot-lights", str(count - points)]
 
 
-def run_once(args, light_type, count, mode, stats_path):
-    command = [args.sandbox, "--headless", "--scene", "stress", "--width", str(args.width), "--height",
+def run_once(args, light_type, count, mode, camera, stats_path):
+    command = [args.sandbox, "--headless", "--scene", "stress", "--camera", camera, "--width", str(args.width), "--height",
                str(args.height), "--frames", str(args.frames), "--scene-triangles", str(args.triangles),
                "--moving-lights", str(args.moving), "--stats", stats_path, "--screenshot", ""]
     command += light_options(light_type, count) + (["--naive"] if mode == "naive" else []) + args.sandbox_args.split()
@@ -80,12 +89,13 @@ def median(summary):
     return summary["median"] if summary else None
 
 
-def row_of(stats, light_type, count, mode):
+def row_of(stats, light_type, count, mode, camera):
     passes = stats["passes"]
     shadow = sum(p["gpu_ms"]["median"] for p in passes if p["name"].startswith("shadow"))
     lighting = sum(p["gpu_ms"]["median"] for p in passes if p["name"].startswith(LIGHTING_PASSES))
-    return {"device": stats["device"], "type": light_type, "lights": count, "mode": mode,
-            "lighting_path": stats.get("lighting", ""), "gpu_frame_ms": median(stats["gpu_frame_ms"]),
+    return {"device": stats["device"], "type": light_type, "lights": count, "mode": mode, "camera": camera,
+            "lighting_path": stats.get("lighting", ""), "raster": stats["shadows"].get("raster") or "",
+            "dropped_light_pairs": stats.get("dropped_light_pairs", ""), "gpu_frame_ms": median(stats["gpu_frame_ms"]),
             "wall_frame_ms": median(stats.get("wall_frame_ms")), "cpu_frame_ms": median(stats["cpu_frame_ms"]),
             "shadow_ms": round(shadow, 4), "lighting_ms": round(lighting, 4),
             "triangles": stats["scene"]["triangles"], "width": stats["resolution"]["width"],
@@ -103,14 +113,15 @@ def plot(out_dir, rows, args):
                                 ("lighting_ms", "sweep_lighting.png", "lighting passes")):
         series = []
         for light_type in args.types:
-            for mode in args.modes:
-                points = [(r["lights"], r[column]) for r in rows
-                          if r["type"] == light_type and r["mode"] == mode and r[column]]
-                if points:
-                    data = os.path.join(out_dir, f"{light_type}_{mode}_{column}.dat")
-                    with open(data, "w") as f:
-                        f.writelines(f"{n} {ms}\n" for n, ms in points)
-                    series.append((data, f"{light_type}, {mode}"))
+            for camera in args.cameras:
+                for mode in args.modes:
+                    points = [(r["lights"], r[column]) for r in rows if r["type"] == light_type and
+                              r["mode"] == mode and r.get("camera", "overview") == camera and r[column]]
+                    if points:
+                        data = os.path.join(out_dir, f"{light_type}_{camera}_{mode}_{column}.dat")
+                        with open(data, "w") as f:
+                            f.writelines(f"{n} {ms}\n" for n, ms in points)
+                        series.append((data, f"{light_type}, {camera}, {mode}"))
         if not series:
             continue
         first = rows[0]
@@ -128,7 +139,7 @@ def plot(out_dir, rows, args):
 
 
 def read_csv(path):
-    numbers = {"lights": int, "triangles": int, "width": int, "height": int, "gpu_frame_ms": float, "wall_frame_ms": float,
+    numbers = {"lights": int, "triangles": int, "dropped_light_pairs": int, "width": int, "height": int, "gpu_frame_ms": float, "wall_frame_ms": float,
                "cpu_frame_ms": float, "shadow_ms": float, "lighting_ms": float}
     with open(path) as f:
         return [{k: (numbers[k](v) if k in numbers and v != "" else v) for k, v in row.items()}
@@ -137,16 +148,18 @@ def read_csv(path):
 
 def summarize(rows, args):
     print(f"\nGPU frame ms on {rows[0]['device']}, {rows[0]['width']}x{rows[0]['height']}:")
-    print(f"{'type':6} {'lights':>7} {'optimized':>10} {'naive':>10} {'naive/opt':>10}")
-    by_key = {(r["type"], r["lights"], r["mode"]): r["gpu_frame_ms"] for r in rows}
+    print(f"{'type':6} {'camera':8} {'lights':>7} {'optimized':>10} {'naive':>10} {'naive/opt':>10}")
+    by_key = {(r["type"], r.get("camera", "overview"), r["lights"], r["mode"]): r["gpu_frame_ms"] for r in rows}
     for light_type in args.types:
-        for count in args.counts:
-            opt, naive = by_key.get((light_type, count, "optimized")), by_key.get((light_type, count, "naive"))
-            if opt is None and naive is None:
-                continue
-            ratio = f"{naive / opt:10.1f}" if opt and naive else f"{'-':>10}"
-            show = lambda v: f"{v:10.2f}" if v is not None else f"{'-':>10}"
-            print(f"{light_type:6} {count:7} {show(opt)} {show(naive)} {ratio}")
+        for camera in args.cameras:
+            for count in args.counts:
+                opt = by_key.get((light_type, camera, count, "optimized"))
+                naive = by_key.get((light_type, camera, count, "naive"))
+                if opt is None and naive is None:
+                    continue
+                ratio = f"{naive / opt:10.1f}" if opt and naive else f"{'-':>10}"
+                show = lambda v: f"{v:10.2f}" if v is not None else f"{'-':>10}"
+                print(f"{light_type:6} {camera:8} {count:7} {show(opt)} {show(naive)} {ratio}")
 
 
 def main():
@@ -157,31 +170,33 @@ def main():
         args.counts = sorted({r["lights"] for r in rows})
         args.types = [t for t in ("point", "spot", "mixed") if any(r["type"] == t for r in rows)]
         args.modes = [m for m in ("optimized", "naive") if any(r["mode"] == m for r in rows)]
+        args.cameras = [c for c in ("overview", "street") if any(r.get("camera", "overview") == c for r in rows)]
         plot(args.out, rows, args)
         summarize(rows, args)
         return
-    runs = [(t, n, m) for t in args.types for m in args.modes for n in args.counts]
+    runs = [(t, c, n, m) for t in args.types for c in args.cameras for m in args.modes for n in args.counts]
     rows, too_slow = [], set()
     started = time.monotonic()
     with tempfile.TemporaryDirectory() as scratch:
-        for index, (light_type, count, mode) in enumerate(runs, 1):
-            label = f"[{index}/{len(runs)}] {light_type:5} {count:6} lights, {mode:9}"
-            if (light_type, mode) in too_slow:
+        for index, (light_type, camera, count, mode) in enumerate(runs, 1):
+            label = f"[{index}/{len(runs)}] {light_type:5} {camera:8} {count:6} lights, {mode:9}"
+            if (light_type, camera, mode) in too_slow:
                 print(f"{label}: skipped (a smaller count already took over {args.max_frame_ms:.0f} ms a frame)")
                 continue
             try:
-                stats = run_once(args, light_type, count, mode, os.path.join(scratch, "stats.json"))
+                stats = run_once(args, light_type, count, mode, camera, os.path.join(scratch, "stats.json"))
             except (RuntimeError, subprocess.TimeoutExpired) as error:
                 print(f"{label}: failed: {error}")
-                too_slow.add((light_type, mode))
+                too_slow.add((light_type, camera, mode))
                 continue
-            row = row_of(stats, light_type, count, mode)
+            row = row_of(stats, light_type, count, mode, camera)
             rows.append(row)
             print(f"{label}: GPU {row['gpu_frame_ms']:9.2f} ms (shadows {row['shadow_ms']:8.2f}, lighting "
-                  f"{row['lighting_ms']:8.2f}), wall {row['wall_frame_ms'] or 0:9.2f} ms  "
-                  f"[{time.monotonic() - started:.0f} s]", flush=True)
+                  f"{row['lighting_ms']:8.2f}), wall {row['wall_frame_ms'] or 0:9.2f} ms, {row['raster'] or '-'} "
+                  f"raster, {row['dropped_light_pairs']} pairs dropped  [{time.monotonic() - started:.0f} s]",
+                  flush=True)
             if row["gpu_frame_ms"] and row["gpu_frame_ms"] > args.max_frame_ms:
-                too_slow.add((light_type, mode))
+                too_slow.add((light_type, camera, mode))
     if not rows:
         sys.exit("sweep: no run succeeded")
     with open(os.path.join(args.out, "sweep.csv"), "w", newline="") as f:

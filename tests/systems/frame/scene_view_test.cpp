@@ -55,6 +55,38 @@ TEST(SceneView, UsesTheGltfCamera) {
   EXPECT_EQ(loaded.scene.name, options.scene);
 }
 
+// --camera NAME picks one of the scene's cameras: a glTF camera by its node's name, or the stress
+// scene's street camera at eye height among the lights; an unknown name lists the known ones.
+TEST(SceneView, CamerasAreChosenByName) {
+  TempDir dir;
+  FrameSettings options;
+  options.scene = write_scene(dir, true, "Overview");
+  options.camera_name = "Overview";
+  const SceneView named = load_scene_view(options, 16.0f / 9.0f);
+  EXPECT_EQ(named.camera_source, "--camera Overview");
+  expect_near(named.pose.eye, {1, 2, 3});
+  EXPECT_FLOAT_EQ(named.lens.yfov, 0.7f);
+
+  FrameSettings stress;
+  stress.scene = "stress";
+  stress.scene_params.triangles = 20'000;
+  stress.camera_name = "street";
+  const SceneView street = load_scene_view(stress, 16.0f / 9.0f);
+  EXPECT_FLOAT_EQ(street.pose.eye.y, 1.7f);
+  const glm::vec3 along = glm::normalize(street.pose.target - street.pose.eye);
+  EXPECT_GT(along.z, 0.99f) << "it looks along the hall, nearly level";
+  stress.camera_name = "overview";
+  EXPECT_EQ(load_scene_view(stress, 16.0f / 9.0f).camera_source, "--camera overview");
+
+  stress.camera_name = "balcony";
+  try {
+    load_scene_view(stress, 16.0f / 9.0f);
+    FAIL() << "an unknown camera name was accepted";
+  } catch (const scene::SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("overview, street"), std::string::npos) << error.what();
+  }
+}
+
 // A scene whose camera node has rotation `rotation` (x, y, z, w) at (0, 5, 0).
 std::string write_scene_with_camera_rotation(const TempDir& dir, const glm::quat& rotation,
                                              const char* name) {
