@@ -24,6 +24,9 @@ class SandboxFrame {
   SandboxFrame(vk::VulkanContext& context, SceneView& view, const Options& options, uint32_t frames_in_flight,
                GLFWwindow* window = nullptr);
   ~SandboxFrame();
+  // The frame's extension calls back into this object: it stays where it was made.
+  SandboxFrame(const SandboxFrame&) = delete;
+  SandboxFrame& operator=(const SandboxFrame&) = delete;
 
   Frame& frame() { return frame_; }
   const Frame& frame() const { return frame_; }

@@ -91,6 +91,11 @@ std::vector<Setting<S>> make_table() {
       number<S>(
           "moving-lights", "F", [](auto& s) -> auto& { return s.scene_params.moving_fraction; }, 0.0, 1.0,
           "stress scene: fraction of lights and crates that move each frame"),
+      number<S>(
+          "light-spread", "F", [](auto& s) -> auto& { return s.scene_params.light_spread; }, 0.01, 1.0,
+          "stress scene: the lights spread over a square of this fraction of the hall's side, in front "
+          "of the street camera (0.5: the same lights on a quarter of the floor, their reaches "
+          "overlapping)"),
       whole<S>(
           "seed", "S", [](auto& s) -> auto& { return s.scene_params.seed; }, 0, UINT64_MAX,
           "stress scene: random seed (equal seeds, equal scenes)"),

@@ -15,6 +15,10 @@ Scene build_scene(std::string_view name, const BuiltinSceneParams& params) {
     throw SceneError("built-in scene", "moving_fraction",
                      std::to_string(params.moving_fraction) + " is outside [0, 1]");
   }
+  if (!(params.light_spread > 0.0f && params.light_spread <= 1.0f)) {
+    throw SceneError("built-in scene", "light_spread",
+                     std::to_string(params.light_spread) + " is outside (0, 1]");
+  }
   Scene scene = name == "default"  ? build_default_scene()
                 : name == "stress" ? build_stress_scene(params)
                                    : throw SceneError("built-in scene", "\"" + std::string(name) + "\"",

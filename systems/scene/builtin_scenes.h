@@ -29,6 +29,10 @@ struct BuiltinSceneParams {
   std::uint32_t point_lights = 32;
   std::uint32_t spot_lights = 32;
   float moving_fraction = 0.1f;  // [0, 1] of lights and of crates
+  // (0, 1]: the side of the square the lights are spread over, as a fraction of the hall's. Below
+  // 1 the square is centred across the hall from its near edge, in front of the street camera:
+  // the same lights, their reaches overlapping more (0.5: a quarter of the floor).
+  float light_spread = 1.0f;
   std::uint64_t seed = 1;
 };
 

@@ -114,14 +114,16 @@ Scene build_stress_scene(const BuiltinSceneParams& params) {
   }
 
   Random& random = hall.random;
+  const float spread = params.light_spread * extent;  // the side of the lights' square
+  const float spread_x = (extent - spread) * 0.5f;
   const std::uint32_t light_count = params.point_lights + params.spot_lights;
   for (std::uint32_t i = 0; i < light_count; ++i) {
     ShadowSettings shadow;
     shadow.algorithm = all_shadow_algorithms[i % std::size(all_shadow_algorithms)];
     shadow.resolution = 512;
     const glm::vec3 color(random.uniform(0.7f, 1.0f), random.uniform(0.7f, 1.0f), random.uniform(0.7f, 1.0f));
-    const glm::vec3 position(random.uniform(0.0f, extent), random.uniform(2.5f, 4.5f),
-                             random.uniform(0.0f, extent));
+    const glm::vec3 position(random.uniform(spread_x, spread_x + spread), random.uniform(2.5f, 4.5f),
+                             random.uniform(0.0f, spread));
     ecs::Entity light;
     if (i < params.point_lights) {
       light = add_light(scene, PointLight{color, 1.0f, 2.5f * cell_size}, {position}, shadow,

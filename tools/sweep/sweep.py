@@ -39,6 +39,9 @@ def parse_args():
     p.add_argument("--frames", type=int, default=8, help="frames per run (the first two are not timed)")
     p.add_argument("--triangles", type=int, default=20000, help="the stress scene's triangles")
     p.add_argument("--moving", type=float, default=1.0, help="fraction of lights that move each frame")
+    p.add_argument("--light-spread", type=float, default=1.0,
+                   help="the lights' square as a fraction of the hall's side (0.5: a quarter of the floor, "
+                        "in front of the street camera: dense lights)")
     p.add_argument("--cameras", default="overview",
                    help="the stress scene's cameras, comma-separated: overview (the whole hall from above), "
                         "street (eye height among the lights)")
@@ -76,7 +79,8 @@ def light_options(light_type, count):
 def run_once(args, light_type, count, mode, camera, stats_path):
     command = [args.sandbox, "--headless", "--scene", "stress", "--camera", camera, "--width", str(args.width), "--height",
                str(args.height), "--frames", str(args.frames), "--scene-triangles", str(args.triangles),
-               "--moving-lights", str(args.moving), "--stats", stats_path, "--screenshot", ""]
+               "--moving-lights", str(args.moving), "--light-spread", str(args.light_spread), "--stats", stats_path,
+               "--screenshot", ""]
     command += light_options(light_type, count) + (["--naive"] if mode == "naive" else []) + args.sandbox_args.split()
     result = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
     if result.returncode != 0:
@@ -94,6 +98,7 @@ def row_of(stats, light_type, count, mode, camera):
     shadow = sum(p["gpu_ms"]["median"] for p in passes if p["name"].startswith("shadow"))
     lighting = sum(p["gpu_ms"]["median"] for p in passes if p["name"].startswith(LIGHTING_PASSES))
     return {"device": stats["device"], "type": light_type, "lights": count, "mode": mode, "camera": camera,
+            "light_spread": stats.get("settings", {}).get("light-spread", ""),
             "lighting_path": stats.get("lighting", ""), "raster": stats["shadows"].get("raster") or "",
             "dropped_light_pairs": stats.get("dropped_light_pairs", ""), "gpu_frame_ms": median(stats["gpu_frame_ms"]),
             "wall_frame_ms": median(stats.get("wall_frame_ms")), "cpu_frame_ms": median(stats["cpu_frame_ms"]),
