@@ -88,6 +88,7 @@ void Frame::record(const vk::FrameSlot& frame, double time_seconds,
   timed(phase_ms_.update);
   renderer_.gather(std::as_const(view_.scene.world));
   timed(phase_ms_.gather);
+  report_shadow_time();
   renderer_.prepare(frame.slot, view_.pose, view_.lens, image_.extent().width, image_.extent().height);
   if (extension_.prepare) extension_.prepare(frame.slot);
   timed(phase_ms_.prepare);
@@ -101,11 +102,32 @@ void Frame::record(const vk::FrameSlot& frame, double time_seconds,
   shadow_views_rendered_.push_back(shadows.views_rendered);
   shadow_views_cached_.push_back(shadows.views_cached);
   shadow_views_moving_only_.push_back(shadows.views_moving_only);
+  drawn_views_[frame.frame_number % drawn_views_.size()] = {frame.frame_number, shadows.views_rendered};
   dropped_light_pairs_ += renderer_.dropped_light_pairs();
   declare_passes(frame.slot, present);
   timed(phase_ms_.declare);
   execute(frame);
   timed(phase_ms_.execute);
+}
+
+void Frame::report_shadow_time() {
+  const std::optional<vk::FrameTimings>& timings = executor_.latest_timings();
+  if (!timings || timings->frame_number == reported_frame_) return;
+  reported_frame_ = timings->frame_number;
+  const DrawnViews& drawn = drawn_views_[timings->frame_number % drawn_views_.size()];
+  if (drawn.frame != timings->frame_number) return;
+  // The passes say which raster drew: "shadow raster" is the compute raster's, "shadow views"
+  // the hardware's (shadow_view_batch.h).
+  double ms = 0.0;
+  std::optional<shadows::ShadowRaster> raster;
+  for (size_t p = 0; p < timings->pass_ms.size(); ++p) {
+    const std::string& name = timings->plan->passes[p].name;
+    if (!name.starts_with("shadow ")) continue;
+    ms += timings->pass_ms[p];
+    if (name == "shadow raster") raster = shadows::ShadowRaster::compute;
+    if (name == "shadow views") raster = shadows::ShadowRaster::hardware;
+  }
+  if (raster) renderer_.measured_shadow_time(*raster, drawn.views, ms);
 }
 
 double Frame::last_cpu_ms() const {

@@ -18,6 +18,7 @@
 //   frame.resize({settings.width, settings.height});
 //   frame.record(frame.begin(ring), seconds);
 //   ring.submit();
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -120,6 +121,9 @@ class Frame {
   // Advances the animation clock by `seconds` while animation plays, then runs the systems.
   void update(double seconds);
   void declare_passes(uint32_t slot, const std::optional<PresentTarget>& present);
+  // Hands the renderer the shadow passes' GPU time of the latest timed frame, with the raster
+  // and the views it drew (the automatic raster choice learns from them).
+  void report_shadow_time();
   void execute(const vk::FrameSlot& frame);
 
   vk::VulkanContext& context_;
@@ -142,6 +146,13 @@ class Frame {
   std::vector<double> shadow_views_cached_;
   std::vector<double> shadow_views_moving_only_;
   uint64_t dropped_light_pairs_ = 0;
+  // The views the last frames drew, by frame number, until their timings come back.
+  struct DrawnViews {
+    uint64_t frame = UINT64_MAX;
+    uint32_t views = 0;
+  };
+  std::array<DrawnViews, 8> drawn_views_;
+  uint64_t reported_frame_ = UINT64_MAX;
 };
 
 }  // namespace sg

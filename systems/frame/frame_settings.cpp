@@ -119,8 +119,8 @@ std::vector<Setting<S>> make_table() {
       choice<S>(
           "shadow-raster", [](auto& s) -> auto& { return s.renderer.shadow_raster; },
           "batched views rasterized by a multi-draw indirect pass or in compute (auto: on GPUs "
-          "chosen each frame by a cost model, compute for many small views, hardware for a few "
-          "views with large tiles; the raster hardware on CPU devices)"),
+          "chosen each frame from the shadow passes' times recent frames measured with each; the "
+          "raster hardware on CPU devices)"),
       choice<S>(
           "shadow-resolution", [](auto& s) -> auto& { return s.renderer.shadow_resolution; },
           "screen: each light's map as many texels as its reach spans on screen, at most the "

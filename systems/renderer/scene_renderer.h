@@ -108,6 +108,11 @@ class SceneRenderer {
   void set_shadow_raster(shadows::ShadowRaster raster) {
     if (batch_) batch_->set_raster(raster);
   }
+  // A frame's shadow passes took `ms` on the GPU, drawing `views` views with `raster`: what the
+  // batch's automatic raster choice learns from (ShadowViewBatch::measured_raster_time).
+  void measured_shadow_time(shadows::ShadowRaster raster, uint32_t views, double ms) {
+    if (batch_) batch_->measured_raster_time(raster, views, ms);
+  }
 
   // CPU milliseconds of the last gather() and prepare(), by step: where a CPU frame goes.
   struct CpuSteps {

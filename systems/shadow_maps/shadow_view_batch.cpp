@@ -15,7 +15,7 @@ shadows::ShadowRaster resolve(shadows::ShadowRaster raster, const vk::VulkanCont
                                                                         : shadows::ShadowRaster::automatic;
 }
 
-// shadows::raster_for_views's `large_tile_texels`.
+// shadows::RasterChoice::choose's `large_tile_texels`.
 uint64_t large_tile_texels(std::span<const shadows::AtlasTile> tiles) {
   uint64_t texels = 0;
   for (const shadows::AtlasTile& tile : tiles) {
@@ -64,7 +64,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
                               uint32_t page_size, jobs::ThreadPool* pool) {
   const ShadowBatchFrame& frame = records_.lay_out(lights, scene, pool);
   if (setting_ == shadows::ShadowRaster::automatic) {
-    raster_ = shadows::raster_for_views(frame.views, large_tile_texels(frame.tiles));
+    raster_ = choice_.choose(frame.views, large_tile_texels(frame.tiles));
   }
   if (frame.first_cut_out_group < frame.caster_groups) {
     hardware_.make_cut_out_pipelines();

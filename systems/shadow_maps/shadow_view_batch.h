@@ -41,6 +41,7 @@
 #include "systems/shadow_maps/shadow_batch_records.h"
 #include "systems/shadow_maps/shadow_cull_pass.h"
 #include "systems/shadows/frame_lights.h"
+#include "systems/shadows/raster_choice.h"
 #include "systems/shadows/shadow_view_path.h"
 
 namespace sg {
@@ -50,8 +51,9 @@ class GpuTextures;
 class ShadowViewBatch {
  public:
   // `raster` automatic: the hardware on CPU devices; on GPUs, each frame's choice of
-  // shadows::raster_for_views. `static_layers`: the atlas has them (may_raster_in_compute).
-  // `textures`: the materials' (cut-out casters read their alpha), kept by reference.
+  // shadows::RasterChoice, from the times measured_raster_time reports. `static_layers`: the atlas has them
+  // (may_raster_in_compute). `textures`: the materials' (cut-out casters read their alpha), kept by
+  // reference.
   ShadowViewBatch(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures,
                   shadows::ShadowRaster raster, bool static_layers);
 
@@ -64,6 +66,11 @@ class ShadowViewBatch {
   // The raster of the frames prepared from now on. Compute or automatic (on a GPU) only on a
   // batch made with one of them, else std::logic_error.
   void set_raster(shadows::ShadowRaster raster);
+  // A frame drawn with `raster` for `views` views took `ms` of shadow passes on the GPU: what the
+  // automatic choice learns from.
+  void measured_raster_time(shadows::ShadowRaster raster, uint32_t views, double ms) {
+    choice_.measured(raster, views, ms);
+  }
 
   // After FrameRing::begin_frame returned `slot`, before prepare: false when the frame that last
   // used the slot kept more pairs than it could store, so some of its views missed casters and
@@ -97,6 +104,7 @@ class ShadowViewBatch {
   shadows::ShadowRaster setting_;  // hardware, compute, or automatic: chosen per frame
   shadows::ShadowRaster raster_;   // this frame's
   bool has_static_layers_;
+  shadows::RasterChoice choice_;
   ShadowBatchRecords records_;
   ShadowCullPass cull_;
   HardwareShadowRaster hardware_;

@@ -16,7 +16,8 @@ constexpr EnumNames<ShadowViewPath, 2> enum_names(ShadowViewPath) {
 // How the batched path rasterizes the views: with the raster hardware (one multi-draw indirect
 // pass), or in compute (shaders/shadow_raster.comp), which is faster where the hardware sets up
 // the small views' triangles slowly. automatic: on CPU devices the hardware; on GPUs chosen each
-// frame by raster_for_views (measured in docs/PERFORMANCE.md).
+// frame by RasterChoice (raster_choice.h) from measured times, raster_for_views until both
+// rasters have been measured (docs/PERFORMANCE.md).
 enum class ShadowRaster { automatic, hardware, compute };
 constexpr EnumNames<ShadowRaster, 3> enum_names(ShadowRaster) {
   return {{{ShadowRaster::automatic, "auto"},

@@ -1,0 +1,37 @@
+#include "systems/shadows/raster_choice.h"
+
+namespace sg::shadows {
+
+ShadowRaster RasterChoice::choose(uint32_t views, uint64_t large_tile_texels) {
+  ++frame_;
+  const ShadowRaster model = raster_for_views(views, large_tile_texels);
+  if (views == 0) return model;
+  for (const ShadowRaster raster :
+       {model, model == ShadowRaster::compute ? ShadowRaster::hardware : ShadowRaster::compute}) {
+    const Cost& c = cost(raster);
+    const bool stale = !c.known || views > 2 * uint64_t{c.views} || 2 * uint64_t{views} < c.views;
+    if (stale && frame_ - last_probe_ >= (c.known ? probe_gap : first_probe_gap)) {
+      last_probe_ = frame_;
+      return raster;
+    }
+  }
+  const Cost& hardware = cost(ShadowRaster::hardware);
+  const Cost& compute = cost(ShadowRaster::compute);
+  if (!hardware.known || !compute.known) return model;
+  return hardware.ms_per_view < compute.ms_per_view ? ShadowRaster::hardware : ShadowRaster::compute;
+}
+
+void RasterChoice::measured(ShadowRaster raster, uint32_t views, double ms) {
+  if (views == 0 || raster == ShadowRaster::automatic) return;
+  Cost& c = cost(raster);
+  const double per_view = ms / views;
+  // Frames of one scene vary (moving lights, the cache's choice of views): an average of recent
+  // ones, the newest weighing a quarter. A frame of twice or half the views is another scene,
+  // whose cost per view replaces the old one.
+  const bool alike = c.known && views <= 2 * uint64_t{c.views} && 2 * uint64_t{views} >= c.views;
+  c.ms_per_view = alike ? 0.75 * c.ms_per_view + 0.25 * per_view : per_view;
+  c.views = views;
+  c.known = true;
+}
+
+}  // namespace sg::shadows
