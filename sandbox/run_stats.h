@@ -16,7 +16,7 @@
 //   "cpu_frame_ms": {"median": 1.5, "min": 1.2, "max": 3.0},  // null when no frame ran; CPU
 //                                                // time per frame without waits for the GPU
 //   "cpu_phases_ms": {"update": {...}, "gather": {...}, "prepare": {...}, "declare": {...},
-//                     "execute": {...},          // the CPU frame by phase (SandboxFrame::record)
+//                     "execute": {...},          // the CPU frame by phase (Frame::record)
 //                     "gather_instances": {...}, "gather_lights": {...},  // within gather
 //                     "prepare_schedule": {...}, "prepare_upload": {...},  // within prepare
 //                     "prepare_views": {...}},

@@ -1,7 +1,7 @@
 #pragma once
 // Renders an ECS scene through the render graph: the shadow maps due this frame, the lighting
 // (lighting_path.h), then exposure and tone mapping into the frame. It takes three of the
-// frame's phases (SandboxFrame::record names all five):
+// frame's phases (Frame::record, systems/frame/frame.h, names all five):
 //
 //   renderer.gather(world);                       // read the world: drawables and lights, on the CPU
 //   renderer.prepare(slot, pose, lens, w, h);     // shadow tiles and caching, this slot's GPU buffers
