@@ -10,5 +10,6 @@ class Image;            // rendergraph/device/resources.h
 class FrameRing;        // rendergraph/device/frame_ring.h
 class Swapchain;        // rendergraph/device/swapchain.h
 class PassRecorder;     // rendergraph/vulkan/pass_recorder.h
+struct FrameTimings;    // rendergraph/vulkan/graph_executor.h
 
 }  // namespace sg::vk

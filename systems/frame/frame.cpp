@@ -116,18 +116,7 @@ void Frame::report_shadow_time() {
   reported_frame_ = timings->frame_number;
   const DrawnViews& drawn = drawn_views_[timings->frame_number % drawn_views_.size()];
   if (drawn.frame != timings->frame_number) return;
-  // The passes say which raster drew: "shadow raster" is the compute raster's, "shadow views"
-  // the hardware's (shadow_view_batch.h).
-  double ms = 0.0;
-  std::optional<shadows::ShadowRaster> raster;
-  for (size_t p = 0; p < timings->pass_ms.size(); ++p) {
-    const std::string& name = timings->plan->passes[p].name;
-    if (!name.starts_with("shadow ")) continue;
-    ms += timings->pass_ms[p];
-    if (name == "shadow raster") raster = shadows::ShadowRaster::compute;
-    if (name == "shadow views") raster = shadows::ShadowRaster::hardware;
-  }
-  if (raster) renderer_.measured_shadow_time(*raster, drawn.views, ms);
+  renderer_.measured_shadow_time(*timings, drawn.views);
 }
 
 double Frame::last_cpu_ms() const {

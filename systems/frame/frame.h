@@ -121,8 +121,8 @@ class Frame {
   // Advances the animation clock by `seconds` while animation plays, then runs the systems.
   void update(double seconds);
   void declare_passes(uint32_t slot, const std::optional<PresentTarget>& present);
-  // Hands the renderer the shadow passes' GPU time of the latest timed frame, with the raster
-  // and the views it drew (the automatic raster choice learns from them).
+  // Hands the renderer the latest timed frame's pass times with the shadow views it drew (the
+  // automatic raster choice learns from them).
   void report_shadow_time();
   void execute(const vk::FrameSlot& frame);
 

@@ -108,10 +108,10 @@ class SceneRenderer {
   void set_shadow_raster(shadows::ShadowRaster raster) {
     if (batch_) batch_->set_raster(raster);
   }
-  // A frame's shadow passes took `ms` on the GPU, drawing `views` views with `raster`: what the
-  // batch's automatic raster choice learns from (ShadowViewBatch::measured_raster_time).
-  void measured_shadow_time(shadows::ShadowRaster raster, uint32_t views, double ms) {
-    if (batch_) batch_->measured_raster_time(raster, views, ms);
+  // A timed frame's passes, which drew `views` shadow views: what the batch's automatic raster
+  // choice learns from (ShadowViewBatch::measured).
+  void measured_shadow_time(const vk::FrameTimings& timings, uint32_t views) {
+    if (batch_) batch_->measured(timings, views);
   }
 
   // CPU milliseconds of the last gather() and prepare(), by step: where a CPU frame goes.

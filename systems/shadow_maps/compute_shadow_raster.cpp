@@ -15,9 +15,7 @@ namespace sg {
 namespace {
 
 using namespace bindings;
-using shadow_batch::BatchConstants;
-constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+using namespace shadow_batch;
 
 }  // namespace
 

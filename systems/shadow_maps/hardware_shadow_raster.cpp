@@ -25,15 +25,18 @@ namespace sg {
 namespace {
 
 using namespace bindings;
-using shadow_batch::BatchConstants;
-constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+using namespace shadow_batch;
 
 VkClearRect tile_clear(const shadows::AtlasTile& tile) {
   return {{{int32_t(tile.x), int32_t(tile.y)}, {tile.size, tile.size}}, tile.page, 1};
 }
 
 }  // namespace
+
+void HardwareShadowRaster::prepare(const ShadowBatchFrame& frame) {
+  clears_.resize(frame.tiles.size());
+  std::transform(frame.tiles.begin(), frame.tiles.end(), clears_.begin(), tile_clear);
+}
 
 HardwareShadowRaster::HardwareShadowRaster(vk::VulkanContext& context, const GpuTextures& textures)
     : context_(context),
@@ -109,9 +112,6 @@ rg::ImageHandle HardwareShadowRaster::add_to(rg::RenderGraph& graph, rg::ImageHa
           vkCmdDispatchIndirect(rec.cmd(), rec.buffer(culled.draws), shadow_batch::scatter_dispatch_offset);
         });
   }
-  // The views' tiles, cleared to the far plane before the draws.
-  std::vector<VkClearRect> clears(frame.tiles.size());
-  std::transform(frame.tiles.begin(), frame.tiles.end(), clears.begin(), tile_clear);
   graph.add_pass(
       "shadow views",
       [&](rg::PassBuilder& p) {
@@ -121,10 +121,9 @@ rg::ImageHandle HardwareShadowRaster::add_to(rg::RenderGraph& graph, rg::ImageHa
         }
         atlas = p.write(atlas, rg::Usage::depth_attachment);  // kept: cached tiles stay
       },
-      [this, &scene, slot, frame, draws = culled.draws, sorted,
-       clears = std::move(clears)](const vk::PassRecorder& rec) {
+      [this, &scene, slot, frame, draws = culled.draws, sorted](const vk::PassRecorder& rec) {
         const VkClearAttachment far{VK_IMAGE_ASPECT_DEPTH_BIT, 0, {.depthStencil = {1.0f, 0}}};
-        vkCmdClearAttachments(rec.cmd(), 1, &far, static_cast<uint32_t>(clears.size()), clears.data());
+        vkCmdClearAttachments(rec.cmd(), 1, &far, static_cast<uint32_t>(clears_.size()), clears_.data());
         if (!draws.valid() || !scene.bind_geometry(rec.cmd())) return;
         rec.set_full_viewport();
         const VkDescriptorSet set =

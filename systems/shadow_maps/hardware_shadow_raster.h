@@ -9,6 +9,8 @@
 //
 // It draws every caster into every view and keeps no static layers. It needs shaderOutputLayer
 // (gl_Layer from the vertex stage, shaders/shadow_batch.vert).
+#include <vector>
+
 #include "rendergraph/core/render_graph.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/fwd.h"
@@ -29,6 +31,10 @@ class HardwareShadowRaster {
   // The cut-out casters' pipelines (shaders/shadow_cut_out.glsl), made with the first scene that
   // has such casters; later calls do nothing.
   void make_cut_out_pipelines();
+
+  // Before add_to, on a frame it draws: the clears of `frame`'s tiles, kept for the pass to record
+  // (the list's storage kept from frame to frame).
+  void prepare(const ShadowBatchFrame& frame);
 
   // Adds the passes that draw `culled` into `frame`'s tiles of `atlas` and returns the atlas's
   // newest version. Without pairs (CulledPairs{}, a frame without casters) the tiles are only
@@ -51,6 +57,7 @@ class HardwareShadowRaster {
   vk::UniquePipeline scatter_pipeline_;
   Pipelines opaque_;
   Pipelines cut_out_;
+  std::vector<VkClearRect> clears_;  // this frame's, by view: its tile cleared to the far plane
 };
 
 }  // namespace sg

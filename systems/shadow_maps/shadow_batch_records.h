@@ -29,6 +29,10 @@ namespace sg {
 
 namespace shadow_batch {
 
+// The batch's passes bind storage buffers, mostly to compute shaders: their layouts' shorthand.
+constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+
 // shaders/shadow_views.glsl's VIEW_KINDS: 2D maps and cube faces, each kind drawn by its own
 // draws.
 constexpr uint32_t view_kinds = 2;

@@ -14,8 +14,7 @@ namespace sg {
 namespace {
 
 using namespace bindings;
-constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+using namespace shadow_batch;
 
 // shaders/shadow_static_layers.glsl's LayerConstants.
 struct LayerConstants {

@@ -1,8 +1,11 @@
 #include "systems/shadow_maps/shadow_view_batch.h"
 
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "rendergraph/device/context.h"
+#include "rendergraph/vulkan/graph_executor.h"
 
 namespace sg {
 namespace {
@@ -56,6 +59,21 @@ void ShadowViewBatch::set_raster(shadows::ShadowRaster raster) {
   if (raster != shadows::ShadowRaster::automatic) raster_ = raster;
 }
 
+void ShadowViewBatch::measured(const vk::FrameTimings& timings, uint32_t views) {
+  // The passes say which raster drew: "shadow raster" is the compute raster's, "shadow views"
+  // the hardware's; every pass named "shadow ..." is shadow work.
+  double ms = 0.0;
+  std::optional<shadows::ShadowRaster> raster;
+  for (size_t p = 0; p < timings.pass_ms.size(); ++p) {
+    const std::string& name = timings.plan->passes[p].name;
+    if (!name.starts_with("shadow ")) continue;
+    ms += timings.pass_ms[p];
+    if (name == "shadow raster") raster = shadows::ShadowRaster::compute;
+    if (name == "shadow views") raster = shadows::ShadowRaster::hardware;
+  }
+  if (raster) choice_.measured(*raster, views, ms);
+}
+
 bool ShadowViewBatch::rasterizes_in_compute() const {
   return raster_ == shadows::ShadowRaster::compute && records_.frame().casters > 0;
 }
@@ -75,6 +93,7 @@ void ShadowViewBatch::prepare(uint32_t slot, const shadows::FrameLights& lights,
     compute_.place_depths(frame.tiles);
   } else {
     compute_.place_nowhere(frame.views);
+    hardware_.prepare(frame);
   }
   const bool layered = has_static_layers_ && frame.views > 0 && rasterizes_in_compute();
   records_.write(slot, lights, scene, page_size, compute_.depth_places(), layered, pool);

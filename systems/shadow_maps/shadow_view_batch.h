@@ -66,11 +66,9 @@ class ShadowViewBatch {
   // The raster of the frames prepared from now on. Compute or automatic (on a GPU) only on a
   // batch made with one of them, else std::logic_error.
   void set_raster(shadows::ShadowRaster raster);
-  // A frame drawn with `raster` for `views` views took `ms` of shadow passes on the GPU: what the
-  // automatic choice learns from.
-  void measured_raster_time(shadows::ShadowRaster raster, uint32_t views, double ms) {
-    choice_.measured(raster, views, ms);
-  }
+  // A timed frame's passes (GPU timestamps), which drew `views` views: the automatic choice
+  // learns the time of the raster that drew them.
+  void measured(const vk::FrameTimings& timings, uint32_t views);
 
   // After FrameRing::begin_frame returned `slot`, before prepare: false when the frame that last
   // used the slot kept more pairs than it could store, so some of its views missed casters and
