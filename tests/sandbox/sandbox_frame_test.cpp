@@ -17,6 +17,7 @@
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"
+#include "tests/support/frame_checks.h"
 #include "tests/support/gpu_test.h"
 
 namespace sg::test {
@@ -24,12 +25,6 @@ namespace {
 
 constexpr uint32_t width = 128;
 constexpr uint32_t height = 96;
-
-std::vector<std::string> executed_passes(const rg::CompiledPlan& plan) {
-  std::vector<std::string> names;
-  for (const rg::CompiledPass& pass : plan.passes) names.push_back(pass.name);
-  return names;
-}
 
 class SandboxFrameTest : public GpuTest {
  protected:
@@ -52,13 +47,6 @@ class SandboxFrameTest : public GpuTest {
 
   std::vector<std::string> passes;
 };
-
-int largest_difference(const vk::Rgba8Image& a, const vk::Rgba8Image& b) {
-  int largest = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i)
-    largest = std::max(largest, std::abs(int(a.pixels[i]) - int(b.pixels[i])));
-  return largest;
-}
 
 // --ui: Dear ImGui's panels drawn by the frame's own "ui" pass, headless (no input), over the
 // picture and under validation; without it the picture is untouched.

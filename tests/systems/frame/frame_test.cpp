@@ -17,6 +17,7 @@
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"
+#include "tests/support/frame_checks.h"
 #include "tests/support/gpu_test.h"
 
 namespace sg::test {
@@ -24,12 +25,6 @@ namespace {
 
 constexpr uint32_t width = 128;
 constexpr uint32_t height = 96;
-
-std::vector<std::string> executed_passes(const rg::CompiledPlan& plan) {
-  std::vector<std::string> names;
-  for (const rg::CompiledPass& pass : plan.passes) names.push_back(pass.name);
-  return names;
-}
 
 class FrameTest : public GpuTest {
  protected:
@@ -79,25 +74,6 @@ FrameSettings lit_by(LightingPath lighting) {
   FrameSettings options;
   options.renderer.lighting = lighting;
   return options;
-}
-
-int largest_difference(const vk::Rgba8Image& a, const vk::Rgba8Image& b) {
-  int largest = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i)
-    largest = std::max(largest, std::abs(int(a.pixels[i]) - int(b.pixels[i])));
-  return largest;
-}
-
-// The share of pixels whose worst channel differs by more than `levels` of 255.
-double share_differing(const vk::Rgba8Image& a, const vk::Rgba8Image& b, int levels) {
-  size_t differing = 0;
-  for (size_t i = 0; i < a.pixels.size(); i += 4) {
-    int largest = 0;
-    for (size_t c = 0; c < 3; ++c)
-      largest = std::max(largest, std::abs(int(a.pixels[i + c]) - int(b.pixels[i + c])));
-    differing += largest > levels;
-  }
-  return double(differing) / double(a.pixels.size() / 4);
 }
 
 // Deferred lighting against a forward path: the same formulas, but the G-buffer has 16-bit
