@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <exception>
+#include <type_traits>
 #include <utility>
 
 #include <CLI/CLI.hpp>
@@ -20,43 +21,26 @@ std::string range_text(const SettingInfo& info) {
   return "[" + setting_text::format(info.min) + ", " + setting_text::format(info.max) + "]";
 }
 
-// CLI11 reads unsigned integers with strtoull in base 0, so "-3" wraps around to 2^64 - 3 and
-// "010" is octal: the text is checked here as a plain decimal number in range.
-CLI::Validator whole_number(const SettingInfo& info) {
-  const uint64_t min = whole_bound(info.min);
-  const uint64_t max = whole_bound(info.max);
-  const std::string allowed = "a whole number in " + range_text(info);
+// The text of a whole or real setting, checked here rather than by CLI11: CLI11 reads unsigned
+// integers with strtoull in base 0 ("-3" wraps around to 2^64 - 3, "010" is octal), and
+// CLI::Range lets "nan" through (every comparison with NaN is false). A whole number's text is
+// rewritten in canonical form, so that CLI11's own conversion agrees.
+template <class Number>
+CLI::Validator number_in_range(const SettingInfo& info, Number min, Number max, const std::string& kind,
+                               const std::string& type_name) {
+  const std::string allowed = kind + " in " + range_text(info);
   return CLI::Validator(
       [min, max, allowed](std::string& text) -> std::string {
-        uint64_t value = 0;
+        Number value{};
         const char* end = text.data() + text.size();
         const auto [stop, error] = std::from_chars(text.data(), end, value);
-        if (text.empty() || error != std::errc{} || stop != end || value < min || value > max) {
-          return "\"" + text + "\" is not " + allowed;
-        }
-        text = std::to_string(value);
+        bool valid = !text.empty() && error == std::errc{} && stop == end && value >= min && value <= max;
+        if constexpr (std::is_floating_point_v<Number>) valid = valid && std::isfinite(value);
+        if (!valid) return "\"" + text + "\" is not " + allowed;
+        if constexpr (std::is_integral_v<Number>) text = std::to_string(value);
         return {};
       },
-      "UINT in " + range_text(info));
-}
-
-// CLI::Range lets "nan" through (every comparison with NaN is false).
-CLI::Validator real_number(const SettingInfo& info) {
-  const double min = info.min;
-  const double max = info.max;
-  const std::string allowed = "a number in " + range_text(info);
-  return CLI::Validator(
-      [min, max, allowed](std::string& text) -> std::string {
-        double value = 0.0;
-        const char* end = text.data() + text.size();
-        const auto [stop, error] = std::from_chars(text.data(), end, value);
-        if (text.empty() || error != std::errc{} || stop != end || !std::isfinite(value) || value < min ||
-            value > max) {
-          return "\"" + text + "\" is not " + allowed;
-        }
-        return {};
-      },
-      "FLOAT in " + range_text(info));
+      type_name + " in " + range_text(info));
 }
 
 }  // namespace
@@ -86,8 +70,13 @@ void add_setting(CLI::App& app, const SettingInfo& info, const std::optional<std
       option->check(CLI::IsMember(names));
       break;
     }
-    case SettingType::whole: option->transform(whole_number(info)); break;
-    case SettingType::number: option->check(real_number(info)); break;
+    case SettingType::whole:
+      option->transform(
+          number_in_range(info, whole_bound(info.min), whole_bound(info.max), "a whole number", "UINT"));
+      break;
+    case SettingType::number:
+      option->check(number_in_range(info, info.min, info.max, "a number", "FLOAT"));
+      break;
     case SettingType::text:
     case SettingType::flag: option->type_name(std::string(info.value_name)); break;
   }

@@ -46,20 +46,6 @@ std::vector<Setting<S>> make_table() {
       "the source documents' frame as a baseline: a pass per shadow view and six per cube, "
       "every map every frame, every caster in every shadow view, every light at every pixel");
   naive.info.excludes = {"lighting", "lit-sum-start", "cube-shadows", "shadow-views", "shadow-cache"};
-  Setting<S> shadow_memory{
-      {"shadow-memory",
-       "MiB",
-       "the shadow atlas's budget (0: an eighth of the GPU's memory, 64 to 2048 MiB); over it the least "
-       "important lights lose resolution, then their shadow",
-       SettingType::whole,
-       {},
-       0.0,
-       double(1u << 20)},
-      [](const S& s) { return std::optional(setting_text::format(s.renderer.shadow_memory_mib)); },
-      [](S& s, const std::string& text) {
-        s.renderer.shadow_memory_mib = setting_text::parse<uint32_t>(text);
-      }};
-
   return {
       whole<S>(
           "width", "W", [](auto& s) -> auto& { return s.width; }, 1, 16384, "output width in pixels"),
@@ -126,7 +112,10 @@ std::vector<Setting<S>> make_table() {
           "screen: each light's map as many texels as its reach spans on screen, at most the "
           "light's own resolution; requested: the light's own resolution wherever it is seen, to "
           "pin quality or measure a tile size at any distance"),
-      shadow_memory,
+      whole<S>(
+          "shadow-memory", "MiB", [](auto& s) -> auto& { return s.renderer.shadow_memory_mib; }, 0, 1u << 20,
+          "the shadow atlas's budget (0: an eighth of the GPU's memory, 64 to 2048 MiB); over it the least "
+          "important lights lose resolution, then their shadow"),
       whole<S>(
           "shadow-updates", "N", [](auto& s) -> auto& { return s.renderer.shadow_view_budget; }, 0, 1u << 24,
           "shadow views (2D maps, cube faces) redrawn per frame at most, stalest first (0: every "
