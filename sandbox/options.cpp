@@ -61,8 +61,8 @@ std::vector<Setting<O>> make_table() {
           "sandbox/depth_overlay_pass.cpp)"),
       flag<O>(
           "light-heatmap", [](auto& o) -> auto& { return o.light_heatmap; },
-          "color each 16x16 tile by the lights culling kept for it (blue few, red 32 or more, white a full "
-          "list of 256)"),
+          "color each 16x16 tile by the lights culling listed for it (blue few, red 32 or more, white 256 or "
+          "more)"),
       text<O>(
           "dump-shadow-maps", "DIR", [](auto& o) -> auto& { return o.dump_shadow_maps; },
           "after the run, write every light's shadow map as grey PNGs into DIR"),

@@ -3,9 +3,6 @@
 #ifndef SG_LIGHT_TILE_LAYOUT_GLSL
 #define SG_LIGHT_TILE_LAYOUT_GLSL
 
-const uint LIGHT_TILE_SIZE = 16u;       // pixels per tile side; one workgroup per tile
-// Beyond this a tile drops its highest-numbered lights; the culling counts what it drops
-// (LightTilesPass::take_dropped_pairs) and the renderer reports it.
-const uint MAX_LIGHTS_PER_TILE = 256u;
+const uint LIGHT_TILE_SIZE = 16u;  // pixels per tile side; one workgroup per tile
 
 #endif

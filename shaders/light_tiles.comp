@@ -17,16 +17,22 @@ shared float thread_farthest[THREADS];
 shared vec4 tile_sphere;
 shared bool has_surfaces;
 shared uint first_slot[THREADS];  // per thread: how many it found, then where its lights go
-shared uint total;
-shared uint entries[MAX_LIGHTS_PER_TILE];
-shared uint group_first[LIGHT_GROUP_COUNT];
+shared uint tile_first;   // the tile's first entry in the pool
+shared uint tile_listed;  // how many entries it has there
+shared uint group_first[LIGHT_GROUP_COUNT];  // per group, its range in the tile's list
 shared uint group_end[LIGHT_GROUP_COUNT];
+
+// Widens `group`'s range in the tile's list to hold entries [first, end).
+void widen_group(uint group, uint first, uint end) {
+  atomicMin(group_first[group], first);
+  atomicMax(group_end[group], end);
+}
 
 void main() {
   uint local = gl_LocalInvocationIndex;
   uint tile = gl_WorkGroupID.y * frame.screen.z + gl_WorkGroupID.x;
   if (local < LIGHT_GROUP_COUNT) {
-    group_first[local] = 0u;
+    group_first[local] = ~0u;
     group_end[local] = 0u;
   }
   // Each thread reduces its block, then one thread their results and the tile's bound:
@@ -54,8 +60,9 @@ void main() {
   }
   barrier();
 
-  // Lights in ordered chunks, one per thread: count, place the chunks one after another, then
-  // write in order, so the list is sorted by light index and the same every frame.
+  // Lights in ordered chunks, one per thread: count, take the tile's entries of the pool, place
+  // the chunks one after another and write in order, so the list is sorted by light index and the
+  // same every frame.
   uint light_count = has_surfaces ? frame.counts.x : 0u;
   vec4 sphere = tile_sphere;
   uint chunk = (light_count + THREADS - 1u) / THREADS;
@@ -74,28 +81,29 @@ void main() {
       first_slot[t] = sum;
       sum += count;
     }
-    total = min(sum, MAX_LIGHTS_PER_TILE);
-    count_dropped(sum, total);
+    tile_first = take_entries(sum, tile_listed);
   }
   barrier();
+  // Groups are contiguous in light order, so in the list too: each thread widens the ranges of
+  // the groups its lights fall in, once per run of one group.
   uint slot = first_slot[local];
-  for (uint i = first; i < last && slot < MAX_LIGHTS_PER_TILE; ++i) {
-    if (light_reaches_sphere(lights[i], sphere)) {
-      entries[slot] = i;
-      tile_lights[tile * MAX_LIGHTS_PER_TILE + slot] = i;
-      ++slot;
+  uint run_group = LIGHT_GROUP_COUNT;
+  uint run_first = 0u;
+  for (uint i = first; i < last && slot < tile_listed; ++i) {
+    if (!light_reaches_sphere(lights[i], sphere)) continue;
+    tile_lights[tile_first + slot] = i;
+    uint group = group_of(i);
+    if (group != run_group) {
+      if (run_group < LIGHT_GROUP_COUNT) widen_group(run_group, run_first, slot);
+      run_group = group;
+      run_first = slot;
     }
+    ++slot;
   }
-  barrier();
-
-  // Groups are contiguous in the list: find where each begins and ends.
-  for (uint j = local; j < total; j += THREADS) {
-    uint group = group_of(entries[j]);
-    if (j == 0u || group_of(entries[j - 1u]) != group) group_first[group] = j;
-    if (j + 1u == total || group_of(entries[j + 1u]) != group) group_end[group] = j + 1u;
-  }
+  if (run_group < LIGHT_GROUP_COUNT) widen_group(run_group, run_first, slot);
   barrier();
   if (local < LIGHT_GROUP_COUNT) {
-    publish_group_range(tile, local, group_first[local], group_end[local] - group_first[local]);
+    uint begin = min(group_first[local], group_end[local]);
+    publish_group_range(tile, local, tile_first + begin, group_end[local] - begin);
   }
 }

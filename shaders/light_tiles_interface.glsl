@@ -2,7 +2,8 @@
 // tile of LIGHT_TILE_SIZE pixels, it bounds the tile's visible surfaces (nearest to farthest
 // depth, background excluded) by a sphere, lists every light that reaches it in light-index
 // order, and, since the records are sorted by light group (systems/shadows/frame_lights.h),
-// finds each group's range in that list. Every tile with lights of a group is appended to that
+// finds each group's range in that list. A tile's list is as long as its lights: each tile counts
+// them first, then takes that many entries of one pool shared by all tiles (take_entries). Every tile with lights of a group is appended to that
 // group's tile list, whose length is the group's indirect dispatch (tiled_lighting.comp). Both
 // shaders write the same lists.
 // Their transparent variants (systems/lighting/transparent_pass.h) bound each tile by where transparent
@@ -25,6 +26,7 @@ layout(std430, set = 0, binding = transparent_bounds_binding) readonly buffer Tr
   vec2 transparent_bounds[];
 };
 #endif
+// The pool of every tile's list, frame.counts.y entries.
 layout(std430, set = 0, binding = tile_lights_binding) writeonly buffer TileLights { uint tile_lights[]; };
 // Per tile and group: x the first entry in tile_lights, y how many.
 layout(std430, set = 0, binding = tile_ranges_binding) writeonly buffer TileRanges { uvec2 tile_ranges[]; };
@@ -33,20 +35,29 @@ layout(std430, set = 0, binding = group_tiles_binding) writeonly buffer GroupTil
 // Per group a VkDispatchIndirectCommand (x counts the group's tiles; y = z = 1), at a 16-byte
 // stride.
 layout(std430, set = 0, binding = group_commands_binding) buffer GroupCommands { uvec4 group_commands[]; };
-// The (tile, light) pairs that did not fit MAX_LIGHTS_PER_TILE, summed over the frame's tiles
-// (zeroed by the CPU before the frame).
-layout(std430, set = 0, binding = light_tiles_feedback_binding) buffer Feedback { uint dropped_pairs; };
-
-// Counts the lights that reach a tile but did not fit its list.
-void count_dropped(uint reached, uint listed) {
-  if (reached > listed) atomicAdd(dropped_pairs, reached - listed);
-}
+// Zeroed by the CPU before the frame, read back after it (LightTilesPass::take_dropped_pairs).
+layout(std430, set = 0, binding = light_tiles_feedback_binding) buffer Feedback {
+  uint dropped_pairs;   // (tile, light) pairs that reached a tile but found no room in the pool
+  uint entries_wanted;  // the entries every tile's lights asked of the pool: what sizes it
+};
 
 layout(push_constant) uniform Constants {
   mat4 inverse_view_projection;
   uvec4 screen;  // x width, y height, z tiles across, w tiles in all
-  uvec4 counts;  // x lights
+  uvec4 counts;  // x lights, y entries in the pool (tile_lights)
 } frame;
+
+// Takes `wanted` entries of the pool for one tile's list: returns the first, and in `listed` how
+// many of them the pool holds (all of them unless it ran out this frame; the rest are counted as
+// dropped, and the CPU grows the pool for the frames after).
+uint take_entries(uint wanted, out uint listed) {
+  listed = 0u;
+  if (wanted == 0u) return 0u;
+  uint first = atomicAdd(entries_wanted, wanted);
+  listed = first >= frame.counts.y ? 0u : min(wanted, frame.counts.y - first);
+  if (listed < wanted) atomicAdd(dropped_pairs, wanted - listed);
+  return first;
+}
 
 uint group_of(uint light) {
   Light l = lights[light];
@@ -85,10 +96,10 @@ vec4 visible_sphere_of_tile(uvec2 tile_xy, float nearest, float farthest) {
   return tile_bounding_sphere(frame.inverse_view_projection, ndc_min, ndc_max, nearest, farthest);
 }
 
-// Records that `tile`'s lights of `group` are the `count` entries of its list from `first` on,
+// Records that `tile`'s lights of `group` are the `count` entries of the pool from `first` on,
 // and, when there are any, lists the tile for the group's dispatch.
 void publish_group_range(uint tile, uint group, uint first, uint count) {
-  tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(tile * MAX_LIGHTS_PER_TILE + first, count);
+  tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(first, count);
   if (count == 0u) return;
   uint k = atomicAdd(group_commands[group].x, 1u);
   group_tiles[group * frame.screen.w + k] = tile;

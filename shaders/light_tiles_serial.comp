@@ -30,22 +30,24 @@ void main() {
     group_first[g] = 0u;
     group_count[g] = 0u;
   }
-  uint first = tile * MAX_LIGHTS_PER_TILE;
-  uint count = 0u;
+  // Counts the tile's lights, takes that many entries of the pool, then lists them: testing every
+  // light twice costs less than any list of unbounded length kept in between.
+  bool surfaces = !is_background_depth(nearest);
+  vec4 sphere = surfaces ? visible_sphere_of_tile(tile_xy, nearest, farthest) : vec4(0.0);
   uint reached = 0u;
-  if (!is_background_depth(nearest)) {
-    vec4 sphere = visible_sphere_of_tile(tile_xy, nearest, farthest);
-    for (uint i = 0u; i < frame.counts.x; ++i) {
-      if (!light_reaches_sphere(lights[i], sphere)) continue;
-      ++reached;
-      if (count == MAX_LIGHTS_PER_TILE) continue;  // counted, not listed
-      tile_lights[first + count] = i;
-      uint group = group_of(i);
-      if (group_count[group] == 0u) group_first[group] = count;
-      ++group_count[group];
-      ++count;
-    }
+  for (uint i = 0u; surfaces && i < frame.counts.x; ++i) {
+    if (light_reaches_sphere(lights[i], sphere)) ++reached;
   }
-  count_dropped(reached, count);
+  uint listed;
+  uint first = take_entries(reached, listed);
+  uint count = 0u;
+  for (uint i = 0u; count < listed && i < frame.counts.x; ++i) {
+    if (!light_reaches_sphere(lights[i], sphere)) continue;
+    tile_lights[first + count] = i;
+    uint group = group_of(i);
+    if (group_count[group] == 0u) group_first[group] = first + count;
+    ++group_count[group];
+    ++count;
+  }
   for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) publish_group_range(tile, g, group_first[g], group_count[g]);
 }

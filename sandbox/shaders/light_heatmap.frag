@@ -1,8 +1,7 @@
 #version 460
 // How many lights each screen tile shades (light culling's lists, light_tiles.comp), as a color
 // over the picture: none transparent, then blue through green and yellow to red at
-// pass.full_scale lights, and white where a tile's list is full (MAX_LIGHTS_PER_TILE: lights
-// beyond it are dropped).
+// pass.full_scale lights, and white from eight times that on, where lighting a pixel costs most.
 #extension GL_GOOGLE_include_directive : require
 #include "light_record.glsl"
 #include "light_groups.glsl"
@@ -23,7 +22,7 @@ void main() {
   uint lights = 0u;
   for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) lights += ranges[first + g].y;
   if (lights == 0u) discard;
-  if (lights >= MAX_LIGHTS_PER_TILE) {
+  if (float(lights) >= 8.0 * pass.full_scale) {
     out_color = vec4(1.0, 1.0, 1.0, 0.6);
     return;
   }

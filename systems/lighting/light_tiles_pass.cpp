@@ -27,8 +27,23 @@ constexpr VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
 struct CullConstants {
   glm::mat4 inverse_view_projection;
   glm::uvec4 screen;  // width, height, tiles across, tiles in all
-  glm::uvec4 counts;  // lights
+  glm::uvec4 counts;  // lights, entries in the pool
 };
+
+// light_tiles_interface.glsl's Feedback.
+struct Feedback {
+  uint32_t dropped_pairs = 0;
+  uint32_t entries_wanted = 0;
+};
+
+// The most entries the pool may hold: what one storage buffer binding reaches, and at most 1 GiB
+// (a quarter of a billion (tile, light) pairs; 1,024 lights in every tile of a 3840x2160 frame
+// take 127 MiB).
+uint64_t device_pool_entries(const vk::VulkanContext& context) {
+  const uint64_t bytes =
+      std::min<uint64_t>(context.properties().limits.maxStorageBufferRange, uint64_t{1} << 30);
+  return bytes / sizeof(uint32_t);
+}
 
 // Every group's dispatch starts at zero workgroups (the culling counts them) of height and depth 1.
 std::array<glm::uvec4, light_group_count> empty_commands() {
@@ -73,6 +88,8 @@ std::vector<VkDescriptorSetLayoutBinding> culling_bindings(bool transparent_boun
   return bindings;
 }
 
+constexpr Feedback no_feedback{};
+
 }  // namespace
 
 LightTileGrid LightTileGrid::of(uint32_t width, uint32_t height) {
@@ -80,9 +97,6 @@ LightTileGrid LightTileGrid::of(uint32_t width, uint32_t height) {
           (height + tiles::LIGHT_TILE_SIZE - 1) / tiles::LIGHT_TILE_SIZE};
 }
 
-uint64_t LightTilesPass::lights_bytes(LightTileGrid grid) {
-  return uint64_t{grid.count()} * tiles::MAX_LIGHTS_PER_TILE * sizeof(uint32_t);
-}
 uint64_t LightTilesPass::ranges_bytes(LightTileGrid grid) {
   return uint64_t{grid.count()} * light_group_count * sizeof(glm::uvec2);
 }
@@ -93,25 +107,25 @@ uint64_t LightTilesPass::commands_bytes() { return light_group_count * sizeof(gl
 uint64_t LightTilesPass::dispatch_offset(uint32_t group) { return group * sizeof(glm::uvec4); }
 
 LightTilesPass::LightTilesPass(vk::VulkanContext& context, uint32_t frames_in_flight, LightCullingShape shape,
-                               bool transparent_bounds)
+                               bool transparent_bounds, uint64_t most_pool_entries)
     : shape_(resolve(shape, context)),
       transparent_bounds_(transparent_bounds),
       feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light tiles feedback"),
+      pool_(most_pool_entries > 0 ? most_pool_entries : device_pool_entries(context)),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       layout_(context.device(), culling_bindings(transparent_bounds),
               vk::push_constants<CullConstants>(compute)),
       pipeline_(culling_pipeline(context, shape_, transparent_bounds, layout_.get())) {
-  // The slots' buffers start with whatever their memory held: nothing dropped yet.
-  for (uint32_t slot = 0; slot < frames_in_flight; ++slot) take_dropped_pairs(slot);
+  // The slots' buffers start with whatever their memory held: nothing culled yet.
+  for (uint32_t slot = 0; slot < frames_in_flight; ++slot) feedback_.write(slot, std::span(&no_feedback, 1));
 }
 
 uint64_t LightTilesPass::take_dropped_pairs(uint32_t slot) {
-  uint32_t dropped = 0;
-  const vk::Buffer& buffer = feedback_.buffer(slot);
-  if (buffer.size() >= sizeof(dropped)) std::memcpy(&dropped, buffer.mapped(), sizeof(dropped));
-  const uint32_t zero = 0;
-  feedback_.write(slot, std::span<const uint32_t>(&zero, 1));
-  return dropped;
+  Feedback feedback;
+  std::memcpy(&feedback, feedback_.buffer(slot).mapped(), sizeof(feedback));
+  feedback_.write(slot, std::span(&no_feedback, 1));
+  pool_.asked(feedback.entries_wanted);
+  return feedback.dropped_pairs;
 }
 
 LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, uint32_t slot, rg::ImageHandle depth,
@@ -125,6 +139,9 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, uint32_t slot, rg::Ima
   }
   const rg::ImageDesc& screen = graph.resources()[depth.index].image;
   const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
+  const uint64_t pool_entries = outputs
+                                    ? graph.resources()[outputs->lights.index].buffer.size / sizeof(uint32_t)
+                                    : pool_.entries(grid.count(), light_count);
   const rg::BufferHandle reset_commands = [&] {
     rg::BufferHandle commands;
     graph.add_pass(
@@ -149,13 +166,14 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, uint32_t slot, rg::Ima
         const auto output = [&](const rg::BufferHandle* given, const char* name, uint64_t bytes) {
           return b.write(given ? *given : b.create_buffer(name, {bytes}), rg::Usage::storage_compute);
         };
-        out.lights = output(outputs ? &outputs->lights : nullptr, "tile lights", lights_bytes(grid));
+        out.lights =
+            output(outputs ? &outputs->lights : nullptr, "tile lights", pool_entries * sizeof(uint32_t));
         out.ranges = output(outputs ? &outputs->ranges : nullptr, "tile ranges", ranges_bytes(grid));
         out.tiles = output(outputs ? &outputs->tiles : nullptr, "group tiles", tiles_bytes(grid));
         out.commands = b.write(reset_commands, rg::Usage::storage_compute);
         return out;
       },
-      [this, slot, depth, transparent_bounds, grid, &lights, light_count, screen,
+      [this, slot, depth, transparent_bounds, grid, &lights, light_count, screen, pool_entries,
        inverse = glm::inverse(view_projection)](const LightTiles& written, const vk::PassRecorder& rec) {
         vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
         writer.buffer(lights_binding, lights.handle())
@@ -171,7 +189,7 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, uint32_t slot, rg::Ima
         layout_.bind_compute(rec.cmd(), set);
         layout_.push(rec.cmd(), CullConstants{inverse,
                                               {screen.width, screen.height, grid.across, grid.count()},
-                                              {light_count, 0u, 0u, 0u}});
+                                              {light_count, uint32_t(pool_entries), 0u, 0u}});
         if (shape_ == LightCullingShape::thread_per_tile) {
           vkCmdDispatch(rec.cmd(), (grid.count() + 7) / 8, 1, 1);  // light_tiles_serial.comp: 8 tiles a group
         } else {

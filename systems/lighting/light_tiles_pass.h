@@ -11,6 +11,7 @@
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
+#include "systems/lighting/light_list_pool.h"
 
 namespace sg {
 
@@ -21,7 +22,7 @@ using uint = std::uint32_t;
 
 // The culling's outputs, laid out as shaders/light_tiles.comp documents.
 struct LightTiles {
-  rg::BufferHandle lights;  // per tile, MAX_LIGHTS_PER_TILE light indices
+  rg::BufferHandle lights;  // the pool of every tile's list of light indices (LightListPool)
   rg::BufferHandle ranges;  // per tile and group: first entry, count
   rg::BufferHandle tiles;   // per group, the tiles that have its lights
   // Per group a VkDispatchIndirectCommand (a workgroup per tile), at a 16-byte stride.
@@ -44,13 +45,15 @@ enum class LightCullingShape { automatic, workgroup_per_tile, thread_per_tile };
 class LightTilesPass {
  public:
   // With `transparent_bounds`, tiles are bounded by where transparent surfaces may lie as well
-  // (add_to's `transparent_bounds`, TransparentPass).
+  // (add_to's `transparent_bounds`, TransparentPass). The lists' pool holds at most
+  // `most_pool_entries` entries (0: what one storage buffer reaches, up to 1 GiB).
   LightTilesPass(vk::VulkanContext& context, uint32_t frames_in_flight,
-                 LightCullingShape shape = LightCullingShape::automatic, bool transparent_bounds = false);
+                 LightCullingShape shape = LightCullingShape::automatic, bool transparent_bounds = false,
+                 uint64_t most_pool_entries = 0);
   LightCullingShape shape() const { return shape_; }
 
-  // Bytes of each output for `grid`, for callers that provide their own buffers.
-  static uint64_t lights_bytes(LightTileGrid grid);
+  // Bytes of each output for `grid`, for callers that provide their own buffers (whose `lights`
+  // may hold any number of entries, 4 bytes each).
   static uint64_t ranges_bytes(LightTileGrid grid);
   static uint64_t tiles_bytes(LightTileGrid grid);
   static uint64_t commands_bytes();
@@ -62,21 +65,28 @@ class LightTilesPass {
   // transparent bounds against `transparent_bounds` too (transparent_tile_bounds, a vec2 a tile).
   // Writes into `outputs` when given (imported buffers of the sizes above), else into new
   // transients; returns the outputs' new versions. `lights` and `transparent_bounds` must live
-  // until the frame is recorded. The slot's count of dropped pairs (take_dropped_pairs) grows.
+  // until the frame is recorded. The lists' pool holds as many entries as LightListPool sizes, or
+  // as the given `outputs->lights` holds.
   LightTiles add_to(rg::RenderGraph& graph, uint32_t slot, rg::ImageHandle depth, const vk::Buffer& lights,
                     uint32_t light_count, const glm::mat4& view_projection,
                     const LightTiles* outputs = nullptr,
                     const vk::Buffer* transparent_bounds = nullptr) const;
 
   // After FrameRing::begin_frame returned `slot`, before add_to: the (tile, light) pairs the frame
-  // that last used the slot could not list (more than MAX_LIGHTS_PER_TILE lights reached a
-  // tile), and zero for this frame.
+  // that last used the slot could not list (its pool ran out), zeroed for this frame. What that
+  // frame's lists asked of the pool sizes the pool of the frames after.
   uint64_t take_dropped_pairs(uint32_t slot);
+  // The entries of the pool of the next frame culling `light_count` lights over `grid`.
+  uint64_t pool_entries(LightTileGrid grid, uint32_t light_count) const {
+    return pool_.entries(grid.count(), light_count);
+  }
 
  private:
   LightCullingShape shape_;
   bool transparent_bounds_;
-  vk::FrameBuffers feedback_;  // per slot: the dropped pairs
+  // Per slot, as light_tiles_interface.glsl's Feedback: the dropped pairs, the entries wanted.
+  vk::FrameBuffers feedback_;
+  LightListPool pool_;
   vk::UniqueSampler nearest_;
   vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;

@@ -176,9 +176,9 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   dropped_light_pairs_ = take_dropped_light_pairs(slot);
   if (dropped_light_pairs_ > 0 && frames_since_drop_message_ >= 300) {
     std::printf(
-        "shadowgraph: %llu (tile, light) pairs left out of full light lists (more than %u lights reach a "
-        "tile); those lights are missing there\n",
-        static_cast<unsigned long long>(dropped_light_pairs_), tiles::MAX_LIGHTS_PER_TILE);
+        "shadowgraph: %llu (tile, light) pairs found no room in the light lists' pool, which grows for the "
+        "frames after; those lights are missing there in this frame\n",
+        static_cast<unsigned long long>(dropped_light_pairs_));
     frames_since_drop_message_ = 0;
   }
   ++frames_since_drop_message_;

@@ -131,8 +131,12 @@ class LightTilesTest : public GpuTest {
     std::vector<glm::uvec4> commands;
     uint64_t dropped = 0;  // LightTilesPass::take_dropped_pairs
   };
-  Culled cull(const shadows::FrameLights& lights, LightCullingShape shape, const std::vector<float>& depth,
-              const glm::mat4& view_projection);
+  // Cullings of `lights` against `depth` on the device, `frames` one after another by one pass
+  // whose pool holds at most `most_pool_entries` (0: the device's limit), each frame's pool as
+  // the pass sizes it (LightTilesPass::pool_entries), read back.
+  std::vector<Culled> cull(const shadows::FrameLights& lights, LightCullingShape shape,
+                           const std::vector<float>& depth, const glm::mat4& view_projection,
+                           uint32_t frames = 1, uint64_t most_pool_entries = 0);
   void expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape);
 };
 
@@ -145,46 +149,99 @@ TEST_F(LightTilesTest, ListsOfAnInvocationPerTileMatchABruteForceCpuAssignment) 
   expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::thread_per_tile);
 }
 
-// 300 point lights that reach everything on screen: every tile with a surface lists 256 of them
-// and counts the 44 it leaves out, in both shapes of the culling.
-TEST_F(LightTilesTest, AFullTileCountsTheLightsItLeavesOut) {
-  scene::Scene scene;
-  for (int i = 0; i < 300; ++i) {
-    scene::PointLight point;
-    point.range = 100.0f;
-    scene::add_light(scene, point, {{0.0f, 0.0f, -10.0f - 0.01f * i}}, scene::ShadowSettings{}, "crowd");
+// 300 point lights that reach everything on screen: how many (tile, light) pairs that asks of the
+// pool, and each tile's lists as one list.
+class CrowdTest : public LightTilesTest {
+ protected:
+  CrowdTest() {
+    scene::Scene scene;
+    for (int i = 0; i < 300; ++i) {
+      scene::PointLight point;
+      point.range = 100.0f;
+      scene::add_light(scene, point, {{0.0f, 0.0f, -10.0f - 0.01f * i}}, scene::ShadowSettings{}, "crowd");
+    }
+    ecs::update_world_transforms(scene.world, 0);
+    shadows::gather_lights(scene.world, {glm::vec3(-20.0f), glm::vec3(20.0f)}, {false}, lights);
+    shadows::sort_by_group(lights);
+    view_projection = projection_matrix(scene::Camera{}, float(width) / float(height)) *
+                      view_matrix({{0, 0, 0}, {0, 0, -1}});
+    depth = scene_depth(view_projection);
+    for (uint32_t tile = 0; tile < grid.count(); ++tile) {
+      const uint32_t x0 = tile % grid.across * tiles::LIGHT_TILE_SIZE,
+                     y0 = tile / grid.across * tiles::LIGHT_TILE_SIZE;
+      bool surface = false;
+      for (uint32_t y = y0; y < std::min(y0 + tiles::LIGHT_TILE_SIZE, height); ++y) {
+        for (uint32_t x = x0; x < std::min(x0 + tiles::LIGHT_TILE_SIZE, width); ++x) {
+          surface = surface || depth[y * width + x] != camera_far_depth;
+        }
+      }
+      tiles_with_surfaces += surface;
+    }
   }
-  ecs::update_world_transforms(scene.world, 0);
-  shadows::FrameLights lights;
-  shadows::gather_lights(scene.world, {glm::vec3(-20.0f), glm::vec3(20.0f)}, {false}, lights);
-  shadows::sort_by_group(lights);
-  const glm::mat4 view_projection =
-      projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
-  const std::vector<float> depth = scene_depth(view_projection);
-  const LightTileGrid grid = LightTileGrid::of(width, height);
-  uint64_t tiles_with_surfaces = 0;
-  for (uint32_t tile = 0; tile < grid.count(); ++tile) {
-    const uint32_t x0 = tile % grid.across * tiles::LIGHT_TILE_SIZE,
-                   y0 = tile / grid.across * tiles::LIGHT_TILE_SIZE;
-    bool surface = false;
-    for (uint32_t y = y0; y < std::min(y0 + tiles::LIGHT_TILE_SIZE, height); ++y) {
-      for (uint32_t x = x0; x < std::min(x0 + tiles::LIGHT_TILE_SIZE, width); ++x) {
-        surface = surface || depth[y * width + x] != camera_far_depth;
+
+  std::vector<std::vector<uint32_t>> listed_per_tile(const Culled& culled) const {
+    std::vector<std::vector<uint32_t>> listed(grid.count());
+    for (uint32_t tile = 0; tile < grid.count(); ++tile) {
+      for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+        const glm::uvec2 range = culled.ranges[tile * shadows::light_group_count + group];
+        listed[tile].insert(listed[tile].end(), culled.entries.begin() + range.x,
+                            culled.entries.begin() + range.x + range.y);
       }
     }
-    tiles_with_surfaces += surface;
+    return listed;
   }
+
+  const LightTileGrid grid = LightTileGrid::of(width, height);
+  shadows::FrameLights lights;
+  glm::mat4 view_projection{1.0f};
+  std::vector<float> depth;
+  uint64_t tiles_with_surfaces = 0;
+};
+
+// No limit per tile: every tile lists all 300, in order, in both shapes of the culling.
+TEST_F(CrowdTest, EveryLightThatReachesATileIsListed) {
   ASSERT_GT(tiles_with_surfaces, 0u);
   for (const LightCullingShape shape :
        {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
-    const Culled culled = cull(lights, shape, depth, view_projection);
-    EXPECT_EQ(culled.dropped, tiles_with_surfaces * (300 - tiles::MAX_LIGHTS_PER_TILE));
+    const Culled culled = cull(lights, shape, depth, view_projection).front();
+    EXPECT_EQ(culled.dropped, 0u);
+    uint64_t full_tiles = 0;
+    for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
+      if (tile.empty()) continue;
+      ASSERT_EQ(tile.size(), 300u);
+      for (uint32_t j = 0; j < tile.size(); ++j) EXPECT_EQ(tile[j], j);
+      ++full_tiles;
+    }
+    EXPECT_EQ(full_tiles, tiles_with_surfaces);
   }
 }
 
-LightTilesTest::Culled LightTilesTest::cull(const shadows::FrameLights& lights, LightCullingShape shape,
-                                            const std::vector<float>& depth,
-                                            const glm::mat4& view_projection) {
+// A pool at the device's limit, smaller than the lists: every frame lists what fits, each tile
+// the start of its list, and counts the rest, in both shapes of the culling.
+TEST_F(CrowdTest, APoolAtItsLimitListsWhatFitsAndCountsTheRest) {
+  const uint64_t wanted = tiles_with_surfaces * 300;
+  constexpr uint64_t limit = 20000;
+  ASSERT_GT(wanted, limit);
+  for (const LightCullingShape shape :
+       {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
+    for (const Culled& culled : cull(lights, shape, depth, view_projection, 2, limit)) {
+      ASSERT_EQ(culled.entries.size(), limit);
+      EXPECT_EQ(culled.dropped, wanted - limit);
+      uint64_t listed = 0;
+      for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
+        for (uint32_t j = 0; j < tile.size(); ++j) EXPECT_EQ(tile[j], j);
+        listed += tile.size();
+      }
+      EXPECT_EQ(listed, limit);
+    }
+  }
+}
+
+std::vector<LightTilesTest::Culled> LightTilesTest::cull(const shadows::FrameLights& lights,
+                                                         LightCullingShape shape,
+                                                         const std::vector<float>& depth,
+                                                         const glm::mat4& view_projection, uint32_t frames,
+                                                         uint64_t most_pool_entries) {
   const LightTileGrid grid = LightTileGrid::of(width, height);
   vk::Image depth_image(context, {{width, height},
                                   VK_FORMAT_D32_SFLOAT,
@@ -199,44 +256,50 @@ LightTilesTest::Culled LightTilesTest::cull(const shadows::FrameLights& lights, 
   vk::UploadBatch upload(context);
   upload.copy_to_image(depth_image, 1, std::as_bytes(std::span<const float>(depth)));
   upload.submit();
-  const vk::Buffer tile_lights = readable(context, LightTilesPass::lights_bytes(grid), 0);
-  const vk::Buffer tile_ranges = readable(context, LightTilesPass::ranges_bytes(grid), 0);
-  const vk::Buffer group_tiles = readable(context, LightTilesPass::tiles_bytes(grid), 0);
-  const vk::Buffer group_commands =
-      readable(context, LightTilesPass::commands_bytes(), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
-
-  rg::RenderGraph graph;
-  const rg::ResourceState sampled{rg::PipelineStage::all_commands, rg::Access::shader_sampled_read,
-                                  rg::ImageLayout::read_only_optimal};
-  const rg::ResourceState host_read{rg::PipelineStage::host, rg::Access::host_read,
-                                    rg::ImageLayout::undefined};
-  vk::ImportedResources imports;
-  const rg::ImageHandle depth_handle =
-      graph.import_image("depth", {width, height, rg::Format::d32_sfloat}, sampled, sampled);
-  imports.bind(depth_handle, depth_image);
-  const auto import = [&](const char* name, const vk::Buffer& buffer) {
-    const rg::BufferHandle handle =
-        graph.import_buffer(name, {buffer.size()}, rg::ResourceState{}, host_read);
-    imports.bind(handle, buffer);
-    return handle;
-  };
-  const LightTiles outputs{import("tile lights", tile_lights), import("tile ranges", tile_ranges),
-                           import("group tiles", group_tiles), import("commands", group_commands)};
-  vk::FrameRing frames(context);
-  LightTilesPass pass(context, frames.frames_in_flight(), shape);
+  vk::FrameRing ring(context);
+  LightTilesPass pass(context, ring.frames_in_flight(), shape, false, most_pool_entries);
   EXPECT_EQ(pass.shape(), shape);
-  vk::FrameSlot& frame = frames.begin_frame();
-  EXPECT_EQ(pass.take_dropped_pairs(frame.slot), 0u) << "nothing culled in this slot yet";
-  pass.add_to(graph, frame.slot, depth_handle, records, uint32_t(lights.records.size()), view_projection,
-              &outputs);
-  const rg::CompileResult compiled = rg::compile(graph);
-  EXPECT_TRUE(compiled.ok());
-  vk::GraphExecutor executor(context, frames.frames_in_flight());
-  executor.execute(frame.cmd, frame.slot, frame.frame_number, graph, compiled.plan, imports);
-  frames.submit();
-  frames.wait_idle();
-  return {contents<uint32_t>(tile_lights), contents<glm::uvec2>(tile_ranges), contents<uint32_t>(group_tiles),
-          contents<glm::uvec4>(group_commands), pass.take_dropped_pairs(frame.slot)};
+  const uint32_t light_count = uint32_t(lights.records.size());
+  std::vector<Culled> culled;
+  for (uint32_t f = 0; f < frames; ++f) {
+    const vk::Buffer tile_lights =
+        readable(context, pass.pool_entries(grid, light_count) * sizeof(uint32_t), 0);
+    const vk::Buffer tile_ranges = readable(context, LightTilesPass::ranges_bytes(grid), 0);
+    const vk::Buffer group_tiles = readable(context, LightTilesPass::tiles_bytes(grid), 0);
+    const vk::Buffer group_commands =
+        readable(context, LightTilesPass::commands_bytes(), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+
+    rg::RenderGraph graph;
+    const rg::ResourceState sampled{rg::PipelineStage::all_commands, rg::Access::shader_sampled_read,
+                                    rg::ImageLayout::read_only_optimal};
+    const rg::ResourceState host_read{rg::PipelineStage::host, rg::Access::host_read,
+                                      rg::ImageLayout::undefined};
+    vk::ImportedResources imports;
+    const rg::ImageHandle depth_handle =
+        graph.import_image("depth", {width, height, rg::Format::d32_sfloat}, sampled, sampled);
+    imports.bind(depth_handle, depth_image);
+    const auto import = [&](const char* name, const vk::Buffer& buffer) {
+      const rg::BufferHandle handle =
+          graph.import_buffer(name, {buffer.size()}, rg::ResourceState{}, host_read);
+      imports.bind(handle, buffer);
+      return handle;
+    };
+    const LightTiles outputs{import("tile lights", tile_lights), import("tile ranges", tile_ranges),
+                             import("group tiles", group_tiles), import("commands", group_commands)};
+    vk::FrameSlot& frame = ring.begin_frame();
+    EXPECT_EQ(pass.take_dropped_pairs(frame.slot), 0u) << "every frame before was read back";
+    pass.add_to(graph, frame.slot, depth_handle, records, light_count, view_projection, &outputs);
+    const rg::CompileResult compiled = rg::compile(graph);
+    EXPECT_TRUE(compiled.ok());
+    vk::GraphExecutor executor(context, ring.frames_in_flight());
+    executor.execute(frame.cmd, frame.slot, frame.frame_number, graph, compiled.plan, imports);
+    ring.submit();
+    ring.wait_idle();
+    culled.push_back({contents<uint32_t>(tile_lights), contents<glm::uvec2>(tile_ranges),
+                      contents<uint32_t>(group_tiles), contents<glm::uvec4>(group_commands),
+                      pass.take_dropped_pairs(frame.slot)});
+  }
+  return culled;
 }
 
 void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape) {
@@ -245,8 +308,8 @@ void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullin
       projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
   const std::vector<float> depth = scene_depth(view_projection);
   const LightTileGrid grid = LightTileGrid::of(width, height);
-  const Culled culled = cull(lights, shape, depth, view_projection);
-  EXPECT_EQ(culled.dropped, 0u) << "no tile is full";
+  const Culled culled = cull(lights, shape, depth, view_projection).front();
+  EXPECT_EQ(culled.dropped, 0u) << "the pool holds every list";
   const std::vector<uint32_t>& entries = culled.entries;
   const std::vector<glm::uvec2>& ranges = culled.ranges;
   const std::vector<uint32_t>& tiles_of_group = culled.tiles_of_group;
@@ -280,6 +343,12 @@ void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullin
     EXPECT_TRUE(std::includes(cpu.may.begin(), cpu.may.end(), gpu.begin(), gpu.end())) << "tile " << tile;
     listed += gpu.size();
     undecided += cpu.may.size() - cpu.must.size();
+  }
+  // No two lists, of two tiles or two groups, share an entry of the pool.
+  std::vector<uint8_t> taken(entries.size(), 0);
+  for (const glm::uvec2& range : ranges) {
+    ASSERT_LE(uint64_t{range.x} + range.y, entries.size());
+    for (uint32_t j = range.x; j < range.x + range.y; ++j) EXPECT_EQ(taken[j]++, 0) << "entry " << j;
   }
   // Every light that reaches a visible pixel is in that pixel's tile.
   const glm::mat4 inverse = glm::inverse(view_projection);
