@@ -51,6 +51,11 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
     }
   }
   if (reach <= 0.0) return vec3(0.0);
+  // Facing away from the light, a surface takes nothing from it but shadow color where shadowed:
+  // without shadow color no shadow changes the sum, and the shadow lookup, most of a light's cost
+  // when many overlap, is skipped.
+  vec3 shadow_color = lambda * light.shadow_color_density.rgb;
+  if (dot(p.normal, to_light) <= 0.0 && shadow_color == vec3(0.0)) return vec3(0.0);
 
   float shade =
       light_shadow_as(light, world_pos, p.normal, dot(p.normal, to_light), shadow_kind, algorithm, p.pixel);
@@ -58,8 +63,7 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
     return vec3((1.0 - shade) * light.color_intensity.a * reach * max(dot(p.normal, to_light), 0.0));
   }
   vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * reach;
-  return blinn_light(p, to_light, radiance, shade, light.shadow_color_density.a,
-                     lambda * light.shadow_color_density.rgb);
+  return blinn_light(p, to_light, radiance, shade, light.shadow_color_density.a, shadow_color);
 }
 
 vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
