@@ -111,7 +111,7 @@ class SceneRenderer {
   // A timed frame's passes, which drew `views` shadow views: what the batch's automatic raster
   // choice learns from (ShadowViewBatch::measured).
   void measured_shadow_time(const vk::FrameTimings& timings, uint32_t views) {
-    if (batch_) batch_->measured(timings, views);
+    if (batch_) batch_->measured(shadow_pass_times(timings), views);
   }
 
   // CPU milliseconds of the last gather() and prepare(), by step: where a CPU frame goes.

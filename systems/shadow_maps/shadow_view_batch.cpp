@@ -1,11 +1,8 @@
 #include "systems/shadow_maps/shadow_view_batch.h"
 
-#include <optional>
 #include <stdexcept>
-#include <string>
 
 #include "rendergraph/device/context.h"
-#include "rendergraph/vulkan/graph_executor.h"
 
 namespace sg {
 namespace {
@@ -59,19 +56,8 @@ void ShadowViewBatch::set_raster(shadows::ShadowRaster raster) {
   if (raster != shadows::ShadowRaster::automatic) raster_ = raster;
 }
 
-void ShadowViewBatch::measured(const vk::FrameTimings& timings, uint32_t views) {
-  // The passes say which raster drew: "shadow raster" is the compute raster's, "shadow views"
-  // the hardware's; every pass named "shadow ..." is shadow work.
-  double ms = 0.0;
-  std::optional<shadows::ShadowRaster> raster;
-  for (size_t p = 0; p < timings.pass_ms.size(); ++p) {
-    const std::string& name = timings.plan->passes[p].name;
-    if (!name.starts_with("shadow ")) continue;
-    ms += timings.pass_ms[p];
-    if (name == "shadow raster") raster = shadows::ShadowRaster::compute;
-    if (name == "shadow views") raster = shadows::ShadowRaster::hardware;
-  }
-  if (raster) choice_.measured(*raster, views, ms);
+void ShadowViewBatch::measured(const ShadowPassTimes& times, uint32_t views) {
+  if (times.raster) choice_.measured(*times.raster, views, times.ms);
 }
 
 bool ShadowViewBatch::rasterizes_in_compute() const {

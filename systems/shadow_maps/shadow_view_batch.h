@@ -40,6 +40,7 @@
 #include "systems/shadow_maps/hardware_shadow_raster.h"
 #include "systems/shadow_maps/shadow_batch_records.h"
 #include "systems/shadow_maps/shadow_cull_pass.h"
+#include "systems/shadow_maps/shadow_pass_times.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/raster_choice.h"
 #include "systems/shadows/shadow_view_path.h"
@@ -66,9 +67,9 @@ class ShadowViewBatch {
   // The raster of the frames prepared from now on. Compute or automatic (on a GPU) only on a
   // batch made with one of them, else std::logic_error.
   void set_raster(shadows::ShadowRaster raster);
-  // A timed frame's passes (GPU timestamps), which drew `views` views: the automatic choice
-  // learns the time of the raster that drew them.
-  void measured(const vk::FrameTimings& timings, uint32_t views);
+  // A timed frame's shadow passes (shadow_pass_times), which drew `views` views: the automatic
+  // choice learns the time of the raster that drew them.
+  void measured(const ShadowPassTimes& times, uint32_t views);
 
   // After FrameRing::begin_frame returned `slot`, before prepare: false when the frame that last
   // used the slot kept more pairs than it could store, so some of its views missed casters and
