@@ -52,28 +52,42 @@ uint32_t ShadowAtlasPlanner::tier_of(uint32_t resolution) const {
   return uint32_t(std::countr_zero(config_.page_size / resolution));
 }
 
-uint32_t ShadowAtlasPlanner::wanted_resolution(const ShadowRequest& request, uint32_t previous) const {
+ShadowAtlasPlanner::Wanted ShadowAtlasPlanner::wanted_resolution(const ShadowRequest& request,
+                                                                 uint32_t previous_full,
+                                                                 std::optional<float> previous_held,
+                                                                 float lowered_tiers) const {
   uint32_t cap = request.cube ? config_.page_size / 4 : config_.page_size;
-  if (cap < config_.min_resolution) return 0;  // six faces of the smallest tile do not fit a page
+  if (cap < config_.min_resolution) return {};  // six faces of the smallest tile do not fit a page
   if (request.max_resolution != 0) {
     cap = std::clamp(std::bit_floor(request.max_resolution), config_.min_resolution, cap);
   }
-  if (request.pinned) return cap;
+  if (request.pinned) return {cap, cap, false, 0.0f};
   // NaN, negative and tiny importances want the smallest tile, infinite ones the largest.
   const float importance = std::clamp(request.importance > 1.0f ? request.importance : 1.0f, 1.0f, 0x1p31f);
   const float tiers = std::log2(importance);
-  if (previous >= config_.min_resolution && previous <= cap &&
-      std::abs(tiers - float(std::countr_zero(previous))) <= hysteresis_tiers) {
-    return previous;
+  uint32_t full = std::clamp(1u << uint32_t(std::round(tiers)), config_.min_resolution, cap);
+  if (previous_full >= config_.min_resolution && previous_full <= cap &&
+      std::abs(tiers - float(std::countr_zero(previous_full))) <= hysteresis_tiers) {
+    full = previous_full;
   }
-  return std::clamp(1u << uint32_t(std::round(tiers)), config_.min_resolution, cap);
+  // Held from what the light gets: a light capped below its importance (or inside the camera's
+  // view of it) drops with the first lowered tier too.
+  const float got = std::min(tiers, float(std::countr_zero(cap)));
+  const float held =
+      previous_held ? std::clamp(*previous_held, got - hysteresis_tiers, got + hysteresis_tiers) : got;
+  const uint32_t floor =
+      std::min(full, std::bit_ceil(std::max(config_.min_resolution, request.quality_floor)));
+  if (lowered_tiers <= 0.0f) return {full, full, full > floor, held};
+  const float lowered_log2 = std::clamp(held - lowered_tiers, 0.0f, 31.0f);
+  const uint32_t lowered = std::clamp(1u << uint32_t(std::round(lowered_log2)), floor, full);
+  return {full, lowered, lowered > floor, held};
 }
 
 void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
-                              jobs::ThreadPool* pool) {
+                              jobs::ThreadPool* pool, float lowered_tiers) {
   assert(out.size() == requests.size());
   ++plans_;
-  match_lights(requests, pool);
+  match_lights(requests, pool, lowered_tiers);
   release_lights_not_requested();
   fit_budget(requests);
 
@@ -153,7 +167,8 @@ void ShadowAtlasPlanner::order_least_important_first(std::span<const ShadowReque
   }
 }
 
-void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool) {
+void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool,
+                                      float lowered_tiers) {
   const size_t previous_requests = light_of_request_.size();
   light_of_request_.resize(requests.size());
   resolution_.assign(requests.size(), 0);
@@ -161,7 +176,14 @@ void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, j
     Light& light = lights_[index];
     light_of_request_[i] = index;
     light.requested_in_plan = plans_;
-    light.wanted = wanted_resolution(requests[i], requests[i].cube == light.cube ? light.wanted : 0);
+    const bool same_kind = requests[i].cube == light.cube;
+    const Wanted wanted = wanted_resolution(
+        requests[i], same_kind ? light.full : 0,
+        same_kind && light.full > 0 ? std::optional(light.held) : std::nullopt, lowered_tiers);
+    light.full = wanted.full;
+    light.held = wanted.held;
+    light.wanted = wanted.lowered;
+    light.lowerable = wanted.lowerable;
     resolution_[i] = light.wanted;
   };
   // Usually the requests come in the last plan's order: request i is the light it was then,
@@ -352,6 +374,10 @@ void ShadowAtlasPlanner::repack(std::span<const ShadowRequest> requests) {
 }
 
 void ShadowAtlasPlanner::count_into(Tally& tally, const Light* light, uint32_t resolution) const {
+  if (light) {
+    if (light->wanted < light->full) ++tally.demoted_by_time;
+    if (light->lowerable) ++tally.lowerable_by_time;
+  }
   if (resolution == 0) {
     ++tally.without_shadow;
     if (light && light->wanted > 0) ++tally.dropped;
@@ -369,6 +395,8 @@ void ShadowAtlasPlanner::update_stats() {
     total.without_shadow += tally.without_shadow;
     total.dropped += tally.dropped;
     total.demoted += tally.demoted;
+    total.demoted_by_time += tally.demoted_by_time;
+    total.lowerable_by_time += tally.lowerable_by_time;
     total.texels += tally.texels;
     total.pages_used = std::max(total.pages_used, tally.pages_used);
     for (size_t tier = 0; tier < total.lights_per_tier.size(); ++tier)
@@ -379,6 +407,8 @@ void ShadowAtlasPlanner::update_stats() {
   stats_.lights_without_shadow = total.without_shadow;
   stats_.demoted_by_budget = total.demoted;
   stats_.dropped_by_budget = total.dropped;
+  stats_.demoted_by_time = total.demoted_by_time;
+  stats_.lowerable_by_time = total.lowerable_by_time;
   stats_.lights_per_resolution.clear();
   for (uint32_t tier = 0; tier < tier_count(); ++tier) {
     if (total.lights_per_tier[tier] > 0) {

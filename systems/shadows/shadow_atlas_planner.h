@@ -12,6 +12,15 @@
 //   to a power of two (but never below min_resolution). Hysteresis: a light keeps last frame's wanted
 //   resolution R while log2(importance) stays within 0.75 of log2(R), so it does not pop between
 //   tiers when its importance hovers at a boundary.
+// - Time (plan()'s lowered_tiers, from the time budget, ShadowTimeBudget): each light then wants
+//   2^round(held - lowered_tiers) within [its quality floor (or min_resolution), what it gets],
+//   where `held` follows log2 of what it gets (its importance, within its cap) with a backlash of
+//   hysteresis_tiers. Importances that wobble by less change nothing, and the same lowered_tiers
+//   always give the same resolutions, so a controller that steps back gets back where it was (a
+//   hysteresis on the lowered resolution itself would take 1.5 tiers to undo a quarter tier's
+//   step). Every map keeps in proportion to its light's size on screen, and the least important
+//   lights reach their floor, and stop, first. A light that wants less than its floor anyway
+//   keeps what it wants; pinned lights keep their cap.
 // - Budget: the tiles must fit max_pages pages. When they do not, the least important light drops
 //   one tier, then the next least important, and so on upward, pass after pass, first only lights
 //   above their quality floor (down to it), then all of them; once every light is at
@@ -78,6 +87,8 @@ struct AtlasStats {
   uint32_t lights_without_shadow = 0;
   uint32_t demoted_by_budget = 0;  // shadowed at a lower resolution than they want
   uint32_t dropped_by_budget = 0;  // without shadow because of the budget
+  uint32_t demoted_by_time = 0;    // wanting less than their importance asks: plan()'s lowered_tiers
+  uint32_t lowerable_by_time = 0;  // above their quality floor: more lowered tiers would lower them
 };
 
 class ShadowAtlasPlanner {
@@ -87,8 +98,9 @@ class ShadowAtlasPlanner {
   // Fills out[i] for requests[i]; out.size() must equal requests.size(). Requests need not come
   // in the same order every frame. A key requested twice in one plan() gets a shadow only once.
   // With `pool`, the per-light passes that need no shared state run on it (same result).
+  // `lowered_tiers` >= 0: the time budget's (see above); 0: none.
   void plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
-            jobs::ThreadPool* pool = nullptr);
+            jobs::ThreadPool* pool = nullptr, float lowered_tiers = 0.0f);
   // The last plan()'s.
   const AtlasStats& stats() const { return stats_; }
   // A line for the log when the budget's effect (lights demoted or dropped) differs from the last
@@ -106,7 +118,10 @@ class ShadowAtlasPlanner {
   struct Light {
     uint64_t key = 0;
     bool cube = false;
-    uint32_t wanted = 0;      // before the budget, after hysteresis; 0: cannot have a shadow
+    uint32_t full = 0;        // what its importance asks, after hysteresis; 0: cannot have a shadow
+    uint32_t wanted = 0;      // full lowered by the time budget
+    float held = 0.0f;        // log2 of what it gets, with a backlash (see the header)
+    bool lowerable = false;   // wanted is above its quality floor
     uint32_t resolution = 0;  // as placed
     std::array<AtlasTile, 6> tiles{};
     uint64_t requested_in_plan = 0;
@@ -119,8 +134,17 @@ class ShadowAtlasPlanner {
 
   uint32_t tier_count() const;
   uint32_t tier_of(uint32_t resolution) const;
-  uint32_t wanted_resolution(const ShadowRequest& request, uint32_t previous) const;
-  void match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool);
+  // A light's full and wanted resolutions and its held tiers, from last plan's (0, nullopt: none)
+  // and lowered_tiers.
+  struct Wanted {
+    uint32_t full = 0;
+    uint32_t lowered = 0;
+    bool lowerable = false;
+    float held = 0.0f;
+  };
+  Wanted wanted_resolution(const ShadowRequest& request, uint32_t previous_full,
+                           std::optional<float> previous_held, float lowered_tiers) const;
+  void match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool, float lowered_tiers);
   void release_lights_not_requested();
   void fit_budget(std::span<const ShadowRequest> requests);
   // by_importance_: the requests with a shadow, least important first, ties by key so that the
@@ -137,6 +161,8 @@ class ShadowAtlasPlanner {
     uint32_t without_shadow = 0;
     uint32_t dropped = 0;
     uint32_t demoted = 0;
+    uint32_t demoted_by_time = 0;
+    uint32_t lowerable_by_time = 0;
     uint32_t pages_used = 0;
     uint64_t texels = 0;
     std::array<uint32_t, 11> lights_per_tier{};  // at most 11 tiers: page_size / min_resolution <= 1024

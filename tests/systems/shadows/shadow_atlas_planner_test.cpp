@@ -120,6 +120,63 @@ TEST(ShadowAtlasPlanner, SmallImportanceOscillationsKeepTheResolutionLargeOnesCh
   EXPECT_EQ(plan(planner, {map_light(1, 2048.0f)})[0].resolution, 2048u);
 }
 
+// The time budget's lowered tiers: every light as if log2 of what it gets were that much lower,
+// never below its quality floor, and a light that wants less than its floor keeps what it wants.
+TEST(ShadowAtlasPlanner, LoweredTiersLowerEveryLightDownToItsFloor) {
+  ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 64, .min_resolution = 32});
+  std::vector<ShadowRequest> requests{map_light(1, 1024.0f),     map_light(2, 512.0f), map_light(3, 128.0f),
+                                      map_light(4, 40.0f),       map_light(5, 1e9f),   cube_light(6, 1e9f),
+                                      map_light(7, 2000.0f, 256)};
+  for (ShadowRequest& request : requests) request.quality_floor = 128;
+  ShadowRequest pinned = map_light(8, 3.0f, 512);
+  pinned.pinned = true;
+  requests.push_back(pinned);
+  std::vector<ShadowPlacement> out(requests.size());
+  planner.plan(requests, out, nullptr, 2.0f);
+  EXPECT_EQ(out[0].resolution, 256u);
+  EXPECT_EQ(out[1].resolution, 128u);
+  EXPECT_EQ(out[2].resolution, 128u) << "at its floor already";
+  EXPECT_EQ(out[3].resolution, 32u) << "below its floor anyway: as its importance asks";
+  EXPECT_EQ(out[4].resolution, 1024u) << "lowered from the page it gets, not its importance";
+  EXPECT_EQ(out[5].resolution, 256u) << "a cube's cap is a quarter page";
+  EXPECT_EQ(out[6].resolution, 128u) << "lowered from its own cap";
+  EXPECT_EQ(out[7].resolution, 512u) << "pinned";
+  const AtlasStats& stats = planner.stats();
+  EXPECT_EQ(stats.demoted_by_time, 5u);
+  EXPECT_EQ(stats.lowerable_by_time, 3u) << "the 256 map and the 1024 map and cube";
+  EXPECT_EQ(stats.demoted_by_budget, 0u) << "the memory budget did none of it";
+
+  // Without lowered tiers, each light is back at what its importance asks at once.
+  planner.plan(requests, out);
+  EXPECT_EQ(out[0].resolution, 1024u);
+  EXPECT_EQ(out[4].resolution, 4096u);
+  EXPECT_EQ(planner.stats().demoted_by_time, 0u);
+  EXPECT_EQ(planner.stats().lowerable_by_time, 5u);
+}
+
+TEST(ShadowAtlasPlanner, LoweredTiersIgnoreWobblingImportancesAndStepBackExactly) {
+  ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 4, .min_resolution = 32});
+  const auto lowered = [&](float importance, float tiers) {
+    std::vector<ShadowPlacement> out(1);
+    planner.plan(std::vector<ShadowRequest>{map_light(1, importance)}, out, nullptr, tiers);
+    return out[0].resolution;
+  };
+  // 10.5 tiers lowered by 1: 9.5, on the boundary between 512 and 1024.
+  const float boundary = std::exp2(10.5f);
+  ASSERT_EQ(lowered(boundary, 1.0f), 1024u);
+  for (int frame = 0; frame < 20; ++frame) {
+    EXPECT_EQ(lowered(boundary * std::exp2(frame % 2 ? 0.6f : -0.6f), 1.0f), 1024u) << "frame " << frame;
+  }
+  // Each number of lowered tiers gives its resolution whatever came before.
+  EXPECT_EQ(lowered(boundary, 1.25f), 512u);
+  EXPECT_EQ(lowered(boundary, 2.25f), 256u);
+  EXPECT_EQ(lowered(boundary, 1.25f), 512u);
+  EXPECT_EQ(lowered(boundary, 1.0f), 1024u);
+  EXPECT_EQ(lowered(boundary, 0.0f), 2048u);
+  // A light that moves a whole tier nearer moves its held tiers along.
+  EXPECT_EQ(lowered(boundary * 2.0f, 1.25f), 1024u);
+}
+
 TEST(ShadowAtlasPlanner, OverBudgetTheLeastImportantLightsDropATierFirst) {
   const AtlasConfig config{.page_size = 1024, .max_pages = 1, .min_resolution = 32};
   ShadowAtlasPlanner planner(config);
