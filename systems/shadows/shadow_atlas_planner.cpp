@@ -419,8 +419,8 @@ void ShadowAtlasPlanner::update_stats() {
 
 std::optional<std::string> ShadowAtlasPlanner::take_budget_message() {
   const BudgetEffect effect{stats_.demoted_by_budget, stats_.dropped_by_budget};
-  if (effect == reported_effect_) return std::nullopt;
-  if (last_message_plan_ && plans_ - *last_message_plan_ < budget_message_interval) return std::nullopt;
+  const std::optional<BudgetEffect> was = budget_report_.due(effect, plans_);
+  if (!was) return std::nullopt;
   std::string line = "shadow atlas budget (" + std::to_string(config_.max_pages) + " pages of " +
                      std::to_string(config_.page_size) + "^2): ";
   if (effect == BudgetEffect{}) {
@@ -429,10 +429,7 @@ std::optional<std::string> ShadowAtlasPlanner::take_budget_message() {
     line += std::to_string(effect.demoted) + " lights at a lower resolution, " +
             std::to_string(effect.dropped) + " without shadow";
   }
-  line += " (was " + std::to_string(reported_effect_.demoted) + " lower, " +
-          std::to_string(reported_effect_.dropped) + " without)";
-  reported_effect_ = effect;
-  last_message_plan_ = plans_;
+  line += " (was " + std::to_string(was->demoted) + " lower, " + std::to_string(was->dropped) + " without)";
   return line;
 }
 

@@ -45,6 +45,7 @@
 
 #include "ecs/jobs/parallel_pieces.h"
 
+#include "systems/shadows/budget_report.h"
 #include "systems/shadows/shadow_atlas_pages.h"
 
 namespace sg::shadows {
@@ -197,8 +198,7 @@ class ShadowAtlasPlanner {
   std::vector<Tally> tallies_;
 
   AtlasStats stats_;
-  BudgetEffect reported_effect_;
-  std::optional<uint64_t> last_message_plan_;
+  BudgetReport<BudgetEffect> budget_report_{budget_message_interval};
 };
 
 }  // namespace sg::shadows
