@@ -51,7 +51,9 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
       stats_.views_cached += views;
     }
     usable[i] = state.valid ? 1 : 0;
-    stats_.lights_waiting += state.dirty || state.moving_dirty ? 1 : 0;
+    const bool waiting = state.dirty || state.moving_dirty;
+    stats_.lights_waiting += waiting ? 1 : 0;
+    stats_.views_waiting += waiting ? views : 0;
     stats_.lights_unavailable += state.valid ? 0 : 1;
   }
 }

@@ -52,6 +52,7 @@ struct ShadowCacheStats {
   uint32_t views_cached = 0;       // views of lights sampling a map kept from an earlier frame
   uint32_t lights_rendered = 0;
   uint32_t lights_waiting = 0;      // dirty but over this frame's budget: rendered in a later frame
+  uint32_t views_waiting = 0;       // their views
   uint32_t lights_unavailable = 0;  // no valid map this frame: shaded unshadowed
 };
 

@@ -19,6 +19,9 @@ constexpr float unbounded_importance = 1.0e9f;
 // compare-exchange), few enough that a thousand lights keep 16 threads busy.
 constexpr size_t views_per_piece = 64;
 
+// The tighter of two caps on views, 0 meaning none.
+uint32_t tighter_cap(uint32_t a, uint32_t b) { return a == 0 ? b : b == 0 ? a : std::min(a, b); }
+
 // The camera's frustum planes, normalized, computed once for all of a frame's lights.
 struct CameraFrustum {
   std::array<glm::vec4, 6> planes;
@@ -45,8 +48,13 @@ float light_importance(const glm::vec4& reach, const ShadowCamera& camera) {
   return importance_in(reach, camera, CameraFrustum(camera));
 }
 
-ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas, bool static_layers, ShadowResolution resolution)
-    : planner_(atlas), page_size_(atlas.page_size), static_layers_(static_layers), resolution_(resolution) {}
+ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas, bool static_layers, ShadowResolution resolution,
+                               double time_budget_ms)
+    : planner_(atlas),
+      time_budget_(time_budget_ms),
+      page_size_(atlas.page_size),
+      static_layers_(static_layers),
+      resolution_(resolution) {}
 
 void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
                               uint32_t view_budget, jobs::ThreadPool* pool) {
@@ -112,7 +120,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       });
   requests_.resize(request_count);
   placements_.assign(requests_.size(), ShadowPlacement{});
-  planner_.plan(requests_, placements_, pool);
+  const ShadowTimeBudget::Limits& limits = time_budget_.limits();
+  planner_.plan(requests_, placements_, pool, limits.lowered_tiers);
 
   cache_lights_.resize(view_count);
   cache_index_.resize(requests_.size());
@@ -130,7 +139,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   usable_.assign(cache_lights_.size(), 0);
   const CasterChanges changes{casters.changes_only ? casters.changed : caster_changes_.update(casters.all),
                               casters.changes_only ? casters.moving : std::span<const scene::Aabb>{}};
-  cache_.plan(cache_lights_, changes, view_budget, static_layers_, render_, usable_, pool);
+  cache_.plan(cache_lights_, changes, tighter_cap(view_budget, limits.view_cap), static_layers_, render_,
+              usable_, pool);
 
   // The results onto the views and their records, on the pool: each view writes only itself,
   // its record and its entry.
@@ -208,6 +218,18 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
                                       atlas.lights_per_resolution.rend());
   stats_.texels_used = atlas.texels_used;
   stats_.pages_used = atlas.pages_used;
+  stats_.lights_demoted_by_memory = atlas.demoted_by_budget;
+  stats_.lights_dropped_by_memory = atlas.dropped_by_budget;
+  stats_.lights_demoted_by_time = atlas.demoted_by_time;
+  // The views view_budget alone would have drawn, about: a cube over what is left is skipped
+  // whichever cap binds.
+  const uint32_t due = cache.views_rendered + cache.views_waiting;
+  const uint32_t uncapped = view_budget == 0 ? due : std::min(due, view_budget);
+  if (tighter_cap(view_budget, limits.view_cap) != view_budget && uncapped > cache.views_rendered) {
+    stats_.views_deferred_by_time = uncapped - cache.views_rendered;
+  }
+  time_budget_.planned(
+      {atlas.lowerable_by_time, uncapped, stats_.lights_demoted_by_time, stats_.views_deferred_by_time});
 }
 
 }  // namespace sg::shadows

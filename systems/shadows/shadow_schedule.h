@@ -2,9 +2,11 @@
 // Which light gets which shadow, and which shadows render this frame: the atlas planner's tiles
 // (resolution from each light's importance on screen, within the memory budget) and the cache's
 // choice of the views to re-render (what changed, within a per-frame budget of views), applied
-// to a frame's lights. After schedule(), every shadowed view carries its tiles or none, `render`
-// says whether it is drawn this frame, and each record says where its map is; a light whose map
-// holds nothing valid yet (new, moved, or waiting for the budget) is shaded without a shadow.
+// to a frame's lights, both within the time budget's limits when it has one (ShadowTimeBudget:
+// lower resolutions, fewer views, learnt from the shadow passes' measured GPU time). After schedule(), every
+// shadowed view carries its tiles or none, `render` says whether it is drawn this frame, and each record says
+// where its map is; a light whose map holds nothing valid yet (new, moved, or waiting for the budget) is
+// shaded without a shadow.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -22,6 +24,7 @@
 #include "systems/shadows/shadow_atlas_planner.h"
 #include "systems/shadows/shadow_cache.h"
 #include "systems/shadows/shadow_resolution.h"
+#include "systems/shadows/shadow_time_budget.h"
 
 namespace sg::shadows {
 
@@ -44,6 +47,13 @@ struct ShadowScheduleStats {
   uint32_t views_cached = 0;           // shadowed views kept from an earlier frame
   uint32_t lights_without_shadow = 0;  // out of sight, or over the memory budget
   uint32_t lights_waiting = 0;         // have a tile, nothing valid in it yet (the view budget)
+  // What each budget held down: lights at a lower resolution than they want, or without shadow,
+  // for memory; lights below what their size on screen asks, and views due (within view_budget)
+  // that the time budget's cap left for later frames, for time.
+  uint32_t lights_demoted_by_memory = 0;
+  uint32_t lights_dropped_by_memory = 0;
+  uint32_t lights_demoted_by_time = 0;
+  uint32_t views_deferred_by_time = 0;
   uint64_t texels_used = 0;
   uint32_t pages_used = 0;
   std::vector<std::pair<uint32_t, uint32_t>> lights_per_resolution;  // (resolution, lights)
@@ -76,14 +86,16 @@ struct CasterUpdate {
 class ShadowSchedule {
  public:
   // `static_layers`: the renderer keeps a static layer of each map (ShadowCache), so renders for
-  // moving casters may draw only those.
+  // moving casters may draw only those. `time_budget_ms`: the shadow passes' GPU time a frame
+  // may take (ShadowTimeBudget); 0: no budget.
   explicit ShadowSchedule(const AtlasConfig& atlas, bool static_layers = false,
-                          ShadowResolution resolution = ShadowResolution::screen);
+                          ShadowResolution resolution = ShadowResolution::screen,
+                          double time_budget_ms = 0.0);
 
   // Places, caches and records every shadow of `lights` (gathered, not yet sorted). `casters`
   // are the frame's shadow casters or their changes (CasterUpdate); view_budget caps the views
-  // rendered (0: no cap). With a `pool`, the per-light work runs in pieces on it (the same
-  // result).
+  // rendered (0: no cap), and so may the time budget. With a `pool`, the per-light work runs in
+  // pieces on it (the same result).
   void schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
                 uint32_t view_budget, jobs::ThreadPool* pool = nullptr);
   // Every map must be rendered again (the atlas image was recreated).
@@ -97,9 +109,17 @@ class ShadowSchedule {
   // A line for the log when the budget's effect changed (ShadowAtlasPlanner), rate limited.
   std::optional<std::string> take_budget_message() { return planner_.take_budget_message(); }
 
+  // The time budget: the step a frame scheduled now is planned with, to hand back with the frame's
+  // measured shadow passes (ShadowTimeBudget::measured).
+  const ShadowTimeBudget& time_budget() const { return time_budget_; }
+  uint64_t time_budget_step() const { return time_budget_.step(); }
+  void measured(uint64_t step, uint32_t views, double ms) { time_budget_.measured(step, views, ms); }
+  std::optional<std::string> take_time_budget_message() { return time_budget_.take_message(); }
+
  private:
   ShadowAtlasPlanner planner_;
   ShadowCache cache_;
+  ShadowTimeBudget time_budget_;
   CasterChangeTracker caster_changes_;
   uint32_t page_size_;
   bool static_layers_;

@@ -19,6 +19,7 @@
 #include "systems/scene/scene_builder.h"
 
 #include "systems/shadows/frame_lights.h"
+#include "systems/shadows/quality_floor.h"
 #include "systems/shadows/shadow_schedule.h"
 
 namespace sg::shadows {
@@ -239,6 +240,59 @@ TEST(ShadowSchedule, TheBudgetDegradesTheLeastImportantLightsFirst) {
   uint64_t texels = 0;
   for (const ShadowMapView& map : lights.maps) texels += uint64_t{map.resolution} * map.resolution;
   EXPECT_LE(texels, 64u * 64u);
+}
+
+// The time budget, told that every frame's shadow passes take far longer than it allows: first
+// every light loses resolution down to its quality floor, never its shadow, then views wait their
+// turn, each drawn again within a few frames; told the passes are quick again, it gives all back.
+TEST(ShadowSchedule, TheTimeBudgetLowersResolutionsToTheFloorsThenDefersViews) {
+  const scene::Scene scene = spots_in_a_row(24, 1024);
+  FrameLights lights;
+  gather_lights(scene.world, bounds, {}, lights);  // gathered once: every light stays changed
+  ShadowSchedule schedule(AtlasConfig{4096, 16, min_shadow_resolution}, false, ShadowResolution::screen, 6.0);
+  const ShadowCamera camera = camera_at({0.0f, 2.0f, 0.0f});
+  // One frame, measured at once as taking `ms` of shadow passes.
+  const auto frame = [&](double ms) {
+    const uint64_t step = schedule.time_budget_step();
+    schedule.schedule(lights, camera, {}, 0);
+    schedule.measured(step, schedule.stats().views_rendered, ms);
+  };
+  frame(1.0);
+  std::vector<uint32_t> full;
+  for (const ShadowMapView& map : lights.maps) full.push_back(map.resolution);
+  ASSERT_EQ(full.front(), 1024u);
+  EXPECT_EQ(schedule.stats().lights_demoted_by_time, 0u);
+
+  for (int i = 0; i < 100 && schedule.stats().views_deferred_by_time == 0; ++i) frame(60.0);
+  const ShadowScheduleStats& stats = schedule.stats();
+  EXPECT_GT(stats.lights_demoted_by_time, 0u);
+  EXPECT_GT(stats.views_deferred_by_time, 0u) << "views wait once every light is at its floor";
+  EXPECT_EQ(stats.lights_without_shadow, 0u) << "no light loses its shadow to time";
+  EXPECT_EQ(stats.lights_demoted_by_memory, 0u);
+  for (size_t m = 0; m < lights.maps.size(); ++m) {
+    const uint32_t floor = quality_floor(algorithm_of(lights.records[lights.maps[m].light]));
+    EXPECT_EQ(lights.maps[m].resolution, std::min(full[m], floor)) << "map " << m;
+  }
+  // At the smallest cap, each frame draws the stalest views it allows: every map comes round, once
+  // in each 24 / cap frames.
+  constexpr uint32_t cap = ShadowTimeBudget::min_view_cap;
+  for (int i = 0; i < 100 && schedule.time_budget().limits().view_cap != cap; ++i) frame(60.0);
+  ASSERT_EQ(schedule.time_budget().limits().view_cap, cap);
+  std::vector<int> drawn(lights.maps.size(), 0);
+  for (uint32_t i = 0; i < 24 / cap; ++i) {
+    frame(60.0);
+    EXPECT_EQ(schedule.stats().views_rendered, cap);
+    for (size_t m = 0; m < lights.maps.size(); ++m) drawn[m] += lights.maps[m].render ? 1 : 0;
+  }
+  for (size_t m = 0; m < lights.maps.size(); ++m) EXPECT_EQ(drawn[m], 1) << "map " << m;
+
+  for (int i = 0; i < 1000 && schedule.time_budget().limits() != ShadowTimeBudget::Limits{}; ++i) frame(0.5);
+  frame(0.5);
+  EXPECT_EQ(schedule.time_budget().limits(), ShadowTimeBudget::Limits{});
+  EXPECT_EQ(schedule.stats().lights_demoted_by_time, 0u);
+  EXPECT_EQ(schedule.stats().views_deferred_by_time, 0u);
+  for (size_t m = 0; m < lights.maps.size(); ++m)
+    EXPECT_EQ(lights.maps[m].resolution, full[m]) << "map " << m;
 }
 
 // A crate's box, 1 m wide, centred at z on the row of spots_in_a_row.
