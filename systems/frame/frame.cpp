@@ -102,7 +102,7 @@ void Frame::record(const vk::FrameSlot& frame, double time_seconds,
   shadow_views_rendered_.push_back(shadows.views_rendered);
   shadow_views_cached_.push_back(shadows.views_cached);
   shadow_views_moving_only_.push_back(shadows.views_moving_only);
-  drawn_views_[frame.frame_number % drawn_views_.size()] = {frame.frame_number, shadows.views_rendered};
+  drawn_views_[frame.frame_number % drawn_views_.size()] = {frame.frame_number, renderer_.shadow_work()};
   dropped_light_pairs_ += renderer_.dropped_light_pairs();
   declare_passes(frame.slot, present);
   timed(phase_ms_.declare);
@@ -116,7 +116,7 @@ void Frame::report_shadow_time() {
   reported_frame_ = timings->frame_number;
   const DrawnViews& drawn = drawn_views_[timings->frame_number % drawn_views_.size()];
   if (drawn.frame != timings->frame_number) return;
-  renderer_.measured_shadow_time(*timings, drawn.views);
+  renderer_.measured_shadow_time(*timings, drawn.work);
 }
 
 double Frame::last_cpu_ms() const {

@@ -121,8 +121,8 @@ class Frame {
   // Advances the animation clock by `seconds` while animation plays, then runs the systems.
   void update(double seconds);
   void declare_passes(uint32_t slot, const std::optional<PresentTarget>& present);
-  // Hands the renderer the latest timed frame's pass times with the shadow views it drew (the
-  // automatic raster choice learns from them).
+  // Hands the renderer the latest timed frame's pass times with the shadow work it drew (the
+  // automatic raster choice and the time budget learn from them).
   void report_shadow_time();
   void execute(const vk::FrameSlot& frame);
 
@@ -146,10 +146,10 @@ class Frame {
   std::vector<double> shadow_views_cached_;
   std::vector<double> shadow_views_moving_only_;
   uint64_t dropped_light_pairs_ = 0;
-  // The views the last frames drew, by frame number, until their timings come back.
+  // The shadow work the last frames drew, by frame number, until their timings come back.
   struct DrawnViews {
     uint64_t frame = UINT64_MAX;
-    uint32_t views = 0;
+    SceneRenderer::ShadowWork work;
   };
   std::array<DrawnViews, 8> drawn_views_;
   uint64_t reported_frame_ = UINT64_MAX;

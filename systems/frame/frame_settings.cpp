@@ -120,6 +120,12 @@ std::vector<Setting<S>> make_table() {
           "shadow-updates", "N", [](auto& s) -> auto& { return s.renderer.shadow_view_budget; }, 0, 1u << 24,
           "shadow views (2D maps, cube faces) redrawn per frame at most, stalest first (0: every "
           "view due)"),
+      number<S>(
+          "shadow-budget-ms", "MS", [](auto& s) -> auto& { return s.renderer.shadow_budget_ms; }, 0.0, 1000.0,
+          "GPU time the shadow passes may take a frame, learnt from recent frames' timestamps: over it "
+          "lights lose resolution by their size on screen down to their quality floor, then map redraws "
+          "wait their turn, stalest first (0: no budget; default: 6 on GPUs, none on CPU devices); "
+          "--shadow-memory still caps on top"),
       on_off<S>(
           "shadow-cache", [](auto& s) -> auto& { return s.renderer.cache_shadows; },
           "on: a map is redrawn only when its light, or a caster in its reach, moved; off: every "

@@ -130,12 +130,20 @@ Setting<Settings> whole(std::string_view name, std::string_view value_name, Fiel
           }};
 }
 
-// --NAME X sets a float field to a finite number in [min, max].
+// --NAME X sets a float field (or an optional one) to a finite number in [min, max].
 template <class Settings, class Field>
 Setting<Settings> number(std::string_view name, std::string_view value_name, Field field, double min,
                          double max, std::string_view help) {
+  using Value = std::remove_cvref_t<decltype(field(std::declval<Settings&>()))>;
   return {{name, value_name, help, SettingType::number, {}, min, max},
-          [field](const Settings& s) -> std::optional<std::string> { return setting_text::format(field(s)); },
+          [field](const Settings& s) -> std::optional<std::string> {
+            if constexpr (std::is_floating_point_v<Value>) {
+              return setting_text::format(field(s));
+            } else {
+              const Value& value = field(s);
+              return value ? std::optional(setting_text::format(*value)) : std::nullopt;
+            }
+          },
           [field](Settings& s, const std::string& text) { field(s) = setting_text::parse<float>(text); }};
 }
 

@@ -2,6 +2,7 @@
 // How the renderer draws a frame: plain data, set from the command line through the settings table
 // (systems/frame/frame_settings.h) or by code.
 #include <cstdint>
+#include <optional>
 
 #include "systems/lighting/lighting_path.h"
 #include "systems/shadows/cube_shadow_mode.h"
@@ -10,6 +11,10 @@
 #include "systems/shadows/shadow_view_path.h"
 
 namespace sg {
+
+// The time budget for shadows on GPUs unless set: a third of a 60 Hz frame (16.7 ms). On H200
+// frames with a thousand moving lights near the camera took 15 to 60 ms of shadow passes.
+inline constexpr float default_gpu_shadow_budget_ms = 6.0f;
 
 struct RendererSettings {
   shadows::LightOverrides lights;
@@ -23,6 +28,10 @@ struct RendererSettings {
   shadows::ShadowResolution shadow_resolution = shadows::ShadowResolution::screen;
   uint32_t shadow_memory_mib = 0;  // the atlas's budget; 0: the device's default
   uint32_t shadow_view_budget = shadows::default_shadow_view_budget;  // views redrawn a frame; 0: all due
+  // The shadow passes' GPU time a frame may take (shadows::ShadowTimeBudget); 0: no budget; unset:
+  // default_gpu_shadow_budget_ms on GPUs, none on CPU devices (lavapipe), whose shadow passes
+  // always take far longer and would lose resolution in every picture.
+  std::optional<float> shadow_budget_ms;
   bool cache_shadows = true;  // off: every map is redrawn every frame (within the view budget)
   // Where the compute raster may run: keep a static layer per map (ShadowViewBatch), so that maps
   // wrong only through moving casters redraw just those.
@@ -35,8 +44,8 @@ struct RendererSettings {
 };
 
 // `settings` turned into the source documents' frame, the baseline to measure against (--naive): a
-// pass per shadow view and six per cube, every map every frame, every caster in every view,
-// forward lighting of every light at every pixel.
+// pass per shadow view and six per cube, every map every frame, every caster in every view, no
+// time budget, forward lighting of every light at every pixel.
 RendererSettings naive_baseline(RendererSettings settings);
 
 }  // namespace sg

@@ -13,6 +13,7 @@
 #include "systems/gpu/camera.h"
 #include "systems/gpu/frame_upload.h"
 #include "systems/lighting/light_resources.h"
+#include "systems/shadow_maps/shadow_pass_times.h"
 
 namespace sg {
 namespace {
@@ -34,6 +35,13 @@ bool batched_shadow_views(const vk::VulkanContext& context, const RendererSettin
 bool keeps_static_layers(const vk::VulkanContext& context, const RendererSettings& settings) {
   return settings.static_shadow_layers && batched_shadow_views(context, settings) &&
          ShadowViewBatch::may_raster_in_compute(context, settings.shadow_raster);
+}
+
+// The settings' time budget for shadows, or the device's default: none on CPU devices
+// (RendererSettings::shadow_budget_ms).
+double time_budget_ms(const vk::VulkanContext& context, const RendererSettings& settings) {
+  if (settings.shadow_budget_ms) return *settings.shadow_budget_ms;
+  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0.0 : default_gpu_shadow_budget_ms;
 }
 
 // Tiled deferred measured fastest on the H200 (docs/PERFORMANCE.md), and on lavapipe for more
@@ -62,7 +70,8 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       textures_(context, scene.textures),
       atlas_(context, uint64_t{settings.shadow_memory_mib} << 20, keeps_static_layers(context, settings)),
       schedule_({atlas_.shape().page_size, atlas_.shape().max_pages, shadows::min_shadow_resolution},
-                atlas_.static_layers() != nullptr, settings.shadow_resolution),
+                atlas_.static_layers() != nullptr, settings.shadow_resolution,
+                time_budget_ms(context, settings)),
       tone_map_(context, frame_format),
       light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
                      frames_in_flight, "light records", light_record_texel_format),
@@ -124,8 +133,9 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     schedule_.invalidate_all();
     schedule_.schedule(lights_, camera, casters, settings_.shadow_view_budget, &workers_);
   }
-  if (std::optional<std::string> message = schedule_.take_budget_message()) {
-    std::printf("shadowgraph: %s\n", message->c_str());
+  for (const std::optional<std::string>& message :
+       {schedule_.take_budget_message(), schedule_.take_time_budget_message()}) {
+    if (message) std::printf("shadowgraph: %s\n", message->c_str());
   }
   shadows::sort_by_group(lights_, &workers_);
   cpu_steps_.schedule = lap(mark);
@@ -296,6 +306,12 @@ rg::Format SceneRenderer::lit_format() const {
     case LightingPath::deferred: break;
   }
   return TiledLightingPass::lit_sum_format;
+}
+
+void SceneRenderer::measured_shadow_time(const vk::FrameTimings& timings, const ShadowWork& work) {
+  const ShadowPassTimes times = shadow_pass_times(timings);
+  if (batch_) batch_->measured(times, work.views);
+  measured_shadow_ms(times.ms, work);
 }
 
 uint64_t SceneRenderer::shadow_caster_draws() const {

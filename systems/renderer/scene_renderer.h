@@ -108,11 +108,21 @@ class SceneRenderer {
   void set_shadow_raster(shadows::ShadowRaster raster) {
     if (batch_) batch_->set_raster(raster);
   }
-  // A timed frame's passes, which drew `views` shadow views: what the batch's automatic raster
-  // choice learns from (ShadowViewBatch::measured).
-  void measured_shadow_time(const vk::FrameTimings& timings, uint32_t views) {
-    if (batch_) batch_->measured(shadow_pass_times(timings), views);
+  // What the last prepared frame's shadow passes draw, to hand back with the frame's times.
+  struct ShadowWork {
+    uint32_t views = 0;        // 2D maps and cube faces drawn
+    uint64_t budget_step = 0;  // the limits of the time budget it was planned with (ShadowTimeBudget::step)
+  };
+  ShadowWork shadow_work() const { return {schedule_.stats().views_rendered, schedule_.time_budget_step()}; }
+  // A timed frame's passes, which drew `work`: what the batch's automatic raster choice
+  // (ShadowViewBatch::measured) and the time budget learn from (shadow_pass_times).
+  void measured_shadow_time(const vk::FrameTimings& timings, const ShadowWork& work);
+  // The time budget's part of it: the shadow passes of the frame that drew `work` took `ms`.
+  void measured_shadow_ms(double ms, const ShadowWork& work) {
+    schedule_.measured(work.budget_step, work.views, ms);
   }
+  // The shadows' time budget: off (ShadowTimeBudget::on) without one.
+  const shadows::ShadowTimeBudget& shadow_time_budget() const { return schedule_.time_budget(); }
 
   // CPU milliseconds of the last gather() and prepare(), by step: where a CPU frame goes.
   struct CpuSteps {

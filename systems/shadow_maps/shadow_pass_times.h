@@ -2,7 +2,8 @@
 // A timed frame's shadow work, read from its passes' GPU timestamps: every pass named "shadow
 // ..." is shadow work (the batch's passes, or the per-light path's "shadow map ..." passes), and
 // the batch's raster pass says which raster drew ("shadow raster": compute, "shadow views": the
-// hardware). The automatic raster choice (ShadowViewBatch) learns from it.
+// hardware). The automatic raster choice (ShadowViewBatch) and the time budget
+// (shadows::ShadowTimeBudget) both learn from it.
 #include <optional>
 
 #include "rendergraph/device/fwd.h"
