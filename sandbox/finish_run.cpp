@@ -71,6 +71,19 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
                    summarize(frame.shadow_views_cached()),
                    summarize(frame.shadow_views_moving_only()),
                    renderer.shadow_caster_draws()};
+  const Frame::ShadowBudgetRecord& budgets = frame.shadow_budget_record();
+  const shadows::ShadowTimeBudget& time_budget = renderer.shadow_time_budget();
+  const shadows::ShadowTimeBudget::Limits& limits = time_budget.limits();
+  stats.shadow_budget = {time_budget.on() ? std::optional(time_budget.budget_ms()) : std::nullopt,
+                         summarize(budgets.shadow_ms),
+                         budgets.frames_bound_by_time,
+                         budgets.frames_bound_by_memory,
+                         summarize(budgets.lights_demoted_by_time),
+                         summarize(budgets.views_deferred_by_time),
+                         summarize(budgets.lights_demoted_by_memory),
+                         summarize(budgets.lights_dropped_by_memory),
+                         limits.lowered_tiers,
+                         limits.view_cap != 0 ? std::optional(limits.view_cap) : std::nullopt};
 
   if (stats.cpu_frame_ms) {
     std::printf("shadowgraph: %llu frames, CPU frame time median %.2f ms (min %.2f, max %.2f)\n",
@@ -130,6 +143,26 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
         "(medians)\n",
         s.lights_without_shadow, s.lights_waiting, s.views_rendered->median, s.views_moving_only->median,
         s.views_cached->median);
+  }
+  if (const RunStats::ShadowBudget& b = stats.shadow_budget;
+      b.lights_demoted_by_time && (b.budget_ms || b.frames_bound_by_memory > 0)) {
+    std::printf("shadowgraph: shadow budgets: ");
+    if (b.budget_ms) {
+      std::printf("time %.2f ms", *b.budget_ms);
+      if (b.measured_ms) std::printf(" (shadow passes median %.3f ms)", b.measured_ms->median);
+      std::printf(
+          " held %llu frames down (medians %.0f lights demoted, %.0f views deferred; last frame %.2f tiers "
+          "lower",
+          static_cast<unsigned long long>(b.frames_bound_by_time), b.lights_demoted_by_time->median,
+          b.views_deferred_by_time->median, b.lowered_tiers);
+      if (b.view_cap) std::printf(", at most %u views", *b.view_cap);
+      std::printf(")");
+    } else {
+      std::printf("no time budget");
+    }
+    std::printf("; memory held %llu frames down (medians %.0f lights demoted, %.0f without shadow)\n",
+                static_cast<unsigned long long>(b.frames_bound_by_memory), b.lights_demoted_by_memory->median,
+                b.lights_dropped_by_memory->median);
   }
   const vk::MemoryStats memory = context.allocator().stats();
   std::printf("shadowgraph: GPU memory %.1f MiB used in %u blocks (%.1f MiB reserved)\n",

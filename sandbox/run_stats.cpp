@@ -31,6 +31,12 @@ Json setting_json(const RunStats::EchoedSetting& setting) {
   return *setting.value;
 }
 
+// The budget that held the most frames down; time on a tie.
+const char* bound_most(const RunStats::ShadowBudget& budget) {
+  if (budget.frames_bound_by_time == 0 && budget.frames_bound_by_memory == 0) return "none";
+  return budget.frames_bound_by_time >= budget.frames_bound_by_memory ? "time" : "memory";
+}
+
 Json stats_json(const RunStats& stats) {
   const scene::SceneStats& scene = stats.scene;
   Json passes = Json::array();
@@ -42,57 +48,70 @@ Json stats_json(const RunStats& stats) {
   for (const auto& [resolution, lights] : shadows.lights_per_resolution) {
     per_resolution[std::to_string(resolution)] = lights;
   }
+  const RunStats::ShadowBudget& budget = stats.shadow_budget;
   Json settings = Json::object();
   for (const RunStats::EchoedSetting& setting : stats.settings)
     settings[setting.name] = setting_json(setting);
-  return {{"device", stats.device},
-          {"resolution", {{"width", stats.width}, {"height", stats.height}}},
-          {"frames", stats.frames},
-          {"scene",
-           {{"name", stats.scene_name},
-            {"triangles", scene.triangles},
-            {"entities", scene.entities},
-            {"mesh_instances", scene.mesh_instances},
-            {"lights",
-             {{"point", scene.point_lights},
-              {"spot", scene.spot_lights},
-              {"directional", scene.directional_lights},
-              {"cylinder", scene.cylinder_lights},
-              {"shadow_casting", scene.shadow_casting_lights}}}}},
-          {"cpu_frame_ms", summary_json(stats.cpu_frame_ms)},
-          {"cpu_phases_ms",
-           {{"update", summary_json(stats.cpu_phases_ms.update)},
-            {"gather", summary_json(stats.cpu_phases_ms.gather)},
-            {"prepare", summary_json(stats.cpu_phases_ms.prepare)},
-            {"declare", summary_json(stats.cpu_phases_ms.declare)},
-            {"execute", summary_json(stats.cpu_phases_ms.execute)},
-            {"gather_instances", summary_json(stats.cpu_phases_ms.instances)},
-            {"gather_lights", summary_json(stats.cpu_phases_ms.lights)},
-            {"prepare_schedule", summary_json(stats.cpu_phases_ms.schedule)},
-            {"prepare_upload", summary_json(stats.cpu_phases_ms.upload)},
-            {"prepare_views", summary_json(stats.cpu_phases_ms.views)}}},
-          {"wall_frame_ms", summary_json(stats.wall_frame_ms)},
-          {"lighting", stats.lighting},
-          {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},
-          {"passes", passes},
-          {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},
-          {"shadow_map_bytes", stats.shadow_map_bytes},
-          {"dropped_light_pairs", stats.dropped_light_pairs},
-          {"shadows",
-           {{"views", shadows.views},
-            {"raster", shadows.raster ? Json(*shadows.raster) : Json()},
-            {"budget_bytes", shadows.budget_bytes},
-            {"page_size", shadows.page_size},
-            {"pages", shadows.pages},
-            {"used_bytes", shadows.used_bytes},
-            {"lights_per_resolution", per_resolution},
-            {"lights_without_shadow", shadows.lights_without_shadow},
-            {"lights_waiting", shadows.lights_waiting},
-            {"views_rendered", summary_json(shadows.views_rendered)},
-            {"views_cached", summary_json(shadows.views_cached)},
-            {"views_moving_only", summary_json(shadows.views_moving_only)},
-            {"caster_draws", shadows.caster_draws}}},
-          {"settings", settings}};
+  return {
+      {"device", stats.device},
+      {"resolution", {{"width", stats.width}, {"height", stats.height}}},
+      {"frames", stats.frames},
+      {"scene",
+       {{"name", stats.scene_name},
+        {"triangles", scene.triangles},
+        {"entities", scene.entities},
+        {"mesh_instances", scene.mesh_instances},
+        {"lights",
+         {{"point", scene.point_lights},
+          {"spot", scene.spot_lights},
+          {"directional", scene.directional_lights},
+          {"cylinder", scene.cylinder_lights},
+          {"shadow_casting", scene.shadow_casting_lights}}}}},
+      {"cpu_frame_ms", summary_json(stats.cpu_frame_ms)},
+      {"cpu_phases_ms",
+       {{"update", summary_json(stats.cpu_phases_ms.update)},
+        {"gather", summary_json(stats.cpu_phases_ms.gather)},
+        {"prepare", summary_json(stats.cpu_phases_ms.prepare)},
+        {"declare", summary_json(stats.cpu_phases_ms.declare)},
+        {"execute", summary_json(stats.cpu_phases_ms.execute)},
+        {"gather_instances", summary_json(stats.cpu_phases_ms.instances)},
+        {"gather_lights", summary_json(stats.cpu_phases_ms.lights)},
+        {"prepare_schedule", summary_json(stats.cpu_phases_ms.schedule)},
+        {"prepare_upload", summary_json(stats.cpu_phases_ms.upload)},
+        {"prepare_views", summary_json(stats.cpu_phases_ms.views)}}},
+      {"wall_frame_ms", summary_json(stats.wall_frame_ms)},
+      {"lighting", stats.lighting},
+      {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},
+      {"passes", passes},
+      {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},
+      {"shadow_map_bytes", stats.shadow_map_bytes},
+      {"dropped_light_pairs", stats.dropped_light_pairs},
+      {"shadows",
+       {{"views", shadows.views},
+        {"raster", shadows.raster ? Json(*shadows.raster) : Json()},
+        {"budget_bytes", shadows.budget_bytes},
+        {"page_size", shadows.page_size},
+        {"pages", shadows.pages},
+        {"used_bytes", shadows.used_bytes},
+        {"lights_per_resolution", per_resolution},
+        {"lights_without_shadow", shadows.lights_without_shadow},
+        {"lights_waiting", shadows.lights_waiting},
+        {"views_rendered", summary_json(shadows.views_rendered)},
+        {"views_cached", summary_json(shadows.views_cached)},
+        {"views_moving_only", summary_json(shadows.views_moving_only)},
+        {"caster_draws", shadows.caster_draws}}},
+      {"shadow_budget",
+       {{"budget_ms", budget.budget_ms ? Json(*budget.budget_ms) : Json()},
+        {"measured_ms", summary_json(budget.measured_ms)},
+        {"bound", bound_most(budget)},
+        {"frames_bound", {{"time", budget.frames_bound_by_time}, {"memory", budget.frames_bound_by_memory}}},
+        {"lights_demoted_by_time", summary_json(budget.lights_demoted_by_time)},
+        {"views_deferred_by_time", summary_json(budget.views_deferred_by_time)},
+        {"lights_demoted_by_memory", summary_json(budget.lights_demoted_by_memory)},
+        {"lights_dropped_by_memory", summary_json(budget.lights_dropped_by_memory)},
+        {"lowered_tiers", budget.lowered_tiers},
+        {"view_cap", budget.view_cap ? Json(*budget.view_cap) : Json()}}},
+      {"settings", settings}};
 }
 
 }  // namespace

@@ -45,6 +45,29 @@
 //                                                  // casters drawn alone over static layers
 //     "caster_draws": 0                          // caster instances drawn into views, a late frame
 //   },
+//   "shadow_budget": {                           // what the two shadow budgets held down (README,
+//                                                // "Lights and shadows"): memory (--shadow-memory,
+//                                                // the atlas) and time (--shadow-budget-ms)
+//     "budget_ms": 6.0,                          // the time budget in use; null: none (CPU devices'
+//                                                // default, 0, --naive)
+//     "measured_ms": {"median": ..., "min": ..., "max": ...},  // per timed frame: the shadow
+//                                                // passes' GPU time; null without timestamps
+//     "bound": "time",                           // the budget that held the most frames down:
+//                                                // time, memory, or none when neither held any
+//     "frames_bound": {"time": 120, "memory": 0},  // frames each held down (a frame may count
+//                                                // for both); time: a light demoted or a view
+//                                                // deferred, memory: a light demoted or dropped
+//     "lights_demoted_by_time": {...},           // per frame: lights below the resolution their
+//                                                // size on screen asks
+//     "views_deferred_by_time": {...},           // per frame: views due, within --shadow-updates,
+//                                                // left for later frames
+//     "lights_demoted_by_memory": {...},         // per frame: lights below what they want
+//     "lights_dropped_by_memory": {...},         // per frame: lights without shadow
+//     "lowered_tiers": 1.25,                     // last frame: log2 of every light's resolution
+//                                                // lowered by this much (never below its floor)
+//     "view_cap": null                           // last frame: the time budget's cap on views
+//                                                // redrawn; null: none
+//   },
 //   "settings": {"width": 1280, "lighting": "auto", "camera": null, "headless": true, ...}
 //                                                // every option of the run by name (the
 //                                                // settings tables): numbers, true/false for
@@ -106,6 +129,19 @@ struct RunStats {
     std::optional<TimeSummary> views_moving_only;
     std::uint64_t caster_draws = 0;
   } shadows;
+
+  struct ShadowBudget {
+    std::optional<double> budget_ms;         // unset: no time budget
+    std::optional<TimeSummary> measured_ms;  // per timed frame
+    std::uint64_t frames_bound_by_time = 0;  // "bound" is the larger, "none" when both are 0
+    std::uint64_t frames_bound_by_memory = 0;
+    std::optional<TimeSummary> lights_demoted_by_time;  // per frame, counts summarized like times
+    std::optional<TimeSummary> views_deferred_by_time;
+    std::optional<TimeSummary> lights_demoted_by_memory;
+    std::optional<TimeSummary> lights_dropped_by_memory;
+    double lowered_tiers = 0.0;
+    std::optional<std::uint32_t> view_cap;  // unset: none
+  } shadow_budget;
 };
 
 // Writes `stats` as the JSON above (indented, one trailing newline), replacing the file.

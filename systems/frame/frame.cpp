@@ -103,6 +103,7 @@ void Frame::record(const vk::FrameSlot& frame, double time_seconds,
   shadow_views_cached_.push_back(shadows.views_cached);
   shadow_views_moving_only_.push_back(shadows.views_moving_only);
   drawn_views_[frame.frame_number % drawn_views_.size()] = {frame.frame_number, renderer_.shadow_work()};
+  record_shadow_budgets(shadows);
   dropped_light_pairs_ += renderer_.dropped_light_pairs();
   declare_passes(frame.slot, present);
   timed(phase_ms_.declare);
@@ -116,7 +117,18 @@ void Frame::report_shadow_time() {
   reported_frame_ = timings->frame_number;
   const DrawnViews& drawn = drawn_views_[timings->frame_number % drawn_views_.size()];
   if (drawn.frame != timings->frame_number) return;
-  renderer_.measured_shadow_time(*timings, drawn.work);
+  shadow_budget_.shadow_ms.push_back(renderer_.measured_shadow_time(*timings, drawn.work));
+}
+
+void Frame::record_shadow_budgets(const shadows::ShadowScheduleStats& shadows) {
+  ShadowBudgetRecord& record = shadow_budget_;
+  record.lights_demoted_by_time.push_back(shadows.lights_demoted_by_time);
+  record.views_deferred_by_time.push_back(shadows.views_deferred_by_time);
+  record.lights_demoted_by_memory.push_back(shadows.lights_demoted_by_memory);
+  record.lights_dropped_by_memory.push_back(shadows.lights_dropped_by_memory);
+  if (shadows.lights_demoted_by_time > 0 || shadows.views_deferred_by_time > 0) ++record.frames_bound_by_time;
+  if (shadows.lights_demoted_by_memory > 0 || shadows.lights_dropped_by_memory > 0)
+    ++record.frames_bound_by_memory;
 }
 
 double Frame::last_cpu_ms() const {

@@ -116,6 +116,17 @@ class Frame {
   // With the GPU idle: the (tile, light) pairs the frames recorded so far left out of full light
   // lists (SceneRenderer::dropped_light_pairs), counted from zero again after.
   uint64_t take_dropped_light_pairs();
+  // What the shadow budgets did: per timed frame, its shadow passes' GPU milliseconds; per
+  // recorded frame, what each budget held down (shadows::ShadowScheduleStats), and how many frames
+  // each held down at all.
+  struct ShadowBudgetRecord {
+    std::vector<double> shadow_ms;
+    std::vector<double> lights_demoted_by_time, views_deferred_by_time;
+    std::vector<double> lights_demoted_by_memory, lights_dropped_by_memory;
+    uint64_t frames_bound_by_time = 0;
+    uint64_t frames_bound_by_memory = 0;
+  };
+  const ShadowBudgetRecord& shadow_budget_record() const { return shadow_budget_; }
 
  private:
   // Advances the animation clock by `seconds` while animation plays, then runs the systems.
@@ -124,6 +135,8 @@ class Frame {
   // Hands the renderer the latest timed frame's pass times with the shadow work it drew (the
   // automatic raster choice and the time budget learn from them).
   void report_shadow_time();
+  // Adds the prepared frame's shadow budget effects to shadow_budget_.
+  void record_shadow_budgets(const shadows::ShadowScheduleStats& shadows);
   void execute(const vk::FrameSlot& frame);
 
   vk::VulkanContext& context_;
@@ -146,6 +159,7 @@ class Frame {
   std::vector<double> shadow_views_cached_;
   std::vector<double> shadow_views_moving_only_;
   uint64_t dropped_light_pairs_ = 0;
+  ShadowBudgetRecord shadow_budget_;
   // The shadow work the last frames drew, by frame number, until their timings come back.
   struct DrawnViews {
     uint64_t frame = UINT64_MAX;

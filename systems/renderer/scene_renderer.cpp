@@ -308,10 +308,11 @@ rg::Format SceneRenderer::lit_format() const {
   return TiledLightingPass::lit_sum_format;
 }
 
-void SceneRenderer::measured_shadow_time(const vk::FrameTimings& timings, const ShadowWork& work) {
+double SceneRenderer::measured_shadow_time(const vk::FrameTimings& timings, const ShadowWork& work) {
   const ShadowPassTimes times = shadow_pass_times(timings);
   if (batch_) batch_->measured(times, work.views);
   measured_shadow_ms(times.ms, work);
+  return times.ms;
 }
 
 uint64_t SceneRenderer::shadow_caster_draws() const {

@@ -115,8 +115,9 @@ class SceneRenderer {
   };
   ShadowWork shadow_work() const { return {schedule_.stats().views_rendered, schedule_.time_budget_step()}; }
   // A timed frame's passes, which drew `work`: what the batch's automatic raster choice
-  // (ShadowViewBatch::measured) and the time budget learn from (shadow_pass_times).
-  void measured_shadow_time(const vk::FrameTimings& timings, const ShadowWork& work);
+  // (ShadowViewBatch::measured) and the time budget learn from. Returns the frame's shadow passes'
+  // milliseconds (shadow_pass_times).
+  double measured_shadow_time(const vk::FrameTimings& timings, const ShadowWork& work);
   // The time budget's part of it: the shadow passes of the frame that drew `work` took `ms`.
   void measured_shadow_ms(double ms, const ShadowWork& work) {
     schedule_.measured(work.budget_step, work.views, ms);

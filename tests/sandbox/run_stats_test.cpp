@@ -97,6 +97,16 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                    TimeSummary{20.0, 0.0, 40.0},
                    TimeSummary{60.0, 6.0, 600.0},
                    98'765};
+  stats.shadow_budget = {6.0,
+                         TimeSummary{5.5, 2.25, 19.0},
+                         120,
+                         7,
+                         TimeSummary{40.0, 0.0, 300.0},
+                         TimeSummary{0.0, 0.0, 64.0},
+                         TimeSummary{0.0, 0.0, 12.0},
+                         TimeSummary{0.0, 0.0, 3.0},
+                         1.25,
+                         96};
   stats.settings = {{"width", SettingType::whole, "640"},
                     {"exposure", SettingType::number, "0.5"},
                     {"naive", SettingType::flag, "true"},
@@ -108,7 +118,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 15u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 16u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);
@@ -164,6 +174,31 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   expect_summary(shadows.at("views_cached"), *stats.shadows.views_cached);
   expect_summary(shadows.at("views_moving_only"), *stats.shadows.views_moving_only);
   EXPECT_EQ(shadows.at("caster_draws"), 98'765);
+  const nlohmann::json& budget = json.at("shadow_budget");
+  EXPECT_EQ(budget.size(), 10u) << budget.dump(2);
+  EXPECT_EQ(budget.at("budget_ms"), 6.0);
+  expect_summary(budget.at("measured_ms"), *stats.shadow_budget.measured_ms);
+  EXPECT_EQ(budget.at("bound"), "time") << "more frames held down by time than by memory";
+  EXPECT_EQ(budget.at("frames_bound"), nlohmann::json({{"time", 120}, {"memory", 7}}));
+  expect_summary(budget.at("lights_demoted_by_time"), *stats.shadow_budget.lights_demoted_by_time);
+  expect_summary(budget.at("views_deferred_by_time"), *stats.shadow_budget.views_deferred_by_time);
+  expect_summary(budget.at("lights_demoted_by_memory"), *stats.shadow_budget.lights_demoted_by_memory);
+  expect_summary(budget.at("lights_dropped_by_memory"), *stats.shadow_budget.lights_dropped_by_memory);
+  EXPECT_EQ(budget.at("lowered_tiers"), 1.25);
+  EXPECT_EQ(budget.at("view_cap"), 96);
+}
+
+TEST(StatsJson, TheShadowBudgetBoundIsTheOneThatHeldTheMostFramesDown) {
+  RunStats stats;
+  stats.shadow_budget.frames_bound_by_memory = 3;
+  stats.shadow_budget.frames_bound_by_time = 2;
+  TempDir dir;
+  const std::string path = dir.path("stats.json").string();
+  write_stats_json(path, stats);
+  EXPECT_EQ(read_json(path).at("shadow_budget").at("bound"), "memory");
+  stats.shadow_budget.frames_bound_by_time = 3;
+  write_stats_json(path, stats);
+  EXPECT_EQ(read_json(path).at("shadow_budget").at("bound"), "time");
 }
 
 TEST(StatsJson, MissingMeasurementsAreNull) {
@@ -180,6 +215,11 @@ TEST(StatsJson, MissingMeasurementsAreNull) {
   EXPECT_TRUE(json.at("passes").empty());
   EXPECT_EQ(json.at("frames"), 0);
   EXPECT_TRUE(json.at("shadows").at("views_rendered").is_null());
+  const nlohmann::json& budget = json.at("shadow_budget");
+  EXPECT_TRUE(budget.at("budget_ms").is_null()) << "no time budget";
+  EXPECT_TRUE(budget.at("measured_ms").is_null());
+  EXPECT_EQ(budget.at("bound"), "none");
+  EXPECT_TRUE(budget.at("view_cap").is_null());
 }
 
 TEST(StatsJson, ReplacesAnExistingFile) {
