@@ -5,7 +5,8 @@ For each light type (point, spot, mixed), light count and mode (optimized: the s
 defaults; naive: --naive), renders the stress scene headless with every light moving (so every
 shadow map is redrawn every frame) from each of --cameras (overview: the whole hall; street:
 eye height among the lights) and reads its --stats: times, the raster used, the light-list pairs
-dropped. Writes sweep.csv and, when gnuplot is
+dropped, the shadow time budget in use and what it did (the budget that bound most, lights
+demoted and views deferred by time, the tiers it lowered). Writes sweep.csv and, when gnuplot is
 installed (apt-get install gnuplot-nox), sweep.png (GPU frame) and sweep_lighting.png (the
 lighting passes alone) into --out; prints progress per run and a summary table. Python's
 standard library only.
@@ -13,6 +14,7 @@ standard library only.
   python3 tools/sweep/sweep.py --out sweep-lavapipe
   python3 tools/sweep/sweep.py --counts 1,4,16,64,256,1024,4096 --width 1920 --height 1080 --out sweep-gpu
   python3 tools/sweep/sweep.py --types mixed --cameras overview,street --modes optimized --out sweep-near
+  python3 tools/sweep/sweep.py --shadow-budget-ms 0 --out sweep-unbudgeted   # no time budget on a GPU
 """
 import argparse
 import csv
@@ -49,6 +51,9 @@ def parse_args():
                    help="once a type and mode takes longer per frame, its larger counts are skipped")
     p.add_argument("--timeout", type=float, default=600.0, help="seconds per run")
     p.add_argument("--out", default="sweep", help="folder for sweep.csv and sweep.png")
+    p.add_argument("--shadow-budget-ms", type=float,
+                   help="the sandbox's --shadow-budget-ms (default: the sandbox's, 6 on GPUs, none on CPU devices; "
+                        "0: none); --naive runs have none")
     p.add_argument("--sandbox-args", default="", help="more sandbox options, e.g. '--device NVIDIA'")
     p.add_argument("--from-csv", help="render nothing: plot and summarize an earlier sweep.csv (e.g. one "
                    "made on a machine without gnuplot)")
@@ -81,7 +86,10 @@ def run_once(args, light_type, count, mode, camera, stats_path):
                str(args.height), "--frames", str(args.frames), "--scene-triangles", str(args.triangles),
                "--moving-lights", str(args.moving), "--light-spread", str(args.light_spread), "--stats", stats_path,
                "--screenshot", ""]
-    command += light_options(light_type, count) + (["--naive"] if mode == "naive" else []) + args.sandbox_args.split()
+    command += light_options(light_type, count) + (["--naive"] if mode == "naive" else [])
+    if args.shadow_budget_ms is not None:
+        command += ["--shadow-budget-ms", str(args.shadow_budget_ms)]
+    command += args.sandbox_args.split()
     result = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
     if result.returncode != 0:
         raise RuntimeError(f"exit {result.returncode}: {result.stderr.strip()[-400:]}")
@@ -97,12 +105,17 @@ def row_of(stats, light_type, count, mode, camera):
     passes = stats["passes"]
     shadow = sum(p["gpu_ms"]["median"] for p in passes if p["name"].startswith("shadow"))
     lighting = sum(p["gpu_ms"]["median"] for p in passes if p["name"].startswith(LIGHTING_PASSES))
+    budget = stats.get("shadow_budget", {})
     return {"device": stats["device"], "type": light_type, "lights": count, "mode": mode, "camera": camera,
             "light_spread": stats.get("settings", {}).get("light-spread", ""),
             "lighting_path": stats.get("lighting", ""), "raster": stats["shadows"].get("raster") or "",
             "dropped_light_pairs": stats.get("dropped_light_pairs", ""), "gpu_frame_ms": median(stats["gpu_frame_ms"]),
             "wall_frame_ms": median(stats.get("wall_frame_ms")), "cpu_frame_ms": median(stats["cpu_frame_ms"]),
             "shadow_ms": round(shadow, 4), "lighting_ms": round(lighting, 4),
+            "shadow_budget_ms": budget.get("budget_ms") or "", "budget_bound": budget.get("bound", ""),
+            "lowered_tiers": budget.get("lowered_tiers", ""),
+            "lights_demoted_by_time": median(budget.get("lights_demoted_by_time")),
+            "views_deferred_by_time": median(budget.get("views_deferred_by_time")),
             "triangles": stats["scene"]["triangles"], "width": stats["resolution"]["width"],
             "height": stats["resolution"]["height"]}
 
@@ -145,7 +158,8 @@ def plot(out_dir, rows, args):
 
 def read_csv(path):
     numbers = {"lights": int, "triangles": int, "dropped_light_pairs": int, "width": int, "height": int, "gpu_frame_ms": float, "wall_frame_ms": float,
-               "cpu_frame_ms": float, "shadow_ms": float, "lighting_ms": float}
+               "cpu_frame_ms": float, "shadow_ms": float, "lighting_ms": float, "shadow_budget_ms": float,
+               "lowered_tiers": float, "lights_demoted_by_time": float, "views_deferred_by_time": float}
     with open(path) as f:
         return [{k: (numbers[k](v) if k in numbers and v != "" else v) for k, v in row.items()}
                 for row in csv.DictReader(f)]
@@ -198,7 +212,9 @@ def main():
             rows.append(row)
             print(f"{label}: GPU {row['gpu_frame_ms']:9.2f} ms (shadows {row['shadow_ms']:8.2f}, lighting "
                   f"{row['lighting_ms']:8.2f}), wall {row['wall_frame_ms'] or 0:9.2f} ms, {row['raster'] or '-'} "
-                  f"raster, {row['dropped_light_pairs']} pairs dropped  [{time.monotonic() - started:.0f} s]",
+                  f"raster, {row['dropped_light_pairs']} pairs dropped, budget {row['shadow_budget_ms'] or '-'} ms bound "
+                  f"{row['budget_bound'] or '-'} ({row['lights_demoted_by_time'] or 0:.0f} lights demoted, "
+                  f"{row['views_deferred_by_time'] or 0:.0f} views deferred)  [{time.monotonic() - started:.0f} s]",
                   flush=True)
             if row["gpu_frame_ms"] and row["gpu_frame_ms"] > args.max_frame_ms:
                 too_slow.add((light_type, camera, mode))
