@@ -5,13 +5,16 @@
 // atlas planner's) stays a second cap on top.
 //
 // - Two knobs, in this order. Resolution first: `lowered_tiers`, by which the planner lowers log2
-//   of every light's resolution before its rounding (ShadowAtlasPlanner::plan: same rounding and
-//   hysteresis, never below a light's quality floor), so every map keeps in proportion to its
-//   light's size on screen and the smallest, least important lights reach their floor and stop
-//   first. Once no light is above its floor (Plan::lights_lowerable), views: `view_cap`, the
-//   views redrawn a frame at most; ShadowCache defers the rest stalest first, so every view due
-//   comes round. No light loses its shadow to time. Relaxing undoes them in reverse: the cap
-//   first (gone once it covers the views due), then the tiers.
+//   of every light's resolution before its rounding (ShadowAtlasPlanner::plan: importances
+//   followed with a backlash, so that they neither pop nor keep a step from being undone; never
+//   below a light's quality floor), so every map keeps in proportion to its light's size on
+//   screen and the smallest, least important lights reach their floor and stop first. A uniform
+//   offset rather than the memory budget's demotions from the least important up: those save
+//   little time per light demoted (time goes with texels, which the large maps hold), and a light
+//   whose importance crosses another's would pop between tiers frame after frame. Once no light is above its
+//   floor (Plan::lights_lowerable), views: `view_cap`, the views redrawn a frame at most; ShadowCache defers
+//   the rest stalest first, so every view due comes round. No light loses its shadow to time. Relaxing undoes
+//   them in reverse: the cap first (gone once it covers the views due), then the tiers.
 // - Late measurements: a frame's times come back frames in flight after it was planned, and a
 //   frame planned before the last change says nothing about it. Each change starts a new step();
 //   a frame hands back the step it was planned with (measured()) and only the current step's
