@@ -48,8 +48,8 @@
 //   "shadow_budget": {                           // what the two shadow budgets held down (README,
 //                                                // "Lights and shadows"): memory (--shadow-memory,
 //                                                // the atlas) and time (--shadow-budget-ms)
-//     "budget_ms": 6.0,                          // the time budget in use; null: none (CPU devices'
-//                                                // default, 0, --naive)
+//     "budget_ms": 6.0,                          // the time budget in use; null: none (CPU
+//                                                // devices' default, 0, --naive)
 //     "measured_ms": {"median": ..., "min": ..., "max": ...},  // per timed frame: the shadow
 //                                                // passes' GPU time; null without timestamps
 //     "bound": "time",                           // the budget that held the most frames down:

@@ -111,7 +111,7 @@ class SceneRenderer {
   // What the last prepared frame's shadow passes draw, to hand back with the frame's times.
   struct ShadowWork {
     uint32_t views = 0;        // 2D maps and cube faces drawn
-    uint64_t budget_step = 0;  // the limits of the time budget it was planned with (ShadowTimeBudget::step)
+    uint64_t budget_step = 0;  // ShadowTimeBudget::step() it was planned at
   };
   ShadowWork shadow_work() const { return {schedule_.stats().views_rendered, schedule_.time_budget_step()}; }
   // A timed frame's passes, which drew `work`: what the batch's automatic raster choice

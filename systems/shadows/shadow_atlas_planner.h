@@ -88,7 +88,7 @@ struct AtlasStats {
   uint32_t lights_without_shadow = 0;
   uint32_t demoted_by_budget = 0;  // shadowed at a lower resolution than they want
   uint32_t dropped_by_budget = 0;  // without shadow because of the budget
-  uint32_t demoted_by_time = 0;    // wanting less than their importance asks: plan()'s lowered_tiers
+  uint32_t demoted_by_time = 0;    // wanting less than their importance asks (lowered_tiers)
   uint32_t lowerable_by_time = 0;  // above their quality floor: more lowered tiers would lower them
 };
 

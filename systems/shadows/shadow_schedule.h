@@ -3,10 +3,10 @@
 // (resolution from each light's importance on screen, within the memory budget) and the cache's
 // choice of the views to re-render (what changed, within a per-frame budget of views), applied
 // to a frame's lights, both within the time budget's limits when it has one (ShadowTimeBudget:
-// lower resolutions, fewer views, learnt from the shadow passes' measured GPU time). After schedule(), every
-// shadowed view carries its tiles or none, `render` says whether it is drawn this frame, and each record says
-// where its map is; a light whose map holds nothing valid yet (new, moved, or waiting for the budget) is
-// shaded without a shadow.
+// lower resolutions, fewer views, learnt from the shadow passes' measured GPU time). After
+// schedule(), every shadowed view carries its tiles or none, `render` says whether it is drawn
+// this frame, and each record says where its map is; a light whose map holds nothing valid yet
+// (new, moved, or waiting for the budget) is shaded without a shadow.
 #include <cstdint>
 #include <optional>
 #include <span>

@@ -11,10 +11,11 @@
 //   screen and the smallest, least important lights reach their floor and stop first. A uniform
 //   offset rather than the memory budget's demotions from the least important up: those save
 //   little time per light demoted (time goes with texels, which the large maps hold), and a light
-//   whose importance crosses another's would pop between tiers frame after frame. Once no light is above its
-//   floor (Plan::lights_lowerable), views: `view_cap`, the views redrawn a frame at most; ShadowCache defers
-//   the rest stalest first, so every view due comes round. No light loses its shadow to time. Relaxing undoes
-//   them in reverse: the cap first (gone once it covers the views due), then the tiers.
+//   whose importance crosses another's would pop between tiers frame after frame. Once no light
+//   is above its floor (Plan::lights_lowerable), views: `view_cap`, the views redrawn a frame at
+//   most; ShadowCache defers the rest stalest first, so every view due comes round. No light
+//   loses its shadow to time. Relaxing undoes them in reverse: the cap first (gone once it
+//   covers the views due), then the tiers.
 // - Late measurements: a frame's times come back frames in flight after it was planned, and a
 //   frame planned before the last change says nothing about it. Each change starts a new step();
 //   a frame hands back the step it was planned with (measured()) and only the current step's
@@ -59,7 +60,7 @@ class ShadowTimeBudget {
   struct Plan {
     uint32_t lights_lowerable = 0;  // above their quality floor (AtlasStats::lowerable_by_time)
     uint32_t views_uncapped = 0;    // views due the frame would have drawn without view_cap
-    uint32_t lights_demoted = 0;    // below what their size on screen asks (AtlasStats::demoted_by_time)
+    uint32_t lights_demoted = 0;    // below what their size asks (AtlasStats::demoted_by_time)
     uint32_t views_deferred = 0;    // views_uncapped less the views drawn
   };
 
@@ -68,8 +69,8 @@ class ShadowTimeBudget {
   static constexpr double relax_below = 0.8;
   static constexpr float tier_step = 0.25f;
   static constexpr float max_tier_step = 2.0f;
-  static constexpr float max_lowered_tiers =
-      10.0f;                                      // more than any atlas has (page / min_resolution <= 1024)
+  // More than any atlas has: page_size / min_resolution <= 1024.
+  static constexpr float max_lowered_tiers = 10.0f;
   static constexpr uint32_t min_view_cap = 6;     // a point light's six faces
   static constexpr uint64_t min_relax_hold = 30;  // measured frames
   static constexpr uint64_t max_relax_hold = 960;
