@@ -54,7 +54,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
   stats.shadow_map_bytes = atlas.bytes();
   stats.dropped_light_pairs = frame.take_dropped_light_pairs();
   if (stats.dropped_light_pairs > 0) {
-    std::printf("shadowgraph: %llu (tile, light) pairs were left out of full light lists over the run\n",
+    std::printf("shadowgraph: %llu (tile, light) pairs found no room in the light lists over the run\n",
                 static_cast<unsigned long long>(stats.dropped_light_pairs));
   }
   const std::optional<shadows::ShadowRaster> raster = renderer.shadow_raster();

@@ -28,8 +28,8 @@
 //   "passes": [{"name": "lighting", "gpu_ms": {"median": ..., "min": ..., "max": ...}}],
 //   "validation_errors": 0,                      // null when the validation layer was off
 //   "shadow_map_bytes": 0,                       // GPU memory holding shadow maps (the atlas image)
-//   "dropped_light_pairs": 0,                    // (tile, light) pairs left out of full light
-//                                                // lists over the run: lights missing there
+//   "dropped_light_pairs": 0,                    // (tile, light) pairs the light lists' pool had
+//                                                // no room for over the run: lights missing there
 //   "shadows": {
 //     "views": "batched",                        // batched or per-light (--shadow-views)
 //     "raster": "compute",                       // batched: compute or hardware; per-light: null

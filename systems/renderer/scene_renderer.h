@@ -78,8 +78,8 @@ class SceneRenderer {
   LightingPath lighting() const { return lighting_; }
   const GpuScene& gpu_scene() const { return gpu_scene_; }
   const shadows::FrameLights& lights() const { return lights_; }
-  // The (tile, light) pairs left out of full light lists by the frame read back in the last
-  // prepare (frames in flight ago): lights missing from some tiles' lighting.
+  // The (tile, light) pairs the light lists' pool had no room for in the frame read back in the
+  // last prepare (frames in flight ago): lights missing from some tiles' lighting.
   uint64_t dropped_light_pairs() const { return dropped_light_pairs_; }
   // With the GPU idle: the pairs the frames not read back yet left out (every slot's).
   uint64_t drain_dropped_light_pairs();
