@@ -57,6 +57,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
     std::printf("shadowgraph: %llu (tile, light) pairs found no room in the light lists over the run\n",
                 static_cast<unsigned long long>(stats.dropped_light_pairs));
   }
+  stats.light_list_pairs = summarize(frame.light_list_pairs());
   const std::optional<shadows::ShadowRaster> raster = renderer.shadow_raster();
   stats.shadows = {std::string(to_string(renderer.shadow_views())),
                    raster ? std::optional<std::string>(to_string(*raster)) : std::nullopt,

@@ -98,6 +98,7 @@ Json stats_json(const RunStats& stats) {
           {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},
           {"shadow_map_bytes", stats.shadow_map_bytes},
           {"dropped_light_pairs", stats.dropped_light_pairs},
+          {"light_list_pairs", summary_json(stats.light_list_pairs)},
           {"shadows",
            {{"views", shadows.views},
             {"raster", shadows.raster ? Json(*shadows.raster) : Json()},

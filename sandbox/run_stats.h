@@ -30,6 +30,11 @@
 //   "shadow_map_bytes": 0,                       // GPU memory holding shadow maps (the atlas image)
 //   "dropped_light_pairs": 0,                    // (tile, light) pairs the light lists' pool had
 //                                                // no room for over the run: lights missing there
+//   "light_list_pairs": {"median": ..., "min": ..., "max": ...},  // per frame: the (tile, light)
+//                                                // pairs the opaque surfaces' light lists held,
+//                                                // which lighting's cost follows, from the
+//                                                // frames read back; null when lit without
+//                                                // lists (fused)
 //   "shadows": {
 //     "views": "batched",                        // batched or per-light (--shadow-views)
 //     "raster": "compute",                       // batched: compute or hardware; per-light: null
@@ -106,6 +111,7 @@ struct RunStats {
   std::optional<std::uint32_t> validation_errors;
   std::uint64_t shadow_map_bytes = 0;
   std::uint64_t dropped_light_pairs = 0;
+  std::optional<TimeSummary> light_list_pairs;  // counts, summarized like times
   // Every setting's value as the command line writes it (Setting::get), in the table's order.
   struct EchoedSetting {
     std::string name;

@@ -105,6 +105,8 @@ void Frame::record(const vk::FrameSlot& frame, double time_seconds,
   drawn_views_[frame.frame_number % drawn_views_.size()] = {frame.frame_number, renderer_.shadow_work()};
   record_shadow_budgets(shadows);
   dropped_light_pairs_ += renderer_.dropped_light_pairs();
+  if (const std::optional<uint64_t> pairs = renderer_.light_list_pairs())
+    light_list_pairs_.push_back(double(*pairs));
   declare_passes(frame.slot, present);
   timed(phase_ms_.declare);
   execute(frame);

@@ -111,6 +111,8 @@ class Frame {
   double last_cpu_ms() const;
   // Per recorded frame: shadow views (2D maps, cube faces) drawn, and kept from earlier frames.
   const std::vector<double>& shadow_views_rendered() const { return shadow_views_rendered_; }
+  // Per frame: the (tile, light) pairs the light lists held (SceneRenderer::light_list_pairs).
+  const std::vector<double>& light_list_pairs() const { return light_list_pairs_; }
   const std::vector<double>& shadow_views_cached() const { return shadow_views_cached_; }
   const std::vector<double>& shadow_views_moving_only() const { return shadow_views_moving_only_; }
   // With the GPU idle: the (tile, light) pairs the frames recorded so far left out of full light
@@ -156,6 +158,7 @@ class Frame {
   std::shared_ptr<const rg::CompiledPlan> plan_;
   PhaseTimes phase_ms_;
   std::vector<double> shadow_views_rendered_;
+  std::vector<double> light_list_pairs_;
   std::vector<double> shadow_views_cached_;
   std::vector<double> shadow_views_moving_only_;
   uint64_t dropped_light_pairs_ = 0;

@@ -125,6 +125,7 @@ uint64_t LightTilesPass::take_dropped_pairs(uint32_t slot) {
   std::memcpy(&feedback, feedback_.buffer(slot).mapped(), sizeof(feedback));
   feedback_.write(slot, std::span(&no_feedback, 1));
   pool_.asked(feedback.entries_wanted);
+  listed_pairs_ = feedback.entries_wanted;
   return feedback.dropped_pairs;
 }
 

@@ -76,6 +76,9 @@ class LightTilesPass {
   // that last used the slot could not list (its pool ran out), zeroed for this frame. What that
   // frame's lists asked of the pool sizes the pool of the frames after.
   uint64_t take_dropped_pairs(uint32_t slot);
+  // What the frame the last take_dropped_pairs read back asked of the pool: the (tile, light)
+  // pairs its lists held, dropped ones included, which the lighting's cost follows.
+  uint64_t listed_pairs() const { return listed_pairs_; }
   // The entries of the pool of the next frame culling `light_count` lights over `grid`.
   uint64_t pool_entries(LightTileGrid grid, uint32_t light_count) const {
     return pool_.entries(grid.count(), light_count);
@@ -87,6 +90,7 @@ class LightTilesPass {
   // Per slot, as light_tiles_interface.glsl's Feedback: the dropped pairs, the entries wanted.
   vk::FrameBuffers feedback_;
   LightListPool pool_;
+  uint64_t listed_pairs_ = 0;
   vk::UniqueSampler nearest_;
   vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;

@@ -192,6 +192,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     frames_since_drop_message_ = 0;
   }
   ++frames_since_drop_message_;
+  ++frames_prepared_;
   cpu_steps_.views = lap(mark);
 }
 
@@ -290,6 +291,11 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
 uint64_t SceneRenderer::take_dropped_light_pairs(uint32_t slot) {
   return (deferred_ ? deferred_->light_tiles.take_dropped_pairs(slot) : 0) +
          (transparent_ ? transparent_->take_dropped_pairs(slot) : 0);
+}
+
+std::optional<uint64_t> SceneRenderer::light_list_pairs() const {
+  if (!deferred_ || frames_prepared_ <= frames_in_flight_) return std::nullopt;
+  return deferred_->light_tiles.listed_pairs();
 }
 
 uint64_t SceneRenderer::drain_dropped_light_pairs() {

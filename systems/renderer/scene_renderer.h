@@ -81,6 +81,10 @@ class SceneRenderer {
   // The (tile, light) pairs the light lists' pool had no room for in the frame read back in the
   // last prepare (frames in flight ago): lights missing from some tiles' lighting.
   uint64_t dropped_light_pairs() const { return dropped_light_pairs_; }
+  // The (tile, light) pairs the opaque surfaces' light lists held in that frame, dropped ones
+  // included (LightTilesPass::listed_pairs); none before a frame was read back, or without
+  // tiled lighting.
+  std::optional<uint64_t> light_list_pairs() const;
   // With the GPU idle: the pairs the frames not read back yet left out (every slot's).
   uint64_t drain_dropped_light_pairs();
   const ShadowAtlas& shadow_atlas() const { return atlas_; }
@@ -178,6 +182,7 @@ class SceneRenderer {
   shadows::FrameLights lights_;
   uint64_t dropped_light_pairs_ = 0;
   uint64_t frames_since_drop_message_ = 300;  // a message at most every 300 frames
+  uint64_t frames_prepared_ = 0;
 };
 
 }  // namespace sg

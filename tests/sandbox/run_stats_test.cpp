@@ -84,6 +84,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.validation_errors = 4;
   stats.shadow_map_bytes = 67'108'864;
   stats.dropped_light_pairs = 12;
+  stats.light_list_pairs = TimeSummary{5000.0, 4000.0, 6000.0};
   stats.shadows = {"batched",
                    "compute",
                    1ull << 30,
@@ -118,7 +119,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 16u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 17u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);
@@ -153,6 +154,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(json.at("validation_errors"), 4);
   EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
   EXPECT_EQ(json.at("dropped_light_pairs"), 12);
+  expect_summary(json.at("light_list_pairs"), *stats.light_list_pairs);
   // Settings keep their types: numbers, true/false for flags, null when unset.
   EXPECT_EQ(json.at("settings"), nlohmann::json({{"width", 640},
                                                  {"exposure", 0.5},
@@ -215,6 +217,7 @@ TEST(StatsJson, MissingMeasurementsAreNull) {
   EXPECT_TRUE(json.at("passes").empty());
   EXPECT_EQ(json.at("frames"), 0);
   EXPECT_TRUE(json.at("shadows").at("views_rendered").is_null());
+  EXPECT_TRUE(json.at("light_list_pairs").is_null());
   const nlohmann::json& budget = json.at("shadow_budget");
   EXPECT_TRUE(budget.at("budget_ms").is_null()) << "no time budget";
   EXPECT_TRUE(budget.at("measured_ms").is_null());

@@ -130,6 +130,7 @@ class LightTilesTest : public GpuTest {
     std::vector<uint32_t> tiles_of_group;
     std::vector<glm::uvec4> commands;
     uint64_t dropped = 0;  // LightTilesPass::take_dropped_pairs
+    uint64_t asked = 0;    // LightTilesPass::listed_pairs
   };
   // Cullings of `lights` against `depth` on the device, `frames` one after another by one pass
   // whose pool holds at most `most_pool_entries` (0: the device's limit), each frame's pool as
@@ -205,6 +206,7 @@ TEST_F(CrowdTest, EveryLightThatReachesATileIsListed) {
        {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
     const Culled culled = cull(lights, shape, depth, view_projection).front();
     EXPECT_EQ(culled.dropped, 0u);
+    EXPECT_EQ(culled.asked, tiles_with_surfaces * 300);
     uint64_t full_tiles = 0;
     for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
       if (tile.empty()) continue;
@@ -227,6 +229,7 @@ TEST_F(CrowdTest, APoolAtItsLimitListsWhatFitsAndCountsTheRest) {
     for (const Culled& culled : cull(lights, shape, depth, view_projection, 2, limit)) {
       ASSERT_EQ(culled.entries.size(), limit);
       EXPECT_EQ(culled.dropped, wanted - limit);
+      EXPECT_EQ(culled.asked, wanted) << "what the lists asked for, the dropped pairs included";
       uint64_t listed = 0;
       for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
         for (uint32_t j = 0; j < tile.size(); ++j) EXPECT_EQ(tile[j], j);
@@ -295,9 +298,10 @@ std::vector<LightTilesTest::Culled> LightTilesTest::cull(const shadows::FrameLig
     executor.execute(frame.cmd, frame.slot, frame.frame_number, graph, compiled.plan, imports);
     ring.submit();
     ring.wait_idle();
+    const uint64_t dropped = pass.take_dropped_pairs(frame.slot);
     culled.push_back({contents<uint32_t>(tile_lights), contents<glm::uvec2>(tile_ranges),
-                      contents<uint32_t>(group_tiles), contents<glm::uvec4>(group_commands),
-                      pass.take_dropped_pairs(frame.slot)});
+                      contents<uint32_t>(group_tiles), contents<glm::uvec4>(group_commands), dropped,
+                      pass.listed_pairs()});
   }
   return culled;
 }
