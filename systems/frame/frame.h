@@ -115,8 +115,8 @@ class Frame {
   const std::vector<double>& light_list_pairs() const { return light_list_pairs_; }
   const std::vector<double>& shadow_views_cached() const { return shadow_views_cached_; }
   const std::vector<double>& shadow_views_moving_only() const { return shadow_views_moving_only_; }
-  // With the GPU idle: the (tile, light) pairs the frames recorded so far left out of full light
-  // lists (SceneRenderer::dropped_light_pairs), counted from zero again after.
+  // With the GPU idle: the (tile, light) pairs the light lists of the frames recorded so far had
+  // no room for (SceneRenderer::dropped_light_pairs), counted from zero again after.
   uint64_t take_dropped_light_pairs();
   // What the shadow budgets did: per timed frame, its shadow passes' GPU milliseconds; per
   // recorded frame, what each budget held down (shadows::ShadowScheduleStats), and how many frames
