@@ -61,6 +61,16 @@ T parse(const std::string& text) {
   return value;
 }
 
+// A field's value as text (`write` makes it), or nullopt for an optional field left unset.
+template <class T, class Write>
+std::optional<std::string> of(const T& value, Write write) {
+  return write(value);
+}
+template <class T, class Write>
+std::optional<std::string> of(const std::optional<T>& value, Write write) {
+  return value ? std::optional(write(*value)) : std::nullopt;
+}
+
 // T, or the T of a std::optional<T>: fields that may be left unset.
 template <class T>
 struct plain {
@@ -100,13 +110,8 @@ Setting<Settings> choice(std::string_view name, Field field, std::string_view he
     for (const auto& [value, value_name] : enum_names(Enum{})) accepted.push_back(value_name);
   }
   return {{name, {}, help, SettingType::choice, std::move(accepted)},
-          [field](const Settings& s) -> std::optional<std::string> {
-            if constexpr (NamedEnum<Value>) {
-              return std::string(to_string(field(s)));
-            } else {
-              const Value& value = field(s);
-              return value ? std::optional(std::string(to_string(*value))) : std::nullopt;
-            }
+          [field](const Settings& s) {
+            return setting_text::of(field(s), [](Enum value) { return std::string(to_string(value)); });
           },
           [field](Settings& s, const std::string& text) { field(s) = *parse_enum<Enum>(text); }};
 }
@@ -117,13 +122,8 @@ Setting<Settings> whole(std::string_view name, std::string_view value_name, Fiel
                         uint64_t max, std::string_view help) {
   using Value = std::remove_cvref_t<decltype(field(std::declval<Settings&>()))>;
   return {{name, value_name, help, SettingType::whole, {}, double(min), double(max)},
-          [field](const Settings& s) -> std::optional<std::string> {
-            if constexpr (std::is_integral_v<Value>) {
-              return setting_text::format(field(s));
-            } else {
-              const Value& value = field(s);
-              return value ? std::optional(setting_text::format(*value)) : std::nullopt;
-            }
+          [field](const Settings& s) {
+            return setting_text::of(field(s), [](auto value) { return setting_text::format(value); });
           },
           [field](Settings& s, const std::string& text) {
             field(s) = setting_text::parse<typename setting_text::plain<Value>::type>(text);
@@ -136,15 +136,12 @@ Setting<Settings> number(std::string_view name, std::string_view value_name, Fie
                          double max, std::string_view help) {
   using Value = std::remove_cvref_t<decltype(field(std::declval<Settings&>()))>;
   return {{name, value_name, help, SettingType::number, {}, min, max},
-          [field](const Settings& s) -> std::optional<std::string> {
-            if constexpr (std::is_floating_point_v<Value>) {
-              return setting_text::format(field(s));
-            } else {
-              const Value& value = field(s);
-              return value ? std::optional(setting_text::format(*value)) : std::nullopt;
-            }
+          [field](const Settings& s) {
+            return setting_text::of(field(s), [](auto value) { return setting_text::format(value); });
           },
-          [field](Settings& s, const std::string& text) { field(s) = setting_text::parse<float>(text); }};
+          [field](Settings& s, const std::string& text) {
+            field(s) = setting_text::parse<typename setting_text::plain<Value>::type>(text);
+          }};
 }
 
 // --NAME TEXT sets a string field.
