@@ -13,6 +13,8 @@
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
 #include "sandbox/sandbox_frame.h"
+#include "systems/frame/gpu_time_log.h"
+#include "systems/frame/headless_frames.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
@@ -35,12 +37,8 @@ class SandboxFrameTest : public GpuTest {
     sandbox::SandboxFrame sandbox_frame(context, scene, options, frames.frames_in_flight());
     Frame& frame = sandbox_frame.frame();
     frame.resize({width, height});
-    for (uint32_t i = 0; i < frame_count; ++i) {
-      vk::FrameSlot& slot = frames.begin_frame();
-      frame.record(slot, i / 60.0);
-      frames.submit();
-    }
-    frames.wait_idle();
+    GpuTimeLog gpu_times;
+    render_headless_frames(frame, frames, frame_count, gpu_times);
     passes = executed_passes(*frame.plan());
     return vk::read_rgba8(context, frame.image());
   }

@@ -13,6 +13,8 @@
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
 #include "systems/frame/frame.h"
+#include "systems/frame/gpu_time_log.h"
+#include "systems/frame/headless_frames.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
@@ -34,12 +36,8 @@ class FrameTest : public GpuTest {
     vk::FrameRing frames(context);
     Frame frame(context, scene, options, frames.frames_in_flight());
     frame.resize({width, height});
-    for (uint32_t i = 0; i < frame_count; ++i) {
-      vk::FrameSlot& slot = frames.begin_frame();
-      frame.record(slot, i / 60.0);
-      frames.submit();
-    }
-    frames.wait_idle();
+    GpuTimeLog gpu_times;
+    render_headless_frames(frame, frames, frame_count, gpu_times);
     passes = executed_passes(*frame.plan());
     shadow_stats = frame.renderer().shadow_stats();
     dropped_light_pairs = frame.take_dropped_light_pairs();
