@@ -58,6 +58,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
                 static_cast<unsigned long long>(stats.dropped_light_pairs));
   }
   stats.light_list_pairs = summarize(frame.light_list_pairs());
+  stats.filtered_shadows = frame.renderer().filtered_lights();
   const std::optional<shadows::ShadowRaster> raster = renderer.shadow_raster();
   stats.shadows = {std::string(to_string(renderer.shadow_views())),
                    raster ? std::optional<std::string>(to_string(*raster)) : std::nullopt,

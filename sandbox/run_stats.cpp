@@ -99,6 +99,7 @@ Json stats_json(const RunStats& stats) {
           {"shadow_map_bytes", stats.shadow_map_bytes},
           {"dropped_light_pairs", stats.dropped_light_pairs},
           {"light_list_pairs", summary_json(stats.light_list_pairs)},
+          {"filtered_shadows", stats.filtered_shadows},
           {"shadows",
            {{"views", shadows.views},
             {"raster", shadows.raster ? Json(*shadows.raster) : Json()},

@@ -15,59 +15,96 @@
 // constant_id 0 is left to the including shader's own constant.
 layout(constant_id = 1) const bool SHADOW_ONLY_VIEW = false;
 
-// One light at world_pos. `reach` folds the light's falloff, spot cone and cylinder lambda
-// into its radiance; where it is zero the light adds nothing (not even shadow color) and its
-// shadow map is not read. The shadow color term is weighted by lambda as section 2's formula
-// has it (lambda is 1 for every light but the cylinder).
-//
-// `shadow_kind` and `algorithm` are the light's own (light_shadow_kind, info.z); shade_light
-// reads them from the record, a pass that shades one light group passes its constants.
-vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kind, uint algorithm) {
-  // Only point lights have cube maps: with a constant shadow_kind the other types' branches
-  // drop out of a cube group's shader (a CPU driver computes every branch, taken or not).
-  uint type = shadow_kind == SHADOW_KIND_CUBE ? LIGHT_POINT : light_type(light);
+// Where `light` meets world_pos: the unit direction to it, and `reach`, its falloff, spot cone
+// and cylinder lambda folded into one factor of its radiance (zero: the light adds nothing
+// there, not even shadow color). lambda, 1 for every light but the cylinder, weights the shadow
+// color term as section 2's formula has it.
+struct Incidence {
   vec3 to_light;
-  float reach = 1.0;
-  float lambda = 1.0;
+  float reach;
+  float lambda;
+};
+
+// `type` is the light's own (light_type), or a constant where the caller knows it.
+Incidence light_incidence(Light light, vec3 world_pos, uint type) {
+  Incidence at;
+  at.reach = 1.0;
+  at.lambda = 1.0;
   if (type == LIGHT_DIRECTIONAL) {
-    to_light = -light.direction_type.xyz;
+    at.to_light = -light.direction_type.xyz;
   } else if (type == LIGHT_CYLINDER) {
     // A beam of parallel rays along T: L is -T everywhere, as its orthographic map assumes.
     vec3 axis = light.direction_type.xyz;
     vec3 from_light = world_pos - light.position_range.xyz;
-    to_light = -axis;
-    lambda = cylinder_lambda(dot(axis, from_light), length(cross(axis, from_light)),
-                             light.shape.z, light.shape.w);
-    reach = lambda;
+    at.to_light = -axis;
+    at.lambda = cylinder_lambda(dot(axis, from_light), length(cross(axis, from_light)),
+                                light.shape.z, light.shape.w);
+    at.reach = at.lambda;
   } else {
     vec3 offset = light.position_range.xyz - world_pos;
     float distance = length(offset);
-    to_light = offset / max(distance, 1e-6);
+    at.to_light = offset / max(distance, 1e-6);
     float range = light.position_range.w;
-    reach = light.info.y == FALLOFF_GLTF_PUNCTUAL ? falloff_gltf_punctual(distance, range)
-                                                  : falloff_linear_window(distance, range);
+    at.reach = light.info.y == FALLOFF_GLTF_PUNCTUAL ? falloff_gltf_punctual(distance, range)
+                                                     : falloff_linear_window(distance, range);
     if (type == LIGHT_SPOT) {
-      reach *= spot_cone(dot(light.direction_type.xyz, -to_light), light.shape.x, light.shape.y);
+      at.reach *= spot_cone(dot(light.direction_type.xyz, -at.to_light), light.shape.x, light.shape.y);
     }
   }
-  if (reach <= 0.0) return vec3(0.0);
+  return at;
+}
+
+float luminance(vec3 color) { return dot(color, vec3(0.2126, 0.7152, 0.0722)); }
+
+// How much `light`'s shadow can change the pixel: the luminance of all it adds unshadowed plus
+// that of its shadow color term, the most that any shade in [0, 1] can move the sum. Zero where
+// no shadow of the light changes the sum: out of its reach, or facing away without shadow color.
+float shadow_weight(Light light, SurfacePoint p, Incidence at) {
+  if (at.reach <= 0.0) return 0.0;
+  vec3 shadow_color = at.lambda * light.shadow_color_density.rgb;
+  if (dot(p.normal, at.to_light) <= 0.0 && shadow_color == vec3(0.0)) return 0.0;
+  vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * at.reach;
+  float density = light.shadow_color_density.a;
+  return luminance(blinn_light(p, at.to_light, radiance, 0.0, density, shadow_color)) +
+         density * luminance(shadow_color);
+}
+
+// One light at world_pos. `shadow_kind` and `algorithm` are the light's own (light_shadow_kind,
+// info.z); shade_light reads them from the record, a pass that shades one light group passes its
+// constants.
+//
+// Ranked filtering: a light whose shadow_weight at the pixel is below `filter_floor` takes the
+// hard test instead of its own kernel (0: every light filters). The deferred lighting sets the
+// floor at each pixel's few heaviest lights (shadow_filter_floor.comp): where many lights
+// overlap, what costs is their kernels' taps, and a light that adds little to the pixel changes
+// it by less than its weight times the filters' difference, which is zero outside penumbrae.
+vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kind, uint algorithm,
+                    float filter_floor) {
+  // Only point lights have cube maps: with a constant shadow_kind the other types' branches
+  // drop out of a cube group's shader (a CPU driver computes every branch, taken or not).
+  uint type = shadow_kind == SHADOW_KIND_CUBE ? LIGHT_POINT : light_type(light);
+  Incidence at = light_incidence(light, world_pos, type);
+  if (at.reach <= 0.0) return vec3(0.0);
   // Facing away from the light, a surface takes nothing from it but shadow color where shadowed:
   // without shadow color no shadow changes the sum, and the shadow lookup, most of a light's cost
   // when many overlap, is skipped.
-  vec3 shadow_color = lambda * light.shadow_color_density.rgb;
-  if (dot(p.normal, to_light) <= 0.0 && shadow_color == vec3(0.0)) return vec3(0.0);
+  vec3 shadow_color = at.lambda * light.shadow_color_density.rgb;
+  float n_dot_l = dot(p.normal, at.to_light);
+  if (n_dot_l <= 0.0 && shadow_color == vec3(0.0)) return vec3(0.0);
 
-  float shade =
-      light_shadow_as(light, world_pos, p.normal, dot(p.normal, to_light), shadow_kind, algorithm, p.pixel);
+  // Two calls, each with a constant algorithm, so that each keeps only its own kernel's code.
+  bool filtered = SHADOW_ONLY_VIEW || filter_floor <= 0.0 || shadow_weight(light, p, at) >= filter_floor;
+  float shade = filtered ? light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, algorithm, p.pixel)
+                         : light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, SHADOW_HARD, p.pixel);
   if (SHADOW_ONLY_VIEW) {
-    return vec3((1.0 - shade) * light.color_intensity.a * reach * max(dot(p.normal, to_light), 0.0));
+    return vec3((1.0 - shade) * light.color_intensity.a * at.reach * max(n_dot_l, 0.0));
   }
-  vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * reach;
-  return blinn_light(p, to_light, radiance, shade, light.shadow_color_density.a, shadow_color);
+  vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * at.reach;
+  return blinn_light(p, at.to_light, radiance, shade, light.shadow_color_density.a, shadow_color);
 }
 
 vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
-  return shade_light_as(light, p, world_pos, light_shadow_kind(light), light.info.z);
+  return shade_light_as(light, p, world_pos, light_shadow_kind(light), light.info.z, 0.0);
 }
 
 // The sum over lights[0 .. light_count) at world_pos, without ambient.

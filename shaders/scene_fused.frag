@@ -32,7 +32,7 @@ vec3 shade_group(uint group, inout uint next, SurfacePoint p) {
   uint algorithm = group_algorithm(group);
   Light light = light_at(next);
   do {
-    color += shade_light_as(light, p, in_world_position, kind, algorithm);
+    color += shade_light_as(light, p, in_world_position, kind, algorithm, 0.0);
     ++next;
     light = light_at(min(next, frame.counts.x - 1u));
   } while (next < frame.counts.x && light_group(light_shadow_kind(light), light.info.z) == group);

@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // Tiled deferred lighting of one light group in compute (tiled_lighting.glsl): one workgroup per
 // tile that has lights of the group (light_tiles.comp's list; an indirect dispatch), each
-// invocation one pixel, adding the group's lights to the lit sum.
+// invocation one pixel, adding the group's lights to the lit sum. With RANKED_FILTERING the lit
+// sum's alpha holds the pixel's filter floor (shadow_filter_floor.comp).
 #include "tiled_lighting.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
@@ -18,5 +19,7 @@ void main() {
   SurfacePoint p;
   vec3 position;
   if (!deferred_surface(pixel, p, position)) return;
-  imageStore(hdr, pixel, imageLoad(hdr, pixel) + vec4(shade_tile_group(tile, p, position), 0.0));
+  vec4 sum = imageLoad(hdr, pixel);
+  float filter_floor = RANKED_FILTERING ? sum.a : 0.0;
+  imageStore(hdr, pixel, sum + vec4(shade_tile_group(tile, p, position, filter_floor), 0.0));
 }

@@ -17,6 +17,9 @@ layout(constant_id = 0) const uint LIGHT_GROUP = 0u;
 // list: a CPU driver loads storage-buffer words lane by lane, and three a pixel were about 8 ms
 // of the default scene's 140 on lavapipe (2026-11-30).
 layout(constant_id = 4) const bool SINGLE_LIGHT = false;
+// constant_id 5: the lit sum's alpha holds each pixel's filter floor (shadow_filter_floor.comp),
+// below which a light takes the hard test instead of its own kernel (light_shading.glsl).
+layout(constant_id = 5) const bool RANKED_FILTERING = false;
 
 layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
 layout(set = 0, binding = gbuffer_normal_binding) uniform sampler2D gbuffer_normal;
@@ -44,15 +47,15 @@ bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {
 
 // The light group's lights of `tile` at the surface point. The tile has at least one (or it
 // would not be drawn), and a do-while runs its body exactly that often on a CPU driver too.
-vec3 shade_tile_group(uint tile, SurfacePoint p, vec3 position) {
+vec3 shade_tile_group(uint tile, SurfacePoint p, vec3 position, float filter_floor) {
   uint kind = group_shadow_kind(LIGHT_GROUP);
   uint algorithm = group_algorithm(LIGHT_GROUP);
-  if (SINGLE_LIGHT) return shade_light_as(light_at(frame.lights.x), p, position, kind, algorithm);
+  if (SINGLE_LIGHT) return shade_light_as(light_at(frame.lights.x), p, position, kind, algorithm, filter_floor);
   uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + LIGHT_GROUP];
   vec3 color = vec3(0.0);
   uint j = 0u;
   do {
-    color += shade_light_as(light_at(tile_lights[range.x + j]), p, position, kind, algorithm);
+    color += shade_light_as(light_at(tile_lights[range.x + j]), p, position, kind, algorithm, filter_floor);
     ++j;
   } while (j < range.y);
   return color;

@@ -30,7 +30,7 @@ vec3 shade_group(uint group, uint tile, SurfacePoint p) {
   uint j = 0u;
   do {
     uint light = min(tile_lights[range.x + j], frame.counts.x - 1u);
-    color += shade_light_as(light_at(light), p, in_world_position, group_shadow_kind(group), group_algorithm(group));
+    color += shade_light_as(light_at(light), p, in_world_position, group_shadow_kind(group), group_algorithm(group), 0.0);
     ++j;
   } while (j < range.y);
   return color;

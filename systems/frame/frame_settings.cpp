@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "rendergraph/device/context.h"
+#include "systems/lighting/tiled_lighting_pass.h"
 
 namespace sg {
 namespace {
@@ -126,6 +127,12 @@ std::vector<Setting<S>> make_table() {
           "lights lose resolution by their size on screen down to their quality floor, then map redraws "
           "wait their turn, stalest first (0: no budget; default: 6 on GPUs, none on CPU devices); "
           "--shadow-memory still caps on top"),
+      whole<S>(
+          "filtered-shadows", "N", [](auto& s) -> auto& { return s.renderer.filtered_lights; }, 0,
+          TiledLightingPass::most_filtered_lights,
+          "deferred lighting: at each pixel the N lights that add most to it run their shadow filter "
+          "(pcf, noise, pcss); lighter ones take the hard test, which bounds the cost where many "
+          "lights overlap (0: every light filters; default: 8 on GPUs, every light on CPU devices)"),
       on_off<S>(
           "shadow-cache", [](auto& s) -> auto& { return s.renderer.cache_shadows; },
           "on: a map is redrawn only when its light, or a caster in its reach, moved; off: every "

@@ -9,6 +9,7 @@
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/lighting_ambient.comp.spv.h"
+#include "shaders/shadow_filter_floor.comp.spv.h"
 #include "shaders/tiled_lighting.comp.spv.h"
 #include "systems/gpu/scene_gpu_types.h"
 #include "systems/gpu/shader_bindings.h"
@@ -53,7 +54,7 @@ bool starts_in_gbuffer(LitSumStart start, const vk::VulkanContext& context) {
 
 }  // namespace
 
-TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart start)
+TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart start, uint32_t filtered_lights)
     : context_(context),
       lit_sum_from_gbuffer_(starts_in_gbuffer(start, context)),
       light_resources_(context),
@@ -78,10 +79,24 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
                    {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
                    {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
                    {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute_stage}}),
-              vk::push_constants<LightingConstants>(compute_stage)) {}
+              vk::push_constants<LightingConstants>(compute_stage)),
+      filtered_lights_(filtered_lights) {
+  if (filtered_lights_ > most_filtered_lights) {
+    throw std::invalid_argument("TiledLightingPass: at most " + std::to_string(most_filtered_lights) +
+                                " filtered lights a pixel");
+  }
+  if (filtered_lights_ == 0) return;
+  // constant_id 0 to 5 as a group pass's (every light type: 0xF), 6: the lights a pixel filters.
+  const std::vector<uint32_t> constants{0u, 0u, 0u, 0xFu, 0u, 0u, filtered_lights_};
+  filter_floor_pipeline_ = vk::create_compute_pipeline(
+      context, {shadow_filter_floor_comp, constants, layout_.get(), "shadow filter floor"});
+}
 
 void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView view) {
   current_.fill(VK_NULL_HANDLE);
+  // The shadow-only view shows each algorithm's own shade: every light filters there.
+  ranked_ = filtered_lights_ > 0 && view == LightingView::lit;
+  const uint32_t ranked = ranked_ ? 1u : 0u;
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     const uint32_t types = lights.group_types[group];  // bit t for type t (lights_interface.glsl)
     if (types == 0) continue;                          // no light of the group this frame
@@ -89,12 +104,12 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
     const uint32_t single = lights.group_begin[group + 1] == first + 1 ? 1u : 0u;
     group_light_[group] = first;
     vk::UniquePipeline& pipeline =
-        pipelines_[group | types << 8 | static_cast<uint32_t>(view) << 16 | single << 24];
+        pipelines_[group | types << 8 | static_cast<uint32_t>(view) << 16 | single << 24 | ranked << 25];
     current_[group] = pipeline.get();
     if (pipeline) continue;
     // constant_id 0: the group; 1: the view; 2: material.glsl's, unused here; 3: the light types;
-    // 4: whether the group has a single light.
-    const std::vector<uint32_t> constants{group, static_cast<uint32_t>(view), 0u, types, single};
+    // 4: whether the group has a single light; 5: whether the lit sum's alpha holds the filter floor.
+    const std::vector<uint32_t> constants{group, static_cast<uint32_t>(view), 0u, types, single, ranked};
     const std::string name = "tiled lighting " + group_name(group);
     pipeline = vk::create_compute_pipeline(context_, {tiled_lighting_comp, constants, layout_.get(), name});
     current_[group] = pipeline.get();
@@ -144,34 +159,55 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
           vkCmdDispatch(rec.cmd(), (constants.screen.x + 15) / 16, (constants.screen.y + 15) / 16, 1);
         });
   }
+  // The group passes' descriptor set, on `writer`.
+  const auto write_set = [this, gbuffer, tiles, atlas, &lights](vk::DescriptorWriter writer,
+                                                                rg::ImageHandle lit_sum,
+                                                                const vk::PassRecorder& rec) {
+    const VkSampler nearest = nearest_.get();
+    writer.image(scene_depth_binding, rec.view(gbuffer.depth), nearest)
+        .image(gbuffer_normal_binding, rec.view(gbuffer.normal), nearest)
+        .image(gbuffer_albedo_binding, rec.view(gbuffer.albedo), nearest)
+        .buffer(tile_lights_binding, rec.buffer(tiles.lights))
+        .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
+        .buffer(group_tiles_binding, rec.buffer(tiles.tiles))
+        .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
+    return light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+  };
+  const auto read_lighting_inputs = [&](rg::PassBuilder& b) {
+    for (const rg::ImageHandle image : {atlas, gbuffer.depth, gbuffer.normal, gbuffer.albedo}) {
+      b.read(image, rg::Usage::sampled_compute);
+    }
+    for (const rg::BufferHandle buffer : {tiles.lights, tiles.ranges, tiles.tiles}) {
+      b.read(buffer, rg::Usage::storage_compute);
+    }
+  };
+  if (ranked_) {
+    graph.add_pass(
+        "shadow filter floor",
+        [&](rg::PassBuilder& b) {
+          read_lighting_inputs(b);
+          lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
+        },
+        [this, write_set, lit_sum, constants, grid](const vk::PassRecorder& rec) {
+          const VkDescriptorSet set = write_set(layout_.write(rec.allocate_set(layout_)), lit_sum, rec);
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, filter_floor_pipeline_.get());
+          layout_.bind_compute(rec.cmd(), set);
+          layout_.push(rec.cmd(), constants);
+          vkCmdDispatch(rec.cmd(), grid.across, grid.down, 1);  // a workgroup a tile
+        });
+  }
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     if (current_[group] == VK_NULL_HANDLE) continue;  // no light of the group this frame
     graph.add_pass(
         "lighting " + group_name(group),
         [&](rg::PassBuilder& b) {
-          for (const rg::ImageHandle image : {atlas, gbuffer.depth, gbuffer.normal, gbuffer.albedo}) {
-            b.read(image, rg::Usage::sampled_compute);
-          }
-          for (const rg::BufferHandle buffer : {tiles.lights, tiles.ranges, tiles.tiles}) {
-            b.read(buffer, rg::Usage::storage_compute);
-          }
+          read_lighting_inputs(b);
           b.read(tiles.commands, rg::Usage::indirect);
           lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
         },
-        [this, group, gbuffer, tiles, atlas, lit_sum, &lights,
-         constants = with_group_light(constants, group_light_[group]),
+        [this, group, write_set, tiles, lit_sum, constants = with_group_light(constants, group_light_[group]),
          pipeline = current_[group]](const vk::PassRecorder& rec) {
-          const VkSampler nearest = nearest_.get();
-          vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
-          writer.image(scene_depth_binding, rec.view(gbuffer.depth), nearest)
-              .image(gbuffer_normal_binding, rec.view(gbuffer.normal), nearest)
-              .image(gbuffer_albedo_binding, rec.view(gbuffer.albedo), nearest)
-              .buffer(tile_lights_binding, rec.buffer(tiles.lights))
-              .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
-              .buffer(group_tiles_binding, rec.buffer(tiles.tiles))
-              .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
-          const VkDescriptorSet set =
-              light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+          const VkDescriptorSet set = write_set(layout_.write(rec.allocate_set(layout_)), lit_sum, rec);
           vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
           layout_.bind_compute(rec.cmd(), set);
           layout_.push(rec.cmd(), constants);

@@ -5,6 +5,10 @@
 // (shaders/tiled_lighting.comp), over the tiles that have lights of the group (an indirect
 // dispatch from LightTilesPass), adding them to the lit sum. Fragment passes over a quad per tile
 // lost on both kinds of device (docs/PERFORMANCE.md) and are gone.
+//
+// Ranked filtering (filtered_lights > 0): before the groups, a pass finds at each pixel the
+// weight of its filtered_lights-th heaviest light (shaders/shadow_filter_floor.comp); lighter
+// lights take the hard test instead of their filter kernels, which bounds the kernels a pixel runs.
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -27,7 +31,9 @@ namespace sg {
 class TiledLightingPass {
  public:
   // `start` automatic is resolved for the context's device (lit_sum_from_gbuffer() says how).
-  explicit TiledLightingPass(vk::VulkanContext& context, LitSumStart start = LitSumStart::automatic);
+  // `filtered_lights`: at each pixel, the most lights that run their own filter kernels; 0: all.
+  explicit TiledLightingPass(vk::VulkanContext& context, LitSumStart start = LitSumStart::automatic,
+                             uint32_t filtered_lights = 0);
 
   // Picks, and compiles when first needed, the pipeline of each group that has lights in
   // `lights` (sorted by group): each holds one algorithm's shadow code and only the code of the
@@ -38,7 +44,8 @@ class TiledLightingPass {
   static constexpr rg::Format lit_sum_format = GBuffer::lit_sum_format;
 
   // Adds the ambient pass, which creates the lit sum (unless the G-buffer pass started it:
-  // GBuffer::lit_sum, which lit_sum_from_gbuffer() requires), and one pass per group with lights
+  // GBuffer::lit_sum, which lit_sum_from_gbuffer() requires), the filter floor's pass where
+  // filtering is ranked and the view lit, and one pass per group with lights
   // in the last prepare(); returns the lit sum's newest version. `lights`, the records prepare() saw,
   // must live until the frame is recorded. Positions come from the depth buffer through the
   // camera's `view_projection`; `ambient` is the ambient term kA * IA.
@@ -50,6 +57,11 @@ class TiledLightingPass {
   // ambient pass then left out (LitSumStart, lighting_path.h).
   bool lit_sum_from_gbuffer() const { return lit_sum_from_gbuffer_; }
 
+  uint32_t filtered_lights() const { return filtered_lights_; }
+
+  // At most 16: the floor pass keeps that many weights a pixel.
+  static constexpr uint32_t most_filtered_lights = 16;
+
  private:
   vk::VulkanContext& context_;
   bool lit_sum_from_gbuffer_;
@@ -58,7 +70,10 @@ class TiledLightingPass {
   vk::PipelineLayout ambient_layout_;
   vk::UniquePipeline ambient_pipeline_;  // unless the G-buffer starts the lit sum
   vk::PipelineLayout layout_;
-  // By group | light types << 8 | LightingView << 16 | single light << 24.
+  uint32_t filtered_lights_;
+  vk::UniquePipeline filter_floor_pipeline_;  // where filtered_lights_ > 0
+  bool ranked_ = false;                       // this frame: filtered_lights_ > 0 and the view lit
+  // By group | light types << 8 | LightingView << 16 | single light << 24 | ranked << 25.
   std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;
   // This frame's, by group; null for a group without lights.
   std::array<VkPipeline, shadows::light_group_count> current_{};

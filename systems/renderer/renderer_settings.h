@@ -16,6 +16,12 @@ namespace sg {
 // frames with a thousand moving lights near the camera took 15 to 60 ms of shadow passes.
 inline constexpr float default_gpu_shadow_budget_ms = 6.0f;
 
+// At each pixel the lights that run their filter kernels unless set (GPUs); the rest take the hard
+// test (TiledLightingPass). H200, 1920x1080, 1,024 lights on a sixteenth of the stress hall
+// (2026-12-02): lighting 10.1 ms with every light filtering, 5.0 with 8, 4.4 with 4; pictures
+// 1.3% of pixels more than 2 levels apart with 8 (docs/PERFORMANCE.md).
+inline constexpr uint32_t default_gpu_filtered_lights = 8;
+
 struct RendererSettings {
   shadows::LightOverrides lights;
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
@@ -32,6 +38,10 @@ struct RendererSettings {
   // default_gpu_shadow_budget_ms on GPUs, none on CPU devices (lavapipe), whose shadow passes
   // always take far longer and would lose resolution in every picture.
   std::optional<float> shadow_budget_ms;
+  // Deferred lighting: at each pixel, the most lights that run their own shadow filter kernels,
+  // the heaviest there; lighter lights take the hard test. 0: every light filters; unset:
+  // default_gpu_filtered_lights on GPUs, every light on CPU devices.
+  std::optional<uint32_t> filtered_lights;
   bool cache_shadows = true;  // off: every map is redrawn every frame (within the view budget)
   // Where the compute raster may run: keep a static layer per map (ShadowViewBatch), so that maps
   // wrong only through moving casters redraw just those.

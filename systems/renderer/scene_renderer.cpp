@@ -44,6 +44,12 @@ double time_budget_ms(const vk::VulkanContext& context, const RendererSettings& 
   return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0.0 : default_gpu_shadow_budget_ms;
 }
 
+// The settings' ranked filtering, or the device's default: none on CPU devices.
+uint32_t filtered_lights_for(const vk::VulkanContext& context, const RendererSettings& settings) {
+  if (settings.filtered_lights) return *settings.filtered_lights;
+  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0u : default_gpu_filtered_lights;
+}
+
 // Tiled deferred measured fastest on the H200 (docs/PERFORMANCE.md), and on lavapipe for more
 // than a few lights; automatic starts there.
 constexpr LightingPath fastest_lighting = LightingPath::deferred;
@@ -90,7 +96,13 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       break;
     case LightingPath::automatic:  // resolved above
     case LightingPath::deferred: {
-      TiledLightingPass lighting(context, settings.lit_sum_start);
+      TiledLightingPass lighting(context, settings.lit_sum_start, filtered_lights_for(context, settings));
+      if (lighting.filtered_lights() > 0) {
+        std::printf(
+            "shadowgraph: at each pixel the %u lights adding most to it run their shadow filters, the others "
+            "the hard test (--filtered-shadows; 0: all filter)\n",
+            lighting.filtered_lights());
+      }
       const bool lit_sum_from_gbuffer = lighting.lit_sum_from_gbuffer();
       deferred_.emplace(GBufferPass(context, frames_in_flight, textures_, lit_sum_from_gbuffer),
                         LightTilesPass(context, frames_in_flight), std::move(lighting));

@@ -85,6 +85,9 @@ class SceneRenderer {
   // included (LightTilesPass::listed_pairs); none before a frame was read back, or without
   // tiled lighting.
   std::optional<uint64_t> light_list_pairs() const;
+  // Deferred lighting's ranked filtering: at each pixel the most lights that run their filter
+  // kernels (TiledLightingPass); 0: every light, and always without tile lists.
+  uint32_t filtered_lights() const { return deferred_ ? deferred_->lighting.filtered_lights() : 0u; }
   // With the GPU idle: the pairs the frames not read back yet left out (every slot's).
   uint64_t drain_dropped_light_pairs();
   const ShadowAtlas& shadow_atlas() const { return atlas_; }

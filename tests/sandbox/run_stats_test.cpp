@@ -85,6 +85,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.shadow_map_bytes = 67'108'864;
   stats.dropped_light_pairs = 12;
   stats.light_list_pairs = TimeSummary{5000.0, 4000.0, 6000.0};
+  stats.filtered_shadows = 8;
   stats.shadows = {"batched",
                    "compute",
                    1ull << 30,
@@ -119,7 +120,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 17u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 18u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);
@@ -154,6 +155,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(json.at("validation_errors"), 4);
   EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
   EXPECT_EQ(json.at("dropped_light_pairs"), 12);
+  EXPECT_EQ(json.at("filtered_shadows"), 8);
   expect_summary(json.at("light_list_pairs"), *stats.light_list_pairs);
   // Settings keep their types: numbers, true/false for flags, null when unset.
   EXPECT_EQ(json.at("settings"), nlohmann::json({{"width", 640},

@@ -1,0 +1,56 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Ranked shadow filtering's floor, every pixel, before the light groups' passes: the shadow
+// weight (light_shading.glsl) of the FILTERED_LIGHTS-th heaviest of the tile's lights that filter
+// (the groups of pcf, noise, pcss and pcss_noise), written to the lit sum's alpha
+// (tiled_lighting.comp reads it). Lights lighter than that take the hard test instead of their
+// kernel, so a pixel runs at most FILTERED_LIGHTS kernels however many lights overlap it; 0 where
+// fewer reach it, and every light filters.
+#include "tiled_lighting.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+
+// constant_id 6 (0 to 5 are tiled_lighting.glsl's and what it includes).
+const uint MOST_FILTERED_LIGHTS = 16u;
+layout(constant_id = 6) const uint FILTERED_LIGHTS = 8u;  // 1 to MOST_FILTERED_LIGHTS
+
+layout(set = 0, binding = hdr_binding, rgba16f) uniform image2D hdr;
+
+// The largest finite half float, less a margin: heavier floors are held there (every light
+// at least that heavy filters).
+const float MOST_FLOOR = 65000.0;
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (pixel.x >= int(frame.screen.x) || pixel.y >= int(frame.screen.y)) return;
+  SurfacePoint p;
+  vec3 position;
+  if (!deferred_surface(pixel, p, position)) return;
+  uint tile = gl_WorkGroupID.y * frame.screen.z + gl_WorkGroupID.x;
+
+  // The heaviest weights so far, heaviest first: each weight is carried down the list, the larger
+  // of each pair staying (unrolled, the list lives in registers).
+  float heaviest[MOST_FILTERED_LIGHTS];
+  [[unroll]] for (uint i = 0u; i < MOST_FILTERED_LIGHTS; ++i) heaviest[i] = 0.0;
+  for (uint group = 0u; group < LIGHT_GROUP_COUNT; ++group) {
+    if (group_shadow_kind(group) == SHADOW_KIND_NONE || group_algorithm(group) == SHADOW_HARD) continue;
+    uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + group];
+    for (uint j = 0u; j < range.y; ++j) {
+      Light light = light_at(tile_lights[range.x + j]);
+      float carried = shadow_weight(light, p, light_incidence(light, position, light_type(light)));
+      if (carried <= heaviest[FILTERED_LIGHTS - 1u]) continue;
+      [[unroll]] for (uint i = 0u; i < MOST_FILTERED_LIGHTS; ++i) {
+        if (i < FILTERED_LIGHTS) {
+          float kept = max(heaviest[i], carried);
+          carried = min(heaviest[i], carried);
+          heaviest[i] = kept;
+        }
+      }
+    }
+  }
+  // A little under the weight, so that the group passes, which work the weight out again in
+  // another pipeline (and store it here at half precision), still filter that light.
+  float filter_floor = min(0.998 * heaviest[FILTERED_LIGHTS - 1u], MOST_FLOOR);
+  vec4 sum = imageLoad(hdr, pixel);
+  imageStore(hdr, pixel, vec4(sum.rgb, filter_floor));
+}
