@@ -75,7 +75,7 @@ float shadow_weight(Light light, SurfacePoint p, Incidence at) {
 //
 // Ranked filtering: a light whose shadow_weight at the pixel is below `filter_floor` takes the
 // hard test instead of its own kernel (0: every light filters). The deferred lighting sets the
-// floor at each pixel's few heaviest lights (shadow_filter_floor.comp): where many lights
+// floor at each pixel's few heaviest lights (lighting_filter_floor.comp): where many lights
 // overlap, what costs is their kernels' taps, and a light that adds little to the pixel changes
 // it by less than its weight times the filters' difference, which is zero outside penumbrae.
 vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kind, uint algorithm,

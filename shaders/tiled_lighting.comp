@@ -3,7 +3,7 @@
 // Tiled deferred lighting of one light group in compute (tiled_lighting.glsl): one workgroup per
 // tile that has lights of the group (light_tiles.comp's list; an indirect dispatch), each
 // invocation one pixel, adding the group's lights to the lit sum. With RANKED_FILTERING the lit
-// sum's alpha holds the pixel's filter floor (shadow_filter_floor.comp).
+// sum's alpha holds the pixel's filter floor (lighting_filter_floor.comp).
 #include "tiled_lighting.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;

@@ -17,7 +17,7 @@ layout(constant_id = 0) const uint LIGHT_GROUP = 0u;
 // list: a CPU driver loads storage-buffer words lane by lane, and three a pixel were about 8 ms
 // of the default scene's 140 on lavapipe (2026-11-30).
 layout(constant_id = 4) const bool SINGLE_LIGHT = false;
-// constant_id 5: the lit sum's alpha holds each pixel's filter floor (shadow_filter_floor.comp),
+// constant_id 5: the lit sum's alpha holds each pixel's filter floor (lighting_filter_floor.comp),
 // below which a light takes the hard test instead of its own kernel (light_shading.glsl).
 layout(constant_id = 5) const bool RANKED_FILTERING = false;
 

@@ -9,7 +9,7 @@
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/lighting_ambient.comp.spv.h"
-#include "shaders/shadow_filter_floor.comp.spv.h"
+#include "shaders/lighting_filter_floor.comp.spv.h"
 #include "shaders/tiled_lighting.comp.spv.h"
 #include "systems/gpu/scene_gpu_types.h"
 #include "systems/gpu/shader_bindings.h"
@@ -89,7 +89,7 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
   // constant_id 0 to 5 as a group pass's (every light type: 0xF), 6: the lights a pixel filters.
   const std::vector<uint32_t> constants{0u, 0u, 0u, 0xFu, 0u, 0u, filtered_lights_};
   filter_floor_pipeline_ = vk::create_compute_pipeline(
-      context, {shadow_filter_floor_comp, constants, layout_.get(), "shadow filter floor"});
+      context, {lighting_filter_floor_comp, constants, layout_.get(), "lighting filter floor"});
 }
 
 void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView view) {
@@ -182,8 +182,10 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
     }
   };
   if (ranked_) {
+    // Named "lighting ...": every "shadow ..." pass counts as shadow work against the time
+    // budget (systems/shadow_maps/shadow_pass_times.h).
     graph.add_pass(
-        "shadow filter floor",
+        "lighting filter floor",
         [&](rg::PassBuilder& b) {
           read_lighting_inputs(b);
           lit_sum = b.write(lit_sum, rg::Usage::storage_compute);

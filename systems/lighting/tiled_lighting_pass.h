@@ -7,7 +7,7 @@
 // lost on both kinds of device (docs/PERFORMANCE.md) and are gone.
 //
 // Ranked filtering (filtered_lights > 0): before the groups, a pass finds at each pixel the
-// weight of its filtered_lights-th heaviest light (shaders/shadow_filter_floor.comp); lighter
+// weight of its filtered_lights-th heaviest light (shaders/lighting_filter_floor.comp); lighter
 // lights take the hard test instead of their filter kernels, which bounds the kernels a pixel runs.
 #include <array>
 #include <cstdint>

@@ -353,10 +353,10 @@ TEST_F(FrameTest, RankedFilteringKeepsThePictureWhereFewLightsFilter) {
   FrameSettings options = lit_by(LightingPath::deferred);
   options.renderer.filtered_lights = 0;
   const vk::Rgba8Image every_light = render(options, 2);
-  EXPECT_EQ(std::find(passes.begin(), passes.end(), "shadow filter floor"), passes.end());
+  EXPECT_EQ(std::find(passes.begin(), passes.end(), "lighting filter floor"), passes.end());
   options.renderer.filtered_lights = 8;
   const vk::Rgba8Image ranked = render(options, 2);
-  EXPECT_NE(std::find(passes.begin(), passes.end(), "shadow filter floor"), passes.end());
+  EXPECT_NE(std::find(passes.begin(), passes.end(), "lighting filter floor"), passes.end());
   EXPECT_EQ(share_differing(every_light, ranked, 1), 0.0) << "pixels more than 1 level of 255 apart";
   options.renderer.filtered_lights = 1;
   EXPECT_GT(share_differing(every_light, render(options, 2), 2), 0.001) << "one filtering light a pixel";
