@@ -10,5 +10,7 @@ layout(location = 2) out vec4 out_lit_sum;
 
 void main() {
   SurfacePoint p = write_gbuffer();
-  out_lit_sum = vec4(frame.camera_position.w * p.base_color, 1.0);  // w: the ambient term
+  // camera_position.w: the ambient term. Alpha: the shadow filter floor, none until
+  // lighting_filter_floor.comp sets one.
+  out_lit_sum = vec4(frame.camera_position.w * p.base_color, 0.0);
 }

@@ -24,5 +24,5 @@ void main() {
   bool background = is_background_depth(texelFetch(scene_depth, pixel, 0).r);
   vec3 color = background ? frame.background_ambient.rgb
                            : frame.background_ambient.w * texelFetch(gbuffer_albedo, pixel, 0).rgb;
-  imageStore(hdr, pixel, vec4(color, 1.0));
+  imageStore(hdr, pixel, vec4(color, 0.0));  // alpha: no filter floor (lighting_filter_floor.comp)
 }

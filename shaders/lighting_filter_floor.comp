@@ -20,20 +20,32 @@ layout(set = 0, binding = hdr_binding, rgba16f) uniform image2D hdr;
 // at least that heavy filters).
 const float MOST_FLOOR = 65000.0;
 
+// Whether `group`'s lights run a filter kernel (pcf, noise, pcss, pcss_noise).
+bool group_filters(uint group) {
+  return group_shadow_kind(group) != SHADOW_KIND_NONE && group_algorithm(group) != SHADOW_HARD;
+}
+
 void main() {
+  uint tile = gl_WorkGroupID.y * frame.screen.z + gl_WorkGroupID.x;
+  // A tile with no more filtering lights than the rank keeps the floor the lit sum started with,
+  // none: every light filters.
+  uint filtering = 0u;
+  for (uint group = 0u; group < LIGHT_GROUP_COUNT; ++group) {
+    if (group_filters(group)) filtering += tile_ranges[tile * LIGHT_GROUP_COUNT + group].y;
+  }
+  if (filtering <= FILTERED_LIGHTS) return;
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(frame.screen.x) || pixel.y >= int(frame.screen.y)) return;
   SurfacePoint p;
   vec3 position;
   if (!deferred_surface(pixel, p, position)) return;
-  uint tile = gl_WorkGroupID.y * frame.screen.z + gl_WorkGroupID.x;
 
   // The heaviest weights so far, heaviest first: each weight is carried down the list, the larger
   // of each pair staying (unrolled, the list lives in registers).
   float heaviest[MOST_FILTERED_LIGHTS];
   [[unroll]] for (uint i = 0u; i < MOST_FILTERED_LIGHTS; ++i) heaviest[i] = 0.0;
   for (uint group = 0u; group < LIGHT_GROUP_COUNT; ++group) {
-    if (group_shadow_kind(group) == SHADOW_KIND_NONE || group_algorithm(group) == SHADOW_HARD) continue;
+    if (!group_filters(group)) continue;
     uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + group];
     for (uint j = 0u; j < range.y; ++j) {
       Light light = light_at(tile_lights[range.x + j]);
