@@ -11,12 +11,18 @@ float falloff_linear_window(float distance, float range) {
   return max(1.0f - distance / range, 0.0f);
 }
 
+// The range window of glTF KHR_lights_punctual's falloff: clamp(1 - (d/R)^4, 0, 1)^2, 1 at the
+// light and 0 from R on.
+float gltf_range_window(float distance, float range) {
+  float ratio2 = (distance / range) * (distance / range);
+  float window = clamp(1.0f - ratio2 * ratio2, 0.0f, 1.0f);
+  return window * window;
+}
+
 // Distance falloff of glTF KHR_lights_punctual (section 2): A = clamp(1 - (d/R)^4, 0, 1)^2 / d^2.
 // d^2 is held at 1 cm^2 or more so that a surface touching the light stays finite.
 float falloff_gltf_punctual(float distance, float range) {
-  float ratio2 = (distance / range) * (distance / range);
-  float window = clamp(1.0f - ratio2 * ratio2, 0.0f, 1.0f);
-  return window * window / max(distance * distance, 1e-4f);
+  return gltf_range_window(distance, range) / max(distance * distance, 1e-4f);
 }
 
 // Smooth spot rim (section 2), cos_angle = dot(D, -L):

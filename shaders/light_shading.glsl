@@ -15,21 +15,22 @@
 // constant_id 0 is left to the including shader's own constant.
 layout(constant_id = 1) const bool SHADOW_ONLY_VIEW = false;
 
-// Where `light` meets world_pos: the unit direction to it, and `reach`, its falloff, spot cone
-// and cylinder lambda folded into one factor of its radiance (zero: the light adds nothing
-// there, not even shadow color). lambda, 1 for every light but the cylinder, weights the shadow
-// color term as section 2's formula has it.
+// Where `light` meets world_pos: the unit direction to it; `reach`, its falloff, spot cone and
+// cylinder lambda folded into one factor of its radiance (zero: the light adds nothing there, not
+// even shadow color); and `fade`, what of that weights the shadow color term: the same cone and
+// lambda, and the falloff's range window without the inverse square (gltf_punctual), so that the
+// shadow color fades out where the light does, at its cone's rim and at its range.
 struct Incidence {
   vec3 to_light;
   float reach;
-  float lambda;
+  float fade;
 };
 
 // `type` is the light's own (light_type), or a constant where the caller knows it.
 Incidence light_incidence(Light light, vec3 world_pos, uint type) {
   Incidence at;
   at.reach = 1.0;
-  at.lambda = 1.0;
+  at.fade = 1.0;
   if (type == LIGHT_DIRECTIONAL) {
     at.to_light = -light.direction_type.xyz;
   } else if (type == LIGHT_CYLINDER) {
@@ -37,18 +38,21 @@ Incidence light_incidence(Light light, vec3 world_pos, uint type) {
     vec3 axis = light.direction_type.xyz;
     vec3 from_light = world_pos - light.position_range.xyz;
     at.to_light = -axis;
-    at.lambda = cylinder_lambda(dot(axis, from_light), length(cross(axis, from_light)),
-                                light.shape.z, light.shape.w);
-    at.reach = at.lambda;
+    at.reach = cylinder_lambda(dot(axis, from_light), length(cross(axis, from_light)),
+                               light.shape.z, light.shape.w);
+    at.fade = at.reach;
   } else {
     vec3 offset = light.position_range.xyz - world_pos;
     float distance = length(offset);
     at.to_light = offset / max(distance, 1e-6);
     float range = light.position_range.w;
-    at.reach = light.info.y == FALLOFF_GLTF_PUNCTUAL ? falloff_gltf_punctual(distance, range)
-                                                     : falloff_linear_window(distance, range);
+    bool gltf = light.info.y == FALLOFF_GLTF_PUNCTUAL;
+    at.fade = gltf ? gltf_range_window(distance, range) : falloff_linear_window(distance, range);
+    at.reach = gltf ? falloff_gltf_punctual(distance, range) : at.fade;
     if (type == LIGHT_SPOT) {
-      at.reach *= spot_cone(dot(light.direction_type.xyz, -at.to_light), light.shape.x, light.shape.y);
+      float cone = spot_cone(dot(light.direction_type.xyz, -at.to_light), light.shape.x, light.shape.y);
+      at.reach *= cone;
+      at.fade *= cone;
     }
   }
   return at;
@@ -61,7 +65,7 @@ float luminance(vec3 color) { return dot(color, vec3(0.2126, 0.7152, 0.0722)); }
 // no shadow of the light changes the sum: out of its reach, or facing away without shadow color.
 float shadow_weight(Light light, SurfacePoint p, Incidence at) {
   if (at.reach <= 0.0) return 0.0;
-  vec3 shadow_color = at.lambda * light.shadow_color_density.rgb;
+  vec3 shadow_color = at.fade * light.shadow_color_density.rgb;
   if (dot(p.normal, at.to_light) <= 0.0 && shadow_color == vec3(0.0)) return 0.0;
   vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * at.reach;
   float density = light.shadow_color_density.a;
@@ -88,7 +92,7 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
   // Facing away from the light, a surface takes nothing from it but shadow color where shadowed:
   // without shadow color no shadow changes the sum, and the shadow lookup, most of a light's cost
   // when many overlap, is skipped.
-  vec3 shadow_color = at.lambda * light.shadow_color_density.rgb;
+  vec3 shadow_color = at.fade * light.shadow_color_density.rgb;
   float n_dot_l = dot(p.normal, at.to_light);
   if (n_dot_l <= 0.0 && shadow_color == vec3(0.0)) return vec3(0.0);
 

@@ -10,6 +10,7 @@
 namespace sg::shadows::glsl {
 
 float falloff_linear_window(float distance, float range);
+float gltf_range_window(float distance, float range);
 float falloff_gltf_punctual(float distance, float range);
 float spot_cone(float cos_angle, float cos_inner, float cos_outer);
 float cylinder_lambda(float along, float axis_distance, float inner_radius, float outer_radius);

@@ -15,6 +15,7 @@
 #include "systems/frame/frame.h"
 #include "systems/frame/gpu_time_log.h"
 #include "systems/frame/headless_frames.h"
+#include "systems/gpu/camera.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
@@ -379,6 +380,62 @@ TEST_F(FrameTest, RankedFilteringChangesLittleWhereManyLightsOverlap) {
   EXPECT_LE(share_differing(every_light, ranked, 2), 0.05);
   EXPECT_LE(share_differing(every_light, ranked, 10), 0.005);
   EXPECT_GT(share_differing(every_light, ranked, 0), 0.0) << "no light was ranked out of its filter";
+}
+
+// A spot light's shadow color fades out with the light at its cone's rim: a plate shadows the
+// whole cone on a white floor, and the floor's red, the shadow color, runs from full under the
+// light's axis down to the background's near the rim (ALGORITHMS.md 2.5), where a shadow color
+// that ignored the cone drew a hard red edge.
+TEST_F(FrameTest, ShadowColorFadesOutAtTheSpotConesRim) {
+  SceneView scene;
+  scene.scene.name = "tinted shadow";
+  const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
+  scene::Material white;
+  white.base_color = glm::vec4(1.0f);
+  white.specular = 0.0f;
+  scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
+                      white);
+  scene::add_instance(scene.scene, box, {{0.0f, 2.5f, 0.0f}, glm::quat(1, 0, 0, 0), {8.0f, 0.1f, 8.0f}},
+                      white);
+  scene::ShadowSettings tinted;
+  tinted.algorithm = scene::ShadowAlgorithm::hard;
+  tinted.shadow_color = {1.0f, 0.0f, 0.0f};
+  scene::SpotLight spot;
+  spot.range = 50.0f;
+  spot.inner_cone = glm::radians(25.0f);
+  spot.outer_cone = glm::radians(30.0f);  // the rim 5 tan 30 = 2.89 from the axis on the floor
+  scene::add_light(
+      scene.scene, spot,
+      {glm::vec3(0.0f, 5.0f, 0.0f), scene::look_rotation({0, 5, 0}, {0, 0, 0.01f}), glm::vec3(1.0f)}, tinted,
+      "spot");
+  ecs::update_world_transforms(scene.scene.world, 0);
+  // Under the plate, looking down with a wide lens that sees past the rim.
+  scene.pose = {{0.0f, 1.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
+  scene.lens.yfov = glm::radians(150.0f);
+  FrameSettings options;
+  options.renderer.exposure = 0.5f;
+  vk::FrameRing frames(context);
+  Frame frame(context, scene, options, frames.frames_in_flight());
+  frame.resize({width, height});
+  GpuTimeLog gpu_times;
+  render_headless_frames(frame, frames, 2, gpu_times);
+  const vk::Rgba8Image image = vk::read_rgba8(context, frame.image());
+  const glm::mat4 view_projection =
+      projection_matrix(scene.lens, float(width) / height) * view_matrix(scene.pose);
+  const auto red_at = [&](float x) {  // the floor's red channel at (x, 0, 0)
+    const glm::vec4 clip = view_projection * glm::vec4(x, 0.0f, 0.0f, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    const uint8_t* p =
+        image.at(uint32_t((ndc.x * 0.5f + 0.5f) * width), uint32_t((ndc.y * 0.5f + 0.5f) * height));
+    EXPECT_EQ(p[1], p[2]) << "the floor is grey but for the shadow color, at x " << x;
+    return int(p[0]) - int(p[1]);
+  };
+  const int centre = red_at(0.0f);
+  const int near_rim = red_at(2.8f);  // cone factor 0.16 there
+  const int outside = red_at(3.2f);
+  EXPECT_GT(centre, 60) << "the shadow color under the light";
+  EXPECT_LE(outside, 1) << "no shadow color outside the cone";
+  EXPECT_LT(near_rim, centre / 3) << "the shadow color near the rim, where the light has nearly faded";
 }
 
 // A material's base-color texture multiplies its base color: a white floor with a green

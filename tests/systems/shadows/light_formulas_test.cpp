@@ -30,6 +30,10 @@ TEST(LightFormulas, GltfPunctualFalloff) {
   EXPECT_FLOAT_EQ(falloff_gltf_punctual(4.0f, range), 0.0f);
   EXPECT_FLOAT_EQ(falloff_gltf_punctual(5.0f, range), 0.0f);
   EXPECT_TRUE(std::isfinite(falloff_gltf_punctual(0.0f, range)));
+  // The window alone (the shadow color's fade): 1 at the light, 0 from R on.
+  EXPECT_NEAR(gltf_range_window(d, range) / (d * d), expected, 1e-6f);
+  EXPECT_FLOAT_EQ(gltf_range_window(0.0f, range), 1.0f);
+  EXPECT_FLOAT_EQ(gltf_range_window(range, range), 0.0f);
 }
 
 TEST(LightFormulas, SmoothSpotCone) {
