@@ -137,12 +137,11 @@ uvec3 pcg3d(uvec3 v) {
   return v;
 }
 
-// Three uniform numbers in (0, 1] for sample `index` at a pixel: a pattern per pixel, which
-// docs/ALGORITHMS.md section 4.3 allows. Every lighting path shades a pixel with the same numbers
-// (deferred lighting has the position from the depth buffer, not the rasterizer's bits), and a
-// static view gets the same numbers every frame: no time enters.
-vec3 pixel_random(uvec2 pixel, uint index) {
-  uvec3 h = pcg3d(uvec3(pixel, index));
+// Three uniform numbers in (0, 1] for sample `index` in an integer cell: a shadow-map texel (the
+// noise algorithms' rotations, shadow_sampling.glsl) or a screen pixel (the reference's jitter).
+// The same cell gets the same numbers every frame: no time enters.
+vec3 cell_random(uvec2 cell, uint index) {
+  uvec3 h = pcg3d(uvec3(cell, index));
   return (vec3(h >> 8u) + 1.0f) / 16777216.0f;  // 24 bits, exact in a float
 }
 

@@ -98,8 +98,8 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
 
   // Two calls, each with a constant algorithm, so that each keeps only its own kernel's code.
   bool filtered = SHADOW_ONLY_VIEW || filter_floor <= 0.0 || shadow_weight(light, p, at) >= filter_floor;
-  float shade = filtered ? light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, algorithm, p.pixel)
-                         : light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, SHADOW_HARD, p.pixel);
+  float shade = filtered ? light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, algorithm)
+                         : light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, SHADOW_HARD);
   if (SHADOW_ONLY_VIEW) {
     return vec3((1.0 - shade) * light.color_intensity.a * at.reach * max(n_dot_l, 0.0));
   }

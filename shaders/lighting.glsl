@@ -9,7 +9,6 @@ struct SurfacePoint {
   vec3 base_color;
   float specular;   // kS
   float shininess;  // s
-  uvec2 pixel;      // the pixel shaded: seeds the noise algorithms (pixel_random)
 };
 
 // One light's contribution, without the ambient term (added once per fragment).

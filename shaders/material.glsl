@@ -46,7 +46,6 @@ SurfacePoint fragment_surface() {
   p.base_color = base_color.rgb;
   p.specular = in_base_color_specular.a;
   p.shininess = in_material.x;
-  p.pixel = uvec2(gl_FragCoord.xy);
   return p;
 }
 

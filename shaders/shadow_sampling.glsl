@@ -14,7 +14,7 @@
 // explicit level of detail, as lights are evaluated in non-uniform control flow.
 //
 // Kernels: pcf a 3x3 grid (the source's), noise 16 Gaussian offsets (a stratified pattern turned
-// randomly per pixel), pcss 16 blocker-search and 32 filter samples of a Poisson disk on 2D maps
+// randomly per shadow-map texel, map_texel_seed), pcss 16 blocker-search and 32 filter samples of a Poisson disk on 2D maps
 // and the 20 directions of section 4 on cube maps; pcss_noise the same kernels rotated randomly
 // per surface point. Every kernel loop but the cube pcss filter's is marked [[unroll]]: left to
 // itself the compiler kept the 32-tap pcss filter a loop, whose Poisson disk lookups with the
@@ -85,18 +85,28 @@ vec3 cube_offset(uint k) {
   return vec3(0.0, b, a);
 }
 
-// ---- randomness, stable per pixel (light_formulas.glsl: pixel_random) ----
+// ---- randomness, stable on the surface ----
 
-mat2 random_rotation_2d(uvec2 pixel) {
-  float angle = 6.28318531 * pixel_random(pixel, 1000u).x;
+// The noise algorithms draw their random rotation per shadow-map texel: the texel holding the
+// receiver, in the map (or cube face) whose tile starts at `origin` in atlas layer `layer`. Drawn
+// per screen pixel, a pattern swam over still surfaces as the camera moved; a texel stays where
+// the map puts it. The texel's cell and a hash of its map, for cell_random (light_formulas.glsl).
+uvec3 map_texel_seed(vec2 origin, uint layer, vec2 uv, float texel_uv) {
+  float texels = 1.0 / texel_uv;
+  uvec2 texel = uvec2(clamp(floor(uv * texels), vec2(0.0), vec2(texels - 1.0)));
+  return uvec3(texel, pcg3d(uvec3(floatBitsToUint(origin), layer)).x);
+}
+
+mat2 random_rotation_2d(uvec3 seed) {
+  float angle = 6.28318531 * cell_random(seed.xy, seed.z ^ 1000u).x;
   float c = cos(angle), s = sin(angle);
   return mat2(c, s, -s, c);
 }
 
 // A uniformly random rotation, as a unit quaternion from four Gaussian numbers.
-vec4 random_rotation_3d(uvec2 pixel) {
-  vec3 u = pixel_random(pixel, 1000u);
-  vec3 w = pixel_random(pixel, 1001u);
+vec4 random_rotation_3d(uvec3 seed) {
+  vec3 u = cell_random(seed.xy, seed.z ^ 1000u);
+  vec3 w = cell_random(seed.xy, seed.z ^ 1001u);
   return normalize(vec4(gaussian_pair(u.xy), gaussian_pair(vec2(u.z, w.x))));
 }
 
@@ -255,12 +265,16 @@ float shadow_2d_pcf(Light light, MapPoint point, float bias) {
 }
 
 // 4.3: like pcf with Gaussian offsets (r1, r2) * sigma, sigma = pcfRadius texels: the
-// standard normal pattern GAUSSIAN_DISK turned by a random angle per pixel (section 4.3 allows a
-// pattern rotated per pixel). Drawing each offset with Box-Muller cost a logarithm, a square
+// standard normal pattern GAUSSIAN_DISK turned by a random angle per map texel (section 4.3). Drawing each offset with Box-Muller cost a logarithm, a square
 // root, a sine and a cosine per tap.
-float shadow_2d_noise(Light light, MapPoint point, float bias, uvec2 pixel) {
+// The seed of the map texel holding `point` (map_texel_seed).
+uvec3 map_point_seed(Light light, MapPoint point) {
+  return map_texel_seed(light.shadow_rect.xy, light.info.w, point.uv, light.shadow_depth.z);
+}
+
+float shadow_2d_noise(Light light, MapPoint point, float bias) {
   float sigma_uv = light.shadow_bias.z * light.shadow_depth.z;
-  mat2 rotation = random_rotation_2d(pixel) * sigma_uv;
+  mat2 rotation = random_rotation_2d(map_point_seed(light, point)) * sigma_uv;
   float sum = 0.0;
   [[unroll]] for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
     sum += compare_plane(light, point, rotation * GAUSSIAN_DISK[i], bias);
@@ -274,12 +288,12 @@ float shadow_2d_noise(Light light, MapPoint point, float bias, uvec2 pixel) {
 // thirds of the way to a perspective light (zBlocker >= zReceiver / 3); nearer blockers would need
 // most of the map searched. The filter radius is half the penumbra width, so the transition
 // from lit to shadowed is w wide, and at least one texel, so contact shadows stay antialiased.
-float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, uvec2 pixel) {
+float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter) {
   bool orthographic = map_is_orthographic(light);
   float light_size = light.shadow_bias.w;
   float uv_per_unit = map_uv_per_world_unit(projection_x_scale(light.shadow_matrix),
                                             point.view_depth, orthographic);
-  mat2 rotation = jitter ? random_rotation_2d(pixel) : mat2(1.0);
+  mat2 rotation = jitter ? random_rotation_2d(map_point_seed(light, point)) : mat2(1.0);
 
   float search_uv = light_size * uv_per_unit;
   float blocker_sum = 0.0;
@@ -307,13 +321,13 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter, uvec2
   return sum / float(PCSS_FILTER_SAMPLES);
 }
 
-float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm, uvec2 pixel) {
+float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
   MapPoint point;
   if (!project_to_map(light, world_pos, normal, point)) return 0.0;
   if (algorithm == SHADOW_HARD) return shadow_2d_hard(light, point, bias);
   if (algorithm == SHADOW_PCF) return shadow_2d_pcf(light, point, bias);
-  if (algorithm == SHADOW_NOISE) return shadow_2d_noise(light, point, bias, pixel);
-  return shadow_2d_pcss(light, point, bias, algorithm == SHADOW_PCSS_NOISE, pixel);
+  if (algorithm == SHADOW_NOISE) return shadow_2d_noise(light, point, bias);
+  return shadow_2d_pcss(light, point, bias, algorithm == SHADOW_PCSS_NOISE);
 }
 
 // ---- cube maps (point lights) ----
@@ -388,10 +402,16 @@ vec3 cube_pcss_offset(uint k, bool jitter, vec4 rotation) {
 // PCSS on a cube map with shadow_2d_pcss's radii, in world units directly: an offset moves the
 // lookup direction by its part perpendicular to fragToLight (the part along it only changes the
 // length, which a cube lookup ignores), so radii act at the receiver's distance.
-float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, uvec2 pixel) {
+// The seed of the cube texel in the receiver's direction (map_texel_seed).
+uvec3 cube_point_seed(Light light, CubeReceiver r) {
+  vec3 face_uv = cube_face_uv(r.to_fragment);
+  return map_texel_seed(cube_face_origin(light, int(face_uv.z)), light.info.w, face_uv.xy, light.shadow_depth.z);
+}
+
+float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter) {
   float far = light.shadow_depth.y;
   float light_size = light.shadow_bias.w;
-  vec4 rotation = jitter ? random_rotation_3d(pixel) : vec4(0.0, 0.0, 0.0, 1.0);
+  vec4 rotation = jitter ? random_rotation_3d(cube_point_seed(light, r)) : vec4(0.0, 0.0, 0.0, 1.0);
 
   float blocker_sum = 0.0;
   float blockers = 0.0;
@@ -419,7 +439,7 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter, uvec2 pixel) {
   return sum / float(CUBE_OFFSET_COUNT);
 }
 
-float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm, uvec2 pixel) {
+float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
   CubeReceiver r;
   // From where the cube was rendered, which lags the light while its map is cached.
   r.to_fragment = world_pos - light.shadow_matrix[3].xyz;
@@ -446,15 +466,15 @@ float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint alg
     return sum / float(CUBE_OFFSET_COUNT);
   }
   if (algorithm == SHADOW_NOISE) {
-    // GAUSSIAN_BALL turned by a random rotation per pixel, as shadow_2d_noise does in 2D.
-    vec4 rotation = random_rotation_3d(pixel);
+    // GAUSSIAN_BALL turned by a random rotation per cube texel, as shadow_2d_noise does in 2D.
+    vec4 rotation = random_rotation_3d(cube_point_seed(light, r));
     float sum = 0.0;
     [[unroll]] for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
       sum += cube_sample(light, r, rotate(rotation, GAUSSIAN_BALL[i]) * radius);
     }
     return sum / float(NOISE_SAMPLES);
   }
-  return shadow_cube_pcss(light, r, algorithm == SHADOW_PCSS_NOISE, pixel);
+  return shadow_cube_pcss(light, r, algorithm == SHADOW_PCSS_NOISE);
 }
 
 // ---- entry points ----
@@ -468,13 +488,13 @@ uint light_shadow_kind(Light light) {
 // `light`'s shadow factor at world_pos; `normal` is the receiver's unit normal and n_dot_l is
 // dot(N, L) for the slope-scaled bias. `shadow_kind` and `algorithm` must be the light's own
 // (light_shadow_kind, info.z): passed in, they can be compile-time constants, which leaves only
-// that algorithm's code in the shader. `pixel` seeds the noise algorithms (pixel_random).
+// that algorithm's code in the shader.
 float light_shadow_as(Light light, vec3 world_pos, vec3 normal, float n_dot_l, uint shadow_kind,
-                      uint algorithm, uvec2 pixel) {
+                      uint algorithm) {
   if (shadow_kind == SHADOW_KIND_NONE) return 0.0;
   float bias = shadow_bias(n_dot_l, light.shadow_bias.x, light.shadow_bias.y);
-  if (shadow_kind == SHADOW_KIND_CUBE) return shadow_cube(light, world_pos, normal, bias, algorithm, pixel);
-  return shadow_2d(light, world_pos, normal, bias, algorithm, pixel);
+  if (shadow_kind == SHADOW_KIND_CUBE) return shadow_cube(light, world_pos, normal, bias, algorithm);
+  return shadow_2d(light, world_pos, normal, bias, algorithm);
 }
 
 #endif

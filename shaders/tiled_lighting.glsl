@@ -41,7 +41,6 @@ bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {
   p.base_color = albedo.rgb;
   p.specular = albedo.a;
   p.shininess = normal.w;
-  p.pixel = uvec2(pixel);
   return true;
 }
 

@@ -24,7 +24,7 @@ float map_uv_per_world_unit(float x_scale, float view_depth, bool orthographic);
 float cube_texel_world_size(float distance, float texel_uv);
 glm::vec3 cube_face_uv(glm::vec3 direction);
 glm::uvec3 pcg3d(glm::uvec3 v);
-glm::vec3 pixel_random(glm::uvec2 pixel, std::uint32_t index);
+glm::vec3 cell_random(glm::uvec2 cell, std::uint32_t index);
 glm::vec2 gaussian_pair(glm::vec2 u);
 
 }  // namespace sg::shadows::glsl

@@ -58,7 +58,7 @@ void basis(glm::vec3 n, glm::vec3& u, glm::vec3& v) {
 
 // Sample k of a `side` x `side` stratified grid on the unit disc, jittered per pixel.
 glm::vec2 disc_sample(uint32_t k, uint32_t side, uint32_t x, uint32_t y) {
-  const glm::vec3 jitter = shadows::glsl::pixel_random(glm::uvec2(x, y), k);
+  const glm::vec3 jitter = shadows::glsl::cell_random(glm::uvec2(x, y), k);
   const float su = (float(k % side) + jitter.x) / float(side);
   const float sv = (float(k / side) + jitter.y) / float(side);
   const float radius = std::sqrt(su);

@@ -250,6 +250,70 @@ TEST_F(ShadowAlgorithms, NoiseIsStableFromFrameToFrame) {
   }
 }
 
+// The noise algorithms' patterns stay on the surface when the camera moves: a wall seen straight
+// on, a box's noisy shadow on it, the camera moved sideways by exactly 5 pixels' width at the wall,
+// so that each pixel of the wall shows what the pixel 5 columns to its right showed. Pixels that
+// change also with the hard algorithm (the box itself, in front of the wall, seen from elsewhere)
+// are left out; of the others, a noisy shadow changes none. Drawn per screen pixel, the pattern
+// swam over the wall and this failed.
+TEST_F(ShadowAlgorithms, NoiseStaysOnTheSurfaceWhenTheCameraMoves) {
+  constexpr int shift = 5;
+  const float distance = 5.0f;
+  // Per pixel of the wall: whether it changed with the camera's move, under `algorithm`.
+  const auto changed = [&](scene::ShadowAlgorithm algorithm, int& shadowed) {
+    uint32_t box = 0;
+    SceneView scene = sandbox_scene(floor_scene("noisy wall", box));
+    scene::Material matte;  // no highlight, which would move with the camera
+    matte.specular = 0.0f;
+    scene::add_instance(scene.scene, box, {{0.0f, 2.0f, -0.5f}, glm::quat(1, 0, 0, 0), {20.0f, 8.0f, 1.0f}},
+                        matte);
+    scene::add_instance(scene.scene, box, {{0.2f, 2.1f, 1.5f}, glm::quat(1, 0, 0, 0), {0.5f, 0.5f, 0.5f}},
+                        matte);
+    scene::SpotLight spot;
+    spot.range = 20.0f;
+    spot.outer_cone = glm::radians(40.0f);
+    scene::ShadowSettings noisy;
+    noisy.algorithm = algorithm;
+    noisy.pcf_radius = 4.0f;
+    noisy.resolution = 128;
+    noisy.light_size = 0.5f;
+    scene::add_light(scene.scene, spot, aimed_light({0.0f, 2.0f, 4.0f}, {0.0f, 0.0f, -1.0f}), noisy, "spot");
+    ecs::update_world_transforms(scene.scene.world, 0);
+    FrameSettings options;
+    options.renderer.shadow_resolution = shadows::ShadowResolution::requested;  // the same map
+    const float pixel = 2.0f * distance * std::tan(0.5f * scene.lens.yfov) / float(height);
+    scene.pose = {{0.0f, 2.0f, distance}, {0.0f, 2.0f, 0.0f}};
+    const std::vector<float> before = render(scene, options);
+    scene.pose = {{shift * pixel, 2.0f, distance}, {shift * pixel, 2.0f, 0.0f}};
+    const std::vector<float> after = render(scene, options);
+    const float brightest = *std::max_element(before.begin(), before.end());
+    // Rows that see the wall (the floor below it is not parallel to the picture: it does not shift).
+    const uint32_t wall_rows = std::min(height, uint32_t(0.5f * height + 1.9f / pixel));
+    std::vector<bool> out;
+    shadowed = 0;
+    for (uint32_t y = 0; y < wall_rows; ++y) {
+      for (uint32_t x = shift; x < width; ++x) {
+        const float was = before[size_t{y} * width + x];
+        out.push_back(std::abs(was - after[size_t{y} * width + x - shift]) > 0.01f);
+        // The box's shadow, in the middle of the lit disc.
+        const bool middle = x > width / 4 && x < 3 * width / 4 && y > height / 4 && y < 3 * height / 4;
+        shadowed += middle && was < 0.5f * brightest;
+      }
+    }
+    return out;
+  };
+  int shadowed = 0;
+  const std::vector<bool> geometry = changed(scene::ShadowAlgorithm::hard, shadowed);
+  for (const scene::ShadowAlgorithm algorithm :
+       {scene::ShadowAlgorithm::noise, scene::ShadowAlgorithm::pcss_noise}) {
+    const std::vector<bool> noisy = changed(algorithm, shadowed);
+    EXPECT_GT(shadowed, 100) << to_string(algorithm) << ": no shadow on the wall";
+    size_t moved = 0;
+    for (size_t i = 0; i < noisy.size(); ++i) moved += noisy[i] && !geometry[i];
+    EXPECT_LE(moved, noisy.size() / 1000) << to_string(algorithm) << ": of " << noisy.size() << " pixels";
+  }
+}
+
 // Five spot lights side by side, each over its own box and floor disc, each with its own
 // algorithm. Each disc must look exactly as when every light uses that disc's algorithm, and
 // the discs of the filtered algorithms must differ from the hard one's.

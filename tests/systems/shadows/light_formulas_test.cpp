@@ -137,16 +137,16 @@ TEST(LightFormulas, CubeTexelWorldSizeIsOneTexelOfAFaceCentre) {
               texel_uv, 1e-6f);
 }
 
-TEST(LightFormulas, PixelRandomIsStableUniformAndPerSample) {
+TEST(LightFormulas, CellRandomIsStableUniformAndPerSample) {
   const glm::uvec2 pixel(640, 360);
-  EXPECT_EQ(pixel_random(pixel, 3), pixel_random(pixel, 3)) << "same pixel, same numbers";
-  EXPECT_NE(pixel_random(pixel, 3), pixel_random(pixel, 4));
-  EXPECT_NE(pixel_random(pixel, 3), pixel_random(pixel + glm::uvec2(1, 0), 3));
-  EXPECT_NE(pixel_random(pixel, 3), pixel_random(pixel + glm::uvec2(0, 1), 3));
+  EXPECT_EQ(cell_random(pixel, 3), cell_random(pixel, 3)) << "same pixel, same numbers";
+  EXPECT_NE(cell_random(pixel, 3), cell_random(pixel, 4));
+  EXPECT_NE(cell_random(pixel, 3), cell_random(pixel + glm::uvec2(1, 0), 3));
+  EXPECT_NE(cell_random(pixel, 3), cell_random(pixel + glm::uvec2(0, 1), 3));
   glm::vec3 sum(0.0f);
   const int n = 30000;
   for (int i = 0; i < n; ++i) {  // neighbouring pixels, as a screen has them
-    const glm::vec3 u = pixel_random(glm::uvec2(i % 200, i / 200), std::uint32_t(i % 16));
+    const glm::vec3 u = cell_random(glm::uvec2(i % 200, i / 200), std::uint32_t(i % 16));
     ASSERT_TRUE(glm::all(glm::greaterThan(u, glm::vec3(0.0f))) &&
                 glm::all(glm::lessThanEqual(u, glm::vec3(1.0f))));
     sum += u;
@@ -161,7 +161,7 @@ TEST(LightFormulas, GaussianPairIsStandardNormal) {
   glm::dvec2 sum(0.0), squares(0.0);
   double product = 0.0;
   for (int i = 0; i < n; ++i) {
-    const glm::vec2 g = gaussian_pair(glm::vec2(pixel_random(glm::uvec2(i % 300, i / 300), 0)));
+    const glm::vec2 g = gaussian_pair(glm::vec2(cell_random(glm::uvec2(i % 300, i / 300), 0)));
     sum += glm::dvec2(g);
     squares += glm::dvec2(g * g);
     product += double(g.x) * double(g.y);

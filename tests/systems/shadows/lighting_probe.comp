@@ -19,6 +19,5 @@ void main() {
   p.base_color = vec3(0.5);
   p.specular = 0.5;
   p.shininess = 32.0;
-  p.pixel = uvec2(0u);
   result.color = vec4(shade_lights(p, vec3(0.0), uint(lights.length())), 1.0);
 }
