@@ -73,6 +73,11 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
                    summarize(frame.shadow_views_cached()),
                    summarize(frame.shadow_views_moving_only()),
                    renderer.shadow_caster_draws()};
+  const Frame::MapTimeline& timeline = frame.map_timeline();
+  stats.shadows.map_lag_p50 = summarize(timeline.lag_p50);
+  stats.shadows.map_lag_p99 = summarize(timeline.lag_p99);
+  stats.shadows.map_lag_max = summarize(timeline.lag_max);
+  stats.shadows.lights_changed_tier = summarize(timeline.lights_changed_tier);
   const Frame::ShadowBudgetRecord& budgets = frame.shadow_budget_record();
   const shadows::ShadowTimeBudget& time_budget = renderer.shadow_time_budget();
   const shadows::ShadowTimeBudget::Limits& limits = time_budget.limits();

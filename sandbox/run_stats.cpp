@@ -113,6 +113,11 @@ Json stats_json(const RunStats& stats) {
             {"views_rendered", summary_json(shadows.views_rendered)},
             {"views_cached", summary_json(shadows.views_cached)},
             {"views_moving_only", summary_json(shadows.views_moving_only)},
+            {"map_lag_frames",
+             {{"p50", summary_json(shadows.map_lag_p50)},
+              {"p99", summary_json(shadows.map_lag_p99)},
+              {"max", summary_json(shadows.map_lag_max)}}},
+            {"lights_changed_tier", summary_json(shadows.lights_changed_tier)},
             {"caster_draws", shadows.caster_draws}}},
           {"shadow_budget", shadow_budget_json(stats.shadow_budget)},
           {"settings", settings}};

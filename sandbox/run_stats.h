@@ -52,6 +52,11 @@
 //     "views_cached": {"median": ..., "min": ..., "max": ...},
 //     "views_moving_only": {"median": ..., "min": ..., "max": ...},  // of views_rendered: moving
 //                                                  // casters drawn alone over static layers
+//     "map_lag_frames": {                        // per frame, over the lights whose maps were due
+//                                                // (moved, casters moved, new): how many frames
+//                                                // each map had been wrong, 0 if drawn that frame
+//       "p50": {...}, "p99": {...}, "max": {...}},  // the frame's median, 99th percentile, most
+//     "lights_changed_tier": {...},              // per frame: lights whose resolution changed
 //     "caster_draws": 0                          // caster instances drawn into views, a late frame
 //   },
 //   "shadow_budget": {                           // what the two shadow budgets held down (README,
@@ -139,6 +144,8 @@ struct RunStats {
     std::optional<TimeSummary> views_cached;
     std::optional<TimeSummary> views_moving_only;
     std::uint64_t caster_draws = 0;
+    // Per frame (Frame::MapTimeline), counts summarized like times.
+    std::optional<TimeSummary> map_lag_p50, map_lag_p99, map_lag_max, lights_changed_tier;
   } shadows;
 
   struct ShadowBudget {

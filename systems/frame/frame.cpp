@@ -102,6 +102,10 @@ void Frame::record(const vk::FrameSlot& frame, double time_seconds,
   shadow_views_rendered_.push_back(shadows.views_rendered);
   shadow_views_cached_.push_back(shadows.views_cached);
   shadow_views_moving_only_.push_back(shadows.views_moving_only);
+  map_timeline_.lag_p50.push_back(shadows.map_lag_p50);
+  map_timeline_.lag_p99.push_back(shadows.map_lag_p99);
+  map_timeline_.lag_max.push_back(shadows.map_lag_max);
+  map_timeline_.lights_changed_tier.push_back(shadows.lights_changed_tier);
   drawn_views_[frame.frame_number % drawn_views_.size()] = {frame.frame_number, renderer_.shadow_work()};
   record_shadow_budgets(shadows);
   dropped_light_pairs_ += renderer_.dropped_light_pairs();

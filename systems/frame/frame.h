@@ -115,6 +115,13 @@ class Frame {
   const std::vector<double>& light_list_pairs() const { return light_list_pairs_; }
   const std::vector<double>& shadow_views_cached() const { return shadow_views_cached_; }
   const std::vector<double>& shadow_views_moving_only() const { return shadow_views_moving_only_; }
+  // Per recorded frame, the maps over time (shadows::ShadowScheduleStats): how many frames the
+  // due maps had been wrong (median, 99th percentile, most over those lights; 0 in frames with
+  // none due), and the lights whose resolution changed.
+  struct MapTimeline {
+    std::vector<double> lag_p50, lag_p99, lag_max, lights_changed_tier;
+  };
+  const MapTimeline& map_timeline() const { return map_timeline_; }
   // With the GPU idle: the (tile, light) pairs the light lists of the frames recorded so far had
   // no room for (SceneRenderer::dropped_light_pairs), counted from zero again after.
   uint64_t take_dropped_light_pairs();
@@ -161,6 +168,7 @@ class Frame {
   std::vector<double> light_list_pairs_;
   std::vector<double> shadow_views_cached_;
   std::vector<double> shadow_views_moving_only_;
+  MapTimeline map_timeline_;
   uint64_t dropped_light_pairs_ = 0;
   ShadowBudgetRecord shadow_budget_;
   // The shadow work the last frames drew, by frame number, until their timings come back.

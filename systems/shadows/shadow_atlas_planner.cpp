@@ -139,6 +139,9 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
         placement.moved =
             placement.resolution > 0 && (placement.resolution != own.resolution ||
                                          requests[i].cube != own.cube || placement.tiles != own.tiles);
+        const bool placed_last_plan = own.placed_in_plan != 0 && own.placed_in_plan + 1 == plans_;
+        if (placed_last_plan && placement.resolution != own.resolution) ++tally.changed_tier;
+        own.placed_in_plan = plans_;
         own.resolution = placement.resolution;
         own.cube = requests[i].cube;
         own.tiles = placement.tiles;
@@ -397,6 +400,7 @@ void ShadowAtlasPlanner::update_stats() {
     total.demoted += tally.demoted;
     total.demoted_by_time += tally.demoted_by_time;
     total.lowerable_by_time += tally.lowerable_by_time;
+    total.changed_tier += tally.changed_tier;
     total.texels += tally.texels;
     total.pages_used = std::max(total.pages_used, tally.pages_used);
     for (size_t tier = 0; tier < total.lights_per_tier.size(); ++tier)
@@ -409,6 +413,7 @@ void ShadowAtlasPlanner::update_stats() {
   stats_.dropped_by_budget = total.dropped;
   stats_.demoted_by_time = total.demoted_by_time;
   stats_.lowerable_by_time = total.lowerable_by_time;
+  stats_.lights_changed_tier = total.changed_tier;
   stats_.lights_per_resolution.clear();
   for (uint32_t tier = 0; tier < tier_count(); ++tier) {
     if (total.lights_per_tier[tier] > 0) {

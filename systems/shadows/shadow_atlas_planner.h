@@ -90,6 +90,9 @@ struct AtlasStats {
   uint32_t dropped_by_budget = 0;  // without shadow because of the budget
   uint32_t demoted_by_time = 0;    // wanting less than their importance asks (lowered_tiers)
   uint32_t lowerable_by_time = 0;  // above their quality floor: more lowered tiers would lower them
+  // Lights placed in the previous plan too whose resolution differs now (a shadow gained or
+  // lost included): the tiers that changed, which the time budget's hysteresis keeps few.
+  uint32_t lights_changed_tier = 0;
 };
 
 class ShadowAtlasPlanner {
@@ -126,6 +129,7 @@ class ShadowAtlasPlanner {
     uint32_t resolution = 0;  // as placed
     std::array<AtlasTile, 6> tiles{};
     uint64_t requested_in_plan = 0;
+    uint64_t placed_in_plan = 0;  // the last plan that placed it; 0: none (plans count from 1)
   };
   struct BudgetEffect {
     uint32_t demoted = 0;
@@ -164,6 +168,7 @@ class ShadowAtlasPlanner {
     uint32_t demoted = 0;
     uint32_t demoted_by_time = 0;
     uint32_t lowerable_by_time = 0;
+    uint32_t changed_tier = 0;
     uint32_t pages_used = 0;
     uint64_t texels = 0;
     std::array<uint32_t, 11> lights_per_tier{};  // at most 11 tiers: page_size / min_resolution <= 1024

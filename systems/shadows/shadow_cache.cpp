@@ -29,9 +29,12 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
   choose_renders(lights, view_budget, render);
 
   stats_ = {};
+  lags_.clear();
   for (size_t i = 0; i < lights.size(); ++i) {
     LightState& state = states_[i];
     const uint32_t views = lights[i].views;
+    const bool due = state.dirty || state.moving_dirty;
+    if (due && state.wrong_since == 0) state.wrong_since = frame_;
     if (render[i] != keep_map) {
       if (state.dirty || !state.static_kept || !static_layers) {
         render[i] = draw_all_casters;
@@ -42,6 +45,7 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
         stats_.views_moving_only += views;
       }
       state.rendered_frame = frame_;
+      state.wrong_since = 0;
       state.dirty = false;
       state.moving_dirty = false;
       state.valid = true;
@@ -55,7 +59,22 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
     stats_.lights_waiting += waiting ? 1 : 0;
     stats_.views_waiting += waiting ? views : 0;
     stats_.lights_unavailable += state.valid ? 0 : 1;
+    if (due) lags_.push_back(state.wrong_since == 0 ? 0u : uint32_t(frame_ - state.wrong_since + 1));
   }
+  summarize_lags();
+}
+
+void ShadowCache::summarize_lags() {
+  stats_.lights_due = uint32_t(lags_.size());
+  if (lags_.empty()) return;
+  const auto at_rank = [&](double fraction) {
+    const auto nth = lags_.begin() + std::ptrdiff_t(fraction * double(lags_.size() - 1));
+    std::nth_element(lags_.begin(), nth, lags_.end());
+    return *nth;
+  };
+  stats_.lag_max = *std::max_element(lags_.begin(), lags_.end());
+  stats_.lag_p99 = at_rank(0.99);
+  stats_.lag_p50 = at_rank(0.5);
 }
 
 void ShadowCache::invalidate_all() {

@@ -54,6 +54,14 @@ struct ShadowCacheStats {
   uint32_t lights_waiting = 0;      // dirty but over this frame's budget: rendered in a later frame
   uint32_t views_waiting = 0;       // their views
   uint32_t lights_unavailable = 0;  // no valid map this frame: shaded unshadowed
+  // How many frames the maps of the lights due this frame (wrong before this frame's renders:
+  // moved, their casters moved, new) have been wrong, this one included, after its renders: 0
+  // for a light rendered now, 1 for one that went wrong now and waits, k for one wrong k frames.
+  // The median, the 99th percentile and the most over those lights; all 0 when none is due.
+  uint32_t lights_due = 0;
+  uint32_t lag_p50 = 0;
+  uint32_t lag_p99 = 0;
+  uint32_t lag_max = 0;
 };
 
 class ShadowCache {
@@ -112,6 +120,7 @@ class ShadowCache {
     uint64_t key = 0;
     uint64_t rendered_frame = 0;   // the plan that last rendered it; 0: never
     uint64_t drawn_all_frame = 0;  // the plan that last drew it with every caster
+    uint64_t wrong_since = 0;      // the plan its map went wrong in since it was last rendered; 0: right
     bool dirty = true;             // wrong beyond what moving casters did
     bool moving_dirty = false;     // moving casters made it wrong
     bool valid = false;            // its map holds a picture rendered into its current storage
@@ -124,6 +133,8 @@ class ShadowCache {
                        bool LightState::*flag, jobs::ThreadPool* pool);
   void choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
                       std::span<uint8_t> render);
+  // Fills stats_'s lag figures from lags_.
+  void summarize_lags();
 
   uint64_t frame_ = 0;
   std::vector<LightState> states_;  // parallel to the previous plan's lights
@@ -141,6 +152,7 @@ class ShadowCache {
   // The dirty lights, in the order they get renders: staleness rank << 32 | index in `lights`.
   std::vector<uint64_t> order_;
   std::vector<uint64_t> order_scratch_;
+  std::vector<uint32_t> lags_;        // the due lights' lags (ShadowCacheStats)
   std::vector<uint32_t> candidates_;  // lights tested against the caster boxes, then the dirty ones
   std::vector<glm::vec4> candidate_reach_;
   std::vector<uint8_t> candidate_met_;

@@ -214,6 +214,11 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   stats_.views_rendered = cache.views_rendered;
   stats_.views_cached = cache.views_cached;
   stats_.views_moving_only = cache.views_moving_only;
+  stats_.lights_due = cache.lights_due;
+  stats_.map_lag_p50 = cache.lag_p50;
+  stats_.map_lag_p99 = cache.lag_p99;
+  stats_.map_lag_max = cache.lag_max;
+  stats_.lights_changed_tier = atlas.lights_changed_tier;
   stats_.lights_per_resolution.assign(atlas.lights_per_resolution.rbegin(),  // smallest first
                                       atlas.lights_per_resolution.rend());
   stats_.texels_used = atlas.texels_used;

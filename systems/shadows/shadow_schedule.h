@@ -47,6 +47,13 @@ struct ShadowScheduleStats {
   uint32_t views_cached = 0;           // shadowed views kept from an earlier frame
   uint32_t lights_without_shadow = 0;  // out of sight, or over the memory budget
   uint32_t lights_waiting = 0;         // have a tile, nothing valid in it yet (the view budget)
+  // Over the lights whose maps were due this frame, how many frames each map has been wrong
+  // (ShadowCacheStats: 0 when rendered now): median, 99th percentile, most.
+  uint32_t lights_due = 0;
+  uint32_t map_lag_p50 = 0;
+  uint32_t map_lag_p99 = 0;
+  uint32_t map_lag_max = 0;
+  uint32_t lights_changed_tier = 0;  // resolution other than the previous frame's (AtlasStats)
   // What each budget held down: lights at a lower resolution than they want, or without shadow,
   // for memory; lights below what their size on screen asks, and views due (within view_budget)
   // that the time budget's cap left for later frames, for time.

@@ -98,7 +98,11 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                    TimeSummary{100.0, 50.0, 3584.0},
                    TimeSummary{20.0, 0.0, 40.0},
                    TimeSummary{60.0, 6.0, 600.0},
-                   98'765};
+                   98'765,
+                   TimeSummary{1.0, 0.0, 2.0},
+                   TimeSummary{3.0, 1.0, 5.0},
+                   TimeSummary{4.0, 2.0, 9.0},
+                   TimeSummary{12.0, 0.0, 40.0}};
   stats.shadow_budget = {6.0,
                          TimeSummary{5.5, 2.25, 19.0},
                          120,
@@ -164,7 +168,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                                                  {"lighting", "deferred"},
                                                  {"camera", nullptr}}));
   const nlohmann::json& shadows = json.at("shadows");
-  EXPECT_EQ(shadows.size(), 13u) << shadows.dump(2);
+  EXPECT_EQ(shadows.size(), 15u) << shadows.dump(2);
   EXPECT_EQ(shadows.at("views"), "batched");
   EXPECT_EQ(shadows.at("raster"), "compute");
   EXPECT_EQ(shadows.at("budget_bytes"), 1ull << 30);
@@ -178,6 +182,10 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   expect_summary(shadows.at("views_cached"), *stats.shadows.views_cached);
   expect_summary(shadows.at("views_moving_only"), *stats.shadows.views_moving_only);
   EXPECT_EQ(shadows.at("caster_draws"), 98'765);
+  expect_summary(shadows.at("map_lag_frames").at("p50"), *stats.shadows.map_lag_p50);
+  expect_summary(shadows.at("map_lag_frames").at("p99"), *stats.shadows.map_lag_p99);
+  expect_summary(shadows.at("map_lag_frames").at("max"), *stats.shadows.map_lag_max);
+  expect_summary(shadows.at("lights_changed_tier"), *stats.shadows.lights_changed_tier);
   const nlohmann::json& budget = json.at("shadow_budget");
   EXPECT_EQ(budget.size(), 10u) << budget.dump(2);
   EXPECT_EQ(budget.at("budget_ms"), 6.0);

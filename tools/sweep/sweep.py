@@ -6,7 +6,9 @@ defaults; naive: --naive), renders the stress scene headless with every light mo
 shadow map is redrawn every frame) from each of --cameras (overview: the whole hall; street:
 eye height among the lights) and reads its --stats: times, the raster used, the light-list pairs
 dropped and held, the shadow time budget in use and what it did (the budget that bound most, lights
-demoted and views deferred by time, the tiers it lowered). Writes sweep.csv and, when gnuplot is
+demoted and views deferred by time, the tiers it lowered), the lights a pixel filters
+(--filtered-shadows), how many frames the due maps lagged at most and how many lights changed tier
+(medians over the run's frames). Writes sweep.csv and, when gnuplot is
 installed (apt-get install gnuplot-nox), sweep.png (GPU frame) and sweep_lighting.png (the
 lighting passes alone) into --out; prints progress per run and a summary table. Python's
 standard library only.
@@ -111,6 +113,9 @@ def row_of(stats, light_type, count, mode, camera):
             "lighting_path": stats.get("lighting", ""), "raster": stats["shadows"].get("raster") or "",
             "dropped_light_pairs": stats.get("dropped_light_pairs", ""),
             "light_list_pairs": median(stats.get("light_list_pairs")), "gpu_frame_ms": median(stats["gpu_frame_ms"]),
+            "filtered_shadows": stats.get("filtered_shadows", ""),
+            "map_lag_max": median(stats["shadows"].get("map_lag_frames", {}).get("max")),
+            "lights_changed_tier": median(stats["shadows"].get("lights_changed_tier")),
             "wall_frame_ms": median(stats.get("wall_frame_ms")), "cpu_frame_ms": median(stats["cpu_frame_ms"]),
             "shadow_ms": round(shadow, 4), "lighting_ms": round(lighting, 4),
             "shadow_budget_ms": budget.get("budget_ms") or "", "budget_bound": budget.get("bound", ""),
@@ -161,7 +166,8 @@ def read_csv(path):
     numbers = {"lights": int, "triangles": int, "dropped_light_pairs": int, "width": int, "height": int, "gpu_frame_ms": float, "wall_frame_ms": float,
                "cpu_frame_ms": float, "shadow_ms": float, "lighting_ms": float, "shadow_budget_ms": float,
                "lowered_tiers": float, "lights_demoted_by_time": float, "views_deferred_by_time": float,
-               "light_list_pairs": float}
+               "light_list_pairs": float, "filtered_shadows": int, "map_lag_max": float,
+               "lights_changed_tier": float}
     with open(path) as f:
         return [{k: (numbers[k](v) if k in numbers and v != "" else v) for k, v in row.items()}
                 for row in csv.DictReader(f)]

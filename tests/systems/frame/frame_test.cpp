@@ -42,12 +42,14 @@ class FrameTest : public GpuTest {
     passes = executed_passes(*frame.plan());
     shadow_stats = frame.renderer().shadow_stats();
     dropped_light_pairs = frame.take_dropped_light_pairs();
+    map_timeline = frame.map_timeline();
     return vk::read_rgba8(context, frame.image());
   }
 
   std::vector<std::string> passes;
   shadows::ShadowScheduleStats shadow_stats;  // the last frame's
   uint64_t dropped_light_pairs = 0;           // over the frames rendered
+  Frame::MapTimeline map_timeline;
 };
 
 // Every shadow view due in a frame: culled, sorted into draws and drawn by these passes.
@@ -344,6 +346,22 @@ TEST_F(FrameTest, DenseLightsFromTileListsMatchTheNaiveFrame) {
   EXPECT_LT(brightest, 250) << "a saturated sum would hide a missing light";
   EXPECT_GT(brightest, 40) << "too dim to tell";
   EXPECT_LE(share_differing(tiled, naive, 2), 0.001) << "pixels more than 2 levels of 255 apart";
+}
+
+// Moving lights under a short view budget wait their turn, and the frame says for how long: 40
+// moving spot lights, 8 views a frame, so each map is redrawn about every 5 frames (the sun takes
+// a turn too) and, stalest first, none waits much longer. With every due view drawn, none lags.
+TEST_F(FrameTest, MapsOfMovingLightsLagUnderAShortViewBudget) {
+  FrameSettings options = stress(2000, 0, 40, 1.0f);
+  options.renderer.shadow_view_budget = 8;
+  render(options, 12);
+  ASSERT_EQ(map_timeline.lag_max.size(), 12u);
+  EXPECT_GE(map_timeline.lag_max.back(), 4.0);
+  EXPECT_LE(map_timeline.lag_max.back(), 8.0);
+  EXPECT_GE(map_timeline.lag_p50.back(), 1.0);
+  options.renderer.shadow_view_budget = 0;
+  render(options, 4);
+  EXPECT_EQ(map_timeline.lag_max.back(), 0.0);
 }
 
 // Ranked filtering (--filtered-shadows): at each pixel only the N lights adding most run their

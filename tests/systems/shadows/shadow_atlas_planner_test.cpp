@@ -120,6 +120,20 @@ TEST(ShadowAtlasPlanner, SmallImportanceOscillationsKeepTheResolutionLargeOnesCh
   EXPECT_EQ(plan(planner, {map_light(1, 2048.0f)})[0].resolution, 2048u);
 }
 
+// lights_changed_tier counts the lights placed in the previous plan whose resolution differs:
+// not new lights, not lights held by the hysteresis.
+TEST(ShadowAtlasPlanner, CountsTheLightsThatChangedTier) {
+  ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 4, .min_resolution = 32});
+  plan(planner, {map_light(1, 256.0f), map_light(2, 256.0f)});
+  EXPECT_EQ(planner.stats().lights_changed_tier, 0u) << "new lights";
+  plan(planner, {map_light(1, 256.0f * std::exp2(0.6f)), map_light(2, 2048.0f)});
+  EXPECT_EQ(planner.stats().lights_changed_tier, 1u) << "light 2 up three tiers, light 1 held";
+  plan(planner, {map_light(1, 256.0f), map_light(2, 64.0f), map_light(3, 64.0f)});
+  EXPECT_EQ(planner.stats().lights_changed_tier, 1u) << "light 2 down; light 3 is new";
+  plan(planner, {map_light(1, 256.0f), map_light(2, 64.0f), map_light(3, 64.0f)});
+  EXPECT_EQ(planner.stats().lights_changed_tier, 0u);
+}
+
 // The time budget's lowered tiers: every light as if log2 of what it gets were that much lower,
 // never below its quality floor, and a light that wants less than its floor keeps what it wants.
 TEST(ShadowAtlasPlanner, LoweredTiersLowerEveryLightDownToItsFloor) {

@@ -168,6 +168,37 @@ TEST(ShadowCache, NoLightStarvesWhenTheBudgetIsShort) {
   }
 }
 
+// How far maps lag: four lights changing every frame, one rendered a frame, round the lights in
+// turn. In steady state the lights due are all four, a frame after each is rendered its map has
+// been wrong one frame, then two, then three, then it renders (0): lags {0, 1, 2, 3}. A still
+// light is never due; with no budget every due light renders and nothing lags.
+TEST(ShadowCache, LagCountsTheFramesEachDueMapHasBeenWrong) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights{spot(1), spot(2), spot(3), spot(4), spot(5)};
+  plan(cache, lights, 0);  // all new: every one renders
+  EXPECT_EQ(cache.stats().lights_due, 5u);
+  EXPECT_EQ(cache.stats().lag_max, 0u);
+  for (int frame = 0; frame < 12; ++frame) {
+    for (size_t i = 0; i < 4; ++i) lights[i].changed = true;  // light 5 stays still
+    plan(cache, lights, 1);
+    const ShadowCacheStats& stats = cache.stats();
+    EXPECT_EQ(stats.lights_due, 4u) << "frame " << frame;
+    if (frame >= 4) {
+      EXPECT_EQ(stats.lag_p50, 1u) << "frame " << frame;
+      EXPECT_EQ(stats.lag_p99, 2u) << "frame " << frame;
+      EXPECT_EQ(stats.lag_max, 3u) << "frame " << frame;
+    }
+  }
+  for (size_t i = 0; i < 4; ++i) lights[i].changed = true;
+  plan(cache, lights, 0);
+  EXPECT_EQ(cache.stats().lights_due, 4u);
+  EXPECT_EQ(cache.stats().lag_max, 0u) << "every due map rendered";
+  for (ShadowCacheLight& light : lights) light.changed = false;
+  plan(cache, lights, 1);
+  EXPECT_EQ(cache.stats().lights_due, 0u);
+  EXPECT_EQ(cache.stats().lag_p50, 0u);
+}
+
 // Thousands of dirty lights over the view budget, their staleness spread by random changes and
 // invalidations:
 // the choice is, frame after frame, a plain model's: lights without a valid map, then the
