@@ -81,6 +81,8 @@ UiFacts SandboxFrame::ui_facts() const {
   facts.views_rendered = shadows.views_rendered;
   facts.views_cached = shadows.views_cached;
   facts.views_moving_only = shadows.views_moving_only;
+  facts.map_lag_p99 = shadows.map_lag_p99;
+  facts.map_lag_max = shadows.map_lag_max;
   facts.lights_without_shadow = shadows.lights_without_shadow;
   facts.lights = static_cast<uint32_t>(renderer.lights().records.size());
   facts.shadow_mib = double(renderer.shadow_atlas().bytes()) / (1 << 20);

@@ -158,6 +158,7 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
               facts.lights_without_shadow);
   ImGui::Text("shadow views drawn %u (%u moving casters only), kept %u", facts.views_rendered,
               facts.views_moving_only, facts.views_cached);
+  ImGui::Text("due maps wrong for %u frames (99%%), %u at most", facts.map_lag_p99, facts.map_lag_max);
   ImGui::Text("shadow atlas %.0f MiB", facts.shadow_mib);
   constexpr const char* views[] = {"lit", "shadows only"};
   ImGui::Combo("view", &view_, views, IM_ARRAYSIZE(views));

@@ -52,6 +52,8 @@ struct UiFacts {
   uint32_t views_rendered = 0;
   uint32_t views_cached = 0;
   uint32_t views_moving_only = 0;  // of views_rendered, over their static layers
+  uint32_t map_lag_p99 = 0;        // frames the due maps had been wrong (ShadowScheduleStats)
+  uint32_t map_lag_max = 0;
   uint32_t lights = 0;
   uint32_t lights_without_shadow = 0;
   double shadow_mib = 0.0;
