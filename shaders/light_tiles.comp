@@ -19,6 +19,9 @@ shared bool has_surfaces;
 shared uint first_slot[THREADS];  // per thread: how many it found, then where its lights go
 shared uint tile_first;   // the tile's first entry in the pool
 shared uint tile_listed;  // how many entries it has there
+shared uint tile_wanted;  // how many lights reach it
+shared uint search_low;   // the least worth kept, halved towards (light_worth_bits)
+shared uint search_high;
 shared uint group_first[LIGHT_GROUP_COUNT];  // per group, its range in the tile's list
 shared uint group_end[LIGHT_GROUP_COUNT];
 
@@ -82,8 +85,57 @@ void main() {
       sum += count;
     }
     tile_first = take_entries(sum, tile_listed);
+    tile_wanted = sum;
+    search_low = 0u;
+    search_high = NO_WORTH;
   }
   barrier();
+  // Where the pool holds fewer than the tile's lights, it lists those worth the most there: the
+  // least worth it keeps, found by halving, is the smallest that leaves at most tile_listed
+  // lights. A rare frame's work: the pool grows for the next ones.
+  uint least = 0u;
+  if (tile_listed < tile_wanted) {
+    while (true) {
+      uint low = search_low;
+      uint high = search_high;
+      if (low >= high) break;
+      uint middle = low + (high - low) / 2u;
+      uint kept = 0u;
+      for (uint i = first; i < last; ++i) {
+        if (light_reaches_sphere(lights[i], sphere) && light_worth_bits(lights[i], sphere) >= middle) ++kept;
+      }
+      first_slot[local] = kept;
+      barrier();
+      if (local == 0u) {
+        uint sum = 0u;
+        for (uint t = 0u; t < THREADS; ++t) sum += first_slot[t];
+        if (sum <= tile_listed) {
+          search_high = middle;
+        } else {
+          search_low = middle + 1u;
+        }
+      }
+      barrier();
+    }
+    least = search_low;
+    uint kept = 0u;
+    for (uint i = first; i < last; ++i) {
+      if (light_reaches_sphere(lights[i], sphere) && light_worth_bits(lights[i], sphere) >= least) ++kept;
+    }
+    first_slot[local] = kept;
+    barrier();
+    if (local == 0u) {
+      uint sum = 0u;
+      for (uint t = 0u; t < THREADS; ++t) {
+        uint count = first_slot[t];
+        first_slot[t] = sum;
+        sum += count;
+      }
+      // Lights worth exactly the least kept may not all fit: those left out count as dropped too.
+      if (sum < tile_listed) atomicAdd(dropped_pairs, tile_listed - sum);
+    }
+    barrier();
+  }
   // Groups are contiguous in light order, so in the list too: each thread widens the ranges of
   // the groups its lights fall in, once per run of one group.
   uint slot = first_slot[local];
@@ -91,6 +143,7 @@ void main() {
   uint run_first = 0u;
   for (uint i = first; i < last && slot < tile_listed; ++i) {
     if (!light_reaches_sphere(lights[i], sphere)) continue;
+    if (least > 0u && light_worth_bits(lights[i], sphere) < least) continue;
     tile_lights[tile_first + slot] = i;
     uint group = group_of(i);
     if (group != run_group) {

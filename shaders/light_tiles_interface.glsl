@@ -3,7 +3,8 @@
 // depth, background excluded) by a sphere, lists every light that reaches it in light-index
 // order, and, since the records are sorted by light group (systems/shadows/frame_lights.h),
 // finds each group's range in that list. A tile's list is as long as its lights: each tile counts
-// them first, then takes that many entries of one pool shared by all tiles (take_entries). Every tile with lights of a group is appended to that
+// them first, then takes that many entries of one pool shared by all tiles (take_entries); where the
+// pool runs out, a tile lists the lights worth most to it (light_worth_bits). Every tile with lights of a group is appended to that
 // group's tile list, whose length is the group's indirect dispatch (tiled_lighting.comp). Both
 // shaders write the same lists.
 // Their transparent variants (systems/lighting/transparent_pass.h) bound each tile by where transparent
@@ -13,6 +14,7 @@
 
 #include "bindings.glsl"
 #include "camera_depth.glsl"
+#include "light_formulas.glsl"
 #include "light_groups.glsl"
 #include "light_record.glsl"
 #include "light_tiles.glsl"
@@ -98,6 +100,25 @@ vec4 visible_sphere_of_tile(uvec2 tile_xy, float nearest, float farthest) {
 
 // Records that `tile`'s lights of `group` are the `count` entries of the pool from `first` on,
 // and, when there are any, lists the tile for the group's dispatch.
+// What a light is worth to a tile whose list the pool cannot hold whole: its radiance's luminance
+// times its falloff at the nearest point of the tile's sphere (1 for directional and cylinder
+// lights), as the bits of that non-negative float, which order as the values do. The lights a
+// full pool leaves out of a tile are the least worth there.
+uint light_worth_bits(Light light, vec4 sphere) {
+  float power = dot(light.color_intensity.rgb, vec3(0.2126, 0.7152, 0.0722)) * light.color_intensity.a;
+  float falloff = 1.0;
+  if (light.info.x == LIGHT_POINT || light.info.x == LIGHT_SPOT) {
+    float distance = max(length(sphere.xyz - light.position_range.xyz) - sphere.w, 0.0);
+    float range = light.position_range.w;
+    falloff = light.info.y == FALLOFF_GLTF_PUNCTUAL ? falloff_gltf_punctual(distance, range)
+                                                    : falloff_linear_window(distance, range);
+  }
+  return floatBitsToUint(max(power * falloff, 0.0));
+}
+
+// Above every light_worth_bits: no light is worth this much.
+const uint NO_WORTH = 0x7F800001u;
+
 void publish_group_range(uint tile, uint group, uint first, uint count) {
   tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(first, count);
   if (count == 0u) return;

@@ -40,14 +40,36 @@ void main() {
   }
   uint listed;
   uint first = take_entries(reached, listed);
+  // Where the pool holds fewer than the tile's lights, it lists those worth the most there: the
+  // least worth it keeps, found by halving (light_worth_bits), is the smallest that leaves at most
+  // `listed` lights. A rare frame's work: the pool grows for the next ones.
+  uint least = 0u;
+  if (listed < reached) {
+    uint above = NO_WORTH;
+    while (least < above) {
+      uint middle = least + (above - least) / 2u;
+      uint kept = 0u;
+      for (uint i = 0u; i < frame.counts.x; ++i) {
+        if (light_reaches_sphere(lights[i], sphere) && light_worth_bits(lights[i], sphere) >= middle) ++kept;
+      }
+      if (kept <= listed) {
+        above = middle;
+      } else {
+        least = middle + 1u;
+      }
+    }
+  }
   uint count = 0u;
   for (uint i = 0u; count < listed && i < frame.counts.x; ++i) {
     if (!light_reaches_sphere(lights[i], sphere)) continue;
+    if (least > 0u && light_worth_bits(lights[i], sphere) < least) continue;
     tile_lights[first + count] = i;
     uint group = group_of(i);
     if (group_count[group] == 0u) group_first[group] = first + count;
     ++group_count[group];
     ++count;
   }
+  // Lights worth exactly the least kept may not all fit: those left out count as dropped too.
+  if (count < listed) atomicAdd(dropped_pairs, listed - count);
   for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) publish_group_range(tile, g, group_first[g], group_count[g]);
 }

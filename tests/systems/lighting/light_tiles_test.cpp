@@ -218,8 +218,8 @@ TEST_F(CrowdTest, EveryLightThatReachesATileIsListed) {
   }
 }
 
-// A pool at the device's limit, smaller than the lists: every frame lists what fits, each tile
-// the start of its list, and counts the rest, in both shapes of the culling.
+// A pool at the device's limit, smaller than the lists: every frame lists what fits and counts
+// the rest, in both shapes of the culling, each tile's list in light order.
 TEST_F(CrowdTest, APoolAtItsLimitListsWhatFitsAndCountsTheRest) {
   const uint64_t wanted = tiles_with_surfaces * 300;
   constexpr uint64_t limit = 20000;
@@ -232,7 +232,35 @@ TEST_F(CrowdTest, APoolAtItsLimitListsWhatFitsAndCountsTheRest) {
       EXPECT_EQ(culled.asked, wanted) << "what the lists asked for, the dropped pairs included";
       uint64_t listed = 0;
       for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
-        for (uint32_t j = 0; j < tile.size(); ++j) EXPECT_EQ(tile[j], j);
+        EXPECT_TRUE(std::is_sorted(tile.begin(), tile.end()));
+        EXPECT_EQ(std::adjacent_find(tile.begin(), tile.end()), tile.end()) << "each light once";
+        listed += tile.size();
+      }
+      EXPECT_EQ(listed, limit);
+    }
+  }
+}
+
+// The same with the crowd's intensities rising with their index, then falling: each tile keeps
+// the brightest, the end of its list, then its start.
+TEST_F(CrowdTest, APoolAtItsLimitLeavesOutTheLightsWorthLeast) {
+  const uint64_t wanted = tiles_with_surfaces * 300;
+  constexpr uint64_t limit = 20000;
+  for (const bool rising : {true, false}) {
+    for (size_t i = 0; i < lights.records.size(); ++i) {
+      lights.records[i].color_intensity.a = 1.0f + float(rising ? i : 299 - i);
+    }
+    for (const LightCullingShape shape :
+         {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
+      const Culled culled = cull(lights, shape, depth, view_projection, 1, limit).front();
+      EXPECT_EQ(culled.dropped, wanted - limit);
+      uint64_t listed = 0;
+      for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
+        const uint32_t first_kept = rising ? 300 - uint32_t(tile.size()) : 0;
+        for (uint32_t j = 0; j < tile.size(); ++j) {
+          ASSERT_EQ(tile[j], first_kept + j)
+              << (rising ? "rising" : "falling") << ": the brightest, in order";
+        }
         listed += tile.size();
       }
       EXPECT_EQ(listed, limit);
