@@ -60,16 +60,23 @@ Incidence light_incidence(Light light, vec3 world_pos, uint type) {
 
 float luminance(vec3 color) { return dot(color, vec3(0.2126, 0.7152, 0.0722)); }
 
+vec3 radiance_at(Light light, Incidence at) { return light.color_intensity.rgb * light.color_intensity.a * at.reach; }
+vec3 shadow_color_at(Light light, Incidence at) { return at.fade * light.shadow_color_density.rgb; }
+
+// Whether no shadow of `light` can change the sum at the surface point: out of the light's reach,
+// or facing away from it (it takes nothing from the light) without shadow color.
+bool unaffected(Light light, SurfacePoint p, Incidence at) {
+  return at.reach <= 0.0 || (dot(p.normal, at.to_light) <= 0.0 && shadow_color_at(light, at) == vec3(0.0));
+}
+
 // How much `light`'s shadow can change the pixel: the luminance of all it adds unshadowed plus
-// that of its shadow color term, the most that any shade in [0, 1] can move the sum. Zero where
-// no shadow of the light changes the sum: out of its reach, or facing away without shadow color.
+// that of its shadow color term, the most that any shade in [0, 1] can move the sum; zero where
+// it is unaffected.
 float shadow_weight(Light light, SurfacePoint p, Incidence at) {
-  if (at.reach <= 0.0) return 0.0;
-  vec3 shadow_color = at.fade * light.shadow_color_density.rgb;
-  if (dot(p.normal, at.to_light) <= 0.0 && shadow_color == vec3(0.0)) return 0.0;
-  vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * at.reach;
+  if (unaffected(light, p, at)) return 0.0;
+  vec3 shadow_color = shadow_color_at(light, at);
   float density = light.shadow_color_density.a;
-  return luminance(blinn_light(p, at.to_light, radiance, 0.0, density, shadow_color)) +
+  return luminance(blinn_light(p, at.to_light, radiance_at(light, at), 0.0, density, shadow_color)) +
          density * luminance(shadow_color);
 }
 
@@ -88,13 +95,10 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
   // drop out of a cube group's shader (a CPU driver computes every branch, taken or not).
   uint type = shadow_kind == SHADOW_KIND_CUBE ? LIGHT_POINT : light_type(light);
   Incidence at = light_incidence(light, world_pos, type);
-  if (at.reach <= 0.0) return vec3(0.0);
-  // Facing away from the light, a surface takes nothing from it but shadow color where shadowed:
-  // without shadow color no shadow changes the sum, and the shadow lookup, most of a light's cost
-  // when many overlap, is skipped.
-  vec3 shadow_color = at.fade * light.shadow_color_density.rgb;
+  // There the light adds nothing whatever its shadow, and the shadow lookup, most of a light's
+  // cost when many overlap, is skipped.
+  if (unaffected(light, p, at)) return vec3(0.0);
   float n_dot_l = dot(p.normal, at.to_light);
-  if (n_dot_l <= 0.0 && shadow_color == vec3(0.0)) return vec3(0.0);
 
   // Two calls, each with a constant algorithm, so that each keeps only its own kernel's code.
   bool filtered = SHADOW_ONLY_VIEW || filter_floor <= 0.0 || shadow_weight(light, p, at) >= filter_floor;
@@ -103,8 +107,8 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
   if (SHADOW_ONLY_VIEW) {
     return vec3((1.0 - shade) * light.color_intensity.a * at.reach * max(n_dot_l, 0.0));
   }
-  vec3 radiance = light.color_intensity.rgb * light.color_intensity.a * at.reach;
-  return blinn_light(p, at.to_light, radiance, shade, light.shadow_color_density.a, shadow_color);
+  return blinn_light(p, at.to_light, radiance_at(light, at), shade, light.shadow_color_density.a,
+                     shadow_color_at(light, at));
 }
 
 vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
