@@ -102,7 +102,7 @@ void main() {
       uint middle = low + (high - low) / 2u;
       uint kept = 0u;
       for (uint i = first; i < last; ++i) {
-        if (light_reaches_sphere(lights[i], sphere) && light_worth_bits(lights[i], sphere) >= middle) ++kept;
+        if (listed_in_tile(i, sphere, middle)) ++kept;
       }
       first_slot[local] = kept;
       barrier();
@@ -120,7 +120,7 @@ void main() {
     least = search_low;
     uint kept = 0u;
     for (uint i = first; i < last; ++i) {
-      if (light_reaches_sphere(lights[i], sphere) && light_worth_bits(lights[i], sphere) >= least) ++kept;
+      if (listed_in_tile(i, sphere, least)) ++kept;
     }
     first_slot[local] = kept;
     barrier();
@@ -142,8 +142,7 @@ void main() {
   uint run_group = LIGHT_GROUP_COUNT;
   uint run_first = 0u;
   for (uint i = first; i < last && slot < tile_listed; ++i) {
-    if (!light_reaches_sphere(lights[i], sphere)) continue;
-    if (least > 0u && light_worth_bits(lights[i], sphere) < least) continue;
+    if (!listed_in_tile(i, sphere, least)) continue;
     tile_lights[tile_first + slot] = i;
     uint group = group_of(i);
     if (group != run_group) {

@@ -119,6 +119,12 @@ uint light_worth_bits(Light light, vec4 sphere) {
 // Above every light_worth_bits: no light is worth this much.
 const uint NO_WORTH = 0x7F800001u;
 
+// Whether light `i` goes in the list of the tile bounded by `sphere`: it reaches the tile and is
+// worth at least `least` there (0: every light that reaches it).
+bool listed_in_tile(uint i, vec4 sphere, uint least) {
+  return light_reaches_sphere(lights[i], sphere) && (least == 0u || light_worth_bits(lights[i], sphere) >= least);
+}
+
 void publish_group_range(uint tile, uint group, uint first, uint count) {
   tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(first, count);
   if (count == 0u) return;

@@ -50,7 +50,7 @@ void main() {
       uint middle = least + (above - least) / 2u;
       uint kept = 0u;
       for (uint i = 0u; i < frame.counts.x; ++i) {
-        if (light_reaches_sphere(lights[i], sphere) && light_worth_bits(lights[i], sphere) >= middle) ++kept;
+        if (listed_in_tile(i, sphere, middle)) ++kept;
       }
       if (kept <= listed) {
         above = middle;
@@ -61,8 +61,7 @@ void main() {
   }
   uint count = 0u;
   for (uint i = 0u; count < listed && i < frame.counts.x; ++i) {
-    if (!light_reaches_sphere(lights[i], sphere)) continue;
-    if (least > 0u && light_worth_bits(lights[i], sphere) < least) continue;
+    if (!listed_in_tile(i, sphere, least)) continue;
     tile_lights[first + count] = i;
     uint group = group_of(i);
     if (group_count[group] == 0u) group_first[group] = first + count;
