@@ -14,9 +14,9 @@
 // explicit level of detail, as lights are evaluated in non-uniform control flow.
 //
 // Kernels: pcf a 3x3 grid (the source's), noise 16 Gaussian offsets (a stratified pattern turned
-// randomly per shadow-map texel, map_texel_seed), pcss 16 blocker-search and 32 filter samples of a Poisson disk on 2D maps
-// and the 20 directions of section 4 on cube maps; pcss_noise the same kernels rotated randomly
-// per surface point. Every kernel loop but the cube pcss filter's is marked [[unroll]]: left to
+// randomly per shadow-map texel, map_texel_seed), pcss 16 blocker-search and 32 filter samples of
+// a Poisson disk on 2D maps and the 20 directions of section 4 on cube maps; pcss_noise the same
+// kernels rotated randomly per shadow-map texel. Every kernel loop but the cube pcss filter's is marked [[unroll]]: left to
 // itself the compiler kept the 32-tap pcss filter a loop, whose Poisson disk lookups with the
 // loop counter llvmpipe does through memory, lane by lane (a fifth of the 2D pcss_noise pass);
 // unrolled, the table entries are constants. The cube pcss filter is a loop that lit areas skip,
@@ -264,14 +264,14 @@ float shadow_2d_pcf(Light light, MapPoint point, float bias) {
   return sum / taps;
 }
 
-// 4.3: like pcf with Gaussian offsets (r1, r2) * sigma, sigma = pcfRadius texels: the
-// standard normal pattern GAUSSIAN_DISK turned by a random angle per map texel (section 4.3). Drawing each offset with Box-Muller cost a logarithm, a square
-// root, a sine and a cosine per tap.
 // The seed of the map texel holding `point` (map_texel_seed).
 uvec3 map_point_seed(Light light, MapPoint point) {
   return map_texel_seed(light.shadow_rect.xy, light.info.w, point.uv, light.shadow_depth.z);
 }
 
+// 4.3: like pcf with Gaussian offsets (r1, r2) * sigma, sigma = pcfRadius texels: the
+// standard normal pattern GAUSSIAN_DISK turned by a random angle per map texel (section 4.3).
+// Drawing each offset with Box-Muller cost a logarithm, a square root, a sine and a cosine per tap.
 float shadow_2d_noise(Light light, MapPoint point, float bias) {
   float sigma_uv = light.shadow_bias.z * light.shadow_depth.z;
   mat2 rotation = random_rotation_2d(map_point_seed(light, point)) * sigma_uv;
@@ -399,15 +399,15 @@ vec3 cube_pcss_offset(uint k, bool jitter, vec4 rotation) {
   return jitter ? rotate(rotation, offset) : offset;
 }
 
-// PCSS on a cube map with shadow_2d_pcss's radii, in world units directly: an offset moves the
-// lookup direction by its part perpendicular to fragToLight (the part along it only changes the
-// length, which a cube lookup ignores), so radii act at the receiver's distance.
 // The seed of the cube texel in the receiver's direction (map_texel_seed).
 uvec3 cube_point_seed(Light light, CubeReceiver r) {
   vec3 face_uv = cube_face_uv(r.to_fragment);
   return map_texel_seed(cube_face_origin(light, int(face_uv.z)), light.info.w, face_uv.xy, light.shadow_depth.z);
 }
 
+// PCSS on a cube map with shadow_2d_pcss's radii, in world units directly: an offset moves the
+// lookup direction by its part perpendicular to fragToLight (the part along it only changes the
+// length, which a cube lookup ignores), so radii act at the receiver's distance.
 float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter) {
   float far = light.shadow_depth.y;
   float light_size = light.shadow_bias.w;
