@@ -159,11 +159,13 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
           vkCmdDispatch(rec.cmd(), (constants.screen.x + 15) / 16, (constants.screen.y + 15) / 16, 1);
         });
   }
-  // The group passes' descriptor set, on `writer`.
-  const auto write_set = [this, gbuffer, tiles, atlas, &lights](vk::DescriptorWriter writer,
-                                                                rg::ImageHandle lit_sum,
-                                                                const vk::PassRecorder& rec) {
+  // Binds `pipeline` of layout_ with the lighting inputs, `lit_sum` and `constants`: the floor's
+  // pass and the groups'.
+  const auto bind = [this, gbuffer, tiles, atlas, &lights](const vk::PassRecorder& rec, VkPipeline pipeline,
+                                                           rg::ImageHandle lit_sum,
+                                                           const LightingConstants& constants) {
     const VkSampler nearest = nearest_.get();
+    vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
     writer.image(scene_depth_binding, rec.view(gbuffer.depth), nearest)
         .image(gbuffer_normal_binding, rec.view(gbuffer.normal), nearest)
         .image(gbuffer_albedo_binding, rec.view(gbuffer.albedo), nearest)
@@ -171,7 +173,10 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
         .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
         .buffer(group_tiles_binding, rec.buffer(tiles.tiles))
         .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
-    return light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+    const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+    vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+    layout_.bind_compute(rec.cmd(), set);
+    layout_.push(rec.cmd(), constants);
   };
   const auto read_lighting_inputs = [&](rg::PassBuilder& b) {
     for (const rg::ImageHandle image : {atlas, gbuffer.depth, gbuffer.normal, gbuffer.albedo}) {
@@ -190,11 +195,8 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
           read_lighting_inputs(b);
           lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
         },
-        [this, write_set, lit_sum, constants, grid](const vk::PassRecorder& rec) {
-          const VkDescriptorSet set = write_set(layout_.write(rec.allocate_set(layout_)), lit_sum, rec);
-          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, filter_floor_pipeline_.get());
-          layout_.bind_compute(rec.cmd(), set);
-          layout_.push(rec.cmd(), constants);
+        [this, bind, lit_sum, constants, grid](const vk::PassRecorder& rec) {
+          bind(rec, filter_floor_pipeline_.get(), lit_sum, constants);
           vkCmdDispatch(rec.cmd(), grid.across, grid.down, 1);  // a workgroup a tile
         });
   }
@@ -207,12 +209,9 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
           b.read(tiles.commands, rg::Usage::indirect);
           lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
         },
-        [this, group, write_set, tiles, lit_sum, constants = with_group_light(constants, group_light_[group]),
+        [group, bind, tiles, lit_sum, constants = with_group_light(constants, group_light_[group]),
          pipeline = current_[group]](const vk::PassRecorder& rec) {
-          const VkDescriptorSet set = write_set(layout_.write(rec.allocate_set(layout_)), lit_sum, rec);
-          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-          layout_.bind_compute(rec.cmd(), set);
-          layout_.push(rec.cmd(), constants);
+          bind(rec, pipeline, lit_sum, constants);
           vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.commands),
                                 LightTilesPass::dispatch_offset(group));
         });

@@ -37,17 +37,12 @@ bool keeps_static_layers(const vk::VulkanContext& context, const RendererSetting
          ShadowViewBatch::may_raster_in_compute(context, settings.shadow_raster);
 }
 
-// The settings' time budget for shadows, or the device's default: none on CPU devices
-// (RendererSettings::shadow_budget_ms).
-double time_budget_ms(const vk::VulkanContext& context, const RendererSettings& settings) {
-  if (settings.shadow_budget_ms) return *settings.shadow_budget_ms;
-  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0.0 : default_gpu_shadow_budget_ms;
-}
-
-// The settings' ranked filtering, or the device's default: none on CPU devices.
-uint32_t filtered_lights_for(const vk::VulkanContext& context, const RendererSettings& settings) {
-  if (settings.filtered_lights) return *settings.filtered_lights;
-  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0u : default_gpu_filtered_lights;
+// An optional setting's value, or its default on `context`'s device: `gpu_default` on GPUs, off
+// (zero) on CPU devices (RendererSettings::shadow_budget_ms, filtered_lights).
+template <typename T>
+T or_device_default(const std::optional<T>& setting, const vk::VulkanContext& context, T gpu_default) {
+  if (setting) return *setting;
+  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? T{} : gpu_default;
 }
 
 // Tiled deferred measured fastest on the H200 (docs/PERFORMANCE.md), and on lavapipe for more
@@ -77,7 +72,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       atlas_(context, uint64_t{settings.shadow_memory_mib} << 20, keeps_static_layers(context, settings)),
       schedule_({atlas_.shape().page_size, atlas_.shape().max_pages, shadows::min_shadow_resolution},
                 atlas_.static_layers() != nullptr, settings.shadow_resolution,
-                time_budget_ms(context, settings)),
+                or_device_default(settings.shadow_budget_ms, context, default_gpu_shadow_budget_ms)),
       tone_map_(context, frame_format),
       light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
                      frames_in_flight, "light records", light_record_texel_format),
@@ -96,7 +91,9 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       break;
     case LightingPath::automatic:  // resolved above
     case LightingPath::deferred: {
-      TiledLightingPass lighting(context, settings.lit_sum_start, filtered_lights_for(context, settings));
+      TiledLightingPass lighting(
+          context, settings.lit_sum_start,
+          or_device_default(settings.filtered_lights, context, default_gpu_filtered_lights));
       if (lighting.filtered_lights() > 0) {
         std::printf(
             "shadowgraph: at each pixel the %u lights adding most to it run their shadow filters, the others "
