@@ -15,8 +15,9 @@
 //
 // Kernels: pcf a 3x3 grid (the source's), noise 16 Gaussian offsets (a stratified pattern turned
 // randomly per shadow-map texel, map_texel_seed), pcss 16 blocker-search and 32 filter samples of
-// a Poisson disk on 2D maps and the 20 directions of section 4 on cube maps; pcss_noise the same
-// kernels rotated randomly per shadow-map texel. Every kernel loop but the cube pcss filter's is marked [[unroll]]: left to
+// a Poisson disk on 2D maps and the 20 directions of section 4 on cube maps, fewer where the
+// kernel spans a texel or two (search_taps_by_footprint); pcss_noise the same kernels rotated
+// randomly per shadow-map texel. Every kernel loop but the cube pcss filter's is marked [[unroll]]: left to
 // itself the compiler kept the 32-tap pcss filter a loop, whose Poisson disk lookups with the
 // loop counter llvmpipe does through memory, lane by lane (a fifth of the 2D pcss_noise pass);
 // unrolled, the table entries are constants. The cube pcss filter is a loop that lit areas skip,
@@ -48,6 +49,17 @@ const vec2 POISSON_DISK[32] = vec2[](
     vec2(0.0279, 0.2665), vec2(-0.3129, 0.0729), vec2(-0.2628, -0.3027), vec2(0.3059, -0.1001),
     vec2(-0.9655, 0.2401), vec2(-0.5435, 0.4605), vec2(0.7017, 0.2276), vec2(0.3719, 0.4599));
 
+// Taps by footprint: how many of the PCSS blocker search's nearest fetches a disk
+// `radius_texels` map texels wide needs. A few texels hold a few distinct depths, which a 4- or
+// 8-tap prefix of the well-spread disk already reads; the small maps of distant or demoted lights
+// mostly search over a texel or two. The filter keeps more (shadow_2d_pcss): its bilinear
+// comparisons against the receiver plane average away the plane's mismatch, and a quarter of
+// them raised acne on lit surfaces at 32-64 texel maps (docs/QUALITY.md).
+uint search_taps_by_footprint(float radius_texels) {
+  if (radius_texels <= 1.25) return PCSS_BLOCKER_SAMPLES / 4u;
+  return radius_texels <= 2.5 ? PCSS_BLOCKER_SAMPLES / 2u : PCSS_BLOCKER_SAMPLES;
+}
+
 // NOISE_SAMPLES points of a 2D standard normal distribution, stratified: the k-th at the radius
 // where the Rayleigh distribution's CDF is (k + 0.5) / 16, sqrt(-2 ln(1 - (k + 0.5) / 16)), and
 // k golden angles around (mean squared radius 1.96 against the distribution's 2).
@@ -74,6 +86,7 @@ const vec3 GAUSSIAN_BALL[16] = vec3[](
 // counter is k (shadow_cube_pcss's filter) reads no memory: a CPU driver reads a table indexed by
 // a loop counter lane by lane. With a literal k it folds to a constant.
 const uint CUBE_OFFSET_COUNT = 20u;
+const uint CUBE_CORNER_COUNT = 8u;  // the first eight, a kernel symmetric about fragToLight itself
 vec3 cube_offset(uint k) {
   uint i = k & 3u;
   float a = i < 2u ? 1.0 : -1.0;                // 1, 1, -1, -1
@@ -296,9 +309,11 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter) {
   mat2 rotation = jitter ? random_rotation_2d(map_point_seed(light, point)) : mat2(1.0);
 
   float search_uv = light_size * uv_per_unit;
+  uint search_taps = search_taps_by_footprint(search_uv / light.shadow_depth.z);
   float blocker_sum = 0.0;
   float blockers = 0.0;
   [[unroll]] for (uint i = 0u; i < PCSS_BLOCKER_SAMPLES; ++i) {
+    if (i >= search_taps) break;
     vec2 centre = texel_centre(light, point.uv + rotation * POISSON_DISK[i] * search_uv);
     float depth = fetch_depth(light, centre);
     if (depth < plane_reference(point, centre - point.uv, bias)) {
@@ -314,11 +329,14 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter) {
                     ? orthographic_penumbra_width(point.view_depth, blocker, light_size)
                     : pcss_penumbra_width(point.view_depth, blocker, light_size);
   float radius_uv = max(0.5 * width * uv_per_unit, light.shadow_depth.z);
+  // Half the filter where it spans a texel or so (search_taps_by_footprint).
+  uint filter_taps = radius_uv <= 1.25 * light.shadow_depth.z ? PCSS_FILTER_SAMPLES / 2u : PCSS_FILTER_SAMPLES;
   float sum = 0.0;
   [[unroll]] for (uint i = 0u; i < PCSS_FILTER_SAMPLES; ++i) {
+    if (i >= filter_taps) break;
     sum += compare_plane(light, point, rotation * POISSON_DISK[i] * radius_uv, bias);
   }
-  return sum / float(PCSS_FILTER_SAMPLES);
+  return sum / float(filter_taps);
 }
 
 float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
@@ -412,10 +430,14 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter) {
   float far = light.shadow_depth.y;
   float light_size = light.shadow_bias.w;
   vec4 rotation = jitter ? random_rotation_3d(cube_point_seed(light, r)) : vec4(0.0, 0.0, 0.0, 1.0);
+  float texel_world = cube_texel_world_size(r.distance, light.shadow_depth.z);
 
+  // Over two texels or less the eight corners read what the twenty do (search_taps_by_footprint).
+  uint search_taps = light_size <= 2.0 * texel_world ? CUBE_CORNER_COUNT : CUBE_OFFSET_COUNT;
   float blocker_sum = 0.0;
   float blockers = 0.0;
   [[unroll]] for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
+    if (k >= search_taps) break;
     vec3 direction = r.to_fragment + cube_pcss_offset(k, jitter, rotation) * light_size;
     float depth = fetch_cube_depth(light, direction);
     if (cube_plane_beyond(r, direction, depth)) {
@@ -430,7 +452,7 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter) {
   // pass on lavapipe).
   float blocker = blocker_sum / max(blockers, 1.0) * far;
   float width = pcss_penumbra_width(r.distance, blocker, light_size);
-  float radius = max(0.5 * width, cube_texel_world_size(r.distance, light.shadow_depth.z));
+  float radius = max(0.5 * width, texel_world);
   float sum = 0.0;
   uint taps = blockers > 0.0 ? CUBE_OFFSET_COUNT : 0u;
   [[dont_unroll]] for (uint k = 0u; k < taps; ++k) {
