@@ -28,6 +28,8 @@ const int group_commands_binding = 16;
 const int transparent_bounds_binding = 27;
 // How many (tile, light) pairs did not fit a tile's list this frame (light_tiles_interface.glsl).
 const int light_tiles_feedback_binding = 28;
+// Each light's shade and weight at each pixel, for measuring the frame (shadow_probe.comp).
+const int shadow_probe_binding = 29;
 
 // GPU-driven shadow views (shadow_views.glsl): the casters' bounds, their meshes, the culled
 // (caster, view) pairs, their counts per draw, and the indirect commands built from them.

@@ -10,6 +10,7 @@
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/lighting_ambient.comp.spv.h"
 #include "shaders/lighting_filter_floor.comp.spv.h"
+#include "shaders/shadow_probe.comp.spv.h"
 #include "shaders/tiled_lighting.comp.spv.h"
 #include "systems/gpu/scene_gpu_types.h"
 #include "systems/gpu/shader_bindings.h"
@@ -78,7 +79,8 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
                    {tile_lights_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
                    {tile_ranges_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
                    {group_tiles_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage},
-                   {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute_stage}}),
+                   {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute_stage},
+                   {shadow_probe_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage}}),
               vk::push_constants<LightingConstants>(compute_stage)),
       filtered_lights_(filtered_lights) {
   if (filtered_lights_ > most_filtered_lights) {
@@ -97,6 +99,13 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
   // The shadow-only view shows each algorithm's own shade: every light filters there.
   ranked_ = filtered_lights_ > 0 && view == LightingView::lit;
   const uint32_t ranked = ranked_ ? 1u : 0u;
+  probing_ = probe_ && view == LightingView::lit;
+  if (probing_ && !probe_pipelines_[ranked]) {
+    // constant_id 0 to 5 as a group pass's, with every light type and the view lit.
+    const std::vector<uint32_t> constants{0u, 0u, 0u, 0xFu, 0u, ranked};
+    probe_pipelines_[ranked] =
+        vk::create_compute_pipeline(context_, {shadow_probe_comp, constants, layout_.get(), "shadow probe"});
+  }
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     const uint32_t types = lights.group_types[group];  // bit t for type t (lights_interface.glsl)
     if (types == 0) continue;                          // no light of the group this frame
@@ -161,9 +170,10 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
   }
   // Binds `pipeline` of layout_ with the lighting inputs, `lit_sum` and `constants`: the floor's
   // pass and the groups'.
-  const auto bind = [this, gbuffer, tiles, atlas, &lights](const vk::PassRecorder& rec, VkPipeline pipeline,
-                                                           rg::ImageHandle lit_sum,
-                                                           const LightingConstants& constants) {
+  // and the probe's buffer where given.
+  const auto bind = [this, gbuffer, tiles, atlas, &lights](
+                        const vk::PassRecorder& rec, VkPipeline pipeline, rg::ImageHandle lit_sum,
+                        const LightingConstants& constants, VkBuffer probe = VK_NULL_HANDLE) {
     const VkSampler nearest = nearest_.get();
     vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
     writer.image(scene_depth_binding, rec.view(gbuffer.depth), nearest)
@@ -173,6 +183,7 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
         .buffer(tile_ranges_binding, rec.buffer(tiles.ranges))
         .buffer(group_tiles_binding, rec.buffer(tiles.tiles))
         .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
+    if (probe != VK_NULL_HANDLE) writer.buffer(shadow_probe_binding, probe);
     const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
     vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
     layout_.bind_compute(rec.cmd(), set);
@@ -214,6 +225,22 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
           bind(rec, pipeline, lit_sum, constants);
           vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.commands),
                                 LightTilesPass::dispatch_offset(group));
+        });
+  }
+  if (probing_) {
+    const VkPipeline probe_pipeline = probe_pipelines_[ranked_ ? 1 : 0].get();
+    // Reads the lit sum for its filter floor; the probe's buffer is host memory outside the graph,
+    // read once the frame has completed.
+    graph.add_pass(
+        "lighting shadow probe",
+        [&](rg::PassBuilder& b) {
+          read_lighting_inputs(b);
+          lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
+        },
+        [bind, lit_sum, constants, probe_pipeline,
+         probe = probe_->buffer().handle()](const vk::PassRecorder& rec) {
+          bind(rec, probe_pipeline, lit_sum, constants, probe);
+          vkCmdDispatch(rec.cmd(), (constants.screen.x + 15) / 16, (constants.screen.y + 15) / 16, 1);
         });
   }
   return lit_sum;

@@ -23,6 +23,7 @@
 #include "systems/lighting/light_resources.h"
 #include "systems/lighting/light_tiles_pass.h"
 #include "systems/lighting/lighting_path.h"
+#include "systems/lighting/shadow_probe.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/light_groups.h"
 
@@ -59,6 +60,11 @@ class TiledLightingPass {
 
   uint32_t filtered_lights() const { return filtered_lights_; }
 
+  // From the next prepare() on, each frame also records its lights' shadows into `probe`
+  // (shadow_probe.h), after the light groups' passes; null: no more. The probe must outlive the
+  // frames that write it.
+  void probe_shadows(const ShadowProbe* probe) { probe_ = probe; }
+
   // At most 16: the floor pass keeps that many weights a pixel.
   static constexpr uint32_t most_filtered_lights = 16;
 
@@ -73,6 +79,9 @@ class TiledLightingPass {
   uint32_t filtered_lights_;
   vk::UniquePipeline filter_floor_pipeline_;  // where filtered_lights_ > 0
   bool ranked_ = false;                       // this frame: filtered_lights_ > 0 and the view lit
+  const ShadowProbe* probe_ = nullptr;
+  bool probing_ = false;                               // this frame: a probe and the view lit
+  std::array<vk::UniquePipeline, 2> probe_pipelines_;  // by ranked_, made when first needed
   // By group | light types << 8 | LightingView << 16 | single light << 24 | ranked << 25.
   std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;
   // This frame's, by group; null for a group without lights.

@@ -237,6 +237,11 @@ shadows::CasterUpdate SceneRenderer::caster_update() {
   return shadows::CasterUpdate::changes(still_changes_, moved_casters_);
 }
 
+void SceneRenderer::probe_shadows(const ShadowProbe* probe) {
+  if (!deferred_) throw std::logic_error("SceneRenderer::probe_shadows: the lighting path is not deferred");
+  deferred_->lighting.probe_shadows(probe);
+}
+
 RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports& imports,
                                         rg::ImageHandle frame, uint32_t slot, const scene::CameraPose& pose,
                                         const scene::Camera& lens) {

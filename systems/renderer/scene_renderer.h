@@ -110,6 +110,10 @@ class SceneRenderer {
   const jobs::ThreadPool& workers() const { return workers_; }
   // Switches the picture between lit and shadow-only from the next prepare() on.
   void set_view(LightingView view) { settings_.view = view; }
+  // From the next prepare() on, each lit frame also records its lights' shadows into `probe`
+  // (systems/lighting/shadow_probe.h); null: no more. Deferred lighting only: throws on the
+  // fused and every-light paths, which have no per-pixel light lists to walk.
+  void probe_shadows(const ShadowProbe* probe);
   // The batched shadow views' raster from the next frame on (ShadowViewBatch::set_raster); no
   // effect on per-light passes.
   void set_shadow_raster(shadows::ShadowRaster raster) {

@@ -1,0 +1,50 @@
+#pragma once
+// Each light's shadow at each pixel of a lit frame, as the frame drew it: for tools that measure
+// the whole frame against a reference (tools/reference's --whole-frame). Handed to the renderer
+// (SceneRenderer::probe_shadows), the deferred lighting adds a pass after its light groups
+// (shaders/shadow_probe.comp) that records, for every (pixel, light) pair whose shadow can
+// change the pixel, the light's shade there and its weight (shadow_weight: the most its shadow
+// can move the pixel's luminance). Pairs go to a host-visible buffer of fixed capacity; with
+// `keep` below 1 a random share of them is kept, so that frames of many lights fit.
+#include <cstdint>
+#include <vector>
+
+#include "rendergraph/device/fwd.h"
+#include "rendergraph/device/resources.h"
+
+namespace sg {
+
+struct ShadowProbePair {
+  uint32_t pixel = 0;  // y * width + x
+  uint32_t light = 0;  // index into the frame's light records (FrameLights::records)
+  float shade = 0.0f;  // 0 lit .. 1 shadowed, as the frame shaded it
+  float weight = 0.0f;
+};
+
+struct ShadowProbeResult {
+  uint64_t wanted = 0;                 // pairs the frame had
+  uint64_t kept = 0;                   // of them, drawn into the sample (all where keep was 1)
+  std::vector<ShadowProbePair> pairs;  // the kept pairs, unless more were kept than fit
+  bool complete() const { return kept == pairs.size(); }
+};
+
+class ShadowProbe {
+ public:
+  // Room for `capacity` pairs; each pair kept with probability `keep` (0 < keep <= 1).
+  ShadowProbe(vk::VulkanContext& context, uint64_t capacity, float keep);
+
+  // Clears the counts: call before recording the frame to probe.
+  void reset();
+  // The last probed frame's pairs; call once its commands have completed.
+  ShadowProbeResult read() const;
+
+  const vk::Buffer& buffer() const { return buffer_; }
+  float keep() const { return keep_; }
+
+ private:
+  uint32_t capacity_;
+  float keep_;
+  vk::Buffer buffer_;
+};
+
+}  // namespace sg
