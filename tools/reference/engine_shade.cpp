@@ -47,30 +47,6 @@ float bright_quantile(const std::vector<float>& picture, const vk::DepthImage& d
   return *quantile;
 }
 
-// Calls fn with the entity's light component, whichever type it is.
-template <typename World, typename Fn>
-void with_light(World& world, ecs::Entity entity, Fn fn) {
-  if constexpr (std::is_const_v<World>) {
-    if (const auto* l = world.template try_get<scene::PointLight>(entity)) return fn(*l);
-    if (const auto* l = world.template try_get<scene::SpotLight>(entity)) return fn(*l);
-    if (const auto* l = world.template try_get<scene::DirectionalLight>(entity)) return fn(*l);
-    if (const auto* l = world.template try_get<scene::CylinderLight>(entity)) return fn(*l);
-  } else {
-    if (world.template has<scene::PointLight>(entity))
-      return fn(world.template get_mut<scene::PointLight>(entity));
-    if (world.template has<scene::SpotLight>(entity))
-      return fn(world.template get_mut<scene::SpotLight>(entity));
-    if (world.template has<scene::DirectionalLight>(entity))
-      return fn(world.template get_mut<scene::DirectionalLight>(entity));
-    if (world.template has<scene::CylinderLight>(entity))
-      return fn(world.template get_mut<scene::CylinderLight>(entity));
-  }
-}
-
-void set_intensity(ecs::World& world, ecs::Entity entity, float intensity) {
-  with_light(world, entity, [&](auto& light) { light.intensity = intensity; });
-}
-
 FrameSettings shadow_view(FrameSettings settings) {
   settings.renderer.view = LightingView::shadows;
   settings.animate = false;  // the reference is traced against the scene as it stands

@@ -1,6 +1,8 @@
 // shadowgraph-reference: how far each shadow algorithm is from ray-traced visibility, light by
-// light, on any scene the sandbox opens (run_reference.h says how). Every frame setting applies
-// (scene, camera, size, device: systems/frame/frame_settings.h); animation is off.
+// light, on any scene the sandbox opens (run_reference.h says how), or with --whole-frame the
+// frame as the engine draws it, every light on (whole_frame.h). Every frame setting applies
+// (scene, camera, size, device: systems/frame/frame_settings.h); animation is off light by light,
+// and as the settings say for the whole frame.
 #include <cstdio>
 #include <exception>
 #include <optional>
@@ -8,12 +10,14 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "rendergraph/device/context.h"
 #include "systems/frame/command_line.h"
 #include "systems/frame/frame_settings.h"
 #include "tools/reference/report.h"
 #include "tools/reference/run_reference.h"
+#include "tools/reference/whole_frame_report.h"
 
 int main(int argc, char** argv) {
   sg::FrameSettings frame;
@@ -24,6 +28,9 @@ int main(int argc, char** argv) {
   std::string json_path = "reference.json";
   settings.image_folder = "reference";
   settings.cost_frames = 10;
+
+  bool whole_frame = false;
+  sg::reference::WholeFrameSettings frame_mode;
 
   CLI::App app{"Compares each shadow algorithm with a ray-traced (Embree) reference on a scene."};
   sg::add_settings(app, sg::frame_settings_table(), frame);
@@ -46,7 +53,8 @@ int main(int argc, char** argv) {
                  "the misclassified count")
       ->check(CLI::Range(0, 64))
       ->capture_default_str();
-  app.add_option("--light", settings.light_filter, "Only lights whose name contains this text");
+  app.add_option("--light", settings.light_filter,
+                 "Only lights whose name contains this text (--whole-frame: the others are switched off)");
   app.add_option("--no-shadow-from", settings.no_shadow_from,
                  "Meshes (or glTF nodes) whose name contains this cast no shadow, in the render and the "
                  "reference: a marker mesh around a light (repeatable)");
@@ -58,6 +66,23 @@ int main(int argc, char** argv) {
   app.add_option("--cost-frames", settings.cost_frames,
                  "Frames per algorithm for the GPU cost on the whole scene (0: not measured)")
       ->check(CLI::Range(0u, 100000u))
+      ->capture_default_str();
+  app.add_flag("--whole-frame", whole_frame,
+               "Measure the frame as the engine draws it, every light on, at its tiers and caching, instead "
+               "of each light alone; each light weighted by what its shadow can change at the pixel");
+  app.add_option(
+         "--frames", frame_mode.frames,
+         "--whole-frame: frames rendered (animation advancing 1/60 s each), the last measured, so that "
+         "maps waiting their turn count as error")
+      ->check(CLI::Range(1u, 100000u))
+      ->capture_default_str();
+  app.add_option(
+         "--pairs-per-pixel", frame_mode.pairs_per_pixel,
+         "--whole-frame: room for this many (pixel, light) pairs a pixel; a frame with more is measured "
+         "on a random sample of them, which the output says")
+      ->check(CLI::Range(1u, 4096u))
+      ->capture_default_str();
+  app.add_option("--worst-lights", frame_mode.worst_lights, "--whole-frame: light rows reported")
       ->capture_default_str();
   if (const std::optional<int> exit_code = sg::parse_command_line(app, argc, argv)) {
     return *exit_code;
@@ -72,16 +97,31 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "--cost-frames: at least 3 frames for a median (or 0 to skip the cost)\n");
     return 2;
   }
+  const auto print = [](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    std::fflush(stdout);
+  };
   try {
     sg::vk::VulkanContext context(sg::context_options(frame));
+    if (whole_frame) {
+      // A pair's soft reference costs a ray each sample: fewer than light by light by default.
+      frame_mode.soft_samples = app.count("--soft-samples") > 0 ? settings.soft_samples : 16u;
+      frame_mode.edge_band = settings.edge_band;
+      frame_mode.light_filter = settings.light_filter;
+      const sg::reference::WholeFrameReport report =
+          sg::reference::run_whole_frame(context, frame, frame_mode, print);
+      sg::reference::print_whole_frame(stdout, report);
+      if (!json_path.empty()) {
+        sg::reference::write_json(json_path, sg::reference::to_json(report));
+        std::printf("\nwrote %s\n", json_path.c_str());
+      }
+      return context.validation_enabled() && context.validation_errors() > 0 ? 3 : 0;
+    }
     const sg::reference::ReferenceReport report =
-        sg::reference::run_reference(context, frame, settings, [](const std::string& line) {
-          std::printf("%s\n", line.c_str());
-          std::fflush(stdout);
-        });
+        sg::reference::run_reference(context, frame, settings, print);
     sg::reference::print_tables(stdout, report);
     if (!json_path.empty()) {
-      sg::reference::write_json(json_path, report);
+      sg::reference::write_json(json_path, sg::reference::to_json(report));
       std::printf("\nwrote %s\n", json_path.c_str());
     }
     if (context.validation_enabled() && context.validation_errors() > 0) return 3;

@@ -39,4 +39,8 @@ std::vector<ReferenceLight> shadowed_lights(const scene::Scene& scene) {
   return out;
 }
 
+void set_intensity(ecs::World& world, ecs::Entity entity, float intensity) {
+  with_light(world, entity, [&](auto& light) { light.intensity = intensity; });
+}
+
 }  // namespace sg::reference

@@ -2,12 +2,15 @@
 // The scene's shadow-casting lights as the reference needs them: where rays to them go, and how
 // large the emitter is for the soft reference.
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "ecs/entity.h"
+#include "ecs/world.h"
 #include "systems/scene/enum_names.h"
+#include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
 
 namespace sg::reference {
@@ -31,6 +34,29 @@ struct ReferenceLight {
   // seen from one unit away (directional, cylinder), as the engine's PCSS reads it.
   float light_size = 0.0f;
 };
+
+// Calls fn with the entity's light component, whichever type it is.
+template <typename World, typename Fn>
+void with_light(World& world, ecs::Entity entity, Fn fn) {
+  if constexpr (std::is_const_v<World>) {
+    if (const auto* l = world.template try_get<scene::PointLight>(entity)) return fn(*l);
+    if (const auto* l = world.template try_get<scene::SpotLight>(entity)) return fn(*l);
+    if (const auto* l = world.template try_get<scene::DirectionalLight>(entity)) return fn(*l);
+    if (const auto* l = world.template try_get<scene::CylinderLight>(entity)) return fn(*l);
+  } else {
+    if (world.template has<scene::PointLight>(entity))
+      return fn(world.template get_mut<scene::PointLight>(entity));
+    if (world.template has<scene::SpotLight>(entity))
+      return fn(world.template get_mut<scene::SpotLight>(entity));
+    if (world.template has<scene::DirectionalLight>(entity))
+      return fn(world.template get_mut<scene::DirectionalLight>(entity));
+    if (world.template has<scene::CylinderLight>(entity))
+      return fn(world.template get_mut<scene::CylinderLight>(entity));
+  }
+}
+
+// Sets the entity's light component's intensity, whichever type it is.
+void set_intensity(ecs::World& world, ecs::Entity entity, float intensity);
 
 // The lights whose ShadowSettings cast a shadow, in the world's order by type (spot,
 // directional, cylinder, point). World transforms must be up to date.

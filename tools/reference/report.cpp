@@ -92,9 +92,9 @@ nlohmann::json to_json(const ReferenceReport& report) {
           {"costs", std::move(costs)}};
 }
 
-void write_json(const std::string& path, const ReferenceReport& report) {
+void write_json(const std::string& path, const nlohmann::json& json) {
   std::ofstream file(path);
-  file << to_json(report).dump(2) << '\n';
+  file << json.dump(2) << '\n';
   if (!file) throw std::runtime_error("cannot write JSON file '" + path + "'");
 }
 

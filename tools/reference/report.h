@@ -18,7 +18,7 @@ void print_tables(std::FILE* out, const ReferenceReport& report);
 // (algorithm, lighting_ms, shadow_maps_ms, frame_ms, shadowed_lights, lighting_ms_per_light:
 // the lighting's extra over "off" per shadowed light).
 nlohmann::json to_json(const ReferenceReport& report);
-// Writes to_json(report) to `path`; throws std::runtime_error naming the path on failure.
-void write_json(const std::string& path, const ReferenceReport& report);
+// Writes `json` to `path`, indented; throws std::runtime_error naming the path on failure.
+void write_json(const std::string& path, const nlohmann::json& json);
 
 }  // namespace sg::reference

@@ -81,51 +81,61 @@ std::vector<float> per_pixel(const SurfacePoints& points, jobs::ThreadPool& pool
 
 }  // namespace
 
-std::vector<float> hard_visibility(const RayScene& casters, const SurfacePoints& points,
-                                   const ReferenceLight& light, jobs::ThreadPool& pool) {
-  return per_pixel(points, pool, [&](const SurfacePoint& point, uint32_t, uint32_t) {
-    const ShadowRay ray = start(point, points.eye);
-    bool blocked = false;
-    switch (light.type) {
-      case LightType::point:
-      case LightType::spot: blocked = blocked_towards(casters, ray, light.position); break;
-      case LightType::directional:
-        blocked = blocked_along(casters, ray, light.direction, false, light.position, light.direction);
-        break;
-      case LightType::cylinder:
-        blocked = blocked_along(casters, ray, light.direction, true, light.position, light.direction);
-        break;
-    }
-    return blocked ? 0.0f : 1.0f;
-  });
+float hard_visible(const RayScene& casters, const SurfacePoint& point, glm::vec3 eye,
+                   const ReferenceLight& light) {
+  const ShadowRay ray = start(point, eye);
+  bool blocked = false;
+  switch (light.type) {
+    case LightType::point:
+    case LightType::spot: blocked = blocked_towards(casters, ray, light.position); break;
+    case LightType::directional:
+      blocked = blocked_along(casters, ray, light.direction, false, light.position, light.direction);
+      break;
+    case LightType::cylinder:
+      blocked = blocked_along(casters, ray, light.direction, true, light.position, light.direction);
+      break;
+  }
+  return blocked ? 0.0f : 1.0f;
 }
 
-std::vector<float> soft_visibility(const RayScene& casters, const SurfacePoints& points,
-                                   const ReferenceLight& light, uint32_t samples, jobs::ThreadPool& pool) {
+float soft_visible(const RayScene& casters, const SurfacePoint& point, glm::vec3 eye,
+                   const ReferenceLight& light, uint32_t samples, glm::uvec2 pixel) {
   const auto side = static_cast<uint32_t>(std::ceil(std::sqrt(float(std::max(samples, 1u)))));
   const uint32_t count = side * side;
   const bool positional = light.type == LightType::point || light.type == LightType::spot;
   // A directional emitter `light_size` wide one unit away: directions within this tangent.
   const float half_width = 0.5f * light.light_size;
-  return per_pixel(points, pool, [&](const SurfacePoint& point, uint32_t x, uint32_t y) {
-    const ShadowRay ray = start(point, points.eye);
-    const glm::vec3 axis = positional ? glm::normalize(light.position - ray.origin) : -light.direction;
-    glm::vec3 u, v;
-    basis(axis, u, v);
-    uint32_t reached = 0;
-    for (uint32_t k = 0; k < count; ++k) {
-      const glm::vec2 d = disc_sample(k, side, x, y) * half_width;
-      bool blocked = false;
-      if (positional) {
-        blocked = blocked_towards(casters, ray, light.position + d.x * u + d.y * v);
-      } else {
-        const glm::vec3 travel = -glm::normalize(axis + d.x * u + d.y * v);
-        blocked = blocked_along(casters, ray, travel, light.type == LightType::cylinder, light.position,
-                                light.direction);
-      }
-      reached += blocked ? 0u : 1u;
+  const ShadowRay ray = start(point, eye);
+  const glm::vec3 axis = positional ? glm::normalize(light.position - ray.origin) : -light.direction;
+  glm::vec3 u, v;
+  basis(axis, u, v);
+  uint32_t reached = 0;
+  for (uint32_t k = 0; k < count; ++k) {
+    const glm::vec2 d = disc_sample(k, side, pixel.x, pixel.y) * half_width;
+    bool blocked = false;
+    if (positional) {
+      blocked = blocked_towards(casters, ray, light.position + d.x * u + d.y * v);
+    } else {
+      const glm::vec3 travel = -glm::normalize(axis + d.x * u + d.y * v);
+      blocked = blocked_along(casters, ray, travel, light.type == LightType::cylinder, light.position,
+                              light.direction);
     }
-    return float(reached) / float(count);
+    reached += blocked ? 0u : 1u;
+  }
+  return float(reached) / float(count);
+}
+
+std::vector<float> hard_visibility(const RayScene& casters, const SurfacePoints& points,
+                                   const ReferenceLight& light, jobs::ThreadPool& pool) {
+  return per_pixel(points, pool, [&](const SurfacePoint& point, uint32_t, uint32_t) {
+    return hard_visible(casters, point, points.eye, light);
+  });
+}
+
+std::vector<float> soft_visibility(const RayScene& casters, const SurfacePoints& points,
+                                   const ReferenceLight& light, uint32_t samples, jobs::ThreadPool& pool) {
+  return per_pixel(points, pool, [&](const SurfacePoint& point, uint32_t x, uint32_t y) {
+    return soft_visible(casters, point, points.eye, light, samples, {x, y});
   });
 }
 

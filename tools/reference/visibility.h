@@ -12,6 +12,13 @@
 
 namespace sg::reference {
 
+// One surface point's visibility of `light` (1 lit, 0 shadowed) seen from a camera at `eye`:
+// hard_visibility's ray, and soft_visibility's rays jittered for `pixel`.
+float hard_visible(const RayScene& casters, const SurfacePoint& point, glm::vec3 eye,
+                   const ReferenceLight& light);
+float soft_visible(const RayScene& casters, const SurfacePoint& point, glm::vec3 eye,
+                   const ReferenceLight& light, uint32_t samples, glm::uvec2 pixel);
+
 // One ray per pixel: to a point or spot light's position, against a directional light's
 // direction (unbounded), or against a cylinder light's direction back to the plane of its
 // position (a point behind that plane is not lit by it at all and counts as lit here).

@@ -1,0 +1,218 @@
+#include "tools/reference/whole_frame.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+#include "ecs/jobs/thread_pool.h"
+#include "rendergraph/device/context.h"
+#include "rendergraph/device/frame_ring.h"
+#include "systems/frame/frame.h"
+#include "systems/frame/gpu_time_log.h"
+#include "systems/frame/headless_frames.h"
+#include "systems/frame/scene_view.h"
+#include "systems/lighting/shadow_probe.h"
+#include "tools/reference/ray_scene.h"
+#include "tools/reference/scene_triangles.h"
+#include "tools/reference/surface_points.h"
+#include "tools/reference/visibility.h"
+
+namespace sg::reference {
+namespace {
+
+void say(const std::function<void(const std::string&)>& progress, const std::string& line) {
+  if (progress) progress(line);
+}
+
+// A shadowed light of the frame as the reference needs it; `shadowed` false for lights whose
+// settings cast no shadow (their pairs are not measured).
+struct FrameLight {
+  bool shadowed = false;
+  ReferenceLight ray;  // where rays go, from the record: the light where it is this frame
+  std::string name;
+  scene::ShadowAlgorithm algorithm = scene::ShadowAlgorithm::hard;
+  uint32_t resolution = 0;
+};
+
+constexpr LightType record_types[] = {LightType::point, LightType::spot, LightType::directional,
+                                      LightType::cylinder};  // GpuLight::info.x's order
+
+std::vector<FrameLight> frame_lights(const shadows::FrameLights& lights) {
+  std::vector<FrameLight> out(lights.records.size());
+  const auto add = [&](uint32_t record, const std::string& view_name, uint32_t resolution) {
+    const shadows::GpuLight& gpu = lights.records[record];
+    FrameLight& light = out[record];
+    light.shadowed = true;
+    light.ray.type = record_types[std::min(gpu.info.x, 3u)];
+    light.ray.position = glm::vec3(gpu.position_range);
+    light.ray.direction = glm::vec3(gpu.direction_type);
+    light.ray.light_size = gpu.shadow_bias.w;
+    light.name = view_name.rfind("shadow ", 0) == 0 ? view_name.substr(7) : view_name;
+    light.ray.name = light.name;
+    light.algorithm = static_cast<scene::ShadowAlgorithm>(gpu.info.z);
+    light.resolution = resolution;
+  };
+  for (const shadows::ShadowMapView& map : lights.maps) add(map.light, map.name, map.resolution);
+  for (const shadows::ShadowCubeView& cube : lights.cubes) add(cube.light, cube.name, cube.resolution);
+  return out;
+}
+
+// What the probed frame left: the scene as it stood, its surface depths, lights and pairs.
+struct ProbedFrame {
+  std::unique_ptr<SceneView> view;
+  vk::DepthImage depth;
+  std::vector<FrameLight> lights;
+  ShadowProbeResult probe;
+};
+
+ProbedFrame probe_frame(vk::VulkanContext& context, const FrameSettings& settings,
+                        const WholeFrameSettings& frame_mode, uint64_t capacity, float keep) {
+  ProbedFrame out;
+  out.view =
+      std::make_unique<SceneView>(load_scene_view(settings, float(settings.width) / float(settings.height)));
+  if (!frame_mode.light_filter.empty()) {
+    size_t on = 0;
+    for (const ReferenceLight& light : shadowed_lights(out.view->scene)) {
+      const bool kept = light.name.find(frame_mode.light_filter) != std::string::npos;
+      if (!kept) set_intensity(out.view->scene.world, light.entity, 0.0f);
+      on += kept ? 1 : 0;
+    }
+    if (on == 0) {
+      throw std::runtime_error("scene '" + out.view->scene.name +
+                               "' has no shadow-casting light named like '" + frame_mode.light_filter + "'");
+    }
+  }
+  const uint32_t frames = frame_mode.frames;
+  vk::FrameRing ring(context);
+  Frame frame(context, *out.view, settings, ring.frames_in_flight());
+  frame.resize({settings.width, settings.height});
+  frame.capture_depth();
+  GpuTimeLog times;
+  render_headless_frames(frame, ring, frames - 1, times);
+  ShadowProbe probe(context, capacity, keep);
+  frame.renderer().probe_shadows(&probe);
+  render_headless_frames(frame, ring, 1, times, false, frames - 1);
+  frame.renderer().probe_shadows(nullptr);
+  out.depth = frame.read_captured_depth();
+  out.lights = frame_lights(frame.renderer().lights());
+  out.probe = probe.read();
+  return out;
+}
+
+// Each measured pair's references, traced on `pool` in batches with a progress line each.
+std::vector<TracedPair> trace_pairs(const std::vector<ShadowProbePair>& pairs,
+                                    const std::vector<FrameLight>& lights, const SurfacePoints& points,
+                                    const RayScene& casters, uint32_t soft_samples, jobs::ThreadPool& pool,
+                                    const std::function<void(const std::string&)>& progress) {
+  std::vector<TracedPair> out;
+  out.reserve(pairs.size());
+  for (const ShadowProbePair& pair : pairs) {
+    if (pair.light < lights.size() && lights[pair.light].shadowed && points.points[pair.pixel].valid) {
+      out.push_back({pair.pixel, pair.light, pair.shade, pair.weight, 0.0f, 0.0f});
+    }
+  }
+  constexpr size_t chunk = 4096;
+  const size_t chunks = (out.size() + chunk - 1) / chunk;
+  const size_t batch = std::max<size_t>(1, chunks / 20);  // a progress line every 5%
+  const auto start = std::chrono::steady_clock::now();
+  for (size_t first = 0; first < chunks; first += batch) {
+    const size_t count = std::min(batch, chunks - first);
+    pool.run(count, [&](size_t c) {
+      const size_t begin = (first + c) * chunk;
+      for (size_t i = begin; i < std::min(begin + chunk, out.size()); ++i) {
+        TracedPair& pair = out[i];
+        const FrameLight& light = lights[pair.light];
+        const SurfacePoint& point = points.points[pair.pixel];
+        pair.hard = hard_visible(casters, point, points.eye, light.ray);
+        const bool soft = soft_samples > 0 && (light.algorithm == scene::ShadowAlgorithm::pcss ||
+                                               light.algorithm == scene::ShadowAlgorithm::pcss_noise);
+        const glm::uvec2 pixel{pair.pixel % points.width, pair.pixel / points.width};
+        pair.reference =
+            soft ? soft_visible(casters, point, points.eye, light.ray, soft_samples, pixel) : pair.hard;
+      }
+    });
+    const double done = double(first + count) / double(chunks);
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char line[128];
+    std::snprintf(line, sizeof(line), "  traced %3.0f%% of %zu pairs, %.1f s, about %.1f s left",
+                  100.0 * done, out.size(), elapsed, elapsed / done * (1.0 - done));
+    say(progress, line);
+  }
+  return out;
+}
+
+}  // namespace
+
+WholeFrameReport run_whole_frame(vk::VulkanContext& context, const FrameSettings& frame,
+                                 const WholeFrameSettings& settings,
+                                 const std::function<void(const std::string&)>& progress) {
+  if (settings.frames == 0) throw std::invalid_argument("--frames: at least one frame");
+  FrameSettings lit = frame;
+  lit.renderer.lighting = LightingPath::deferred;  // the probe walks the deferred lighting's lists
+  lit.renderer.view = LightingView::lit;
+  const uint64_t capacity = uint64_t(frame.width) * frame.height * std::max(settings.pairs_per_pixel, 1u);
+
+  say(progress, "rendering " + std::to_string(settings.frames) + " frame(s), probing the last");
+  ProbedFrame probed = probe_frame(context, lit, settings, capacity, 1.0f);
+  float keep = 1.0f;
+  if (!probed.probe.complete()) {
+    keep = float(std::min(1.0, 0.9 * double(capacity) / double(probed.probe.wanted)));
+    char line[160];
+    std::snprintf(line, sizeof(line),
+                  "the frame has %llu (pixel, light) pairs, more than the %llu the probe holds: rendering "
+                  "again, keeping %.1f%% of them at random",
+                  static_cast<unsigned long long>(probed.probe.wanted),
+                  static_cast<unsigned long long>(capacity), 100.0 * keep);
+    say(progress, line);
+    probed = probe_frame(context, lit, settings, capacity, keep);
+    if (!probed.probe.complete()) {
+      throw std::runtime_error("the probed frame still had more pairs than fit; raise --pairs-per-pixel");
+    }
+  }
+
+  const SceneTriangles triangles = scene_triangles(probed.view->scene);
+  const RayScene casters(triangles.casters);
+  const RayScene surfaces(triangles.surfaces);
+  jobs::ThreadPool pool;
+  const SurfacePoints points =
+      surface_points(probed.depth, probed.view->pose, probed.view->lens, surfaces, pool);
+
+  WholeFrameReport report;
+  report.device = context.device_name();
+  report.scene = frame.scene;
+  report.width = frame.width;
+  report.height = frame.height;
+  report.frames = settings.frames;
+  report.lights = probed.lights.size();
+  for (const FrameLight& light : probed.lights) {
+    report.shadowed_lights += light.shadowed ? 1 : 0;
+    report.lights_without_map += light.shadowed && light.resolution == 0 ? 1 : 0;
+  }
+  report.frame_pairs = probed.probe.wanted;
+  report.sampled_fraction = keep;
+  report.soft_samples = settings.soft_samples;
+  report.edge_band = settings.edge_band;
+  say(progress, "scene: " + std::to_string(triangles.surfaces.size() / 3) + " triangles, " +
+                    std::to_string(report.shadowed_lights) + " shadowed lights of " +
+                    std::to_string(report.lights) + "; tracing on " + std::to_string(pool.thread_count()) +
+                    " threads");
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<TracedPair> traced =
+      trace_pairs(probed.probe.pairs, probed.lights, points, casters, settings.soft_samples, pool, progress);
+  report.trace_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.traced_pairs = traced.size();
+  report.error = frame_error(std::move(traced), frame.width, frame.height, settings.edge_band);
+  if (report.error.lights.size() > settings.worst_lights) report.error.lights.resize(settings.worst_lights);
+  for (const LightError& error : report.error.lights) {
+    const FrameLight& light = probed.lights[error.light];
+    report.worst.push_back(
+        {light.name, light.ray.type, std::string(to_string(light.algorithm)), light.resolution, error});
+  }
+  return report;
+}
+
+}  // namespace sg::reference
