@@ -66,6 +66,7 @@ struct ProbedFrame {
   vk::DepthImage depth;
   std::vector<FrameLight> lights;
   ShadowProbeResult probe;
+  double gpu_frame_ms = 0.0;  // the median of the frames before the probed one
 };
 
 ProbedFrame probe_frame(vk::VulkanContext& context, const FrameSettings& settings,
@@ -92,6 +93,12 @@ ProbedFrame probe_frame(vk::VulkanContext& context, const FrameSettings& setting
   frame.capture_depth();
   GpuTimeLog times;
   render_headless_frames(frame, ring, frames - 1, times);
+  std::vector<double> unprobed = times.frame_ms();
+  if (!unprobed.empty()) {
+    std::nth_element(unprobed.begin(), unprobed.begin() + std::ptrdiff_t(unprobed.size() / 2),
+                     unprobed.end());
+    out.gpu_frame_ms = unprobed[unprobed.size() / 2];
+  }
   ShadowProbe probe(context, capacity, keep);
   frame.renderer().probe_shadows(&probe);
   render_headless_frames(frame, ring, 1, times, false, frames - 1);
@@ -186,6 +193,7 @@ WholeFrameReport run_whole_frame(vk::VulkanContext& context, const FrameSettings
   report.width = frame.width;
   report.height = frame.height;
   report.frames = settings.frames;
+  report.gpu_frame_ms = probed.gpu_frame_ms;
   report.lights = probed.lights.size();
   for (const FrameLight& light : probed.lights) {
     report.shadowed_lights += light.shadowed ? 1 : 0;

@@ -49,6 +49,9 @@ struct WholeFrameReport {
   uint32_t width = 0;
   uint32_t height = 0;
   uint32_t frames = 0;
+  // The GPU frame's median over the frames before the probed one (0 with one frame): the cost of
+  // the shadows measured.
+  double gpu_frame_ms = 0.0;
   uint64_t lights = 0;           // in the frame
   uint64_t shadowed_lights = 0;  // of them, casting a shadow by their settings
   uint64_t lights_without_map =

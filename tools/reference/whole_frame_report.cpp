@@ -6,11 +6,14 @@ namespace sg::reference {
 
 void print_whole_frame(std::FILE* out, const WholeFrameReport& report) {
   const FrameError& e = report.error;
-  std::fprintf(out, "\n%s, %ux%u, scene %s, frame %u; %llu lights, %llu shadowed (%llu without a map)\n",
-               report.device.c_str(), report.width, report.height, report.scene.c_str(), report.frames,
-               static_cast<unsigned long long>(report.lights),
-               static_cast<unsigned long long>(report.shadowed_lights),
-               static_cast<unsigned long long>(report.lights_without_map));
+  std::fprintf(
+      out,
+      "\n%s, %ux%u, scene %s, frame %u (GPU frame %.2f ms before it); %llu lights, %llu shadowed (%llu "
+      "without a map)\n",
+      report.device.c_str(), report.width, report.height, report.scene.c_str(), report.frames,
+      report.gpu_frame_ms, static_cast<unsigned long long>(report.lights),
+      static_cast<unsigned long long>(report.shadowed_lights),
+      static_cast<unsigned long long>(report.lights_without_map));
   if (report.sampled_fraction < 1.0) {
     std::fprintf(out, "sampled: %.1f%% of the frame's %llu (pixel, light) pairs, drawn at random\n",
                  100.0 * report.sampled_fraction, static_cast<unsigned long long>(report.frame_pairs));
@@ -56,6 +59,7 @@ nlohmann::json to_json(const WholeFrameReport& report) {
           {"width", report.width},
           {"height", report.height},
           {"frames", report.frames},
+          {"gpu_frame_ms", report.gpu_frame_ms},
           {"lights", report.lights},
           {"shadowed_lights", report.shadowed_lights},
           {"lights_without_map", report.lights_without_map},

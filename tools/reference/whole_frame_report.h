@@ -11,7 +11,7 @@ namespace sg::reference {
 // The frame's figures, then one row per reported light, the worst first.
 void print_whole_frame(std::FILE* out, const WholeFrameReport& report);
 
-// Keys: device, scene, width, height, frames, lights, shadowed_lights, lights_without_map,
+// Keys: device, scene, width, height, frames, gpu_frame_ms, lights, shadowed_lights, lights_without_map,
 // soft_samples, edge_band, trace_seconds; frame {misclassified, mae, lit_pixels, pairs,
 // band_pairs, frame_pairs, traced_pairs, sampled_fraction, sampled: whether pairs were sampled};
 // worst_lights[] (name, type, algorithm, resolution, pairs, weight_share, misclassified, mae,
