@@ -103,6 +103,7 @@ int main(int argc, char** argv) {
   };
   try {
     sg::vk::VulkanContext context(sg::context_options(frame));
+    nlohmann::json json;
     if (whole_frame) {
       // A pair's soft reference costs a ray each sample: fewer than light by light by default.
       frame_mode.soft_samples = app.count("--soft-samples") > 0 ? settings.soft_samples : 16u;
@@ -111,21 +112,18 @@ int main(int argc, char** argv) {
       const sg::reference::WholeFrameReport report =
           sg::reference::run_whole_frame(context, frame, frame_mode, print);
       sg::reference::print_whole_frame(stdout, report);
-      if (!json_path.empty()) {
-        sg::reference::write_json(json_path, sg::reference::to_json(report));
-        std::printf("\nwrote %s\n", json_path.c_str());
-      }
-      return context.validation_enabled() && context.validation_errors() > 0 ? 3 : 0;
+      json = sg::reference::to_json(report);
+    } else {
+      const sg::reference::ReferenceReport report =
+          sg::reference::run_reference(context, frame, settings, print);
+      sg::reference::print_tables(stdout, report);
+      json = sg::reference::to_json(report);
     }
-    const sg::reference::ReferenceReport report =
-        sg::reference::run_reference(context, frame, settings, print);
-    sg::reference::print_tables(stdout, report);
     if (!json_path.empty()) {
-      sg::reference::write_json(json_path, sg::reference::to_json(report));
+      sg::reference::write_json(json_path, json);
       std::printf("\nwrote %s\n", json_path.c_str());
     }
-    if (context.validation_enabled() && context.validation_errors() > 0) return 3;
-    return 0;
+    return context.validation_enabled() && context.validation_errors() > 0 ? 3 : 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowgraph-reference: error: %s\n", e.what());
     return 1;
