@@ -11,10 +11,10 @@ layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(set = 0, binding = hdr_binding, rgba16f) uniform readonly image2D hdr;
 
-// Written by the CPU before the frame: `capacity` pairs fit; a pair is kept where its
-// cell_random draw is below `keep` (1: every pair). The pass counts the pairs it met in
-// `wanted` and those it kept in `kept`, writing the first `capacity` kept: pixel index, record
-// index, and packHalf2x16(shade, weight).
+// Set before the dispatch (ShadowProbe::record_start): `capacity` pairs fit; a pair is kept where
+// its cell_random draw is below `keep` (1: every pair). The pass counts the pairs it met in
+// `wanted` (one atomic a pixel) and those it kept in `kept`, writing the first `capacity` kept:
+// pixel index, record index, and packHalf2x16(shade, weight).
 layout(std430, set = 0, binding = shadow_probe_binding) buffer Probe {
   uint wanted;
   uint kept;
@@ -32,6 +32,7 @@ void main() {
   uint tile = (uint(pixel.y) / LIGHT_TILE_SIZE) * frame.screen.z + uint(pixel.x) / LIGHT_TILE_SIZE;
   float filter_floor = RANKED_FILTERING ? imageLoad(hdr, pixel).a : 0.0;
   uint pixel_index = uint(pixel.y) * frame.screen.x + uint(pixel.x);
+  uint met = 0u;
   for (uint group = 0u; group < LIGHT_GROUP_COUNT; ++group) {
     uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + group];
     for (uint j = 0u; j < range.y; ++j) {
@@ -40,7 +41,7 @@ void main() {
       Incidence at = light_incidence(light, position, light_type(light));
       float weight = shadow_weight(light, p, at);
       if (weight <= 0.0) continue;
-      atomicAdd(probe.wanted, 1u);
+      ++met;
       if (probe.keep < 1.0 && cell_random(uvec2(pixel), index).x >= probe.keep) continue;
       // As shade_light_as decides, with the light's own kind and algorithm.
       uint kind = light_shadow_kind(light);
@@ -54,4 +55,5 @@ void main() {
       probe.pairs[3u * slot + 2u] = packHalf2x16(vec2(shade, weight));
     }
   }
+  atomicAdd(probe.wanted, met);
 }

@@ -4,7 +4,6 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
-#include <string>
 
 #include <glm/packing.hpp>
 
@@ -20,32 +19,68 @@ struct Header {
 };
 constexpr uint64_t words_per_pair = 3;
 
+VkDeviceSize probe_bytes(uint32_t capacity) {
+  return sizeof(Header) + capacity * words_per_pair * sizeof(uint32_t);
+}
+
+void buffer_barrier(VkCommandBuffer cmd, VkBuffer buffer, VkPipelineStageFlags2 src_stage,
+                    VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+  VkBufferMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+  barrier.srcStageMask = src_stage;
+  barrier.srcAccessMask = src_access;
+  barrier.dstStageMask = dst_stage;
+  barrier.dstAccessMask = dst_access;
+  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.buffer = buffer;
+  barrier.size = VK_WHOLE_SIZE;
+  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dependency.bufferMemoryBarrierCount = 1;
+  dependency.pBufferMemoryBarriers = &barrier;
+  vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
 }  // namespace
 
 ShadowProbe::ShadowProbe(vk::VulkanContext& context, uint64_t capacity, float keep)
     : capacity_(
           static_cast<uint32_t>(std::min<uint64_t>(capacity, std::numeric_limits<uint32_t>::max() / 4))),
       keep_(keep),
-      buffer_(context,
-              vk::BufferDesc{sizeof(Header) + capacity_ * words_per_pair * sizeof(uint32_t),
-                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::readback, "shadow probe"}) {
+      device_(context, vk::BufferDesc{probe_bytes(capacity_),
+                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                          VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                      vk::MemoryUsage::gpu_only, "shadow probe"}),
+      host_(context, vk::BufferDesc{probe_bytes(capacity_), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    vk::MemoryUsage::readback, "shadow probe readback"}) {
   if (!(keep > 0.0f && keep <= 1.0f)) throw std::invalid_argument("ShadowProbe: keep must be in (0, 1]");
   if (capacity == 0) throw std::invalid_argument("ShadowProbe: no room for any pair");
-  reset();
 }
 
-void ShadowProbe::reset() {
+void ShadowProbe::record_start(VkCommandBuffer cmd) const {
   const Header header{0, 0, capacity_, keep_};
-  std::memcpy(buffer_.mapped(), &header, sizeof(header));
+  vkCmdUpdateBuffer(cmd, device_.handle(), 0, sizeof(header), &header);
+  buffer_barrier(cmd, device_.handle(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
+
+void ShadowProbe::record_finish(VkCommandBuffer cmd) const {
+  buffer_barrier(cmd, device_.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                 VK_ACCESS_2_TRANSFER_READ_BIT);
+  const VkBufferCopy region{0, 0, device_.size()};
+  vkCmdCopyBuffer(cmd, device_.handle(), host_.handle(), 1, &region);
+  buffer_barrier(cmd, host_.handle(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 ShadowProbeResult ShadowProbe::read() const {
   Header header;
-  std::memcpy(&header, buffer_.mapped(), sizeof(header));
+  std::memcpy(&header, host_.mapped(), sizeof(header));
   ShadowProbeResult result{header.wanted, header.kept, {}};
   if (header.kept > capacity_) return result;
   const auto* words =
-      reinterpret_cast<const uint32_t*>(static_cast<const std::byte*>(buffer_.mapped()) + sizeof(Header));
+      reinterpret_cast<const uint32_t*>(static_cast<const std::byte*>(host_.mapped()) + sizeof(Header));
   result.pairs.resize(header.kept);
   for (uint32_t i = 0; i < header.kept; ++i) {
     const glm::vec2 shade_weight = glm::unpackHalf2x16(words[words_per_pair * i + 2]);

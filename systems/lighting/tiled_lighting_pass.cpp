@@ -229,18 +229,19 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
   }
   if (probing_) {
     const VkPipeline probe_pipeline = probe_pipelines_[ranked_ ? 1 : 0].get();
-    // Reads the lit sum for its filter floor; the probe's buffer is host memory outside the graph,
-    // read once the frame has completed.
+    // Reads the lit sum for its filter floor; the probe's buffers live outside the graph
+    // (ShadowProbe records their barriers), read once the frame has completed.
     graph.add_pass(
         "lighting shadow probe",
         [&](rg::PassBuilder& b) {
           read_lighting_inputs(b);
           lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
         },
-        [bind, lit_sum, constants, probe_pipeline,
-         probe = probe_->buffer().handle()](const vk::PassRecorder& rec) {
-          bind(rec, probe_pipeline, lit_sum, constants, probe);
+        [bind, lit_sum, constants, probe_pipeline, probe = probe_](const vk::PassRecorder& rec) {
+          probe->record_start(rec.cmd());
+          bind(rec, probe_pipeline, lit_sum, constants, probe->buffer().handle());
           vkCmdDispatch(rec.cmd(), (constants.screen.x + 15) / 16, (constants.screen.y + 15) / 16, 1);
+          probe->record_finish(rec.cmd());
         });
   }
   return lit_sum;
