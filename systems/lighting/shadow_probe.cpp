@@ -7,6 +7,8 @@
 
 #include <glm/packing.hpp>
 
+#include "rendergraph/device/barriers.h"
+
 namespace sg {
 namespace {
 
@@ -21,23 +23,6 @@ constexpr uint64_t words_per_pair = 3;
 
 VkDeviceSize probe_bytes(uint32_t capacity) {
   return sizeof(Header) + capacity * words_per_pair * sizeof(uint32_t);
-}
-
-void buffer_barrier(VkCommandBuffer cmd, VkBuffer buffer, VkPipelineStageFlags2 src_stage,
-                    VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
-  VkBufferMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-  barrier.srcStageMask = src_stage;
-  barrier.srcAccessMask = src_access;
-  barrier.dstStageMask = dst_stage;
-  barrier.dstAccessMask = dst_access;
-  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  barrier.buffer = buffer;
-  barrier.size = VK_WHOLE_SIZE;
-  VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dependency.bufferMemoryBarrierCount = 1;
-  dependency.pBufferMemoryBarriers = &barrier;
-  vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
 }  // namespace
@@ -59,19 +44,18 @@ ShadowProbe::ShadowProbe(vk::VulkanContext& context, uint64_t capacity, float ke
 void ShadowProbe::record_start(VkCommandBuffer cmd) const {
   const Header header{0, 0, capacity_, keep_};
   vkCmdUpdateBuffer(cmd, device_.handle(), 0, sizeof(header), &header);
-  buffer_barrier(cmd, device_.handle(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  vk::memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 }
 
 void ShadowProbe::record_finish(VkCommandBuffer cmd) const {
-  buffer_barrier(cmd, device_.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                 VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                 VK_ACCESS_2_TRANSFER_READ_BIT);
+  vk::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
   const VkBufferCopy region{0, 0, device_.size()};
   vkCmdCopyBuffer(cmd, device_.handle(), host_.handle(), 1, &region);
-  buffer_barrier(cmd, host_.handle(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                 VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  vk::memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 ShadowProbeResult ShadowProbe::read() const {
