@@ -92,7 +92,7 @@ ProbedFrame probe_frame(vk::VulkanContext& context, const FrameSettings& setting
   frame.resize({settings.width, settings.height});
   frame.capture_depth();
   GpuTimeLog times;
-  render_headless_frames(frame, ring, frames - 1, times);
+  render_headless_frames(frame, ring, frames - 1, times, true);  // progress on runs of 100 frames or more
   std::vector<double> unprobed = times.frame_ms();
   if (!unprobed.empty()) {
     std::nth_element(unprobed.begin(), unprobed.begin() + std::ptrdiff_t(unprobed.size() / 2),
