@@ -19,13 +19,14 @@ import argparse
 import csv
 import json
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from line_plot import gnuplot_found, line_plot  # noqa: E402  (tools/line_plot.py)
 COLUMNS = ("device", "width", "height", "triangles", "camera", "motion", "lights", "frames", "misclassified",
            "mae", "lit_pixels", "sampled_fraction", "gpu_frame_ms", "lights_without_map", "trace_seconds")
 
@@ -83,33 +84,20 @@ def run_once(args, count, camera, motion, json_path):
 
 
 def plot(out_dir, rows):
-    gnuplot = shutil.which("gnuplot")
-    if not gnuplot:
-        print("quality_curve: gnuplot not found (apt-get install gnuplot-nox): no plot, the CSV has everything")
+    if not gnuplot_found("quality_curve"):
         return
     first = rows[0]
     keys = sorted({(r["camera"], r["motion"]) for r in rows})
     for column, name, label, scale in (("misclassified", "quality_curve.png", "misclassified lit pixels (%)", 100.0),
                                        ("mae", "quality_curve_mae.png", "MAE over lit pixels", 1.0),
                                        ("gpu_frame_ms", "quality_curve_time.png", "GPU frame (ms)", 1.0)):
-        series = []
-        for camera, motion in keys:
-            points = sorted((r["lights"], r[column] * scale) for r in rows
-                            if r["camera"] == camera and r["motion"] == motion)
-            data = os.path.join(out_dir, f"{camera}_{motion}_{column}.dat")
-            with open(data, "w") as f:
-                f.writelines(f"{n} {v}\n" for n, v in points)
-            series.append((data, f"{camera}, {motion}"))
-        script = "\n".join([
-            "set terminal pngcairo size 1000,620",
-            f"set output '{os.path.join(out_dir, name)}'",
-            f"set title '{label} against shadowed lights: {first['device']}, {first['width']}x{first['height']}, "
-            f"{first['triangles']} triangles, default settings'",
-            "set xlabel 'shadowed lights'", f"set ylabel '{label}'",
-            "set logscale x", "set grid", "set key left top",
-            "plot " + ", ".join(f"'{d}' with linespoints title '{t}'" for d, t in series),
-        ])
-        subprocess.run([gnuplot], input=script, text=True, check=True)
+        series = [(f"{camera}, {motion}",
+                   sorted((r["lights"], r[column] * scale) for r in rows if r["camera"] == camera and
+                          r["motion"] == motion))
+                  for camera, motion in keys]
+        line_plot(os.path.join(out_dir, name),
+                  f"{label}: {first['device']}, {first['width']}x{first['height']}, {first['triangles']} triangles",
+                  "shadowed lights", label, series)
         print(f"quality_curve: wrote {os.path.join(out_dir, name)}")
 
 

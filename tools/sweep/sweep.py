@@ -22,11 +22,13 @@ import argparse
 import csv
 import json
 import os
-import shutil
 import subprocess
 import sys
 import tempfile
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from line_plot import gnuplot_found, line_plot  # noqa: E402  (tools/line_plot.py)
 
 LIGHTING_PASSES = ("forward", "g-buffer", "light tiles", "lighting", "tone map")
 
@@ -127,38 +129,21 @@ def row_of(stats, light_type, count, mode, camera):
 
 
 def plot(out_dir, rows, args):
-    gnuplot = shutil.which("gnuplot")
-    if not gnuplot:
-        print("sweep: gnuplot not found (apt-get install gnuplot-nox): no plot, the CSV has everything")
+    if not gnuplot_found("sweep"):
         return
     # The whole GPU frame, and the lighting alone (the shadow passes are the same work in both
     # modes but for the naive six passes per cube and unculled casters).
+    first = rows[0]
     for column, name, label in (("gpu_frame_ms", "sweep.png", "GPU frame"),
                                 ("lighting_ms", "sweep_lighting.png", "lighting passes")):
-        series = []
-        for light_type in args.types:
-            for camera in args.cameras:
-                for mode in args.modes:
-                    points = [(r["lights"], r[column]) for r in rows if r["type"] == light_type and
-                              r["mode"] == mode and r.get("camera", "overview") == camera and r[column]]
-                    if points:
-                        data = os.path.join(out_dir, f"{light_type}_{camera}_{mode}_{column}.dat")
-                        with open(data, "w") as f:
-                            f.writelines(f"{n} {ms}\n" for n, ms in points)
-                        series.append((data, f"{light_type}, {camera}, {mode}"))
-        if not series:
-            continue
-        first = rows[0]
-        script = "\n".join([
-            "set terminal pngcairo size 1100,700",
-            f"set output '{os.path.join(out_dir, name)}'",
-            f"set title '{label} against shadowed lights: {first['device']}, {first['width']}x{first['height']}, "
-            f"{first['triangles']} triangles, every light moving'",
-            "set xlabel 'lights (each with a shadow)'", f"set ylabel '{label} (ms)'",
-            "set logscale xy", "set grid", "set key left top",
-            "plot " + ", ".join(f"'{d}' with linespoints title '{t}'" for d, t in series),
-        ])
-        subprocess.run([gnuplot], input=script, text=True, check=True)
+        series = [(f"{light_type}, {camera}, {mode}",
+                   [(r["lights"], r[column]) for r in rows if r["type"] == light_type and r["mode"] == mode and
+                    r.get("camera", "overview") == camera and r[column]])
+                  for light_type in args.types for camera in args.cameras for mode in args.modes]
+        line_plot(os.path.join(out_dir, name),
+                  f"{label} against shadowed lights: {first['device']}, {first['width']}x{first['height']}, "
+                  f"{first['triangles']} triangles, every light moving",
+                  "lights (each with a shadow)", f"{label} (ms)", series, logscale="xy", size=(1100, 700))
         print(f"sweep: wrote {os.path.join(out_dir, name)}")
 
 
