@@ -58,8 +58,6 @@ Incidence light_incidence(Light light, vec3 world_pos, uint type) {
   return at;
 }
 
-float luminance(vec3 color) { return dot(color, vec3(0.2126, 0.7152, 0.0722)); }
-
 vec3 radiance_at(Light light, Incidence at) { return light.color_intensity.rgb * light.color_intensity.a * at.reach; }
 vec3 shadow_color_at(Light light, Incidence at) { return at.fade * light.shadow_color_density.rgb; }
 
@@ -78,6 +76,12 @@ float shadow_weight(Light light, SurfacePoint p, Incidence at) {
   float density = light.shadow_color_density.a;
   return luminance(blinn_light(p, at.to_light, radiance_at(light, at), 0.0, density, shadow_color)) +
          density * luminance(shadow_color);
+}
+
+// Ranked filtering (shade_light_as): whether `light` runs its own kernel at a pixel whose filter
+// floor is `filter_floor`, its shadow weighing at least that (0: every light filters).
+bool runs_own_filter(Light light, SurfacePoint p, Incidence at, float filter_floor) {
+  return filter_floor <= 0.0 || shadow_weight(light, p, at) >= filter_floor;
 }
 
 // One light at world_pos. `shadow_kind` and `algorithm` are the light's own (light_shadow_kind,
@@ -101,7 +105,7 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
   float n_dot_l = dot(p.normal, at.to_light);
 
   // Two calls, each with a constant algorithm, so that each keeps only its own kernel's code.
-  bool filtered = SHADOW_ONLY_VIEW || filter_floor <= 0.0 || shadow_weight(light, p, at) >= filter_floor;
+  bool filtered = SHADOW_ONLY_VIEW || runs_own_filter(light, p, at, filter_floor);
   float shade = filtered ? light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, algorithm)
                          : light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, SHADOW_HARD);
   if (SHADOW_ONLY_VIEW) {

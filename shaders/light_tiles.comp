@@ -25,6 +25,18 @@ shared uint search_high;
 shared uint group_first[LIGHT_GROUP_COUNT];  // per group, its range in the tile's list
 shared uint group_end[LIGHT_GROUP_COUNT];
 
+// Thread 0, once each thread has put its count in first_slot: turns the counts into where each
+// thread's lights start, and returns the tile's total.
+uint place_thread_counts() {
+  uint sum = 0u;
+  for (uint t = 0u; t < THREADS; ++t) {
+    uint count = first_slot[t];
+    first_slot[t] = sum;
+    sum += count;
+  }
+  return sum;
+}
+
 // Widens `group`'s range in the tile's list to hold entries [first, end).
 void widen_group(uint group, uint first, uint end) {
   atomicMin(group_first[group], first);
@@ -71,19 +83,10 @@ void main() {
   uint chunk = (light_count + THREADS - 1u) / THREADS;
   uint first = min(local * chunk, light_count);
   uint last = min(first + chunk, light_count);
-  uint mine = 0u;
-  for (uint i = first; i < last; ++i) {
-    if (light_reaches_sphere(lights[i], sphere)) ++mine;
-  }
-  first_slot[local] = mine;
+  first_slot[local] = count_listed(first, last, sphere, 0u);
   barrier();
   if (local == 0u) {
-    uint sum = 0u;
-    for (uint t = 0u; t < THREADS; ++t) {
-      uint count = first_slot[t];
-      first_slot[t] = sum;
-      sum += count;
-    }
+    uint sum = place_thread_counts();
     tile_first = take_entries(sum, tile_listed);
     tile_wanted = sum;
     search_low = 0u;
@@ -100,16 +103,10 @@ void main() {
       uint high = search_high;
       if (low >= high) break;
       uint middle = low + (high - low) / 2u;
-      uint kept = 0u;
-      for (uint i = first; i < last; ++i) {
-        if (listed_in_tile(i, sphere, middle)) ++kept;
-      }
-      first_slot[local] = kept;
+      first_slot[local] = count_listed(first, last, sphere, middle);
       barrier();
       if (local == 0u) {
-        uint sum = 0u;
-        for (uint t = 0u; t < THREADS; ++t) sum += first_slot[t];
-        if (sum <= tile_listed) {
+        if (place_thread_counts() <= tile_listed) {
           search_high = middle;
         } else {
           search_low = middle + 1u;
@@ -118,19 +115,10 @@ void main() {
       barrier();
     }
     least = search_low;
-    uint kept = 0u;
-    for (uint i = first; i < last; ++i) {
-      if (listed_in_tile(i, sphere, least)) ++kept;
-    }
-    first_slot[local] = kept;
+    first_slot[local] = count_listed(first, last, sphere, least);
     barrier();
     if (local == 0u) {
-      uint sum = 0u;
-      for (uint t = 0u; t < THREADS; ++t) {
-        uint count = first_slot[t];
-        first_slot[t] = sum;
-        sum += count;
-      }
+      uint sum = place_thread_counts();
       // Lights worth exactly the least kept may not all fit: those left out count as dropped too.
       if (sum < tile_listed) atomicAdd(dropped_pairs, tile_listed - sum);
     }

@@ -98,14 +98,12 @@ vec4 visible_sphere_of_tile(uvec2 tile_xy, float nearest, float farthest) {
   return tile_bounding_sphere(frame.inverse_view_projection, ndc_min, ndc_max, nearest, farthest);
 }
 
-// Records that `tile`'s lights of `group` are the `count` entries of the pool from `first` on,
-// and, when there are any, lists the tile for the group's dispatch.
 // What a light is worth to a tile whose list the pool cannot hold whole: its radiance's luminance
 // times its falloff at the nearest point of the tile's sphere (1 for directional and cylinder
 // lights), as the bits of that non-negative float, which order as the values do. The lights a
 // full pool leaves out of a tile are the least worth there.
 uint light_worth_bits(Light light, vec4 sphere) {
-  float power = dot(light.color_intensity.rgb, vec3(0.2126, 0.7152, 0.0722)) * light.color_intensity.a;
+  float power = luminance(light.color_intensity.rgb) * light.color_intensity.a;
   float falloff = 1.0;
   if (light.info.x == LIGHT_POINT || light.info.x == LIGHT_SPOT) {
     float distance = max(length(sphere.xyz - light.position_range.xyz) - sphere.w, 0.0);
@@ -125,6 +123,17 @@ bool listed_in_tile(uint i, vec4 sphere, uint least) {
   return light_reaches_sphere(lights[i], sphere) && (least == 0u || light_worth_bits(lights[i], sphere) >= least);
 }
 
+// How many of lights [first, end) listed_in_tile lists at worth `least`.
+uint count_listed(uint first, uint end, vec4 sphere, uint least) {
+  uint count = 0u;
+  for (uint i = first; i < end; ++i) {
+    if (listed_in_tile(i, sphere, least)) ++count;
+  }
+  return count;
+}
+
+// Records that `tile`'s lights of `group` are the `count` entries of the pool from `first` on,
+// and, when there are any, lists the tile for the group's dispatch.
 void publish_group_range(uint tile, uint group, uint first, uint count) {
   tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(first, count);
   if (count == 0u) return;

@@ -34,10 +34,7 @@ void main() {
   // light twice costs less than any list of unbounded length kept in between.
   bool surfaces = !is_background_depth(nearest);
   vec4 sphere = surfaces ? visible_sphere_of_tile(tile_xy, nearest, farthest) : vec4(0.0);
-  uint reached = 0u;
-  for (uint i = 0u; surfaces && i < frame.counts.x; ++i) {
-    if (light_reaches_sphere(lights[i], sphere)) ++reached;
-  }
+  uint reached = count_listed(0u, surfaces ? frame.counts.x : 0u, sphere, 0u);
   uint listed;
   uint first = take_entries(reached, listed);
   // Where the pool holds fewer than the tile's lights, it lists those worth the most there: the
@@ -48,11 +45,7 @@ void main() {
     uint above = NO_WORTH;
     while (least < above) {
       uint middle = least + (above - least) / 2u;
-      uint kept = 0u;
-      for (uint i = 0u; i < frame.counts.x; ++i) {
-        if (listed_in_tile(i, sphere, middle)) ++kept;
-      }
-      if (kept <= listed) {
+      if (count_listed(0u, frame.counts.x, sphere, middle) <= listed) {
         above = middle;
       } else {
         least = middle + 1u;

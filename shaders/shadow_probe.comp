@@ -45,7 +45,7 @@ void main() {
       if (probe.keep < 1.0 && cell_random(uvec2(pixel), index).x >= probe.keep) continue;
       // As shade_light_as decides, with the light's own kind and algorithm.
       uint kind = light_shadow_kind(light);
-      bool filtered = filter_floor <= 0.0 || weight >= filter_floor;
+      bool filtered = runs_own_filter(light, p, at, filter_floor);
       float n_dot_l = dot(p.normal, at.to_light);
       float shade = light_shadow_as(light, position, p.normal, n_dot_l, kind, filtered ? light.info.z : SHADOW_HARD);
       uint slot = atomicAdd(probe.kept, 1u);

@@ -168,9 +168,8 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
           vkCmdDispatch(rec.cmd(), (constants.screen.x + 15) / 16, (constants.screen.y + 15) / 16, 1);
         });
   }
-  // Binds `pipeline` of layout_ with the lighting inputs, `lit_sum` and `constants`: the floor's
-  // pass and the groups'.
-  // and the probe's buffer where given.
+  // Binds `pipeline` of layout_ with the lighting inputs, `lit_sum` and `constants`, and the
+  // probe's buffer where given: the floor's pass, the groups' and the probe's.
   const auto bind = [this, gbuffer, tiles, atlas, &lights](
                         const vk::PassRecorder& rec, VkPipeline pipeline, rg::ImageHandle lit_sum,
                         const LightingConstants& constants, VkBuffer probe = VK_NULL_HANDLE) {

@@ -9,6 +9,7 @@
 
 namespace sg::shadows::glsl {
 
+float luminance(glm::vec3 color);
 float falloff_linear_window(float distance, float range);
 float gltf_range_window(float distance, float range);
 float falloff_gltf_punctual(float distance, float range);
