@@ -78,7 +78,9 @@
 //     "lights_demoted_by_memory": {...},         // per frame: lights below what they want
 //     "lights_dropped_by_memory": {...},         // per frame: lights without shadow
 //     "lowered_tiers": 1.25,                     // last frame: log2 of every light's resolution
-//                                                // lowered by this much (never below its floor)
+//                                                // lowered by this much (never below its floor;
+//                                                // less the tiers its redraw rate spares under
+//                                                // --shadow-time-policy redraw-cost)
 //     "view_cap": null                           // last frame: the time budget's cap on views
 //                                                // redrawn; null: none
 //   },

@@ -127,6 +127,10 @@ std::vector<Setting<S>> make_table() {
           "lights lose resolution by their size on screen down to their quality floor, then map redraws "
           "wait their turn, stalest first (0: no budget; default: 6 on GPUs, none on CPU devices); "
           "--shadow-memory still caps on top"),
+      choice<S>(
+          "shadow-time-policy", [](auto& s) -> auto& { return s.renderer.shadow_time_policy; },
+          "how --shadow-budget-ms lowers resolutions: redraw-cost spares maps by how seldom they are "
+          "redrawn (a map kept from frame to frame costs no time); uniform lowers every light alike"),
       whole<S>(
           "filtered-shadows", "N", [](auto& s) -> auto& { return s.renderer.filtered_lights; }, 0,
           TiledLightingPass::most_filtered_lights,

@@ -8,6 +8,7 @@
 #include "systems/shadows/cube_shadow_mode.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_resolution.h"
+#include "systems/shadows/shadow_time_policy.h"
 #include "systems/shadows/shadow_view_path.h"
 
 namespace sg {
@@ -38,6 +39,8 @@ struct RendererSettings {
   // default_gpu_shadow_budget_ms on GPUs, none on CPU devices (lavapipe), whose shadow passes
   // always take far longer and would lose resolution in every picture.
   std::optional<float> shadow_budget_ms;
+  // How the time budget's lowered resolutions fall on the lights (shadows::ShadowTimePolicy).
+  shadows::ShadowTimePolicy shadow_time_policy = shadows::ShadowTimePolicy::redraw_cost;
   // Deferred lighting: at each pixel, the most lights that run their own shadow filter kernels,
   // the heaviest there; lighter lights take the hard test. 0: every light filters; unset:
   // default_gpu_filtered_lights on GPUs, every light on CPU devices.

@@ -33,8 +33,10 @@ uint64_t importance_bits(const ShadowRequest& request) {
 
 }  // namespace
 
-ShadowAtlasPlanner::ShadowAtlasPlanner(AtlasConfig config)
-    : config_(sanitized(config)), pages_(config_.page_size, config_.min_resolution, config_.max_pages) {}
+ShadowAtlasPlanner::ShadowAtlasPlanner(AtlasConfig config, ShadowTimePolicy policy)
+    : config_(sanitized(config)),
+      policy_(policy),
+      pages_(config_.page_size, config_.min_resolution, config_.max_pages) {}
 
 void ShadowAtlasPlanner::set_config(AtlasConfig config) {
   const AtlasConfig next = sanitized(config);
@@ -55,6 +57,7 @@ uint32_t ShadowAtlasPlanner::tier_of(uint32_t resolution) const {
 ShadowAtlasPlanner::Wanted ShadowAtlasPlanner::wanted_resolution(const ShadowRequest& request,
                                                                  uint32_t previous_full,
                                                                  std::optional<float> previous_held,
+                                                                 float redraw_rate,
                                                                  float lowered_tiers) const {
   uint32_t cap = request.cube ? config_.page_size / 4 : config_.page_size;
   if (cap < config_.min_resolution) return {};  // six faces of the smallest tile do not fit a page
@@ -71,16 +74,18 @@ ShadowAtlasPlanner::Wanted ShadowAtlasPlanner::wanted_resolution(const ShadowReq
     full = previous_full;
   }
   // Held from what the light gets: a light capped below its importance (or inside the camera's
-  // view of it) drops with the first lowered tier too.
-  const float got = std::min(tiers, float(std::countr_zero(cap)));
+  // view of it) drops with the first lowered tier too; and from the tiers its redraw rate spares.
+  const float got = std::min(tiers, float(std::countr_zero(cap))) + spared_tiers(policy_, redraw_rate);
   const float held =
       previous_held ? std::clamp(*previous_held, got - hysteresis_tiers, got + hysteresis_tiers) : got;
   const uint32_t floor =
       std::min(full, std::bit_ceil(std::max(config_.min_resolution, request.quality_floor)));
-  if (lowered_tiers <= 0.0f) return {full, full, full > floor, held};
+  // A map redrawn seldom saves too little time to keep the budget lowering tiers for it.
+  const bool saves_time = policy_ == ShadowTimePolicy::uniform || redraw_rate >= least_lowerable_rate;
+  if (lowered_tiers <= 0.0f) return {full, full, full > floor && saves_time, held};
   const float lowered_log2 = std::clamp(held - lowered_tiers, 0.0f, 31.0f);
   const uint32_t lowered = std::clamp(1u << uint32_t(std::round(lowered_log2)), floor, full);
-  return {full, lowered, lowered > floor, held};
+  return {full, lowered, lowered > floor && saves_time, held};
 }
 
 void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
@@ -153,6 +158,17 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   update_stats();
 }
 
+void ShadowAtlasPlanner::record_redraws(std::span<const uint8_t> redraws, jobs::ThreadPool* pool) {
+  assert(redraws.size() <= light_of_request_.size());
+  jobs::run_in_pieces(pool, redraws.size(), lights_per_piece, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      if (redraws[i] == no_redraw_sample || light_of_request_[i] == no_light) continue;
+      float& rate = lights_[light_of_request_[i]].redraw_rate;
+      rate += (float(redraws[i] == map_redrawn) - rate) * redraw_rate_weight;
+    }
+  });
+}
+
 // A radix sort, then keys within runs of equal importance: a plan() may sort 100,000 lights.
 void ShadowAtlasPlanner::order_least_important_first(std::span<const ShadowRequest> requests) {
   by_importance_.clear();
@@ -180,9 +196,10 @@ void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, j
     light_of_request_[i] = index;
     light.requested_in_plan = plans_;
     const bool same_kind = requests[i].cube == light.cube;
-    const Wanted wanted = wanted_resolution(
-        requests[i], same_kind ? light.full : 0,
-        same_kind && light.full > 0 ? std::optional(light.held) : std::nullopt, lowered_tiers);
+    const Wanted wanted =
+        wanted_resolution(requests[i], same_kind ? light.full : 0,
+                          same_kind && light.full > 0 ? std::optional(light.held) : std::nullopt,
+                          light.redraw_rate, lowered_tiers);
     light.full = wanted.full;
     light.held = wanted.held;
     light.wanted = wanted.lowered;

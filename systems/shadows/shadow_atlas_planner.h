@@ -20,7 +20,10 @@
 //   hysteresis on the lowered resolution itself would take 1.5 tiers to undo a quarter tier's
 //   step). Every map keeps in proportion to its light's size on screen, and the least important
 //   lights reach their floor, and stop, first. A light that wants less than its floor anyway
-//   keeps what it wants; pinned lights keep their cap.
+//   keeps what it wants; pinned lights keep their cap. Under the redraw_cost policy
+//   (shadow_time_policy.h) `held` also counts the tiers a light is spared for how seldom its map
+//   is redrawn (record_redraws(), a rate over recent frames): the lowered tiers fall on the maps that
+//   cost time.
 // - Budget: the tiles must fit max_pages pages. When they do not, the least important light drops
 //   one tier, then the next least important, and so on upward, pass after pass, first only lights
 //   above their quality floor (down to it), then all of them; once every light is at
@@ -47,6 +50,7 @@
 
 #include "systems/shadows/budget_report.h"
 #include "systems/shadows/shadow_atlas_pages.h"
+#include "systems/shadows/shadow_time_policy.h"
 
 namespace sg::shadows {
 
@@ -89,7 +93,9 @@ struct AtlasStats {
   uint32_t demoted_by_budget = 0;  // shadowed at a lower resolution than they want
   uint32_t dropped_by_budget = 0;  // without shadow because of the budget
   uint32_t demoted_by_time = 0;    // wanting less than their importance asks (lowered_tiers)
-  uint32_t lowerable_by_time = 0;  // above their quality floor: more lowered tiers would lower them
+  // Above their quality floor, so that more lowered tiers would lower them, and (redraw_cost)
+  // redrawn often enough that it would save time.
+  uint32_t lowerable_by_time = 0;
   // Lights placed in the previous plan too whose resolution differs now (a shadow gained or
   // lost included): the tiers that changed, which the time budget's hysteresis keeps few.
   uint32_t lights_changed_tier = 0;
@@ -97,7 +103,7 @@ struct AtlasStats {
 
 class ShadowAtlasPlanner {
  public:
-  explicit ShadowAtlasPlanner(AtlasConfig config);
+  explicit ShadowAtlasPlanner(AtlasConfig config, ShadowTimePolicy policy = ShadowTimePolicy::redraw_cost);
 
   // Fills out[i] for requests[i]; out.size() must equal requests.size(). Requests need not come
   // in the same order every frame. A key requested twice in one plan() gets a shadow only once.
@@ -105,6 +111,12 @@ class ShadowAtlasPlanner {
   // `lowered_tiers` >= 0: the time budget's (see above); 0: none.
   void plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
             jobs::ThreadPool* pool = nullptr, float lowered_tiers = 0.0f);
+  // What became of the last plan()'s requests' maps this frame, per request: redraws[i] is
+  // map_redrawn when request i's map was drawn for a change of its light or its casters,
+  // map_kept when it was kept, no_redraw_sample when it tells nothing of the rate (no tile,
+  // or drawn because its tiles are new). Each light's redraw rate follows them.
+  enum RedrawSample : uint8_t { map_kept, map_redrawn, no_redraw_sample };
+  void record_redraws(std::span<const uint8_t> redraws, jobs::ThreadPool* pool = nullptr);
   // The last plan()'s.
   const AtlasStats& stats() const { return stats_; }
   // A line for the log when the budget's effect (lights demoted or dropped) differs from the last
@@ -122,11 +134,12 @@ class ShadowAtlasPlanner {
   struct Light {
     uint64_t key = 0;
     bool cube = false;
-    uint32_t full = 0;        // what its importance asks, after hysteresis; 0: cannot have a shadow
-    uint32_t wanted = 0;      // full lowered by the time budget
-    float held = 0.0f;        // log2 of what it gets, with a backlash (see the header)
-    bool lowerable = false;   // wanted is above its quality floor
-    uint32_t resolution = 0;  // as placed
+    uint32_t full = 0;         // what its importance asks, after hysteresis; 0: cannot have a shadow
+    uint32_t wanted = 0;       // full lowered by the time budget
+    float held = 0.0f;         // log2 of what it gets, with a backlash (see the header)
+    float redraw_rate = 1.0f;  // the share of recent frames its map was redrawn in (record_redraws())
+    bool lowerable = false;    // wanted is above its quality floor
+    uint32_t resolution = 0;   // as placed
     std::array<AtlasTile, 6> tiles{};
     uint64_t requested_in_plan = 0;
     uint64_t placed_in_plan = 0;  // the last plan that placed it; 0: none (plans count from 1)
@@ -139,8 +152,8 @@ class ShadowAtlasPlanner {
 
   uint32_t tier_count() const;
   uint32_t tier_of(uint32_t resolution) const;
-  // A light's full and wanted resolutions and its held tiers, from last plan's (0, nullopt: none)
-  // and lowered_tiers.
+  // A light's full and wanted resolutions and its held tiers, from last plan's (0, nullopt: none),
+  // its redraw rate and lowered_tiers.
   struct Wanted {
     uint32_t full = 0;
     uint32_t lowered = 0;
@@ -148,7 +161,7 @@ class ShadowAtlasPlanner {
     float held = 0.0f;
   };
   Wanted wanted_resolution(const ShadowRequest& request, uint32_t previous_full,
-                           std::optional<float> previous_held, float lowered_tiers) const;
+                           std::optional<float> previous_held, float redraw_rate, float lowered_tiers) const;
   void match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool, float lowered_tiers);
   void release_lights_not_requested();
   void fit_budget(std::span<const ShadowRequest> requests);
@@ -178,6 +191,7 @@ class ShadowAtlasPlanner {
   void update_stats();
 
   AtlasConfig config_;
+  ShadowTimePolicy policy_;
   ShadowAtlasPages pages_;
   bool repack_pending_ = false;  // set_config() made the allocator new
   uint64_t plans_ = 0;

@@ -49,8 +49,8 @@ float light_importance(const glm::vec4& reach, const ShadowCamera& camera) {
 }
 
 ShadowSchedule::ShadowSchedule(const AtlasConfig& atlas, bool static_layers, ShadowResolution resolution,
-                               double time_budget_ms)
-    : planner_(atlas),
+                               double time_budget_ms, ShadowTimePolicy time_policy)
+    : planner_(atlas, time_policy),
       time_budget_(time_budget_ms),
       page_size_(atlas.page_size),
       static_layers_(static_layers),
@@ -141,6 +141,18 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
                               casters.changes_only ? casters.moving : std::span<const scene::Aabb>{}};
   cache_.plan(cache_lights_, changes, tighter_cap(view_budget, limits.view_cap), static_layers_, render_,
               usable_, pool);
+  // What each map cost this frame, for the planner's redraw rates: a map drawn into new tiles
+  // says nothing of how often its light or its casters change.
+  redraws_.resize(requests_.size());
+  jobs::run_in_pieces(pool, requests_.size(), views_per_piece, [&](size_t begin, size_t end) {
+    for (size_t r = begin; r < end; ++r) {
+      redraws_[r] = placements_[r].resolution == 0 || placements_[r].moved
+                        ? ShadowAtlasPlanner::no_redraw_sample
+                    : render_[cache_index_[r]] != keep_map ? ShadowAtlasPlanner::map_redrawn
+                                                           : ShadowAtlasPlanner::map_kept;
+    }
+  });
+  planner_.record_redraws(redraws_, pool);
 
   // The results onto the views and their records, on the pool: each view writes only itself,
   // its record and its entry.

@@ -94,10 +94,11 @@ class ShadowSchedule {
  public:
   // `static_layers`: the renderer keeps a static layer of each map (ShadowCache), so renders for
   // moving casters may draw only those. `time_budget_ms`: the shadow passes' GPU time a frame
-  // may take (ShadowTimeBudget); 0: no budget.
+  // may take (ShadowTimeBudget); 0: no budget. `time_policy`: how its lowered tiers fall on the
+  // lights (shadow_time_policy.h).
   explicit ShadowSchedule(const AtlasConfig& atlas, bool static_layers = false,
-                          ShadowResolution resolution = ShadowResolution::screen,
-                          double time_budget_ms = 0.0);
+                          ShadowResolution resolution = ShadowResolution::screen, double time_budget_ms = 0.0,
+                          ShadowTimePolicy time_policy = ShadowTimePolicy::redraw_cost);
 
   // Places, caches and records every shadow of `lights` (gathered, not yet sorted). `casters`
   // are the frame's shadow casters or their changes (CasterUpdate); view_budget caps the views
@@ -147,6 +148,7 @@ class ShadowSchedule {
   std::vector<uint8_t> render_;
   std::vector<uint8_t> usable_;
   std::vector<uint32_t> cache_index_;  // per request with a tile: its place in cache_lights_
+  std::vector<uint8_t> redraws_;       // per request: ShadowAtlasPlanner::RedrawSample
 
   // The view each light's map was last rendered with, in the order of the frame's maps and
   // cubes: usually the previous frame's lights in the same order, so nothing is looked up.

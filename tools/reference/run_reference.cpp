@@ -20,10 +20,6 @@
 namespace sg::reference {
 namespace {
 
-void say(const std::function<void(const std::string&)>& progress, const std::string& line) {
-  if (progress) progress(line);
-}
-
 // A light's name as part of a file name: letters and digits kept, anything else '_'.
 std::string file_stem(const std::string& name) {
   std::string out = name;
@@ -61,7 +57,7 @@ scene::ShadowSettings run_settings(scene::ShadowSettings shadow, const Reference
 // algorithm of `settings` measured against them (and pictured, with an image folder).
 LightReport compare_light(EngineShade& engine, const SurfacePoints& points, const RayScene& casters,
                           const ReferenceLight& light, const ReferenceSettings& settings,
-                          jobs::ThreadPool& pool, const std::function<void(const std::string&)>& progress) {
+                          jobs::ThreadPool& pool, const Progress& progress) {
   LightReport result{light.name, light.type, 0.0, {}};
   const auto start = std::chrono::steady_clock::now();
   const std::vector<float> hard = hard_visibility(casters, points, light, pool);
@@ -109,8 +105,7 @@ LightReport compare_light(EngineShade& engine, const SurfacePoints& points, cons
 }
 
 std::vector<AlgorithmCost> measure_costs(vk::VulkanContext& context, const FrameSettings& frame,
-                                         const ReferenceSettings& settings,
-                                         const std::function<void(const std::string&)>& progress) {
+                                         const ReferenceSettings& settings, const Progress& progress) {
   // Every map redrawn every frame: the cost of a frame whose lights or casters all move.
   FrameSettings timed = frame;
   timed.renderer.cache_shadows = false;
@@ -133,8 +128,7 @@ std::vector<AlgorithmCost> measure_costs(vk::VulkanContext& context, const Frame
 }  // namespace
 
 ReferenceReport run_reference(vk::VulkanContext& context, const FrameSettings& frame,
-                              const ReferenceSettings& settings,
-                              const std::function<void(const std::string&)>& progress) {
+                              const ReferenceSettings& settings, const Progress& progress) {
   SceneView scene = load_scene_view(frame, float(frame.width) / float(frame.height));
   for (const std::string& name : settings.no_shadow_from) {
     if (stop_casting(scene.scene, name) == 0) {

@@ -8,7 +8,6 @@
 //      (engine_shade.h), and compare (metrics.h); optionally write the pictures;
 //   3. optionally, the GPU cost of each algorithm on the whole scene (systems/frame/frame_cost.h).
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +17,7 @@
 #include "systems/frame/frame_settings.h"
 #include "systems/scene/shadow_settings.h"
 #include "tools/reference/metrics.h"
+#include "tools/reference/progress.h"
 #include "tools/reference/reference_lights.h"
 
 namespace sg::reference {
@@ -71,7 +71,6 @@ struct ReferenceReport {
 // std::exception with a message for a scene that cannot be loaded or has no shadowed light
 // left after the filters.
 ReferenceReport run_reference(vk::VulkanContext& context, const FrameSettings& frame,
-                              const ReferenceSettings& settings,
-                              const std::function<void(const std::string&)>& progress = {});
+                              const ReferenceSettings& settings, const Progress& progress = {});
 
 }  // namespace sg::reference

@@ -23,10 +23,6 @@
 namespace sg::reference {
 namespace {
 
-void say(const std::function<void(const std::string&)>& progress, const std::string& line) {
-  if (progress) progress(line);
-}
-
 // A shadowed light of the frame as the reference needs it; `shadowed` false for lights whose
 // settings cast no shadow (their pairs are not measured).
 struct FrameLight {
@@ -113,7 +109,7 @@ ProbedFrame probe_frame(vk::VulkanContext& context, const FrameSettings& setting
 std::vector<TracedPair> trace_pairs(const std::vector<ShadowProbePair>& pairs,
                                     const std::vector<FrameLight>& lights, const SurfacePoints& points,
                                     const RayScene& casters, uint32_t soft_samples, jobs::ThreadPool& pool,
-                                    const std::function<void(const std::string&)>& progress) {
+                                    const Progress& progress) {
   std::vector<TracedPair> out;
   out.reserve(pairs.size());
   for (const ShadowProbePair& pair : pairs) {
@@ -154,8 +150,7 @@ std::vector<TracedPair> trace_pairs(const std::vector<ShadowProbePair>& pairs,
 }  // namespace
 
 WholeFrameReport run_whole_frame(vk::VulkanContext& context, const FrameSettings& frame,
-                                 const WholeFrameSettings& settings,
-                                 const std::function<void(const std::string&)>& progress) {
+                                 const WholeFrameSettings& settings, const Progress& progress) {
   if (settings.frames == 0) throw std::invalid_argument("--frames: at least one frame");
   FrameSettings lit = frame;
   lit.renderer.lighting = LightingPath::deferred;  // the probe walks the deferred lighting's lists

@@ -13,13 +13,13 @@
 // Where the frame has more pairs than `pairs_per_pixel` times its pixels, the run is repeated
 // keeping a random share of the pairs (the same share of every light's), and the report says so.
 #include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "rendergraph/device/fwd.h"
 #include "systems/frame/frame_settings.h"
 #include "tools/reference/frame_error.h"
+#include "tools/reference/progress.h"
 #include "tools/reference/reference_lights.h"
 
 namespace sg::reference {
@@ -67,7 +67,6 @@ struct WholeFrameReport {
 };
 
 WholeFrameReport run_whole_frame(vk::VulkanContext& context, const FrameSettings& frame,
-                                 const WholeFrameSettings& settings,
-                                 const std::function<void(const std::string&)>& progress = {});
+                                 const WholeFrameSettings& settings, const Progress& progress = {});
 
 }  // namespace sg::reference

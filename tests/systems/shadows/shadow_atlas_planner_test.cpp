@@ -168,6 +168,42 @@ TEST(ShadowAtlasPlanner, LoweredTiersLowerEveryLightDownToItsFloor) {
   EXPECT_EQ(planner.stats().lowerable_by_time, 5u);
 }
 
+// Under redraw_cost a map kept from frame to frame is spared the lowered tiers (a third of log2
+// of how seldom it is redrawn, at most most_spared_tiers) and does not count as lowerable: lower
+// tiers would save no time. Uniform lowers it all the same.
+TEST(ShadowAtlasPlanner, RedrawCostSparesMapsKeptFromFrameToFrame) {
+  for (const ShadowTimePolicy policy : {ShadowTimePolicy::redraw_cost, ShadowTimePolicy::uniform}) {
+    ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 4, .min_resolution = 32}, policy);
+    std::vector<ShadowRequest> requests{map_light(1, 1024.0f), map_light(2, 1024.0f)};
+    for (ShadowRequest& request : requests) request.quality_floor = 64;
+    std::vector<ShadowPlacement> out(requests.size());
+    const std::vector<uint8_t> redraws{ShadowAtlasPlanner::map_redrawn, ShadowAtlasPlanner::map_kept};
+    for (int frame = 0; frame < 200; ++frame) {
+      planner.plan(requests, out);
+      planner.record_redraws(redraws);
+    }
+    planner.plan(requests, out, nullptr, 2.0f);
+    EXPECT_EQ(out[0].resolution, 256u) << "redrawn every frame: lowered";
+    if (policy == ShadowTimePolicy::redraw_cost) {
+      EXPECT_EQ(out[1].resolution, 1024u) << "kept: spared";
+      EXPECT_EQ(planner.stats().lowerable_by_time, 1u);
+      EXPECT_EQ(planner.stats().demoted_by_time, 1u);
+    } else {
+      EXPECT_EQ(out[1].resolution, 256u) << "uniform";
+      EXPECT_EQ(planner.stats().lowerable_by_time, 2u);
+      EXPECT_EQ(planner.stats().demoted_by_time, 2u);
+    }
+    // A light that starts moving pays its way again within a few dozen frames (to within the
+    // backlash of its held tiers).
+    const std::vector<uint8_t> both_redrawn{ShadowAtlasPlanner::map_redrawn, ShadowAtlasPlanner::map_redrawn};
+    for (int frame = 0; frame < 60; ++frame) {
+      planner.plan(requests, out, nullptr, 2.0f);
+      planner.record_redraws(both_redrawn);
+    }
+    EXPECT_LE(out[1].resolution, 512u);
+  }
+}
+
 TEST(ShadowAtlasPlanner, LoweredTiersIgnoreWobblingImportancesAndStepBackExactly) {
   ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 4, .min_resolution = 32});
   const auto lowered = [&](float importance, float tiers) {

@@ -1,7 +1,8 @@
 // The frame-time budget for shadows against a model of GPU time: the real atlas planner sizes
 // the tiles from the budget's limits, a frame's shadow passes take
 // ms = per_view * views + per_texel * texels drawn (with noise), and each measurement comes back
-// frames in flight late, as from the GPU.
+// frames in flight late, as from the GPU. The planner learns which maps are redrawn as the
+// schedule tells it (ShadowAtlasPlanner::record_redraws).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,7 +23,11 @@ constexpr double budget_ms = 6.0;
 // Moving lights of one 2D map each: every view is due every frame.
 class ShadowLoop {
  public:
-  explicit ShadowLoop(double budget = budget_ms, double noise = 0.05) : budget_(budget), noise_(noise) {}
+  explicit ShadowLoop(double budget = budget_ms, double noise = 0.05,
+                      ShadowTimePolicy policy = ShadowTimePolicy::redraw_cost)
+      : budget_(budget),
+        noise_(noise),
+        planner_({.page_size = 4096, .max_pages = 256, .min_resolution = 16}, policy) {}
 
   // `count` lights whose importances spread evenly in log2 over [low, high], each with a
   // quality floor of 64 texels.
@@ -33,8 +38,11 @@ class ShadowLoop {
                             std::exp2(std::log2(high / low) * float(i) / float(std::max(count - 1, 1u))));
     }
   }
-  // Lights that stand still: nothing is due, nothing drawn.
+  // Lights that stand still: nothing is due but maps whose tiles changed.
   void set_moving(bool moving) { moving_ = moving; }
+  // Every `every`-th light (0: none) stands still while the others move.
+  void set_still_every(uint32_t every) { still_every_ = every; }
+  bool still(size_t light) const { return !moving_ || (still_every_ != 0 && light % still_every_ == 0); }
 
   struct Frame {
     double ms = 0.0;  // this frame's shadow passes
@@ -46,18 +54,28 @@ class ShadowLoop {
     requests_.clear();
     std::uniform_real_distribution<float> wander(-0.1f, 0.1f);  // lights move: importances jitter
     for (size_t i = 0; i < importance_.size(); ++i) {
-      requests_.push_back(
-          {.key = i, .importance = importance_[i] * std::exp2(wander(random_)), .quality_floor = 64});
+      const float jitter = still(i) ? 1.0f : std::exp2(wander(random_));
+      requests_.push_back({.key = i, .importance = importance_[i] * jitter, .quality_floor = 64});
     }
     placements_.assign(requests_.size(), {});
     planner_.plan(requests_, placements_, nullptr, limits.lowered_tiers);
-    uint64_t texels = 0;
-    for (const ShadowPlacement& placement : placements_)
-      texels += uint64_t{placement.resolution} * placement.resolution;
-    const auto due = static_cast<uint32_t>(moving_ ? requests_.size() : 0);
+    // Due: the moving lights' maps, and still ones in new tiles.
+    uint32_t due = 0;
+    uint64_t due_texels = 0;
+    redraws_.assign(requests_.size(), ShadowAtlasPlanner::map_redrawn);
+    for (size_t i = 0; i < placements_.size(); ++i) {
+      const ShadowPlacement& placement = placements_[i];
+      if (still(i))
+        redraws_[i] = placement.moved ? ShadowAtlasPlanner::no_redraw_sample : ShadowAtlasPlanner::map_kept;
+      if (!still(i) || placement.moved) {
+        ++due;
+        due_texels += uint64_t{placement.resolution} * placement.resolution;
+      }
+    }
+    planner_.record_redraws(redraws_);
     const uint32_t drawn = limits.view_cap == 0 ? due : std::min(due, limits.view_cap);
     // Capped views come round in turn (ShadowCache): on average each costs the mean texels.
-    const double drawn_texels = due == 0 ? 0.0 : double(texels) * drawn / due;
+    const double drawn_texels = due == 0 ? 0.0 : double(due_texels) * drawn / due;
     std::uniform_real_distribution<double> noise(1.0 - noise_, 1.0 + noise_);
     const double ms = (per_view_ms * drawn + per_texel_ms * drawn_texels) * noise(random_);
     const AtlasStats& stats = planner_.stats();
@@ -78,6 +96,9 @@ class ShadowLoop {
   }
 
   ShadowTimeBudget& budget() { return budget_; }
+  // The last frame's, per light.
+  const std::vector<ShadowPlacement>& placements() const { return placements_; }
+  float importance(size_t light) const { return importance_[light]; }
 
   static constexpr double per_view_ms = 0.002;
   static constexpr double per_texel_ms = 0.5e-6;
@@ -91,11 +112,12 @@ class ShadowLoop {
   };
   ShadowTimeBudget budget_;
   double noise_;
-  ShadowAtlasPlanner planner_{
-      {.page_size = 4096, .max_pages = 256, .min_resolution = 16}};  // memory never binds
+  ShadowAtlasPlanner planner_;  // memory never binds
   std::vector<float> importance_;
   bool moving_ = true;
+  uint32_t still_every_ = 0;
   std::vector<ShadowRequest> requests_;
+  std::vector<uint8_t> redraws_;
   std::vector<ShadowPlacement> placements_;
   std::deque<Measured> in_flight_;
   std::mt19937 random_{7};
@@ -203,6 +225,43 @@ TEST(ShadowTimeBudget, RemovingTheLoadRelaxesToFullQuality) {
   ASSERT_GT(loop.frames(300).back().limits.lowered_tiers, 1.0f);
   loop.set_moving(false);
   EXPECT_EQ(loop.frames(100).back().limits, ShadowTimeBudget::Limits{});
+}
+
+// Half the lights stand still: drawn once, their maps cost no time after. Under redraw_cost the
+// budget's tiers fall on the moving half and the still half climbs back to what its size asks;
+// uniform lowers both halves alike for about the same time.
+TEST(ShadowTimeBudget, RedrawCostSparesTheMapsOfLightsThatStandStill) {
+  // Mean log2(resolution / what its importance asks) over the still or the moving lights.
+  const auto tiers_lowered = [](const ShadowLoop& loop, bool still) {
+    double sum = 0.0;
+    int count = 0;
+    for (size_t i = 0; i < loop.placements().size(); ++i) {
+      if (loop.still(i) != still || loop.importance(i) < 128.0f) continue;  // above the floor
+      const float asks = std::exp2(std::round(std::log2(loop.importance(i))));
+      sum += std::log2(asks / float(loop.placements()[i].resolution));
+      ++count;
+    }
+    return sum / count;
+  };
+  struct Outcome {
+    double still = 0.0, moving = 0.0, ms = 0.0;
+  };
+  const auto run = [&](ShadowTimePolicy policy) {
+    ShadowLoop loop(budget_ms, 0.05, policy);
+    loop.set_lights(512);
+    loop.set_still_every(2);
+    const std::vector<ShadowLoop::Frame> frames = loop.frames(600);
+    EXPECT_GE(settled_at(frames, 300), 0) << "within the budget";
+    return Outcome{tiers_lowered(loop, true), tiers_lowered(loop, false), frames.back().ms};
+  };
+  const Outcome cost = run(ShadowTimePolicy::redraw_cost);
+  const Outcome uniform = run(ShadowTimePolicy::uniform);
+  EXPECT_GT(uniform.still, 0.75) << "uniform lowers the still lights";
+  EXPECT_NEAR(uniform.still, uniform.moving, 0.25) << "as much as the moving ones";
+  EXPECT_LT(cost.still, 0.25) << "redraw_cost leaves them at what their size asks";
+  EXPECT_LT(cost.moving, uniform.moving + 0.25) << "and lowers the moving ones no more";
+  EXPECT_GT(cost.ms, 0.5 * budget_ms) << "for about the same time";
+  EXPECT_GT(uniform.ms, 0.5 * budget_ms);
 }
 
 // Lights all at their quality floor: lower tiers gain nothing, so views wait their turn.
