@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ecs/command_buffer.h"
 
 namespace sg::ecs {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ecs/entity_registry.h"
 
 namespace sg::ecs {

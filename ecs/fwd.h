@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The ECS's types, declared, for headers that name them without needing their definitions: a
 // header includes this instead of another that would include it back (EnTT's fwd.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ecs/large_array.h"
 
 #include <cstdint>

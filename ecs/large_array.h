@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Memory for the ECS's large arrays (component pools, sparse indices, change ticks, entity
 // slots). From 2 MiB up an array gets 2 MiB-aligned memory of its own that the kernel is asked to

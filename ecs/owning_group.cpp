@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ecs/owning_group.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ecs/sparse_set.h"
 
 #include <algorithm>

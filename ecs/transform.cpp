@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ecs/transform.h"
 
 #include <glm/gtc/matrix_transform.hpp>

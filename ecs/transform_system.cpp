@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ecs/transform_system.h"
 
 #include <algorithm>

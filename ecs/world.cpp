@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ecs/world.h"
 
 namespace sg::ecs {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandbox/depth_overlay_pass.h"
 
 #include "rendergraph/device/context.h"

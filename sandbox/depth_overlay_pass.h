@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The render graph's extension example: a pass written outside the engine (no file in
 // rendergraph/ or systems/ knows it) that draws the camera's depth buffer, as grey, into the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandbox/fly_camera.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The window's fly camera: right mouse to look, W A S D to move, Q E down and up, the wheel for
 // speed, F to frame a box (the selected light's reach, or the scene). Plain data and a function over it, so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandbox/light_heatmap_pass.h"
 
 #include "rendergraph/device/context.h"

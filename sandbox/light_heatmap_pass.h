@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A debug view: how many lights each 16x16 screen tile shades, as color over the picture, read
 // from light culling's lists (LightTiles::ranges). Like the depth overlay, a pass no engine

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // shadowgraph-sandbox: renders the built-in scene in a window, or headless to a PNG.
 #include <cstdio>
 #include <cstdlib>

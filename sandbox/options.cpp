@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandbox/options.h"
 
 #include <sstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Command line of shadowgraph-sandbox: the frame's settings (systems/frame/frame_settings.h) and
 // the sandbox's own, each declared once in a table (setting.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The sandbox's two ways to run the same frame: offscreen (a PNG at the end) or in a window.
 #include "rendergraph/device/fwd.h"

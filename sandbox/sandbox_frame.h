@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The sandbox's frame: the engine's (systems/frame/frame.h) with the sandbox's additions, through
 // its FrameExtension: the panels (--ui; their edits in the update phase), the depth overlay

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandbox/script.h"
 
 #include <cmath>

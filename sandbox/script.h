@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Scripted sandbox runs (--script FILE), so that what a person would do in the window can be
 // done, and tested, without one. One command a line; `#` starts a comment:

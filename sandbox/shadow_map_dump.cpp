@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandbox/shadow_map_dump.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // --dump-shadow-maps DIR: every light's shadow map as a grey PNG, for looking at what the
 // shadow passes rendered. 2D maps (spot, directional, cylinder) show linear depth from the

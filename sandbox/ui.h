@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The sandbox's panels, with Dear ImGui: frame facts (CPU and GPU time, shadow views drawn and
 // kept, shadow memory) and a light editor (pick a light by type and name; edit its position,

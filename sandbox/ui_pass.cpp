@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandbox/ui_pass.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Draws Dear ImGui's output over the frame as one render-graph pass: the library builds the
 // windows and their triangles on the CPU (sandbox/ui.h); this pass uploads them and draws them

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandbox/window_session.h"
 
 #include <chrono>

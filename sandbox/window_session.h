@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A window showing the scene: GLFW window, Vulkan context with presentation, swapchain, the
 // sandbox's frame graph. The swapchain follows the window's framebuffer size; while the window is

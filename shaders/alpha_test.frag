@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // The depth prepass of masked materials: scene.vert's position, and no surface where the mask

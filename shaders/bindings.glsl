@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Descriptor binding numbers of the engine's passes (set 0), declared once for the shaders and
 // for the C++ that binds them (systems/gpu/shader_bindings.h includes this file): a `const int` reads
 // the same in GLSL and C++. Each pass binds the subset it uses.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The camera's depth buffer as the lighting passes read it: reversed (systems/gpu/camera.h), 1 at
 // the near plane, 0 at the far plane and where nothing was drawn.
 #ifndef SG_CAMERA_DEPTH_GLSL

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // The tiled forward path's depth prepass: scene.vert's position and nothing else, computed the

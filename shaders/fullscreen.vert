@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 // One triangle that covers the viewport, for passes that shade every pixel of it; uv runs 0..1
 // across the viewport (out location 0). Draw 3 vertices, no vertex buffer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The G-buffer of tiled deferred lighting: what the light culling and the lighting passes need of
 // each visible surface point. Shared by gbuffer.frag and gbuffer_lit_sum.frag.
 #ifndef SG_GBUFFER_GLSL

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // The G-buffer (gbuffer.glsl) and the start of the lit sum, the ambient term times the base

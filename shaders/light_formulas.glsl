@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scalar formulas of docs/ALGORITHMS.md that light_shading.glsl and
 // shadow_sampling.glsl use. This file is also compiled as C++ (systems/shadows/
 // light_formulas.cpp, GLM standing in for the GLSL built-ins), so the CPU tests check the very

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Lights grouped by the shadow code they run: a group is a shadow kind (none, a 2D map, a cube
 // map) and, for shadowed lights, one of the five algorithms. The tiled lighting pass runs one
 // dispatch per group with that group's code compiled in and nothing else (a CPU Vulkan driver

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One light as the shaders see it: every light of the frame is one element of the Lights
 // storage buffer (lights_interface.glsl). Must match sg::shadows::GpuLight
 // (systems/shadows/gpu_light.h); tests/shadows/light_record_layout_test.cpp compares the two

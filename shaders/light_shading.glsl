@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every light's contribution at a surface point (docs/ALGORITHMS.md section 2), each with
 // its own shadow algorithm (shadow_sampling.glsl). The ambient term is not part of the sum: add
 // it once per surface point, as blinn_light expects.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The sizes of tiled light culling, declared once for the shaders (light_tiles.glsl) and the C++
 // that allocates their buffers (systems/lighting/light_tiles_pass.h includes this file).
 #ifndef SG_LIGHT_TILE_LAYOUT_GLSL

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tiled light culling (light_tiles.comp) and what the tiled lighting reads from it. Also compiled
 // as C++ (tests/support/light_tiles_reference.cpp, Light standing for sg::shadows::GpuLight), so
 // the CPU reference culls with the very same tests: keep to what both languages read alike.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Light culling (light_tiles.comp on GPUs, light_tiles_serial.comp on CPU drivers): per screen
 // tile of LIGHT_TILE_SIZE pixels, it bounds the tile's visible surfaces (nearest to farthest
 // depth, background excluded) by a sphere, lists every light that reaches it in light-index

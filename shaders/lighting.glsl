@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The lighting model of docs/ALGORITHMS.md section 2: extended Blinn with shadow density and
 // shadow color. `shade` is the light's shadow factor (1 = fully shadowed).
 #ifndef SG_LIGHTING_GLSL

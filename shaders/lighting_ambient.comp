@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // The start of tiled deferred lighting's lit sum, every pixel: the ambient term kA * IA times the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Ranked shadow filtering's floor, every pixel, before the light groups' passes: the shadow

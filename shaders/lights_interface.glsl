@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The lighting pass's light resources, beside the instance buffer of scene_interface.glsl. shadow_sampling.glsl says which sampler each binding expects.
 #ifndef SG_LIGHTS_INTERFACE_GLSL
 #define SG_LIGHTS_INTERFACE_GLSL

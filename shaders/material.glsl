@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The surface a fragment of an instance shows: base color from the material's factor and
 // texture, specular strength and shininess (scene_interface.glsl's Instance). Shared by the
 // forward and G-buffer passes, so both light the same surface. Fragment shaders after

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The materials' base color textures and what a pipeline's materials need, shared by the
 // camera passes (material.glsl) and the shadow passes' cut-outs (shadow_cut_out.glsl).
 #ifndef SG_MATERIAL_TEXTURES_GLSL

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Forward lighting: ambient plus every light of the frame at every pixel, each with its own

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scene's instances (systems/gpu/scene_gpu_types.h, GpuInstance on the C++ side), for every
 // shader that places meshes in the world.
 #ifndef SG_SCENE_INSTANCES_GLSL

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Data the scene pass reads; must match systems/gpu/scene_gpu_types.h (the C++ side).
 #ifndef SG_SCENE_INTERFACE_GLSL
 #define SG_SCENE_INTERFACE_GLSL

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the shadow batch's compute passes share (shadow_cull.comp, shadow_draws.comp,
 // shadow_scatter.comp, shadow_raster.comp): their push constants, the casters, and the per-draw
 // counts. Pairs come in two lists: list 0 (`total`), and list 1 (`moving_total`), the moving

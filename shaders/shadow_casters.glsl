@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The casters a shadow view draws (systems/shadow_maps/shadow_caster_lists.h): instance k of a view's draw
 // is instance view_instances[k] of the Instances buffer.
 #ifndef SG_SHADOW_CASTERS_GLSL

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // 2D shadow maps of casters with a cut-out (shadow_cut_out.glsl): the depth the raster gives,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Shadow casters with a cut-out (systems/gpu/gpu_scene.h's draw_masked and draw_blended classes)
 // leave no depth where their surface is not. A mask cuts at its cutoff (glTF's alphaCutoff), as
 // the camera passes do. A transparent surface (a negative cutoff in its instance's material)

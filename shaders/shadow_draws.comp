@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Turns the culled pairs' counts into the frame's indirect draws and dispatches: draw k * groups + g draws

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // What the lit frame's shadows were, light by light, for measuring them (tools/reference's

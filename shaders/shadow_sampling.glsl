@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The five per-light shadow algorithms of docs/ALGORITHMS.md section 4, on 2D maps (spot,
 // directional and cylinder lights: a square tile of one shadow_atlas layer) and on point
 // lights' cube maps (six tiles of one layer, one per face). Entry point: light_shadow_as(). Every function returns the shadow factor

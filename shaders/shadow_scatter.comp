@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Moves each stored (caster, view) pair into its draw's instance range (shadow_draws.comp's

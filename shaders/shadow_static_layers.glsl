@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Moves views' depths between the compute raster's squares (ShadowView::raster.xy) and the
 // static layers, which hold every map's tile as the atlas does (raster.zw): with SAVE
 // (shadow_static_save.comp) the squares of views drawn with their still casters go into their

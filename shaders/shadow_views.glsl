@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The GPU-driven shadow views (systems/shadow_maps/shadow_view_batch.h): every shadow view re-rendered this
 // frame (a 2D map or one cube face, each a tile of the shadow atlas) is a ShadowView record;
 // shadow_cull.comp tests every caster against every view and keeps (caster, view) pairs,

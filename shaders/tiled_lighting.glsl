@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tiled deferred lighting of one light group (light_groups.glsl): what tiled_lighting.comp reads
 // and how it shades a pixel. The group is a specialization constant, so a pipeline contains that
 // group's shadow code and no other: a pixel pays for the lights of its tile and for the algorithm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The push constants of tiled deferred lighting's passes (systems/lighting/tiled_lighting_pass.cpp,
 // LightingConstants), shared by their compute and raster shapes.
 #ifndef SG_TILED_LIGHTING_FRAME_GLSL

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // The picture: the lit sum, exposed and tone mapped (tone_map.glsl), into the sRGB frame.

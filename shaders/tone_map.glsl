@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Exposure and tone mapping of the lit sum (docs/ALGORITHMS.md section 5) into displayable
 // [0, 1]. Also compiled as C++ (systems/tone_map.cpp) for tests: keep to what both languages
 // read alike.

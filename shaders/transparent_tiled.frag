@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Transparent surfaces lit from tile lists (systems/lighting/transparent_pass.h): ambient plus the lights

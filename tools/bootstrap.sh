@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # From a fresh clone to a picture or a green test suite:
 #   bash tools/bootstrap.sh sandbox [sandbox options]   install, build, run the default scene
 #   bash tools/bootstrap.sh test [--sanitize]           install, build, run every test

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Checks that every C++ file follows .clang-format; with --fix, rewrites them instead.
 # Exit 0 when clean (or fixed), 1 when a file differs.
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Installs the Debian 12 packages Shadowgraph needs to build, run and test. Idempotent:
 # installs only what is missing, and runs `apt-get update` only when something is.
 set -euo pipefail

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Line plots through gnuplot for the measuring scripts (tools/sweep/sweep.py,
 tools/reference/quality_curve.py): each series a list of (x, y) points, written as a data file
 beside the PNG. gnuplot is optional (apt-get install gnuplot-nox); without it nothing is drawn

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Algorithms over pieces of a range on a ThreadPool, for per-frame work over thousands of lights
 // or views that one thread would take too long over: an order-keeping filter.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ecs/jobs/thread_pool.h"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // Transient memory planning: transients whose lifetimes do not overlap share memory.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // Barrier planning: walks the passes in execution order with the state of every subresource

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/compile.h"
 
 #include "rendergraph/core/aliasing.h"

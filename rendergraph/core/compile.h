@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // compile(): a declared graph in, an executable plan (or every declaration error) out.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // The result of compile(): plain data an executor walks front to back. Indices into `passes` are

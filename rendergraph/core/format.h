@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // The image formats the graph can describe. Each enumerator has the value of the VkFormat named

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/graph_error.h"
 
 namespace sg::rg {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // A graph's shape: everything compile() reads from it, flattened into words. Graphs with equal

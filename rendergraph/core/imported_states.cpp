@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/imported_states.h"
 
 namespace sg::rg {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Carries imported resources' states from one frame to the next, by resource name.
 //

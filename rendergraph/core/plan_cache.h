@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // Reuse of compiled plans across frames whose graphs have the same shape.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/render_graph.h"
 
 namespace sg::rg {

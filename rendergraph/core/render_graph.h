@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // Building a frame graph: import the resources that outlive the frame, then add passes. Each pass

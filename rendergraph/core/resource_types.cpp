@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/resource_types.h"
 
 namespace sg::rg {

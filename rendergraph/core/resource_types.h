@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // Descriptions of the resources a graph uses, and the handles passes name them by.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // Interval maps that keep one value per span of a key range, splitting spans where an update

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/sync_state.h"
 
 namespace sg::rg {

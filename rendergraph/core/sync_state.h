@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // The hazard-tracking rules: what is known about one subresource between passes, and the

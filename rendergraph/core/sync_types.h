@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // The synchronization vocabulary of the compiled plan: pipeline stages, memory accesses and image

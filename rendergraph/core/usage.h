@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // What a pass does with a resource. The direction (read or write) comes from the PassBuilder call,

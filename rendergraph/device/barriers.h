@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Single synchronization2 barriers. The render graph computes
 // and batches the frame's barriers itself; this is for the few transitions outside it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/device/context.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a pass binds, declared once. A PipelineLayout is one descriptor set layout and at most
 // one push-constant range, kept with the bindings it was made from, so that writing a set names

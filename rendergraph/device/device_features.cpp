@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/device/device_features.h"
 
 namespace sg::vk {

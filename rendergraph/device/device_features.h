@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The device features the engine needs, as one table: adding a requirement is one line, and
 // a device that lacks one is rejected with the feature's name in the message.

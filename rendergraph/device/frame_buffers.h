@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One host-visible buffer per frame in flight, for data the CPU rewrites every frame (instance
 // transforms, indirect draws, light records). The CPU writes slot s while the GPU may still read

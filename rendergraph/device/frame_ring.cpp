@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/device/frame_ring.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Per-frame command recording with a fixed number of frames in flight: the CPU records
 // frame N+1 while the GPU still runs frame N, and waits only when it would overwrite the

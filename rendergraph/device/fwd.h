@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The Vulkan layer's types, declared, for headers that only name them (EnTT's fwd.hpp): a pass's
 // header says `const vk::Buffer&` without including the device layer.

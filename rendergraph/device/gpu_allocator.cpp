@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/device/gpu_allocator.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Device memory suballocator: resources take ranges of large VkDeviceMemory blocks instead of
 // one vkAllocateMemory each (drivers cap the number of allocations, e.g. 4096, and each one is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/device/image_views.h"
 
 #include "rendergraph/device/vulkan_error.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Views of parts of one image, created on first use and kept until the image goes away. Passes
 // ask for views of exactly the subresources they declared (one cube face, one atlas layer, a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/device/pipeline.h"
 
 #include "rendergraph/device/context.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Graphics pipelines for dynamic rendering (no render pass objects), built from a plain
 // description. Viewport and scissor are dynamic so pipelines survive window resizes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Offset allocator for one memory block: first fit over a free list sorted by offset, with
 // neighbours coalesced on free. Pure bookkeeping (no Vulkan), so it is unit-tested on the CPU.

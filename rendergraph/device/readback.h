@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Copies a color image back to the CPU (screenshots, tests).
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Buffers and images that own their Vulkan handle and their slice of suballocated memory.
 // Move-only; destroyed with their owner, which must not outlive the VulkanContext.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The window's swapchain. It is recreated, never patched, when the window's framebuffer size
 // changes or the presentation engine reports it out of date; a minimized window (zero extent)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Move-only owner of a device-level Vulkan object, destroyed with the matching vkDestroy*.
 //   UniqueHandle<VkPipeline, vkDestroyPipeline> pipeline{device, handle};

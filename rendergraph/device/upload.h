@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Staged uploads into device-local buffers: every copy added to a batch goes through one
 // host-visible staging buffer and one submission, so loading a scene costs one round trip.

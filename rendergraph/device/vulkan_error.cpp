@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {

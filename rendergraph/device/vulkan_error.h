@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Errors from the Vulkan layer are exceptions carrying a message a user can act on
 // (what failed, and why); the sandbox prints them and exits non-zero.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/vulkan/graph_executor.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/vulkan/graph_imports.h"
 
 #include "rendergraph/device/resources.h"

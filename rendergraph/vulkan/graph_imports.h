@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The resources a frame's graph imports, declared and bound in one call:
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a pass's execute function records with. An execute function that takes it is handed
 // it directly (rg::RenderGraph::add_pass unwraps the rg::PassContext):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/vulkan/pass_timer.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // GPU timestamps around every pass of a frame, one query pool per frame in flight. A slot's
 // results are read when the slot is used again, after the frame ring has waited for it, so

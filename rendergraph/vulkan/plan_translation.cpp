@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/vulkan/plan_translation.h"
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The compiled plan's vocabulary in Vulkan terms. The core's enums carry Vulkan's numeric values
 // (rendergraph/core/sync_types.h), so each conversion is a cast; plan_translation.cpp

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/vulkan/transient_resources.h"
 
 #include <map>

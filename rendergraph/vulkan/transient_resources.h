@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The physical images and buffers behind one compiled plan's transients.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // The camera's depth buffer as grey: white at the near plane, black at `shown_distance`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the depth overlay's fragment shader reads, declared once for it and for the C++ that
 // binds it (sandbox/depth_overlay_pass.cpp includes this file): a `const int` and a struct of
 // floats read the same in GLSL and C++.

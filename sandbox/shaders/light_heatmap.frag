@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 // How many lights each screen tile shades (light culling's lists, light_tiles.comp), as a color
 // over the picture: none transparent, then blue through green and yellow to red at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 // Dear ImGui's pixels: vertex color times the font atlas (white where a shape has no glyph).
 layout(set = 0, binding = 0) uniform sampler2D font_atlas;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 // Dear ImGui's vertices (ImDrawVert: position in pixels, uv into the font atlas, color) into
 // clip space: clip = position * scale + translate (sandbox/ui_pass.cpp).

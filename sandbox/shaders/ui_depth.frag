@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 // A shadow map shown in a panel: the atlas layer's depth as grey, near black, far white.
 // Perspective 2D maps store projected depth, which is made linear again (light_formulas.glsl);

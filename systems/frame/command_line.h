@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Settings tables (setting.h) on a CLI11 command line: each setting an option checked against its
 // type and range, with its help and, as the default --help shows, the value it holds when added.

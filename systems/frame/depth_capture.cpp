@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/frame/depth_capture.h"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Keeps a copy of the camera's depth buffer after the frame, for tools that need the visible
 // surface points on the CPU (tools/reference reconstructs world positions from it). The renderer's

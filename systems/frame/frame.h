@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The engine's frame. record() runs the frame's five phases, in this order and nowhere else:
 //

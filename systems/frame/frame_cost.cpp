@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/frame/frame_cost.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The GPU cost of the frame under given settings, split into shadow-map passes and the
 // rest: what the algorithm-costs and reference tools compare between shadow algorithms.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What the engine's frame renders and how: the picture's size, the Vulkan device, the scene and
 // the view, and the renderer's settings. Each is declared once, in frame_settings_table(), with

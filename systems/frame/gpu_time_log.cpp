@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/frame/gpu_time_log.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Collects the executor's per-pass GPU timings over a run, for the summary and --stats.
 #include <cstdint>

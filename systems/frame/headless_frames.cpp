@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/frame/headless_frames.h"
 
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The offscreen frame loop shared by the headless sandbox and the tools that measure the frame.
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/frame/png.h"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/frame/scene_view.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scene a frame renders and the view it starts from, chosen by the frame settings.
 #include <string>

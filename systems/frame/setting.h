@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A setting declared once: its name, help, type, range and the field it sets. A table of them
 // (frame_settings.h's for the engine's frame, the sandbox's for its window and outputs) is the

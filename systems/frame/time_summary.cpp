@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/frame/time_summary.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Median, min and max of per-frame samples: how runs and tools report times and counts.
 #include <optional>

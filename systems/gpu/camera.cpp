@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/gpu/camera.h"
 
 #include <glm/gtc/matrix_transform.hpp>

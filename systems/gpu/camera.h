@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Camera matrices in the engine's conventions: right-handed world with +Y up, Vulkan clip
 // space (y pointing down in NDC, depth in [0, 1], reversed). The camera itself is scene data: its

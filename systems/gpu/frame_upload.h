@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Per-frame uploads of large record arrays.
 #include <cstddef>

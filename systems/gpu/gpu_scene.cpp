@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/gpu/gpu_scene.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scene's drawables on the GPU: the mesh library in one vertex and one index buffer
 // (uploaded once), and per frame the instances of every drawable entity plus one indirect draw

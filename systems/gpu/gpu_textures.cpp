@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/gpu/gpu_textures.h"
 
 #include <algorithm>

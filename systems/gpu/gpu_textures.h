@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scene's decoded images on the GPU, as the layers of one sRGB 2D array that the lighting
 // pass samples with the material's texture index as the layer (shaders/scene.frag). One array

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // C++ mirrors of shaders/scene_interface.glsl. std430/push-constant layout: vec4-aligned
 // members only, so the C++ layout matches without padding rules to remember.

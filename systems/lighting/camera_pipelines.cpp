@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/camera_pipelines.h"
 
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What the passes that draw the scene from the camera share in setting up their pipelines: the
 // lit passes' bindings, the camera pipeline, and a pass's pipelines, one per draw class

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/depth_prepass.h"
 
 #include "rendergraph/device/context.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The depth prepass of the forward paths: every drawable's depth into a new D32 image, so that
 // the shading pass after it, testing for the same depth without writing it, shades each pixel

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Forward lighting: every drawable of the GpuScene shaded by ambient plus every light of the
 // frame at every pixel, each light with its own shadow algorithm and parameters

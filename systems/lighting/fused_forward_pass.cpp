@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/fused_forward_pass.h"
 
 #include <bit>

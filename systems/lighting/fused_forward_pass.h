@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Forward lighting and tone mapping in one pass (shaders/scene_fused.frag), for frames of a few
 // lights: after a depth prepass (DepthPrepass), every drawable shaded once with every light of

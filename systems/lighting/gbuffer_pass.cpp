@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/gbuffer_pass.h"
 
 #include "rendergraph/device/context.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The G-buffer of tiled deferred lighting (shaders/gbuffer.glsl): every drawable of the GpuScene
 // rasterized once into what the lighting needs per pixel, and optionally the start of the lit

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/light_list_pool.h"
 
 #include <algorithm>

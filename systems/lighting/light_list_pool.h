@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How many entries the pool of light culling's lists holds (shaders/light_tiles_interface.glsl):
 // every tile takes as many entries as lights reach it, so the pool is sized for what frames ask

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/light_resources.h"
 
 #include "rendergraph/device/context.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What every pass that shades lights binds (shaders/lights_interface.glsl): the frame's light
 // records and the shadow atlas, with the samplers shadow_sampling.glsl expects. Nearest reads,

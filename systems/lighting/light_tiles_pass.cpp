@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/light_tiles_pass.h"
 
 #include <array>

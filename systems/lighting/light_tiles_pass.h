@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Light culling for tiled lighting (shaders/light_tiles.comp): per screen tile of
 // LIGHT_TILE_SIZE pixels, the lights that reach the tile's visible surfaces, grouped by light

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/shadow_probe.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Each light's shadow at each pixel of a lit frame, as the frame drew it: for tools that measure
 // the whole frame against a reference (tools/reference's --whole-frame). Handed to the renderer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/tiled_lighting_pass.h"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Tiled deferred lighting: the lit sum starts from the ambient term and the background (a
 // compute pass, shaders/lighting_ambient.comp, or the G-buffer pass itself: LitSumStart), then

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/tone_map_pass.h"
 
 #include "rendergraph/device/context.h"

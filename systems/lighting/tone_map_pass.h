@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Exposure and tone mapping (shaders/tone_map.glsl) as a render-graph pass: the lit sum of
 // either lighting path into the displayable frame. The curve is the identity below its knee, so

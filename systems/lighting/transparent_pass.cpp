@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/transparent_pass.h"
 
 #include <optional>

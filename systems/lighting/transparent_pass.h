@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Transparent surfaces (glTF alphaMode BLEND, the draw classes with draw_blended), after the
 // opaque lighting and before tone mapping, on every lighting path. Where the opaque surfaces

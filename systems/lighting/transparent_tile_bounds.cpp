@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/lighting/transparent_tile_bounds.h"
 
 #include <algorithm>

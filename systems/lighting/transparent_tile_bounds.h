@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where transparent surfaces lie on screen, per light tile, for light culling: each transparent
 // instance's world bounds, projected, widen the depth range of the tiles they cover, so that a

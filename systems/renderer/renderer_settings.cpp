@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/renderer/renderer_settings.h"
 
 namespace sg {

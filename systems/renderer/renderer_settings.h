@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How the renderer draws a frame: plain data, set from the command line through the settings table
 // (systems/frame/frame_settings.h) or by code.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/renderer/scene_renderer.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Renders an ECS scene through the render graph: the shadow maps due this frame, the lighting
 // (lighting_path.h), then exposure and tone mapping into the frame. It takes three of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/aabb.h"
 
 namespace sg::scene {

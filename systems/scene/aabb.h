@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Axis-aligned bounding boxes for meshes and scenes. An empty box has min > max, so growing it
 // by the first point gives that point.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The builders behind build_scene (builtin_scenes.h), one file each.
 #include "systems/scene/scene.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/builtin_scenes.h"
 
 #include <algorithm>

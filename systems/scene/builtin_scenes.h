@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Scenes that need no files, selected by name, and the one entry point for the sandbox's
 // --scene default|stress|PATH.

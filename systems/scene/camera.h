@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The camera component and the helpers that place one: from a "--camera ex,ey,ez,tx,ty,tz"
 // string, or framing the scene's bounds when the scene brings no camera.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <glm/gtc/constants.hpp>
 
 #include "systems/scene/builtin_scene_builders.h"

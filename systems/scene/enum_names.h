@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One table of names per enum, declared beside the enum; to_string and parse_enum read it, so the
 // command line, the panels, the sidecar, scripts and --stats spell every value the same way:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/gltf_accessor.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Reads a validated accessor (gltf_validate.h) into plain numbers: any component type, any
 // byteStride (interleaved or packed), normalized integers mapped to [0, 1] or [-1, 1] as the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // glTF animations -> NodeAnimation components (node_animation.h): every channel that targets a
 // node's translation, rotation or scale, with its sampler's keys, on the node's entity.

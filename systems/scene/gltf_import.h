@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // glTF 2.0 import (.gltf with external or data-URI buffers, and .glb) into a Scene.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Typed reads from the raw glTF JSON, for the checks that must run before (or instead of)
 // tinygltf. A value of the wrong type is an error naming the object and key.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/gltf_lights.h"
 
 #include <algorithm>

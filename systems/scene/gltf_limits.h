@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Ceilings that keep a hostile or broken file from costing unbounded memory or time. Every
 // allocation the importer makes is bounded by data that actually exists in the file (checked

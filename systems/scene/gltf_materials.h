@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Step 6 of import: images into the TextureLibrary (texture i of the library is glTF image i)
 // and glTF materials into Material values. Only the base color (factor and texture) maps to

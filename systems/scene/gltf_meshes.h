@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Step 5 of import: glTF meshes into the MeshLibrary, one library mesh per triangle primitive.
 // Checks what needs the data: every index below the vertex count, index (or, without

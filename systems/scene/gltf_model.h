@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Step 3 of import: tinygltf parses the preflighted source into a Model. Images are decoded by
 // our own callback, which refuses oversized images before decoding and always yields RGBA8.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Step 2 of import, on the raw JSON before tinygltf reads it: every size tinygltf would
 // allocate or read from is compared with the data that exists, and required extensions are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Per-light ShadowSettings from a glTF light's `extras` object (keys in gltf_lights.h).
 #include <string>

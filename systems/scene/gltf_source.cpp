@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/gltf_source.h"
 
 #include <cstring>

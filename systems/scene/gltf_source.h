@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Step 1 of import: the file's bytes, its JSON document and (for .glb) its BIN chunk, with the
 // container's framing checked. Nothing here trusts a size the file declares before comparing it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Step 4 of import: the structural rules tinygltf does not enforce, checked on the parsed Model
 // before any accessor is read. After it passes, every index the importer follows points at an

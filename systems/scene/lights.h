@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Light components (docs/ALGORITHMS.md section 1). A light entity also carries
 // LocalTransform/WorldTransform and a ShadowSettings; its position is the world matrix's

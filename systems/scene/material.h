@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Surface parameters of the extended Blinn model (docs/ALGORITHMS.md section 2). Each mesh
 // instance entity carries its own copy, so the renderer reads it beside the instance.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One drawable: a mesh of the scene's MeshLibrary placed by the entity's WorldTransform. The
 // entity also carries a Material. Imported glTF primitives become one such entity each, a child

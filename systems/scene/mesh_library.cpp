@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/mesh_library.h"
 
 #include <utility>

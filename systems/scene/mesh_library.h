@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // CPU geometry shared by every instance of a mesh. All meshes live in two flat arrays, so the
 // renderer uploads one vertex buffer and one index buffer and draws mesh m with

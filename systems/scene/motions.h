@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Simple procedural motions for entities (the stress scene's moving lights and crates, the
 // sandbox's "orbit" and "bob" toggles): components that say how an entity moves, and per-frame

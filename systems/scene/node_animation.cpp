@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/node_animation.h"
 
 #include <algorithm>

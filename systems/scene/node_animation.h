@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Keyframed node animation as glTF defines it (animations' channels and samplers): a node's
 // translation, rotation or scale sampled at a time, LINEAR (rotations by slerp), STEP or

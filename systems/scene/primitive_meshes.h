@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Unit primitives the built-in scenes instance: each is added to a MeshLibrary once and
 // placed by LocalTransform scale, so a wall, a crate and a table top share one box mesh.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/scene.h"
 
 #include <cstdio>

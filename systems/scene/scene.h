@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A loaded or built scene: the ECS world with its entities, plus the geometry and images the
 // entities refer to by index, and what the loader had to say.

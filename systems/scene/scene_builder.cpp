@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/scene_builder.h"
 
 #include "systems/scene/mesh_instance.h"

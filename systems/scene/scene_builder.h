@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small helpers for code that builds scenes entity by entity (the built-in scenes, tests).
 #include <string>

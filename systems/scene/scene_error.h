@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The one exception the scene library throws for input it refuses (a malformed glTF file, an
 // unknown built-in scene name, a bad --camera string). The message always reads

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/scene_queries.h"
 
 #include "ecs/query.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Facts about a scene that the renderer, the sandbox's --stats and the tests ask for. They
 // read WorldTransform, so they assume transforms are up to date (they are when load_gltf or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Per-light shadow parameters (docs/ALGORITHMS.md section 4). Every light entity carries
 // one; imported lights take them from the glTF light's `extras` (gltf_lights.h lists the keys).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Decoded images for materials: always 8-bit RGBA, rows top to bottom, as the renderer uploads
 // them. Color data is sRGB-encoded as stored in the file (upload as an sRGB format).

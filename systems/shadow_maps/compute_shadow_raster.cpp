@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadow_maps/compute_shadow_raster.h"
 
 #include <cstdio>

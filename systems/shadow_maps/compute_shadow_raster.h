@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The batch's pairs rasterized in compute (shadows::ShadowRaster::compute), after the cull
 // (shadow_cull_pass.h):

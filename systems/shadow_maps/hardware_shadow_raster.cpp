@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadow_maps/hardware_shadow_raster.h"
 
 #include <algorithm>

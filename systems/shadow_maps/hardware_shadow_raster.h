@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The batch's pairs rasterized with the hardware (shadows::ShadowRaster::hardware), after the
 // cull (shadow_cull_pass.h):

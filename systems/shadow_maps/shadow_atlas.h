@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The persistent shadow storage every light shares: one D32 2D-array image whose layers are the
 // atlas pages (shadows/shadow_atlas_shape.h). A 2D shadow is one square tile of a page, a point

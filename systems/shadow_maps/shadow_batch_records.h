@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The CPU side of a ShadowViewBatch frame: one record per shadow view due (a 2D map, or one face
 // of a point light's cube: its matrix, its atlas tile and frustum) and one per shadow caster

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadow_maps/shadow_caster_lists.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which casters each shadow view draws. A light can only shadow what lies within its reach, so
 // every view keeps the casters whose world bounds meet the light's sphere of range (spot and

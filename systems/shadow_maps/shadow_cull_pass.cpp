@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadow_maps/shadow_cull_pass.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The batch's culling (ShadowViewBatch), before either raster:
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A timed frame's shadow work, read from its passes' GPU timestamps: every pass named "shadow
 // ..." is shadow work (the batch's passes, or the per-light path's "shadow map ..." passes), and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The per-light shadow passes, the baseline ShadowViewBatch is measured against
 // (--shadow-views per-light): one pass per 2D shadow (spot, directional, cylinder light) due this

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadow_maps/shadow_static_layers.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The compute raster's static layers (ShadowAtlas::static_layers, compute_shadow_raster.h): a
 // view's depths copied between its square of the raster's depth buffer and its layer, a tile

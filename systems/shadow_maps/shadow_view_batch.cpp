@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadow_maps/shadow_view_batch.h"
 
 #include <stdexcept>

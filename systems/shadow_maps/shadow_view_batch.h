@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Every shadow view due this frame drawn by a handful of passes, driven by the GPU: shadow views
 // are data, not passes. The CPU writes one record per view (a 2D map, or one face of a point

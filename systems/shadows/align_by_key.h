@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // State kept per light across frames, matched to a frame's lights by their keys.
 #include <algorithm>

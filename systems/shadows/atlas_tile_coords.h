@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where an atlas tile is, in the coordinates each side uses: uv of its layer for the receivers
 // (the light record), and the layer's clip space for the shadow passes, which draw a view into

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // When a budget's effect on the frames (lights demoted, views deferred, ...) is worth a log line:
 // when it differs from what the last line said, and at most once every `interval` frames, so that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadows/caster_changes.h"
 
 #include <utility>

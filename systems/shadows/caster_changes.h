@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which shadow casters changed since the last frame, as the boxes a cached shadow map could have
 // changed in. ShadowCache (shadow_cache.h) re-renders exactly the lights whose reach meets one of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadows/depth_placement.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the compute shadow raster puts each due view's depths: a tile-sized square of one depth
 // buffer per view, and the rectangles copied from that buffer into the atlas (ComputeShadowRaster).

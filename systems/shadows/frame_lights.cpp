@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadows/frame_lights.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The lights of one frame, gathered from the ECS world: the GPU records the lighting pass reads
 // (one array, one storage buffer) and the shadow views the shadow passes render. Plain data and

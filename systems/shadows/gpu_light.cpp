@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadows/gpu_light.h"
 
 #include <cmath>

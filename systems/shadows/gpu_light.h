@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The GPU record of one light: all lights of a frame are one array of GpuLight in one storage
 // buffer, read by the lighting shaders as `Light lights[]` (shaders/light_record.glsl, whose

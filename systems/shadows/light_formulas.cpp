@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadows/light_formulas.h"
 
 // The GLSL below reads as C++ once its types and built-ins name GLM's.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The shaders' lighting and shadow formulas on the CPU: these are the functions of
 // shaders/light_formulas.glsl, compiled as C++ from that very file (light_formulas.cpp), so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Lights grouped by the shadow code they run: none, a 2D map or a cube map, and for shadowed
 // lights their algorithm. The numbering is shaders/light_groups.glsl's, compiled here as C++, so

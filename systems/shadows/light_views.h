@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The cameras that render shadow maps, in the engine's conventions (systems/gpu/camera.h):
 // right-handed world, Vulkan clip space with depth 0 at the near plane and 1 at the far plane,

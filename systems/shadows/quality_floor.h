@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How small a shadow map can get before its algorithm's shadow goes wrong: the smallest size at
 // which each algorithm kept every measured light within 1% misclassified pixels against the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A stable LSD radix sort by an unsigned integer key, a byte a pass: what the shadow code sorts
 // each frame (thousands of views, up to 100,000 lights) by packed keys, several times faster at

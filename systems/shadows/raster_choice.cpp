@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadows/raster_choice.h"
 
 namespace sg::shadows {

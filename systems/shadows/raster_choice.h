@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How --shadow-raster auto picks each GPU frame's raster: from the GPU time of the shadow passes
 // that recent frames measured with each raster, per view drawn; from raster_for_views's model

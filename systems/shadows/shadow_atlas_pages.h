@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Square power-of-two tiles in square pages (the layers of one depth-array image): a quadtree
 // ("buddy") allocator per page, where a free square splits into four quarters and four free

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where every shadow map lives, frame after frame, under a memory budget.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The shape of the shadow atlas (systems/shadow_maps/shadow_atlas.h): square pages of page_size texels, the
 // layers of one D32 2D-array image, as many as the memory budget and the device allow, and, where

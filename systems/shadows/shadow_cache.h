@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The shadow-map caching policy: which lights re-render their maps this frame. A light's map is
 // kept from frame to frame and re-rendered only when it may be wrong, at most `view_budget` views

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadows/shadow_schedule.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which light gets which shadow, and which shadows render this frame: the atlas planner's tiles
 // (resolution from each light's importance on screen, within the memory budget) and the cache's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The frame-time budget for shadows (--shadow-budget-ms): from the GPU time the shadow passes of
 // recent frames measured, how far the schedule lowers the lights' resolutions and how many views

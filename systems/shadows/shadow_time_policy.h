@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How the time budget's lowered tiers (ShadowTimeBudget) fall on the lights.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/shadows/spheres_meeting_boxes.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which spheres meet any box of a set, without testing every sphere against every box: the
 // boxes are binned into a uniform grid over the x-z plane and each sphere is tested only against

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The source tree's include graph has no cycles: between modules (a header and its source file
 // count as one) nor between folders, so that every arrow in the architecture runs one way.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The window's fly camera, without a window: what each input does to the pose.
 #include <cmath>
 

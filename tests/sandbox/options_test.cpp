@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The sandbox's command line: defaults, each option, and each refusal (exit code 2).
 #include <gtest/gtest.h>
 

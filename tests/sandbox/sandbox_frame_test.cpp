@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The sandbox's additions to the frame on lavapipe with validation and synchronization validation
 // on (GpuTest fails on any report): the panels, the light heat map and the depth overlay (the
 // render graph's extension example).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // --script's commands: what parses into what, and errors that name the file and line.
 #include <gtest/gtest.h>
 

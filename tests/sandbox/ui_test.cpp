@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The panels' state without drawing them: what F frames.
 #include <gtest/gtest.h>
 

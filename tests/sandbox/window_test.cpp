@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Window-system tests. They need an X or Wayland display (CI runs the suite under Xvfb) and
 // are skipped without one.
 #include <cstdlib>

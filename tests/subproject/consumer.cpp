@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The smallest user of the engine as a subproject: a world of a thousand entities, queried.
 #include <cstdio>
 

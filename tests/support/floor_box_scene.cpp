@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tests/support/floor_box_scene.h"
 
 #include <span>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The shadow tests' scene: a grey floor (its top at y = 0, 20 x 20 m), a box above it and one
 // spot or point light, seen from above at an angle; and its exact CPU reference

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What tests of whole frames compare: the passes a plan ran, and how far two pictures are apart.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tests/support/gltf_writer.h"
 
 #include <atomic>

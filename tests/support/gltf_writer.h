@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Builds small glTF files for the tests: a JSON document plus one binary blob, written as a
 // .gltf with a data URI or an external .bin, or as a .glb.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Test helpers: every GPU test runs on a context with the Khronos validation layer and
 // synchronization validation on, and fails if the layer reported any error.

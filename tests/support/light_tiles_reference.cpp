@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tests/support/light_tiles_reference.h"
 
 #include <algorithm>

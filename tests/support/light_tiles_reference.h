@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A CPU reference for tiled light culling (shaders/light_tiles.comp): the same tile bounds and
 // light tests, compiled as C++ from shaders/light_tiles.glsl, run brute force over every tile

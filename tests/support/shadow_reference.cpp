@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tests/support/shadow_reference.h"
 
 #include <algorithm>

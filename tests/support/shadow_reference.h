@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // CPU ground truth for the shadow tests: which floor points a box hides from a point or spot
 // light, and which pixels of a camera image show lit or shadowed floor, by exact ray casting

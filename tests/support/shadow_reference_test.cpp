@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The CPU shadow reference on cases solved by hand.
 #include <vector>
 

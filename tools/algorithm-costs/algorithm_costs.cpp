@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // shadowgraph-algorithm-costs: the GPU cost of each shadow algorithm, per shadowed light, on a
 // scene (the comparison of the five algorithms).
 //

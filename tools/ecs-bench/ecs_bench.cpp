@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // ECS against plain std::vector structure-of-arrays doing the same work, over a million
 // entities. Each case comes in pairs (…/ecs and …/raw) so the output reads as a ratio.
 #include <benchmark/benchmark.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cost of building and compiling a frame graph shaped like Shadowgraph's frames: one G-buffer
 // pass, many shadow passes (spot lights into layers of a 2D atlas, point lights into faces of a
 // cube-map array; every tenth light renders moments into a transient and blurs them into the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // shadowgraph-graph: renders a few headless frames of a scene and writes the frame's
 // compiled render graph as Graphviz DOT and as JSON (with the last timed frame's per-pass GPU
 // milliseconds), plus a PNG of the DOT when Graphviz's `dot` is installed.

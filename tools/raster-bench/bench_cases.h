@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The raster bench's cases. Each measures one limit of depth-only rasterization and reports
 // one row per variant through Bench::emit, as soon as it is measured.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What every raster-bench case needs on the device layer: grid meshes, depth targets, a
 // depth-only pass and repetitions timed with GPU timestamps.

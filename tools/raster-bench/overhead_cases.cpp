@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cases 3 and 4: what a render pass and a draw cost in themselves, with as little raster work
 // as possible in them (one triangle of a few pixels each), so the command's own cost shows.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // shadowgraph-raster-bench: the device's depth-only raster limits, so that shadow passes' GPU
 // times can be stated as a fraction of what the hardware allows. Every case draws with a
 // depth-only pipeline (D32_SFLOAT, no fragment shader) and dynamic rendering, times several

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The raster bench's results: one row per case variant, printed as a Markdown table as they
 // come and written as CSV at the end.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cases 1, 2 and 5: how fast the rasterizer sets up triangles and tests depth, with the work
 // in as few commands as possible so that command costs do not count.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tools/reference/engine_shade.h"
 
 #include <algorithm>

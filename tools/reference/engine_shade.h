@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The engine's shadow of one light at a time, measured from the engine's own frame: the
 // shadow-only view (LightingView::shadows: white diffuse surfaces, no ambient, the shadow at full

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How far a whole frame's shadows are from ray-traced visibility, every light at once: the
 // (pixel, light) pairs the frame shaded (systems/lighting/shadow_probe.h), each with the

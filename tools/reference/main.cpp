@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // shadowgraph-reference: how far each shadow algorithm is from ray-traced visibility, light by
 // light, on any scene the sandbox opens (run_reference.h says how), or with --whole-frame the
 // frame as the engine draws it, every light on (whole_frame.h). Every frame setting applies

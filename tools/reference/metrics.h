@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How far an engine's shadow is from the ray-traced reference, per light. Images are row-major
 // `width` x `height` values; `measured` says which pixels count (a surface point the light

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the reference runs report their progress: a line at a time, or nowhere.
 #include <functional>

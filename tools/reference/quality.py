@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The five shadow algorithms' error beside their cost, and their error against the map size.
 
 Runs shadowgraph-reference on each scene twice: once with every light at its own settings and

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The frame's shadow error against the number of shadowed lights, beside its GPU time.
 
 For each light count, camera (overview: the whole hall; street: eye height among the lights)

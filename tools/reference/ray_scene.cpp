@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tools/reference/ray_scene.h"
 
 #include <cstdint>

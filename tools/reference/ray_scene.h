@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A set of world-space triangles that rays are cast against, with Intel Embree. Queries are
 // const and safe to run from many threads at once (Embree's rtcIntersect1 and rtcOccluded1 are).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tools/reference/reference_lights.h"
 
 #include "ecs/query.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scene's shadow-casting lights as the reference needs them: where rays to them go, and how
 // large the emitter is for the soft reference.

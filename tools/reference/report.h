@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // shadowgraph-reference's results as a Markdown table and as JSON.
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // shadowgraph-reference's run: the engine's shadows of a scene, light by light and
 // algorithm by algorithm, against ray-traced visibility from the same surface points.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The scene's triangles in world space, as the renderer draws them: every MeshInstance's mesh
 // from the MeshLibrary under its entity's WorldTransform.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tools/reference/shade_images.h"
 
 #include <algorithm>

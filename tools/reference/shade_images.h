@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Pictures of the reference and the render, for a person to see where they differ.
 #include <cstdint>

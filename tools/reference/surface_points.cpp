@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tools/reference/surface_points.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The surface points a frame shows: each pixel's depth taken back to world space with the
 // renderer's own camera matrices (systems/gpu/camera.h), so that the reference tests visibility from

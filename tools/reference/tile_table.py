@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Shadow error by the tile each light got in the atlas, from shadowgraph-reference's JSON.
 
 Groups every measured run by light type and the resolution the atlas gave it (not the one asked

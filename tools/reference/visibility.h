@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Ray-traced visibility of one light from every surface point of a frame: the reference the
 // engine's shadows are measured against. 1 is fully lit, 0 fully shadowed; pixels without a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // shadowgraph-reference --whole-frame: the frame as the engine draws it, every light on, at the
 // tiers, caching and update caps of that frame, against ray-traced visibility.

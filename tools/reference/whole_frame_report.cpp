@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tools/reference/whole_frame_report.h"
 
 #include <nlohmann/json.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // shadowgraph-reference --whole-frame's results as a Markdown summary and as JSON.
 #include <cstdio>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Shadow work of the many-lights stress scenes on every shadow path, one binary, one run:
 # per-light passes (the old way, the baseline), batched views with the raster hardware, and
 # batched views rasterized in compute, with and without static layers. Prints one summary line per run (GPU frame, shadow work =

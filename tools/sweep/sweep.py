@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """GPU frame time against the number of lights, optimized and naive, in one run.
 
 For each light type (point, spot, mixed), light count and mode (optimized: the sandbox's

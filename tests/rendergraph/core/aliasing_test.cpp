@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/aliasing.h"
 
 #include <gtest/gtest.h>

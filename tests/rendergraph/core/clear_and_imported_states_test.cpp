@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Attachment clears as declarations, and carrying imported states from frame to frame.
 #include <gtest/gtest.h>
 

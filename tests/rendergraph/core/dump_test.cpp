@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/dump.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/pass_context.h"
 
 #include "rendergraph/core/render_graph.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/plan_cache.h"
 
 #include <gtest/gtest.h>

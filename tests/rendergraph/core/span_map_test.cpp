@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "rendergraph/core/span_map.h"
 
 #include <gtest/gtest.h>

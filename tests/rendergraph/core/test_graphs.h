@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 // Small vocabulary shared by the render graph tests: common states and plan lookups.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pass kit's descriptor helpers on lavapipe: writes are checked against the layout they
 // name, so a binding number or type mistake is an exception at the call, not a GPU fault.
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // FrameRing's early call: begin_frame(nearly_ready, lead) calls nearly_ready once per frame, and
 // during the wait for the GPU, not after it.
 #include <atomic>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Vulkan executor on lavapipe with validation and synchronization validation on: what the
 // compiled plan says is what the GPU does, and the barriers it records satisfy the layer.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The engine's frame on lavapipe with validation and synchronization validation on (GpuTest
 // fails on any report): the built-in scenes, every lighting and shadow-view path against the
 // others, and the passes the plan runs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Which scene the sandbox loads and which view it starts from.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // GpuScene's incremental gathering: after any sequence of moves, material edits, additions and
 // removals, what a long-lived GpuScene holds and uploads must equal what a fresh one gathers
 // from scratch, and what it says it re-placed must cover every move.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // How the light lists' pool is sized from what frames asked for (LightListPool), on the CPU.
 #include "systems/lighting/light_list_pool.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tiled light culling on lavapipe against a brute-force CPU assignment of the same lights to the
 // same tiles (tests/support/light_tiles_reference.h), with validation on.
 #include <algorithm>

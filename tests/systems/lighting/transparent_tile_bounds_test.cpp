@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Where transparent instances lie per light tile (systems/lighting/transparent_tile_bounds.h), on the CPU.
 #include "systems/lighting/transparent_tile_bounds.h"
 

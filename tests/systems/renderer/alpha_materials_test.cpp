@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // glTF's alphaMode and doubleSided on lavapipe, under validation: a masked card shows, and
 // casts, the shape of its texture's alpha, on every lighting path and every way of drawing
 // shadow views; a transparent pane casts a partial shadow, and never shuts in a light inside it;

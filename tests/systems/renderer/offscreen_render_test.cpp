@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Renders an ECS scene through the sandbox's frame graph offscreen and checks floor pixels
 // against the lighting formula of docs/ALGORITHMS.md section 2, evaluated here on the CPU from the
 // scene's parameters. Validation and synchronization validation are on (GpuTest).

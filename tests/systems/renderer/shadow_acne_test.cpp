@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Acne at every tile size, on lavapipe with validation: spot, point, cylinder and directional
 // lights over a floor with thin planks lying on it, each light's map pinned to one size from 16 to
 // 2,048 texels (cube faces to 1,024, a page's quarter) inside a shared atlas, for all five

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The five shadow algorithms on lavapipe against a CPU ray-cast reference (issue 6): a floor, a
 // box and one light (tests/support/floor_box_scene.h); every render goes through the sandbox's frame graph
 // with validation and synchronization validation on.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The shadows' time budget in the renderer, on lavapipe: off on a CPU device unless set, and,
 // set, learning from the shadow times handed to it. The times are given, not measured, so that
 // no result depends on how fast lavapipe runs; the renderer prepares frames without submitting

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Built-in scenes: content, parameters, determinism, animation.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // --camera parsing and framing the scene bounds.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One test per class of malformed input: the import must throw SceneError naming the file,
 // the object and the problem, and never crash (the suite also runs under ASan/UBSan).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Keyframed node animation: glTF's three interpolations, looping, and the system writing
 // LocalTransform through the ECS.
 #include <cmath>

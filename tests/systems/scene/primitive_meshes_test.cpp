@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The built-in primitives: closed, outward-facing, with the documented sizes.
 #include <gtest/gtest.h>
 

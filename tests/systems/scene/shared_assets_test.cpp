@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Real files made by others (../shared/assets), when present; skipped cleanly when absent.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Per-view caster culling: which instances a light's shadow view keeps, and the indirect
 // commands that draw them.
 #include <random>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The batched shadow views' two rasterizers, the raster hardware (shadow_batch.vert) and compute
 // (shadow_raster.comp), write the same depths into the same tiles, on lavapipe with validation.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The camera's reversed depth (systems/gpu/camera.h): 1 at the near plane, 0 at the far plane, and
 // world positions rebuilt from a stored depth, as deferred lighting does, stay on their surface
 // far from the camera.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Which casters changed since the last frame, as the boxes a cached shadow could have changed in.
 #include <algorithm>
 #include <vector>

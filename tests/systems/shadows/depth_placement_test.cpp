@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Where the compute raster puts each due view's depths (systems/shadows/depth_placement.h).
 #include "systems/shadows/depth_placement.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Gathering a frame's lights from the ECS world and scheduling their maps, without a GPU.
 #include <gtest/gtest.h>
 

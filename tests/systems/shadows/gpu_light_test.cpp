@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Packing lights from their components into GPU records.
 #include <cmath>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // shaders/light_formulas.glsl, compiled as C++, against docs/ALGORITHMS.md's formulas and against
 // the light views' actual projections.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The C++ light record against the shader's: member offsets and size from glslang's reflection
 // of lighting_probe.comp (built with the tests), constants from light_record.glsl's text.
 #include <cstddef>

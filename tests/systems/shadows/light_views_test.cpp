@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Shadow-map cameras: points that must be in a map land in [0, 1], Vulkan's conventions hold,
 // and a point light's cube faces agree with Vulkan's cube-map addressing.
 #include <random>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Built, never run: compiles light_shading.glsl (with shadow_sampling.glsl and the light

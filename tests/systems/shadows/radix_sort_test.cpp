@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The shadow code's radix sort: the order std::stable_sort gives, for whole and partial keys.
 #include <algorithm>
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The per-frame raster choice against a model of the GPU: the frames of
 // docs/PERFORMANCE.md's "Near and dense lights, each raster" (H200, 2026-12-02), where the cost
 // model alone picked the raster hardware at 2.4 to 4.7 times the compute raster's time.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The shadow atlas planner: resolutions from importance with hysteresis, the budget, tiles that
 // persist across frames, repacking and the stats.
 #include <gtest/gtest.h>

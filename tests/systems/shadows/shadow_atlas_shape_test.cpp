@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The shadow atlas's shape: page size and count from the budget within the device's limits.
 #include <gtest/gtest.h>
 

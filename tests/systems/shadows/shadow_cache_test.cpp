@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The shadow-map caching policy: which lights re-render their maps, and which maps may be sampled.
 #include <algorithm>
 #include <random>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The frame-time budget for shadows against a model of GPU time: the real atlas planner sizes
 // the tiles from the budget's limits, a frame's shadow passes take
 // ms = per_view * views + per_texel * texels drawn (with noise), and each measurement comes back

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // automatic's per-frame choice of shadow raster on GPUs.
 #include <gtest/gtest.h>
 

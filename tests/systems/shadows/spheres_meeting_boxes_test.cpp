@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Which spheres meet any of a set of boxes: the grid must find exactly what testing every pair
 // finds.
 #include <random>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The tone curve of shaders/tone_map.glsl, compiled here as C++ from that file.
 #include <gtest/gtest.h>
 

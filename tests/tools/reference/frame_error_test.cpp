@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The whole-frame error on hand-made (pixel, light) pairs, without a GPU.
 #include <gtest/gtest.h>
 

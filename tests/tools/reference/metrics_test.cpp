@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The accuracy metrics on small hand-made images, without a GPU.
 #include <cmath>
 

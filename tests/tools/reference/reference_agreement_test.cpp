@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Embree reference against the analytic one (tests/support/shadow_reference.h) on the
 // floor-and-box scene: surface points taken back from the engine's depth buffer must lie on the
 // floor, and the hard visibility traced from them must say lit and shadowed where exact ray

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Whole runs of the reference tool on lavapipe, on the default scene at a small size: a
 // deliberately broken configuration must come out worse than the scene's own settings, and the
 // algorithms must stay as close to the references as they were measured to be.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // shadowgraph-reference --whole-frame on lavapipe: with one light on it measures what the
 // per-light mode measures, a starved shadow budget comes out worse than the default, and a frame
 // with more pairs than the probe holds is measured on a sample that says so.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 // Depth-only benchmark geometry: positions in NDC from the vertex buffer, and one depth per
 // instance, so a single draw stacks `instanceCount` copies of a mesh. A negative step draws them

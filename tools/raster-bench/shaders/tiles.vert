@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #version 460
 // Many small shadow views in one target, as a tiled shadow atlas would hold them: each command
 // of one multi-draw indirect call is one view, its firstInstance the view's index (as the
