@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sandbox/run_stats.h"
 
 #include <algorithm>
@@ -7,6 +8,8 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+
+#include "shadowgraph/version.h"
 
 namespace sg::sandbox {
 namespace {
@@ -65,7 +68,9 @@ Json stats_json(const RunStats& stats) {
   Json settings = Json::object();
   for (const RunStats::EchoedSetting& setting : stats.settings)
     settings[setting.name] = setting_json(setting);
-  return {{"device", stats.device},
+  return {{"schema_version", stats_schema_version},
+          {"generator", "Shadowgraph " SHADOWGRAPH_VERSION},
+          {"device", stats.device},
           {"resolution", {{"width", stats.width}, {"height", stats.height}}},
           {"frames", stats.frames},
           {"scene",

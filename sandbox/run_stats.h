@@ -1,10 +1,14 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Machine-readable facts about one sandbox run, written by --stats as JSON.
 //
 // The JSON keys are a contract for scripts and benchmarks: later versions add keys but never
-// rename or remove these. Times are milliseconds; sizes are bytes.
+// rename or remove these without raising schema_version (stats_schema_version). Times are
+// milliseconds; sizes are bytes.
 //
 // {
+//   "schema_version": 1,                         // the form of this file (stats_schema_version)
+//   "generator": "Shadowgraph 0.1.0",            // the engine that wrote it
 //   "device": "NVIDIA H100 ...",                 // the Vulkan device's name
 //   "resolution": {"width": 1280, "height": 720},
 //   "frames": 3,                                 // frames rendered
@@ -100,6 +104,9 @@
 #include "systems/scene/scene_queries.h"
 
 namespace sg::sandbox {
+
+// --stats' form: raised when a key changes meaning or goes away; added keys keep it.
+inline constexpr int stats_schema_version = 1;
 
 struct RunStats {
   std::string device;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/frame/scene_sidecar.h"
 
 #include <fstream>
@@ -6,6 +7,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "shadowgraph/version.h"
 
 #include "ecs/query.h"
 #include "ecs/transform.h"
@@ -204,6 +207,8 @@ void save_sidecar(const std::filesystem::path& path, const scene::Scene& scene,
   Json lights = Json::array();
   for (const auto& [name, entity] : named_lights(scene)) lights.push_back(light_json(scene, name, entity));
   const Json document = {
+      {"schema_version", sidecar_schema_version},
+      {"generator", "Shadowgraph " SHADOWGRAPH_VERSION},
       {"camera", {{"eye", vec(pose.eye)}, {"target", vec(pose.target)}, {"up", vec(pose.up)}}},
       {"lights", lights}};
   std::ofstream file(path);
@@ -223,6 +228,16 @@ void apply_sidecar(const std::filesystem::path& path, scene::Scene& scene, scene
   }
   const Reader reader(where);
   if (!document.is_object()) reader.fail("(top)", "is not an object");
+  if (document.contains("schema_version")) {
+    const Json& version = document.at("schema_version");
+    if (!version.is_number_integer() || version.get<int>() < 1)
+      reader.fail("schema_version", "is not a whole number from 1");
+    if (version.get<int>() > sidecar_schema_version) {
+      reader.fail("schema_version", "is " + std::to_string(version.get<int>()) +
+                                        ": written by a newer Shadowgraph; this one reads up to " +
+                                        std::to_string(sidecar_schema_version));
+    }
+  }
   // Read and check everything before anything changes.
   std::vector<SidecarLight> lights;
   if (document.contains("lights")) {

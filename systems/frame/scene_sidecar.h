@@ -1,9 +1,11 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Edited lights and the camera, kept beside a scene so that the next run starts where the user
 // left off: `<scene file>.shadowgraph.json`, or for a built-in scene `<name>.shadowgraph.json`
 // in the working folder. The file lists every light by name (unnamed ones as "light N", N their
 // order among the scene's lights): its type, local position and rotation, parameters and shadow
-// settings; and the camera's eye, target and up.
+// settings; and the camera's eye, target and up. `schema_version` says which form of the file
+// this is, `generator` which engine wrote it.
 #include <filesystem>
 #include <string>
 
@@ -11,6 +13,10 @@
 #include "systems/scene/scene.h"
 
 namespace sg {
+
+// The sidecar's form: raised when a key changes meaning or goes away (added keys keep it). A file
+// without schema_version is read as version 1; a newer one than this is refused, not misread.
+inline constexpr int sidecar_schema_version = 1;
 
 std::filesystem::path sidecar_path(const std::string& scene);
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // summarize() and the --stats JSON file.
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sandbox/run_stats.h"
+#include "shadowgraph/version.h"
 #include "tests/support/gltf_writer.h"
 
 namespace sg::sandbox {
@@ -124,7 +126,9 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 18u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 20u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.at("schema_version"), stats_schema_version);
+  EXPECT_EQ(json.at("generator"), "Shadowgraph " SHADOWGRAPH_VERSION);
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("frames"), 12);

@@ -1,9 +1,14 @@
+// SPDX-License-Identifier: MIT
 // The lights and camera saved beside a scene, and applied to it again.
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <stdexcept>
 #include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "shadowgraph/version.h"
 
 #include "ecs/query.h"
 #include "ecs/transform.h"
@@ -85,6 +90,29 @@ TEST(SceneSidecar, MalformedFilesAreRefusedLeavingTheSceneAsItWas) {
             std::string::npos);
   EXPECT_NE(refusal(R"({"camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}})").find("camera"),
             std::string::npos);
+  // A file of a newer form than this engine reads is refused by name, not misread.
+  const std::string newer = "{\"schema_version\": " + std::to_string(sidecar_schema_version + 1) + "}";
+  EXPECT_NE(refusal(newer).find("schema_version: is " + std::to_string(sidecar_schema_version + 1) +
+                                ": written by a newer Shadowgraph"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"schema_version": "one"})").find("schema_version: is not a whole number"),
+            std::string::npos);
+}
+
+// A saved sidecar says its form and its writer; one without schema_version is read as the first.
+TEST(SceneSidecar, SavedFilesSayTheirSchemaVersion) {
+  scene::test::TempDir dir;
+  const std::filesystem::path path = dir.path("default.shadowgraph.json");
+  save_sidecar(path, scene::build_scene("default"), {{1, 5, 6}, {0, 0, 0}, {0, 1, 0}});
+  nlohmann::json document = nlohmann::json::parse(std::ifstream(path));
+  EXPECT_EQ(document.at("schema_version"), sidecar_schema_version);
+  EXPECT_EQ(document.at("generator"), "Shadowgraph " SHADOWGRAPH_VERSION);
+  document.erase("schema_version");
+  std::ofstream(path) << document.dump();
+  scene::Scene scene = scene::build_scene("default");
+  scene::CameraPose pose;
+  apply_sidecar(path, scene, pose);
+  EXPECT_EQ(pose.eye, glm::vec3(1, 5, 6));
 }
 
 }  // namespace
