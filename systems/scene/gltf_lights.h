@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // KHR_lights_punctual, read from the raw JSON because tinygltf checks none of the extension's
 // rules. The importer attaches each light to the nodes that reference it.
@@ -13,7 +14,8 @@
 // effective range = 16 * sqrt(intensity).
 //
 // Shadow settings come from the light's `extras` (not part of glTF, so nothing there fails the
-// import; a wrong type or value is reported and the default or a clamped value used):
+// import; a wrong type or value is reported and the default or a clamped value used), as flat
+// keys or in an `extras.shadowgraph` object, whose keys win (systems/scene/README.md):
 //   algorithm     "hard" | "pcf" | "noise" | "pcss" | "pcss_noise"
 //   bias          >= 0, constant bias          slope_bias   >= 0
 //   pcf_radius    [0, 32] texels               light_size   >= 0, world units

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "systems/scene/gltf_shadow_extras.h"
 
 #include <algorithm>
@@ -7,13 +8,16 @@
 namespace sg::scene {
 namespace {
 
+// Reads keys of one object: `extras` itself or its `shadowgraph` member, `prefix` naming it in
+// warnings ("extras." or "extras.shadowgraph.").
 struct ExtrasReader {
   const nlohmann::json& extras;
   std::string object;
+  std::string prefix;
   Scene& scene;
 
   void report(const char* key, const std::string& problem) {
-    warn(scene, object + ": extras." + key + " " + problem);
+    warn(scene, object + ": " + prefix + key + " " + problem);
   }
 
   // The number under `key` clamped to [low, high]; nullopt (default kept) when absent or not a
@@ -39,12 +43,9 @@ struct ExtrasReader {
   }
 };
 
-}  // namespace
-
-ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object, Scene& scene) {
-  ShadowSettings settings;
-  if (!extras.is_object()) return settings;
-  ExtrasReader reader{extras, object, scene};
+// Overrides `settings` with the keys `reader`'s object has.
+void read_keys(ExtrasReader& reader, ShadowSettings& settings) {
+  const nlohmann::json& extras = reader.extras;
   constexpr float unbounded = 1e30f;
   reader.read("bias", settings.constant_bias, 0.0f, unbounded);
   reader.read("slope_bias", settings.slope_bias, 0.0f, unbounded);
@@ -68,7 +69,8 @@ ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::strin
     if (found->is_boolean()) {
       settings.casts_shadow = found->get<bool>();
     } else {
-      reader.report("casts_shadow", "is not true or false; using true");
+      reader.report("casts_shadow",
+                    "is not true or false; using " + std::string(settings.casts_shadow ? "true" : "false"));
     }
   }
   if (const auto found = extras.find("shadow_color"); found != extras.end()) {
@@ -77,7 +79,7 @@ ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::strin
                          return c.is_number() && std::isfinite(c.get<double>());
                        });
     if (!valid) {
-      reader.report("shadow_color", "is not an array of 3 finite numbers; using black");
+      reader.report("shadow_color", "is not an array of 3 finite numbers; keeping the default");
     } else {
       for (int c = 0; c < 3; ++c) {
         const float value = (*found)[c].get<float>();
@@ -85,6 +87,23 @@ ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::strin
         if (settings.shadow_color[c] != value)
           reader.report("shadow_color", "component outside [0, 1]; clamped");
       }
+    }
+  }
+}
+
+}  // namespace
+
+ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object, Scene& scene) {
+  ShadowSettings settings;
+  if (!extras.is_object()) return settings;
+  ExtrasReader flat{extras, object, "extras.", scene};
+  read_keys(flat, settings);
+  if (const auto found = extras.find("shadowgraph"); found != extras.end()) {
+    if (found->is_object()) {
+      ExtrasReader namespaced{*found, object, "extras.shadowgraph.", scene};
+      read_keys(namespaced, settings);
+    } else {
+      warn(scene, object + ": extras.shadowgraph is not an object; ignored");
     }
   }
   return settings;

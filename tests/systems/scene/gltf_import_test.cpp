@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Import of glTF files the tests write themselves: one feature per test.
 #include <gtest/gtest.h>
 
@@ -399,6 +400,30 @@ TEST(GltfImport, OddLightValuesAreClampedWithWarnings) {
   EXPECT_TRUE(has_warning(scene, "extras.algorithm \"soft\" is not one of"));
   EXPECT_TRUE(has_warning(scene, "extras.density"));
   EXPECT_TRUE(has_warning(scene, "innerConeAngle equals outerConeAngle"));
+}
+
+// Settings may also sit in a namespaced extras.shadowgraph object (Blender writes a custom
+// property group as one): its keys win over flat ones, which still count where it has none.
+TEST(GltfImport, ShadowExtrasUnderAShadowgraphObjectOverrideTheFlatKeys) {
+  TempDir dir;
+  GltfWriter file;
+  file.add_light({{"type", "point"},
+                  {"extras",
+                   {{"algorithm", "noise"},
+                    {"density", 0.25},
+                    {"shadowgraph", {{"algorithm", "pcss"}, {"light_size", 0.4}, {"resolution", "big"}}}}}});
+  file.add_light({{"type", "point"}, {"extras", {{"shadowgraph", 3}}}});
+  file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+  Scene scene = load_gltf(file.write_gltf(dir, "namespaced").string());
+  const auto shadows = components<ShadowSettings>(scene);
+  ASSERT_EQ(shadows.size(), 2u);
+  EXPECT_EQ(shadows[0].algorithm, ShadowAlgorithm::pcss) << "the namespaced key wins";
+  EXPECT_FLOAT_EQ(shadows[0].light_size, 0.4f);
+  EXPECT_FLOAT_EQ(shadows[0].density, 0.25f) << "a flat key it lacks still counts";
+  EXPECT_EQ(shadows[0].resolution, ShadowSettings{}.resolution);
+  EXPECT_TRUE(has_warning(scene, "extras.shadowgraph.resolution is not a finite number"));
+  EXPECT_TRUE(has_warning(scene, "extras.shadowgraph is not an object"));
 }
 
 TEST(GltfImport, SkinnedMeshLoadsInBindPoseWithAWarning) {
