@@ -16,7 +16,7 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Op
       scene_name_(options.frame.scene),
       depth_overlay_enabled_(options.depth_overlay),
       depth_overlay_(context, frame_format),
-      frame_(context, view, options.frame, frames_in_flight, extension()) {
+      frame_(context, view, options.frame, frames_in_flight, {extension()}) {
   // The panels switch the heat map on and off, so with them it is always ready.
   const bool panels = options.ui.value_or(window != nullptr);
   if (options.light_heatmap || panels) light_heatmap_.emplace(context, frame_format);

@@ -50,10 +50,10 @@ void add_present(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHan
 }  // namespace
 
 Frame::Frame(vk::VulkanContext& context, SceneView& view, const FrameSettings& settings,
-             uint32_t frames_in_flight, FrameExtension extension)
+             uint32_t frames_in_flight, std::vector<FrameExtension> extensions)
     : context_(context),
       view_(view),
-      extension_(std::move(extension)),
+      extensions_(std::move(extensions)),
       playing_(settings.animate),
       renderer_(context, view.scene, frames_in_flight, frame_format, settings.effective_renderer()),
       executor_(context, frames_in_flight) {}
@@ -84,14 +84,18 @@ void Frame::record(const vk::FrameSlot& frame, double time_seconds,
   };
   const double seconds = time_seconds - last_time_seconds_;  // since the last frame
   last_time_seconds_ = time_seconds;
-  if (extension_.update) extension_.update(seconds);
+  for (const FrameExtension& extension : extensions_) {
+    if (extension.update) extension.update(seconds);
+  }
   update(seconds);
   timed(phase_ms_.update);
   renderer_.gather(std::as_const(view_.scene.world));
   timed(phase_ms_.gather);
   report_shadow_time();
   renderer_.prepare(frame.slot, view_.pose, view_.lens, image_.extent().width, image_.extent().height);
-  if (extension_.prepare) extension_.prepare(frame.slot);
+  for (const FrameExtension& extension : extensions_) {
+    if (extension.prepare) extension.prepare(frame.slot);
+  }
   timed(phase_ms_.prepare);
   const SceneRenderer::CpuSteps& steps = renderer_.cpu_steps();
   phase_ms_.instances.push_back(steps.instances);
@@ -171,7 +175,9 @@ void Frame::declare_passes(uint32_t slot, const std::optional<PresentTarget>& pr
       renderer_.add_passes(graph_, imports_, frame_image, slot, view_.pose, view_.lens);
   if (depth_capture_) depth_capture_->add_to(context_, graph_, imports_, targets.depth);
   rg::ImageHandle color = targets.color;
-  if (extension_.add_passes) color = extension_.add_passes(graph_, targets, color, slot);
+  for (const FrameExtension& extension : extensions_) {
+    if (extension.add_passes) color = extension.add_passes(graph_, targets, color, slot);
+  }
   if (present) add_present(graph_, imports_, color, *present);
 }
 

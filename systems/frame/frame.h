@@ -6,8 +6,8 @@
 //               animation, then world transforms
 //   2. gather   read-only systems over a const World: drawables and lights into CPU lists
 //   3. prepare  shadow storage, caster culling, this frame slot's GPU buffers and descriptors
-//   4. declare  the frame graph: shadow passes, lighting (SceneRenderer) -> [the application's
-//               passes over the picture] -> [present, to a swapchain image]
+//   4. declare  the frame graph: shadow passes, lighting (SceneRenderer) -> [the extensions'
+//               passes over the picture, in their order] -> [present, to a swapchain image]
 //   5. execute  compile (plans come from a PlanCache: shapes repeat) and record the commands
 //
 // The picture lands in the persistent "frame" image (imported into each graph, left in
@@ -53,13 +53,17 @@ inline constexpr VkPipelineStageFlags2 acquire_wait_stage = VK_PIPELINE_STAGE_2_
 // The frame image's format: what screenshots read and the present pass blits.
 inline constexpr rg::Format frame_format = rg::Format::rgba8_srgb;
 
-// What an application adds to the frame (the sandbox: its panels and overlays); each is optional.
+// What an application or a library adds to the frame without editing it (the sandbox: its panels
+// and overlays; sandbox/examples/custom_pass: a pass of its own, built against the installed
+// engine); each member is optional. A frame takes a list of them and calls each phase's in order.
 struct FrameExtension {
   // In the update phase, before the systems: `seconds` since the last frame.
   std::function<void(double seconds)> update;
   // In the prepare phase, after the renderer's.
   std::function<void(uint32_t slot)> prepare;
-  // In the declare phase: passes over the lit picture `color`, returning its newest version.
+  // In the declare phase: passes over the picture `color` (the lit, tone-mapped frame image, or
+  // the version the extension before wrote), returning its newest version. `rendered` names the
+  // frame's other images: its depth buffer, the shadow atlas, the light lists.
   std::function<rg::ImageHandle(rg::RenderGraph& graph, const RenderedFrame& rendered, rg::ImageHandle color,
                                 uint32_t slot)>
       add_passes;
@@ -70,7 +74,7 @@ class Frame {
   // Renders `view` (kept by reference: the application may move the camera and edit the world
   // between frames) with `settings`' renderer settings and animation.
   Frame(vk::VulkanContext& context, SceneView& view, const FrameSettings& settings, uint32_t frames_in_flight,
-        FrameExtension extension = {});
+        std::vector<FrameExtension> extensions = {});
 
   // (Re)creates the frame image. The GPU must not be using the old one (wait idle first).
   void resize(VkExtent2D extent);
@@ -151,7 +155,7 @@ class Frame {
 
   vk::VulkanContext& context_;
   SceneView& view_;
-  FrameExtension extension_;
+  std::vector<FrameExtension> extensions_;
   bool playing_;
   double animation_seconds_ = 0.0;  // advances only while animation plays
   double last_time_seconds_ = 0.0;
