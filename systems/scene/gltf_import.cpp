@@ -18,6 +18,7 @@
 #include "systems/scene/gltf_meshes.h"
 #include "systems/scene/gltf_model.h"
 #include "systems/scene/gltf_preflight.h"
+#include "systems/scene/gltf_shadow_extras.h"
 #include "systems/scene/gltf_source.h"
 #include "systems/scene/gltf_validate.h"
 #include "systems/scene/mesh_instance.h"
@@ -144,7 +145,7 @@ class Importer {
     world.add<ecs::WorldTransform>(entity);
     if (!node.name.empty()) world.add<Name>(entity, node.name);
     if (parent != ecs::null_entity) ecs::set_parent(world, entity, parent);
-    if (node.mesh >= 0) add_primitives(entity, node);
+    if (node.mesh >= 0) add_primitives(entity, node, index);
     if (node.camera >= 0) add_camera_to(entity, static_cast<std::size_t>(node.camera));
     if (const auto light = node_lights_[index]) {
       const ImportedLight& imported = lights_[*light];
@@ -155,13 +156,19 @@ class Importer {
     return entity;
   }
 
-  void add_primitives(ecs::Entity node_entity, const tinygltf::Node& node) {
+  // A node's primitives cast shadows unless the node, or else its mesh, says they do not
+  // (read_casts_shadow: extras, or KHR_lights_shadows).
+  void add_primitives(ecs::Entity node_entity, const tinygltf::Node& node, std::size_t index) {
     ecs::World& world = scene_.world;
-    for (const ImportedPrimitive& primitive : meshes_[static_cast<std::size_t>(node.mesh)]) {
+    const auto mesh = static_cast<std::size_t>(node.mesh);
+    std::optional<bool> casts =
+        read_casts_shadow(source_.document["nodes"][index], indexed("nodes", index), scene_);
+    if (!casts) casts = read_casts_shadow(source_.document["meshes"][mesh], indexed("meshes", mesh), scene_);
+    for (const ImportedPrimitive& primitive : meshes_[mesh]) {
       const ecs::Entity entity = world.create();
       world.add<ecs::LocalTransform>(entity);
       world.add<ecs::WorldTransform>(entity);
-      world.add<MeshInstance>(entity, primitive.mesh);
+      world.add<MeshInstance>(entity, MeshInstance{primitive.mesh, casts.value_or(true)});
       world.add<Material>(entity, primitive.material >= 0
                                       ? materials_[static_cast<std::size_t>(primitive.material)]
                                       : Material{});

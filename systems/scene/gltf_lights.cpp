@@ -95,6 +95,10 @@ ImportedLight read_light(const nlohmann::json& light, const GltfSource& source, 
   ImportedLight imported;
   imported.shadow = read_shadow_extras(extras == light.end() ? nlohmann::json() : *extras,
                                        std::string(extension) + "." + object, scene);
+  // The draft KHR_lights_shadows's castShadows, where the extras do not say.
+  if (const auto casts = read_casts_shadow(light, std::string(extension) + "." + object, scene)) {
+    imported.shadow.casts_shadow = *casts;
+  }
   if (type == "point") {
     imported.light = PointLight{color, intensity, range, FalloffMode::gltf_punctual};
   } else if (type == "spot") {

@@ -109,4 +109,29 @@ ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::strin
   return settings;
 }
 
+std::optional<bool> read_casts_shadow(const nlohmann::json& json, const std::string& object, Scene& scene) {
+  if (!json.is_object()) return std::nullopt;
+  const auto flag = [&](const nlohmann::json& holder, const char* key,
+                        const std::string& where) -> std::optional<bool> {
+    if (!holder.is_object()) return std::nullopt;
+    const auto found = holder.find(key);
+    if (found == holder.end()) return std::nullopt;
+    if (found->is_boolean()) return found->get<bool>();
+    warn(scene, object + ": " + where + " is not true or false; ignored");
+    return std::nullopt;
+  };
+  const nlohmann::json none;
+  const auto member = [&](const nlohmann::json& holder, const char* key) -> const nlohmann::json& {
+    const auto found = holder.is_object() ? holder.find(key) : holder.end();
+    return holder.is_object() && found != holder.end() ? *found : none;
+  };
+  const nlohmann::json& extras = member(json, "extras");
+  if (const auto value =
+          flag(member(extras, "shadowgraph"), "casts_shadow", "extras.shadowgraph.casts_shadow"))
+    return value;
+  if (const auto value = flag(extras, "casts_shadow", "extras.casts_shadow")) return value;
+  return flag(member(member(json, "extensions"), "KHR_lights_shadows"), "castShadows",
+              "extensions.KHR_lights_shadows.castShadows");
+}
+
 }  // namespace sg::scene

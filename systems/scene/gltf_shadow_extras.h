@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Per-light ShadowSettings from a glTF light's `extras` object (keys in gltf_lights.h).
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -13,5 +14,11 @@ namespace sg::scene {
 // `extras` may be anything (absent lights pass null); only an object contributes. `object`
 // names the light in warnings, e.g. "KHR_lights_punctual.lights[2]".
 ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object, Scene& scene);
+
+// Whether glTF object `json` (a light, node or mesh) says it casts shadows: `casts_shadow` in
+// its extras (flat or in extras.shadowgraph, as read_shadow_extras reads it), else the draft
+// KHR_lights_shadows extension's `castShadows`; nullopt when it says neither. A value that is
+// not true or false is reported (naming `object`) and ignored.
+std::optional<bool> read_casts_shadow(const nlohmann::json& json, const std::string& object, Scene& scene);
 
 }  // namespace sg::scene

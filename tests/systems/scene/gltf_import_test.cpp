@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <glm/gtc/constants.hpp>
 
@@ -424,6 +425,41 @@ TEST(GltfImport, ShadowExtrasUnderAShadowgraphObjectOverrideTheFlatKeys) {
   EXPECT_EQ(shadows[0].resolution, ShadowSettings{}.resolution);
   EXPECT_TRUE(has_warning(scene, "extras.shadowgraph.resolution is not a finite number"));
   EXPECT_TRUE(has_warning(scene, "extras.shadowgraph is not an object"));
+}
+
+// Which meshes cast shadows, as Blender's custom properties (extras.casts_shadow, on the object or
+// its mesh) or the draft KHR_lights_shadows (castShadows on a mesh or a light) say: the node's
+// word over its mesh's, the extras' over the extension's.
+TEST(GltfImport, CastShadowFlagsFromExtrasAndKhrLightsShadows) {
+  TempDir dir;
+  GltfWriter file;
+  const int glass = file.add_mesh({{"POSITION", file.add_triangle_positions()}});
+  const int stone = file.add_mesh({{"POSITION", file.add_triangle_positions()}});
+  file.document["meshes"][glass]["extras"] = {{"casts_shadow", false}};
+  file.document["meshes"][stone]["extensions"] = {{"KHR_lights_shadows", {{"castShadows", false}}}};
+  file.add_node({{"name", "pane"}, {"mesh", glass}});
+  file.add_node({{"name", "pane that casts"},
+                 {"mesh", glass},
+                 {"extras", {{"shadowgraph", {{"casts_shadow", true}}}}}});
+  file.add_node({{"name", "wall"}, {"mesh", stone}});
+  file.add_node({{"name", "odd"}, {"mesh", stone}, {"extras", {{"casts_shadow", "no"}}}});
+  file.add_light({{"type", "point"}, {"extensions", {{"KHR_lights_shadows", {{"castShadows", false}}}}}});
+  file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+  Scene scene = load_gltf(file.write_gltf(dir, "casters").string());
+  std::map<std::string, bool> casts;
+  scene.world.query<const MeshInstance>().for_each([&](ecs::Entity entity, const MeshInstance& instance) {
+    const ecs::Entity node = scene.world.get<ecs::Parent>(entity).entity;
+    casts[scene.world.get<Name>(node).value] = instance.casts_shadow;
+  });
+  EXPECT_FALSE(casts.at("pane")) << "its mesh's extras";
+  EXPECT_TRUE(casts.at("pane that casts")) << "the node's word over its mesh's";
+  EXPECT_FALSE(casts.at("wall")) << "its mesh's KHR_lights_shadows";
+  EXPECT_FALSE(casts.at("odd"))
+      << "a value that is not true or false is ignored: the mesh's extension counts";
+  EXPECT_TRUE(has_warning(scene, "nodes[3]: extras.casts_shadow is not true or false"));
+  const auto shadows = components<ShadowSettings>(scene);
+  ASSERT_EQ(shadows.size(), 1u);
+  EXPECT_FALSE(shadows[0].casts_shadow) << "the light's KHR_lights_shadows";
 }
 
 TEST(GltfImport, SkinnedMeshLoadsInBindPoseWithAWarning) {
