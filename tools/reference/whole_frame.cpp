@@ -67,7 +67,8 @@ struct ProbedFrame {
 };
 
 ProbedFrame probe_frame(vk::VulkanContext& context, const FrameSettings& settings,
-                        const WholeFrameSettings& frame_mode, uint64_t capacity, float keep) {
+                        const WholeFrameSettings& frame_mode, uint64_t capacity, float keep,
+                        const Progress& progress) {
   ProbedFrame out;
   out.view =
       std::make_unique<SceneView>(load_scene_view(settings, float(settings.width) / float(settings.height)));
@@ -96,10 +97,14 @@ ProbedFrame probe_frame(vk::VulkanContext& context, const FrameSettings& setting
                      unprobed.end());
     out.gpu_frame_ms = unprobed[unprobed.size() / 2];
   }
+  // Each step says so: the probed frame builds the probe's pipeline (every light type and
+  // algorithm in one shader) and reads back up to a few hundred MB.
+  say(progress, "probing frame " + std::to_string(frames) + " (the probe's pipeline is built first)");
   ShadowProbe probe(context, capacity, keep);
   frame.renderer().probe_shadows(&probe);
   render_headless_frames(frame, ring, 1, times, false, frames - 1);
   frame.renderer().probe_shadows(nullptr);
+  say(progress, "reading the probed frame back");
   out.depth = frame.read_captured_depth();
   out.lights = frame_lights(frame.renderer().lights());
   out.probe = probe.read();
@@ -159,7 +164,7 @@ WholeFrameReport run_whole_frame(vk::VulkanContext& context, const FrameSettings
   const uint64_t capacity = uint64_t(frame.width) * frame.height * std::max(settings.pairs_per_pixel, 1u);
 
   say(progress, "rendering " + std::to_string(settings.frames) + " frame(s), probing the last");
-  ProbedFrame probed = probe_frame(context, lit, settings, capacity, 1.0f);
+  ProbedFrame probed = probe_frame(context, lit, settings, capacity, 1.0f, progress);
   float keep = 1.0f;
   if (!probed.probe.complete()) {
     keep = float(std::min(1.0, 0.9 * double(capacity) / double(probed.probe.wanted)));
@@ -170,7 +175,7 @@ WholeFrameReport run_whole_frame(vk::VulkanContext& context, const FrameSettings
                   static_cast<unsigned long long>(probed.probe.wanted),
                   static_cast<unsigned long long>(capacity), 100.0 * keep);
     say(progress, line);
-    probed = probe_frame(context, lit, settings, capacity, keep);
+    probed = probe_frame(context, lit, settings, capacity, keep, progress);
     if (!probed.probe.complete()) {
       throw std::runtime_error("the probed frame still had more pairs than fit; raise --pairs-per-pixel");
     }
