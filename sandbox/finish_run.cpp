@@ -25,6 +25,8 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
     std::printf("shadowgraph: wrote %s\n", options.screenshot.c_str());
   }
 
+  if (!options.export_gltf.empty()) sandbox_frame.export_gltf(options.export_gltf);
+
   if (!options.dump_shadow_maps.empty() && rendered) {
     dump_shadow_maps(context, frame.renderer(), options.dump_shadow_maps);
   }

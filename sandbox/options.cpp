@@ -67,6 +67,10 @@ std::vector<Setting<O>> make_table() {
       text<O>(
           "dump-shadow-maps", "DIR", [](auto& o) -> auto& { return o.dump_shadow_maps; },
           "after the run, write every light's shadow map as grey PNGs into DIR"),
+      text<O>(
+          "export-gltf", "PATH", [](auto& o) -> auto& { return o.export_gltf; },
+          "after the run, write the scene with its edited lights, their shadow settings and the view as "
+          "glTF (.gltf, or .glb by the extension), which --scene PATH loads back to the same frame"),
   };
   table.insert(table.end(), std::begin(own), std::end(own));
   return table;

@@ -24,6 +24,7 @@ struct Options {
   std::string script;            // --script FILE: commands instead of --frames (script.h); headless only
   std::optional<bool> ui;        // --ui on|off: the panels; unset: on in a window, off headless
   std::string dump_shadow_maps;  // --dump-shadow-maps DIR: each light's map as PNG
+  std::string export_gltf;       // --export-gltf PATH: the scene as glTF after the run
 };
 
 // Every option, the frame's settings first, in the order --help and the README list them.

@@ -2,10 +2,12 @@
 #include "sandbox/sandbox_frame.h"
 
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 
 #include "rendergraph/device/context.h"
 #include "systems/frame/scene_sidecar.h"
+#include "systems/scene/gltf_export.h"
 
 namespace sg::sandbox {
 
@@ -38,6 +40,13 @@ FrameExtension SandboxFrame::extension() {
     panels_ =
         ui_->build(view_.scene, view_.pose, ui_facts(), frame_.image().extent(), static_cast<float>(seconds));
     if (ui_->take_save_request()) save_edits();
+    if (ui_->take_export_request()) {
+      try {
+        export_gltf(scene_name_ + ".edited.glb");
+      } catch (const std::exception& error) {  // a panel's button must not end the run
+        std::fprintf(stderr, "shadowgraph: export failed: %s\n", error.what());
+      }
+    }
     frame_.renderer().set_view(ui_->view());
     frame_.set_playing(ui_->playing());
   };
@@ -66,6 +75,19 @@ void SandboxFrame::save_edits() const {
   const std::filesystem::path path = sidecar_path(scene_name_);
   save_sidecar(path, view_.scene, view_.pose);
   std::printf("shadowgraph: saved the lights and camera to %s\n", path.string().c_str());
+}
+
+void SandboxFrame::export_gltf(const std::string& path) const {
+  const scene::ExportReport report =
+      scene::export_gltf(view_.scene, scene::ExportView{view_.pose, view_.lens}, path);
+  std::printf("shadowgraph: exported the scene to %s (%zu nodes, %zu meshes, %zu lights)\n", path.c_str(),
+              report.nodes, report.meshes, report.lights);
+  if (report.animated_entities > 0) {
+    std::printf(
+        "shadowgraph: warning: %zu animated entities were written where they stand now; glTF export keeps "
+        "no animation\n",
+        report.animated_entities);
+  }
 }
 
 UiFacts SandboxFrame::ui_facts() const {

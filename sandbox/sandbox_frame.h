@@ -37,6 +37,9 @@ class SandboxFrame {
   void set_view(LightingView view);
   // Writes the lights and camera beside the scene (scene_sidecar.h), as the panels' save does.
   void save_edits() const;
+  // Writes the whole scene, its edited lights and the current view as glTF (.gltf or .glb,
+  // systems/scene/gltf_export.h), saying what the file cannot keep.
+  void export_gltf(const std::string& path) const;
   // The panels (nullptr without --ui).
   SandboxUi* ui() { return ui_.get(); }
 

@@ -278,6 +278,10 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
   if (ImGui::Button("save")) save_requested_ = true;
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("the lights and camera, beside the scene (SCENE.shadowgraph.json)");
+  ImGui::SameLine();
+  if (ImGui::Button("export glTF")) export_requested_ = true;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the whole scene with its edited lights and this view, as SCENE.edited.glb");
   constexpr const char* orders[] = {"scene order", "by name", "by importance"};
   ImGui::Combo("order", &order_, orders, IM_ARRAYSIZE(orders));
   // Importance as the shadow schedule measured it last frame (lights without shadows: 0).

@@ -78,6 +78,8 @@ class SandboxUi {
 
   // True once after the user pressed "save" (the frame writes the sidecar, scene_sidecar.h).
   bool take_save_request() { return std::exchange(save_requested_, false); }
+  // True once after the user pressed "export glTF" (the frame writes SCENE.edited.glb).
+  bool take_export_request() { return std::exchange(export_requested_, false); }
 
   // What the user would pick in the panels; for tests and scripted runs.
   void select(ecs::Entity light) { selected_ = light; }
@@ -119,6 +121,7 @@ class SandboxUi {
   bool help_ = false;
   bool show_map_ = false;
   bool save_requested_ = false;
+  bool export_requested_ = false;
   bool playing_ = true;
   int view_ = 0;  // a LightingView
   bool light_heatmap_ = false;

@@ -147,7 +147,10 @@ class Importer {
     if (parent != ecs::null_entity) ecs::set_parent(world, entity, parent);
     if (node.mesh >= 0) add_primitives(entity, node, index);
     if (node.camera >= 0) add_camera_to(entity, static_cast<std::size_t>(node.camera));
-    if (const auto light = node_lights_[index]) {
+    if (const auto cylinder = read_cylinder_light(source_.document["nodes"][index], object, scene_)) {
+      world.add<CylinderLight>(entity, cylinder->light);
+      world.add<ShadowSettings>(entity, cylinder->shadow);
+    } else if (const auto light = node_lights_[index]) {
       const ImportedLight& imported = lights_[*light];
       std::visit([&](const auto& value) { world.add<std::decay_t<decltype(value)>>(entity, value); },
                  imported.light);

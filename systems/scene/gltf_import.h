@@ -10,7 +10,10 @@
 // - a node's perspective camera -> Camera on the node's entity (orthographic: warning, skipped;
 //   an infinite far plane becomes 10,000 * znear);
 // - a node's KHR_lights_punctual light -> PointLight, SpotLight or DirectionalLight with
-//   FalloffMode::gltf_punctual, plus ShadowSettings from the light's extras (gltf_lights.h);
+//   FalloffMode::gltf_punctual (or the extras' falloff), plus ShadowSettings from the light's
+//   extras (gltf_lights.h); a node's extras.shadowgraph.cylinder_light -> CylinderLight;
+// - materials: base color factor and texture, alpha mode, double-sided, and specular and
+//   shininess from extras.shadowgraph (systems/scene/README.md lists every extra read);
 // - animations: each channel on a node's translation, rotation or scale -> NodeAnimation on
 //   the node's entity (gltf_animations.h; animate_nodes plays them);
 // - skins: drawn in the bind pose with a warning (a skinned mesh's vertices are already in

@@ -99,14 +99,18 @@ ImportedLight read_light(const nlohmann::json& light, const GltfSource& source, 
   if (const auto casts = read_casts_shadow(light, std::string(extension) + "." + object, scene)) {
     imported.shadow.casts_shadow = *casts;
   }
+  // glTF's own falloff, unless the extras keep another (export_gltf of a built-in scene's lights).
+  const FalloffMode falloff = read_falloff(extras == light.end() ? nlohmann::json() : *extras,
+                                           std::string(extension) + "." + object, scene)
+                                  .value_or(FalloffMode::gltf_punctual);
   if (type == "point") {
-    imported.light = PointLight{color, intensity, range, FalloffMode::gltf_punctual};
+    imported.light = PointLight{color, intensity, range, falloff};
   } else if (type == "spot") {
     SpotLight spot = read_spot(light, source, object, scene);
     spot.color = color;
     spot.intensity = intensity;
     spot.range = range;
-    spot.falloff = FalloffMode::gltf_punctual;
+    spot.falloff = falloff;
     imported.light = spot;
   } else if (type == "directional") {
     imported.light = DirectionalLight{color, intensity};

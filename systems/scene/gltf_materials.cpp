@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "systems/scene/gltf_materials.h"
 
+#include <algorithm>
 #include <string>
 
 #include "systems/scene/gltf_json.h"
@@ -55,6 +56,21 @@ std::vector<Material> import_materials(const tinygltf::Model& model, Scene& scen
       material.alpha_mode = AlphaMode::blend;
     }
     material.double_sided = source.doubleSided;
+    // Blinn-Phong terms glTF has no place for, as export_gltf keeps them.
+    if (source.extras.Has("shadowgraph")) {
+      const tinygltf::Value& ours = source.extras.Get("shadowgraph");
+      const auto number = [&](const char* key, float& target, float low, float high) {
+        if (!ours.Has(key)) return;
+        const tinygltf::Value& value = ours.Get(key);
+        if (!value.IsNumber()) {
+          warn(scene, object + ": extras.shadowgraph." + key + " is not a number; using the default");
+          return;
+        }
+        target = std::clamp(static_cast<float>(value.GetNumberAsDouble()), low, high);
+      };
+      number("specular", material.specular, 0.0f, 1.0f);
+      number("shininess", material.shininess, 1.0f, 4096.0f);
+    }
     materials.push_back(material);
   }
   return materials;

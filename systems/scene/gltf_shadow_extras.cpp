@@ -134,4 +134,52 @@ std::optional<bool> read_casts_shadow(const nlohmann::json& json, const std::str
               "extensions.KHR_lights_shadows.castShadows");
 }
 
+std::optional<FalloffMode> read_falloff(const nlohmann::json& extras, const std::string& object,
+                                        Scene& scene) {
+  if (!extras.is_object()) return std::nullopt;
+  const auto namespaced = extras.find("shadowgraph");
+  const bool in_namespace =
+      namespaced != extras.end() && namespaced->is_object() && namespaced->contains("falloff");
+  const nlohmann::json& holder = in_namespace ? *namespaced : extras;
+  const auto found = holder.find("falloff");
+  if (found == holder.end()) return std::nullopt;
+  if (*found == "gltf_punctual") return FalloffMode::gltf_punctual;
+  if (*found == "linear_window") return FalloffMode::linear_window;
+  warn(scene, object + ": extras." + (in_namespace ? "shadowgraph." : "") + "falloff " + found->dump() +
+                  " is not gltf_punctual or linear_window; using gltf_punctual");
+  return std::nullopt;
+}
+
+std::optional<ImportedCylinder> read_cylinder_light(const nlohmann::json& node, const std::string& object,
+                                                    Scene& scene) {
+  const auto extras = node.find("extras");
+  if (extras == node.end() || !extras->is_object()) return std::nullopt;
+  const auto namespaced = extras->find("shadowgraph");
+  if (namespaced == extras->end() || !namespaced->is_object()) return std::nullopt;
+  const auto found = namespaced->find("cylinder_light");
+  if (found == namespaced->end()) return std::nullopt;
+  ExtrasReader reader{*found, object, "extras.shadowgraph.cylinder_light.", scene};
+  ImportedCylinder cylinder;
+  read_keys(reader, cylinder.shadow);
+  CylinderLight& light = cylinder.light;
+  reader.read("intensity", light.intensity, 0.0f, 1e30f);
+  reader.read("inner_radius", light.inner_radius, 0.0f, 1e30f);
+  reader.read("outer_radius", light.outer_radius, 1e-4f, 1e30f);
+  if (light.inner_radius >= light.outer_radius) {
+    reader.report("inner_radius", "is not below outer_radius; using half of it");
+    light.inner_radius = 0.5f * light.outer_radius;
+  }
+  if (const auto color = found->find("color"); color != found->end()) {
+    if (color->is_array() && color->size() == 3 &&
+        std::all_of(color->begin(), color->end(), [](const nlohmann::json& c) {
+          return c.is_number() && std::isfinite(c.get<double>());
+        })) {
+      for (int c = 0; c < 3; ++c) light.color[c] = std::clamp((*color)[c].get<float>(), 0.0f, 1.0f);
+    } else {
+      reader.report("color", "is not an array of 3 finite numbers; using white");
+    }
+  }
+  return cylinder;
+}
+
 }  // namespace sg::scene

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
 #include "systems/scene/shadow_settings.h"
 
@@ -20,5 +21,21 @@ ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::strin
 // KHR_lights_shadows extension's `castShadows`; nullopt when it says neither. A value that is
 // not true or false is reported (naming `object`) and ignored.
 std::optional<bool> read_casts_shadow(const nlohmann::json& json, const std::string& object, Scene& scene);
+
+// A point or spot light's falloff from its `extras` (`falloff`: "gltf_punctual" or
+// "linear_window", flat or in extras.shadowgraph, as export_gltf writes it); nullopt when
+// absent or not one of those (reported).
+std::optional<FalloffMode> read_falloff(const nlohmann::json& extras, const std::string& object,
+                                        Scene& scene);
+
+// A cylinder light kept in a node's extras.shadowgraph.cylinder_light (glTF has no such type;
+// export_gltf writes it there): its light and shadow settings, values checked as the light
+// extras' are; nullopt when the node has none.
+struct ImportedCylinder {
+  CylinderLight light;
+  ShadowSettings shadow;
+};
+std::optional<ImportedCylinder> read_cylinder_light(const nlohmann::json& node, const std::string& object,
+                                                    Scene& scene);
 
 }  // namespace sg::scene

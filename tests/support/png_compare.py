@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-# Compares two 8-bit RGB(A) PNGs of one size half by half, for tests of passes that draw over one
-# half of the frame: exits 0 when the left halves differ (mean absolute difference of the color
-# channels at least --differs) and the right halves agree (no channel more than --agrees apart),
-# else 1, saying which.
-#   python3 png_halves.py with_pass.png plain.png
+# Compares two 8-bit RGB(A) PNGs of one size, for tests that render twice:
+#   python3 png_compare.py halves with_pass.png plain.png
+#     a pass that draws over the left half: exits 0 when the left halves differ (mean absolute
+#     difference of the color channels at least --differs) and the right halves agree (no
+#     channel more than --agrees apart), else 1, saying which;
+#   python3 png_compare.py same a.png b.png
+#     exits 0 when no channel of any pixel is more than --agrees apart, else 1.
 import argparse
 import struct
 import sys
@@ -54,6 +56,7 @@ def read_png(path):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("mode", choices=["halves", "same"])
     parser.add_argument("drawn")
     parser.add_argument("plain")
     parser.add_argument("--differs", type=float, default=2.0, help="least mean difference on the left")
@@ -63,7 +66,7 @@ def main():
     w2, h2, c2, b = read_png(args.plain)
     if (w, h, c) != (w2, h2, c2):
         sys.exit(f"sizes differ: {w}x{h}x{c} against {w2}x{h2}x{c2}")
-    half = w // 2
+    half = 0 if args.mode == "same" else w // 2
     left_sum, left_count, right_most = 0, 0, 0
     for y in range(h):
         for x in range(w):
@@ -74,6 +77,12 @@ def main():
                     left_count += 1
                 else:
                     right_most = max(right_most, d)
+    if args.mode == "same":
+        print(f"largest difference {right_most}")
+        if right_most > args.agrees:
+            print("the pictures differ")
+            return 1
+        return 0
     left_mean = left_sum / left_count
     print(f"left half: mean difference {left_mean:.2f}; right half: largest difference {right_most}")
     if left_mean < args.differs:
