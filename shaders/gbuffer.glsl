@@ -8,13 +8,14 @@
 
 // Positions come back from the depth buffer: every byte a pixel writes here costs raster
 // hardware time on GPUs that have little of it (docs/PERFORMANCE.md).
-layout(location = 0) out vec4 out_normal;  // xyz: unit normal; w: Blinn shininess s
+// xyz: unit normal; w: Blinn shininess s, negated where the surface receives no shadow.
+layout(location = 0) out vec4 out_normal;
 layout(location = 1) out vec4 out_albedo;  // rgb: base color; a: specular strength kS
 
 // Writes the fragment's G-buffer texels and returns its surface.
 SurfacePoint write_gbuffer() {
   SurfacePoint p = fragment_surface();
-  out_normal = vec4(p.normal, p.shininess);
+  out_normal = vec4(p.normal, p.receives_shadow ? p.shininess : -p.shininess);
   out_albedo = vec4(p.base_color, p.specular);
   return p;
 }

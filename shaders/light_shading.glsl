@@ -70,9 +70,9 @@ bool unaffected(Light light, SurfacePoint p, Incidence at) {
 
 // How much `light`'s shadow can change the pixel: the luminance of all it adds unshadowed plus
 // that of its shadow color term, the most that any shade in [0, 1] can move the sum; zero where
-// it is unaffected.
+// it is unaffected or the surface receives no shadow.
 float shadow_weight(Light light, SurfacePoint p, Incidence at) {
-  if (unaffected(light, p, at)) return 0.0;
+  if (unaffected(light, p, at) || !p.receives_shadow) return 0.0;
   vec3 shadow_color = shadow_color_at(light, at);
   float density = light.shadow_color_density.a;
   return luminance(blinn_light(p, at.to_light, radiance_at(light, at), 0.0, density, shadow_color)) +
@@ -105,10 +105,12 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
   if (unaffected(light, p, at)) return vec3(0.0);
   float n_dot_l = dot(p.normal, at.to_light);
 
-  // Two calls, each with a constant algorithm, so that each keeps only its own kernel's code.
+  // Two calls, each with a constant algorithm, so that each keeps only its own kernel's code. A
+  // surface that receives no shadow is lit.
   bool filtered = SHADOW_ONLY_VIEW || runs_own_filter(light, p, at, filter_floor);
-  float shade = filtered ? light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, algorithm)
-                         : light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, SHADOW_HARD);
+  float shade = !p.receives_shadow ? 0.0
+                : filtered         ? light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, algorithm)
+                                   : light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, SHADOW_HARD);
   if (SHADOW_ONLY_VIEW) {
     return vec3((1.0 - shade) * light.color_intensity.a * at.reach * max(n_dot_l, 0.0));
   }

@@ -10,6 +10,7 @@ struct SurfacePoint {
   vec3 base_color;
   float specular;   // kS
   float shininess;  // s
+  bool receives_shadow;  // false: lit as if no light cast a shadow here (MeshInstance)
 };
 
 // One light's contribution, without the ambient term (added once per fragment).

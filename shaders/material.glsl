@@ -46,7 +46,9 @@ SurfacePoint fragment_surface() {
   p.to_viewer = normalize(frame.camera_position.xyz - in_world_position);
   p.base_color = base_color.rgb;
   p.specular = in_base_color_specular.a;
-  p.shininess = in_material.x;
+  // The instance's shininess is negated where it receives no shadow (GpuInstance::material).
+  p.shininess = abs(in_material.x);
+  p.receives_shadow = in_material.x > 0.0;
   return p;
 }
 

@@ -41,7 +41,8 @@ bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {
   p.to_viewer = normalize(frame.camera_position.xyz - position);
   p.base_color = albedo.rgb;
   p.specular = albedo.a;
-  p.shininess = normal.w;
+  p.shininess = abs(normal.w);
+  p.receives_shadow = normal.w > 0.0;
   return true;
 }
 

@@ -79,8 +79,11 @@ void GpuScene::place(const ecs::World& world, size_t i) {
   const float cutoff = material.alpha_mode == scene::AlphaMode::mask    ? material.alpha_cutoff
                        : material.alpha_mode == scene::AlphaMode::blend ? transparent_cutoff
                                                                         : 0.0f;
+  // A surface that receives no shadow carries its shininess negated (GpuInstance::material).
+  const scene::MeshInstance* instance = world.try_get<scene::MeshInstance>(entity);
+  const float shininess = instance && !instance->receives_shadow ? -material.shininess : material.shininess;
   sorted_[i] = {model, glm::vec4(glm::vec3(material.base_color), material.specular),
-                glm::vec4(material.shininess, texture, material.base_color.a, cutoff)};
+                glm::vec4(shininess, texture, material.base_color.a, cutoff)};
   bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, model);
   keys_[i] = ecs::entity_key(entity);
 }

@@ -12,7 +12,8 @@ namespace sg {
 struct GpuInstance {
   glm::mat4 model;  // the normal matrix is derived from it where needed (scene.vert)
   glm::vec4 base_color_specular;
-  glm::vec4 material;  // x: shininess, y: base color texture index or -1, z: base color alpha,
+  glm::vec4 material;  // x: shininess, negated where the surface receives no shadow, y: base
+                       // color texture index or -1, z: base color alpha,
                        // w: mask's alpha cutoff (0: no cut-out), transparent_cutoff if blended
 };
 static_assert(sizeof(GpuInstance) == 96);

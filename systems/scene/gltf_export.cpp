@@ -137,6 +137,7 @@ class Exporter {
       const Material* material = world.try_get<Material>(entity);
       node.mesh = mesh_of(instance->mesh, material ? *material : Material{});
       if (!instance->casts_shadow) extras["casts_shadow"] = false;
+      if (!instance->receives_shadow) extras["receives_shadow"] = false;
     }
     if (const Camera* camera = world.try_get<Camera>(entity)) {
       tinygltf::Camera gltf_camera;

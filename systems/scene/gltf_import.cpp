@@ -159,19 +159,25 @@ class Importer {
     return entity;
   }
 
-  // A node's primitives cast shadows unless the node, or else its mesh, says they do not
-  // (read_casts_shadow: extras, or KHR_lights_shadows).
+  // A node's primitives cast and receive shadows unless the node, or else its mesh, says they do
+  // not (read_shadow_flag: extras, or KHR_lights_shadows).
   void add_primitives(ecs::Entity node_entity, const tinygltf::Node& node, std::size_t index) {
     ecs::World& world = scene_.world;
     const auto mesh = static_cast<std::size_t>(node.mesh);
-    std::optional<bool> casts =
-        read_casts_shadow(source_.document["nodes"][index], indexed("nodes", index), scene_);
-    if (!casts) casts = read_casts_shadow(source_.document["meshes"][mesh], indexed("meshes", mesh), scene_);
+    const auto flag = [&](ShadowFlag which) {
+      const std::optional<bool> own =
+          read_shadow_flag(source_.document["nodes"][index], which, indexed("nodes", index), scene_);
+      return own ? own
+                 : read_shadow_flag(source_.document["meshes"][mesh], which, indexed("meshes", mesh), scene_);
+    };
+    const std::optional<bool> casts = flag(ShadowFlag::casts);
+    const std::optional<bool> receives = flag(ShadowFlag::receives);
     for (const ImportedPrimitive& primitive : meshes_[mesh]) {
       const ecs::Entity entity = world.create();
       world.add<ecs::LocalTransform>(entity);
       world.add<ecs::WorldTransform>(entity);
-      world.add<MeshInstance>(entity, MeshInstance{primitive.mesh, casts.value_or(true)});
+      world.add<MeshInstance>(entity,
+                              MeshInstance{primitive.mesh, casts.value_or(true), receives.value_or(true)});
       world.add<Material>(entity, primitive.material >= 0
                                       ? materials_[static_cast<std::size_t>(primitive.material)]
                                       : Material{});

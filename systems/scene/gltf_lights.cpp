@@ -96,7 +96,8 @@ ImportedLight read_light(const nlohmann::json& light, const GltfSource& source, 
   imported.shadow = read_shadow_extras(extras == light.end() ? nlohmann::json() : *extras,
                                        std::string(extension) + "." + object, scene);
   // The draft KHR_lights_shadows's castShadows, where the extras do not say.
-  if (const auto casts = read_casts_shadow(light, std::string(extension) + "." + object, scene)) {
+  if (const auto casts =
+          read_shadow_flag(light, ShadowFlag::casts, std::string(extension) + "." + object, scene)) {
     imported.shadow.casts_shadow = *casts;
   }
   // glTF's own falloff, unless the extras keep another (export_gltf of a built-in scene's lights).

@@ -109,9 +109,12 @@ ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::strin
   return settings;
 }
 
-std::optional<bool> read_casts_shadow(const nlohmann::json& json, const std::string& object, Scene& scene) {
+std::optional<bool> read_shadow_flag(const nlohmann::json& json, ShadowFlag flag, const std::string& object,
+                                     Scene& scene) {
   if (!json.is_object()) return std::nullopt;
-  const auto flag = [&](const nlohmann::json& holder, const char* key,
+  const std::string ours = flag == ShadowFlag::casts ? "casts_shadow" : "receives_shadow";
+  const char* khr = flag == ShadowFlag::casts ? "castShadows" : "receiveShadows";
+  const auto read = [&](const nlohmann::json& holder, const std::string& key,
                         const std::string& where) -> std::optional<bool> {
     if (!holder.is_object()) return std::nullopt;
     const auto found = holder.find(key);
@@ -126,12 +129,11 @@ std::optional<bool> read_casts_shadow(const nlohmann::json& json, const std::str
     return holder.is_object() && found != holder.end() ? *found : none;
   };
   const nlohmann::json& extras = member(json, "extras");
-  if (const auto value =
-          flag(member(extras, "shadowgraph"), "casts_shadow", "extras.shadowgraph.casts_shadow"))
+  if (const auto value = read(member(extras, "shadowgraph"), ours, "extras.shadowgraph." + ours))
     return value;
-  if (const auto value = flag(extras, "casts_shadow", "extras.casts_shadow")) return value;
-  return flag(member(member(json, "extensions"), "KHR_lights_shadows"), "castShadows",
-              "extensions.KHR_lights_shadows.castShadows");
+  if (const auto value = read(extras, ours, "extras." + ours)) return value;
+  return read(member(member(json, "extensions"), "KHR_lights_shadows"), khr,
+              std::string("extensions.KHR_lights_shadows.") + khr);
 }
 
 std::optional<FalloffMode> read_falloff(const nlohmann::json& extras, const std::string& object,

@@ -16,11 +16,14 @@ namespace sg::scene {
 // names the light in warnings, e.g. "KHR_lights_punctual.lights[2]".
 ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object, Scene& scene);
 
-// Whether glTF object `json` (a light, node or mesh) says it casts shadows: `casts_shadow` in
-// its extras (flat or in extras.shadowgraph, as read_shadow_extras reads it), else the draft
-// KHR_lights_shadows extension's `castShadows`; nullopt when it says neither. A value that is
+// Whether glTF object `json` (a light, node or mesh) says it casts shadows (or, a node or mesh,
+// receives them): `casts_shadow` (`receives_shadow`) in its extras (flat or in
+// extras.shadowgraph, as read_shadow_extras reads them), else the draft KHR_lights_shadows
+// extension's `castShadows` (`receiveShadows`); nullopt when it says neither. A value that is
 // not true or false is reported (naming `object`) and ignored.
-std::optional<bool> read_casts_shadow(const nlohmann::json& json, const std::string& object, Scene& scene);
+enum class ShadowFlag { casts, receives };
+std::optional<bool> read_shadow_flag(const nlohmann::json& json, ShadowFlag flag, const std::string& object,
+                                     Scene& scene);
 
 // A point or spot light's falloff from its `extras` (`falloff`: "gltf_punctual" or
 // "linear_window", flat or in extras.shadowgraph, as export_gltf writes it); nullopt when

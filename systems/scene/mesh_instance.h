@@ -8,8 +8,9 @@
 namespace sg::scene {
 
 struct MeshInstance {
-  std::uint32_t mesh = 0;    // index into MeshLibrary::meshes
-  bool casts_shadow = true;  // false: drawn in the lighting pass only, never into shadow maps
+  std::uint32_t mesh = 0;       // index into MeshLibrary::meshes
+  bool casts_shadow = true;     // false: drawn in the lighting pass only, never into shadow maps
+  bool receives_shadow = true;  // false: lit as if no light cast a shadow on it
 };
 
 }  // namespace sg::scene

@@ -21,6 +21,7 @@
 #include "rendergraph/device/readback.h"
 #include "systems/frame/frame.h"
 #include "systems/scene/lights.h"
+#include "systems/scene/mesh_instance.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"
 #include "tests/support/floor_box_scene.h"
@@ -133,6 +134,42 @@ ShadowScene with(LightKind kind, scene::ShadowAlgorithm algorithm, uint32_t reso
   s.shadow.algorithm = algorithm;
   s.shadow.resolution = resolution;
   return s;
+}
+
+// A floor that receives no shadow (MeshInstance::receives_shadow, glTF's receiveShadows) is lit as
+// if the box cast none, on the fused forward path a CPU device takes and on the deferred one;
+// the box still casts: where the reference puts the floor in shadow the normal frame is darker.
+TEST_F(ShadowAlgorithms, AFloorThatReceivesNoShadowIsLitAsWithoutShadows) {
+  const ShadowScene s = with(LightKind::spot, scene::ShadowAlgorithm::pcf);
+  const FloorPixels floor = reference(s, 1);
+  for (const LightingPath path : {LightingPath::automatic, LightingPath::deferred}) {
+    const auto render_floor = [&](bool floor_receives, bool shadows) {
+      SceneView view = build(s, s.intensity);
+      // The floor is the scene's first instance (floor_box_scene.h), the box the second.
+      bool first = true;
+      view.scene.world.query<scene::MeshInstance>().for_each([&](ecs::Entity, scene::MeshInstance& instance) {
+        if (first) instance.receives_shadow = floor_receives;
+        first = false;
+      });
+      FrameSettings options;
+      options.renderer.lighting = path;
+      options.renderer.lights.shadows = shadows;
+      return render(view, options);
+    };
+    const std::vector<float> not_receiving = render_floor(false, true);
+    const std::vector<float> unshadowed = render_floor(true, false);
+    const std::vector<float> normal = render_floor(true, true);
+    int shadowed = 0, darker = 0, differing = 0;
+    for (size_t i = 0; i < floor.pixels.size(); ++i) {
+      if (floor.pixels[i] != FloorPixel::shadowed) continue;
+      ++shadowed;
+      darker += normal[i] < unshadowed[i] - 0.05f ? 1 : 0;
+      differing += std::abs(not_receiving[i] - unshadowed[i]) > 1.0f / 255.0f ? 1 : 0;
+    }
+    ASSERT_GT(shadowed, 100);
+    EXPECT_GT(darker, shadowed * 9 / 10) << "the box shadows a receiving floor";
+    EXPECT_EQ(differing, 0) << "a floor that receives no shadow is lit where the box would shadow it";
+  }
 }
 
 TEST_F(ShadowAlgorithms, HardSpotShadowMatchesRayCastingAwayFromTheEdge) {

@@ -79,6 +79,7 @@ TEST(GltfExport, TheDefaultSceneComesBackWithItsLightsDrawablesAndView) {
   ecs::Entity drawable = ecs::null_entity;
   scene.world.query<const MeshInstance>().for_each([&](ecs::Entity e, const MeshInstance&) { drawable = e; });
   scene.world.get_mut<MeshInstance>(drawable).casts_shadow = false;
+  scene.world.get_mut<MeshInstance>(drawable).receives_shadow = false;
   const ExportView view{{{1, 5, 6}, {0, 1, 0}, {0, 1, 0}}, Camera{0.9f, 0.1f, 80.0f, 0.0f}};
 
   for (const char* file : {"default.gltf", "default.glb"}) {
@@ -114,15 +115,18 @@ TEST(GltfExport, TheDefaultSceneComesBackWithItsLightsDrawablesAndView) {
       EXPECT_EQ(other.shadow.resolution, facts.shadow.resolution) << file << ": " << name;
     }
 
-    int not_casting = 0;
+    int not_casting = 0, not_receiving = 0;
     std::multiset<std::pair<float, float>> terms_before, terms_after;
     scene.world.query<const Material>().for_each(
         [&](ecs::Entity, const Material& m) { terms_before.emplace(m.specular, m.shininess); });
     loaded.world.query<const Material>().for_each(
         [&](ecs::Entity, const Material& m) { terms_after.emplace(m.specular, m.shininess); });
-    loaded.world.query<const MeshInstance>().for_each(
-        [&](ecs::Entity, const MeshInstance& instance) { not_casting += instance.casts_shadow ? 0 : 1; });
+    loaded.world.query<const MeshInstance>().for_each([&](ecs::Entity, const MeshInstance& instance) {
+      not_casting += instance.casts_shadow ? 0 : 1;
+      not_receiving += instance.receives_shadow ? 0 : 1;
+    });
     EXPECT_EQ(not_casting, 1) << file;
+    EXPECT_EQ(not_receiving, 1) << file;
     EXPECT_EQ(terms_after, terms_before) << file << ": specular and shininess";
     const auto camera = first_camera(loaded);
     ASSERT_TRUE(camera.has_value()) << file;

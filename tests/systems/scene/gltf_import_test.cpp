@@ -427,10 +427,11 @@ TEST(GltfImport, ShadowExtrasUnderAShadowgraphObjectOverrideTheFlatKeys) {
   EXPECT_TRUE(has_warning(scene, "extras.shadowgraph is not an object"));
 }
 
-// Which meshes cast shadows, as Blender's custom properties (extras.casts_shadow, on the object or
-// its mesh) or the draft KHR_lights_shadows (castShadows on a mesh or a light) say: the node's
-// word over its mesh's, the extras' over the extension's.
-TEST(GltfImport, CastShadowFlagsFromExtrasAndKhrLightsShadows) {
+// Which meshes cast and receive shadows, as Blender's custom properties (extras.casts_shadow and
+// receives_shadow, on the object or its mesh) or the draft KHR_lights_shadows (castShadows on a
+// mesh or a light, receiveShadows on a mesh) say: the node's word over its mesh's, the extras'
+// over the extension's.
+TEST(GltfImport, ShadowFlagsFromExtrasAndKhrLightsShadows) {
   TempDir dir;
   GltfWriter file;
   const int glass = file.add_mesh({{"POSITION", file.add_triangle_positions()}});
@@ -443,14 +444,20 @@ TEST(GltfImport, CastShadowFlagsFromExtrasAndKhrLightsShadows) {
                  {"extras", {{"shadowgraph", {{"casts_shadow", true}}}}}});
   file.add_node({{"name", "wall"}, {"mesh", stone}});
   file.add_node({{"name", "odd"}, {"mesh", stone}, {"extras", {{"casts_shadow", "no"}}}});
+  file.add_node({{"name", "screen"}, {"mesh", glass}, {"extras", {{"receives_shadow", false}}}});
+  file.document["meshes"][stone]["extensions"]["KHR_lights_shadows"]["receiveShadows"] = false;
   file.add_light({{"type", "point"}, {"extensions", {{"KHR_lights_shadows", {{"castShadows", false}}}}}});
   file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
   Scene scene = load_gltf(file.write_gltf(dir, "casters").string());
-  std::map<std::string, bool> casts;
+  std::map<std::string, bool> casts, receives;
   scene.world.query<const MeshInstance>().for_each([&](ecs::Entity entity, const MeshInstance& instance) {
     const ecs::Entity node = scene.world.get<ecs::Parent>(entity).entity;
     casts[scene.world.get<Name>(node).value] = instance.casts_shadow;
+    receives[scene.world.get<Name>(node).value] = instance.receives_shadow;
   });
+  EXPECT_TRUE(receives.at("pane"));
+  EXPECT_FALSE(receives.at("screen")) << "its own extras";
+  EXPECT_FALSE(receives.at("wall")) << "its mesh's KHR_lights_shadows receiveShadows";
   EXPECT_FALSE(casts.at("pane")) << "its mesh's extras";
   EXPECT_TRUE(casts.at("pane that casts")) << "the node's word over its mesh's";
   EXPECT_FALSE(casts.at("wall")) << "its mesh's KHR_lights_shadows";
