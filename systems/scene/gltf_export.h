@@ -6,7 +6,7 @@
 //   drawable's mesh and material -> a mesh of one triangle primitive (POSITION, NORMAL,
 //   TEXCOORD_0, 32-bit indices) and a material (base color factor and texture, alpha mode and
 //   cutoff, double-sided; specular and shininess in extras.shadowgraph); a drawable that casts no
-//   shadow says extras.casts_shadow false;
+//   shadow says extras.casts_shadow false, one that receives none extras.receives_shadow false;
 // - point, spot and directional lights -> KHR_lights_punctual with their shadow settings and
 //   falloff in extras.shadowgraph; cylinder lights, which glTF has no type for, ->
 //   extras.shadowgraph.cylinder_light on their node;
