@@ -80,8 +80,7 @@ void GpuScene::place(const ecs::World& world, size_t i) {
                        : material.alpha_mode == scene::AlphaMode::blend ? transparent_cutoff
                                                                         : 0.0f;
   // A surface that receives no shadow carries its shininess negated (GpuInstance::material).
-  const scene::MeshInstance* instance = world.try_get<scene::MeshInstance>(entity);
-  const float shininess = instance && !instance->receives_shadow ? -material.shininess : material.shininess;
+  const float shininess = items_[i].receiver ? material.shininess : -material.shininess;
   sorted_[i] = {model, glm::vec4(glm::vec3(material.base_color), material.specular),
                 glm::vec4(shininess, texture, material.base_color.a, cutoff)};
   bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, model);
@@ -207,7 +206,7 @@ void GpuScene::gather_all(const ecs::World& world, jobs::ThreadPool* pool) {
       [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance& mesh) {
         const scene::Material* material = world.try_get<scene::Material>(entity);
         const auto draw_class = static_cast<uint8_t>(draw_class_of(material ? *material : default_material));
-        items_.push_back({mesh.mesh, mesh.casts_shadow, draw_class, entity});
+        items_.push_back({mesh.mesh, mesh.casts_shadow, mesh.receives_shadow, draw_class, entity});
       });
   // By draw class, then mesh, casters first within each: a counting sort (classes and meshes
   // are few, instances many).

@@ -145,6 +145,7 @@ class GpuScene {
   struct Item {
     uint32_t mesh;
     bool caster;
+    bool receiver;  // MeshInstance::receives_shadow
     uint8_t draw_class;
     ecs::Entity entity;
   };

@@ -45,7 +45,7 @@ tinygltf::Value to_value(const nlohmann::json& json) {
 
 nlohmann::json vec3(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
-// The keys gltf_shadow_extras.h reads, and the light's falloff.
+// A light's shadow settings under the keys gltf_shadow_extras.h reads.
 nlohmann::json shadow_json(const ShadowSettings& s) {
   return {{"algorithm", std::string(to_string(s.algorithm))},
           {"bias", s.constant_bias},
@@ -56,6 +56,16 @@ nlohmann::json shadow_json(const ShadowSettings& s) {
           {"shadow_color", vec3(s.shadow_color)},
           {"resolution", s.resolution},
           {"casts_shadow", s.casts_shadow}};
+}
+
+tinygltf::Camera perspective(const Camera& lens) {
+  tinygltf::Camera camera;
+  camera.type = "perspective";
+  camera.perspective.yfov = lens.yfov;
+  camera.perspective.znear = lens.znear;
+  camera.perspective.zfar = lens.zfar;
+  camera.perspective.aspectRatio = lens.aspect;
+  return camera;
 }
 
 const char* falloff_name(FalloffMode mode) {
@@ -105,13 +115,7 @@ class Exporter {
 
  private:
   void add_view_camera(const ExportView& view) {
-    tinygltf::Camera camera;
-    camera.type = "perspective";
-    camera.perspective.yfov = view.lens.yfov;
-    camera.perspective.znear = view.lens.znear;
-    camera.perspective.zfar = view.lens.zfar;
-    camera.perspective.aspectRatio = view.lens.aspect;
-    model_.cameras.push_back(camera);
+    model_.cameras.push_back(perspective(view.lens));
     // A glTF camera looks down its -Z with +Y up: the inverse of the view matrix's rotation.
     const glm::vec3 forward = glm::normalize(view.pose.target - view.pose.eye);
     const glm::mat4 look = glm::lookAt(view.pose.eye, view.pose.target, camera_up(forward, view.pose.up));
@@ -140,14 +144,8 @@ class Exporter {
       if (!instance->receives_shadow) extras["receives_shadow"] = false;
     }
     if (const Camera* camera = world.try_get<Camera>(entity)) {
-      tinygltf::Camera gltf_camera;
-      gltf_camera.type = "perspective";
-      gltf_camera.perspective.yfov = camera->yfov;
-      gltf_camera.perspective.znear = camera->znear;
-      gltf_camera.perspective.zfar = camera->zfar;
-      gltf_camera.perspective.aspectRatio = camera->aspect;
       node.camera = static_cast<int>(model_.cameras.size());
-      model_.cameras.push_back(gltf_camera);
+      model_.cameras.push_back(perspective(*camera));
     }
     if (const ShadowSettings* shadow = world.try_get<ShadowSettings>(entity)) {
       if (const auto* beam = world.try_get<CylinderLight>(entity)) {

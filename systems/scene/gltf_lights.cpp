@@ -91,19 +91,11 @@ ImportedLight read_light(const nlohmann::json& light, const GltfSource& source, 
                      "range " + std::to_string(*declared_range) + " must be greater than 0");
   }
   const float range = declared_range ? static_cast<float>(*declared_range) : effective_light_range(intensity);
-  const auto extras = light.find("extras");
+  const std::string where = std::string(extension) + "." + object;
   ImportedLight imported;
-  imported.shadow = read_shadow_extras(extras == light.end() ? nlohmann::json() : *extras,
-                                       std::string(extension) + "." + object, scene);
-  // The draft KHR_lights_shadows's castShadows, where the extras do not say.
-  if (const auto casts =
-          read_shadow_flag(light, ShadowFlag::casts, std::string(extension) + "." + object, scene)) {
-    imported.shadow.casts_shadow = *casts;
-  }
+  imported.shadow = read_light_shadow(light, where, scene);
   // glTF's own falloff, unless the extras keep another (export_gltf of a built-in scene's lights).
-  const FalloffMode falloff = read_falloff(extras == light.end() ? nlohmann::json() : *extras,
-                                           std::string(extension) + "." + object, scene)
-                                  .value_or(FalloffMode::gltf_punctual);
+  const FalloffMode falloff = read_falloff(light, where, scene).value_or(FalloffMode::gltf_punctual);
   if (type == "point") {
     imported.light = PointLight{color, intensity, range, falloff};
   } else if (type == "spot") {

@@ -2,29 +2,43 @@
 #include "systems/scene/gltf_shadow_extras.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
 namespace sg::scene {
 namespace {
 
-// Reads keys of one object: `extras` itself or its `shadowgraph` member, `prefix` naming it in
-// warnings ("extras." or "extras.shadowgraph.").
+// `holder`'s member `key` when it is an object; nullptr otherwise.
+const nlohmann::json* object_member(const nlohmann::json* holder, const char* key) {
+  if (holder == nullptr || !holder->is_object()) return nullptr;
+  const auto found = holder->find(key);
+  return found != holder->end() && found->is_object() ? &*found : nullptr;
+}
+
+// Reads the keys of one object, `prefix` naming it in warnings ("extras.",
+// "extras.shadowgraph.", ...). A wrong type or value is reported and the default or a clamped
+// value kept.
 struct ExtrasReader {
-  const nlohmann::json& extras;
+  const nlohmann::json& keys;
   std::string object;
   std::string prefix;
   Scene& scene;
 
-  void report(const char* key, const std::string& problem) {
+  void report(const char* key, const std::string& problem) const {
     warn(scene, object + ": " + prefix + key + " " + problem);
+  }
+
+  const nlohmann::json* find(const char* key) const {
+    const auto found = keys.find(key);
+    return found == keys.end() ? nullptr : &*found;
   }
 
   // The number under `key` clamped to [low, high]; nullopt (default kept) when absent or not a
   // finite number.
-  std::optional<float> number(const char* key, float low, float high) {
-    const auto found = extras.find(key);
-    if (found == extras.end()) return std::nullopt;
+  std::optional<float> number(const char* key, float low, float high) const {
+    const nlohmann::json* found = find(key);
+    if (found == nullptr) return std::nullopt;
     if (!found->is_number() || !std::isfinite(found->get<double>())) {
       report(key, "is not a finite number; using the default");
       return std::nullopt;
@@ -38,14 +52,53 @@ struct ExtrasReader {
     return static_cast<float>(clamped);
   }
 
-  void read(const char* key, float& target, float low, float high) {
+  void read(const char* key, float& target, float low, float high) const {
     if (const auto value = number(key, low, high)) target = *value;
+  }
+
+  std::optional<bool> flag(const char* key) const {
+    const nlohmann::json* found = find(key);
+    if (found == nullptr) return std::nullopt;
+    if (found->is_boolean()) return found->get<bool>();
+    report(key, "is not true or false; ignored");
+    return std::nullopt;
+  }
+
+  // An [r, g, b] color, each clamped to [0, 1].
+  void color(const char* key, glm::vec3& target) const {
+    const nlohmann::json* found = find(key);
+    if (found == nullptr) return;
+    const bool valid = found->is_array() && found->size() == 3 &&
+                       std::all_of(found->begin(), found->end(), [](const nlohmann::json& c) {
+                         return c.is_number() && std::isfinite(c.get<double>());
+                       });
+    if (!valid) {
+      report(key, "is not an array of 3 finite numbers; keeping the default");
+      return;
+    }
+    for (int c = 0; c < 3; ++c) {
+      const float value = (*found)[c].get<float>();
+      target[c] = std::clamp(value, 0.0f, 1.0f);
+      if (target[c] != value) report(key, "component outside [0, 1]; clamped");
+    }
   }
 };
 
-// Overrides `settings` with the keys `reader`'s object has.
-void read_keys(ExtrasReader& reader, ShadowSettings& settings) {
-  const nlohmann::json& extras = reader.extras;
+// The readers of a glTF object's extras, the flat keys first, then those of an
+// extras.shadowgraph object, which win (absent ones are skipped).
+std::array<std::optional<ExtrasReader>, 2> extras_readers(const nlohmann::json& json,
+                                                          const std::string& object, Scene& scene) {
+  std::array<std::optional<ExtrasReader>, 2> readers;
+  const nlohmann::json* extras = object_member(&json, "extras");
+  if (extras != nullptr) readers[0].emplace(*extras, object, "extras.", scene);
+  if (const nlohmann::json* ours = object_member(extras, "shadowgraph")) {
+    readers[1].emplace(*ours, object, "extras.shadowgraph.", scene);
+  }
+  return readers;
+}
+
+// Overrides `settings` with the keys `reader`'s object has, casts_shadow aside.
+void read_keys(const ExtrasReader& reader, ShadowSettings& settings) {
   constexpr float unbounded = 1e30f;
   reader.read("bias", settings.constant_bias, 0.0f, unbounded);
   reader.read("slope_bias", settings.slope_bias, 0.0f, unbounded);
@@ -55,7 +108,7 @@ void read_keys(ExtrasReader& reader, ShadowSettings& settings) {
   if (const auto resolution = reader.number("resolution", 16.0f, 16384.0f)) {
     settings.resolution = static_cast<std::uint32_t>(std::lround(*resolution));
   }
-  if (const auto found = extras.find("algorithm"); found != extras.end()) {
+  if (const nlohmann::json* found = reader.find("algorithm")) {
     const auto parsed =
         found->is_string() ? parse_enum<ShadowAlgorithm>(found->get<std::string>()) : std::nullopt;
     if (parsed) {
@@ -65,104 +118,64 @@ void read_keys(ExtrasReader& reader, ShadowSettings& settings) {
                                      std::string(to_string(settings.algorithm)));
     }
   }
-  if (const auto found = extras.find("casts_shadow"); found != extras.end()) {
-    if (found->is_boolean()) {
-      settings.casts_shadow = found->get<bool>();
-    } else {
-      reader.report("casts_shadow",
-                    "is not true or false; using " + std::string(settings.casts_shadow ? "true" : "false"));
-    }
-  }
-  if (const auto found = extras.find("shadow_color"); found != extras.end()) {
-    const bool valid = found->is_array() && found->size() == 3 &&
-                       std::all_of(found->begin(), found->end(), [](const nlohmann::json& c) {
-                         return c.is_number() && std::isfinite(c.get<double>());
-                       });
-    if (!valid) {
-      reader.report("shadow_color", "is not an array of 3 finite numbers; keeping the default");
-    } else {
-      for (int c = 0; c < 3; ++c) {
-        const float value = (*found)[c].get<float>();
-        settings.shadow_color[c] = std::clamp(value, 0.0f, 1.0f);
-        if (settings.shadow_color[c] != value)
-          reader.report("shadow_color", "component outside [0, 1]; clamped");
-      }
-    }
-  }
+  reader.color("shadow_color", settings.shadow_color);
 }
 
 }  // namespace
 
-ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object, Scene& scene) {
+ShadowSettings read_light_shadow(const nlohmann::json& light, const std::string& object, Scene& scene) {
   ShadowSettings settings;
-  if (!extras.is_object()) return settings;
-  ExtrasReader flat{extras, object, "extras.", scene};
-  read_keys(flat, settings);
-  if (const auto found = extras.find("shadowgraph"); found != extras.end()) {
-    if (found->is_object()) {
-      ExtrasReader namespaced{*found, object, "extras.shadowgraph.", scene};
-      read_keys(namespaced, settings);
-    } else {
-      warn(scene, object + ": extras.shadowgraph is not an object; ignored");
-    }
+  for (const std::optional<ExtrasReader>& reader : extras_readers(light, object, scene)) {
+    if (reader) read_keys(*reader, settings);
   }
+  const nlohmann::json* extras = object_member(&light, "extras");
+  if (extras != nullptr && extras->contains("shadowgraph") &&
+      object_member(extras, "shadowgraph") == nullptr) {
+    warn(scene, object + ": extras.shadowgraph is not an object; ignored");
+  }
+  settings.casts_shadow = read_shadow_flag(light, ShadowFlag::casts, object, scene).value_or(true);
   return settings;
 }
 
 std::optional<bool> read_shadow_flag(const nlohmann::json& json, ShadowFlag flag, const std::string& object,
                                      Scene& scene) {
-  if (!json.is_object()) return std::nullopt;
-  const std::string ours = flag == ShadowFlag::casts ? "casts_shadow" : "receives_shadow";
-  const char* khr = flag == ShadowFlag::casts ? "castShadows" : "receiveShadows";
-  const auto read = [&](const nlohmann::json& holder, const std::string& key,
-                        const std::string& where) -> std::optional<bool> {
-    if (!holder.is_object()) return std::nullopt;
-    const auto found = holder.find(key);
-    if (found == holder.end()) return std::nullopt;
-    if (found->is_boolean()) return found->get<bool>();
-    warn(scene, object + ": " + where + " is not true or false; ignored");
-    return std::nullopt;
-  };
-  const nlohmann::json none;
-  const auto member = [&](const nlohmann::json& holder, const char* key) -> const nlohmann::json& {
-    const auto found = holder.is_object() ? holder.find(key) : holder.end();
-    return holder.is_object() && found != holder.end() ? *found : none;
-  };
-  const nlohmann::json& extras = member(json, "extras");
-  if (const auto value = read(member(extras, "shadowgraph"), ours, "extras.shadowgraph." + ours))
-    return value;
-  if (const auto value = read(extras, ours, "extras." + ours)) return value;
-  return read(member(member(json, "extensions"), "KHR_lights_shadows"), khr,
-              std::string("extensions.KHR_lights_shadows.") + khr);
+  const bool casts = flag == ShadowFlag::casts;
+  const auto readers = extras_readers(json, object, scene);
+  for (auto reader = readers.rbegin(); reader != readers.rend(); ++reader) {
+    if (!*reader) continue;
+    if (const auto value = (*reader)->flag(casts ? "casts_shadow" : "receives_shadow")) return value;
+  }
+  const nlohmann::json* khr = object_member(object_member(&json, "extensions"), "KHR_lights_shadows");
+  if (khr == nullptr) return std::nullopt;
+  return ExtrasReader{*khr, object, "extensions.KHR_lights_shadows.", scene}.flag(casts ? "castShadows"
+                                                                                        : "receiveShadows");
 }
 
-std::optional<FalloffMode> read_falloff(const nlohmann::json& extras, const std::string& object,
+std::optional<FalloffMode> read_falloff(const nlohmann::json& light, const std::string& object,
                                         Scene& scene) {
-  if (!extras.is_object()) return std::nullopt;
-  const auto namespaced = extras.find("shadowgraph");
-  const bool in_namespace =
-      namespaced != extras.end() && namespaced->is_object() && namespaced->contains("falloff");
-  const nlohmann::json& holder = in_namespace ? *namespaced : extras;
-  const auto found = holder.find("falloff");
-  if (found == holder.end()) return std::nullopt;
-  if (*found == "gltf_punctual") return FalloffMode::gltf_punctual;
-  if (*found == "linear_window") return FalloffMode::linear_window;
-  warn(scene, object + ": extras." + (in_namespace ? "shadowgraph." : "") + "falloff " + found->dump() +
-                  " is not gltf_punctual or linear_window; using gltf_punctual");
+  const auto readers = extras_readers(light, object, scene);
+  for (auto reader = readers.rbegin(); reader != readers.rend(); ++reader) {
+    if (!*reader) continue;
+    const nlohmann::json* found = (*reader)->find("falloff");
+    if (found == nullptr) continue;
+    if (*found == "gltf_punctual") return FalloffMode::gltf_punctual;
+    if (*found == "linear_window") return FalloffMode::linear_window;
+    (*reader)->report("falloff",
+                      found->dump() + " is not gltf_punctual or linear_window; using gltf_punctual");
+    return std::nullopt;
+  }
   return std::nullopt;
 }
 
 std::optional<ImportedCylinder> read_cylinder_light(const nlohmann::json& node, const std::string& object,
                                                     Scene& scene) {
-  const auto extras = node.find("extras");
-  if (extras == node.end() || !extras->is_object()) return std::nullopt;
-  const auto namespaced = extras->find("shadowgraph");
-  if (namespaced == extras->end() || !namespaced->is_object()) return std::nullopt;
-  const auto found = namespaced->find("cylinder_light");
-  if (found == namespaced->end()) return std::nullopt;
-  ExtrasReader reader{*found, object, "extras.shadowgraph.cylinder_light.", scene};
+  const nlohmann::json* found =
+      object_member(object_member(object_member(&node, "extras"), "shadowgraph"), "cylinder_light");
+  if (found == nullptr) return std::nullopt;
+  const ExtrasReader reader{*found, object, "extras.shadowgraph.cylinder_light.", scene};
   ImportedCylinder cylinder;
   read_keys(reader, cylinder.shadow);
+  cylinder.shadow.casts_shadow = reader.flag("casts_shadow").value_or(true);
   CylinderLight& light = cylinder.light;
   reader.read("intensity", light.intensity, 0.0f, 1e30f);
   reader.read("inner_radius", light.inner_radius, 0.0f, 1e30f);
@@ -171,16 +184,7 @@ std::optional<ImportedCylinder> read_cylinder_light(const nlohmann::json& node, 
     reader.report("inner_radius", "is not below outer_radius; using half of it");
     light.inner_radius = 0.5f * light.outer_radius;
   }
-  if (const auto color = found->find("color"); color != found->end()) {
-    if (color->is_array() && color->size() == 3 &&
-        std::all_of(color->begin(), color->end(), [](const nlohmann::json& c) {
-          return c.is_number() && std::isfinite(c.get<double>());
-        })) {
-      for (int c = 0; c < 3; ++c) light.color[c] = std::clamp((*color)[c].get<float>(), 0.0f, 1.0f);
-    } else {
-      reader.report("color", "is not an array of 3 finite numbers; using white");
-    }
-  }
+  reader.color("color", light.color);
   return cylinder;
 }
 

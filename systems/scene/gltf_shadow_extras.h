@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Per-light ShadowSettings from a glTF light's `extras` object (keys in gltf_lights.h).
+// Shadow settings, shadow flags, falloff and cylinder lights from glTF objects' `extras` and the
+// draft KHR_lights_shadows (keys in systems/scene/README.md). Nothing here fails an import: a
+// wrong type or value is reported, naming `object`, and the default or a clamped value used.
 #include <optional>
 #include <string>
 
@@ -12,24 +14,24 @@
 
 namespace sg::scene {
 
-// `extras` may be anything (absent lights pass null); only an object contributes. `object`
-// names the light in warnings, e.g. "KHR_lights_punctual.lights[2]".
-ShadowSettings read_shadow_extras(const nlohmann::json& extras, const std::string& object, Scene& scene);
+// The ShadowSettings of glTF light `light` (KHR_lights_punctual.lights[i]): its extras' keys,
+// flat or in an extras.shadowgraph object whose keys win, and casts_shadow as read_shadow_flag
+// reads it. `object` names the light in warnings, e.g. "KHR_lights_punctual.lights[2]".
+ShadowSettings read_light_shadow(const nlohmann::json& light, const std::string& object, Scene& scene);
 
 // Whether glTF object `json` (a light, node or mesh) says it casts shadows (or, a node or mesh,
 // receives them): `casts_shadow` (`receives_shadow`) in its extras (flat or in
-// extras.shadowgraph, as read_shadow_extras reads them), else the draft KHR_lights_shadows
+// extras.shadowgraph, whose keys win), else the draft KHR_lights_shadows
 // extension's `castShadows` (`receiveShadows`); nullopt when it says neither. A value that is
 // not true or false is reported (naming `object`) and ignored.
 enum class ShadowFlag { casts, receives };
 std::optional<bool> read_shadow_flag(const nlohmann::json& json, ShadowFlag flag, const std::string& object,
                                      Scene& scene);
 
-// A point or spot light's falloff from its `extras` (`falloff`: "gltf_punctual" or
+// A point or spot light's falloff from its extras (`falloff`: "gltf_punctual" or
 // "linear_window", flat or in extras.shadowgraph, as export_gltf writes it); nullopt when
 // absent or not one of those (reported).
-std::optional<FalloffMode> read_falloff(const nlohmann::json& extras, const std::string& object,
-                                        Scene& scene);
+std::optional<FalloffMode> read_falloff(const nlohmann::json& light, const std::string& object, Scene& scene);
 
 // A cylinder light kept in a node's extras.shadowgraph.cylinder_light (glTF has no such type;
 // export_gltf writes it there): its light and shadow settings, values checked as the light

@@ -81,8 +81,7 @@ ShadowAtlasPlanner::Wanted ShadowAtlasPlanner::wanted_resolution(const ShadowReq
       previous_held ? std::clamp(*previous_held, got - hysteresis_tiers, got + hysteresis_tiers) : got;
   const uint32_t floor =
       std::min(full, std::bit_ceil(std::max(config_.min_resolution, request.quality_floor)));
-  // A map redrawn seldom saves too little time to keep the budget lowering tiers for it.
-  const bool saves_time = policy_ == ShadowTimePolicy::uniform || redraw_rate >= least_lowerable_rate;
+  const bool saves_time = lowering_saves_time(policy_, redraw_rate);
   if (lowered_tiers <= 0.0f) return {full, full, full > floor && saves_time, held};
   const float lowered_log2 = std::clamp(held - lowered_tiers, 0.0f, 31.0f);
   const uint32_t lowered = std::clamp(1u << uint32_t(std::round(lowered_log2)), floor, full);

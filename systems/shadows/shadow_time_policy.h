@@ -31,8 +31,14 @@ inline constexpr float redraw_rate_weight = 1.0f / 16.0f;
 // At most this many tiers spared: a map redrawn once in 4,096 frames or less.
 inline constexpr float most_spared_tiers = 4.0f;
 // Maps redrawn less often than this save too little time to count as lowerable: the budget does
-// not keep lowering tiers for them (ShadowTimeBudget::Plan::lights_lowerable).
+// not keep lowering tiers for them (lowering_saves_time, ShadowTimeBudget::Plan::lights_lowerable).
 inline constexpr float least_lowerable_rate = 1.0f / 16.0f;
+
+// Whether lowering a map drawn in a share `redraw_rate` of frames saves time enough to count as
+// lowerable (ShadowTimeBudget keeps lowering tiers while some light is).
+inline bool lowering_saves_time(ShadowTimePolicy policy, float redraw_rate) {
+  return policy == ShadowTimePolicy::uniform || redraw_rate >= least_lowerable_rate;
+}
 
 inline float spared_tiers(ShadowTimePolicy policy, float redraw_rate) {
   if (policy == ShadowTimePolicy::uniform) return 0.0f;
