@@ -72,6 +72,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
                    schedule.lights_per_resolution,
                    schedule.lights_without_shadow,
                    schedule.lights_waiting,
+                   schedule.cascades,
                    summarize(frame.shadow_views_rendered()),
                    summarize(frame.shadow_views_cached()),
                    summarize(frame.shadow_views_moving_only()),
@@ -148,11 +149,11 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
     for (const auto& [resolution, lights] : s.lights_per_resolution)
       std::printf(" %u:%u", resolution, lights);
     std::printf(
-        "; %u without shadow, %u waiting; views per frame rendered %.0f (moving casters only %.0f), cached "
-        "%.0f "
-        "(medians)\n",
-        s.lights_without_shadow, s.lights_waiting, s.views_rendered->median, s.views_moving_only->median,
-        s.views_cached->median);
+        "; %u without shadow, %u waiting, %u directional cascades; views per frame rendered %.0f (moving "
+        "casters only "
+        "%.0f), cached %.0f (medians)\n",
+        s.lights_without_shadow, s.lights_waiting, s.cascades, s.views_rendered->median,
+        s.views_moving_only->median, s.views_cached->median);
   }
   if (const RunStats::ShadowBudget& b = stats.shadow_budget;
       b.lights_demoted_by_time && (b.budget_ms || b.frames_bound_by_memory > 0)) {

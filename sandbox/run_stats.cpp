@@ -115,6 +115,7 @@ Json stats_json(const RunStats& stats) {
             {"lights_per_resolution", per_resolution},
             {"lights_without_shadow", shadows.lights_without_shadow},
             {"lights_waiting", shadows.lights_waiting},
+            {"cascades", shadows.cascades},
             {"views_rendered", summary_json(shadows.views_rendered)},
             {"views_cached", summary_json(shadows.views_cached)},
             {"views_moving_only", summary_json(shadows.views_moving_only)},

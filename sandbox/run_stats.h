@@ -52,6 +52,8 @@
 //     "lights_per_resolution": {"256": 10, "64": 200},  // last frame, per tile side
 //     "lights_without_shadow": 0,                // last frame: out of sight or over the budget
 //     "lights_waiting": 0,                       // last frame: have a tile, not drawn yet
+//     "cascades": 3,                             // last frame: directional lights' cascaded maps
+//                                                // in use; each counts as a light in the counts
 //     "views_rendered": {"median": ..., "min": ..., "max": ...},  // per frame
 //     "views_cached": {"median": ..., "min": ..., "max": ...},
 //     "views_moving_only": {"median": ..., "min": ..., "max": ...},  // of views_rendered: moving
@@ -149,6 +151,7 @@ struct RunStats {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> lights_per_resolution;
     std::uint32_t lights_without_shadow = 0;
     std::uint32_t lights_waiting = 0;
+    std::uint32_t cascades = 0;
     std::optional<TimeSummary> views_rendered;  // counts, summarized like times
     std::optional<TimeSummary> views_cached;
     std::optional<TimeSummary> views_moving_only;

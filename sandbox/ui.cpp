@@ -215,7 +215,9 @@ void SandboxUi::shadow_map_panel(const ecs::World& world, const UiFacts& facts) 
   ImGui::Begin("Shadow map", &show_map_, ImGuiWindowFlags_AlwaysAutoResize);
   bool shown = false;
   for (const shadows::ShadowMapView& map : facts.frame_lights->maps) {
-    if (map.key != key || map.resolution == 0) continue;
+    if (shadows::view_light_key(map.key) != key || map.resolution == 0) continue;
+    if (map.cascade != shadows::no_cascade)
+      ImGui::TextUnformatted(map.name.c_str() + map.name.rfind("cascade"));
     ImGui::Text("%u x %u texels, layer %u", map.resolution, map.resolution, map.tile.page);
     image(map.tile, {map.tile.page, map.view.near, map.view.far, map.view.orthographic}, 256.0f);
     shown = true;
@@ -359,7 +361,8 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
       case 3: edit_light_parameters<scene::DirectionalLight>(world, selected_); break;
       case 4: edit_light_parameters<scene::CylinderLight>(world, selected_); break;
     }
-    edit<scene::ShadowSettings>(world, selected_, [](scene::ShadowSettings& shadow) {
+    const bool directional = world.try_get<scene::DirectionalLight>(selected_) != nullptr;
+    edit<scene::ShadowSettings>(world, selected_, [directional](scene::ShadowSettings& shadow) {
       bool changed = ImGui::Checkbox("casts shadow", &shadow.casts_shadow);
       int algorithm = static_cast<int>(shadow.algorithm);
       const char* names[std::size(scene::all_shadow_algorithms)];
@@ -378,6 +381,11 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
       int resolution = static_cast<int>(shadow.resolution);
       if (ImGui::SliderInt("resolution", &resolution, 16, 4096)) {
         shadow.resolution = static_cast<uint32_t>(resolution);
+        changed = true;
+      }
+      int cascades = static_cast<int>(shadow.cascades);
+      if (directional && ImGui::SliderInt("cascades", &cascades, 1, int(scene::max_shadow_cascades))) {
+        shadow.cascades = static_cast<uint32_t>(cascades);
         changed = true;
       }
       return changed;

@@ -21,16 +21,21 @@ const uint SHADOW_PCSS = 3u;
 const uint SHADOW_PCSS_NOISE = 4u;
 
 const uint NO_SHADOW_MAP = 0xFFFFFFFFu;
+// info.w of a directional light whose maps are cascades (systems/shadows/cascades.h): each is a
+// record of its own after the frame's lights, holding its map in the shadow fields.
+const uint CASCADED_SHADOW_MAPS = 0xFFFFFFFEu;
 
 struct Light {
   vec4 position_range;        // xyz: world position (point, spot, cylinder); w: range R (point, spot; 0 otherwise)
   vec4 direction_type;        // xyz: unit direction the light travels (spot, directional, cylinder); w: unused
   vec4 color_intensity;       // rgb: linear color; a: intensity
-  vec4 shape;                 // spot: x cos(inner), y cos(outer); cylinder: z inner radius r, w outer radius R
+  vec4 shape;                 // spot: x cos(inner), y cos(outer); cylinder: z inner radius r, w outer radius R;
+                              // cascaded directional: x the first cascade's record, y the cascades in use
   vec4 shadow_color_density;  // rgb: shadow color sc; a: density
   vec4 shadow_bias;           // x: constant bias b0, y: slope bias b1, z: pcf radius (texels), w: light size (world units)
   uvec4 info;                 // x: type (LIGHT_*); y: falloff (FALLOFF_*); z: algorithm (SHADOW_*);
-                              // w: the shadow atlas layer of its map (or of all six cube faces), or NO_SHADOW_MAP
+                              // w: the shadow atlas layer of its map (or of all six cube faces), NO_SHADOW_MAP
+                              // or CASCADED_SHADOW_MAPS
   vec4 shadow_rect;           // xy: 2D maps' uv offset in the layer; zw: uv scale of its (each face's) tile
   vec4 shadow_depth;          // x: near, y: far, z: texel size in uv of the light's map (1/resolution),
                               // w: 0 perspective, 1 orthographic

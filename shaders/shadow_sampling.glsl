@@ -340,13 +340,56 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter) {
   return sum / float(filter_taps);
 }
 
-float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
-  MapPoint point;
-  if (!project_to_map(light, world_pos, normal, point)) return 0.0;
+float shadow_2d_at(Light light, MapPoint point, float bias, uint algorithm) {
   if (algorithm == SHADOW_HARD) return shadow_2d_hard(light, point, bias);
   if (algorithm == SHADOW_PCF) return shadow_2d_pcf(light, point, bias);
   if (algorithm == SHADOW_NOISE) return shadow_2d_noise(light, point, bias);
   return shadow_2d_pcss(light, point, bias, algorithm == SHADOW_PCSS_NOISE);
+}
+
+float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
+  MapPoint point;
+  if (!project_to_map(light, world_pos, normal, point)) return 0.0;
+  return shadow_2d_at(light, point, bias, algorithm);
+}
+
+// ---- cascades (directional lights, systems/shadows/cascades.h) ----
+
+// sg::shadows::cascade_edge_uv and cascade_blend_uv.
+const float CASCADE_EDGE_UV = 1.0 / 64.0;
+const float CASCADE_BLEND_UV = 1.0 / 10.0;
+
+// `light` with cascade k's map in its shadow fields.
+Light cascade_of(Light light, uint k) {
+  Light cascade = light_at(uint(light.shape.x) + k);
+  light.info.w = cascade.info.w;
+  light.shadow_rect = cascade.shadow_rect;
+  light.shadow_depth = cascade.shadow_depth;
+  light.shadow_matrix = cascade.shadow_matrix;
+  return light;
+}
+
+// The nearest cascade whose map holds the point at least CASCADE_EDGE_UV inside its edge (any
+// point of the last), faded into the next over CASCADE_BLEND_UV beyond that. What a fading
+// cascade leaves goes to the next that holds the point; where none does, the shade is what the
+// cascades that did hold it give. Lit where none holds it.
+float shadow_cascades(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
+  uint count = uint(light.shape.y);
+  float shade = 0.0;
+  float owed = 1.0;  // the share of the shade not yet taken from a cascade
+  for (uint k = 0u; k < count && owed > 0.0; ++k) {
+    Light cascade = cascade_of(light, k);
+    MapPoint point;
+    if (cascade.info.w == NO_SHADOW_MAP || !project_to_map(cascade, world_pos, normal, point)) continue;
+    vec2 to_edge = min(point.uv, 1.0 - point.uv);
+    float inside = min(to_edge.x, to_edge.y) - CASCADE_EDGE_UV;
+    bool last = k + 1u == count;
+    if (inside < 0.0 && !last) continue;
+    float share = last ? 1.0 : min(inside / CASCADE_BLEND_UV, 1.0);
+    shade += owed * share * shadow_2d_at(cascade, point, bias, algorithm);
+    owed *= 1.0 - share;
+  }
+  return owed < 1.0 ? shade / (1.0 - owed) : 0.0;
 }
 
 // ---- cube maps (point lights) ----
@@ -517,6 +560,9 @@ float light_shadow_as(Light light, vec3 world_pos, vec3 normal, float n_dot_l, u
   if (shadow_kind == SHADOW_KIND_NONE) return 0.0;
   float bias = shadow_bias(n_dot_l, light.shadow_bias.x, light.shadow_bias.y);
   if (shadow_kind == SHADOW_KIND_CUBE) return shadow_cube(light, world_pos, normal, bias, algorithm);
+  if ((LIGHT_TYPES & (1u << LIGHT_DIRECTIONAL)) != 0u && light.info.w == CASCADED_SHADOW_MAPS) {
+    return shadow_cascades(light, world_pos, normal, bias, algorithm);
+  }
   return shadow_2d(light, world_pos, normal, bias, algorithm);
 }
 

@@ -5,6 +5,7 @@
 
 #include "rendergraph/device/context.h"
 #include "systems/lighting/tiled_lighting_pass.h"
+#include "systems/shadows/cascades.h"
 
 namespace sg {
 namespace {
@@ -97,6 +98,11 @@ std::vector<Setting<S>> make_table() {
           "algorithm", [](auto& s) -> auto& { return s.algorithm; },
           "every light starts with this shadow algorithm (default: each light's own, from the "
           "scene); the light panel and scripts may change it afterwards"),
+      whole<S>(
+          "cascades", "N", [](auto& s) -> auto& { return s.cascades; }, 1, shadows::max_cascades,
+          "every directional light starts with at most N cascaded maps over the view's depth (1: one "
+          "map fitted to the whole scene; default: each light's own, 4 unless the scene says); the "
+          "light panel may change it afterwards"),
       on_off<S>(
           "shadows", [](auto& s) -> auto& { return s.renderer.lights.shadows; },
           "off: no light casts a shadow, for comparisons"),

@@ -35,6 +35,8 @@ struct FrameSettings {
   // Every light's algorithm, set once when the scene loads (load_scene_view): the panels and
   // scripts may change it afterwards.
   std::optional<scene::ShadowAlgorithm> algorithm;
+  // Every directional light's most cascades (ShadowSettings::cascades), set once as `algorithm`.
+  std::optional<uint32_t> cascades;
   bool animate = true;  // off: glTF animations and the stress scene's orbits stand still
   bool naive = false;   // the renderer runs naive_baseline(renderer): the source documents' frame
   RendererSettings renderer;

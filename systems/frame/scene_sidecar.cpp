@@ -78,6 +78,7 @@ Json light_json(const scene::Scene& scene, const std::string& name, ecs::Entity 
                      {"density", s.density},
                      {"shadow_color", vec(s.shadow_color)},
                      {"resolution", s.resolution},
+                     {"cascades", s.cascades},
                      {"casts_shadow", s.casts_shadow}};
   return light;
 }
@@ -171,6 +172,11 @@ class Reader {
       const float resolution = number(s, "resolution", where, float(light.shadow.resolution));
       if (resolution < 1.0f || resolution > 16384.0f) fail(where + ".resolution", "is not within 1 .. 16384");
       light.shadow.resolution = static_cast<uint32_t>(resolution);
+      const float cascades = number(s, "cascades", where, float(light.shadow.cascades));
+      if (cascades < 1.0f || cascades > float(scene::max_shadow_cascades)) {
+        fail(where + ".cascades", "is not within 1 .. " + std::to_string(scene::max_shadow_cascades));
+      }
+      light.shadow.cascades = static_cast<uint32_t>(cascades);
       light.shadow.casts_shadow = s.value("casts_shadow", true);
     }
     return light;

@@ -102,6 +102,12 @@ SceneView load_scene_view(const FrameSettings& settings, float aspect) {
     result.scene.world.query<scene::ShadowSettings>().for_each(
         [&](scene::ShadowSettings& shadow) { shadow.algorithm = *settings.algorithm; });
   }
+  if (settings.cascades) {
+    result.scene.world.query<const scene::DirectionalLight, scene::ShadowSettings>().for_each(
+        [&](const scene::DirectionalLight&, scene::ShadowSettings& shadow) {
+          shadow.cascades = *settings.cascades;
+        });
+  }
   return result;
 }
 

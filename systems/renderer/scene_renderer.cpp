@@ -138,6 +138,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   const float aspect = float(width) / float(std::max(height, 1u));
   const shadows::ShadowCamera camera{pose.eye, projection_matrix(lens, aspect) * view_matrix(pose),
                                      float(height) / lens.yfov};
+  shadows::place_cascades(lights_, shadows::cascade_camera(pose, lens, aspect), gpu_scene_.bounds());
   schedule_.schedule(lights_, camera, casters, settings_.shadow_view_budget, &workers_);
   if (atlas_.fit(schedule_.pages_used())) {
     // A new image holds nothing: every map is drawn again, this frame.
@@ -152,13 +153,15 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   cpu_steps_.schedule = lap(mark);
 
   gpu_scene_.upload(slot, &workers_);
-  if (lights_.records.size() > max_light_records_) {
-    throw std::runtime_error(std::to_string(lights_.records.size()) +
-                             " lights, but this device's texel buffers hold " +
+  if (lights_.records.size() + lights_.cascades.size() > max_light_records_) {
+    throw std::runtime_error(std::to_string(lights_.records.size()) + " lights and " +
+                             std::to_string(lights_.cascades.size()) +
+                             " cascades, but this device's texel buffers hold " +
                              std::to_string(max_light_records_) + " light records");
   }
   const vk::Buffer& records =
-      write_in_pieces(light_records_, slot, std::span<const shadows::GpuLight>(lights_.records), &workers_);
+      write_in_pieces(light_records_, slot, std::span<const shadows::GpuLight>(lights_.records), &workers_,
+                      std::span<const shadows::GpuLight>(lights_.cascades));
   cpu_steps_.upload = lap(mark);
   const uint32_t page_size = atlas_.shape().page_size;
   if (batch_) {

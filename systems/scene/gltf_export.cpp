@@ -55,6 +55,7 @@ nlohmann::json shadow_json(const ShadowSettings& s) {
           {"density", s.density},
           {"shadow_color", vec3(s.shadow_color)},
           {"resolution", s.resolution},
+          {"cascades", s.cascades},
           {"casts_shadow", s.casts_shadow}};
 }
 

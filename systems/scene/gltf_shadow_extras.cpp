@@ -108,6 +108,9 @@ void read_keys(const ExtrasReader& reader, ShadowSettings& settings) {
   if (const auto resolution = reader.number("resolution", 16.0f, 16384.0f)) {
     settings.resolution = static_cast<std::uint32_t>(std::lround(*resolution));
   }
+  if (const auto cascades = reader.number("cascades", 1.0f, float(max_shadow_cascades))) {
+    settings.cascades = static_cast<std::uint32_t>(std::lround(*cascades));
+  }
   if (const nlohmann::json* found = reader.find("algorithm")) {
     const auto parsed =
         found->is_string() ? parse_enum<ShadowAlgorithm>(found->get<std::string>()) : std::nullopt;

@@ -22,6 +22,9 @@ constexpr EnumNames<ShadowAlgorithm, 5> enum_names(ShadowAlgorithm) {
 }
 inline constexpr auto all_shadow_algorithms = enum_values<ShadowAlgorithm>();
 
+// The most cascaded maps a directional light may have (ShadowSettings::cascades).
+inline constexpr std::uint32_t max_shadow_cascades = 4;
+
 // Biases are in normalized linear depth, so that one value means the same distance anywhere in
 // a map: view depth / far for spot maps, depth across near..far for orthographic maps
 // (directional, cylinder), distance / range for point lights (shaders/shadow_sampling.glsl).
@@ -37,6 +40,11 @@ struct ShadowSettings {
   float density = 1.0f;             // [0, 1]; 0 removes the shadow, 1 the full darkening
   glm::vec3 shadow_color{0.0f};     // linear RGB blended into shadowed points
   std::uint32_t resolution = 1024;  // texels per side requested (a hint to the allocator)
+  // Directional lights: at most this many cascaded maps over the view's depth (1 to
+  // max_shadow_cascades; 1: one map fitted to the whole scene). Each asks for `resolution`; a
+  // view that gains little from more (a camera far from the scene) uses fewer
+  // (systems/shadows/cascades.h).
+  std::uint32_t cascades = 4;
   bool casts_shadow = true;
 };
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <string>
 #include <type_traits>
 #include <utility>
 
@@ -15,6 +16,11 @@ namespace sg::shadows {
 namespace {
 
 constexpr glm::vec4 unbounded_reach{0.0f, 0.0f, 0.0f, -1.0f};
+
+// What maps are fitted around when the scene has no drawables.
+scene::Aabb or_unit_box(const scene::Aabb& bounds) {
+  return bounds.empty() ? scene::Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)} : bounds;
+}
 
 uint32_t clamp_resolution(uint32_t requested, uint32_t limit) {
   return std::clamp(requested, min_shadow_resolution, limit);
@@ -47,15 +53,33 @@ bool changed_since(const ecs::World& world, ecs::Entity entity, ecs::Tick since)
                    world.change_tick<scene::ShadowSettings>(entity)}) >= since;
 }
 
+// How many views a light gets: a directional light one per cascade, others one.
+template <class Light>
+uint32_t views_of(const scene::ShadowSettings& shadow) {
+  if constexpr (std::is_same_v<Light, scene::DirectionalLight>) {
+    return std::clamp<uint32_t>(shadow.cascades, 1, max_cascades);
+  }
+  return 1;
+}
+
 // Every light of the frame, in the order the records take: spot, directional, cylinder, point
-// lights, each in the world's order. A shadowed light's `view` indexes maps (or cubes).
+// lights, each in the world's order. A shadowed light's `view` indexes maps (or cubes); a
+// cascaded one's cascades follow `cascades`.
 template <class Light>
 void collect(const ecs::World& world, const LightOverrides& overrides, GatheredLight::Kind kind,
-             std::vector<GatheredLight>& gathered, uint32_t& views) {
+             std::vector<GatheredLight>& gathered, uint32_t& views, uint32_t& cascades) {
   world.query<const ecs::WorldTransform, const Light, const scene::ShadowSettings>().for_each(
       [&](ecs::Entity entity, const ecs::WorldTransform&, const Light&, const scene::ShadowSettings& shadow) {
         const bool shadowed = with_overrides(shadow, overrides).casts_shadow;
-        gathered.push_back({entity, kind, shadowed, shadowed ? views++ : 0u});
+        GatheredLight light{entity, kind, shadowed, shadowed ? views : 0u};
+        const uint32_t count = shadowed ? views_of<Light>(shadow) : 0u;
+        views += count;
+        if (count > 1) {
+          light.cascades = count;
+          light.first_cascade = cascades;
+          cascades += count;
+        }
+        gathered.push_back(light);
       });
 }
 
@@ -73,6 +97,8 @@ void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick
   map.light = index;
   map.key = light_key(light.entity);
   map.requested_resolution = clamp_resolution(s.resolution, max_map_resolution);
+  map.cascade = no_cascade;
+  map.needed = true;
   const glm::vec3 position = scene::light_position(transform);
   const glm::vec3 direction = scene::light_direction(transform);
   if constexpr (std::is_same_v<Light, scene::SpotLight>) {
@@ -80,9 +106,26 @@ void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick
     map.reach = glm::vec4(position, parameters.range);
     name_view(world, light.entity, "spot", light.view, map.name);
   } else if constexpr (std::is_same_v<Light, scene::DirectionalLight>) {
-    map.view = directional_light_view(direction, bounds);
     map.reach = unbounded_reach;
     name_view(world, light.entity, "directional", light.view, map.name);
+    if (light.cascades > 0) {
+      // Cascade views take their LightViews from place_cascades, which compares them with these.
+      out.records[index].shape = glm::vec4(float(out.records.size() + light.first_cascade), 0.0f, 0.0f, 0.0f);
+      const bool changed = changed_since<Light>(world, light.entity, since);
+      for (uint32_t k = light.cascades; k-- > 0;) {  // the first last: the others copy its name
+        ShadowMapView& cascade = out.maps[light.view + k];
+        if (k > 0) cascade.name = map.name;
+        cascade.light = index;
+        cascade.key = cascade_key(light.entity, k);
+        cascade.requested_resolution = map.requested_resolution;
+        cascade.reach = unbounded_reach;
+        cascade.cascade = light.first_cascade + k;
+        cascade.changed = changed;
+        cascade.name.append(" cascade ").append(std::to_string(k + 1));
+      }
+      return;
+    }
+    map.view = directional_light_view(direction, bounds);
   } else {
     map.view = cylinder_light_view(position, direction, parameters.outer_radius, bounds);
     map.reach = unbounded_reach;
@@ -137,12 +180,15 @@ ShadowKind shadow_kind(const GpuLight& record) {
 
 uint64_t light_key(ecs::Entity entity) { return ecs::entity_key(entity); }
 
+uint64_t cascade_key(ecs::Entity entity, uint32_t cascade) {
+  return ecs::entity_key(entity) | uint64_t{cascade + 1} << 60;
+}
+
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
                    FrameLights& out, jobs::ThreadPool* pool) {
   const ecs::Tick since = out.gathered_at;
   out.gathered_at = world.tick();
-  const scene::Aabb bounds =
-      scene_bounds.empty() ? scene::Aabb{glm::vec3(-1.0f), glm::vec3(1.0f)} : scene_bounds;
+  const scene::Aabb bounds = or_unit_box(scene_bounds);
 
   // The order and places first, on this thread; then each light's record and view, which are
   // independent (packing, view matrices, change ticks, names), in chunks on the pool.
@@ -150,13 +196,19 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
   gathered.clear();
   uint32_t maps = 0;
   uint32_t cubes = 0;
-  collect<scene::SpotLight>(world, overrides, GatheredLight::spot, gathered, maps);
-  collect<scene::DirectionalLight>(world, overrides, GatheredLight::directional, gathered, maps);
-  collect<scene::CylinderLight>(world, overrides, GatheredLight::cylinder, gathered, maps);
-  collect<scene::PointLight>(world, overrides, GatheredLight::point, gathered, cubes);
+  uint32_t cascades = 0;
+  collect<scene::SpotLight>(world, overrides, GatheredLight::spot, gathered, maps, cascades);
+  collect<scene::DirectionalLight>(world, overrides, GatheredLight::directional, gathered, maps, cascades);
+  collect<scene::CylinderLight>(world, overrides, GatheredLight::cylinder, gathered, maps, cascades);
+  collect<scene::PointLight>(world, overrides, GatheredLight::point, gathered, cubes, cascades);
   out.records.resize(gathered.size());
   out.maps.resize(maps);  // shrinking keeps the survivors' name storage for reuse
   out.cubes.resize(cubes);
+  out.cascades.resize(cascades);
+  out.cascaded.clear();
+  for (uint32_t i = 0; i < gathered.size(); ++i) {
+    if (gathered[i].cascades > 0) out.cascaded.push_back({i, gathered[i].view, gathered[i].cascades});
+  }
   FrameLights::Scratch& scratch = out.scratch;
   const bool same_lights = gathered == scratch.last_gathered && overrides == scratch.last_overrides;
   scratch.packed.resize(gathered.size());
@@ -201,6 +253,24 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
   });
   std::swap(scratch.last_gathered, gathered);  // this list is cleared and refilled next time
   scratch.last_overrides = overrides;
+}
+
+void place_cascades(FrameLights& lights, const CascadeCamera& camera, const scene::Aabb& scene_bounds) {
+  const scene::Aabb bounds = or_unit_box(scene_bounds);
+  for (const FrameLights::CascadedLight& light : lights.cascaded) {
+    GpuLight& record = lights.records[light.record];
+    const CascadeFit fit = fit_cascades(glm::vec3(record.direction_type), bounds, camera, light.views);
+    record.shape.y = float(fit.count);
+    for (uint32_t k = 0; k < light.views; ++k) {
+      ShadowMapView& map = lights.maps[light.first_view + k];
+      map.needed = k < fit.count;
+      if (!map.needed) continue;
+      const LightView& view = fit.views[k];
+      map.changed = map.changed || view.view != map.view.view || view.projection != map.view.projection ||
+                    view.near != map.view.near || view.far != map.view.far;
+      map.view = view;
+    }
+  }
 }
 
 void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
@@ -265,6 +335,7 @@ void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
       light = scratch.moved_to[light];
     }
   });
+  for (FrameLights::CascadedLight& light : out.cascaded) light.record = scratch.moved_to[light.record];
 }
 
 }  // namespace sg::shadows

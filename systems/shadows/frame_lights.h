@@ -21,6 +21,7 @@
 #include "ecs/world.h"
 #include "systems/scene/aabb.h"
 #include "systems/scene/shadow_settings.h"
+#include "systems/shadows/cascades.h"
 #include "systems/shadows/gpu_light.h"
 #include "systems/shadows/light_groups.h"
 #include "systems/shadows/light_views.h"
@@ -43,8 +44,14 @@ inline constexpr uint32_t max_map_resolution = 4096;
 inline constexpr uint32_t max_cube_resolution = 2048;
 
 // The key of a light's shadow views (ShadowMapView::key, ShadowCubeView::key): its entity, the
-// same from frame to frame.
+// same from frame to frame; cascade k of a directional light's has k + 1 in its top four bits.
 uint64_t light_key(ecs::Entity entity);
+uint64_t cascade_key(ecs::Entity entity, uint32_t cascade);
+// The light key of a view's key: a cascade's without its cascade bits.
+constexpr uint64_t view_light_key(uint64_t view_key) { return view_key & ((uint64_t{1} << 60) - 1); }
+
+// ShadowMapView::cascade of a view that is no cascade.
+inline constexpr uint32_t no_cascade = UINT32_MAX;
 
 struct ShadowMapView {
   uint32_t light = 0;                 // index into FrameLights::records
@@ -57,6 +64,11 @@ struct ShadowMapView {
   // Its transform, light or shadow settings were written in or after the last gather's tick (a
   // write in that tick may have come after the gather). Systems advance the tick before gathering.
   bool changed = false;
+  // A cascade's record in FrameLights::cascades, where the schedule writes its map (no_cascade:
+  // the view's map is its light's, in the light's record), and whether the view needs it this
+  // frame (place_cascades: a view near the scene may use fewer cascades than the light allows).
+  uint32_t cascade = no_cascade;
+  bool needed = true;
   // From ShadowSchedule: its importance (light_importance: pixels on screen, 0 out of sight), its
   // tile (resolution 0: no shadow this frame), whether it renders, and whether the render may draw
   // just the moving casters over the map's static layer (ShadowRender::draw_moving_casters; `view`
@@ -93,6 +105,10 @@ struct GatheredLight {
   Kind kind = spot;
   bool shadowed = false;
   uint32_t view = 0;
+  // A cascaded directional light's views are maps [view, view + cascades), their records
+  // FrameLights::cascades [first_cascade, first_cascade + cascades); 0 for other lights.
+  uint32_t cascades = 0;
+  uint32_t first_cascade = 0;
 
   friend bool operator==(const GatheredLight&, const GatheredLight&) = default;
 };
@@ -107,6 +123,16 @@ struct FrameLights {
   std::array<uint32_t, light_group_count> group_types{};
   std::vector<ShadowMapView> maps;
   std::vector<ShadowCubeView> cubes;
+  // The cascades' records (cascades.h), uploaded right after `records`: a cascaded light's
+  // record holds the index of its first one there (records.size() + its place here) and how
+  // many the view uses (light_record.glsl). Each row of `cascaded` is one cascaded light.
+  std::vector<GpuLight> cascades;
+  struct CascadedLight {
+    uint32_t record = 0;      // its record in `records`
+    uint32_t first_view = 0;  // its views in `maps`, one per cascade
+    uint32_t views = 0;
+  };
+  std::vector<CascadedLight> cascaded;
   ecs::Tick gathered_at = 0;  // the world's tick at the last gather: `changed` compares with it
 
   // gather_lights' working storage, kept so that a frame allocates nothing once it has grown.
@@ -134,6 +160,9 @@ struct FrameLights {
 // records and views are filled in chunks on it (the result is the same); `world` must not change
 // meanwhile.
 //
+// A directional light with ShadowSettings::cascades above 1 gets that many views, one per
+// cascade, whose LightViews place_cascades sets once the frame's camera is known.
+//
 // When the world lists the same lights as at the last gather into `out` (same entities, order
 // and shadowed ones) with the same overrides, a spot or point light none of whose components
 // (transform, light, shadow settings, name) was written since keeps its view and its packed
@@ -141,6 +170,12 @@ struct FrameLights {
 // however ShadowSchedule and sort_by_group changed `out` in between.
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
                    FrameLights& out, jobs::ThreadPool* pool = nullptr);
+
+// Fits the cascades of every cascaded directional light to `camera` over the scene within
+// `scene_bounds` (fit_cascades): each cascade view's LightView, `needed` and `changed` (its view
+// is not the one it had) and the light's record's count of cascades. Between gather_lights and
+// the schedule, which gives the cascades' records their maps.
+void place_cascades(FrameLights& lights, const CascadeCamera& camera, const scene::Aabb& scene_bounds);
 
 // Orders the records by light group (stably, so lights keep the world's order within a group),
 // from each record's type, algorithm and whether it has a shadow map, and points the views at

@@ -22,6 +22,9 @@ enum class GpuLightType : std::uint32_t { point = 0, spot = 1, directional = 2, 
 
 // info.w of a light that casts no shadow (NO_SHADOW_MAP in light_record.glsl).
 inline constexpr std::uint32_t no_shadow_map = 0xFFFFFFFFu;
+// info.w of a directional light whose maps are cascades (CASCADED_SHADOW_MAPS): each has a record
+// of its own (FrameLights::cascades), shape.x the first one's index and shape.y their count.
+inline constexpr std::uint32_t cascaded_shadow_maps = 0xFFFFFFFEu;
 
 struct GpuLight {
   glm::vec4 position_range{0.0f};

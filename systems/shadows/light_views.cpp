@@ -60,6 +60,21 @@ LightView directional_light_view(glm::vec3 direction, const scene::Aabb& bounds)
   return light;
 }
 
+LightView directional_slice_view(glm::vec3 direction, const scene::Aabb& bounds, glm::vec3 centre,
+                                 float half_extent, float snap) {
+  LightView light = directional_light_view(direction, bounds);
+  // The lattice is fixed in the light's rotation alone, so that it stays where it is when the
+  // scene's bounds (the view's origin) change. The view moves the square's centre to the axis,
+  // so that the projection, symmetric, is the same bit for bit wherever the square lies.
+  const glm::mat3 rotation(light.view);
+  const glm::vec2 snapped = glm::round(glm::vec2(rotation * centre) / snap) * snap;
+  const glm::vec2 middle = snapped + glm::vec2(light.view[3]);
+  light.view = glm::translate(glm::mat4(1.0f), glm::vec3(-middle, 0.0f)) * light.view;
+  light.projection =
+      flip_y(glm::orthoRH_ZO(-half_extent, half_extent, -half_extent, half_extent, light.near, light.far));
+  return light;
+}
+
 LightView cylinder_light_view(glm::vec3 position, glm::vec3 direction, float outer_radius,
                               const scene::Aabb& bounds) {
   LightView light;

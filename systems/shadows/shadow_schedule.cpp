@@ -79,7 +79,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     for (size_t v = begin; v < end; ++v) {
       if (v < map_count) {
         ShadowMapView& map = lights.maps[v];
-        map.importance = importance_in(map.reach, camera, frustum);
+        map.importance = map.needed ? importance_in(map.reach, camera, frustum) : 0.0f;
         view_requests_[v] = {map.key,
                              false,
                              map.requested_resolution,
@@ -181,6 +181,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     for (size_t v = begin; v < end; ++v) {
       if (v < map_count) {
         ShadowMapView& map = lights.maps[v];
+        if (map.cascade != no_cascade) lights.cascades[map.cascade] = GpuLight{};  // no map unless given one
         apply(request_of_[v], map, [&](const ShadowPlacement& placement) {
           map.tile = placement.tiles[0];
           RenderedMap& rendered = rendered_maps_[v];
@@ -191,8 +192,10 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
           } else if (map.render) {
             rendered.view = map.view;
           }
-          set_shadow_map(lights.records[map.light], map.tile.page, tile_uv_rect(map.tile, page_size_),
-                         map.resolution, rendered.view);
+          GpuLight& record =
+              map.cascade == no_cascade ? lights.records[map.light] : lights.cascades[map.cascade];
+          set_shadow_map(record, map.tile.page, tile_uv_rect(map.tile, page_size_), map.resolution,
+                         rendered.view);
         });
         continue;
       }
@@ -216,13 +219,26 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     }
   });
 
+  // A cascaded light is shadowed where any of its cascades has a map.
+  uint32_t idle_cascades = 0;
+  for (const FrameLights::CascadedLight& light : lights.cascaded) {
+    const auto first = lights.maps.begin() + light.first_view;
+    const bool any = std::any_of(first, first + light.views, [&](const ShadowMapView& map) {
+      return lights.cascades[map.cascade].info.w != no_shadow_map;
+    });
+    lights.records[light.record].info.w = any ? cascaded_shadow_maps : no_shadow_map;
+    idle_cascades += static_cast<uint32_t>(
+        std::count_if(first, first + light.views, [](const ShadowMapView& map) { return !map.needed; }));
+  }
+
   // The frame's counts are the planner's (tiles) and the cache's (renders): every view without a
   // request has no shadow, and every request is one view's.
   const AtlasStats& atlas = planner_.stats();
   const ShadowCacheStats& cache = cache_.stats();
   stats_ = {};
   stats_.lights_without_shadow =
-      static_cast<uint32_t>(view_count - requests_.size()) + atlas.lights_without_shadow;
+      static_cast<uint32_t>(view_count - requests_.size()) - idle_cascades + atlas.lights_without_shadow;
+  stats_.cascades = static_cast<uint32_t>(lights.cascades.size()) - idle_cascades;
   stats_.lights_waiting = cache.lights_unavailable;
   stats_.views_rendered = cache.views_rendered;
   stats_.views_cached = cache.views_cached;

@@ -48,6 +48,9 @@ struct ShadowScheduleStats {
   uint32_t views_cached = 0;           // shadowed views kept from an earlier frame
   uint32_t lights_without_shadow = 0;  // out of sight, or over the memory budget
   uint32_t lights_waiting = 0;         // have a tile, nothing valid in it yet (the view budget)
+  // Cascades of directional lights the view uses (cascades.h). Each counts as a light in the
+  // other counts here: it has a tile of its own, is redrawn on its own and may wait on its own.
+  uint32_t cascades = 0;
   // Over the lights whose maps were due this frame, how many frames each map has been wrong
   // (ShadowCacheStats: 0 when rendered now): median, 99th percentile, most.
   uint32_t lights_due = 0;

@@ -97,6 +97,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                    {{64, 200}, {256, 10}},
                    3,
                    2,
+                   4,
                    TimeSummary{100.0, 50.0, 3584.0},
                    TimeSummary{20.0, 0.0, 40.0},
                    TimeSummary{60.0, 6.0, 600.0},
@@ -172,7 +173,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                                                  {"lighting", "deferred"},
                                                  {"camera", nullptr}}));
   const nlohmann::json& shadows = json.at("shadows");
-  EXPECT_EQ(shadows.size(), 15u) << shadows.dump(2);
+  EXPECT_EQ(shadows.size(), 16u) << shadows.dump(2);
   EXPECT_EQ(shadows.at("views"), "batched");
   EXPECT_EQ(shadows.at("raster"), "compute");
   EXPECT_EQ(shadows.at("budget_bytes"), 1ull << 30);
@@ -182,6 +183,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(shadows.at("lights_per_resolution"), nlohmann::json({{"64", 200}, {"256", 10}}));
   EXPECT_EQ(shadows.at("lights_without_shadow"), 3);
   EXPECT_EQ(shadows.at("lights_waiting"), 2);
+  EXPECT_EQ(shadows.at("cascades"), 4);
   expect_summary(shadows.at("views_rendered"), *stats.shadows.views_rendered);
   expect_summary(shadows.at("views_cached"), *stats.shadows.views_cached);
   expect_summary(shadows.at("views_moving_only"), *stats.shadows.views_moving_only);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The shadow tests' scene: a grey floor (its top at y = 0, 20 x 20 m), a box above it and one
-// spot or point light, seen from above at an angle; and its exact CPU reference
+// spot, point or directional light, seen from above at an angle; and its exact CPU reference
 // (shadow_reference.h). Shared by the shadow algorithm tests and the ray-traced reference's.
 #include <cstdint>
 
@@ -16,7 +16,7 @@ namespace sg::test {
 
 inline constexpr float floor_half_extent = 10.0f;
 
-enum class LightKind { spot, point };
+enum class LightKind { spot, point, directional };
 
 struct ShadowScene {
   LightKind kind = LightKind::spot;
@@ -25,8 +25,14 @@ struct ShadowScene {
   float box_bottom = 1.0f;  // height of the occluder's underside above the floor
   float intensity = 1.6f;
   bool with_box = true;
-  glm::vec3 aim{0.0f, -1.0f, 0.001f};  // the spot's direction
+  glm::vec3 aim{0.0f, -1.0f, 0.001f};  // the spot's or directional light's direction
+  // Above floor_half_extent: two small boxes at (+-scene_half_extent, 0, +-scene_half_extent),
+  // out of the camera's sight, widen the scene's bounds (and a directional light's fitted map).
+  float scene_half_extent = 0.0f;
 };
+
+// Where the reference puts `s`'s light: a directional light's far along its rays.
+glm::vec3 reference_light_position(const ShadowScene& s);
 
 // The occluder: a 1.6 x 0.5 x 1.2 m box turned 0.5 rad about +Y, its underside at box_bottom.
 ecs::LocalTransform box_placement(const ShadowScene& s);

@@ -52,7 +52,14 @@ std::vector<FrameLight> frame_lights(const shadows::FrameLights& lights) {
     light.algorithm = static_cast<scene::ShadowAlgorithm>(gpu.info.z);
     light.resolution = resolution;
   };
-  for (const shadows::ShadowMapView& map : lights.maps) add(map.light, map.name, map.resolution);
+  for (const shadows::ShadowMapView& map : lights.maps) {
+    if (map.cascade == shadows::no_cascade) add(map.light, map.name, map.resolution);
+  }
+  // A cascaded light is one row, named as the light, at its nearest cascade's resolution.
+  for (const shadows::FrameLights::CascadedLight& light : lights.cascaded) {
+    const shadows::ShadowMapView& nearest = lights.maps[light.first_view];
+    add(light.record, nearest.name.substr(0, nearest.name.rfind(" cascade ")), nearest.resolution);
+  }
   for (const shadows::ShadowCubeView& cube : lights.cubes) add(cube.light, cube.name, cube.resolution);
   return out;
 }

@@ -43,6 +43,7 @@ TEST(SceneSidecar, EditedLightsAndCameraComeBack) {
     edited.world.get_mut<ecs::LocalTransform>(spot).translation = {3, 3, 1};
     edited.world.get_mut<scene::SpotLight>(spot).outer_cone = 0.5f;
     edited.world.destroy(named(edited, "beam"));
+    edited.world.get_mut<scene::ShadowSettings>(named(edited, "sun")).cascades = 2;
     scene::add_light(edited, scene::PointLight{glm::vec3(1, 0, 0), 2.0f, 4.0f},
                      ecs::LocalTransform{{1, 2, 3}}, {}, "added");
     save_sidecar(path, edited, {{1, 5, 6}, {0, 0, 0}, {0, 1, 0}});
@@ -57,6 +58,7 @@ TEST(SceneSidecar, EditedLightsAndCameraComeBack) {
   EXPECT_EQ(fresh.world.get<ecs::LocalTransform>(spot).translation, glm::vec3(3, 3, 1));
   EXPECT_FLOAT_EQ(fresh.world.get<scene::SpotLight>(spot).outer_cone, 0.5f);
   EXPECT_EQ(named(fresh, "beam"), ecs::null_entity);
+  EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(named(fresh, "sun")).cascades, 2u);
   const ecs::Entity added = named(fresh, "added");
   ASSERT_NE(added, ecs::null_entity);
   EXPECT_FLOAT_EQ(fresh.world.get<scene::PointLight>(added).range, 4.0f);
@@ -87,6 +89,9 @@ TEST(SceneSidecar, MalformedFilesAreRefusedLeavingTheSceneAsItWas) {
             std::string::npos);
   EXPECT_NE(refusal(R"({"lights": [{"name": "x", "type": "point", "shadow": {"algorithm": "soft"}}]})")
                 .find("lights[0].shadow.algorithm"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"lights": [{"name": "x", "type": "directional", "shadow": {"cascades": 5}}]})")
+                .find("lights[0].shadow.cascades: is not within 1 .. 4"),
             std::string::npos);
   EXPECT_NE(refusal(R"({"camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}})").find("camera"),
             std::string::npos);

@@ -306,7 +306,8 @@ TEST(GltfImport, EachLightTypeWithShadowExtras) {
                   {"range", 12},
                   {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}},
                   {"extras", {{"algorithm", "noise"}}}});
-  file.add_light({{"type", "directional"}, {"intensity", 3}, {"extras", {{"algorithm", "hard"}}}});
+  file.add_light(
+      {{"type", "directional"}, {"intensity", 3}, {"extras", {{"algorithm", "hard"}, {"cascades", 2}}}});
   // Rotated -90 degrees about X: -Z turns to -Y, the light points down.
   const nlohmann::json down = {-0.7071068, 0, 0, 0.7071068};
   file.add_node({{"translation", {1, 2, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
@@ -347,6 +348,7 @@ TEST(GltfImport, EachLightTypeWithShadowExtras) {
       [](const DirectionalLight& sun, const ShadowSettings& settings) {
         EXPECT_FLOAT_EQ(sun.intensity, 3.0f);
         EXPECT_EQ(settings.algorithm, ShadowAlgorithm::hard);
+        EXPECT_EQ(settings.cascades, 2u);
       });
   const SceneStats stats = scene_stats(scene);
   EXPECT_EQ(stats.point_lights, 1u);
@@ -386,7 +388,7 @@ TEST(GltfImport, OddLightValuesAreClampedWithWarnings) {
   file.add_light({{"type", "spot"},
                   {"color", {2, 0.5, -1}},
                   {"spot", {{"innerConeAngle", 0.5}, {"outerConeAngle", 0.5}}},
-                  {"extras", {{"algorithm", "soft"}, {"density", 3}, {"resolution", 1e9}}}});
+                  {"extras", {{"algorithm", "soft"}, {"density", 3}, {"resolution", 1e9}, {"cascades", 9}}}});
   file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
   Scene scene = load_gltf(file.write_gltf(dir, "odd").string());
   const auto spots = components<SpotLight>(scene);
@@ -397,6 +399,7 @@ TEST(GltfImport, OddLightValuesAreClampedWithWarnings) {
   EXPECT_EQ(shadows[0].algorithm, ShadowAlgorithm::pcf);
   EXPECT_FLOAT_EQ(shadows[0].density, 1.0f);
   EXPECT_EQ(shadows[0].resolution, 16384u);
+  EXPECT_EQ(shadows[0].cascades, max_shadow_cascades);
   EXPECT_TRUE(has_warning(scene, "color component outside [0, 1]"));
   EXPECT_TRUE(has_warning(scene, "extras.algorithm \"soft\" is not one of"));
   EXPECT_TRUE(has_warning(scene, "extras.density"));

@@ -26,10 +26,12 @@
 namespace sg::shadows {
 namespace {
 
+// One map per light: the sun's cascades have tests of their own (cascades_test.cpp).
 scene::ShadowSettings shadow_at(uint32_t resolution, bool casts = true) {
   scene::ShadowSettings shadow;
   shadow.resolution = resolution;
   shadow.casts_shadow = casts;
+  shadow.cascades = 1;
   return shadow;
 }
 
