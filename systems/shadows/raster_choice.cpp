@@ -1,18 +1,29 @@
 // SPDX-License-Identifier: MIT
 #include "systems/shadows/raster_choice.h"
 
+#include <utility>
+
 namespace sg::shadows {
 
 ShadowRaster RasterChoice::choose(uint32_t views, uint64_t large_tile_texels) {
   ++frame_;
+  if (views == 0) return raster_for_views(views, large_tile_texels);  // not measured
+  const ShadowRaster chosen = pick(views, large_tile_texels);
+  if (chosen != last_) ++cost(chosen).unsettled;
+  last_ = chosen;
+  return chosen;
+}
+
+ShadowRaster RasterChoice::pick(uint32_t views, uint64_t large_tile_texels) {
+  if (probing_ != ShadowRaster::automatic) return std::exchange(probing_, ShadowRaster::automatic);
   const ShadowRaster model = raster_for_views(views, large_tile_texels);
-  if (views == 0) return model;
   for (const ShadowRaster raster :
        {model, model == ShadowRaster::compute ? ShadowRaster::hardware : ShadowRaster::compute}) {
     const Cost& c = cost(raster);
     const bool stale = !c.known || views > 2 * uint64_t{c.views} || 2 * uint64_t{views} < c.views;
     if (stale && frame_ - last_probe_ >= (c.known ? probe_gap : first_probe_gap)) {
       last_probe_ = frame_;
+      if (raster != last_) probing_ = raster;  // its first frame is not measured: draw a second
       return raster;
     }
   }
@@ -25,6 +36,10 @@ ShadowRaster RasterChoice::choose(uint32_t views, uint64_t large_tile_texels) {
 void RasterChoice::measured(ShadowRaster raster, uint32_t views, double ms) {
   if (views == 0 || raster == ShadowRaster::automatic) return;
   Cost& c = cost(raster);
+  if (c.unsettled > 0) {
+    --c.unsettled;
+    return;
+  }
   const double per_view = ms / views;
   // Frames of one scene vary (moving lights, the cache's choice of views): an average of recent
   // ones, the newest weighing a quarter. A frame of twice or half the views is another scene,
