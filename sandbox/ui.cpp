@@ -216,8 +216,7 @@ void SandboxUi::shadow_map_panel(const ecs::World& world, const UiFacts& facts) 
   bool shown = false;
   for (const shadows::ShadowMapView& map : facts.frame_lights->maps) {
     if (shadows::view_light_key(map.key) != key || map.resolution == 0) continue;
-    if (map.cascade != shadows::no_cascade)
-      ImGui::TextUnformatted(map.name.c_str() + map.name.rfind("cascade"));
+    if (const uint32_t cascade = shadows::view_cascade_number(map.key)) ImGui::Text("cascade %u", cascade);
     ImGui::Text("%u x %u texels, layer %u", map.resolution, map.resolution, map.tile.page);
     image(map.tile, {map.tile.page, map.view.near, map.view.far, map.view.orthographic}, 256.0f);
     shown = true;

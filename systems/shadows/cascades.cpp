@@ -83,8 +83,8 @@ CascadeFit fit_cascades(glm::vec3 direction, const scene::Aabb& bounds, const Ca
       break;
     }
     const glm::vec3 centre = camera.eye + camera.forward * sphere.x;
-    fit.views[k] = directional_slice_view(direction, bounds, centre, half_extent,
-                                          2.0f * half_extent * cascade_snap_fraction);
+    fit.views[k] =
+        directional_slice_view(whole, centre, half_extent, 2.0f * half_extent * cascade_snap_fraction);
   }
   return fit;
 }

@@ -181,7 +181,7 @@ ShadowKind shadow_kind(const GpuLight& record) {
 uint64_t light_key(ecs::Entity entity) { return ecs::entity_key(entity); }
 
 uint64_t cascade_key(ecs::Entity entity, uint32_t cascade) {
-  return ecs::entity_key(entity) | uint64_t{cascade + 1} << 60;
+  return ecs::entity_key(entity) | uint64_t{cascade + 1} << cascade_key_shift;
 }
 
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
@@ -265,10 +265,8 @@ void place_cascades(FrameLights& lights, const CascadeCamera& camera, const scen
       ShadowMapView& map = lights.maps[light.first_view + k];
       map.needed = k < fit.count;
       if (!map.needed) continue;
-      const LightView& view = fit.views[k];
-      map.changed = map.changed || view.view != map.view.view || view.projection != map.view.projection ||
-                    view.near != map.view.near || view.far != map.view.far;
-      map.view = view;
+      map.changed = map.changed || fit.views[k] != map.view;
+      map.view = fit.views[k];
     }
   }
 }

@@ -46,9 +46,13 @@ inline constexpr uint32_t max_cube_resolution = 2048;
 // The key of a light's shadow views (ShadowMapView::key, ShadowCubeView::key): its entity, the
 // same from frame to frame; cascade k of a directional light's has k + 1 in its top four bits.
 uint64_t light_key(ecs::Entity entity);
+inline constexpr int cascade_key_shift = 60;
 uint64_t cascade_key(ecs::Entity entity, uint32_t cascade);
-// The light key of a view's key: a cascade's without its cascade bits.
-constexpr uint64_t view_light_key(uint64_t view_key) { return view_key & ((uint64_t{1} << 60) - 1); }
+// Of a view's key: its light's key, and its cascade counted from 1 (0: the view is no cascade).
+constexpr uint64_t view_light_key(uint64_t view_key) {
+  return view_key & ((uint64_t{1} << cascade_key_shift) - 1);
+}
+constexpr uint32_t view_cascade_number(uint64_t view_key) { return uint32_t(view_key >> cascade_key_shift); }
 
 // ShadowMapView::cascade of a view that is no cascade.
 inline constexpr uint32_t no_cascade = UINT32_MAX;

@@ -60,9 +60,8 @@ LightView directional_light_view(glm::vec3 direction, const scene::Aabb& bounds)
   return light;
 }
 
-LightView directional_slice_view(glm::vec3 direction, const scene::Aabb& bounds, glm::vec3 centre,
-                                 float half_extent, float snap) {
-  LightView light = directional_light_view(direction, bounds);
+LightView directional_slice_view(const LightView& whole, glm::vec3 centre, float half_extent, float snap) {
+  LightView light = whole;
   // The lattice is fixed in the light's rotation alone, so that it stays where it is when the
   // scene's bounds (the view's origin) change. The view moves the square's centre to the axis,
   // so that the projection, symmetric, is the same bit for bit wherever the square lies.

@@ -21,6 +21,8 @@ struct LightView {
   bool orthographic = false;
 
   glm::mat4 view_projection() const { return projection * view; }
+
+  friend bool operator==(const LightView&, const LightView&) = default;
 };
 
 // The near plane of perspective light maps (spot faces and cube faces) for a light of range
@@ -46,13 +48,12 @@ LightView spot_light_view(glm::vec3 position, glm::vec3 direction, float outer_c
 // not fall just outside through rounding.
 LightView directional_light_view(glm::vec3 direction, const scene::Aabb& bounds);
 
-// Orthographic map of a directional light shining along unit `direction` over part of the scene:
-// a square of half extent `half_extent` across the light around world point `centre`, its depth
-// range directional_light_view's for `bounds`. The square's centre is snapped to a lattice of
-// spacing `snap` fixed in the light's frame (a cascade, cascades.h), so that centres within one
-// lattice cell give the same map.
-LightView directional_slice_view(glm::vec3 direction, const scene::Aabb& bounds, glm::vec3 centre,
-                                 float half_extent, float snap);
+// Orthographic map of a directional light over part of the scene: `whole` (its
+// directional_light_view) narrowed to a square of half extent `half_extent` across the light
+// around world point `centre`, its depth range kept. The square's centre is snapped to a lattice
+// of spacing `snap` fixed in the light's frame (a cascade, cascades.h), so that centres within
+// one lattice cell give the same map.
+LightView directional_slice_view(const LightView& whole, glm::vec3 centre, float half_extent, float snap);
 
 // Orthographic map of a cylinder light at `position` shining along unit `direction`: a square of
 // half extent outer_radius around the beam axis, depth from the light (nothing behind it is lit,
