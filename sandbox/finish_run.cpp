@@ -82,6 +82,8 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
   stats.shadows.map_lag_p99 = summarize(timeline.lag_p99);
   stats.shadows.map_lag_max = summarize(timeline.lag_max);
   stats.shadows.lights_changed_tier = summarize(timeline.lights_changed_tier);
+  stats.shadows.lights_retiled = summarize(timeline.lights_retiled);
+  stats.shadows.atlas_repacks = timeline.atlas_repacks;
   const Frame::ShadowBudgetRecord& budgets = frame.shadow_budget_record();
   const shadows::ShadowTimeBudget& time_budget = renderer.shadow_time_budget();
   const shadows::ShadowTimeBudget::Limits& limits = time_budget.limits();
@@ -150,10 +152,10 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
       std::printf(" %u:%u", resolution, lights);
     std::printf(
         "; %u without shadow, %u waiting, %u directional cascades; views per frame rendered %.0f (moving "
-        "casters only "
-        "%.0f), cached %.0f (medians)\n",
+        "casters only %.0f), cached %.0f (medians); atlas repacked in %llu frames\n",
         s.lights_without_shadow, s.lights_waiting, s.cascades, s.views_rendered->median,
-        s.views_moving_only->median, s.views_cached->median);
+        s.views_moving_only->median, s.views_cached->median,
+        static_cast<unsigned long long>(s.atlas_repacks));
   }
   if (const RunStats::ShadowBudget& b = stats.shadow_budget;
       b.lights_demoted_by_time && (b.budget_ms || b.frames_bound_by_memory > 0)) {

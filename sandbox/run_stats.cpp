@@ -124,6 +124,8 @@ Json stats_json(const RunStats& stats) {
               {"p99", summary_json(shadows.map_lag_p99)},
               {"max", summary_json(shadows.map_lag_max)}}},
             {"lights_changed_tier", summary_json(shadows.lights_changed_tier)},
+            {"lights_retiled", summary_json(shadows.lights_retiled)},
+            {"atlas_repacks", shadows.atlas_repacks},
             {"caster_draws", shadows.caster_draws}}},
           {"shadow_budget", shadow_budget_json(stats.shadow_budget)},
           {"settings", settings}};

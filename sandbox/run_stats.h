@@ -63,6 +63,9 @@
 //                                                // each map had been wrong, 0 if drawn that frame
 //       "p50": {...}, "p99": {...}, "max": {...}},  // the frame's median, 99th percentile, most
 //     "lights_changed_tier": {...},              // per frame: lights whose resolution changed
+//     "lights_retiled": {...},                   // per frame: lights given other tiles (new,
+//                                                // resized, or moved by a repack): maps drawn anew
+//     "atlas_repacks": 0,                        // frames whose atlas placed every tile anew
 //     "caster_draws": 0                          // caster instances drawn into views, a late frame
 //   },
 //   "shadow_budget": {                           // what the two shadow budgets held down (README,
@@ -157,7 +160,8 @@ struct RunStats {
     std::optional<TimeSummary> views_moving_only;
     std::uint64_t caster_draws = 0;
     // Per frame (Frame::MapTimeline), counts summarized like times.
-    std::optional<TimeSummary> map_lag_p50, map_lag_p99, map_lag_max, lights_changed_tier;
+    std::optional<TimeSummary> map_lag_p50, map_lag_p99, map_lag_max, lights_changed_tier, lights_retiled;
+    std::uint64_t atlas_repacks = 0;  // frames
   } shadows;
 
   struct ShadowBudget {

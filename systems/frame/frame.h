@@ -122,9 +122,11 @@ class Frame {
   const std::vector<double>& shadow_views_moving_only() const { return shadow_views_moving_only_; }
   // Per recorded frame, the maps over time (shadows::ShadowScheduleStats): how many frames the
   // due maps had been wrong (median, 99th percentile, most over those lights; 0 in frames with
-  // none due), and the lights whose resolution changed.
+  // none due), the lights whose resolution changed and those given other tiles; and the frames
+  // whose atlas was repacked.
   struct MapTimeline {
-    std::vector<double> lag_p50, lag_p99, lag_max, lights_changed_tier;
+    std::vector<double> lag_p50, lag_p99, lag_max, lights_changed_tier, lights_retiled;
+    uint64_t atlas_repacks = 0;
   };
   const MapTimeline& map_timeline() const { return map_timeline_; }
   // With the GPU idle: the (tile, light) pairs the light lists of the frames recorded so far had

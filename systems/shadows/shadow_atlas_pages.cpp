@@ -69,6 +69,26 @@ bool ShadowAtlasPages::allocate_on(uint32_t page, uint32_t depth, AtlasTile& til
   return true;
 }
 
+bool ShadowAtlasPages::claim(const AtlasTile& tile) {
+  const uint32_t depth = uint32_t(std::countr_zero(page_size_ / tile.size));
+  if (tile.page >= max_pages_) return false;
+  Tree& tree = page_tree(tile.page);
+  const uint32_t i = tile.x / tile.size, j = tile.y / tile.size;
+  for (uint32_t d = 0; d < depth; ++d) {
+    const uint32_t shift = depth - d;
+    const uint32_t ai = i >> shift, aj = j >> shift;
+    const uint8_t largest = tree[node(d, ai, aj)];
+    if (largest < code(depth)) return false;  // no free block of its size below this one
+    if (largest == code(d)) {                 // entirely free: split it
+      for (uint32_t c = 0; c < 4; ++c) tree[node(d + 1, 2 * ai + (c & 1), 2 * aj + (c >> 1))] = code(d + 1);
+    }
+  }
+  if (tree[node(depth, i, j)] != code(depth)) return false;
+  tree[node(depth, i, j)] = 0;
+  update_ancestors(tree, depth, i, j);
+  return true;
+}
+
 void ShadowAtlasPages::free(const AtlasTile& tile) {
   const uint32_t depth = uint32_t(std::countr_zero(page_size_ / tile.size));
   Tree& tree = pages_[tile.page];

@@ -32,6 +32,9 @@ class ShadowAtlasPages {
   // the lowest page that has room for every one of them. False, with nothing allocated, when no
   // page below max_pages has.
   bool allocate(uint32_t size, std::span<AtlasTile> tiles);
+  // Takes this very tile (one allocate() returned before): false, with nothing taken, when any
+  // of it is not free.
+  bool claim(const AtlasTile& tile);
   // Gives back a tile that allocate() returned.
   void free(const AtlasTile& tile);
   // Gives back every tile.

@@ -96,10 +96,10 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   release_lights_not_requested();
   fit_budget(requests);
 
-  // Lights whose resolution or kind changed give their tiles back and need new ones; the others
-  // keep theirs. Which did is found on the pool, where the others' tiles (six a cube) are copied
-  // (0.07 ms on one thread with 4,096 lights, an H200 host, 2026-12-01); their tiles go back to the pages in
-  // order, here, and those still shadowed are placed anew.
+  // Lights whose resolution or kind changed need new tiles; the others keep theirs. Which did is
+  // found on the pool, where the others' tiles (six a cube) are copied (0.07 ms on one thread
+  // with 4,096 lights, an H200 host, 2026-12-01). Lights going down or out give their tiles back
+  // here; a light going up, when it is placed (grows()).
   tiles_.resize(requests.size());
   retiled_.resize(requests.size());
   const size_t retiled_count = jobs::keep_in_pieces(
@@ -118,13 +118,15 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   for (size_t r = 0; r < retiled_count; ++r) {
     const uint32_t i = retiled_[r];
     const Light& light = lights_[light_of_request_[i]];
-    if (light.resolution > 0 && !repack_pending_) {
+    if (light.resolution > 0 && !repack_pending_ && !grows(requests, i)) {
       for (uint32_t k = 0; k < tile_count(light.cube); ++k) pages_.free(light.tiles[k]);
     }
     if (resolution_[i] > 0) retiled_[changed_count++] = i;
   }
   const std::span<const uint32_t> changed(retiled_.data(), changed_count);
-  if (repack_pending_ || !place_changed_lights(requests, changed)) repack(requests);
+  held_back_ = 0;
+  repacked_ = repack_pending_ || !place_changed_lights(requests, changed);
+  if (repacked_) repack(requests);
   repack_pending_ = false;
 
   // Each request writes its placement and its own light (a key's second request has none), and
@@ -146,6 +148,7 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
                                          requests[i].cube != own.cube || placement.tiles != own.tiles);
         const bool placed_last_plan = own.placed_in_plan != 0 && own.placed_in_plan + 1 == plans_;
         if (placed_last_plan && placement.resolution != own.resolution) ++tally.changed_tier;
+        tally.retiled += placement.moved ? 1 : 0;
         own.placed_in_plan = plans_;
         own.resolution = placement.resolution;
         own.cube = requests[i].cube;
@@ -366,13 +369,42 @@ std::vector<uint32_t> ShadowAtlasPlanner::largest_first(std::span<const ShadowRe
   return ordered;
 }
 
+bool ShadowAtlasPlanner::grows(std::span<const ShadowRequest> requests, uint32_t i) const {
+  const Light& light = lights_[light_of_request_[i]];
+  return light.resolution > 0 && resolution_[i] > light.resolution && requests[i].cube == light.cube;
+}
+
 bool ShadowAtlasPlanner::place_changed_lights(std::span<const ShadowRequest> requests,
                                               std::span<const uint32_t> changed) {
+  // A full atlas's free space is in pieces (the tiles of lights that went down or out): a light
+  // that finds none of its size takes a smaller one, and a light going up keeps its tiles, both
+  // counted as demoted, instead of every light moving. A repack moves every tile, and every
+  // moved map must be drawn again: with 100,000 lights that full atlas repacked most frames and
+  // left 66,880 lights without a map at frame 300 (H200, 2026-12-02).
   for (const uint32_t i : largest_first(requests, changed)) {
-    tiles_[i] = {};
-    if (!pages_.allocate(resolution_[i], std::span(tiles_[i].data(), tile_count(requests[i].cube)))) {
-      return false;
+    const std::span<AtlasTile> tiles(tiles_[i].data(), tile_count(requests[i].cube));
+    const Light& light = lights_[light_of_request_[i]];
+    if (grows(requests, i)) {
+      // Its own tiles may be part of the larger one: given back first, taken again if not.
+      for (const AtlasTile& tile : std::span(light.tiles.data(), tiles.size())) pages_.free(tile);
+      if (!pages_.allocate(resolution_[i], tiles)) {
+        for (const AtlasTile& tile : std::span(light.tiles.data(), tiles.size())) {
+          [[maybe_unused]] const bool claimed = pages_.claim(tile);
+          assert(claimed);
+        }
+        tiles_[i] = light.tiles;
+        resolution_[i] = light.resolution;
+        ++held_back_;
+      }
+      continue;
     }
+    uint32_t size = resolution_[i];
+    while (!pages_.allocate(size, tiles)) {
+      if (size == config_.min_resolution) return false;
+      size /= 2;
+    }
+    held_back_ += size < resolution_[i] ? 1 : 0;
+    resolution_[i] = size;
   }
   return true;
 }
@@ -418,6 +450,7 @@ void ShadowAtlasPlanner::update_stats() {
     total.demoted_by_time += tally.demoted_by_time;
     total.lowerable_by_time += tally.lowerable_by_time;
     total.changed_tier += tally.changed_tier;
+    total.retiled += tally.retiled;
     total.texels += tally.texels;
     total.pages_used = std::max(total.pages_used, tally.pages_used);
     for (size_t tier = 0; tier < total.lights_per_tier.size(); ++tier)
@@ -431,6 +464,9 @@ void ShadowAtlasPlanner::update_stats() {
   stats_.demoted_by_time = total.demoted_by_time;
   stats_.lowerable_by_time = total.lowerable_by_time;
   stats_.lights_changed_tier = total.changed_tier;
+  stats_.lights_retiled = total.retiled;
+  stats_.held_back_by_free_space = held_back_;
+  stats_.repacked = repacked_;
   stats_.lights_per_resolution.clear();
   for (uint32_t tier = 0; tier < tier_count(); ++tier) {
     if (total.lights_per_tier[tier] > 0) {

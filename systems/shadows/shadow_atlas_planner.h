@@ -33,9 +33,11 @@
 //   strictly needed.
 // - Persistence: a light whose resolution did not change keeps exactly its tiles (moved = false).
 //   New lights and lights whose resolution changed get new tiles (moved = true); lights that are
-//   no longer requested free theirs. When free space is too fragmented for a new tile although the
-//   area fits, everything is repacked from scratch, largest first (which packs power-of-two
-//   squares without gaps), and the lights whose tiles changed are moved.
+//   no longer requested free theirs. The free space of a full atlas is in pieces: a light going
+//   up that finds no free tile of its new size keeps its tiles, a new or lowered one takes the
+//   largest free size below its own (AtlasStats::held_back_by_free_space). Only when not even
+//   the smallest tile is free is everything repacked from scratch, largest first (which packs
+//   power-of-two squares without gaps), and the lights whose tiles changed are moved.
 //
 // A moved light's map content is invalid: it must be rendered again this frame.
 #include <array>
@@ -100,6 +102,11 @@ struct AtlasStats {
   // Lights placed in the previous plan too whose resolution differs now (a shadow gained or
   // lost included): the tiers that changed, which the time budget's hysteresis keeps few.
   uint32_t lights_changed_tier = 0;
+  uint32_t lights_retiled = 0;  // given tiles other than last plan's (new lights too): maps to draw anew
+  // Placed below the resolution the budget gave them: the free tiles were smaller (a light going
+  // up keeps its tiles, a new or lowered light takes a smaller tile). Counted in demoted_by_budget.
+  uint32_t held_back_by_free_space = 0;
+  bool repacked = false;  // every tile placed anew (lights_retiled: most lights)
 };
 
 class ShadowAtlasPlanner {
@@ -173,6 +180,9 @@ class ShadowAtlasPlanner {
   // Request indices ordered by decreasing resolution, cubes before 2D maps of the same size.
   std::vector<uint32_t> largest_first(std::span<const ShadowRequest> requests,
                                       std::span<const uint32_t> indices) const;
+  // Request i's light has tiles and goes up a size: it keeps them unless the larger ones are free.
+  bool grows(std::span<const ShadowRequest> requests, uint32_t i) const;
+  // False when a light found no free tile even at min_resolution: the plan must repack.
   bool place_changed_lights(std::span<const ShadowRequest> requests, std::span<const uint32_t> changed);
   void repack(std::span<const ShadowRequest> requests);
   // What a plan() counts for its stats, per piece of requests on the pool, summed after.
@@ -183,6 +193,7 @@ class ShadowAtlasPlanner {
     uint32_t demoted_by_time = 0;
     uint32_t lowerable_by_time = 0;
     uint32_t changed_tier = 0;
+    uint32_t retiled = 0;
     uint32_t pages_used = 0;
     uint64_t texels = 0;
     std::array<uint32_t, 11> lights_per_tier{};  // at most 11 tiers: page_size / min_resolution <= 1024
@@ -195,6 +206,8 @@ class ShadowAtlasPlanner {
   ShadowTimePolicy policy_;
   ShadowAtlasPages pages_;
   bool repack_pending_ = false;  // set_config() made the allocator new
+  bool repacked_ = false;        // by the current plan()
+  uint32_t held_back_ = 0;       // by the current plan(): AtlasStats::held_back_by_free_space
   uint64_t plans_ = 0;
 
   std::vector<Light> lights_;

@@ -248,6 +248,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   stats_.map_lag_p99 = cache.lag_p99;
   stats_.map_lag_max = cache.lag_max;
   stats_.lights_changed_tier = atlas.lights_changed_tier;
+  stats_.lights_retiled = atlas.lights_retiled;
+  stats_.atlas_repacked = atlas.repacked;
   stats_.lights_per_resolution.assign(atlas.lights_per_resolution.rbegin(),  // smallest first
                                       atlas.lights_per_resolution.rend());
   stats_.texels_used = atlas.texels_used;

@@ -58,6 +58,8 @@ struct ShadowScheduleStats {
   uint32_t map_lag_p99 = 0;
   uint32_t map_lag_max = 0;
   uint32_t lights_changed_tier = 0;  // resolution other than the previous frame's (AtlasStats)
+  uint32_t lights_retiled = 0;       // in tiles other than the previous frame's: maps drawn anew
+  bool atlas_repacked = false;       // every tile placed anew (AtlasStats::repacked)
   // What each budget held down: lights at a lower resolution than they want, or without shadow,
   // for memory; lights below what their size on screen asks, and views due (within view_budget)
   // that the time budget's cap left for later frames, for time.

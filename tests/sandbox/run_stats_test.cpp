@@ -105,7 +105,9 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                    TimeSummary{1.0, 0.0, 2.0},
                    TimeSummary{3.0, 1.0, 5.0},
                    TimeSummary{4.0, 2.0, 9.0},
-                   TimeSummary{12.0, 0.0, 40.0}};
+                   TimeSummary{12.0, 0.0, 40.0},
+                   TimeSummary{30.0, 1.0, 900.0},
+                   3};
   stats.shadow_budget = {6.0,
                          TimeSummary{5.5, 2.25, 19.0},
                          120,
@@ -173,7 +175,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                                                  {"lighting", "deferred"},
                                                  {"camera", nullptr}}));
   const nlohmann::json& shadows = json.at("shadows");
-  EXPECT_EQ(shadows.size(), 16u) << shadows.dump(2);
+  EXPECT_EQ(shadows.size(), 18u) << shadows.dump(2);
   EXPECT_EQ(shadows.at("views"), "batched");
   EXPECT_EQ(shadows.at("raster"), "compute");
   EXPECT_EQ(shadows.at("budget_bytes"), 1ull << 30);
@@ -192,6 +194,8 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   expect_summary(shadows.at("map_lag_frames").at("p99"), *stats.shadows.map_lag_p99);
   expect_summary(shadows.at("map_lag_frames").at("max"), *stats.shadows.map_lag_max);
   expect_summary(shadows.at("lights_changed_tier"), *stats.shadows.lights_changed_tier);
+  expect_summary(shadows.at("lights_retiled"), *stats.shadows.lights_retiled);
+  EXPECT_EQ(shadows.at("atlas_repacks"), 3);
   const nlohmann::json& budget = json.at("shadow_budget");
   EXPECT_EQ(budget.size(), 10u) << budget.dump(2);
   EXPECT_EQ(budget.at("budget_ms"), 6.0);

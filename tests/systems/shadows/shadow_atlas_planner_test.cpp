@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
 #include <vector>
 
 #include "ecs/jobs/thread_pool.h"
+#include "systems/shadows/shadow_atlas_pages.h"
 #include "systems/shadows/shadow_atlas_planner.h"
 
 namespace sg::shadows {
@@ -59,6 +61,24 @@ void expect_valid_tiles(const AtlasConfig& config, const std::vector<ShadowReque
       }
     }
   }
+}
+
+TEST(ShadowAtlasPages, ClaimTakesBackExactlyATileThatIsFree) {
+  ShadowAtlasPages pages(128, 32, 1);
+  std::array<AtlasTile, 4> quarters{};
+  ASSERT_TRUE(pages.allocate(64, quarters));
+  pages.free(quarters[2]);
+  EXPECT_FALSE(pages.claim(quarters[1])) << "taken";
+  EXPECT_FALSE(pages.claim({0, 0, 0, 128})) << "partly taken";
+  EXPECT_FALSE(pages.claim({1, 0, 0, 64})) << "no such page";
+  EXPECT_TRUE(pages.claim(quarters[2]));
+  std::array<AtlasTile, 1> more{};
+  EXPECT_FALSE(pages.allocate(32, more)) << "the page is full again";
+  pages.free(quarters[0]);
+  EXPECT_TRUE(pages.claim({0, quarters[0].x + 32, quarters[0].y, 32})) << "a quarter of a free tile";
+  EXPECT_TRUE(pages.allocate(32, more));
+  EXPECT_EQ(more[0].x / 64, quarters[0].x / 64);
+  EXPECT_EQ(more[0].y / 64, quarters[0].y / 64);
 }
 
 TEST(ShadowAtlasPlanner, ResolutionIsImportanceRoundedToAPowerOfTwoWithinLimits) {
@@ -391,15 +411,13 @@ TEST(ShadowAtlasPlanner, LightsThatVanishFreeTheirTiles) {
   }
 }
 
-TEST(ShadowAtlasPlanner, FragmentedFreeSpaceIsRepackedAndTheLightsThatMoveSaySo) {
-  const AtlasConfig config{.page_size = 256, .max_pages = 1, .min_resolution = 32};
-  ShadowAtlasPlanner planner(config);
-  // Sixteen lights of 64 fill the page; removing those in the left column of every 128 square
-  // frees half the page, but no 128 square.
+// Sixteen lights of 64 fill a 256 page; keeping those right of every 128 square's middle frees
+// half the page, but no 128 square. `before` gets the kept lights' tiles.
+std::vector<ShadowRequest> half_page_in_strips(ShadowAtlasPlanner& planner,
+                                               std::map<uint64_t, AtlasTile>& before) {
   std::vector<ShadowRequest> requests;
   for (uint64_t key = 0; key < 16; ++key) requests.push_back(map_light(key, 64.0f));
   const std::vector<ShadowPlacement> full = plan(planner, requests);
-  std::map<uint64_t, AtlasTile> before;
   std::vector<ShadowRequest> kept;
   for (size_t i = 0; i < requests.size(); ++i) {
     if (full[i].tiles[0].x % 128 != 0) {
@@ -407,20 +425,87 @@ TEST(ShadowAtlasPlanner, FragmentedFreeSpaceIsRepackedAndTheLightsThatMoveSaySo)
       before[requests[i].key] = full[i].tiles[0];
     }
   }
+  plan(planner, kept);
+  return kept;
+}
+
+TEST(ShadowAtlasPlanner, ANewLightFindingNoFreeTileOfItsSizeTakesASmallerOneAndNoOtherMoves) {
+  const AtlasConfig config{.page_size = 256, .max_pages = 1, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  std::map<uint64_t, AtlasTile> before;
+  std::vector<ShadowRequest> kept = half_page_in_strips(planner, before);
   ASSERT_EQ(kept.size(), 8u);
-  ASSERT_EQ(plan(planner, kept).size(), 8u);
   kept.push_back(map_light(100, 128.0f));
-  const std::vector<ShadowPlacement> repacked = plan(planner, kept);
-  expect_valid_tiles(config, kept, repacked);
-  EXPECT_EQ(repacked.back().resolution, 128u);
-  EXPECT_TRUE(repacked.back().moved);
-  size_t moved = 0;
+  const std::vector<ShadowPlacement> out = plan(planner, kept);
+  expect_valid_tiles(config, kept, out);
+  EXPECT_EQ(out.back().resolution, 64u) << "the largest free tile";
+  EXPECT_TRUE(out.back().moved);
   for (size_t i = 0; i + 1 < kept.size(); ++i) {
-    EXPECT_EQ(repacked[i].resolution, 64u);
-    EXPECT_EQ(repacked[i].moved, repacked[i].tiles[0] != before[kept[i].key]) << "light " << kept[i].key;
-    moved += repacked[i].moved;
+    EXPECT_FALSE(out[i].moved) << "light " << kept[i].key;
+    EXPECT_EQ(out[i].tiles[0], before[kept[i].key]);
   }
-  EXPECT_GT(moved, 0u);
+  EXPECT_EQ(planner.stats().held_back_by_free_space, 1u);
+  EXPECT_EQ(planner.stats().demoted_by_budget, 1u);
+  EXPECT_EQ(planner.stats().lights_retiled, 1u);
+  EXPECT_FALSE(planner.stats().repacked);
+}
+
+TEST(ShadowAtlasPlanner, ALightGoingUpKeepsItsMapUntilALargerTileIsFree) {
+  const AtlasConfig config{.page_size = 256, .max_pages = 1, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  std::map<uint64_t, AtlasTile> before;
+  std::vector<ShadowRequest> kept = half_page_in_strips(planner, before);
+  kept.front().importance = 128.0f;
+  std::vector<ShadowPlacement> out = plan(planner, kept);
+  EXPECT_EQ(out.front().resolution, 64u);
+  EXPECT_FALSE(out.front().moved) << "its map stays valid";
+  EXPECT_EQ(out.front().tiles[0], before[kept.front().key]);
+  EXPECT_EQ(planner.stats().held_back_by_free_space, 1u);
+  EXPECT_EQ(planner.stats().lights_retiled, 0u);
+
+  // Its neighbour in the 128 square goes: now there is room.
+  const AtlasTile own = before[kept.front().key];
+  const auto neighbour = std::find_if(kept.begin() + 1, kept.end(), [&](const ShadowRequest& request) {
+    const AtlasTile& tile = before[request.key];
+    return tile.x / 128 == own.x / 128 && tile.y / 128 == own.y / 128;
+  });
+  ASSERT_NE(neighbour, kept.end());
+  kept.erase(neighbour);
+  out = plan(planner, kept);
+  expect_valid_tiles(config, kept, out);
+  EXPECT_EQ(out.front().resolution, 128u);
+  EXPECT_TRUE(out.front().moved);
+  EXPECT_EQ(planner.stats().held_back_by_free_space, 0u);
+  EXPECT_FALSE(planner.stats().repacked);
+}
+
+TEST(ShadowAtlasPlanner, OnlyWhenNotEvenTheSmallestTilesFitIsEverythingRepacked) {
+  // Two pages of 4 x 4 smallest tiles; 13 maps on each leave 3 free a page: the 6 a cube of the
+  // smallest tiles needs are free, but not on one page.
+  const AtlasConfig config{.page_size = 128, .max_pages = 2, .min_resolution = 32};
+  ShadowAtlasPlanner planner(config);
+  std::vector<ShadowRequest> requests;
+  for (uint64_t key = 0; key < 32; ++key) requests.push_back(map_light(key, 32.0f));
+  std::vector<ShadowPlacement> out = plan(planner, requests);
+  std::vector<ShadowRequest> kept;
+  uint32_t freed_on[2] = {0, 0};
+  for (size_t i = 0; i < requests.size(); ++i) {
+    uint32_t& freed = freed_on[out[i].tiles[0].page];
+    if (freed < 3) {
+      ++freed;
+      continue;
+    }
+    kept.push_back(requests[i]);
+  }
+  ASSERT_EQ(kept.size(), 26u);
+  plan(planner, kept);
+  EXPECT_FALSE(planner.stats().repacked);
+  kept.push_back(cube_light(100, 32.0f));
+  out = plan(planner, kept);
+  expect_valid_tiles(config, kept, out);
+  EXPECT_TRUE(planner.stats().repacked);
+  EXPECT_EQ(out.back().resolution, 32u) << "the area fits: repacked, the cube has its shadow";
+  EXPECT_GT(planner.stats().lights_retiled, 1u) << "the maps that moved say so";
 }
 
 TEST(ShadowAtlasPlanner, RandomChurnNeverOverlapsAndMovedMeansNewTiles) {
