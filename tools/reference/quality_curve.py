@@ -102,6 +102,13 @@ def plot(out_dir, rows):
         print(f"quality_curve: wrote {os.path.join(out_dir, name)}")
 
 
+def write_csv(path, rows):
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=COLUMNS)
+        writer.writeheader()
+        writer.writerows(rows)
+
+
 def read_csv(path):
     numbers = {"width": int, "height": int, "triangles": int, "lights": int, "frames": int, "misclassified": float,
                "mae": float, "lit_pixels": int, "sampled_fraction": float, "gpu_frame_ms": float,
@@ -137,10 +144,7 @@ def main():
                 print(f"quality_curve: {i}/{len(runs)} {camera} {motion} {count} lights: misclassified "
                       f"{100 * row['misclassified']:.2f}%, MAE {row['mae']:.4f}, GPU frame {row['gpu_frame_ms']:.2f} ms "
                       f"({time.monotonic() - start:.0f} s)", flush=True)
-        with open(os.path.join(args.out, "quality_curve.csv"), "w", newline="") as f:
-            writer = csv.DictWriter(f, fieldnames=COLUMNS)
-            writer.writeheader()
-            writer.writerows(rows)
+                write_csv(os.path.join(args.out, "quality_curve.csv"), rows)  # a run cut short keeps its rows
     table(rows)
     plot(args.out, rows)
 
