@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <algorithm>
 #include <cstdio>
 
 #include "rendergraph/device/context.h"
@@ -11,8 +12,40 @@
 #include "systems/frame/png.h"
 #include "systems/frame/scene_view.h"
 #include "systems/scene/scene_queries.h"
+#include "systems/shadows/shadow_atlas_shape.h"
 
 namespace sg::sandbox {
+namespace {
+
+// The last frame's maps with a tile into `out`: the largest (then by name) first, at most
+// RunStats::max_listed_maps of them, and how many there were.
+void list_shadow_maps(const shadows::FrameLights& lights, RunStats::Shadows& out) {
+  constexpr uint64_t texel_bytes = shadows::atlas_texel_bytes;
+  const auto row = [](const auto& view, uint32_t faces) {
+    return RunStats::Shadows::Map{view.name,
+                                  view.resolution,
+                                  faces * uint64_t(view.resolution) * view.resolution * texel_bytes,
+                                  view.frames_since_drawn,
+                                  std::string(to_string(view.update)),
+                                  view.priority};
+  };
+  out.maps.clear();
+  for (const shadows::ShadowMapView& map : lights.maps) {
+    if (map.resolution > 0) out.maps.push_back(row(map, 1));
+  }
+  for (const shadows::ShadowCubeView& cube : lights.cubes) {
+    if (cube.resolution > 0) out.maps.push_back(row(cube, 6));
+  }
+  out.maps_total = out.maps.size();
+  const auto larger = [](const RunStats::Shadows::Map& a, const RunStats::Shadows::Map& b) {
+    return a.bytes != b.bytes ? a.bytes > b.bytes : a.name < b.name;
+  };
+  const size_t listed = std::min(out.maps.size(), RunStats::max_listed_maps);
+  std::partial_sort(out.maps.begin(), out.maps.begin() + std::ptrdiff_t(listed), out.maps.end(), larger);
+  out.maps.resize(listed);
+}
+
+}  // namespace
 
 int finish_run(const Options& options, vk::VulkanContext& context, const SceneView& scene,
                SandboxFrame& sandbox_frame, const RunRecord& record) {
@@ -77,6 +110,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
                    summarize(frame.shadow_views_cached()),
                    summarize(frame.shadow_views_moving_only()),
                    renderer.shadow_caster_draws()};
+  list_shadow_maps(renderer.lights(), stats.shadows);
   const Frame::MapTimeline& timeline = frame.map_timeline();
   stats.shadows.map_lag_p50 = summarize(timeline.lag_p50);
   stats.shadows.map_lag_p99 = summarize(timeline.lag_p99);

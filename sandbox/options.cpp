@@ -35,10 +35,9 @@ std::vector<Setting<O>> make_table() {
                 [](O& o, const std::string& text) { o.ui = text == "on"; }};
   Setting<O> script = text<O>(
       "script", "FILE", [](auto& o) -> auto& { return o.script; },
-      "headless, run FILE's commands instead of --frames: select NAME, algorithm NAME, resolution N, move X "
-      "Y "
-      "Z, camera EX,EY,EZ,TX,TY,TZ, view lit|shadows, wait N, screenshot PATH, save (# comments; errors name "
-      "the file and line)");
+      "headless, run FILE's commands instead of --frames: select NAME, algorithm NAME, resolution N, update "
+      "MODE, priority T, redraw_shadow, move X Y Z, camera EX,EY,EZ,TX,TY,TZ, view lit|shadows, wait N, "
+      "screenshot PATH, save (# comments; errors name the file and line)");
   script.info.excludes = {"frames"};
   const Setting<O> own[] = {
       flag<O>(

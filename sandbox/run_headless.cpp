@@ -18,6 +18,7 @@
 #include "systems/frame/png.h"
 #include "systems/frame/scene_view.h"
 #include "systems/scene/scene.h"
+#include "systems/scene/shadow_requests.h"
 #include "systems/scene/shadow_settings.h"
 
 namespace sg::sandbox {
@@ -59,6 +60,12 @@ RunRecord run_script(const Options& options, vk::VulkanContext& context, SceneVi
             world.get_mut<scene::ShadowSettings>(need_light()).algorithm = command.algorithm;
           } else if constexpr (std::is_same_v<Command, ScriptStep::Resolution>) {
             world.get_mut<scene::ShadowSettings>(need_light()).resolution = command.texels;
+          } else if constexpr (std::is_same_v<Command, ScriptStep::Update>) {
+            world.get_mut<scene::ShadowSettings>(need_light()).update = command.update;
+          } else if constexpr (std::is_same_v<Command, ScriptStep::Priority>) {
+            world.get_mut<scene::ShadowSettings>(need_light()).priority = command.tiers;
+          } else if constexpr (std::is_same_v<Command, ScriptStep::RedrawShadow>) {
+            scene::request_shadow_redraw(world, need_light());
           } else if constexpr (std::is_same_v<Command, ScriptStep::Move>) {
             world.get_mut<ecs::LocalTransform>(need_light()).translation = command.position;
           } else if constexpr (std::is_same_v<Command, ScriptStep::Camera>) {

@@ -61,6 +61,15 @@ Json stats_json(const RunStats& stats) {
     passes.push_back({{"name", pass.name}, {"gpu_ms", summary_json(pass.gpu_ms)}});
   }
   const RunStats::Shadows& shadows = stats.shadows;
+  Json maps = Json::array();
+  for (const RunStats::Shadows::Map& map : shadows.maps) {
+    maps.push_back({{"name", map.name},
+                    {"resolution", map.resolution},
+                    {"bytes", map.bytes},
+                    {"frames_since_drawn", map.frames_since_drawn},
+                    {"update", map.update},
+                    {"priority", map.priority}});
+  }
   Json per_resolution = Json::object();
   for (const auto& [resolution, lights] : shadows.lights_per_resolution) {
     per_resolution[std::to_string(resolution)] = lights;
@@ -126,6 +135,7 @@ Json stats_json(const RunStats& stats) {
             {"lights_changed_tier", summary_json(shadows.lights_changed_tier)},
             {"lights_retiled", summary_json(shadows.lights_retiled)},
             {"atlas_repacks", shadows.atlas_repacks},
+            {"maps", {{"total", shadows.maps_total}, {"largest", maps}}},
             {"caster_draws", shadows.caster_draws}}},
           {"shadow_budget", shadow_budget_json(stats.shadow_budget)},
           {"settings", settings}};

@@ -66,6 +66,9 @@
 //     "lights_retiled": {...},                   // per frame: lights given other tiles (new,
 //                                                // resized, or moved by a repack): maps drawn anew
 //     "atlas_repacks": 0,                        // frames whose atlas placed every tile anew
+//     "maps": {"total": 2, "largest": [          // the last frame's maps with a tile, the
+//       {"name": "spot east", "resolution": 512, "bytes": 1048576, "frames_since_drawn": 0,
+//        "update": "auto", "priority": 0.0}]},   // largest first, at most 1,024 listed
 //     "caster_draws": 0                          // caster instances drawn into views, a late frame
 //   },
 //   "shadow_budget": {                           // what the two shadow budgets held down (README,
@@ -162,7 +165,19 @@ struct RunStats {
     // Per frame (Frame::MapTimeline), counts summarized like times.
     std::optional<TimeSummary> map_lag_p50, map_lag_p99, map_lag_max, lights_changed_tier, lights_retiled;
     std::uint64_t atlas_repacks = 0;  // frames
+    // The last frame's maps with a tile, the largest first, at most max_listed_maps of them.
+    struct Map {
+      std::string name;
+      std::uint32_t resolution = 0;  // per face for cubes
+      std::uint64_t bytes = 0;
+      std::uint32_t frames_since_drawn = 0;
+      std::string update;  // ShadowSettings::update
+      float priority = 0.0f;
+    };
+    std::uint64_t maps_total = 0;
+    std::vector<Map> maps;
   } shadows;
+  static constexpr std::size_t max_listed_maps = 1024;
 
   struct ShadowBudget {
     std::optional<double> budget_ms;         // unset: no time budget

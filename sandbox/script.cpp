@@ -48,6 +48,21 @@ std::vector<ScriptStep> parse_script(const std::string& text, const std::string&
       step.command = ScriptStep::Algorithm{*algorithm};
     } else if (command == "resolution") {
       step.command = ScriptStep::Resolution{number("a whole number of texels, 16 to 4096", 16, 4096)};
+    } else if (command == "update") {
+      const std::optional<scene::ShadowUpdate> update = parse_enum<scene::ShadowUpdate>(rest);
+      if (!update) fail(path, line, "update takes auto, every_frame or on_demand, got \"" + rest + "\"");
+      step.command = ScriptStep::Update{*update};
+    } else if (command == "priority") {
+      std::istringstream in(rest);
+      float tiers = 0.0f;
+      std::string extra;
+      if (!(in >> tiers) || (in >> extra) || !(std::abs(tiers) <= scene::max_shadow_priority)) {
+        fail(path, line, "priority takes a number of tiers, -4 to 4, got \"" + rest + "\"");
+      }
+      step.command = ScriptStep::Priority{tiers};
+    } else if (command == "redraw_shadow") {
+      if (!rest.empty()) fail(path, line, "redraw_shadow takes nothing, got \"" + rest + "\"");
+      step.command = ScriptStep::RedrawShadow{};
     } else if (command == "move") {
       std::istringstream in(rest);
       glm::vec3 p;

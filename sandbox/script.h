@@ -6,6 +6,9 @@
 //   select NAME              the light named NAME (its scene name) becomes the selected one
 //   algorithm NAME           its shadow algorithm: hard, pcf, noise, pcss, pcss_noise
 //   resolution N             its requested shadow resolution, texels
+//   update MODE              when its map is drawn again: auto, every_frame, on_demand
+//   priority T               tiers added to its atlas importance, -4 to 4
+//   redraw_shadow            ask for its map to be drawn again (scene::request_shadow_redraw)
 //   move X Y Z               its position
 //   camera EX,EY,EZ,TX,TY,TZ the view, as --camera
 //   wait N                   render N frames (1/60 s each)
@@ -37,6 +40,13 @@ struct ScriptStep {
   struct Resolution {
     uint32_t texels;
   };
+  struct Update {
+    scene::ShadowUpdate update;
+  };
+  struct Priority {
+    float tiers;
+  };
+  struct RedrawShadow {};
   struct Move {
     glm::vec3 position;
   };
@@ -53,7 +63,9 @@ struct ScriptStep {
     LightingView view;
   };
   struct Save {};
-  std::variant<Select, Algorithm, Resolution, Move, Camera, Wait, Screenshot, View, Save> command;
+  std::variant<Select, Algorithm, Resolution, Update, Priority, RedrawShadow, Move, Camera, Wait, Screenshot,
+               View, Save>
+      command;
   int line = 0;
 };
 

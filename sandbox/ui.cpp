@@ -19,7 +19,9 @@
 #include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
 #include "systems/scene/scene_builder.h"
+#include "systems/scene/shadow_requests.h"
 #include "systems/scene/shadow_settings.h"
+#include "systems/shadows/shadow_atlas_shape.h"
 
 namespace sg::sandbox {
 namespace {
@@ -205,6 +207,7 @@ void SandboxUi::shadow_map_panel(const ecs::World& world, const UiFacts& facts) 
   }
   const uint64_t key = ecs::entity_key(selected_);
   const float page = float(facts.atlas_page);
+  constexpr double texel_bytes = shadows::atlas_texel_bytes;  // the map's own, static layers aside
   const auto image = [&](const shadows::AtlasTile& tile, const UiDepthView& view, float side) {
     depth_views_.push_back(view);
     const auto id = reinterpret_cast<ImTextureID>(static_cast<intptr_t>(depth_views_.size()));
@@ -217,13 +220,17 @@ void SandboxUi::shadow_map_panel(const ecs::World& world, const UiFacts& facts) 
   for (const shadows::ShadowMapView& map : facts.frame_lights->maps) {
     if (shadows::view_light_key(map.key) != key || map.resolution == 0) continue;
     if (const uint32_t cascade = shadows::view_cascade_number(map.key)) ImGui::Text("cascade %u", cascade);
-    ImGui::Text("%u x %u texels, layer %u", map.resolution, map.resolution, map.tile.page);
+    ImGui::Text("%u x %u texels, layer %u, %.1f KiB, drawn %u frames ago", map.resolution, map.resolution,
+                map.tile.page, double(map.resolution) * map.resolution * texel_bytes / 1024.0,
+                map.frames_since_drawn);
     image(map.tile, {map.tile.page, map.view.near, map.view.far, map.view.orthographic}, 256.0f);
     shown = true;
   }
   for (const shadows::ShadowCubeView& cube : facts.frame_lights->cubes) {
     if (cube.key != key || cube.resolution == 0) continue;
-    ImGui::Text("six faces of %u x %u texels, distance / range", cube.resolution, cube.resolution);
+    ImGui::Text("six faces of %u x %u texels, distance / range, %.1f KiB, drawn %u frames ago",
+                cube.resolution, cube.resolution,
+                6.0 * cube.resolution * cube.resolution * texel_bytes / 1024.0, cube.frames_since_drawn);
     constexpr const char* faces[] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
     for (int f = 0; f < 6; ++f) {
       if (f % 3 != 0) ImGui::SameLine();
@@ -387,8 +394,17 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
         shadow.cascades = static_cast<uint32_t>(cascades);
         changed = true;
       }
+      int update = static_cast<int>(shadow.update);
+      const char* updates[] = {"auto", "every frame", "on demand"};
+      if (ImGui::Combo("update", &update, updates, int(std::size(updates)))) {
+        shadow.update = static_cast<scene::ShadowUpdate>(update);
+        changed = true;
+      }
+      changed |= ImGui::SliderFloat("priority", &shadow.priority, -scene::max_shadow_priority,
+                                    scene::max_shadow_priority, "%.2f tiers");
       return changed;
     });
+    if (ImGui::Button("redraw shadow")) scene::request_shadow_redraw(world, selected_);
   }
   ImGui::End();
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "systems/frame/scene_sidecar.h"
 
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -79,6 +80,8 @@ Json light_json(const scene::Scene& scene, const std::string& name, ecs::Entity 
                      {"shadow_color", vec(s.shadow_color)},
                      {"resolution", s.resolution},
                      {"cascades", s.cascades},
+                     {"update", std::string(to_string(s.update))},
+                     {"priority", s.priority},
                      {"casts_shadow", s.casts_shadow}};
   return light;
 }
@@ -110,6 +113,14 @@ class Reader {
     if (!value.is_number() || !std::isfinite(value.get<double>()))
       fail(entry + "." + key, "is not a finite number");
     return value.get<float>();
+  }
+  template <NamedEnum E>
+  E name(const Json& object, const char* key, const std::string& entry, E fallback) const {
+    if (!object.contains(key)) return fallback;
+    const Json& value = object.at(key);
+    const auto parsed = value.is_string() ? parse_enum<E>(value.get<std::string>()) : std::nullopt;
+    if (!parsed) fail(entry + "." + key, "is not one of " + enum_name_list<E>());
+    return *parsed;
   }
   glm::vec3 vector(const Json& object, const char* key, const std::string& entry, glm::vec3 fallback) const {
     if (!object.contains(key)) return fallback;
@@ -156,13 +167,7 @@ class Reader {
       const Json& s = json.at("shadow");
       const std::string where = entry + ".shadow";
       if (!s.is_object()) fail(where, "is not an object");
-      if (s.contains("algorithm")) {
-        const auto algorithm = s.at("algorithm").is_string()
-                                   ? parse_enum<scene::ShadowAlgorithm>(s.at("algorithm").get<std::string>())
-                                   : std::nullopt;
-        if (!algorithm) fail(where + ".algorithm", "is not hard, pcf, noise, pcss or pcss_noise");
-        light.shadow.algorithm = *algorithm;
-      }
+      light.shadow.algorithm = name(s, "algorithm", where, light.shadow.algorithm);
       light.shadow.constant_bias = number(s, "constant_bias", where, light.shadow.constant_bias);
       light.shadow.slope_bias = number(s, "slope_bias", where, light.shadow.slope_bias);
       light.shadow.pcf_radius = number(s, "pcf_radius", where, light.shadow.pcf_radius);
@@ -177,6 +182,11 @@ class Reader {
         fail(where + ".cascades", "is not within 1 .. " + std::to_string(scene::max_shadow_cascades));
       }
       light.shadow.cascades = static_cast<uint32_t>(cascades);
+      light.shadow.update = name(s, "update", where, light.shadow.update);
+      light.shadow.priority = number(s, "priority", where, light.shadow.priority);
+      if (std::abs(light.shadow.priority) > scene::max_shadow_priority) {
+        fail(where + ".priority", "is not within -4 .. 4");
+      }
       light.shadow.casts_shadow = s.value("casts_shadow", true);
     }
     return light;

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
@@ -44,6 +45,14 @@ constexpr std::optional<E> parse_enum(std::string_view name) {
 }
 
 // Every value, in the table's order.
+// "a, b, c": the names, for messages.
+template <NamedEnum E>
+std::string enum_name_list() {
+  std::string list;
+  for (const auto& [value, name] : enum_names(E{})) list.append(list.empty() ? "" : ", ").append(name);
+  return list;
+}
+
 template <NamedEnum E>
 constexpr auto enum_values() {
   constexpr auto names = enum_names(E{});

@@ -56,6 +56,8 @@ nlohmann::json shadow_json(const ShadowSettings& s) {
           {"shadow_color", vec3(s.shadow_color)},
           {"resolution", s.resolution},
           {"cascades", s.cascades},
+          {"update", std::string(to_string(s.update))},
+          {"priority", s.priority},
           {"casts_shadow", s.casts_shadow}};
 }
 

@@ -21,6 +21,8 @@
 //   pcf_radius    [0, 32] texels               light_size   >= 0, world units
 //   density       [0, 1]                       shadow_color [r, g, b] each in [0, 1]
 //   resolution    integer, [16, 16384] texels  casts_shadow true | false
+//   cascades      [1, 4], directional lights   update       "auto" | "every_frame" | "on_demand"
+//   priority      [-4, 4] tiers of atlas importance
 #include <cstddef>
 #include <optional>
 #include <string>

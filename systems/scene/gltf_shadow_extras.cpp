@@ -56,6 +56,20 @@ struct ExtrasReader {
     if (const auto value = number(key, low, high)) target = *value;
   }
 
+  // One of E's names; the default kept otherwise.
+  template <NamedEnum E>
+  void read_enum(const char* key, E& target) const {
+    const nlohmann::json* found = find(key);
+    if (found == nullptr) return;
+    const auto parsed = found->is_string() ? parse_enum<E>(found->get<std::string>()) : std::nullopt;
+    if (parsed) {
+      target = *parsed;
+    } else {
+      report(key, found->dump() + " is not one of " + enum_name_list<E>() + "; using " +
+                      std::string(to_string(target)));
+    }
+  }
+
   std::optional<bool> flag(const char* key) const {
     const nlohmann::json* found = find(key);
     if (found == nullptr) return std::nullopt;
@@ -111,16 +125,9 @@ void read_keys(const ExtrasReader& reader, ShadowSettings& settings) {
   if (const auto cascades = reader.number("cascades", 1.0f, float(max_shadow_cascades))) {
     settings.cascades = static_cast<std::uint32_t>(std::lround(*cascades));
   }
-  if (const nlohmann::json* found = reader.find("algorithm")) {
-    const auto parsed =
-        found->is_string() ? parse_enum<ShadowAlgorithm>(found->get<std::string>()) : std::nullopt;
-    if (parsed) {
-      settings.algorithm = *parsed;
-    } else {
-      reader.report("algorithm", found->dump() + " is not one of hard, pcf, noise, pcss, pcss_noise; using " +
-                                     std::string(to_string(settings.algorithm)));
-    }
-  }
+  reader.read("priority", settings.priority, -max_shadow_priority, max_shadow_priority);
+  reader.read_enum("update", settings.update);
+  reader.read_enum("algorithm", settings.algorithm);
   reader.color("shadow_color", settings.shadow_color);
 }
 

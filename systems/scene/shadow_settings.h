@@ -22,6 +22,20 @@ constexpr EnumNames<ShadowAlgorithm, 5> enum_names(ShadowAlgorithm) {
 }
 inline constexpr auto all_shadow_algorithms = enum_values<ShadowAlgorithm>();
 
+// When a light's map is drawn again (ShadowSettings::update). automatic: when it may be wrong (the
+// light, its shadow settings or a caster in its reach changed); every_frame: every frame, as a
+// light whose casters change unseen; on_demand: only when asked (request_shadow_redraw) or when
+// its shadow settings change, the map otherwise kept where the light and its casters were then.
+// Each also when its tile is new.
+enum class ShadowUpdate : std::uint8_t { automatic, every_frame, on_demand };
+constexpr EnumNames<ShadowUpdate, 3> enum_names(ShadowUpdate) {
+  return {{{ShadowUpdate::automatic, "auto"},
+           {ShadowUpdate::every_frame, "every_frame"},
+           {ShadowUpdate::on_demand, "on_demand"}}};
+}
+// ShadowSettings::priority's range, in tiers (powers of two of the atlas importance).
+inline constexpr float max_shadow_priority = 4.0f;
+
 // The most cascaded maps a directional light may have (ShadowSettings::cascades).
 inline constexpr std::uint32_t max_shadow_cascades = 4;
 
@@ -45,6 +59,11 @@ struct ShadowSettings {
   // view that gains little from more (a camera far from the scene) uses fewer
   // (systems/shadows/cascades.h).
   std::uint32_t cascades = 4;
+  ShadowUpdate update = ShadowUpdate::automatic;
+  // Tiers added to log2 of the light's atlas importance (its size on screen), within
+  // +-max_shadow_priority: +1 asks for a map twice as wide, and the memory and time budgets lower
+  // it as a light twice its size; -1 the other way.
+  float priority = 0.0f;
   bool casts_shadow = true;
 };
 

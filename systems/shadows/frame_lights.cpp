@@ -46,11 +46,14 @@ scene::ShadowSettings with_overrides(scene::ShadowSettings shadow, const LightOv
   return shadow;
 }
 
-// Whether the light's transform, parameters or shadow settings were written since `since`.
+// Whether the light's map must be drawn again for what was written since `since`: its transform,
+// parameters or shadow settings; an on_demand light's shadow settings only (a request writes them).
 template <class Light>
-bool changed_since(const ecs::World& world, ecs::Entity entity, ecs::Tick since) {
+bool changed_since(const ecs::World& world, ecs::Entity entity, ecs::Tick since, scene::ShadowUpdate update) {
+  const ecs::Tick settings = world.change_tick<scene::ShadowSettings>(entity);
+  if (update == scene::ShadowUpdate::on_demand) return settings >= since;
   return std::max({world.change_tick<ecs::WorldTransform>(entity), world.change_tick<Light>(entity),
-                   world.change_tick<scene::ShadowSettings>(entity)}) >= since;
+                   settings}) >= since;
 }
 
 // How many views a light gets: a directional light one per cascade, others one.
@@ -99,6 +102,8 @@ void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick
   map.requested_resolution = clamp_resolution(s.resolution, max_map_resolution);
   map.cascade = no_cascade;
   map.needed = true;
+  map.update = s.update;
+  map.priority = s.priority;
   const glm::vec3 position = scene::light_position(transform);
   const glm::vec3 direction = scene::light_direction(transform);
   if constexpr (std::is_same_v<Light, scene::SpotLight>) {
@@ -111,7 +116,7 @@ void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick
     if (light.cascades > 0) {
       // Cascade views take their LightViews from place_cascades, which compares them with these.
       out.records[index].shape = glm::vec4(float(out.records.size() + light.first_cascade), 0.0f, 0.0f, 0.0f);
-      const bool changed = changed_since<Light>(world, light.entity, since);
+      const bool changed = changed_since<Light>(world, light.entity, since, s.update);
       for (uint32_t k = light.cascades; k-- > 0;) {  // the first last: the others copy its name
         ShadowMapView& cascade = out.maps[light.view + k];
         if (k > 0) cascade.name = map.name;
@@ -121,6 +126,8 @@ void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick
         cascade.reach = unbounded_reach;
         cascade.cascade = light.first_cascade + k;
         cascade.changed = changed;
+        cascade.update = s.update;
+        cascade.priority = s.priority;
         cascade.name.append(" cascade ").append(std::to_string(k + 1));
       }
       return;
@@ -131,7 +138,7 @@ void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick
     map.reach = unbounded_reach;
     name_view(world, light.entity, "cylinder", light.view, map.name);
   }
-  map.changed = changed_since<Light>(world, light.entity, since);
+  map.changed = changed_since<Light>(world, light.entity, since, s.update);
 }
 
 void fill_point(const ecs::World& world, const LightOverrides& overrides, ecs::Tick since,
@@ -149,7 +156,9 @@ void fill_point(const ecs::World& world, const LightOverrides& overrides, ecs::T
   cube.requested_resolution = clamp_resolution(s.resolution, max_cube_resolution);
   cube.views = point_light_cube(position, parameters.range);
   cube.position_far = glm::vec4(position, parameters.range);
-  cube.changed = changed_since<scene::PointLight>(world, light.entity, since);
+  cube.changed = changed_since<scene::PointLight>(world, light.entity, since, s.update);
+  cube.update = s.update;
+  cube.priority = s.priority;
   name_view(world, light.entity, "point", light.view, cube.name);
 }
 
@@ -163,8 +172,11 @@ bool kept_since(const ecs::World& world, const GatheredLight& light, const scene
     return false;
   }
   switch (light.kind) {
-    case GatheredLight::spot: return !changed_since<scene::SpotLight>(world, light.entity, since);
-    case GatheredLight::point: return !changed_since<scene::PointLight>(world, light.entity, since);
+    // Any write, whatever the light's update: its record follows it.
+    case GatheredLight::spot:
+      return !changed_since<scene::SpotLight>(world, light.entity, since, scene::ShadowUpdate::automatic);
+    case GatheredLight::point:
+      return !changed_since<scene::PointLight>(world, light.entity, since, scene::ShadowUpdate::automatic);
     case GatheredLight::directional:
     case GatheredLight::cylinder: return false;
   }
@@ -265,7 +277,8 @@ void place_cascades(FrameLights& lights, const CascadeCamera& camera, const scen
       ShadowMapView& map = lights.maps[light.first_view + k];
       map.needed = k < fit.count;
       if (!map.needed) continue;
-      map.changed = map.changed || fit.views[k] != map.view;
+      // An on_demand cascade keeps its map where it was drawn until asked (sampled with that view).
+      map.changed = map.changed || (map.update != scene::ShadowUpdate::on_demand && fit.views[k] != map.view);
       map.view = fit.views[k];
     }
   }

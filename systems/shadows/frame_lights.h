@@ -68,6 +68,9 @@ struct ShadowMapView {
   // Its transform, light or shadow settings were written in or after the last gather's tick (a
   // write in that tick may have come after the gather). Systems advance the tick before gathering.
   bool changed = false;
+  // The light's ShadowSettings::update and ::priority.
+  scene::ShadowUpdate update = scene::ShadowUpdate::automatic;
+  float priority = 0.0f;
   // A cascade's record in FrameLights::cascades, where the schedule writes its map (no_cascade:
   // the view's map is its light's, in the light's record), and whether the view needs it this
   // frame (place_cascades: a view near the scene may use fewer cascades than the light allows).
@@ -83,7 +86,8 @@ struct ShadowMapView {
   AtlasTile tile;
   bool render = false;
   bool moving_casters_only = false;
-  std::string name;  // for the pass: "shadow <light name>"
+  uint32_t frames_since_drawn = 0;  // of the map it has: 0 drawn this frame
+  std::string name;                 // for the pass: "shadow <light name>"
 };
 
 struct ShadowCubeView {
@@ -93,11 +97,14 @@ struct ShadowCubeView {
   CubeViews views;
   glm::vec4 position_far{0.0f};  // shadow_cube.frag's light position and far plane, and its reach
   bool changed = false;
+  scene::ShadowUpdate update = scene::ShadowUpdate::automatic;  // as ShadowMapView's
+  float priority = 0.0f;
   float importance = 0.0f;           // as ShadowMapView's
   uint32_t resolution = 0;           // each face's side; 0: no shadow this frame
   std::array<AtlasTile, 6> tiles{};  // faces +X, -X, +Y, -Y, +Z, -Z, all on one layer
   bool render = false;
   bool moving_casters_only = false;  // as ShadowMapView's (`views` and position_far as drawn then)
+  uint32_t frames_since_drawn = 0;
   std::string name;
 };
 

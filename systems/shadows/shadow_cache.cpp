@@ -23,7 +23,8 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
   for (size_t i = 0; i < lights.size(); ++i) {
     LightState& state = states_[i];
     if (lights[i].invalid) state.valid = false;
-    state.dirty = state.dirty || lights[i].changed || !state.valid;
+    state.dirty = state.dirty || lights[i].changed || !state.valid ||
+                  lights[i].update == scene::ShadowUpdate::every_frame;
   }
   mark_by_casters(lights, changes.still, &LightState::dirty, pool);
   mark_by_casters(lights, changes.moving, &LightState::moving_dirty, pool);
@@ -103,7 +104,7 @@ void ShadowCache::mark_by_casters(std::span<const ShadowCacheLight> lights,
   candidates_.clear();
   candidate_reach_.clear();
   for (uint32_t i = 0; i < lights.size(); ++i) {
-    if (states_[i].dirty || states_[i].*flag) continue;
+    if (states_[i].dirty || states_[i].*flag || lights[i].update == scene::ShadowUpdate::on_demand) continue;
     if (lights[i].reach.w < 0.0f) {
       states_[i].*flag = true;
     } else {

@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "systems/scene/aabb.h"
+#include "systems/scene/shadow_settings.h"
 #include "systems/shadows/spheres_meeting_boxes.h"
 
 namespace sg::shadows {
@@ -29,6 +30,8 @@ struct ShadowCacheLight {
   bool changed = false;  // the light itself moved or changed since it was last rendered
   bool invalid = false;  // its storage is new or moved this frame: the map's contents are garbage
   uint32_t views = 1;    // views a render costs, at least 1: 1 for a 2D map, 6 for a cube
+  // every_frame: due every frame; on_demand: due only when `changed` (asked), never for casters.
+  scene::ShadowUpdate update = scene::ShadowUpdate::automatic;
 };
 
 // Where shadow casters changed since the last plan.
@@ -79,8 +82,8 @@ class ShadowCache {
   //   lighting may sample it; 0: shade the light unshadowed this frame.
   //
   // A light is dirty when its key was not in the previous call (it is new), it is `changed` or
-  // `invalid`, or a changed caster box (still or moving) meets its reach sphere; it stays dirty
-  // until rendered.
+  // `invalid`, its update is every_frame, or a changed caster box (still or moving) meets its
+  // reach sphere (not for on_demand lights); it stays dirty until rendered.
   // Every dirty light renders when view_budget is 0 (unlimited) or their views fit in it.
   // Otherwise dirty lights are taken in this order until the budget is used: lights without a
   // valid map first (new, invalid, never rendered into their current storage), then the others,

@@ -43,6 +43,12 @@ float importance_in(const glm::vec4& reach, const ShadowCamera& camera, const Ca
   return 2.0f * std::asin(reach.w / distance) * camera.pixels_per_radian;
 }
 
+// ShadowSettings::priority: tiers added to log2 of the importance, within its range.
+float prioritized(float importance, float priority) {
+  return importance *
+         std::exp2(std::clamp(priority, -scene::max_shadow_priority, scene::max_shadow_priority));
+}
+
 }  // namespace
 
 float light_importance(const glm::vec4& reach, const ShadowCamera& camera) {
@@ -65,6 +71,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   // the pool, the requests listed in order after. There too, each piece checks that its views
   // are the ones their entries of rendered_maps_ and rendered_cubes_ hold (usually: the last
   // frame's lights in the same order). One thread would read all that hundreds of bytes apart.
+  ++schedules_;
   const CameraFrustum frustum(camera);
   const bool pinned = resolution_ == ShadowResolution::requested;
   const size_t map_count = lights.maps.size();
@@ -79,26 +86,28 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     for (size_t v = begin; v < end; ++v) {
       if (v < map_count) {
         ShadowMapView& map = lights.maps[v];
-        map.importance = map.needed ? importance_in(map.reach, camera, frustum) : 0.0f;
+        map.importance =
+            map.needed ? prioritized(importance_in(map.reach, camera, frustum), map.priority) : 0.0f;
         view_requests_[v] = {map.key,
                              false,
                              map.requested_resolution,
                              map.importance,
                              quality_floor(algorithm_of(lights.records[map.light])),
                              pinned};
-        view_cache_lights_[v] = {map.key, map.reach, map.changed, false, 1};
+        view_cache_lights_[v] = {map.key, map.reach, map.changed, false, 1, map.update};
         aligned = aligned && rendered_maps_[v].key == map.key;
       } else {
         ShadowCubeView& cube = lights.cubes[v - map_count];
         // A face spans a quarter turn, about half of what the whole sphere covers on screen.
-        cube.importance = 0.5f * importance_in(cube.position_far, camera, frustum);
+        cube.importance =
+            prioritized(0.5f * importance_in(cube.position_far, camera, frustum), cube.priority);
         view_requests_[v] = {cube.key,
                              true,
                              cube.requested_resolution,
                              cube.importance,
                              quality_floor(algorithm_of(lights.records[cube.light])),
                              pinned};
-        view_cache_lights_[v] = {cube.key, cube.position_far, cube.changed, false, 6};
+        view_cache_lights_[v] = {cube.key, cube.position_far, cube.changed, false, 6, cube.update};
         aligned = aligned && rendered_cubes_[v - map_count].key == cube.key;
       }
     }
@@ -192,6 +201,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
           } else if (map.render) {
             rendered.view = map.view;
           }
+          if (map.render) rendered.drawn_in = schedules_;
+          map.frames_since_drawn = uint32_t(std::min<uint64_t>(schedules_ - rendered.drawn_in, UINT32_MAX));
           GpuLight& record =
               map.cascade == no_cascade ? lights.records[map.light] : lights.cascades[map.cascade];
           set_shadow_map(record, map.tile.page, tile_uv_rect(map.tile, page_size_), map.resolution,
@@ -210,6 +221,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
           rendered.views = cube.views;
           rendered.origin = glm::vec3(cube.position_far);
         }
+        if (cube.render) rendered.drawn_in = schedules_;
+        cube.frames_since_drawn = uint32_t(std::min<uint64_t>(schedules_ - rendered.drawn_in, UINT32_MAX));
         std::array<glm::vec2, 6> origins;
         for (int f = 0; f < 6; ++f) origins[f] = glm::vec2(tile_uv_rect(cube.tiles[f], page_size_));
         set_shadow_cube(lights.records[cube.light], cube.tiles[0].page, origins,

@@ -107,7 +107,9 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                    TimeSummary{4.0, 2.0, 9.0},
                    TimeSummary{12.0, 0.0, 40.0},
                    TimeSummary{30.0, 1.0, 900.0},
-                   3};
+                   3,
+                   2,
+                   {{"spot east", 512, 1u << 20, 7, "on_demand", 1.5f}}};
   stats.shadow_budget = {6.0,
                          TimeSummary{5.5, 2.25, 19.0},
                          120,
@@ -175,7 +177,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                                                  {"lighting", "deferred"},
                                                  {"camera", nullptr}}));
   const nlohmann::json& shadows = json.at("shadows");
-  EXPECT_EQ(shadows.size(), 18u) << shadows.dump(2);
+  EXPECT_EQ(shadows.size(), 19u) << shadows.dump(2);
   EXPECT_EQ(shadows.at("views"), "batched");
   EXPECT_EQ(shadows.at("raster"), "compute");
   EXPECT_EQ(shadows.at("budget_bytes"), 1ull << 30);
@@ -196,6 +198,14 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   expect_summary(shadows.at("lights_changed_tier"), *stats.shadows.lights_changed_tier);
   expect_summary(shadows.at("lights_retiled"), *stats.shadows.lights_retiled);
   EXPECT_EQ(shadows.at("atlas_repacks"), 3);
+  EXPECT_EQ(shadows.at("maps"), nlohmann::json({{"total", 2},
+                                                {"largest",
+                                                 {{{"name", "spot east"},
+                                                   {"resolution", 512},
+                                                   {"bytes", 1 << 20},
+                                                   {"frames_since_drawn", 7},
+                                                   {"update", "on_demand"},
+                                                   {"priority", 1.5}}}}}));
   const nlohmann::json& budget = json.at("shadow_budget");
   EXPECT_EQ(budget.size(), 10u) << budget.dump(2);
   EXPECT_EQ(budget.at("budget_ms"), 6.0);

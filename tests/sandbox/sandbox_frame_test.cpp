@@ -20,6 +20,9 @@
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"
+#include "systems/scene/shadow_requests.h"
+#include "systems/scene/shadow_settings.h"
+#include "systems/shadows/shadow_resolution.h"
 #include "tests/support/frame_checks.h"
 #include "tests/support/gpu_test.h"
 
@@ -117,6 +120,53 @@ TEST_F(SandboxFrameTest, PausedAnimationRedrawsNoShadowMap) {
   EXPECT_EQ(views_drawn(), 0u);
   frame.ui()->set_playing(true);
   EXPECT_GT(views_drawn(), 0u);
+  frames.wait_idle();
+}
+
+// ShadowSettings::update on lavapipe, under validation, with the stress scene's lights and crates
+// moving: every_frame draws every map every frame, on_demand none until asked, then only that
+// light's (its tiles pinned by --shadow-resolution requested, so no new tile redraws one).
+TEST_F(SandboxFrameTest, UpdateModesDecideWhichMapsAreDrawnAgain) {
+  sandbox::Options options;
+  options.frame.scene = "stress";
+  options.frame.scene_params = {3000, 3, 3, 1.0f};
+  options.frame.renderer.shadow_resolution = shadows::ShadowResolution::requested;
+  SceneView scene = load_scene_view(options.frame, float(width) / height);
+  ecs::World& world = scene.scene.world;
+  const auto set_update = [&](scene::ShadowUpdate update) {
+    world.query<scene::ShadowSettings>().for_each(
+        [&](ecs::Entity, scene::ShadowSettings& shadow) { shadow.update = update; });
+  };
+  ecs::Entity spot = ecs::null_entity;
+  world.query<const scene::SpotLight>().for_each(
+      [&](ecs::Entity entity, const scene::SpotLight&) { spot = entity; });
+  ASSERT_NE(spot, ecs::null_entity);
+  vk::FrameRing frames(context);
+  sandbox::SandboxFrame frame(context, scene, options, frames.frames_in_flight());
+  frame.frame().resize({width, height});
+  int at = 0;
+  const auto next_frame = [&] {
+    frame.frame().record(frames.begin_frame(), at++ / 60.0);
+    frames.submit();
+    return frame.frame().renderer().shadow_stats();
+  };
+  set_update(scene::ShadowUpdate::every_frame);
+  next_frame();
+  for (int i = 0; i < 2; ++i) {
+    const shadows::ShadowScheduleStats stats = next_frame();
+    EXPECT_GT(stats.views_rendered, 0u);
+    EXPECT_EQ(stats.views_cached, 0u) << "every map drawn every frame";
+  }
+  set_update(scene::ShadowUpdate::on_demand);
+  for (int i = 0; i < 2; ++i) next_frame();  // the switch itself writes the settings
+  for (int i = 0; i < 3; ++i) {
+    const shadows::ShadowScheduleStats stats = next_frame();
+    EXPECT_EQ(stats.views_rendered, 0u) << "lights and crates move, nothing asked";
+    EXPECT_GT(stats.views_cached, 0u);
+  }
+  ASSERT_TRUE(scene::request_shadow_redraw(world, spot));
+  EXPECT_EQ(next_frame().views_rendered, 1u) << "the spot light's map alone";
+  EXPECT_EQ(next_frame().views_rendered, 0u);
   frames.wait_idle();
 }
 

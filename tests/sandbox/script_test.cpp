@@ -21,9 +21,12 @@ TEST(Script, ParsesEveryCommandAndSkipsCommentsAndBlankLines) {
       "camera 0,12,0,0,0,0\n"
       "wait 5\n"
       "screenshot out dir/shot.png\n"
-      "view shadows\n",
+      "view shadows\n"
+      "update on_demand\n"
+      "priority -1.5\n"
+      "redraw_shadow\n",
       "test.txt");
-  ASSERT_EQ(steps.size(), 8u);
+  ASSERT_EQ(steps.size(), 11u);
   EXPECT_EQ(std::get<ScriptStep::Select>(steps[0].command).name, "spot east");
   EXPECT_EQ(steps[0].line, 2);
   EXPECT_EQ(std::get<ScriptStep::Algorithm>(steps[1].command).algorithm, scene::ShadowAlgorithm::pcss_noise);
@@ -34,6 +37,9 @@ TEST(Script, ParsesEveryCommandAndSkipsCommentsAndBlankLines) {
   EXPECT_EQ(std::get<ScriptStep::Screenshot>(steps[6].command).path, "out dir/shot.png");
   EXPECT_EQ(steps[6].line, 9);
   EXPECT_EQ(std::get<ScriptStep::View>(steps[7].command).view, LightingView::shadows);
+  EXPECT_EQ(std::get<ScriptStep::Update>(steps[8].command).update, scene::ShadowUpdate::on_demand);
+  EXPECT_FLOAT_EQ(std::get<ScriptStep::Priority>(steps[9].command).tiers, -1.5f);
+  EXPECT_TRUE(std::holds_alternative<ScriptStep::RedrawShadow>(steps[10].command));
 }
 
 TEST(Script, ErrorsNameTheFileAndLine) {
@@ -54,6 +60,11 @@ TEST(Script, ErrorsNameTheFileAndLine) {
             "run.txt:1: resolution takes a whole number of texels, 16 to 4096, got \"8\"");
   EXPECT_EQ(error_of("move 1 2"), "run.txt:1: move takes three numbers, got \"1 2\"");
   EXPECT_EQ(error_of("select"), "run.txt:1: select takes a light's name");
+  EXPECT_EQ(error_of("update often"),
+            "run.txt:1: update takes auto, every_frame or on_demand, got \"often\"");
+  EXPECT_EQ(error_of("priority 5"), "run.txt:1: priority takes a number of tiers, -4 to 4, got \"5\"");
+  EXPECT_EQ(error_of("priority nan"), "run.txt:1: priority takes a number of tiers, -4 to 4, got \"nan\"");
+  EXPECT_EQ(error_of("redraw_shadow now"), "run.txt:1: redraw_shadow takes nothing, got \"now\"");
   EXPECT_EQ(error_of("view depth"), "run.txt:1: view takes lit or shadows, got \"depth\"");
   EXPECT_NE(error_of("camera 1,2,3,1,2,3").find("run.txt:1: "), std::string::npos);
   EXPECT_THROW(load_script("/nonexistent/script.txt"), std::runtime_error);

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -44,6 +45,8 @@ TEST(SceneSidecar, EditedLightsAndCameraComeBack) {
     edited.world.get_mut<scene::SpotLight>(spot).outer_cone = 0.5f;
     edited.world.destroy(named(edited, "beam"));
     edited.world.get_mut<scene::ShadowSettings>(named(edited, "sun")).cascades = 2;
+    edited.world.get_mut<scene::ShadowSettings>(spot).update = scene::ShadowUpdate::every_frame;
+    edited.world.get_mut<scene::ShadowSettings>(spot).priority = 2.5f;
     scene::add_light(edited, scene::PointLight{glm::vec3(1, 0, 0), 2.0f, 4.0f},
                      ecs::LocalTransform{{1, 2, 3}}, {}, "added");
     save_sidecar(path, edited, {{1, 5, 6}, {0, 0, 0}, {0, 1, 0}});
@@ -57,6 +60,8 @@ TEST(SceneSidecar, EditedLightsAndCameraComeBack) {
   EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(spot).algorithm, scene::ShadowAlgorithm::hard);
   EXPECT_EQ(fresh.world.get<ecs::LocalTransform>(spot).translation, glm::vec3(3, 3, 1));
   EXPECT_FLOAT_EQ(fresh.world.get<scene::SpotLight>(spot).outer_cone, 0.5f);
+  EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(spot).update, scene::ShadowUpdate::every_frame);
+  EXPECT_FLOAT_EQ(fresh.world.get<scene::ShadowSettings>(spot).priority, 2.5f);
   EXPECT_EQ(named(fresh, "beam"), ecs::null_entity);
   EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(named(fresh, "sun")).cascades, 2u);
   const ecs::Entity added = named(fresh, "added");
@@ -85,14 +90,21 @@ TEST(SceneSidecar, MalformedFilesAreRefusedLeavingTheSceneAsItWas) {
   EXPECT_NE(
       refusal(R"({"lights": [{"name": "x", "type": "torch"}]})").find("bad.json: lights[0].type: is not"),
       std::string::npos);
-  EXPECT_NE(refusal(R"({"lights": [{"name": "x", "type": "spot", "range": -1}]})").find("lights[0].range"),
-            std::string::npos);
-  EXPECT_NE(refusal(R"({"lights": [{"name": "x", "type": "point", "shadow": {"algorithm": "soft"}}]})")
-                .find("lights[0].shadow.algorithm"),
-            std::string::npos);
-  EXPECT_NE(refusal(R"({"lights": [{"name": "x", "type": "directional", "shadow": {"cascades": 5}}]})")
-                .find("lights[0].shadow.cascades: is not within 1 .. 4"),
-            std::string::npos);
+  // A light's bad value, and the entry the message names.
+  const std::pair<const char*, const char*> bad_lights[] = {
+      {R"({"name": "x", "type": "spot", "range": -1})", "lights[0].range"},
+      {R"({"name": "x", "type": "point", "shadow": {"algorithm": "soft"}})", "lights[0].shadow.algorithm"},
+      {R"({"name": "x", "type": "directional", "shadow": {"cascades": 5}})",
+       "lights[0].shadow.cascades: is not within 1 .. 4"},
+      {R"({"name": "x", "type": "point", "shadow": {"update": "often"}})",
+       "lights[0].shadow.update: is not one of auto, every_frame, on_demand"},
+      {R"({"name": "x", "type": "point", "shadow": {"priority": -5}})",
+       "lights[0].shadow.priority: is not within -4 .. 4"},
+  };
+  for (const auto& [light, message] : bad_lights) {
+    EXPECT_NE(refusal(std::string(R"({"lights": [)") + light + "]}").find(message), std::string::npos)
+        << light;
+  }
   EXPECT_NE(refusal(R"({"camera": {"eye": [1, 1, 1], "target": [1, 1, 1]}})").find("camera"),
             std::string::npos);
   // A file of a newer form than this engine reads is refused by name, not misread.

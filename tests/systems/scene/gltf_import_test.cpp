@@ -305,7 +305,7 @@ TEST(GltfImport, EachLightTypeWithShadowExtras) {
                   {"intensity", 4},
                   {"range", 12},
                   {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}},
-                  {"extras", {{"algorithm", "noise"}}}});
+                  {"extras", {{"algorithm", "noise"}, {"update", "on_demand"}, {"priority", -1.5}}}});
   file.add_light(
       {{"type", "directional"}, {"intensity", 3}, {"extras", {{"algorithm", "hard"}, {"cascades", 2}}}});
   // Rotated -90 degrees about X: -Z turns to -Y, the light points down.
@@ -342,6 +342,8 @@ TEST(GltfImport, EachLightTypeWithShadowExtras) {
         EXPECT_FLOAT_EQ(spot.outer_cone, 0.5f);
         EXPECT_FLOAT_EQ(spot.range, 12.0f);
         EXPECT_EQ(settings.algorithm, ShadowAlgorithm::noise);
+        EXPECT_EQ(settings.update, ShadowUpdate::on_demand);
+        EXPECT_FLOAT_EQ(settings.priority, -1.5f);
         EXPECT_NEAR(light_direction(world).y, -1.0f, 1e-5f);
       });
   scene.world.query<const DirectionalLight, const ShadowSettings>().for_each(
@@ -388,7 +390,13 @@ TEST(GltfImport, OddLightValuesAreClampedWithWarnings) {
   file.add_light({{"type", "spot"},
                   {"color", {2, 0.5, -1}},
                   {"spot", {{"innerConeAngle", 0.5}, {"outerConeAngle", 0.5}}},
-                  {"extras", {{"algorithm", "soft"}, {"density", 3}, {"resolution", 1e9}, {"cascades", 9}}}});
+                  {"extras",
+                   {{"algorithm", "soft"},
+                    {"density", 3},
+                    {"resolution", 1e9},
+                    {"cascades", 9},
+                    {"update", "often"},
+                    {"priority", 7}}}});
   file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
   Scene scene = load_gltf(file.write_gltf(dir, "odd").string());
   const auto spots = components<SpotLight>(scene);
@@ -400,6 +408,9 @@ TEST(GltfImport, OddLightValuesAreClampedWithWarnings) {
   EXPECT_FLOAT_EQ(shadows[0].density, 1.0f);
   EXPECT_EQ(shadows[0].resolution, 16384u);
   EXPECT_EQ(shadows[0].cascades, max_shadow_cascades);
+  EXPECT_EQ(shadows[0].update, ShadowUpdate::automatic);
+  EXPECT_FLOAT_EQ(shadows[0].priority, max_shadow_priority);
+  EXPECT_TRUE(has_warning(scene, "extras.update \"often\" is not one of"));
   EXPECT_TRUE(has_warning(scene, "color component outside [0, 1]"));
   EXPECT_TRUE(has_warning(scene, "extras.algorithm \"soft\" is not one of"));
   EXPECT_TRUE(has_warning(scene, "extras.density"));

@@ -19,6 +19,7 @@
 #include "systems/scene/lights.h"
 #include "systems/scene/scene_builder.h"
 
+#include "systems/scene/shadow_requests.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/quality_floor.h"
 #include "systems/shadows/shadow_schedule.h"
@@ -158,6 +159,61 @@ TEST(FrameLights, ChangedFollowsTheEcsChangeTicks) {
   EXPECT_FALSE(lights.maps[0].changed);
   EXPECT_TRUE(lights.cubes[0].changed);
   EXPECT_TRUE(lights.cubes[1].changed);
+}
+
+// An on_demand light's map is changed only by a request (or a write of its shadow settings), not
+// by its own moves; it carries its update mode and priority to the schedule.
+TEST(FrameLights, AnOnDemandLightChangesOnlyWhenAsked) {
+  scene::Scene scene = five_lights();
+  scene.world.query<scene::ShadowSettings>().for_each([](ecs::Entity, scene::ShadowSettings& shadow) {
+    shadow.update = scene::ShadowUpdate::on_demand;
+    shadow.priority = 1.5f;
+  });
+  FrameLights lights;
+  for (int i = 0; i < 3; ++i) {
+    scene.world.advance_tick();
+    gather_lights(scene.world, bounds, {}, lights);
+  }
+  ASSERT_FALSE(lights.cubes[0].changed);
+  EXPECT_EQ(lights.cubes[0].update, scene::ShadowUpdate::on_demand);
+  EXPECT_EQ(lights.maps[0].priority, 1.5f);
+
+  scene.world.advance_tick();
+  ecs::Entity moved = ecs::null_entity;
+  scene.world.query<scene::PointLight, ecs::WorldTransform>().for_each(
+      [&](ecs::Entity entity, scene::PointLight& light, ecs::WorldTransform& world) {
+        light.range *= 2.0f;
+        world.matrix[3].x += 1.0f;
+        moved = entity;
+      });
+  gather_lights(scene.world, bounds, {}, lights);
+  EXPECT_FALSE(lights.cubes[0].changed) << "moved, not asked";
+  EXPECT_FALSE(lights.cubes[1].changed);
+
+  scene.world.advance_tick();
+  ASSERT_TRUE(scene::request_shadow_redraw(scene.world, moved));
+  gather_lights(scene.world, bounds, {}, lights);
+  for (const ShadowCubeView& cube : lights.cubes) {
+    EXPECT_EQ(cube.changed, cube.key == light_key(moved)) << "only the light asked";
+  }
+}
+
+// ShadowSettings::priority: tiers added to log2 of the atlas importance.
+TEST(ShadowSchedule, PriorityScalesALightsImportanceByPowersOfTwo) {
+  scene::Scene scene = five_lights();
+  FrameLights lights;
+  gather_lights(scene.world, bounds, {}, lights);
+  ShadowSchedule schedule(small_atlas);
+  const ShadowCamera camera = camera_at({0.0f, 30.0f, 40.0f});
+  schedule.schedule(lights, camera, {}, 0);
+  const float plain = lights.cubes[0].importance;
+  ASSERT_GT(plain, 0.0f);
+  lights.cubes[0].priority = 2.0f;
+  schedule.schedule(lights, camera, {}, 0);
+  EXPECT_FLOAT_EQ(lights.cubes[0].importance, 4.0f * plain);
+  lights.cubes[0].priority = -9.0f;  // beyond the range: its end
+  schedule.schedule(lights, camera, {}, 0);
+  EXPECT_FLOAT_EQ(lights.cubes[0].importance, plain / 16.0f);
 }
 
 TEST(ShadowSchedule, GivesEachShadowedRecordItsTiles) {

@@ -74,6 +74,28 @@ TEST(ShadowCache, NewLightsRenderThenStayCachedWhileNothingChanges) {
   }
 }
 
+// ShadowSettings::update: every_frame renders unchanged; on_demand ignores caster changes (still
+// or moving) and renders when `changed` (asked) or invalid.
+TEST(ShadowCache, UpdateModesRenderEveryFrameOrOnlyWhenAsked) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights{spot(1), spot(2), spot(3)};
+  lights[1].update = scene::ShadowUpdate::every_frame;
+  lights[2].update = scene::ShadowUpdate::on_demand;
+  plan(cache, lights);
+  const std::vector<ShadowCacheLight> still = unchanged(lights);
+  EXPECT_EQ(plan(cache, still).render, (std::vector<uint8_t>{0, 1, 0}));
+  const std::vector<scene::Aabb> crate{{glm::vec3(-0.5f), glm::vec3(0.5f)}};  // in every light's reach
+  EXPECT_EQ(plan(cache, still, 0, crate).render, (std::vector<uint8_t>{1, 1, 0}));
+  EXPECT_EQ(plan_layered(cache, still, {}, crate).render[2], keep_map) << "moving casters too";
+  EXPECT_EQ(plan(cache, still).usable[2], 1) << "its old map is sampled";
+  std::vector<ShadowCacheLight> asked = still;
+  asked[2].changed = true;
+  EXPECT_EQ(plan(cache, asked).render, (std::vector<uint8_t>{0, 1, 1}));
+  std::vector<ShadowCacheLight> moved_tile = still;
+  moved_tile[2].invalid = true;
+  EXPECT_EQ(plan(cache, moved_tile).render[2], 1) << "a new tile holds nothing to keep";
+}
+
 TEST(ShadowCache, AChangedLightRendersAlone) {
   ShadowCache cache;
   std::vector<ShadowCacheLight> lights{spot(1), spot(2), spot(3)};
