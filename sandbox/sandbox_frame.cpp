@@ -26,6 +26,7 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Op
     ui_ = std::make_unique<SandboxUi>(window);
     ui_->set_playing(options.frame.animate);
     ui_->set_view(options.frame.renderer.view);
+    ui_->set_ambient(options.frame.renderer.ambient);
     ui_->set_light_heatmap(options.light_heatmap);
     ui_pass_ = std::make_unique<UiPass>(context, frame_format, frames_in_flight);
   }
@@ -48,6 +49,7 @@ FrameExtension SandboxFrame::extension() {
       }
     }
     frame_.renderer().set_view(ui_->view());
+    frame_.renderer().set_ambient(ui_->ambient());
     frame_.set_playing(ui_->playing());
   };
   extension.prepare = [this](uint32_t slot) {

@@ -165,6 +165,7 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
   ImGui::Text("shadow atlas %.0f MiB", facts.shadow_mib);
   constexpr const char* views[] = {"lit", "shadows only"};
   ImGui::Combo("view", &view_, views, IM_ARRAYSIZE(views));
+  ImGui::DragFloat3("ambient", glm::value_ptr(ambient_), 0.005f, 0.0f, 16.0f, "%.3f");
   ImGui::Checkbox("lights per tile (heat map)", &light_heatmap_);
   if (light_heatmap_ && (facts.lighting == to_string(LightingPath::fused) ||
                          facts.lighting == to_string(LightingPath::every_light))) {

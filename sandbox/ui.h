@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
 
 #include "ecs/entity.h"
 #include "ecs/world.h"
@@ -88,6 +89,9 @@ class SandboxUi {
   // The picture the panel's "view" asks for (the frame starts it from --view).
   LightingView view() const { return static_cast<LightingView>(view_); }
   void set_view(LightingView view) { view_ = static_cast<int>(view); }
+  // The Frame panel's ambient term (RendererSettings::ambient).
+  const glm::vec3& ambient() const { return ambient_; }
+  void set_ambient(const glm::vec3& ambient) { ambient_ = ambient; }
 
   // Whether the light-count heat map is drawn (the panel's checkbox; from --light-heatmap).
   bool light_heatmap() const { return light_heatmap_; }
@@ -124,6 +128,7 @@ class SandboxUi {
   bool export_requested_ = false;
   bool playing_ = true;
   int view_ = 0;  // a LightingView
+  glm::vec3 ambient_{0.0f};
   bool light_heatmap_ = false;
   std::vector<UiDepthView> depth_views_;
 };

@@ -11,7 +11,7 @@ layout(location = 2) out vec4 out_lit_sum;
 
 void main() {
   SurfacePoint p = write_gbuffer();
-  // camera_position.w: the ambient term. Alpha: the shadow filter floor, none until
+  // frame.ambient: the ambient term. Alpha: the shadow filter floor, none until
   // lighting_filter_floor.comp sets one.
-  out_lit_sum = vec4(frame.camera_position.w * p.base_color, 0.0);
+  out_lit_sum = vec4(frame.ambient.rgb * p.base_color, 0.0);
 }

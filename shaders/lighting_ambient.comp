@@ -15,15 +15,15 @@ layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
 layout(set = 0, binding = hdr_binding, rgba16f) uniform writeonly image2D hdr;
 
 layout(push_constant) uniform Constants {
-  vec4 background_ambient;  // rgb: the background color; w: the ambient term
-  uvec4 screen;             // x width, y height
+  vec4 background;  // rgb: the background color
+  vec4 ambient;     // rgb: the ambient term kA * IA
+  uvec4 screen;     // x width, y height
 } frame;
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(frame.screen.x) || pixel.y >= int(frame.screen.y)) return;
   bool background = is_background_depth(texelFetch(scene_depth, pixel, 0).r);
-  vec3 color = background ? frame.background_ambient.rgb
-                           : frame.background_ambient.w * texelFetch(gbuffer_albedo, pixel, 0).rgb;
+  vec3 color = background ? frame.background.rgb : frame.ambient.rgb * texelFetch(gbuffer_albedo, pixel, 0).rgb;
   imageStore(hdr, pixel, vec4(color, 0.0));  // alpha: no filter floor (lighting_filter_floor.comp)
 }

@@ -11,7 +11,7 @@ layout(location = 0) out vec4 out_color;
 
 void main() {
   SurfacePoint p = fragment_surface();
-  vec3 color = frame.camera_position.w * p.base_color;
+  vec3 color = frame.ambient.rgb * p.base_color;
   color += shade_lights(p, in_world_position, frame.counts.x);
   out_color = vec4(color, 1.0);
 }

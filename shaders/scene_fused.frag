@@ -42,7 +42,7 @@ vec3 shade_group(uint group, inout uint next, SurfacePoint p) {
 
 void main() {
   SurfacePoint p = fragment_surface();
-  vec3 color = frame.camera_position.w * p.base_color;
+  vec3 color = frame.ambient.rgb * p.base_color;
   uint next = 0u;
   color += shade_group(0u, next, p);
   color += shade_group(1u, next, p);

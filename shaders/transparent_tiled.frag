@@ -41,7 +41,7 @@ void main() {
   SurfacePoint p = fragment_surface();
   uvec2 tile_xy = uvec2(gl_FragCoord.xy) / LIGHT_TILE_SIZE;
   uint tile = tile_xy.y * frame.counts.y + tile_xy.x;  // counts.y: tiles across
-  vec3 color = frame.camera_position.w * p.base_color;
+  vec3 color = frame.ambient.rgb * p.base_color;
   // One call per group with a literal group, so each call's shadow code is resolved at compile time.
   color += shade_group(0u, tile, p);
   color += shade_group(1u, tile, p);

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "systems/frame/frame_settings.h"
 
+#include <cstdio>
+#include <stdexcept>
+#include <string>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "rendergraph/device/context.h"
 #include "systems/lighting/tiled_lighting_pass.h"
@@ -21,6 +26,16 @@ std::string camera_text(const scene::CameraPose& pose) {
     }
   }
   return text;
+}
+
+// "R,G,B": three finite numbers in [0, 16].
+glm::vec3 parse_ambient(const std::string& text) {
+  glm::vec3 color;
+  char end = 0;
+  bool valid = std::sscanf(text.c_str(), "%f,%f,%f%c", &color.r, &color.g, &color.b, &end) == 3;
+  for (int c = 0; valid && c < 3; ++c) valid = color[c] >= 0.0f && color[c] <= 16.0f;
+  if (!valid) throw std::invalid_argument("takes three numbers from 0 to 16, R,G,B, got \"" + text + "\"");
+  return color;
 }
 
 std::vector<Setting<S>> make_table() {
@@ -44,6 +59,16 @@ std::vector<Setting<S>> make_table() {
           s.camera = scene::parse_camera(text);
         }
       }};
+  Setting<S> ambient{
+      {"ambient", "R,G,B",
+       "the ambient term per channel, linear: what a surface reflects of its base color where no "
+       "light reaches",
+       SettingType::text},
+      [](const S& s) -> std::optional<std::string> {
+        const glm::vec3& a = s.renderer.ambient;
+        return setting_text::format(a.r) + "," + setting_text::format(a.g) + "," + setting_text::format(a.b);
+      },
+      [](S& s, const std::string& text) { s.renderer.ambient = parse_ambient(text); }};
   Setting<S> naive = flag<S>(
       "naive", [](auto& s) -> auto& { return s.naive; },
       "the source documents' frame as a baseline: a pass per shadow view and six per cube, "
@@ -168,6 +193,7 @@ std::vector<Setting<S>> make_table() {
           "lit-sum-start", [](auto& s) -> auto& { return s.renderer.lit_sum_start; },
           "where deferred lighting starts the lit sum (ambient term, background): a full-screen "
           "pass, or a G-buffer target (auto: the G-buffer on CPU devices, the pass on GPUs)"),
+      ambient,
       number<S>(
           "exposure", "E", [](auto& s) -> auto& { return s.renderer.exposure; }, 1e-3, 1e3,
           "multiplies the lit color before tone mapping"),

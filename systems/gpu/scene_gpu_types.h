@@ -27,9 +27,10 @@ inline constexpr glm::vec3 background_color{0.02f, 0.02f, 0.03f};
 
 struct FrameConstants {
   glm::mat4 view_projection;
-  glm::vec4 camera_position;  // w: ambient term kA * IA
+  glm::vec4 camera_position;  // xyz; w: unused
   // x: lights; y: light tiles across the screen (transparent_tiled.frag); z, w: tone_mapping's
   glm::uvec4 counts;
+  glm::vec4 ambient;  // rgb: the ambient term kA * IA (RendererSettings::ambient); w: unused
 };
 static_assert(sizeof(FrameConstants) <= 128, "Vulkan guarantees only 128 bytes of push constants");
 

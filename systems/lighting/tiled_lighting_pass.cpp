@@ -23,8 +23,9 @@ using namespace bindings;
 constexpr VkShaderStageFlags compute_stage = VK_SHADER_STAGE_COMPUTE_BIT;
 
 struct AmbientConstants {
-  glm::vec4 background_ambient;  // rgb: the background color; w: the ambient term
-  glm::uvec4 screen;             // width, height
+  glm::vec4 background;  // rgb: the background color
+  glm::vec4 ambient;     // rgb: the ambient term
+  glm::uvec4 screen;     // width, height
 };
 
 // shaders/tiled_lighting_frame.glsl's push constants.
@@ -129,7 +130,7 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
 rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer& gbuffer,
                                           const LightTiles& tiles, rg::ImageHandle atlas,
                                           const vk::Buffer& lights, const glm::mat4& view_projection,
-                                          const glm::vec3& camera_position, float ambient) const {
+                                          const glm::vec3& camera_position, const glm::vec3& ambient) const {
   // A copy: declaring images may move the graph's resource list.
   const rg::ImageDesc screen = graph.resources()[gbuffer.albedo.index].image;
   const LightTileGrid grid = LightTileGrid::of(screen.width, screen.height);
@@ -154,9 +155,10 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
           return lit_sum;
         },
         [this, albedo = gbuffer.albedo, depth = gbuffer.depth,
-         constants =
-             AmbientConstants{glm::vec4(background_color, ambient), {screen.width, screen.height, 0, 0}}](
-            rg::ImageHandle lit_sum, const vk::PassRecorder& rec) {
+         constants = AmbientConstants{glm::vec4(background_color, 0.0f),
+                                      glm::vec4(ambient, 0.0f),
+                                      {screen.width, screen.height, 0, 0}}](rg::ImageHandle lit_sum,
+                                                                            const vk::PassRecorder& rec) {
           const VkDescriptorSet set =
               ambient_layout_.write(rec.allocate_set(ambient_layout_))
                   .image(gbuffer_albedo_binding, rec.view(albedo), nearest_.get())

@@ -50,10 +50,10 @@ class TiledLightingPass {
   // filtering is ranked and the view lit, and one pass per group with lights
   // in the last prepare(); returns the lit sum's newest version. `lights`, the records prepare() saw,
   // must live until the frame is recorded. Positions come from the depth buffer through the
-  // camera's `view_projection`; `ambient` is the ambient term kA * IA.
+  // camera's `view_projection`; `ambient` is the ambient term kA * IA per channel.
   rg::ImageHandle add_to(rg::RenderGraph& graph, const GBuffer& gbuffer, const LightTiles& tiles,
                          rg::ImageHandle atlas, const vk::Buffer& lights, const glm::mat4& view_projection,
-                         const glm::vec3& camera_position, float ambient) const;
+                         const glm::vec3& camera_position, const glm::vec3& ambient) const;
 
   // Whether the G-buffer pass must start the lit sum (GBufferPass's writes_lit_sum), the
   // ambient pass then left out (LitSumStart, lighting_path.h).

@@ -51,6 +51,9 @@ struct RendererSettings {
   // wrong only through moving casters redraw just those.
   bool static_shadow_layers = true;
   float exposure = 1.0f;  // multiplies the lit sum before tone mapping
+  // The ambient term kA * IA per channel, linear RGB (docs/ALGORITHMS.md 2.6): what a surface
+  // reflects of its base color where no light reaches.
+  glm::vec3 ambient{0.15f};
   LightingView view = LightingView::lit;
   // Threads that run a frame's CPU work split in pieces, the calling thread included; 0: one per
   // hardware thread.

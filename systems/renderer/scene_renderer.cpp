@@ -266,9 +266,9 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
       projection_matrix(lens, float(target.width) / float(target.height)) * view_matrix(pose);
   const auto light_count = static_cast<uint32_t>(lights_.records.size());
   const LightTileGrid grid = LightTileGrid::of(target.width, target.height);
-  const float ambient_term = settings_.view == LightingView::lit ? ambient : 0.0f;
-  const FrameConstants constants{view_projection, glm::vec4(pose.eye, ambient_term),
-                                 glm::uvec4(light_count, grid.across, 0, 0)};
+  const glm::vec3 ambient_term = settings_.view == LightingView::lit ? settings_.ambient : glm::vec3(0.0f);
+  const FrameConstants constants{view_projection, glm::vec4(pose.eye, 0.0f),
+                                 glm::uvec4(light_count, grid.across, 0, 0), glm::vec4(ambient_term, 0.0f)};
   const vk::Buffer& records = light_records_.buffer(slot);
 
   if (lighting_ == LightingPath::fused) {  // lights and tone-maps in one pass, straight into the frame

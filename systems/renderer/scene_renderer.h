@@ -52,9 +52,6 @@ struct RenderedFrame {
 
 class SceneRenderer {
  public:
-  // docs/ALGORITHMS.md section 2.6's default ambient term kA * IA.
-  static constexpr float ambient = 0.15f;
-
   // Uploads `scene`'s meshes and textures; the scene's world is read by gather() each frame.
   // `frame_format` is the format of the images add_passes draws the picture into.
   SceneRenderer(vk::VulkanContext& context, const scene::Scene& scene, uint32_t frames_in_flight,
@@ -111,6 +108,8 @@ class SceneRenderer {
   const jobs::ThreadPool& workers() const { return workers_; }
   // Switches the picture between lit and shadow-only from the next prepare() on.
   void set_view(LightingView view) { settings_.view = view; }
+  void set_ambient(const glm::vec3& ambient) { settings_.ambient = ambient; }
+  const glm::vec3& ambient() const { return settings_.ambient; }
   // From the next prepare() on, each lit frame also records its lights' shadows into `probe`
   // (systems/lighting/shadow_probe.h); null: no more. Deferred lighting only: throws on the
   // fused and every-light paths, which have no per-pixel light lists to walk.

@@ -174,6 +174,11 @@ TEST(SandboxOptions, NumbersAreDecimal) {
   EXPECT_EQ(parse_ok({"--point-lights", "07"}).frame.scene_params.point_lights, 7u);
 }
 
+TEST(SandboxOptions, AmbientIsParsedPerChannel) {
+  EXPECT_EQ(parse_ok({}).frame.renderer.ambient, glm::vec3(0.15f));
+  EXPECT_EQ(parse_ok({"--ambient", "0.3,0.1,0"}).frame.renderer.ambient, glm::vec3(0.3f, 0.1f, 0.0f));
+}
+
 TEST(SandboxOptions, CameraIsParsed) {
   const Options options = parse_ok({"--camera", "1,2.5,-3,0,0,10"});
   ASSERT_TRUE(options.frame.camera.has_value());
@@ -207,6 +212,9 @@ TEST(SandboxOptions, ImpossibleValuesAreUsageErrors) {
       {{"--camera", "1,2,3"}, "--camera \"1,2,3\": value list: expected 6 numbers"},
       {{"--camera", "1,2,x,4,5,6"}, "value 3: \"x\" is not a finite number"},
       {{"--camera", "1,2,3,1,2,3"}, "eye and target are the same point"},
+      {{"--ambient", "0.1,0.1"}, "takes three numbers from 0 to 16, R,G,B, got \"0.1,0.1\""},
+      {{"--ambient", "1,1,-1"}, "got \"1,1,-1\""},
+      {{"--ambient", "1,1,1,"}, "got \"1,1,1,\""},
       {{"--width", "0"}, "--width"},
       {{"--no-such-option"}, "--no-such-option"},
       {{"--scene"}, "--scene"},

@@ -85,7 +85,7 @@ FloorScene make_floor_scene() {
   return s;
 }
 
-glm::vec3 expected_floor_color(const FloorScene& s, glm::vec3 point) {
+glm::vec3 expected_floor_color(const FloorScene& s, glm::vec3 point, const glm::vec3& ambient) {
   const scene::Material& m = s.floor_material;
   const glm::vec3 base = glm::vec3(m.base_color);
   const glm::vec3 n(0.0f, 1.0f, 0.0f);
@@ -95,16 +95,16 @@ glm::vec3 expected_floor_color(const FloorScene& s, glm::vec3 point) {
   const glm::vec3 radiance = s.sun.color * s.sun.intensity;
   const float n_dot_l = std::max(glm::dot(n, l), 0.0f);
   const float spec = n_dot_l > 0.0f ? std::pow(std::max(glm::dot(n, h), 0.0f), m.shininess) : 0.0f;
-  return SceneRenderer::ambient * base + base * radiance * n_dot_l + m.specular * radiance * spec;
+  return ambient * base + base * radiance * n_dot_l + m.specular * radiance * spec;
 }
 
-using OffscreenRender = GpuTest;
-
-TEST_F(OffscreenRender, FloorMatchesLightingFormula) {
+// Renders the floor scene with `settings` and compares every unoccluded floor pixel with the
+// formula.
+void expect_floor_matches_formula(vk::VulkanContext& context, const FrameSettings& settings) {
   FloorScene s = make_floor_scene();
   {
     vk::FrameRing frames(context);
-    Frame frame(context, s.sandbox, FrameSettings{}, frames.frames_in_flight());
+    Frame frame(context, s.sandbox, settings, frames.frames_in_flight());
     frame.resize({width, height});
     for (int i = 0; i < 3; ++i) {  // later frames exercise the between-frame barriers
       vk::FrameSlot& slot = frames.begin_frame();
@@ -131,7 +131,7 @@ TEST_F(OffscreenRender, FloorMatchesLightingFormula) {
         }
         if (occluded) continue;
 
-        const glm::vec3 expected = expected_floor_color(s, point);
+        const glm::vec3 expected = expected_floor_color(s, point, settings.renderer.ambient);
         const uint8_t* pixel = image.at(x, y);
         ++checked;
         for (int c = 0; c < 3; ++c) {
@@ -147,6 +147,26 @@ TEST_F(OffscreenRender, FloorMatchesLightingFormula) {
     }
     EXPECT_GT(checked, 300) << "too few unoccluded floor pixels were checked to mean anything";
     EXPECT_EQ(mismatched, 0);
+  }
+}
+
+using OffscreenRender = GpuTest;
+
+TEST_F(OffscreenRender, FloorMatchesLightingFormula) {
+  expect_floor_matches_formula(context, FrameSettings{});
+}
+
+// The ambient term per channel (--ambient): fused, and deferred with the lit sum started either way.
+TEST_F(OffscreenRender, FloorMatchesLightingFormulaWithAColoredAmbient) {
+  FrameSettings settings;
+  settings.renderer.ambient = {0.4f, 0.05f, 0.2f};
+  settings.renderer.lighting = LightingPath::fused;
+  expect_floor_matches_formula(context, settings);
+  settings.renderer.lighting = LightingPath::deferred;
+  for (const LitSumStart start : {LitSumStart::gbuffer, LitSumStart::pass}) {
+    SCOPED_TRACE(std::string(to_string(start)));
+    settings.renderer.lit_sum_start = start;
+    expect_floor_matches_formula(context, settings);
   }
 }
 
