@@ -50,6 +50,9 @@ std::vector<Setting<O>> make_table() {
           "screenshot", "PNG", [](auto& o) -> auto& { return o.screenshot; },
           "write the last frame as PNG (headless default: shadowgraph.png)"),
       no_vsync,
+      number<O>(
+          "max-fps", "N", [](auto& o) -> auto& { return o.max_fps; }, 0.0, 1000.0,
+          "in a window, start a frame at most N times a second (0: no cap; also in the Frame panel)"),
       ui,
       script,
       text<O>(

@@ -18,6 +18,7 @@ struct Options {
   std::optional<uint32_t> frames;  // unset: headless renders 3, a window runs until closed
   std::string screenshot;          // PNG of the last frame; headless defaults to shadowgraph.png
   bool vsync = true;
+  double max_fps = 0.0;          // --max-fps: the window's frame-rate cap; 0: none
   std::string stats_path;        // --stats: JSON facts about the run; empty: none
   bool depth_overlay = false;    // --depth-overlay: the render-graph extension example
   bool light_heatmap = false;    // --light-heatmap: lights per screen tile

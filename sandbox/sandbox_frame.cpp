@@ -27,6 +27,7 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Op
     ui_->set_playing(options.frame.animate);
     ui_->set_view(options.frame.renderer.view);
     ui_->set_ambient(options.frame.renderer.ambient);
+    ui_->set_max_fps(float(options.max_fps));
     ui_->set_light_heatmap(options.light_heatmap);
     ui_pass_ = std::make_unique<UiPass>(context, frame_format, frames_in_flight);
   }

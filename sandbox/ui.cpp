@@ -63,6 +63,12 @@ void edit_light_parameters(ecs::World& world, ecs::Entity entity) {
           ImGui::SliderAngle("inner cone", &light.inner_cone, 0.0f, glm::degrees(light.outer_cone) - 0.1f);
       changed |= ImGui::SliderAngle("outer cone", &light.outer_cone, 1.0f, 90.0f);
     }
+    if constexpr (requires { light.outer_radius; }) {  // r < R, as the cylinder light's falloff needs
+      changed |= ImGui::DragFloat("outer radius", &light.outer_radius, 0.01f, 0.02f, 1e3f);
+      changed |=
+          ImGui::DragFloat("inner radius", &light.inner_radius, 0.01f, 0.0f, light.outer_radius - 0.01f);
+      light.inner_radius = std::min(light.inner_radius, light.outer_radius - 0.01f);
+    }
     return changed;
   });
 }
@@ -166,6 +172,7 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
   constexpr const char* views[] = {"lit", "shadows only"};
   ImGui::Combo("view", &view_, views, IM_ARRAYSIZE(views));
   ImGui::DragFloat3("ambient", glm::value_ptr(ambient_), 0.005f, 0.0f, 16.0f, "%.3f");
+  ImGui::DragFloat("max fps", &max_fps_, 1.0f, 0.0f, 1000.0f, max_fps_ > 0.0f ? "%.0f" : "no cap");
   ImGui::Checkbox("lights per tile (heat map)", &light_heatmap_);
   if (light_heatmap_ && (facts.lighting == to_string(LightingPath::fused) ||
                          facts.lighting == to_string(LightingPath::every_light))) {

@@ -89,6 +89,9 @@ class SandboxUi {
   // The picture the panel's "view" asks for (the frame starts it from --view).
   LightingView view() const { return static_cast<LightingView>(view_); }
   void set_view(LightingView view) { view_ = static_cast<int>(view); }
+  // The Frame panel's frame-rate cap (FramePacer, 0: none).
+  float max_fps() const { return max_fps_; }
+  void set_max_fps(float fps) { max_fps_ = fps; }
   // The Frame panel's ambient term (RendererSettings::ambient).
   const glm::vec3& ambient() const { return ambient_; }
   void set_ambient(const glm::vec3& ambient) { ambient_ = ambient; }
@@ -129,6 +132,7 @@ class SandboxUi {
   bool playing_ = true;
   int view_ = 0;  // a LightingView
   glm::vec3 ambient_{0.0f};
+  float max_fps_ = 0.0f;
   bool light_heatmap_ = false;
   std::vector<UiDepthView> depth_views_;
 };

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <thread>
 
 #define GLFW_INCLUDE_VULKAN
 #include <utility>
@@ -32,6 +33,7 @@ VkExtent2D framebuffer_extent(GLFWwindow* window) {
 
 WindowSession::WindowSession(const Options& options)
     : scene_(load_scene_view(options.frame, float(options.frame.width) / float(options.frame.height))) {
+  pacer_.set_max_fps(options.max_fps);
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   window_ =
       glfwCreateWindow(int(options.frame.width), int(options.frame.height), "Shadowgraph", nullptr, nullptr);
@@ -114,6 +116,8 @@ FlyInput WindowSession::fly_input() {
 }
 
 FrameResult WindowSession::frame() {
+  if (const SandboxUi* ui = frame_->ui()) pacer_.set_max_fps(ui->max_fps());
+  std::this_thread::sleep_for(pacer_.wait(FramePacer::Clock::now()));
   glfwPollEvents();
   if (glfwWindowShouldClose(window_)) return FrameResult::closed;
   const VkExtent2D extent = framebuffer_extent(window_);

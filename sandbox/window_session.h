@@ -12,6 +12,7 @@
 
 #include "rendergraph/device/fwd.h"
 #include "sandbox/fly_camera.h"
+#include "sandbox/frame_pacer.h"
 #include "sandbox/options.h"
 #include "systems/frame/gpu_time_log.h"
 #include "systems/frame/scene_view.h"
@@ -70,6 +71,7 @@ class WindowSession {
   std::vector<double> frame_ms_;
   std::vector<double> wall_frame_ms_;
   std::optional<std::chrono::steady_clock::time_point> last_present_;
+  FramePacer pacer_;
   GpuTimeLog gpu_times_;
 };
 
