@@ -20,11 +20,10 @@ namespace {
 // The last frame's maps with a tile into `out`: the largest (then by name) first, at most
 // RunStats::max_listed_maps of them, and how many there were.
 void list_shadow_maps(const shadows::FrameLights& lights, RunStats::Shadows& out) {
-  constexpr uint64_t texel_bytes = shadows::atlas_texel_bytes;
   const auto row = [](const auto& view, uint32_t faces) {
     return RunStats::Shadows::Map{view.name,
                                   view.resolution,
-                                  faces * uint64_t(view.resolution) * view.resolution * texel_bytes,
+                                  shadows::shadow_map_bytes(view.resolution, faces),
                                   view.frames_since_drawn,
                                   std::string(to_string(view.update)),
                                   view.priority};

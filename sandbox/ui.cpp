@@ -51,6 +51,21 @@ void edit(ecs::World& world, ecs::Entity entity, Widget widget) {
   if (widget(copy)) world.get_mut<T>(entity) = copy;
 }
 
+// A combo of E's names (enum_names.h), as extras, scripts and the sidecar spell them.
+template <NamedEnum E>
+bool enum_combo(const char* label, E& value) {
+  constexpr auto names = enum_names(E{});
+  int current = 0;
+  const char* labels[names.size()];
+  for (size_t i = 0; i < names.size(); ++i) {
+    labels[i] = names[i].second.data();
+    if (names[i].first == value) current = int(i);
+  }
+  if (!ImGui::Combo(label, &current, labels, int(names.size()))) return false;
+  value = names[size_t(current)].first;
+  return true;
+}
+
 template <class Light>
 void edit_light_parameters(ecs::World& world, ecs::Entity entity) {
   edit<Light>(world, entity, [](Light& light) {
@@ -215,7 +230,9 @@ void SandboxUi::shadow_map_panel(const ecs::World& world, const UiFacts& facts) 
   }
   const uint64_t key = ecs::entity_key(selected_);
   const float page = float(facts.atlas_page);
-  constexpr double texel_bytes = shadows::atlas_texel_bytes;  // the map's own, static layers aside
+  const auto kib = [](uint32_t resolution, uint32_t faces) {
+    return double(shadows::shadow_map_bytes(resolution, faces)) / 1024.0;
+  };
   const auto image = [&](const shadows::AtlasTile& tile, const UiDepthView& view, float side) {
     depth_views_.push_back(view);
     const auto id = reinterpret_cast<ImTextureID>(static_cast<intptr_t>(depth_views_.size()));
@@ -229,16 +246,14 @@ void SandboxUi::shadow_map_panel(const ecs::World& world, const UiFacts& facts) 
     if (shadows::view_light_key(map.key) != key || map.resolution == 0) continue;
     if (const uint32_t cascade = shadows::view_cascade_number(map.key)) ImGui::Text("cascade %u", cascade);
     ImGui::Text("%u x %u texels, layer %u, %.1f KiB, drawn %u frames ago", map.resolution, map.resolution,
-                map.tile.page, double(map.resolution) * map.resolution * texel_bytes / 1024.0,
-                map.frames_since_drawn);
+                map.tile.page, kib(map.resolution, 1), map.frames_since_drawn);
     image(map.tile, {map.tile.page, map.view.near, map.view.far, map.view.orthographic}, 256.0f);
     shown = true;
   }
   for (const shadows::ShadowCubeView& cube : facts.frame_lights->cubes) {
     if (cube.key != key || cube.resolution == 0) continue;
     ImGui::Text("six faces of %u x %u texels, distance / range, %.1f KiB, drawn %u frames ago",
-                cube.resolution, cube.resolution,
-                6.0 * cube.resolution * cube.resolution * texel_bytes / 1024.0, cube.frames_since_drawn);
+                cube.resolution, cube.resolution, kib(cube.resolution, 6), cube.frames_since_drawn);
     constexpr const char* faces[] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
     for (int f = 0; f < 6; ++f) {
       if (f % 3 != 0) ImGui::SameLine();
@@ -378,14 +393,7 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
     const bool directional = world.try_get<scene::DirectionalLight>(selected_) != nullptr;
     edit<scene::ShadowSettings>(world, selected_, [directional](scene::ShadowSettings& shadow) {
       bool changed = ImGui::Checkbox("casts shadow", &shadow.casts_shadow);
-      int algorithm = static_cast<int>(shadow.algorithm);
-      const char* names[std::size(scene::all_shadow_algorithms)];
-      for (size_t a = 0; a < std::size(names); ++a)
-        names[a] = to_string(scene::all_shadow_algorithms[a]).data();
-      if (ImGui::Combo("algorithm", &algorithm, names, int(std::size(names)))) {
-        shadow.algorithm = static_cast<scene::ShadowAlgorithm>(algorithm);
-        changed = true;
-      }
+      changed |= enum_combo("algorithm", shadow.algorithm);
       changed |= ImGui::DragFloat("constant bias", &shadow.constant_bias, 0.0001f, 0.0f, 0.1f, "%.4f");
       changed |= ImGui::DragFloat("slope bias", &shadow.slope_bias, 0.0005f, 0.0f, 0.5f, "%.4f");
       changed |= ImGui::DragFloat("pcf radius", &shadow.pcf_radius, 0.05f, 0.0f, 16.0f);
@@ -402,12 +410,7 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
         shadow.cascades = static_cast<uint32_t>(cascades);
         changed = true;
       }
-      int update = static_cast<int>(shadow.update);
-      const char* updates[] = {"auto", "every frame", "on demand"};
-      if (ImGui::Combo("update", &update, updates, int(std::size(updates)))) {
-        shadow.update = static_cast<scene::ShadowUpdate>(update);
-        changed = true;
-      }
+      changed |= enum_combo("update", shadow.update);
       changed |= ImGui::SliderFloat("priority", &shadow.priority, -scene::max_shadow_priority,
                                     scene::max_shadow_priority, "%.2f tiers");
       return changed;

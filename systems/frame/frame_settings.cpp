@@ -2,6 +2,7 @@
 #include "systems/frame/frame_settings.h"
 
 #include <cstdio>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,9 +18,10 @@ namespace {
 
 using S = FrameSettings;
 
-std::string camera_text(const scene::CameraPose& pose) {
+// The points' coordinates, comma-separated, as --camera and --ambient take them.
+std::string comma_list(std::initializer_list<glm::vec3> points) {
   std::string text;
-  for (const glm::vec3& point : {pose.eye, pose.target}) {
+  for (const glm::vec3& point : points) {
     for (int i = 0; i < 3; ++i) {
       if (!text.empty()) text += ',';
       text += setting_text::format(point[i]);
@@ -48,7 +50,7 @@ std::vector<Setting<S>> make_table() {
        "frames the scene's bounds",
        SettingType::text},
       [](const S& s) -> std::optional<std::string> {
-        if (s.camera) return camera_text(*s.camera);
+        if (s.camera) return comma_list({s.camera->eye, s.camera->target});
         if (!s.camera_name.empty()) return s.camera_name;
         return std::nullopt;
       },
@@ -64,10 +66,7 @@ std::vector<Setting<S>> make_table() {
        "the ambient term per channel, linear: what a surface reflects of its base color where no "
        "light reaches",
        SettingType::text},
-      [](const S& s) -> std::optional<std::string> {
-        const glm::vec3& a = s.renderer.ambient;
-        return setting_text::format(a.r) + "," + setting_text::format(a.g) + "," + setting_text::format(a.b);
-      },
+      [](const S& s) -> std::optional<std::string> { return comma_list({s.renderer.ambient}); },
       [](S& s, const std::string& text) { s.renderer.ambient = parse_ambient(text); }};
   Setting<S> naive = flag<S>(
       "naive", [](auto& s) -> auto& { return s.naive; },

@@ -44,7 +44,6 @@ constexpr std::optional<E> parse_enum(std::string_view name) {
   return std::nullopt;
 }
 
-// Every value, in the table's order.
 // "a, b, c": the names, for messages.
 template <NamedEnum E>
 std::string enum_name_list() {
@@ -53,6 +52,7 @@ std::string enum_name_list() {
   return list;
 }
 
+// Every value, in the table's order.
 template <NamedEnum E>
 constexpr auto enum_values() {
   constexpr auto names = enum_names(E{});

@@ -124,9 +124,9 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
     if (resolution_[i] > 0) retiled_[changed_count++] = i;
   }
   const std::span<const uint32_t> changed(retiled_.data(), changed_count);
-  held_back_ = 0;
-  repacked_ = repack_pending_ || !place_changed_lights(requests, changed);
-  if (repacked_) repack(requests);
+  stats_.held_back_by_free_space = 0;  // counted by place_changed_lights
+  stats_.repacked = repack_pending_ || !place_changed_lights(requests, changed);
+  if (stats_.repacked) repack(requests);
   repack_pending_ = false;
 
   // Each request writes its placement and its own light (a key's second request has none), and
@@ -394,7 +394,7 @@ bool ShadowAtlasPlanner::place_changed_lights(std::span<const ShadowRequest> req
         }
         tiles_[i] = light.tiles;
         resolution_[i] = light.resolution;
-        ++held_back_;
+        ++stats_.held_back_by_free_space;
       }
       continue;
     }
@@ -403,7 +403,7 @@ bool ShadowAtlasPlanner::place_changed_lights(std::span<const ShadowRequest> req
       if (size == config_.min_resolution) return false;
       size /= 2;
     }
-    held_back_ += size < resolution_[i] ? 1 : 0;
+    stats_.held_back_by_free_space += size < resolution_[i] ? 1 : 0;
     resolution_[i] = size;
   }
   return true;
@@ -465,8 +465,6 @@ void ShadowAtlasPlanner::update_stats() {
   stats_.lowerable_by_time = total.lowerable_by_time;
   stats_.lights_changed_tier = total.changed_tier;
   stats_.lights_retiled = total.retiled;
-  stats_.held_back_by_free_space = held_back_;
-  stats_.repacked = repacked_;
   stats_.lights_per_resolution.clear();
   for (uint32_t tier = 0; tier < tier_count(); ++tier) {
     if (total.lights_per_tier[tier] > 0) {

@@ -182,7 +182,8 @@ class ShadowAtlasPlanner {
                                       std::span<const uint32_t> indices) const;
   // Request i's light has tiles and goes up a size: it keeps them unless the larger ones are free.
   bool grows(std::span<const ShadowRequest> requests, uint32_t i) const;
-  // False when a light found no free tile even at min_resolution: the plan must repack.
+  // False when a light found no free tile even at min_resolution: the plan must repack. Counts
+  // the lights it holds back into stats_.
   bool place_changed_lights(std::span<const ShadowRequest> requests, std::span<const uint32_t> changed);
   void repack(std::span<const ShadowRequest> requests);
   // What a plan() counts for its stats, per piece of requests on the pool, summed after.
@@ -206,8 +207,6 @@ class ShadowAtlasPlanner {
   ShadowTimePolicy policy_;
   ShadowAtlasPages pages_;
   bool repack_pending_ = false;  // set_config() made the allocator new
-  bool repacked_ = false;        // by the current plan()
-  uint32_t held_back_ = 0;       // by the current plan(): AtlasStats::held_back_by_free_space
   uint64_t plans_ = 0;
 
   std::vector<Light> lights_;

@@ -24,6 +24,10 @@ struct AtlasShape {
 };
 
 inline constexpr uint32_t atlas_texel_bytes = 4;  // D32_SFLOAT, or a float of the static layers
+// The bytes a light's map takes in the atlas: `faces` (6 for a cube) tiles of `resolution`.
+constexpr uint64_t shadow_map_bytes(uint32_t resolution, uint32_t faces) {
+  return uint64_t(faces) * resolution * resolution * atlas_texel_bytes;
+}
 // What the budget pays for a texel of a page: its depth, and its float in the static layers
 // where the renderer keeps them.
 inline constexpr uint32_t atlas_texel_cost(bool static_layers) {

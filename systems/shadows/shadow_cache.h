@@ -108,6 +108,9 @@ class ShadowCache {
 
   // The last plan's counts.
   const ShadowCacheStats& stats() const { return stats_; }
+  // Plans since the last plan's light `i` (its index in plan()'s `lights`) was rendered: 0 when
+  // rendered by it.
+  uint64_t plans_since_rendered(uint32_t i) const { return frame_ - states_[i].rendered_frame; }
 
   // Every map's contents are garbage (e.g. the storage image was recreated): every light is
   // unusable and dirty until rendered again.

@@ -71,7 +71,6 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   // the pool, the requests listed in order after. There too, each piece checks that its views
   // are the ones their entries of rendered_maps_ and rendered_cubes_ hold (usually: the last
   // frame's lights in the same order). One thread would read all that hundreds of bytes apart.
-  ++schedules_;
   const CameraFrustum frustum(camera);
   const bool pinned = resolution_ == ShadowResolution::requested;
   const size_t map_count = lights.maps.size();
@@ -182,6 +181,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     view.resolution = placement.resolution;
     view.render = render_[cached] != keep_map;
     view.moving_casters_only = render_[cached] == draw_moving_casters;
+    view.frames_since_drawn = uint32_t(std::min<uint64_t>(cache_.plans_since_rendered(cached), UINT32_MAX));
     give_map(placement);
   };
   // A cached map was rendered from where its light was then: the record samples it with that
@@ -201,8 +201,6 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
           } else if (map.render) {
             rendered.view = map.view;
           }
-          if (map.render) rendered.drawn_in = schedules_;
-          map.frames_since_drawn = uint32_t(std::min<uint64_t>(schedules_ - rendered.drawn_in, UINT32_MAX));
           GpuLight& record =
               map.cascade == no_cascade ? lights.records[map.light] : lights.cascades[map.cascade];
           set_shadow_map(record, map.tile.page, tile_uv_rect(map.tile, page_size_), map.resolution,
@@ -221,8 +219,6 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
           rendered.views = cube.views;
           rendered.origin = glm::vec3(cube.position_far);
         }
-        if (cube.render) rendered.drawn_in = schedules_;
-        cube.frames_since_drawn = uint32_t(std::min<uint64_t>(schedules_ - rendered.drawn_in, UINT32_MAX));
         std::array<glm::vec2, 6> origins;
         for (int f = 0; f < 6; ++f) origins[f] = glm::vec2(tile_uv_rect(cube.tiles[f], page_size_));
         set_shadow_cube(lights.records[cube.light], cube.tiles[0].page, origins,

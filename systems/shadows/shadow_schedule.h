@@ -161,15 +161,12 @@ class ShadowSchedule {
   struct RenderedMap {
     uint64_t key = 0;
     LightView view;
-    uint64_t drawn_in = 0;  // schedules_ then
   };
   struct RenderedCube {
     uint64_t key = 0;
     CubeViews views;
     glm::vec3 origin{0.0f};
-    uint64_t drawn_in = 0;
   };
-  uint64_t schedules_ = 0;  // schedule() calls
   std::vector<RenderedMap> rendered_maps_;
   std::vector<RenderedCube> rendered_cubes_;
   std::vector<RenderedMap> rendered_maps_scratch_;    // for align_by_key
