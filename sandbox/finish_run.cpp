@@ -94,6 +94,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
   }
   stats.light_list_pairs = summarize(frame.light_list_pairs());
   stats.filtered_shadows = frame.renderer().filtered_lights();
+  stats.contact_shadows_skipped = frame.renderer().contact_shadows_skipped();
   const std::optional<shadows::ShadowRaster> raster = renderer.shadow_raster();
   stats.shadows = {std::string(to_string(renderer.shadow_views())),
                    raster ? std::optional<std::string>(to_string(*raster)) : std::nullopt,

@@ -113,6 +113,7 @@ Json stats_json(const RunStats& stats) {
           {"shadow_map_bytes", stats.shadow_map_bytes},
           {"dropped_light_pairs", stats.dropped_light_pairs},
           {"light_list_pairs", summary_json(stats.light_list_pairs)},
+          {"contact_shadows_skipped", stats.contact_shadows_skipped},
           {"filtered_shadows", stats.filtered_shadows},
           {"shadows",
            {{"views", shadows.views},

@@ -39,6 +39,8 @@
 //                                                // which lighting's cost follows, from the
 //                                                // frames read back; null when lit without
 //                                                // lists (fused)
+//   "contact_shadows_skipped": 0,                // the last frame's lights whose contact shadows
+//                                                // were not drawn (lit other than deferred)
 //   "filtered_shadows": 8,                       // at each pixel the most lights that ran their
 //                                                // shadow filters, the heaviest there; the rest
 //                                                // took the hard test (--filtered-shadows); 0:
@@ -138,6 +140,7 @@ struct RunStats {
   std::uint64_t shadow_map_bytes = 0;
   std::uint64_t dropped_light_pairs = 0;
   std::optional<TimeSummary> light_list_pairs;  // counts, summarized like times
+  std::uint32_t contact_shadows_skipped = 0;
   std::uint32_t filtered_shadows = 0;
   // Every setting's value as the command line writes it (Setting::get), in the table's order.
   struct EchoedSetting {

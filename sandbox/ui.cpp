@@ -14,6 +14,7 @@
 
 #include "ecs/query.h"
 #include "ecs/transform.h"
+#include "sandbox/ui_widgets.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
@@ -41,29 +42,6 @@ std::string label_of(const ecs::World& world, ecs::Entity entity) {
   const scene::Name* name = world.try_get<scene::Name>(entity);
   const std::string shown = name && !name->value.empty() ? name->value : "light";
   return shown + "##" + std::to_string(entity.index);
-}
-
-// Edits `value` of component T of `entity` with `widget`; writes (and so marks it changed) only
-// when the widget changed it.
-template <class T, class Widget>
-void edit(ecs::World& world, ecs::Entity entity, Widget widget) {
-  T copy = world.get<T>(entity);
-  if (widget(copy)) world.get_mut<T>(entity) = copy;
-}
-
-// A combo of E's names (enum_names.h), as extras, scripts and the sidecar spell them.
-template <NamedEnum E>
-bool enum_combo(const char* label, E& value) {
-  constexpr auto names = enum_names(E{});
-  int current = 0;
-  const char* labels[names.size()];
-  for (size_t i = 0; i < names.size(); ++i) {
-    labels[i] = names[i].second.data();
-    if (names[i].first == value) current = int(i);
-  }
-  if (!ImGui::Combo(label, &current, labels, int(names.size()))) return false;
-  value = names[size_t(current)].first;
-  return true;
 }
 
 template <class Light>
@@ -170,6 +148,7 @@ const ImDrawData* SandboxUi::build(scene::Scene& scene, const scene::CameraPose&
   light_panel(scene, pose, facts);
   if (help_) help_panel();
   if (show_map_) shadow_map_panel(scene.world, facts);
+  meshes_.draw(scene.world);
   ImGui::Render();
   return ImGui::GetDrawData();
 }
@@ -358,8 +337,6 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
     ImGui::SameLine();
   }
   ImGui::Checkbox("play", &playing_);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("glTF animations, orbits and bobs (--animate sets the start)");
   if (selected_ != ecs::null_entity && world.alive(selected_) && light_type(world, selected_) != 0) {
     ImGui::Separator();
     ImGui::TextUnformatted(type_names[light_type(world, selected_)]);
@@ -413,6 +390,12 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
       changed |= enum_combo("update", shadow.update);
       changed |= ImGui::SliderFloat("priority", &shadow.priority, -scene::max_shadow_priority,
                                     scene::max_shadow_priority, "%.2f tiers");
+      changed |= ImGui::SliderFloat("contact shadow", &shadow.contact_length, 0.0f, 2.0f,
+                                    shadow.contact_length > 0.0f ? "%.2f m" : "off");
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the length of a ray marched through the depth buffer (deferred)");
+      changed |= edit_layers("lights layers", shadow.light_mask);
+      changed |= edit_layers("shadowed by layers", shadow.caster_mask);
       return changed;
     });
     if (ImGui::Button("redraw shadow")) scene::request_shadow_redraw(world, selected_);

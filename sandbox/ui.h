@@ -3,9 +3,9 @@
 // The sandbox's panels, with Dear ImGui: frame facts (CPU and GPU time, shadow views drawn and
 // kept, shadow memory) and a light editor (pick a light by type and name; edit its position,
 // color, intensity, range, cone, and every shadow setting: algorithm, biases, PCF radius, light
-// size, density, shadow color, resolution; add and remove lights; orbit or bob them; play or
-// pause animation). Edits are writes to the ECS world like any system's,
-// so change ticks and the shadow cache see them. UiPass draws the result.
+// size, density, shadow color, resolution, layer masks; add and remove lights; orbit or bob them;
+// play or pause animation) and a mesh editor (MeshPanel). Edits are writes to the ECS world like
+// any system's, so change ticks and the shadow cache see them. UiPass draws the result.
 //
 // One SandboxUi per ImGui context; with a window, ImGui reads its input through GLFW (the
 // installed callbacks chain to the window's own); headless, the panels are drawn without input.
@@ -21,6 +21,7 @@
 
 #include "ecs/entity.h"
 #include "ecs/world.h"
+#include "sandbox/mesh_panel.h"
 #include "systems/lighting/lighting_path.h"
 #include "systems/scene/aabb.h"
 #include "systems/scene/camera.h"
@@ -135,6 +136,7 @@ class SandboxUi {
   float max_fps_ = 0.0f;
   bool light_heatmap_ = false;
   std::vector<UiDepthView> depth_views_;
+  MeshPanel meshes_;
 };
 
 }  // namespace sg::sandbox

@@ -4,18 +4,18 @@
 #ifndef SG_GBUFFER_GLSL
 #define SG_GBUFFER_GLSL
 
+#include "gbuffer_layout.glsl"
 #include "material.glsl"
 
 // Positions come back from the depth buffer: every byte a pixel writes here costs raster
 // hardware time on GPUs that have little of it (docs/PERFORMANCE.md).
-// xyz: unit normal; w: Blinn shininess s, negated where the surface receives no shadow.
-layout(location = 0) out vec4 out_normal;
+layout(location = 0) out vec4 out_normal;  // gbuffer_layout.glsl
 layout(location = 1) out vec4 out_albedo;  // rgb: base color; a: specular strength kS
 
 // Writes the fragment's G-buffer texels and returns its surface.
 SurfacePoint write_gbuffer() {
   SurfacePoint p = fragment_surface();
-  out_normal = vec4(p.normal, p.receives_shadow ? p.shininess : -p.shininess);
+  out_normal = gbuffer_normal_texel(p.normal, p.shininess, p.receives_shadow, p.light_layers);
   out_albedo = vec4(p.base_color, p.specular);
   return p;
 }

@@ -27,13 +27,15 @@ const uint CASCADED_SHADOW_MAPS = 0xFFFFFFFEu;
 
 struct Light {
   vec4 position_range;        // xyz: world position (point, spot, cylinder); w: range R (point, spot; 0 otherwise)
-  vec4 direction_type;        // xyz: unit direction the light travels (spot, directional, cylinder); w: unused
+  vec4 direction_type;        // xyz: unit direction the light travels (spot, directional, cylinder);
+                              // w: its contact shadows' length, world units (0: none)
   vec4 color_intensity;       // rgb: linear color; a: intensity
   vec4 shape;                 // spot: x cos(inner), y cos(outer); cylinder: z inner radius r, w outer radius R;
                               // cascaded directional: x the first cascade's record, y the cascades in use
   vec4 shadow_color_density;  // rgb: shadow color sc; a: density
   vec4 shadow_bias;           // x: constant bias b0, y: slope bias b1, z: pcf radius (texels), w: light size (world units)
-  uvec4 info;                 // x: type (LIGHT_*); y: falloff (FALLOFF_*); z: algorithm (SHADOW_*);
+  uvec4 info;                 // x: type (LIGHT_*); y: bits 0-7 falloff (FALLOFF_*), bits 8-15 the layers
+                              // it lights (ShadowSettings::light_mask); z: algorithm (SHADOW_*);
                               // w: the shadow atlas layer of its map (or of all six cube faces), NO_SHADOW_MAP
                               // or CASCADED_SHADOW_MAPS
   vec4 shadow_rect;           // xy: 2D maps' uv offset in the layer; zw: uv scale of its (each face's) tile
@@ -43,5 +45,10 @@ struct Light {
                               // point lights: columns 0..2 hold the uv offsets of faces 0..5, two a
                               // column, column 3 the position the cube was rendered from (xyz)
 };
+
+// Whether `light` lights a surface on `layers` (MeshInstance::light_layers).
+bool lights_layers(Light light, uint layers) { return ((light.info.y >> 8u) & layers) != 0u; }
+
+uint light_falloff(Light light) { return light.info.y & 0xFFu; }
 
 #endif

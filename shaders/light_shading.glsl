@@ -47,7 +47,7 @@ Incidence light_incidence(Light light, vec3 world_pos, uint type) {
     float distance = length(offset);
     at.to_light = offset / max(distance, 1e-6);
     float range = light.position_range.w;
-    bool gltf = light.info.y == FALLOFF_GLTF_PUNCTUAL;
+    bool gltf = light_falloff(light) == FALLOFF_GLTF_PUNCTUAL;
     at.fade = gltf ? gltf_range_window(distance, range) : falloff_linear_window(distance, range);
     at.reach = gltf ? falloff_gltf_punctual(distance, range) : at.fade;
     if (type == LIGHT_SPOT) {
@@ -63,9 +63,11 @@ vec3 radiance_at(Light light, Incidence at) { return light.color_intensity.rgb *
 vec3 shadow_color_at(Light light, Incidence at) { return at.fade * light.shadow_color_density.rgb; }
 
 // Whether no shadow of `light` can change the sum at the surface point: out of the light's reach,
-// or facing away from it (it takes nothing from the light) without shadow color.
+// on none of the layers it lights, or facing away from it (it takes nothing from the light)
+// without shadow color.
 bool unaffected(Light light, SurfacePoint p, Incidence at) {
-  return at.reach <= 0.0 || (dot(p.normal, at.to_light) <= 0.0 && shadow_color_at(light, at) == vec3(0.0));
+  return at.reach <= 0.0 || !lights_layers(light, p.light_layers) ||
+         (dot(p.normal, at.to_light) <= 0.0 && shadow_color_at(light, at) == vec3(0.0));
 }
 
 // How much `light`'s shadow can change the pixel: the luminance of all it adds unshadowed plus
@@ -85,9 +87,10 @@ bool runs_own_filter(Light light, SurfacePoint p, Incidence at, float filter_flo
   return filter_floor <= 0.0 || shadow_weight(light, p, at) >= filter_floor;
 }
 
-// One light at world_pos. `shadow_kind` and `algorithm` are the light's own (light_shadow_kind,
-// info.z); shade_light reads them from the record, a pass that shades one light group passes its
-// constants.
+// One light at world_pos, with its contact shadow where the including pass reads the depth
+// buffer (contact_shadows.glsl, included first). `shadow_kind` and `algorithm` are the light's
+// own (light_shadow_kind, info.z); shade_light reads them from the record, a pass that shades one
+// light group passes its constants.
 //
 // Ranked filtering: a light whose shadow_weight at the pixel is below `filter_floor` takes the
 // hard test instead of its own kernel (0: every light filters). The deferred lighting sets the
@@ -111,6 +114,14 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
   float shade = !p.receives_shadow ? 0.0
                 : filtered         ? light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, algorithm)
                                    : light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, SHADOW_HARD);
+#ifdef SG_CONTACT_SHADOWS
+  // The light's contact shadow over its map's, where the pass reads the depth buffer: for the
+  // lights that run their own filter, which ranked filtering holds to a pixel's heaviest few.
+  if (CONTACT_SHADOWS && filtered && p.receives_shadow && n_dot_l > 0.0 && shade < 1.0 &&
+      light.direction_type.w > 0.0) {
+    shade = max(shade, contact_shade(light, world_pos, p.normal, at.to_light, type));
+  }
+#endif
   if (SHADOW_ONLY_VIEW) {
     return vec3((1.0 - shade) * light.color_intensity.a * at.reach * max(n_dot_l, 0.0));
   }

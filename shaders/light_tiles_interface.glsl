@@ -109,7 +109,7 @@ uint light_worth_bits(Light light, vec4 sphere) {
   if (light.info.x == LIGHT_POINT || light.info.x == LIGHT_SPOT) {
     float distance = max(length(sphere.xyz - light.position_range.xyz) - sphere.w, 0.0);
     float range = light.position_range.w;
-    falloff = light.info.y == FALLOFF_GLTF_PUNCTUAL ? falloff_gltf_punctual(distance, range)
+    falloff = light_falloff(light) == FALLOFF_GLTF_PUNCTUAL ? falloff_gltf_punctual(distance, range)
                                                     : falloff_linear_window(distance, range);
   }
   return floatBitsToUint(max(power * falloff, 0.0));

@@ -11,6 +11,7 @@ struct SurfacePoint {
   float specular;   // kS
   float shininess;  // s
   bool receives_shadow;  // false: lit as if no light cast a shadow here (MeshInstance)
+  uint light_layers;     // the layers lights see it on (MeshInstance::light_layers)
 };
 
 // One light's contribution, without the ambient term (added once per fragment).

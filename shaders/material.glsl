@@ -20,6 +20,7 @@ layout(location = 2) flat in vec4 in_base_color_specular;  // rgb: base color; a
 layout(location = 3) in vec2 in_uv;
 // x: Blinn shininess s; y: texture layer or -1; z: base color alpha; w: the mask's cutoff
 layout(location = 4) flat in vec4 in_material;
+layout(location = 5) flat in uint in_light_layers;
 
 // The base color, factor times texture: rgb and alpha.
 vec4 fragment_base_color() {
@@ -49,6 +50,7 @@ SurfacePoint fragment_surface() {
   // The instance's shininess is negated where it receives no shadow (GpuInstance::material).
   p.shininess = abs(in_material.x);
   p.receives_shadow = in_material.x > 0.0;
+  p.light_layers = in_light_layers;
   return p;
 }
 

@@ -12,6 +12,7 @@ layout(location = 1) out vec3 out_normal;
 layout(location = 2) flat out vec4 out_base_color_specular;  // material.glsl says why here
 layout(location = 3) out vec2 out_uv;
 layout(location = 4) flat out vec4 out_material;
+layout(location = 5) flat out uint out_light_layers;
 
 void main() {
   Instance inst = instances[gl_InstanceIndex];
@@ -22,6 +23,7 @@ void main() {
   out_normal = transpose(inverse(mat3(inst.model))) * in_normal;
   out_base_color_specular = inst.base_color_specular;
   out_material = inst.material;
+  out_light_layers = inst.layers.x;
   out_uv = in_uv;
   gl_Position = frame.view_projection * world;
 }

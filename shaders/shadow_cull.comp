@@ -2,13 +2,13 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
-// Keeps every (caster, view) pair whose caster's world bounds meet the view's frustum, but for a
-// transparent caster whose bounds hold the view's light (a light inside a glass bulb or a marker
-// is not shut in by it; ShadowCasterLists::add_view does the same per light): one
-// thread per caster (records caster_base on), one workgroup row per view. Pairs go to
-// culled_pairs in any order (at most `capacity`; the list's total counts every kept pair, so the
-// CPU learns when to grow); each list 0 pair counts towards its draw (view kind, caster group).
-// Counts start at zero.
+// Keeps every (caster, view) pair whose caster shares a layer with the view's light's caster mask
+// and whose world bounds meet the view's frustum, but for a transparent caster whose bounds hold
+// the view's light (a light inside a glass bulb or a marker is not shut in by it;
+// ShadowCasterLists::add_view does the same per light): one thread per caster (records
+// caster_base on), one workgroup row per view. Pairs go to culled_pairs in any order (at most
+// `capacity`; the list's total counts every kept pair, so the CPU learns when to grow); each list
+// 0 pair counts towards its draw (view kind, caster group). Counts start at zero.
 #include "shadow_batch_compute.glsl"
 
 layout(local_size_x = 64) in;
@@ -20,8 +20,9 @@ void main() {
   uint caster = pc.caster_base + gl_GlobalInvocationID.x;
   uint view = pc.view_base + gl_WorkGroupID.y;
   if (pc.skip_moving != 0u && caster_moving(casters[caster])) return;
-  vec3 lo = casters[caster].min_mesh.xyz;
-  vec3 hi = casters[caster].max_instance.xyz;
+  if (!caster_in_view(casters[caster], views[view])) return;
+  vec3 lo = casters[caster].lo;
+  vec3 hi = casters[caster].hi;
   if (caster_blended(casters[caster])) {
     vec4 light = views[view].position_far;
     if (light.w >= 0.0 && all(greaterThanEqual(light.xyz, lo)) && all(lessThanEqual(light.xyz, hi))) return;

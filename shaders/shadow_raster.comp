@@ -252,11 +252,11 @@ void main() {
     CasterMesh mesh = meshes[group];
 #ifdef SHADOW_CUT_OUT
     if (mesh.cut_out == 0u) continue;
-    pair_material = instances[floatBitsToUint(casters[pair.x].max_instance.w)].material;
+    pair_material = instances[caster_instance(casters[pair.x])].material;
 #else
     if (mesh.cut_out != 0u) continue;
 #endif
-    mat4 model = instances[floatBitsToUint(casters[pair.x].max_instance.w)].model;
+    mat4 model = instances[caster_instance(casters[pair.x])].model;
     mat4 view_projection = views[view].view_projection;
     uint triangles = mesh.index_count / 3u;
     for (uint chunk = 0u; chunk < triangles; chunk += gl_WorkGroupSize.x) {

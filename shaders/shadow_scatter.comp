@@ -20,6 +20,6 @@ void main() {
     uint group = caster_group(casters[pair.x]);
     uint draw = views[pair.y].info.y * pc.group_count + group;
     uint slot = atomicAdd(counts[draw_count() + draw], 1u);
-    sorted_pairs[slot] = uvec2(floatBitsToUint(casters[pair.x].max_instance.w), pair.y);
+    sorted_pairs[slot] = uvec2(caster_instance(casters[pair.x]), pair.y);
   }
 }

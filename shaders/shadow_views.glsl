@@ -19,27 +19,31 @@ struct ShadowView {
   vec4 tile;             // the view's clip xy -> the atlas page's: xy scale, zw offset (times w)
   vec4 position_far;     // cube faces: the light's position and far plane (shadow_cube.frag);
                          // 2D maps: the light's position and reach, w < 0 for none
-  uvec4 info;            // x: atlas layer; y: VIEW_KIND_*; z: tile side, texels
+  uvec4 info;            // x: atlas layer; y: VIEW_KIND_*; z: tile side, texels; w: the layers
+                         // whose casters it draws (ShadowSettings::caster_mask)
   uvec4 raster;          // shadow_raster.comp: x where the tile's texel (0, 0) is in the depths,
                          // y the depths' row pitch there (tiles side by side share rows); z where
                          // it is in the static layers (shadow_static_layers.comp), w their pitch
 };
 
 struct ShadowCaster {
-  vec4 min_mesh;      // xyz: world bounds' minimum; w: the caster's mesh (caster group), as uint
-                      // bits, with CASTER_MOVING set for a moving caster and CASTER_BLENDED for a
-                      // transparent one
-  vec4 max_instance;  // xyz: world bounds' maximum; w: its index in Instances, as uint bits
+  vec3 lo;        // world bounds' minimum
+  uint group;     // the caster's mesh (caster group), with CASTER_MOVING set for a moving caster
+                  // and CASTER_BLENDED for a transparent one
+  vec3 hi;        // world bounds' maximum
+  uint instance;  // its index in Instances, below 2^24; above, its shadow layers
+                  // (MeshInstance::shadow_layers)
 };
 
 const uint CASTER_MOVING = 0x80000000u;
 const uint CASTER_BLENDED = 0x40000000u;
 
-uint caster_group(ShadowCaster caster) {
-  return floatBitsToUint(caster.min_mesh.w) & ~(CASTER_MOVING | CASTER_BLENDED);
-}
-bool caster_moving(ShadowCaster caster) { return (floatBitsToUint(caster.min_mesh.w) & CASTER_MOVING) != 0u; }
-bool caster_blended(ShadowCaster caster) { return (floatBitsToUint(caster.min_mesh.w) & CASTER_BLENDED) != 0u; }
+uint caster_group(ShadowCaster caster) { return caster.group & ~(CASTER_MOVING | CASTER_BLENDED); }
+bool caster_moving(ShadowCaster caster) { return (caster.group & CASTER_MOVING) != 0u; }
+bool caster_blended(ShadowCaster caster) { return (caster.group & CASTER_BLENDED) != 0u; }
+uint caster_instance(ShadowCaster caster) { return caster.instance & 0xFFFFFFu; }
+// Whether `view` draws `caster`: they share a layer.
+bool caster_in_view(ShadowCaster caster, ShadowView view) { return ((caster.instance >> 24) & view.info.w) != 0u; }
 
 // Geometry of caster group g: what its indirect commands draw.
 struct CasterMesh {

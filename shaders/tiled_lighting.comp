@@ -20,6 +20,7 @@ void main() {
   SurfacePoint p;
   vec3 position;
   if (!deferred_surface(pixel, p, position)) return;
+  begin_contact_shadows(pixel);
   vec4 sum = imageLoad(hdr, pixel);
   float filter_floor = RANKED_FILTERING ? sum.a : 0.0;
   imageStore(hdr, pixel, sum + vec4(shade_tile_group(tile, p, position, filter_floor), 0.0));

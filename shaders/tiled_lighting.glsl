@@ -8,6 +8,8 @@
 
 #include "bindings.glsl"
 #include "camera_depth.glsl"
+#include "contact_shadows.glsl"
+#include "gbuffer_layout.glsl"
 #include "light_shading.glsl"
 #include "light_tiles.glsl"
 #include "tiled_lighting_frame.glsl"
@@ -22,7 +24,6 @@ layout(constant_id = 4) const bool SINGLE_LIGHT = false;
 // below which a light takes the hard test instead of its own kernel (light_shading.glsl).
 layout(constant_id = 5) const bool RANKED_FILTERING = false;
 
-layout(set = 0, binding = scene_depth_binding) uniform sampler2D scene_depth;
 layout(set = 0, binding = gbuffer_normal_binding) uniform sampler2D gbuffer_normal;
 layout(set = 0, binding = gbuffer_albedo_binding) uniform sampler2D gbuffer_albedo;
 layout(std430, set = 0, binding = tile_lights_binding) readonly buffer TileLights { uint tile_lights[]; };
@@ -37,12 +38,13 @@ bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {
   position = world.xyz / world.w;
   vec4 albedo = texelFetch(gbuffer_albedo, pixel, 0);
   vec4 normal = texelFetch(gbuffer_normal, pixel, 0);
-  p.normal = normal.xyz;
+  p.normal = octahedral_decode(normal.xy);
   p.to_viewer = normalize(frame.camera_position.xyz - position);
   p.base_color = albedo.rgb;
   p.specular = albedo.a;
-  p.shininess = abs(normal.w);
-  p.receives_shadow = normal.w > 0.0;
+  p.shininess = abs(normal.z);
+  p.receives_shadow = normal.z > 0.0;
+  p.light_layers = uint(normal.w);
   return true;
 }
 

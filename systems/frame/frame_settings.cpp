@@ -127,6 +127,12 @@ std::vector<Setting<S>> make_table() {
           "every directional light starts with at most N cascaded maps over the view's depth (1: one "
           "map fitted to the whole scene; default: each light's own, 4 unless the scene says); the "
           "light panel may change it afterwards"),
+      number<S>(
+          "contact-shadows", "M", [](auto& s) -> auto& { return s.contact_length; }, 0.0,
+          double(scene::max_contact_length),
+          "every light starts with contact shadows M metres long, marched through the depth buffer "
+          "toward it (0: none; default: each light's own, none unless the scene says); drawn by "
+          "deferred lighting only, which CPU devices then take"),
       on_off<S>(
           "shadows", [](auto& s) -> auto& { return s.renderer.lights.shadows; },
           "off: no light casts a shadow, for comparisons"),

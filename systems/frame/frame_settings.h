@@ -37,6 +37,8 @@ struct FrameSettings {
   std::optional<scene::ShadowAlgorithm> algorithm;
   // Every directional light's most cascades (ShadowSettings::cascades), set once as `algorithm`.
   std::optional<uint32_t> cascades;
+  // Every light's contact shadow length (ShadowSettings::contact_length), set once as `algorithm`.
+  std::optional<float> contact_length;
   bool animate = true;  // off: glTF animations and the stress scene's orbits stand still
   bool naive = false;   // the renderer runs naive_baseline(renderer): the source documents' frame
   RendererSettings renderer;

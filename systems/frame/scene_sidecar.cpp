@@ -82,6 +82,9 @@ Json light_json(const scene::Scene& scene, const std::string& name, ecs::Entity 
                      {"cascades", s.cascades},
                      {"update", std::string(to_string(s.update))},
                      {"priority", s.priority},
+                     {"contact_length", s.contact_length},
+                     {"caster_mask", s.caster_mask},
+                     {"light_mask", s.light_mask},
                      {"casts_shadow", s.casts_shadow}};
   return light;
 }
@@ -113,6 +116,14 @@ class Reader {
     if (!value.is_number() || !std::isfinite(value.get<double>()))
       fail(entry + "." + key, "is not a finite number");
     return value.get<float>();
+  }
+  scene::LayerMask mask(const Json& object, const char* key, const std::string& entry,
+                        scene::LayerMask fallback) const {
+    if (!object.contains(key)) return fallback;
+    const Json& value = object.at(key);
+    if (!value.is_number_integer() || value.get<int64_t>() < 0 || value.get<int64_t>() > scene::all_layers)
+      fail(entry + "." + key, "is not a layer mask (an integer from 0 to 255)");
+    return static_cast<scene::LayerMask>(value.get<int64_t>());
   }
   template <NamedEnum E>
   E name(const Json& object, const char* key, const std::string& entry, E fallback) const {
@@ -187,6 +198,12 @@ class Reader {
       if (std::abs(light.shadow.priority) > scene::max_shadow_priority) {
         fail(where + ".priority", "is not within -4 .. 4");
       }
+      light.shadow.contact_length = number(s, "contact_length", where, light.shadow.contact_length);
+      if (light.shadow.contact_length < 0.0f || light.shadow.contact_length > scene::max_contact_length) {
+        fail(where + ".contact_length", "is not within 0 .. 10");
+      }
+      light.shadow.caster_mask = mask(s, "caster_mask", where, light.shadow.caster_mask);
+      light.shadow.light_mask = mask(s, "light_mask", where, light.shadow.light_mask);
       light.shadow.casts_shadow = s.value("casts_shadow", true);
     }
     return light;

@@ -108,6 +108,10 @@ SceneView load_scene_view(const FrameSettings& settings, float aspect) {
           shadow.cascades = *settings.cascades;
         });
   }
+  if (settings.contact_length) {
+    result.scene.world.query<scene::ShadowSettings>().for_each(
+        [&](scene::ShadowSettings& shadow) { shadow.contact_length = *settings.contact_length; });
+  }
   return result;
 }
 

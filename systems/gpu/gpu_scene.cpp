@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "ecs/query.h"
@@ -82,7 +84,8 @@ void GpuScene::place(const ecs::World& world, size_t i) {
   // A surface that receives no shadow carries its shininess negated (GpuInstance::material).
   const float shininess = items_[i].receiver ? material.shininess : -material.shininess;
   sorted_[i] = {model, glm::vec4(glm::vec3(material.base_color), material.specular),
-                glm::vec4(shininess, texture, material.base_color.a, cutoff)};
+                glm::vec4(shininess, texture, material.base_color.a, cutoff),
+                glm::uvec4(items_[i].light_layers, 0u, 0u, 0u)};
   bounds_[i] = scene::transformed(meshes_[items_[i].mesh].bounds, model);
   keys_[i] = ecs::entity_key(entity);
 }
@@ -206,8 +209,13 @@ void GpuScene::gather_all(const ecs::World& world, jobs::ThreadPool* pool) {
       [&](ecs::Entity entity, const ecs::WorldTransform&, const scene::MeshInstance& mesh) {
         const scene::Material* material = world.try_get<scene::Material>(entity);
         const auto draw_class = static_cast<uint8_t>(draw_class_of(material ? *material : default_material));
-        items_.push_back({mesh.mesh, mesh.casts_shadow, mesh.receives_shadow, draw_class, entity});
+        items_.push_back({mesh.mesh, mesh.casts_shadow, mesh.receives_shadow, draw_class, mesh.light_layers,
+                          mesh.shadow_layers, entity});
       });
+  if (items_.size() > max_instances) {
+    throw std::length_error("the scene has " + std::to_string(items_.size()) + " mesh instances; at most " +
+                            std::to_string(max_instances) + " can be drawn");
+  }
   // By draw class, then mesh, casters first within each: a counting sort (classes and meshes
   // are few, instances many).
   const size_t meshes = meshes_.size();

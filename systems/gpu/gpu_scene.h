@@ -27,6 +27,7 @@
 #include "systems/gpu/camera.h"
 #include "systems/gpu/scene_gpu_types.h"
 #include "systems/scene/aabb.h"
+#include "systems/scene/layers.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_library.h"
 
@@ -57,6 +58,10 @@ uint32_t draw_class_of(const scene::Material& material);
 
 class GpuScene {
  public:
+  // The most instances gather() takes: a shadow caster's record keeps the index in 24 bits
+  // (shaders/shadow_views.glsl); so many instances' records alone would take 1.8 GiB.
+  static constexpr uint32_t max_instances = 1u << 24;
+
   GpuScene(vk::VulkanContext& context, const scene::MeshLibrary& meshes, uint32_t frames_in_flight);
 
   // Gathers every entity with WorldTransform and MeshInstance (Material when present, the
@@ -124,6 +129,8 @@ class GpuScene {
   std::span<const scene::Aabb> replaced_bounds_before() const { return bounds_before_; }
   std::span<const scene::Aabb> replaced_bounds_after() const { return bounds_after_; }
   bool casts_shadow(uint32_t instance) const { return items_[instance].caster; }
+  // MeshInstance::shadow_layers: the maps of lights whose caster_mask shares a layer draw it.
+  scene::LayerMask shadow_layers(uint32_t instance) const { return items_[instance].shadow_layers; }
   uint32_t draw_class(uint32_t instance) const { return items_[instance].draw_class; }
   // Moving instances: those whose bounds changed in a gather since the last layout (the layout
   // makes every instance still again). Shadow maps keep a layer of the other casters and redraw
@@ -147,6 +154,8 @@ class GpuScene {
     bool caster;
     bool receiver;  // MeshInstance::receives_shadow
     uint8_t draw_class;
+    scene::LayerMask light_layers;
+    scene::LayerMask shadow_layers;
     ecs::Entity entity;
   };
   // A draw class's stretch of commands_.

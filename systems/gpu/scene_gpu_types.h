@@ -15,8 +15,9 @@ struct GpuInstance {
   glm::vec4 material;  // x: shininess, negated where the surface receives no shadow, y: base
                        // color texture index or -1, z: base color alpha,
                        // w: mask's alpha cutoff (0: no cut-out), transparent_cutoff if blended
+  glm::uvec4 layers;   // x: MeshInstance::light_layers; yzw: 0
 };
-static_assert(sizeof(GpuInstance) == 96);
+static_assert(sizeof(GpuInstance) == 112);
 
 // A transparent material's cutoff: its shadow is cut stochastically, its alpha the share of
 // texels it covers (shaders/shadow_cut_out.glsl).

@@ -113,14 +113,17 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
     if (types == 0) continue;                          // no light of the group this frame
     const uint32_t first = lights.group_begin[group];
     const uint32_t single = lights.group_begin[group + 1] == first + 1 ? 1u : 0u;
+    const uint32_t contact = lights.group_contact_lights[group] > 0 ? 1u : 0u;
     group_light_[group] = first;
-    vk::UniquePipeline& pipeline =
-        pipelines_[group | types << 8 | static_cast<uint32_t>(view) << 16 | single << 24 | ranked << 25];
+    vk::UniquePipeline& pipeline = pipelines_[group | types << 8 | static_cast<uint32_t>(view) << 16 |
+                                              single << 24 | ranked << 25 | contact << 26];
     current_[group] = pipeline.get();
     if (pipeline) continue;
     // constant_id 0: the group; 1: the view; 2: material.glsl's, unused here; 3: the light types;
-    // 4: whether the group has a single light; 5: whether the lit sum's alpha holds the filter floor.
-    const std::vector<uint32_t> constants{group, static_cast<uint32_t>(view), 0u, types, single, ranked};
+    // 4: whether the group has a single light; 5: whether the lit sum's alpha holds the filter
+    // floor; 6: the floor pass's, unused here; 7: whether a light of the group has contact shadows.
+    const std::vector<uint32_t> constants{group,  static_cast<uint32_t>(view), 0u, types, single, ranked, 0u,
+                                          contact};
     const std::string name = "tiled lighting " + group_name(group);
     pipeline = vk::create_compute_pipeline(context_, {tiled_lighting_comp, constants, layout_.get(), name});
     current_[group] = pipeline.get();

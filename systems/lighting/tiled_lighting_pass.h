@@ -83,7 +83,8 @@ class TiledLightingPass {
   const ShadowProbe* probe_ = nullptr;
   bool probing_ = false;                               // this frame: a probe and the view lit
   std::array<vk::UniquePipeline, 2> probe_pipelines_;  // by ranked_, made when first needed
-  // By group | light types << 8 | LightingView << 16 | single light << 24 | ranked << 25.
+  // By group | light types << 8 | LightingView << 16 | single light << 24 | ranked << 25 |
+  // contact shadows << 26.
   std::unordered_map<uint32_t, vk::UniquePipeline> pipelines_;
   // This frame's, by group; null for a group without lights.
   std::array<VkPipeline, shadows::light_group_count> current_{};

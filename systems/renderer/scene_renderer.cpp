@@ -172,7 +172,15 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     per_light_->prepare(slot, lights_, gpu_scene_, page_size, settings_.cube_shadows, settings_.cull_casters);
   }
   if (lighting_per_frame_) {
-    lighting_ = cpu_lighting_for(static_cast<uint32_t>(lights_.records.size()));
+    lighting_ = cpu_lighting_for(static_cast<uint32_t>(lights_.records.size()), lights_.contact_lights());
+  }
+  // Only deferred lighting reads the depth buffer its contact shadows march through.
+  contact_shadows_skipped_ = lighting_ == LightingPath::deferred ? 0 : lights_.contact_lights();
+  if (contact_shadows_skipped_ > 0 && !contact_shadows_message_given_) {
+    std::printf(
+        "shadowgraph: %u lights have contact shadows, which %s lighting does not draw (deferred does)\n",
+        contact_shadows_skipped_, std::string(to_string(lighting_)).c_str());
+    contact_shadows_message_given_ = true;
   }
   switch (lighting_) {
     case LightingPath::every_light:
@@ -219,7 +227,7 @@ shadows::CasterUpdate SceneRenderer::caster_update() {
     const std::span<const uint64_t> keys = gpu_scene_.instance_keys();
     for (const VkDrawIndexedIndirectCommand& group : gpu_scene_.caster_groups()) {
       for (uint32_t i = group.firstInstance; i < group.firstInstance + group.instanceCount; ++i) {
-        casters_.push_back({keys[i], bounds[i]});
+        casters_.push_back({keys[i], bounds[i], gpu_scene_.shadow_layers(i)});
       }
     }
     return shadows::CasterUpdate(casters_);

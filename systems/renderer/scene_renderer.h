@@ -79,6 +79,9 @@ class SceneRenderer {
   // The (tile, light) pairs the light lists' pool had no room for in the frame read back in the
   // last prepare (frames in flight ago): lights missing from some tiles' lighting.
   uint64_t dropped_light_pairs() const { return dropped_light_pairs_; }
+  // The last prepared frame's lights whose contact shadows were not drawn: all of them on a path
+  // other than deferred, the only one that reads the depth buffer they march through.
+  uint32_t contact_shadows_skipped() const { return contact_shadows_skipped_; }
   // The (tile, light) pairs the opaque surfaces' light lists held in that frame, dropped ones
   // included (LightTilesPass::listed_pairs); none before a frame was read back, or without
   // tiled lighting.
@@ -189,6 +192,8 @@ class SceneRenderer {
   shadows::FrameLights lights_;
   uint64_t dropped_light_pairs_ = 0;
   uint64_t frames_since_drop_message_ = 300;  // a message at most every 300 frames
+  uint32_t contact_shadows_skipped_ = 0;
+  bool contact_shadows_message_given_ = false;  // once a run
   uint64_t frames_prepared_ = 0;
 };
 

@@ -16,6 +16,7 @@
 #include "ecs/hierarchy.h"
 #include "ecs/query.h"
 #include "ecs/transform.h"
+#include "systems/scene/gltf_shadow_extras.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
@@ -58,6 +59,9 @@ nlohmann::json shadow_json(const ShadowSettings& s) {
           {"cascades", s.cascades},
           {"update", std::string(to_string(s.update))},
           {"priority", s.priority},
+          {"contact_length", s.contact_length},
+          {"caster_mask", s.caster_mask},
+          {"light_mask", s.light_mask},
           {"casts_shadow", s.casts_shadow}};
 }
 
@@ -145,6 +149,9 @@ class Exporter {
       node.mesh = mesh_of(instance->mesh, material ? *material : Material{});
       if (!instance->casts_shadow) extras["casts_shadow"] = false;
       if (!instance->receives_shadow) extras["receives_shadow"] = false;
+      if (instance->light_layers != first_layer) extras[to_key(MeshLayers::light)] = instance->light_layers;
+      if (instance->shadow_layers != first_layer)
+        extras[to_key(MeshLayers::shadow)] = instance->shadow_layers;
     }
     if (const Camera* camera = world.try_get<Camera>(entity)) {
       node.camera = static_cast<int>(model_.cameras.size());

@@ -160,7 +160,8 @@ class Importer {
   }
 
   // A node's primitives cast and receive shadows unless the node, or else its mesh, says they do
-  // not (read_shadow_flag: extras, or KHR_lights_shadows).
+  // not (read_shadow_flag: extras, or KHR_lights_shadows), and lie on the layers the node, or else
+  // its mesh, names (read_mesh_layers), layer 0 alone if neither does.
   void add_primitives(ecs::Entity node_entity, const tinygltf::Node& node, std::size_t index) {
     ecs::World& world = scene_.world;
     const auto mesh = static_cast<std::size_t>(node.mesh);
@@ -170,14 +171,23 @@ class Importer {
       return own ? own
                  : read_shadow_flag(source_.document["meshes"][mesh], which, indexed("meshes", mesh), scene_);
     };
+    const auto layers = [&](MeshLayers which) {
+      const std::optional<LayerMask> own =
+          read_mesh_layers(source_.document["nodes"][index], which, indexed("nodes", index), scene_);
+      return own ? *own
+                 : read_mesh_layers(source_.document["meshes"][mesh], which, indexed("meshes", mesh), scene_)
+                       .value_or(first_layer);
+    };
     const std::optional<bool> casts = flag(ShadowFlag::casts);
     const std::optional<bool> receives = flag(ShadowFlag::receives);
+    const LayerMask light_layers = layers(MeshLayers::light);
+    const LayerMask shadow_layers = layers(MeshLayers::shadow);
     for (const ImportedPrimitive& primitive : meshes_[mesh]) {
       const ecs::Entity entity = world.create();
       world.add<ecs::LocalTransform>(entity);
       world.add<ecs::WorldTransform>(entity);
-      world.add<MeshInstance>(entity,
-                              MeshInstance{primitive.mesh, casts.value_or(true), receives.value_or(true)});
+      world.add<MeshInstance>(entity, MeshInstance{primitive.mesh, casts.value_or(true),
+                                                   receives.value_or(true), light_layers, shadow_layers});
       world.add<Material>(entity, primitive.material >= 0
                                       ? materials_[static_cast<std::size_t>(primitive.material)]
                                       : Material{});

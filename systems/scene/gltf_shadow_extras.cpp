@@ -70,6 +70,18 @@ struct ExtrasReader {
     }
   }
 
+  // A layer mask (layers.h): an integer from 0 to 255; nullopt when absent or not one (reported).
+  std::optional<LayerMask> mask(const char* key) const {
+    const nlohmann::json* found = find(key);
+    if (found == nullptr) return std::nullopt;
+    if (found->is_number_integer() && found->get<std::int64_t>() >= 0 &&
+        found->get<std::int64_t>() <= all_layers) {
+      return static_cast<LayerMask>(found->get<std::int64_t>());
+    }
+    report(key, found->dump() + " is not a layer mask (an integer from 0 to 255); ignored");
+    return std::nullopt;
+  }
+
   std::optional<bool> flag(const char* key) const {
     const nlohmann::json* found = find(key);
     if (found == nullptr) return std::nullopt;
@@ -126,9 +138,12 @@ void read_keys(const ExtrasReader& reader, ShadowSettings& settings) {
     settings.cascades = static_cast<std::uint32_t>(std::lround(*cascades));
   }
   reader.read("priority", settings.priority, -max_shadow_priority, max_shadow_priority);
+  reader.read("contact_length", settings.contact_length, 0.0f, max_contact_length);
   reader.read_enum("update", settings.update);
   reader.read_enum("algorithm", settings.algorithm);
   reader.color("shadow_color", settings.shadow_color);
+  if (const auto mask = reader.mask("caster_mask")) settings.caster_mask = *mask;
+  if (const auto mask = reader.mask("light_mask")) settings.light_mask = *mask;
 }
 
 }  // namespace
@@ -159,6 +174,16 @@ std::optional<bool> read_shadow_flag(const nlohmann::json& json, ShadowFlag flag
   if (khr == nullptr) return std::nullopt;
   return ExtrasReader{*khr, object, "extensions.KHR_lights_shadows.", scene}.flag(casts ? "castShadows"
                                                                                         : "receiveShadows");
+}
+
+std::optional<LayerMask> read_mesh_layers(const nlohmann::json& json, MeshLayers which,
+                                          const std::string& object, Scene& scene) {
+  const auto readers = extras_readers(json, object, scene);
+  for (auto reader = readers.rbegin(); reader != readers.rend(); ++reader) {
+    if (!*reader) continue;
+    if ((*reader)->find(to_key(which)) != nullptr) return (*reader)->mask(to_key(which));
+  }
+  return std::nullopt;
 }
 
 std::optional<FalloffMode> read_falloff(const nlohmann::json& light, const std::string& object,

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "systems/scene/layers.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
 #include "systems/scene/shadow_settings.h"
@@ -27,6 +28,16 @@ ShadowSettings read_light_shadow(const nlohmann::json& light, const std::string&
 enum class ShadowFlag { casts, receives };
 std::optional<bool> read_shadow_flag(const nlohmann::json& json, ShadowFlag flag, const std::string& object,
                                      Scene& scene);
+
+// A node's or mesh's layers (MeshInstance::light_layers or ::shadow_layers): the integer 0 to
+// 255 under `light_layers` or `shadow_layers` in its extras (flat or in extras.shadowgraph, whose
+// keys win); nullopt when it has none, or not such an integer (reported, naming `object`).
+enum class MeshLayers { light, shadow };
+constexpr const char* to_key(MeshLayers which) {
+  return which == MeshLayers::light ? "light_layers" : "shadow_layers";
+}
+std::optional<LayerMask> read_mesh_layers(const nlohmann::json& json, MeshLayers which,
+                                          const std::string& object, Scene& scene);
 
 // A point or spot light's falloff from its extras (`falloff`: "gltf_punctual" or
 // "linear_window", flat or in extras.shadowgraph, as export_gltf writes it); nullopt when

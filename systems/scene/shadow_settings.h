@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "systems/scene/enum_names.h"
+#include "systems/scene/layers.h"
 
 namespace sg::scene {
 
@@ -36,6 +37,9 @@ constexpr EnumNames<ShadowUpdate, 3> enum_names(ShadowUpdate) {
 // ShadowSettings::priority's range, in tiers (powers of two of the atlas importance).
 inline constexpr float max_shadow_priority = 4.0f;
 
+// ShadowSettings::contact_length's range, world units: contact shadows reach a short way.
+inline constexpr float max_contact_length = 10.0f;
+
 // The most cascaded maps a directional light may have (ShadowSettings::cascades).
 inline constexpr std::uint32_t max_shadow_cascades = 4;
 
@@ -64,6 +68,15 @@ struct ShadowSettings {
   // +-max_shadow_priority: +1 asks for a map twice as wide, and the memory and time budgets lower
   // it as a light twice its size; -1 the other way.
   float priority = 0.0f;
+  // World units (0 to max_contact_length; 0: none): how far a contact shadow's ray marches
+  // through the camera's depth buffer toward the light, catching the small gaps under and beside
+  // casters that a map too coarse misses (shaders/contact_shadows.glsl). Deferred lighting only.
+  float contact_length = 0.0f;
+  // The layers (layers.h) whose meshes cast into the light's maps.
+  LayerMask caster_mask = all_layers;
+  // The layers whose meshes the light lights. Not a shadow setting, but one of the per-light
+  // settings glTF's lights lack, read, written and edited with them.
+  LayerMask light_mask = all_layers;
   bool casts_shadow = true;
 };
 

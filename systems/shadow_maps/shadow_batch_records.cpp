@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstddef>
 
 #include "ecs/jobs/thread_pool.h"
 #include "systems/shadows/atlas_tile_coords.h"
@@ -30,15 +31,20 @@ struct ViewRecord {
 
 // shaders/shadow_views.glsl's ShadowCaster.
 struct CasterRecord {
-  glm::vec4 min_mesh;
-  glm::vec4 max_instance;
+  glm::vec3 lo;
+  uint32_t group;
+  glm::vec3 hi;
+  uint32_t instance;  // below 2^24 (GpuScene::max_instances); above, the shadow layers
 };
+static_assert(sizeof(CasterRecord) == 32 && offsetof(CasterRecord, hi) == 16);
+
+uint32_t instance_word(const GpuScene& scene, uint32_t instance) {
+  return instance | uint32_t{scene.shadow_layers(instance)} << 24;
+}
 
 constexpr uint32_t not_drawn = UINT32_MAX;
 // How a light's views are drawn this frame.
 constexpr uint8_t skipped = 0, with_every_caster = 1, with_moving_casters = 2;
-
-float as_float(uint32_t bits) { return std::bit_cast<float>(bits); }
 
 }  // namespace
 
@@ -138,12 +144,13 @@ void ShadowBatchRecords::write_views(uint32_t slot, const shadows::FrameLights& 
   frame_.view_records = buffer.handle();
   auto* views = static_cast<ViewRecord*>(buffer.mapped());
   const auto place_view = [&](uint32_t v, const glm::mat4& view_projection, const glm::vec4& position_far,
-                              uint32_t kind) {
+                              uint32_t kind, uint32_t caster_mask) {
     const shadows::AtlasTile& tile = tiles_[v];
     // Below 2^32: the static layers are bound whole, within maxStorageBufferRange (atlas_shape).
     const auto layer = static_cast<uint32_t>((uint64_t{tile.page} * page_size + tile.y) * page_size + tile.x);
     views[v] = {view_projection, shadows::tile_clip_transform(tile, page_size), position_far,
-                glm::uvec4(tile.page, kind, tile.size, 0u), glm::uvec4(depth_places[v], layer, page_size)};
+                glm::uvec4(tile.page, kind, tile.size, caster_mask),
+                glm::uvec4(depth_places[v], layer, page_size)};
   };
   jobs::run_in_pieces(pool, first_view_.size(), 64, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
@@ -151,12 +158,13 @@ void ShadowBatchRecords::write_views(uint32_t slot, const shadows::FrameLights& 
       if (first == not_drawn) continue;
       if (i < lights.maps.size()) {
         const shadows::ShadowMapView& map = lights.maps[i];
-        place_view(first, map.view.view_projection(), map.reach, view_kind_map);
+        place_view(first, map.view.view_projection(), map.reach, view_kind_map, map.caster_mask);
         continue;
       }
       const shadows::ShadowCubeView& cube = lights.cubes[i - lights.maps.size()];
       for (uint32_t face = 0; face < 6; ++face) {
-        place_view(first + face, cube.views.view_projection[face], cube.position_far, view_kind_face);
+        place_view(first + face, cube.views.view_projection[face], cube.position_far, view_kind_face,
+                   cube.caster_mask);
       }
     }
   });
@@ -192,14 +200,14 @@ void ShadowBatchRecords::write_casters(uint32_t slot, const GpuScene& scene, job
       while (g + 1 < groups.size() && c >= group_first_caster_[g + 1]) ++g;
       const uint32_t i = groups[g].firstInstance + static_cast<uint32_t>(c - group_first_caster_[g]);
       const uint32_t group = group_word(i, g, frame_.layered && scene.moving(i));
-      casters[c] = {glm::vec4(bounds[i].min, as_float(group)), glm::vec4(bounds[i].max, as_float(i))};
+      casters[c] = {bounds[i].min, group, bounds[i].max, instance_word(scene, i)};
     }
   });
   jobs::run_in_pieces(pool, moving_casters_.size(), 1024, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       const uint32_t i = moving_casters_[k];
-      casters[caster_count + k] = {glm::vec4(bounds[i].min, as_float(group_word(i, group_of(i), true))),
-                                   glm::vec4(bounds[i].max, as_float(i))};
+      casters[caster_count + k] = {bounds[i].min, group_word(i, group_of(i), true), bounds[i].max,
+                                   instance_word(scene, i)};
     }
   });
 }

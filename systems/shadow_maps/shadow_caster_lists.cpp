@@ -102,14 +102,15 @@ void ShadowCasterLists::build_grid(const GpuScene& scene, float typical_reach) {
   }
 }
 
-CasterView ShadowCasterLists::add_view(const GpuScene& scene, const glm::vec4& reach, uint32_t copies) {
+CasterView ShadowCasterLists::add_view(const GpuScene& scene, const glm::vec4& reach,
+                                       scene::LayerMask caster_mask, uint32_t copies) {
   const std::span<const VkDrawIndexedIndirectCommand> groups = scene.caster_groups();
   const std::span<const scene::Aabb> bounds = scene.instance_bounds();
   candidates_.clear();
   if (reach.w < 0.0f) {
     for (const VkDrawIndexedIndirectCommand& group : groups) {
       for (uint32_t i = group.firstInstance; i < group.firstInstance + group.instanceCount; ++i) {
-        candidates_.push_back(i);
+        if (scene.shadow_layers(i) & caster_mask) candidates_.push_back(i);
       }
     }
   } else if (grid_.columns > 0) {
@@ -128,7 +129,7 @@ CasterView ShadowCasterLists::add_view(const GpuScene& scene, const glm::vec4& r
           const uint32_t i = grid_.cell_ids[k];
           if (seen_[i] == view_stamp_) continue;  // a caster spanning cells is tested once
           seen_[i] = view_stamp_;
-          if (!sphere_meets_box(reach, bounds[i])) continue;
+          if (!(scene.shadow_layers(i) & caster_mask) || !sphere_meets_box(reach, bounds[i])) continue;
           if ((scene.draw_class(i) & draw_blended) && holds(bounds[i], glm::vec3(reach))) continue;
           candidates_.push_back(i);
         }

@@ -18,6 +18,7 @@
 
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/fwd.h"
+#include "systems/scene/layers.h"
 
 namespace sg {
 
@@ -38,11 +39,13 @@ class ShadowCasterLists {
   // Starts a frame's lists for the scene as GpuScene::update left it. `typical_reach` (the
   // bounded views' mean radius) sizes the grid's cells, so that a view covers a few cells.
   void begin_frame(const GpuScene& scene, float typical_reach);
-  // The casters of `scene` whose bounds meet the sphere `reach` (xyz centre, w radius; a
-  // negative radius keeps every caster), each drawn `copies` times (6 for layered cubes). A
+  // The casters of `scene` on a layer of `caster_mask` whose bounds meet the sphere `reach` (xyz
+  // centre, w radius; a negative radius keeps every one), each drawn `copies` times (6 for
+  // layered cubes). A
   // transparent caster whose bounds hold the centre, the light, is left out: a light inside a
   // glass bulb or a marker is not shut in by it.
-  CasterView add_view(const GpuScene& scene, const glm::vec4& reach, uint32_t copies);
+  CasterView add_view(const GpuScene& scene, const glm::vec4& reach, scene::LayerMask caster_mask,
+                      uint32_t copies);
   // Writes the frame's ids and commands to the slot's buffers (after the last add_view).
   void upload(uint32_t slot);
 

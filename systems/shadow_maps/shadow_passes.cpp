@@ -129,14 +129,16 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
   map_casters_.assign(lights.maps.size(), CasterView{});
   for (size_t m = 0; m < lights.maps.size(); ++m) {
     const ShadowMapView& map = lights.maps[m];
-    if (map.render) map_casters_[m] = casters_.add_view(scene, cull_casters ? map.reach : everywhere, 1);
+    if (map.render)
+      map_casters_[m] = casters_.add_view(scene, cull_casters ? map.reach : everywhere, map.caster_mask, 1);
   }
   const uint32_t copies = mode == CubeShadowMode::layered ? 6 : 1;
   cube_casters_.assign(lights.cubes.size(), CasterView{});
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
     const ShadowCubeView& cube = lights.cubes[c];
     if (cube.render) {
-      cube_casters_[c] = casters_.add_view(scene, cull_casters ? cube.position_far : everywhere, copies);
+      cube_casters_[c] =
+          casters_.add_view(scene, cull_casters ? cube.position_far : everywhere, cube.caster_mask, copies);
     }
   }
   casters_.upload(slot);

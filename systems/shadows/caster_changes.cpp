@@ -23,6 +23,8 @@ std::span<const scene::Aabb> CasterChangeTracker::update(std::span<const CasterB
       if (slot.bounds.min != caster.bounds.min || slot.bounds.max != caster.bounds.max) {
         report(slot.bounds);
         report(caster.bounds);
+      } else if (slot.layers != caster.layers) {
+        report(caster.bounds);
       }
     } else {
       // The slot's previous caster was destroyed and the slot reused within one frame: the old
@@ -30,7 +32,7 @@ std::span<const scene::Aabb> CasterChangeTracker::update(std::span<const CasterB
       if (in_previous_frame(slot)) report(slot.bounds);
       report(caster.bounds);
     }
-    slot = {generation, frame_, caster.bounds};
+    slot = {generation, frame_, caster.bounds, caster.layers};
     current_indices_.push_back(index);
   }
 

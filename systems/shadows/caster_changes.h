@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "systems/scene/aabb.h"
+#include "systems/scene/layers.h"
 
 namespace sg::shadows {
 
@@ -18,6 +19,7 @@ namespace sg::shadows {
 struct CasterBounds {
   uint64_t key = 0;
   scene::Aabb bounds;
+  scene::LayerMask layers = scene::first_layer;  // MeshInstance::shadow_layers
 };
 
 class CasterChangeTracker {
@@ -25,6 +27,7 @@ class CasterChangeTracker {
   // Call once per frame with every shadow caster of the frame, in any order, each key once.
   // Returns the boxes a shadow could have changed in since the previous call:
   // - a caster whose box moved or changed size (any coordinate differs): its old and its new box;
+  // - a caster whose shadow layers changed: its box (the lights that draw it are others now);
   // - a caster that is new (its key was not in the previous call): its box;
   // - a caster that is gone (in the previous call, not in this one): its old box.
   // Empty boxes are never reported: they shadow nothing.
@@ -39,6 +42,7 @@ class CasterChangeTracker {
     uint32_t generation = 0;
     uint64_t frame = 0;  // the call that last saw this slot's caster; 0: never seen
     scene::Aabb bounds;
+    scene::LayerMask layers = scene::first_layer;
   };
 
   void report(const scene::Aabb& box);

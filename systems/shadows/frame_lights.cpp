@@ -104,6 +104,7 @@ void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick
   map.needed = true;
   map.update = s.update;
   map.priority = s.priority;
+  map.caster_mask = s.caster_mask;
   const glm::vec3 position = scene::light_position(transform);
   const glm::vec3 direction = scene::light_direction(transform);
   if constexpr (std::is_same_v<Light, scene::SpotLight>) {
@@ -128,6 +129,7 @@ void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick
         cascade.changed = changed;
         cascade.update = s.update;
         cascade.priority = s.priority;
+        cascade.caster_mask = s.caster_mask;
         cascade.name.append(" cascade ").append(std::to_string(k + 1));
       }
       return;
@@ -159,6 +161,7 @@ void fill_point(const ecs::World& world, const LightOverrides& overrides, ecs::T
   cube.changed = changed_since<scene::PointLight>(world, light.entity, since, s.update);
   cube.update = s.update;
   cube.priority = s.priority;
+  cube.caster_mask = s.caster_mask;
   name_view(world, light.entity, "point", light.view, cube.name);
 }
 
@@ -300,22 +303,27 @@ void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
   scratch.records.resize(count);
   scratch.piece_groups.assign(pieces * light_group_count, 0);
   scratch.piece_types.assign(pieces * light_group_count, 0);
+  scratch.piece_contact.assign(pieces * light_group_count, 0);
   jobs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
     uint32_t* groups = &scratch.piece_groups[begin / piece * light_group_count];
     uint32_t* types = &scratch.piece_types[begin / piece * light_group_count];
+    uint32_t* contact = &scratch.piece_contact[begin / piece * light_group_count];
     for (size_t i = begin; i < end; ++i) {
       const uint32_t group = group_of(out.records[i]);
       scratch.moved_to[i] = group;
       ++groups[group];
       types[group] |= 1u << out.records[i].info.x;
+      contact[group] += out.records[i].direction_type.w > 0.0f ? 1 : 0;
     }
   });
   out.group_begin.fill(0);
   out.group_types.fill(0);
+  out.group_contact_lights.fill(0);
   for (size_t p = 0; p < pieces; ++p) {
     for (uint32_t g = 0; g < light_group_count; ++g) {
       out.group_begin[g + 1] += scratch.piece_groups[p * light_group_count + g];
       out.group_types[g] |= scratch.piece_types[p * light_group_count + g];
+      out.group_contact_lights[g] += scratch.piece_contact[p * light_group_count + g];
     }
   }
   for (uint32_t g = 0; g < light_group_count; ++g) out.group_begin[g + 1] += out.group_begin[g];

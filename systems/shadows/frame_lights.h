@@ -12,6 +12,7 @@
 //   sort_by_group   orders the records by light group, the order the lighting passes read.
 #include <array>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,7 @@ struct ShadowMapView {
   // The light's ShadowSettings::update and ::priority.
   scene::ShadowUpdate update = scene::ShadowUpdate::automatic;
   float priority = 0.0f;
+  scene::LayerMask caster_mask = scene::all_layers;  // ShadowSettings::caster_mask
   // A cascade's record in FrameLights::cascades, where the schedule writes its map (no_cascade:
   // the view's map is its light's, in the light's record), and whether the view needs it this
   // frame (place_cascades: a view near the scene may use fewer cascades than the light allows).
@@ -99,6 +101,7 @@ struct ShadowCubeView {
   bool changed = false;
   scene::ShadowUpdate update = scene::ShadowUpdate::automatic;  // as ShadowMapView's
   float priority = 0.0f;
+  scene::LayerMask caster_mask = scene::all_layers;
   float importance = 0.0f;           // as ShadowMapView's
   uint32_t resolution = 0;           // each face's side; 0: no shadow this frame
   std::array<AtlasTile, 6> tiles{};  // faces +X, -X, +Y, -Y, +Z, -Z, all on one layer
@@ -132,6 +135,12 @@ struct FrameLights {
   // After sort_by_group, bit t of group_types[g] is set when group g has lights of type t
   // (GpuLight::info.x): a group's pass need hold only those types' code.
   std::array<uint32_t, light_group_count> group_types{};
+  // After sort_by_group, group g's lights with contact shadows (ShadowSettings::contact_length >
+  // 0): a group's pass marches them only where it has some.
+  std::array<uint32_t, light_group_count> group_contact_lights{};
+  uint32_t contact_lights() const {
+    return std::accumulate(group_contact_lights.begin(), group_contact_lights.end(), 0u);
+  }
   std::vector<ShadowMapView> maps;
   std::vector<ShadowCubeView> cubes;
   // The cascades' records (cascades.h), uploaded right after `records`: a cascaded light's
@@ -154,6 +163,7 @@ struct FrameLights {
     // each), then where the piece's records of each group go.
     std::vector<uint32_t> piece_groups;
     std::vector<uint32_t> piece_types;
+    std::vector<uint32_t> piece_contact;  // per piece and group: its lights with contact shadows
     std::vector<GatheredLight> gathered;
     // The last gather's list, overrides, and each light's record as packed (before the schedule
     // gave it a shadow) and whether it had a Name: what a light unchanged since keeps.

@@ -18,7 +18,9 @@ GpuLight common_record(GpuLightType type, glm::vec3 color, float intensity,
   record.shadow_color_density = glm::vec4(shadow.shadow_color, shadow.density);
   record.shadow_bias =
       glm::vec4(shadow.constant_bias, shadow.slope_bias, shadow.pcf_radius, shadow.light_size);
-  record.info = glm::uvec4(to_gpu(type), 0u, to_gpu(shadow.algorithm), no_shadow_map);
+  record.info = glm::uvec4(to_gpu(type), std::uint32_t{shadow.light_mask} << light_mask_shift,
+                           to_gpu(shadow.algorithm), no_shadow_map);
+  record.direction_type.w = shadow.contact_length;
   return record;
 }
 
@@ -28,7 +30,7 @@ GpuLight pack_light(const scene::PointLight& light, const ecs::WorldTransform& w
                     const scene::ShadowSettings& shadow) {
   GpuLight record = common_record(GpuLightType::point, light.color, light.intensity, shadow);
   record.position_range = glm::vec4(scene::light_position(world), light.range);
-  record.info.y = to_gpu(light.falloff);
+  record.info.y |= to_gpu(light.falloff);
   return record;
 }
 
@@ -36,16 +38,16 @@ GpuLight pack_light(const scene::SpotLight& light, const ecs::WorldTransform& wo
                     const scene::ShadowSettings& shadow) {
   GpuLight record = common_record(GpuLightType::spot, light.color, light.intensity, shadow);
   record.position_range = glm::vec4(scene::light_position(world), light.range);
-  record.direction_type = glm::vec4(scene::light_direction(world), 0.0f);
+  record.direction_type = glm::vec4(scene::light_direction(world), shadow.contact_length);
   record.shape = glm::vec4(std::cos(light.inner_cone), std::cos(light.outer_cone), 0.0f, 0.0f);
-  record.info.y = to_gpu(light.falloff);
+  record.info.y |= to_gpu(light.falloff);
   return record;
 }
 
 GpuLight pack_light(const scene::DirectionalLight& light, const ecs::WorldTransform& world,
                     const scene::ShadowSettings& shadow) {
   GpuLight record = common_record(GpuLightType::directional, light.color, light.intensity, shadow);
-  record.direction_type = glm::vec4(scene::light_direction(world), 0.0f);
+  record.direction_type = glm::vec4(scene::light_direction(world), shadow.contact_length);
   return record;
 }
 
@@ -53,7 +55,7 @@ GpuLight pack_light(const scene::CylinderLight& light, const ecs::WorldTransform
                     const scene::ShadowSettings& shadow) {
   GpuLight record = common_record(GpuLightType::cylinder, light.color, light.intensity, shadow);
   record.position_range = glm::vec4(scene::light_position(world), 0.0f);
-  record.direction_type = glm::vec4(scene::light_direction(world), 0.0f);
+  record.direction_type = glm::vec4(scene::light_direction(world), shadow.contact_length);
   record.shape = glm::vec4(0.0f, 0.0f, light.inner_radius, light.outer_radius);
   return record;
 }

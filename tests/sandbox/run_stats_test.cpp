@@ -88,6 +88,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.dropped_light_pairs = 12;
   stats.light_list_pairs = TimeSummary{5000.0, 4000.0, 6000.0};
   stats.filtered_shadows = 8;
+  stats.contact_shadows_skipped = 3;
   stats.shadows = {"batched",
                    "compute",
                    1ull << 30,
@@ -131,7 +132,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 20u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 21u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("schema_version"), stats_schema_version);
   EXPECT_EQ(json.at("generator"), "Shadowgraph " SHADOWGRAPH_VERSION);
   EXPECT_EQ(json.at("device"), stats.device);
@@ -168,6 +169,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(json.at("validation_errors"), 4);
   EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
   EXPECT_EQ(json.at("dropped_light_pairs"), 12);
+  EXPECT_EQ(json.at("contact_shadows_skipped"), 3);
   EXPECT_EQ(json.at("filtered_shadows"), 8);
   expect_summary(json.at("light_list_pairs"), *stats.light_list_pairs);
   // Settings keep their types: numbers, true/false for flags, null when unset.

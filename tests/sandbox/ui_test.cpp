@@ -2,9 +2,12 @@
 // The panels' state without drawing them: what F frames.
 #include <gtest/gtest.h>
 
+#include "ecs/hierarchy.h"
 #include "ecs/transform_system.h"
+#include "sandbox/mesh_panel.h"
 #include "sandbox/ui.h"
 #include "systems/scene/lights.h"
+#include "systems/scene/primitive_meshes.h"
 #include "systems/scene/scene_builder.h"
 
 namespace sg::sandbox {
@@ -39,6 +42,21 @@ TEST(SandboxUi, FFramesTheSelectedLightsReachOrNothing) {
   scene.world.destroy(point);
   ui.select(point);
   EXPECT_TRUE(ui.selection_bounds(scene.world).empty());
+}
+
+TEST(MeshPanel, ADrawableIsNamedByItselfItsParentOrItsMesh) {
+  scene::Scene scene;
+  const uint32_t box = scene::add_box_mesh(scene.meshes);
+  const ecs::Entity plain = scene::add_instance(scene, box, {}, scene::Material{});
+  const ecs::Entity named = scene::add_instance(scene, box, {}, scene::Material{});
+  scene.world.add<scene::Name>(named, "crate");
+  const ecs::Entity node = scene.world.create();
+  scene.world.add<scene::Name>(node, "table");
+  const ecs::Entity primitive = scene::add_instance(scene, box, {}, scene::Material{});
+  ecs::set_parent(scene.world, primitive, node);
+  EXPECT_EQ(mesh_label(scene.world, plain), "mesh " + std::to_string(box));
+  EXPECT_EQ(mesh_label(scene.world, named), "crate");
+  EXPECT_EQ(mesh_label(scene.world, primitive), "table") << "an imported node's primitive";
 }
 
 }  // namespace

@@ -25,6 +25,7 @@ void collect(const scene::Scene& scene, LightType type, std::vector<ReferenceLig
         light.position = scene::light_position(world);
         light.direction = scene::light_direction(world);
         light.light_size = shadow.light_size;
+        light.caster_mask = shadow.caster_mask;
         out.push_back(std::move(light));
       });
 }

@@ -11,6 +11,7 @@
 #include "ecs/entity.h"
 #include "ecs/world.h"
 #include "systems/scene/enum_names.h"
+#include "systems/scene/layers.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/scene.h"
 
@@ -34,6 +35,7 @@ struct ReferenceLight {
   // ShadowSettings::light_size: the emitter's width in world units (point, spot), or its width
   // seen from one unit away (directional, cylinder), as the engine's PCSS reads it.
   float light_size = 0.0f;
+  scene::LayerMask caster_mask = scene::all_layers;  // ShadowSettings::caster_mask: what shadows it
 };
 
 // Calls fn with the entity's light component, whichever type it is.

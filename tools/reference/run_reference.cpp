@@ -151,7 +151,9 @@ ReferenceReport run_reference(vk::VulkanContext& context, const FrameSettings& f
   const SceneTriangles triangles = scene_triangles(scene.scene);
   say(progress, "scene: " + std::to_string(triangles.surfaces.size() / 3) + " triangles, " +
                     std::to_string(lights.size()) + " shadowed lights to compare");
-  const RayScene casters(triangles.casters);
+  std::vector<scene::LayerMask> masks;
+  for (const ReferenceLight& light : lights) masks.push_back(light.caster_mask);
+  const CasterScenes casters(triangles, masks);
   const RayScene surfaces(triangles.surfaces);
   jobs::ThreadPool pool;
   {
@@ -160,7 +162,8 @@ ReferenceReport run_reference(vk::VulkanContext& context, const FrameSettings& f
     for (size_t l = 0; l < lights.size(); ++l) {
       say(progress, "light " + std::to_string(l + 1) + "/" + std::to_string(lights.size()) + " '" +
                         lights[l].name + "' (" + std::string(to_string(lights[l].type)) + ")");
-      report.lights.push_back(compare_light(engine, points, casters, lights[l], settings, pool, progress));
+      report.lights.push_back(compare_light(engine, points, casters.of(lights[l].caster_mask), lights[l],
+                                            settings, pool, progress));
     }
   }
   if (settings.cost_frames > 0) report.costs = measure_costs(context, frame, settings, progress);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tools/reference/scene_triangles.h"
 
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -30,8 +31,28 @@ SceneTriangles scene_triangles(const scene::Scene& scene) {
           out.surfaces.push_back(corner);
           if (caster) out.casters.push_back(corner);
         }
+        if (caster)
+          out.caster_layers.insert(out.caster_layers.end(), mesh.index_count / 3, instance.shadow_layers);
       });
   return out;
+}
+
+CasterScenes::CasterScenes(const SceneTriangles& triangles, std::span<const scene::LayerMask> masks) {
+  for (const scene::LayerMask mask : masks) {
+    if (scenes_[mask]) continue;
+    std::vector<glm::vec3> corners;
+    for (size_t t = 0; t < triangles.caster_layers.size(); ++t) {
+      if (triangles.caster_layers[t] & mask)
+        corners.insert(corners.end(), &triangles.casters[3 * t], &triangles.casters[3 * t + 3]);
+    }
+    scenes_[mask] = std::make_unique<RayScene>(corners);
+  }
+}
+
+const RayScene& CasterScenes::of(scene::LayerMask mask) const {
+  if (!scenes_[mask])
+    throw std::logic_error("CasterScenes::of: no scene for caster mask " + std::to_string(mask));
+  return *scenes_[mask];
 }
 
 uint32_t stop_casting(scene::Scene& scene, std::string_view name) {

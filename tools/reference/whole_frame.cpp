@@ -32,6 +32,7 @@ struct FrameLight {
   std::string name;
   scene::ShadowAlgorithm algorithm = scene::ShadowAlgorithm::hard;
   uint32_t resolution = 0;
+  scene::LayerMask caster_mask = scene::all_layers;
 };
 
 constexpr LightType record_types[] = {LightType::point, LightType::spot, LightType::directional,
@@ -39,7 +40,8 @@ constexpr LightType record_types[] = {LightType::point, LightType::spot, LightTy
 
 std::vector<FrameLight> frame_lights(const shadows::FrameLights& lights) {
   std::vector<FrameLight> out(lights.records.size());
-  const auto add = [&](uint32_t record, const std::string& view_name, uint32_t resolution) {
+  const auto add = [&](uint32_t record, const std::string& view_name, uint32_t resolution,
+                       scene::LayerMask caster_mask) {
     const shadows::GpuLight& gpu = lights.records[record];
     FrameLight& light = out[record];
     light.shadowed = true;
@@ -51,16 +53,20 @@ std::vector<FrameLight> frame_lights(const shadows::FrameLights& lights) {
     light.ray.name = light.name;
     light.algorithm = static_cast<scene::ShadowAlgorithm>(gpu.info.z);
     light.resolution = resolution;
+    light.caster_mask = caster_mask;
   };
   for (const shadows::ShadowMapView& map : lights.maps) {
-    if (map.cascade == shadows::no_cascade) add(map.light, map.name, map.resolution);
+    if (map.cascade == shadows::no_cascade) add(map.light, map.name, map.resolution, map.caster_mask);
   }
   // A cascaded light is one row, named as the light, at its nearest cascade's resolution.
   for (const shadows::FrameLights::CascadedLight& light : lights.cascaded) {
     const shadows::ShadowMapView& nearest = lights.maps[light.first_view];
-    add(light.record, nearest.name.substr(0, nearest.name.rfind(" cascade ")), nearest.resolution);
+    add(light.record, nearest.name.substr(0, nearest.name.rfind(" cascade ")), nearest.resolution,
+        nearest.caster_mask);
   }
-  for (const shadows::ShadowCubeView& cube : lights.cubes) add(cube.light, cube.name, cube.resolution);
+  for (const shadows::ShadowCubeView& cube : lights.cubes) {
+    add(cube.light, cube.name, cube.resolution, cube.caster_mask);
+  }
   return out;
 }
 
@@ -121,8 +127,8 @@ ProbedFrame probe_frame(vk::VulkanContext& context, const FrameSettings& setting
 // Each measured pair's references, traced on `pool` in batches with a progress line each.
 std::vector<TracedPair> trace_pairs(const std::vector<ShadowProbePair>& pairs,
                                     const std::vector<FrameLight>& lights, const SurfacePoints& points,
-                                    const RayScene& casters, uint32_t soft_samples, jobs::ThreadPool& pool,
-                                    const Progress& progress) {
+                                    const CasterScenes& casters, uint32_t soft_samples,
+                                    jobs::ThreadPool& pool, const Progress& progress) {
   std::vector<TracedPair> out;
   out.reserve(pairs.size());
   for (const ShadowProbePair& pair : pairs) {
@@ -142,12 +148,13 @@ std::vector<TracedPair> trace_pairs(const std::vector<ShadowProbePair>& pairs,
         TracedPair& pair = out[i];
         const FrameLight& light = lights[pair.light];
         const SurfacePoint& point = points.points[pair.pixel];
-        pair.hard = hard_visible(casters, point, points.eye, light.ray);
+        const RayScene& light_casters = casters.of(light.caster_mask);
+        pair.hard = hard_visible(light_casters, point, points.eye, light.ray);
         const bool soft = soft_samples > 0 && (light.algorithm == scene::ShadowAlgorithm::pcss ||
                                                light.algorithm == scene::ShadowAlgorithm::pcss_noise);
         const glm::uvec2 pixel{pair.pixel % points.width, pair.pixel / points.width};
         pair.reference =
-            soft ? soft_visible(casters, point, points.eye, light.ray, soft_samples, pixel) : pair.hard;
+            soft ? soft_visible(light_casters, point, points.eye, light.ray, soft_samples, pixel) : pair.hard;
       }
     });
     const double done = double(first + count) / double(chunks);
@@ -189,7 +196,9 @@ WholeFrameReport run_whole_frame(vk::VulkanContext& context, const FrameSettings
   }
 
   const SceneTriangles triangles = scene_triangles(probed.view->scene);
-  const RayScene casters(triangles.casters);
+  std::vector<scene::LayerMask> masks;
+  for (const FrameLight& light : probed.lights) masks.push_back(light.caster_mask);
+  const CasterScenes casters(triangles, masks);
   const RayScene surfaces(triangles.surfaces);
   jobs::ThreadPool pool;
   const SurfacePoints points =

@@ -47,6 +47,9 @@ TEST(SceneSidecar, EditedLightsAndCameraComeBack) {
     edited.world.get_mut<scene::ShadowSettings>(named(edited, "sun")).cascades = 2;
     edited.world.get_mut<scene::ShadowSettings>(spot).update = scene::ShadowUpdate::every_frame;
     edited.world.get_mut<scene::ShadowSettings>(spot).priority = 2.5f;
+    edited.world.get_mut<scene::ShadowSettings>(spot).caster_mask = 0x81;
+    edited.world.get_mut<scene::ShadowSettings>(spot).light_mask = 0;
+    edited.world.get_mut<scene::ShadowSettings>(spot).contact_length = 0.25f;
     scene::add_light(edited, scene::PointLight{glm::vec3(1, 0, 0), 2.0f, 4.0f},
                      ecs::LocalTransform{{1, 2, 3}}, {}, "added");
     save_sidecar(path, edited, {{1, 5, 6}, {0, 0, 0}, {0, 1, 0}});
@@ -62,6 +65,9 @@ TEST(SceneSidecar, EditedLightsAndCameraComeBack) {
   EXPECT_FLOAT_EQ(fresh.world.get<scene::SpotLight>(spot).outer_cone, 0.5f);
   EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(spot).update, scene::ShadowUpdate::every_frame);
   EXPECT_FLOAT_EQ(fresh.world.get<scene::ShadowSettings>(spot).priority, 2.5f);
+  EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(spot).caster_mask, 0x81);
+  EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(spot).light_mask, 0);
+  EXPECT_FLOAT_EQ(fresh.world.get<scene::ShadowSettings>(spot).contact_length, 0.25f);
   EXPECT_EQ(named(fresh, "beam"), ecs::null_entity);
   EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(named(fresh, "sun")).cascades, 2u);
   const ecs::Entity added = named(fresh, "added");
@@ -100,6 +106,12 @@ TEST(SceneSidecar, MalformedFilesAreRefusedLeavingTheSceneAsItWas) {
        "lights[0].shadow.update: is not one of auto, every_frame, on_demand"},
       {R"({"name": "x", "type": "point", "shadow": {"priority": -5}})",
        "lights[0].shadow.priority: is not within -4 .. 4"},
+      {R"({"name": "x", "type": "spot", "shadow": {"caster_mask": 1.5}})",
+       "lights[0].shadow.caster_mask: is not a layer mask (an integer from 0 to 255)"},
+      {R"({"name": "x", "type": "spot", "shadow": {"light_mask": -1}})",
+       "lights[0].shadow.light_mask: is not"},
+      {R"({"name": "x", "type": "spot", "shadow": {"contact_length": 11}})",
+       "lights[0].shadow.contact_length: is not within 0 .. 10"},
   };
   for (const auto& [light, message] : bad_lights) {
     EXPECT_NE(refusal(std::string(R"({"lights": [)") + light + "]}").find(message), std::string::npos)

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -79,6 +80,8 @@ class ShadowAlgorithms : public GpuTest {
     const vk::Rgba8Image image = vk::read_rgba8(context, frame.image());
     last_pixels = image.pixels;
     last_cascades = frame.renderer().shadow_stats().cascades;
+    last_lighting = frame.renderer().lighting();
+    last_contact_skipped = frame.renderer().contact_shadows_skipped();
     for (uint32_t y = 0; y < height; ++y) {
       for (uint32_t x = 0; x < width; ++x) out[size_t{y} * width + x] = vk::srgb_to_linear(image.at(x, y)[1]);
     }
@@ -107,6 +110,8 @@ class ShadowAlgorithms : public GpuTest {
 
   std::vector<uint8_t> last_pixels;
   uint32_t last_cascades = 0;  // the directional cascades of the last render's last frame
+  LightingPath last_lighting = LightingPath::automatic;
+  uint32_t last_contact_skipped = 0;
 };
 
 struct Classification {
@@ -178,6 +183,135 @@ TEST_F(ShadowAlgorithms, AFloorThatReceivesNoShadowIsLitAsWithoutShadows) {
     EXPECT_GT(darker, shadowed * 9 / 10) << "the box shadows a receiving floor";
     EXPECT_EQ(differing, 0) << "a floor that receives no shadow is lit where the box would shadow it";
   }
+}
+
+// Layers (systems/scene/layers.h): the floor on layer 1, the box on layer 2. A light lights only
+// the surfaces its light mask names, on every lighting path, and only the casters its caster mask
+// names shadow it, on both shadow view paths, for maps and cubes.
+class ShadowLayers : public ShadowAlgorithms {
+ protected:
+  static constexpr scene::LayerMask floor_layer = 0x02, box_layer = 0x04;
+
+  std::vector<float> render_layers(ShadowScene s, float intensity, const FrameSettings& options) {
+    SceneView view = build(s, intensity);
+    bool first = true;  // the floor is the scene's first instance (floor_box_scene.h), the box the second
+    view.scene.world.query<scene::MeshInstance>().for_each([&](ecs::Entity, scene::MeshInstance& instance) {
+      instance.light_layers = instance.shadow_layers = first ? floor_layer : box_layer;
+      first = false;
+    });
+    return render(view, options);
+  }
+};
+
+TEST_F(ShadowLayers, ALightLightsOnlyTheSurfacesOnItsLightMask) {
+  ShadowScene s = with(LightKind::spot, scene::ShadowAlgorithm::pcf);
+  const FloorPixels floor = reference(s, 1);
+  for (const LightingPath path :
+       {LightingPath::automatic, LightingPath::deferred, LightingPath::every_light}) {
+    FrameSettings options;
+    options.renderer.lighting = path;
+    const std::vector<float> dark = render_layers(s, 0.0f, options);
+    s.shadow.light_mask = floor_layer | box_layer;
+    const std::vector<float> lit = render_layers(s, s.intensity, options);
+    s.shadow.light_mask = box_layer;
+    const std::vector<float> box_only = render_layers(s, s.intensity, options);
+    int floor_pixels = 0, lit_floor = 0, unlit_floor = 0, lit_elsewhere = 0;
+    for (size_t i = 0; i < floor.pixels.size(); ++i) {
+      if (floor.pixels[i] == FloorPixel::not_floor) {
+        lit_elsewhere += box_only[i] > dark[i] + 0.05f;
+        continue;
+      }
+      ++floor_pixels;
+      lit_floor += floor.pixels[i] == FloorPixel::lit && lit[i] > dark[i] + 0.05f;
+      unlit_floor += std::abs(box_only[i] - dark[i]) <= 1.0f / 255.0f;
+    }
+    const std::string name(to_string(path));
+    ASSERT_GT(floor_pixels, 2000) << name;
+    EXPECT_GT(lit_floor, floor_pixels / 3) << name << ": a mask naming the floor's layer lights it";
+    EXPECT_EQ(unlit_floor, floor_pixels) << name << ": a mask without the floor's layer leaves it dark";
+    EXPECT_GT(lit_elsewhere, 20) << name << ": the box, on the mask's layer, is lit";
+  }
+}
+
+TEST_F(ShadowLayers, OnlyCastersOnItsCasterMaskShadowALight) {
+  for (const LightKind kind : {LightKind::spot, LightKind::point}) {
+    for (const shadows::ShadowViewPath views :
+         {shadows::ShadowViewPath::batched, shadows::ShadowViewPath::per_light}) {
+      ShadowScene s = with(kind, scene::ShadowAlgorithm::pcf);
+      if (kind == LightKind::point) s.light_position = {-2.5f, 4.0f, -1.5f};
+      const FloorPixels floor = reference(s, 1);
+      FrameSettings options;
+      options.renderer.shadow_views = views;
+      options.renderer.lights.shadows = false;
+      const std::vector<float> unshadowed = render_layers(s, s.intensity, options);
+      options.renderer.lights.shadows = true;
+      s.shadow.caster_mask = floor_layer;
+      const std::vector<float> floor_casts = render_layers(s, s.intensity, options);
+      s.shadow.caster_mask = box_layer;
+      const std::vector<float> box_casts = render_layers(s, s.intensity, options);
+      int shadowed = 0, darker = 0, differing = 0;
+      for (size_t i = 0; i < floor.pixels.size(); ++i) {
+        if (floor.pixels[i] != FloorPixel::shadowed) continue;
+        ++shadowed;
+        darker += box_casts[i] < unshadowed[i] - 0.05f;
+        differing += std::abs(floor_casts[i] - unshadowed[i]) > 1.0f / 255.0f;
+      }
+      const std::string name =
+          std::string(kind == LightKind::spot ? "spot, " : "point, ") + std::string(to_string(views));
+      ASSERT_GT(shadowed, 100) << name;
+      EXPECT_GT(darker, shadowed * 9 / 10) << name << ": the box, on the caster mask's layer, casts";
+      EXPECT_EQ(differing, 0) << name << ": the box, off the caster mask's layers, casts nothing";
+    }
+  }
+}
+
+// Contact shadows (shaders/contact_shadows.glsl): a box just above the floor that casts into no
+// map still shadows the floor beside it through the depth buffer, within the light's contact
+// length, where the ray-cast reference puts the floor in its shadow; the lit floor stays lit.
+// A CPU device's automatic lighting takes the deferred path for them; fused lighting draws none
+// and says so.
+TEST_F(ShadowAlgorithms, ContactShadowsDarkenTheFloorBesideABoxNoMapHolds) {
+  ShadowScene s = with(LightKind::spot, scene::ShadowAlgorithm::pcf);
+  s.box_bottom = 0.05f;
+  s.light_position = {-1.0f, 2.2f, -4.5f};  // low, behind the box: its shadow falls toward the camera
+  s.aim = glm::normalize(glm::vec3(0.0f, 0.3f, 0.0f) - s.light_position);
+  const FloorPixels floor = reference(s, 1);
+  const auto render_contact = [&](float contact_length, LightingPath path) {
+    s.shadow.contact_length = contact_length;
+    SceneView view = build(s, s.intensity);
+    bool first = true;  // the floor is the scene's first instance (floor_box_scene.h), the box the second
+    view.scene.world.query<scene::MeshInstance>().for_each([&](ecs::Entity, scene::MeshInstance& instance) {
+      if (!first) instance.casts_shadow = false;
+      first = false;
+    });
+    FrameSettings options;
+    options.renderer.lighting = path;
+    return render(view, options);
+  };
+  const std::vector<float> without = render_contact(0.0f, LightingPath::automatic);
+  EXPECT_EQ(last_lighting, LightingPath::fused) << "one light without contact shadows on lavapipe";
+  const std::vector<float> with = render_contact(2.0f, LightingPath::automatic);
+  EXPECT_EQ(last_lighting, LightingPath::deferred) << "contact shadows are deferred lighting's";
+  EXPECT_EQ(last_contact_skipped, 0u);
+  int shadowed = 0, darkened = 0, lit = 0, lit_darkened = 0;
+  for (size_t i = 0; i < floor.pixels.size(); ++i) {
+    if (floor.pixels[i] == FloorPixel::shadowed) {
+      ++shadowed;
+      darkened += with[i] < without[i] - 0.05f;
+    } else if (floor.pixels[i] == FloorPixel::lit) {
+      ++lit;
+      lit_darkened += with[i] < without[i] - 0.05f;
+    }
+  }
+  ASSERT_GT(shadowed, 50);
+  EXPECT_GT(darkened, shadowed * 8 / 10) << "of " << shadowed << " floor pixels in the box's shadow";
+  EXPECT_LE(lit_darkened, lit / 100) << "of " << lit << " lit floor pixels";
+
+  const std::vector<float> fused = render_contact(2.0f, LightingPath::fused);
+  EXPECT_EQ(last_contact_skipped, 1u) << "fused lighting draws no contact shadows, and counts the light";
+  int differing = 0;
+  for (size_t i = 0; i < fused.size(); ++i) differing += std::abs(fused[i] - without[i]) > 1.0f / 255.0f;
+  EXPECT_EQ(differing, 0);
 }
 
 TEST_F(ShadowAlgorithms, HardSpotShadowMatchesRayCastingAwayFromTheEdge) {

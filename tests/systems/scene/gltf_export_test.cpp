@@ -76,10 +76,15 @@ TEST(GltfExport, TheDefaultSceneComesBackWithItsLightsDrawablesAndView) {
   edited.algorithm = ShadowAlgorithm::pcss_noise;
   edited.light_size = 0.7f;
   edited.shadow_color = {0.2f, 0.1f, 0.0f};
+  edited.caster_mask = 0x0C;
+  edited.contact_length = 0.4f;
+  edited.light_mask = 0x03;
   ecs::Entity drawable = ecs::null_entity;
   scene.world.query<const MeshInstance>().for_each([&](ecs::Entity e, const MeshInstance&) { drawable = e; });
   scene.world.get_mut<MeshInstance>(drawable).casts_shadow = false;
   scene.world.get_mut<MeshInstance>(drawable).receives_shadow = false;
+  scene.world.get_mut<MeshInstance>(drawable).light_layers = 0x06;
+  scene.world.get_mut<MeshInstance>(drawable).shadow_layers = 0x08;
   const ExportView view{{{1, 5, 6}, {0, 1, 0}, {0, 1, 0}}, Camera{0.9f, 0.1f, 80.0f, 0.0f}};
 
   for (const char* file : {"default.gltf", "default.glb"}) {
@@ -113,9 +118,12 @@ TEST(GltfExport, TheDefaultSceneComesBackWithItsLightsDrawablesAndView) {
       EXPECT_FLOAT_EQ(other.shadow.light_size, facts.shadow.light_size) << file << ": " << name;
       EXPECT_EQ(other.shadow.shadow_color, facts.shadow.shadow_color) << file << ": " << name;
       EXPECT_EQ(other.shadow.resolution, facts.shadow.resolution) << file << ": " << name;
+      EXPECT_EQ(other.shadow.caster_mask, facts.shadow.caster_mask) << file << ": " << name;
+      EXPECT_FLOAT_EQ(other.shadow.contact_length, facts.shadow.contact_length) << file << ": " << name;
+      EXPECT_EQ(other.shadow.light_mask, facts.shadow.light_mask) << file << ": " << name;
     }
 
-    int not_casting = 0, not_receiving = 0;
+    int not_casting = 0, not_receiving = 0, layered = 0;
     std::multiset<std::pair<float, float>> terms_before, terms_after;
     scene.world.query<const Material>().for_each(
         [&](ecs::Entity, const Material& m) { terms_before.emplace(m.specular, m.shininess); });
@@ -124,7 +132,9 @@ TEST(GltfExport, TheDefaultSceneComesBackWithItsLightsDrawablesAndView) {
     loaded.world.query<const MeshInstance>().for_each([&](ecs::Entity, const MeshInstance& instance) {
       not_casting += instance.casts_shadow ? 0 : 1;
       not_receiving += instance.receives_shadow ? 0 : 1;
+      layered += instance.light_layers == 0x06 && instance.shadow_layers == 0x08;
     });
+    EXPECT_EQ(layered, 1) << file;
     EXPECT_EQ(not_casting, 1) << file;
     EXPECT_EQ(not_receiving, 1) << file;
     EXPECT_EQ(terms_after, terms_before) << file << ": specular and shininess";

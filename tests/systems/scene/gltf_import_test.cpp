@@ -305,7 +305,13 @@ TEST(GltfImport, EachLightTypeWithShadowExtras) {
                   {"intensity", 4},
                   {"range", 12},
                   {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}},
-                  {"extras", {{"algorithm", "noise"}, {"update", "on_demand"}, {"priority", -1.5}}}});
+                  {"extras",
+                   {{"algorithm", "noise"},
+                    {"update", "on_demand"},
+                    {"priority", -1.5},
+                    {"contact_length", 0.3},
+                    {"caster_mask", 5},
+                    {"light_mask", 2}}}});
   file.add_light(
       {{"type", "directional"}, {"intensity", 3}, {"extras", {{"algorithm", "hard"}, {"cascades", 2}}}});
   // Rotated -90 degrees about X: -Z turns to -Y, the light points down.
@@ -344,6 +350,9 @@ TEST(GltfImport, EachLightTypeWithShadowExtras) {
         EXPECT_EQ(settings.algorithm, ShadowAlgorithm::noise);
         EXPECT_EQ(settings.update, ShadowUpdate::on_demand);
         EXPECT_FLOAT_EQ(settings.priority, -1.5f);
+        EXPECT_FLOAT_EQ(settings.contact_length, 0.3f);
+        EXPECT_EQ(settings.caster_mask, 5);
+        EXPECT_EQ(settings.light_mask, 2);
         EXPECT_NEAR(light_direction(world).y, -1.0f, 1e-5f);
       });
   scene.world.query<const DirectionalLight, const ShadowSettings>().for_each(
@@ -380,6 +389,8 @@ TEST(GltfImport, LightDefaultsWithoutExtrasOrRange) {
     EXPECT_EQ(shadow.algorithm, defaults.algorithm);
     EXPECT_EQ(shadow.constant_bias, defaults.constant_bias);
     EXPECT_EQ(shadow.resolution, defaults.resolution);
+    EXPECT_EQ(shadow.caster_mask, all_layers);
+    EXPECT_EQ(shadow.light_mask, all_layers);
     EXPECT_TRUE(shadow.casts_shadow);
   }
 }
@@ -396,7 +407,9 @@ TEST(GltfImport, OddLightValuesAreClampedWithWarnings) {
                     {"resolution", 1e9},
                     {"cascades", 9},
                     {"update", "often"},
-                    {"priority", 7}}}});
+                    {"priority", 7},
+                    {"caster_mask", 256},
+                    {"light_mask", "all"}}}});
   file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
   Scene scene = load_gltf(file.write_gltf(dir, "odd").string());
   const auto spots = components<SpotLight>(scene);
@@ -411,6 +424,10 @@ TEST(GltfImport, OddLightValuesAreClampedWithWarnings) {
   EXPECT_EQ(shadows[0].update, ShadowUpdate::automatic);
   EXPECT_FLOAT_EQ(shadows[0].priority, max_shadow_priority);
   EXPECT_TRUE(has_warning(scene, "extras.update \"often\" is not one of"));
+  EXPECT_EQ(shadows[0].caster_mask, all_layers);
+  EXPECT_EQ(shadows[0].light_mask, all_layers);
+  EXPECT_TRUE(has_warning(scene, "extras.caster_mask 256 is not a layer mask (an integer from 0 to 255)"));
+  EXPECT_TRUE(has_warning(scene, "extras.light_mask \"all\" is not a layer mask"));
   EXPECT_TRUE(has_warning(scene, "color component outside [0, 1]"));
   EXPECT_TRUE(has_warning(scene, "extras.algorithm \"soft\" is not one of"));
   EXPECT_TRUE(has_warning(scene, "extras.density"));
@@ -481,6 +498,32 @@ TEST(GltfImport, ShadowFlagsFromExtrasAndKhrLightsShadows) {
   const auto shadows = components<ShadowSettings>(scene);
   ASSERT_EQ(shadows.size(), 1u);
   EXPECT_FALSE(shadows[0].casts_shadow) << "the light's KHR_lights_shadows";
+}
+
+// A mesh's layers (systems/scene/layers.h) from its node's extras, else its mesh's; layer 0 alone
+// without either; a value that is not a mask reported and skipped.
+TEST(GltfImport, MeshLayersFromExtras) {
+  TempDir dir;
+  GltfWriter file;
+  const int stage = file.add_mesh({{"POSITION", file.add_triangle_positions()}});
+  const int plain = file.add_mesh({{"POSITION", file.add_triangle_positions()}});
+  file.document["meshes"][stage]["extras"] = {{"light_layers", 2}, {"shadow_layers", 6}};
+  file.add_node({{"name", "stage"}, {"mesh", stage}});
+  file.add_node(
+      {{"name", "stage, own"}, {"mesh", stage}, {"extras", {{"shadowgraph", {{"light_layers", 9}}}}}});
+  file.add_node({{"name", "plain"}, {"mesh", plain}});
+  file.add_node({{"name", "odd"}, {"mesh", plain}, {"extras", {{"shadow_layers", -3}}}});
+  Scene scene = load_gltf(file.write_gltf(dir, "layers").string());
+  std::map<std::string, std::pair<int, int>> layers;
+  scene.world.query<const MeshInstance>().for_each([&](ecs::Entity entity, const MeshInstance& instance) {
+    const ecs::Entity node = scene.world.get<ecs::Parent>(entity).entity;
+    layers[scene.world.get<Name>(node).value] = {instance.light_layers, instance.shadow_layers};
+  });
+  EXPECT_EQ(layers.at("stage"), std::make_pair(2, 6)) << "its mesh's";
+  EXPECT_EQ(layers.at("stage, own"), std::make_pair(9, 6)) << "the node's word over its mesh's";
+  EXPECT_EQ(layers.at("plain"), std::make_pair(1, 1)) << "layer 0 alone";
+  EXPECT_EQ(layers.at("odd"), std::make_pair(1, 1));
+  EXPECT_TRUE(has_warning(scene, "nodes[3]: extras.shadow_layers -3 is not a layer mask"));
 }
 
 TEST(GltfImport, SkinnedMeshLoadsInBindPoseWithAWarning) {

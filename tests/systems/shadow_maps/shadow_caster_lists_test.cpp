@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "ecs/query.h"
 #include "ecs/transform_system.h"
 #include "systems/gpu/gpu_scene.h"
 #include "systems/scene/builtin_scenes.h"
@@ -49,25 +50,43 @@ TEST_F(ShadowCasterListsTest, AViewKeepsTheCastersWithinItsLightsReach) {
   EXPECT_EQ(gpu->caster_groups()[0].instanceCount, 3u) << "the receiver-only box is not a caster";
 
   lists.begin_frame(*gpu, 3.0f);
-  const CasterView near = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, 6.0f}, 1);
+  const CasterView near = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, 6.0f}, scene::all_layers, 1);
   EXPECT_EQ(near.command_count, 2u);
   EXPECT_EQ(lists.kept_instances(), 3u) << "boxes at 0 and 5 and the cylinder; not the box at 20";
 
-  const CasterView box_only = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, 1.0f}, 1);
+  const CasterView box_only = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, 1.0f}, scene::all_layers, 1);
   EXPECT_EQ(box_only.first_command, 2u);
   EXPECT_EQ(box_only.command_count, 1u);
   EXPECT_EQ(lists.kept_instances(), 4u);
 
-  const CasterView nothing = lists.add_view(*gpu, {100.0f, 0.0f, 0.0f, 1.0f}, 1);
+  const CasterView nothing = lists.add_view(*gpu, {100.0f, 0.0f, 0.0f, 1.0f}, scene::all_layers, 1);
   EXPECT_EQ(nothing.command_count, 0u);
   lists.upload(0);
 }
 
 TEST_F(ShadowCasterListsTest, ANegativeRadiusKeepsEveryCaster) {
   lists.begin_frame(*gpu, 3.0f);
-  const CasterView all = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, -1.0f}, 6);
+  const CasterView all = lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, -1.0f}, scene::all_layers, 6);
   EXPECT_EQ(all.command_count, 2u);
   EXPECT_EQ(lists.kept_instances(), 4u);
+  lists.upload(0);
+}
+
+// A view keeps only the casters on its light's caster mask's layers, with a reach and without.
+TEST_F(ShadowCasterListsTest, AViewKeepsOnlyTheCastersOnItsLightsLayers) {
+  bool first = true;
+  world.world.query<scene::MeshInstance>().for_each([&](ecs::Entity, scene::MeshInstance& instance) {
+    if (first) instance.shadow_layers = 0x04;  // the box at x = 0 on layer 2 alone
+    first = false;
+  });
+  gpu->gather(world.world);
+  lists.begin_frame(*gpu, 3.0f);
+  lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, 6.0f}, scene::first_layer, 1);
+  EXPECT_EQ(lists.kept_instances(), 2u) << "the box at 5 and the cylinder; the box at 0 is on layer 2";
+  lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, -1.0f}, 0x04, 1);
+  EXPECT_EQ(lists.kept_instances(), 3u) << "everywhere, only the box at 0 is on layer 2";
+  lists.add_view(*gpu, {0.0f, 0.0f, 0.0f, -1.0f}, 0x05, 1);
+  EXPECT_EQ(lists.kept_instances(), 7u) << "layers 0 and 2 hold all four casters";
   lists.upload(0);
 }
 
@@ -101,7 +120,7 @@ TEST(ShadowCasterListsGrid, KeepsExactlyWhatABruteForceTestKeeps) {
         expected += glm::dot(d, d) <= radius * radius;
       }
     }
-    lists.add_view(gpu, glm::vec4(centre, radius), 1);
+    lists.add_view(gpu, glm::vec4(centre, radius), scene::all_layers, 1);
     EXPECT_EQ(lists.kept_instances() - kept_before, expected) << "view " << view;
     kept_before = lists.kept_instances();
     nonempty += expected > 0;

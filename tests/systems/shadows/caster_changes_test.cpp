@@ -71,6 +71,18 @@ TEST(CasterChangeTracker, ANewCasterReportsItsBox) {
   EXPECT_TRUE(same_box(changes[0], box_at(70.0f)));
 }
 
+TEST(CasterChangeTracker, ACasterOnOtherShadowLayersReportsItsBox) {
+  CasterChangeTracker tracker;
+  std::vector<CasterBounds> casters = three_casters();
+  tracker.update(casters);
+  casters[1].layers = 0x06;
+  std::span<const scene::Aabb> changes = tracker.update(casters);
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_TRUE(same_box(changes[0], casters[1].bounds));
+  changes = tracker.update(casters);
+  EXPECT_TRUE(changes.empty()) << "layers that stay are no change";
+}
+
 TEST(CasterChangeTracker, AGoneCasterReportsItsOldBox) {
   CasterChangeTracker tracker;
   std::vector<CasterBounds> casters = three_casters();

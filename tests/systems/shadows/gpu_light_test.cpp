@@ -42,7 +42,7 @@ TEST(GpuLight, PointLightRecord) {
   const GpuLight record = pack_light(light, placed({1, 2, 3}, {0, -1, 0}), test_shadow());
   EXPECT_EQ(record.position_range, glm::vec4(1, 2, 3, 7));
   EXPECT_EQ(record.color_intensity, glm::vec4(1.0f, 0.5f, 0.25f, 3.0f));
-  EXPECT_EQ(record.info, glm::uvec4(0u, 1u, 4u, no_shadow_map));
+  EXPECT_EQ(record.info, glm::uvec4(0u, 1u | 0xFFu << light_mask_shift, 4u, no_shadow_map));
   EXPECT_EQ(record.shadow_bias, glm::vec4(0.001f, 0.02f, 2.5f, 0.4f));
   EXPECT_EQ(record.shadow_color_density, glm::vec4(0.1f, 0.2f, 0.3f, 0.5f));
 }
@@ -58,7 +58,22 @@ TEST(GpuLight, SpotLightRecord) {
   expect_near(glm::vec3(record.direction_type), direction);
   EXPECT_NEAR(record.shape.x, std::cos(glm::radians(15.0f)), 1e-6f);
   EXPECT_NEAR(record.shape.y, std::cos(glm::radians(30.0f)), 1e-6f);
-  EXPECT_EQ(record.info, glm::uvec4(1u, 0u, 4u, no_shadow_map));
+  EXPECT_EQ(record.info, glm::uvec4(1u, 0u | 0xFFu << light_mask_shift, 4u, no_shadow_map));
+}
+
+// The light mask shares info.y with the falloff, and the contact length has direction_type.w.
+TEST(GpuLight, MaskAndContactLengthRideInSpareBits) {
+  scene::ShadowSettings shadow = test_shadow();
+  shadow.light_mask = 0x5A;
+  shadow.contact_length = 0.3f;
+  scene::PointLight point;
+  point.falloff = scene::FalloffMode::gltf_punctual;
+  const GpuLight bulb = pack_light(point, placed({0, 1, 0}, {0, -1, 0}), shadow);
+  EXPECT_EQ(bulb.info.y, 1u | 0x5Au << light_mask_shift);
+  EXPECT_EQ(bulb.direction_type.w, 0.3f);
+  const GpuLight sun = pack_light(scene::DirectionalLight{}, placed({0, 9, 0}, {0, -1, 0}), shadow);
+  EXPECT_EQ(sun.info.y, 0x5Au << light_mask_shift);
+  EXPECT_EQ(sun.direction_type.w, 0.3f) << "kept beside the direction";
 }
 
 TEST(GpuLight, DirectionalLightRecord) {

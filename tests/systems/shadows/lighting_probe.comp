@@ -20,5 +20,6 @@ void main() {
   p.base_color = vec3(0.5);
   p.specular = 0.5;
   p.shininess = 32.0;
+  p.light_layers = 1u;
   result.color = vec4(shade_lights(p, vec3(0.0), uint(lights.length())), 1.0);
 }

@@ -3,7 +3,9 @@
 // floor-and-box scene: surface points taken back from the engine's depth buffer must lie on the
 // floor, and the hard visibility traced from them must say lit and shadowed where exact ray
 // casting against the box does, outside a one-pixel band around the edge.
+#include <array>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -82,6 +84,30 @@ TEST_F(EmbreeReference, HardPointVisibilityAgreesWithTheAnalyticReference) {
   ASSERT_GT(a.shadowed, 100);
   EXPECT_EQ(a.off_the_floor, 0);
   EXPECT_LE(a.disagree, a.compared / 1000) << a.disagree << " of " << a.compared;
+}
+
+// A light's reference is traced against the casters its caster mask names, as its maps draw them.
+TEST(CasterScenes, ALightsRaysMeetOnlyTheCastersOnItsMasksLayers) {
+  reference::SceneTriangles triangles;
+  const auto add_roof = [&](float height, scene::LayerMask layers) {
+    for (const glm::vec3 corner :
+         {glm::vec3(-5, height, -5), glm::vec3(5, height, -5), glm::vec3(0, height, 5)}) {
+      triangles.casters.push_back(corner);
+    }
+    triangles.caster_layers.push_back(layers);
+  };
+  add_roof(1.0f, 0x01);
+  add_roof(2.0f, 0x06);
+  const std::array<scene::LayerMask, 4> masks{0x01, 0x02, 0x08, 0x01};
+  const reference::CasterScenes casters(triangles, masks);
+  const auto first_hit = [&](scene::LayerMask mask) {
+    const auto hit = casters.of(mask).intersect({0, 0, 0}, {0, 1, 0});
+    return hit ? hit->distance : 0.0f;
+  };
+  EXPECT_FLOAT_EQ(first_hit(0x01), 1.0f);
+  EXPECT_FLOAT_EQ(first_hit(0x02), 2.0f) << "the lower roof is on layer 0 alone";
+  EXPECT_FLOAT_EQ(first_hit(0x08), 0.0f) << "no roof on layer 3";
+  EXPECT_THROW(casters.of(0x10), std::logic_error);
 }
 
 }  // namespace
