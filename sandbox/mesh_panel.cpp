@@ -6,6 +6,7 @@
 #include "ecs/hierarchy.h"
 #include "ecs/query.h"
 #include "sandbox/ui_widgets.h"
+#include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
 #include "systems/scene/scene.h"
 
@@ -60,6 +61,15 @@ void MeshPanel::draw(ecs::World& world) {
       changed |= edit_layers("casts on layers", mesh.shadow_layers);
       return changed;
     });
+    // Its material: every drawable has its own copy (glTF primitives share none).
+    if (world.has<scene::Material>(selected_)) {
+      edit<scene::Material>(world, selected_, [](scene::Material& material) {
+        bool changed = ImGui::SliderFloat("specular", &material.specular, 0.0f, 1.0f);
+        changed |= ImGui::SliderFloat("shininess", &material.shininess, 1.0f, 4096.0f, "%.0f",
+                                      ImGuiSliderFlags_Logarithmic);
+        return changed;
+      });
+    }
   }
   ImGui::End();
 }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The Meshes panel: find a drawable by name and switch what it does for the lights: whether it
-// casts and receives shadows, and the layers lights see it on (systems/scene/layers.h). It starts
-// collapsed: listing a scene of many thousand drawables costs a frame time only when open.
+// casts and receives shadows, the layers lights see it on (systems/scene/layers.h), and its
+// material's specular strength and shininess. It starts collapsed: listing a scene of many
+// thousand drawables costs a frame time only when open.
 #include <array>
 #include <string>
 #include <vector>

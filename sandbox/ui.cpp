@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -337,6 +338,16 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
     ImGui::SameLine();
   }
   ImGui::Checkbox("play", &playing_);
+  // One algorithm for every light listed, as --algorithm gives them at the start.
+  if (enum_combo("algorithm of all", all_algorithm_)) {
+    for (const auto& [entity, _] : listed_) {
+      edit<scene::ShadowSettings>(world, entity, [&](scene::ShadowSettings& shadow) {
+        return std::exchange(shadow.algorithm, all_algorithm_) != all_algorithm_;
+      });
+    }
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("glTF animations, orbits and bobs (--animate sets the start)");
   if (selected_ != ecs::null_entity && world.alive(selected_) && light_type(world, selected_) != 0) {
     ImGui::Separator();
     ImGui::TextUnformatted(type_names[light_type(world, selected_)]);

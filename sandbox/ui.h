@@ -26,6 +26,7 @@
 #include "systems/scene/aabb.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/scene.h"
+#include "systems/scene/shadow_settings.h"
 #include "systems/shadows/frame_lights.h"
 
 struct GLFWwindow;
@@ -122,7 +123,8 @@ class SandboxUi {
   bool glfw_ = false;
   int type_filter_ = 0;  // 0 all, then point, spot, directional, cylinder
   int order_ = 0;        // 0 the scene's, 1 by name, 2 by importance (largest on screen first)
-  std::vector<std::pair<ecs::Entity, float>> listed_;  // this frame's list, with importance
+  scene::ShadowAlgorithm all_algorithm_ = scene::ShadowAlgorithm::pcf;  // the last one given to all
+  std::vector<std::pair<ecs::Entity, float>> listed_;                   // this frame's list, with importance
   ecs::Entity selected_ = ecs::null_entity;
   std::array<float, 120> gpu_history_{};  // ms, a ring
   size_t history_next_ = 0;

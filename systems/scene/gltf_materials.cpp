@@ -2,6 +2,8 @@
 #include "systems/scene/gltf_materials.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <string>
 
 #include "systems/scene/gltf_json.h"
@@ -22,6 +24,48 @@ void import_textures(const tinygltf::Model& model, Scene& scene) {
     scene.textures.textures.push_back(std::move(texture));
   }
 }
+
+namespace {
+
+// KHR_materials_specular's strength as the Blinn-Phong kS: its specularFactor times the largest
+// channel of its specularColorFactor scale the default kS, as they scale a dielectric's default
+// reflectance (both 1 by default: the default kS), held within [0, 1]. Its textures are not read.
+void read_specular_extension(const tinygltf::Material& source, const std::string& object, Material& material,
+                             Scene& scene) {
+  const auto found = source.extensions.find("KHR_materials_specular");
+  if (found == source.extensions.end()) return;
+  const tinygltf::Value& specular = found->second;
+  const auto number = [&](const tinygltf::Value& value, const std::string& key) -> std::optional<double> {
+    if (value.IsNumber() && std::isfinite(value.GetNumberAsDouble()) && value.GetNumberAsDouble() >= 0.0) {
+      return value.GetNumberAsDouble();
+    }
+    warn(scene, object + ": KHR_materials_specular." + key + " is not a number >= 0; using 1");
+    return std::nullopt;
+  };
+  double factor = 1.0;
+  if (specular.Has("specularFactor"))
+    factor = number(specular.Get("specularFactor"), "specularFactor").value_or(1.0);
+  double color = 1.0;
+  if (specular.Has("specularColorFactor")) {
+    const tinygltf::Value& rgb = specular.Get("specularColorFactor");
+    if (rgb.IsArray() && rgb.ArrayLen() == 3) {
+      color = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        color = std::max(color, number(rgb.Get(c), "specularColorFactor").value_or(1.0));
+      }
+    } else {
+      warn(scene, object + ": KHR_materials_specular.specularColorFactor is not 3 numbers; using [1, 1, 1]");
+    }
+  }
+  for (const char* texture : {"specularTexture", "specularColorTexture"}) {
+    if (specular.Has(texture)) warn(scene, object + ": KHR_materials_specular." + texture + " is not read");
+  }
+  const double strength = Material{}.specular * factor * color;
+  material.specular = static_cast<float>(std::min(strength, 1.0));
+  if (strength > 1.0) warn(scene, object + ": KHR_materials_specular's strength is above 1; held at 1");
+}
+
+}  // namespace
 
 std::vector<Material> import_materials(const tinygltf::Model& model, Scene& scene) {
   std::vector<Material> materials;
@@ -56,7 +100,8 @@ std::vector<Material> import_materials(const tinygltf::Model& model, Scene& scen
       material.alpha_mode = AlphaMode::blend;
     }
     material.double_sided = source.doubleSided;
-    // Blinn-Phong terms glTF has no place for, as export_gltf keeps them.
+    read_specular_extension(source, object, material, scene);
+    // Blinn-Phong terms glTF has no place for, as export_gltf keeps them (over the extension's).
     if (source.extras.Has("shadowgraph")) {
       const tinygltf::Value& ours = source.extras.Get("shadowgraph");
       const auto number = [&](const char* key, float& target, float low, float high) {

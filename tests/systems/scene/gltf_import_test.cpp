@@ -263,6 +263,38 @@ TEST(GltfImport, AlphaModesCutoffsAndDoubleSidedness) {
   EXPECT_EQ(materials[3].alpha_mode, AlphaMode::opaque);
 }
 
+// KHR_materials_specular scales the default specular strength; extras.shadowgraph.specular, as
+// export_gltf writes it, wins over it.
+TEST(GltfImport, SpecularStrengthFromKhrMaterialsSpecular) {
+  TempDir dir;
+  GltfWriter file;
+  const auto specular = [](nlohmann::json extension) {
+    return nlohmann::json{{"extensions", {{"KHR_materials_specular", std::move(extension)}}}};
+  };
+  file.document["materials"] = {
+      specular({{"specularFactor", 0.5}}), specular({{"specularColorFactor", {0.2, 2.0, 1.0}}}),
+      specular({{"specularFactor", 8.0}}),
+      nlohmann::json{{"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.5}}}}},
+                     {"extras", {{"shadowgraph", {{"specular", 0.9}}}}}},
+      specular({{"specularFactor", "high"}, {"specularTexture", {{"index", 0}}}})};
+  file.document["extensionsUsed"] = {"KHR_materials_specular"};
+  for (int m = 0; m < 5; ++m) {
+    file.add_node({{"mesh", file.add_mesh({{"POSITION", file.add_triangle_positions()}}, -1, m)}});
+  }
+  Scene scene = load_gltf(file.write_gltf(dir, "specular").string());
+  const auto materials = components<Material>(scene);
+  ASSERT_EQ(materials.size(), 5u);
+  const float default_specular = Material{}.specular;
+  EXPECT_FLOAT_EQ(materials[0].specular, 0.5f * default_specular);
+  EXPECT_FLOAT_EQ(materials[1].specular, 2.0f * default_specular) << "the color's largest channel";
+  EXPECT_FLOAT_EQ(materials[2].specular, 1.0f);
+  EXPECT_TRUE(has_warning(scene, "materials[2]: KHR_materials_specular's strength is above 1; held at 1"));
+  EXPECT_FLOAT_EQ(materials[3].specular, 0.9f) << "the engine's own extras win";
+  EXPECT_FLOAT_EQ(materials[4].specular, default_specular);
+  EXPECT_TRUE(has_warning(scene, "materials[4]: KHR_materials_specular.specularFactor is not a number"));
+  EXPECT_TRUE(has_warning(scene, "materials[4]: KHR_materials_specular.specularTexture is not read"));
+}
+
 TEST(GltfImport, PerspectiveCameraAndSkippedOrthographic) {
   TempDir dir;
   GltfWriter file;
