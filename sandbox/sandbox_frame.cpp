@@ -29,6 +29,8 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Op
     ui_->set_ambient(options.frame.renderer.ambient);
     ui_->set_max_fps(float(options.max_fps));
     ui_->set_light_heatmap(options.light_heatmap);
+    ui_->set_shadow_budgets(frame_.renderer().shadow_view_budget(),
+                            frame_.renderer().shadow_time_budget_ms());
     ui_pass_ = std::make_unique<UiPass>(context, frame_format, frames_in_flight);
   }
 }
@@ -51,6 +53,7 @@ FrameExtension SandboxFrame::extension() {
     }
     frame_.renderer().set_view(ui_->view());
     frame_.renderer().set_ambient(ui_->ambient());
+    frame_.renderer().set_shadow_budgets(ui_->shadow_view_budget(), ui_->shadow_time_budget_ms());
     frame_.set_playing(ui_->playing());
   };
   extension.prepare = [this](uint32_t slot) {

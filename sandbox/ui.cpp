@@ -163,7 +163,12 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
   ImGui::Text("shadow views drawn %u (%u moving casters only), kept %u", facts.views_rendered,
               facts.views_moving_only, facts.views_cached);
   ImGui::Text("due maps wrong for %u frames (99%%), %u at most", facts.map_lag_p99, facts.map_lag_max);
-  ImGui::Text("shadow atlas %.0f MiB", facts.shadow_mib);
+  ImGui::Text("shadow atlas %.0f MiB (--shadow-memory at the start)", facts.shadow_mib);
+  ImGui::DragInt("shadow updates", &shadow_view_budget_, 4.0f, 0, 1 << 24,
+                 shadow_view_budget_ > 0 ? "%d views a frame" : "every due view");
+  constexpr double no_budget = 0.0, most_budget = 1000.0;
+  ImGui::DragScalar("shadow budget", ImGuiDataType_Double, &shadow_time_budget_ms_, 0.05f, &no_budget,
+                    &most_budget, shadow_time_budget_ms_ > 0.0 ? "%.2f ms" : "none");
   constexpr const char* views[] = {"lit", "shadows only"};
   ImGui::Combo("view", &view_, views, IM_ARRAYSIZE(views));
   ImGui::DragFloat3("ambient", glm::value_ptr(ambient_), 0.005f, 0.0f, 16.0f, "%.3f");

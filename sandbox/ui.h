@@ -94,6 +94,13 @@ class SandboxUi {
   // The Frame panel's frame-rate cap (FramePacer, 0: none).
   float max_fps() const { return max_fps_; }
   void set_max_fps(float fps) { max_fps_ = fps; }
+  // The Frame panel's shadow budgets (SceneRenderer::set_shadow_budgets).
+  uint32_t shadow_view_budget() const { return uint32_t(shadow_view_budget_); }
+  double shadow_time_budget_ms() const { return shadow_time_budget_ms_; }
+  void set_shadow_budgets(uint32_t view_budget, double time_budget_ms) {
+    shadow_view_budget_ = int(view_budget);
+    shadow_time_budget_ms_ = time_budget_ms;
+  }
   // The Frame panel's ambient term (RendererSettings::ambient).
   const glm::vec3& ambient() const { return ambient_; }
   void set_ambient(const glm::vec3& ambient) { ambient_ = ambient; }
@@ -136,6 +143,8 @@ class SandboxUi {
   int view_ = 0;  // a LightingView
   glm::vec3 ambient_{0.0f};
   float max_fps_ = 0.0f;
+  int shadow_view_budget_ = 0;
+  double shadow_time_budget_ms_ = 0.0;  // a double, as the renderer's: what it set comes back unchanged
   bool light_heatmap_ = false;
   std::vector<UiDepthView> depth_views_;
   MeshPanel meshes_;

@@ -113,6 +113,15 @@ class SceneRenderer {
   void set_view(LightingView view) { settings_.view = view; }
   void set_ambient(const glm::vec3& ambient) { settings_.ambient = ambient; }
   const glm::vec3& ambient() const { return settings_.ambient; }
+  // The shadow budgets a running frame may change (the Frame panel's): views redrawn a frame (0:
+  // every due view) and the shadow passes' GPU time a frame (0: none), from the next prepare()
+  // on. The memory budget sizes the atlas and stays as the renderer was made.
+  void set_shadow_budgets(uint32_t view_budget, double time_budget_ms) {
+    settings_.shadow_view_budget = view_budget;
+    schedule_.set_time_budget(time_budget_ms);
+  }
+  uint32_t shadow_view_budget() const { return settings_.shadow_view_budget; }
+  double shadow_time_budget_ms() const { return schedule_.time_budget().budget_ms(); }
   // From the next prepare() on, each lit frame also records its lights' shadows into `probe`
   // (systems/lighting/shadow_probe.h); null: no more. Deferred lighting only: throws on the
   // fused and every-light paths, which have no per-pixel light lists to walk.

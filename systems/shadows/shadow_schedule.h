@@ -126,6 +126,11 @@ class ShadowSchedule {
   // The time budget: the step a frame scheduled now is planned with, to hand back with the frame's
   // measured shadow passes (ShadowTimeBudget::measured).
   const ShadowTimeBudget& time_budget() const { return time_budget_; }
+  // A new time budget from the next frame on, learnt afresh (0: none); the same one keeps what
+  // it learnt.
+  void set_time_budget(double budget_ms) {
+    if (budget_ms != time_budget_.budget_ms()) time_budget_ = ShadowTimeBudget(budget_ms);
+  }
   uint64_t time_budget_step() const { return time_budget_.step(); }
   void measured(uint64_t step, uint32_t views, double ms) { time_budget_.measured(step, views, ms); }
   std::optional<std::string> take_time_budget_message() { return time_budget_.take_message(); }

@@ -369,6 +369,27 @@ TEST_F(FrameTest, MapsOfMovingLightsLagUnderAShortViewBudget) {
   EXPECT_EQ(map_timeline.lag_max.back(), 0.0);
 }
 
+// The Frame panel's budgets while running (SceneRenderer::set_shadow_budgets): 40 moving spot
+// lights are due every frame; 3 views a frame then draw 3, and no cap draws them all again.
+TEST_F(FrameTest, ShadowBudgetsChangeWhileRunning) {
+  const FrameSettings options = stress(2000, 0, 40, 1.0f);
+  SceneView scene = load_scene_view(options, float(width) / height);
+  vk::FrameRing frames(context);
+  Frame frame(context, scene, options, frames.frames_in_flight());
+  frame.resize({width, height});
+  GpuTimeLog gpu_times;
+  const auto views_drawn = [&](uint32_t view_budget, double time_budget_ms) {
+    frame.renderer().set_shadow_budgets(view_budget, time_budget_ms);
+    render_headless_frames(frame, frames, 2, gpu_times);
+    return frame.renderer().shadow_stats().views_rendered;
+  };
+  EXPECT_EQ(views_drawn(0, 0.0), 41u) << "every moving spot light and the sun";
+  EXPECT_EQ(views_drawn(3, 0.0), 3u);
+  EXPECT_EQ(frame.renderer().shadow_view_budget(), 3u);
+  EXPECT_EQ(views_drawn(0, 2.5), 41u);
+  EXPECT_EQ(frame.renderer().shadow_time_budget_ms(), 2.5);
+}
+
 // Ranked filtering (--filtered-shadows): at each pixel only the N lights adding most run their
 // filter kernels. Where no pixel has more filtering lights than N (the default scene has four),
 // the picture is that of every light filtering; with N = 1 the lighter lights' penumbrae turn
