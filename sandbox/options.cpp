@@ -37,7 +37,8 @@ std::vector<Setting<O>> make_table() {
       "script", "FILE", [](auto& o) -> auto& { return o.script; },
       "headless, run FILE's commands instead of --frames: select NAME, algorithm NAME, resolution N, update "
       "MODE, priority T, redraw_shadow, move X Y Z, camera EX,EY,EZ,TX,TY,TZ, view lit|shadows, wait N, "
-      "screenshot PATH, save (# comments; errors name the file and line)");
+      "screenshot PATH, save, open PATH (another scene, as dropping a glTF on the window does; # "
+      "comments; errors name the file and line)");
   script.info.excludes = {"frames"};
   const Setting<O> own[] = {
       flag<O>(

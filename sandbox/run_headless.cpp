@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -36,11 +37,12 @@ ecs::Entity light_named(const ecs::World& world, const std::string& name, const 
   return found;
 }
 
-// Runs `steps` (script.h) on `frame`, rendering where they wait.
+// Runs `steps` (script.h) on `frame`, rendering where they wait; `open` replaces `scene` and
+// `frame`.
 RunRecord run_script(const Options& options, vk::VulkanContext& context, SceneView& scene,
-                     SandboxFrame& frame, vk::FrameRing& frames, GpuTimeLog& gpu_times) {
+                     std::unique_ptr<SandboxFrame>& frame, vk::FrameRing& frames, GpuTimeLog& gpu_times) {
   const std::vector<ScriptStep> steps = load_script(options.script);
-  ecs::World& world = scene.scene.world;
+  ecs::World& world = scene.scene.world;  // the same object after `open`, holding the new scene
   RunRecord record{{}, {}, &gpu_times};
   uint64_t rendered = 0;
   ecs::Entity selected = ecs::null_entity;
@@ -72,15 +74,26 @@ RunRecord run_script(const Options& options, vk::VulkanContext& context, SceneVi
             scene.pose = command.pose;
           } else if constexpr (std::is_same_v<Command, ScriptStep::Wait>) {
             record.append(
-                render_headless_frames(frame.frame(), frames, command.frames, gpu_times, false, rendered));
+                render_headless_frames(frame->frame(), frames, command.frames, gpu_times, false, rendered));
             rendered += command.frames;
           } else if constexpr (std::is_same_v<Command, ScriptStep::View>) {
-            frame.set_view(command.view);
+            frame->set_view(command.view);
           } else if constexpr (std::is_same_v<Command, ScriptStep::Save>) {
-            frame.save_edits();
+            frame->save_edits();
+          } else if constexpr (std::is_same_v<Command, ScriptStep::Open>) {
+            const Options next = options_to_open(options, command.path);
+            SceneView opened =
+                load_scene_view(next.frame, float(next.frame.width) / float(next.frame.height));
+            frames.wait_idle();
+            frame.reset();
+            scene = std::move(opened);
+            frame = std::make_unique<SandboxFrame>(context, scene, next, frames.frames_in_flight());
+            frame->frame().resize({next.frame.width, next.frame.height});
+            selected = ecs::null_entity;
+            std::printf("shadowgraph: opened %s\n", scene.scene.name.c_str());
           } else if constexpr (std::is_same_v<Command, ScriptStep::Screenshot>) {
             if (rendered == 0) throw std::runtime_error(where + ": nothing rendered yet (wait N first)");
-            write_png(command.path, vk::read_rgba8(context, frame.frame().image()));
+            write_png(command.path, vk::read_rgba8(context, frame->frame().image()));
             std::printf("shadowgraph: wrote %s\n", command.path.c_str());
           }
         },
@@ -99,14 +112,14 @@ int run_headless(const Options& options) {
               settings.width, settings.height, scene.scene.name.c_str(), scene.camera_source.c_str());
 
   vk::FrameRing frames(context);
-  SandboxFrame frame(context, scene, options, frames.frames_in_flight());
-  frame.frame().resize({settings.width, settings.height});
+  auto frame = std::make_unique<SandboxFrame>(context, scene, options, frames.frames_in_flight());
+  frame->frame().resize({settings.width, settings.height});
   GpuTimeLog gpu_times;
   const RunRecord record =
       options.script.empty()
-          ? render_headless_frames(frame.frame(), frames, options.frames.value_or(3), gpu_times, true)
+          ? render_headless_frames(frame->frame(), frames, options.frames.value_or(3), gpu_times, true)
           : run_script(options, context, scene, frame, frames, gpu_times);
-  return finish_run(options, context, scene, frame, record);
+  return finish_run(options, context, scene, *frame, record);
 }
 
 }  // namespace sg::sandbox

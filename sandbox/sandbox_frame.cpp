@@ -11,6 +11,13 @@
 
 namespace sg::sandbox {
 
+Options options_to_open(Options options, const std::string& path) {
+  options.frame.scene = path;
+  options.frame.camera.reset();
+  options.frame.camera_name.clear();
+  return options;
+}
+
 SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Options& options,
                            uint32_t frames_in_flight, GLFWwindow* window)
     : context_(context),

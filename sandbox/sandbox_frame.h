@@ -19,6 +19,11 @@ struct GLFWwindow;
 
 namespace sg::sandbox {
 
+// `options` for opening the scene at `path` (a .gltf or .glb file, or a built-in scene's name) in
+// a running sandbox: the same settings, the view the new scene's own (its first camera, or one
+// framing it), not the command line's --camera.
+Options options_to_open(Options options, const std::string& path);
+
 class SandboxFrame {
  public:
   // `window`: the panels read their input from it (nullptr: headless, panels without input).

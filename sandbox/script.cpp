@@ -86,6 +86,9 @@ std::vector<ScriptStep> parse_script(const std::string& text, const std::string&
     } else if (command == "save") {
       if (!rest.empty()) fail(path, line, "save takes nothing, got \"" + rest + "\"");
       step.command = ScriptStep::Save{};
+    } else if (command == "open") {
+      if (rest.empty()) fail(path, line, "open takes a .gltf or .glb path or a built-in scene's name");
+      step.command = ScriptStep::Open{rest};
     } else if (command == "screenshot") {
       if (rest.empty()) fail(path, line, "screenshot takes a PNG path");
       step.command = ScriptStep::Screenshot{rest};

@@ -15,6 +15,8 @@
 //   screenshot PATH          write the last frame as PNG
 //   view lit|shadows         the picture, or the shadow-only debug view (--view)
 //   save                     write the lights and camera beside the scene (scene_sidecar.h)
+//   open PATH                replace the scene by a .gltf or .glb file (or a built-in scene), as
+//                            dropping it on the window does; the view is the file's
 //
 // Edits are ECS writes, as the panels' are. Errors name the file and line.
 #include <cstdint>
@@ -63,8 +65,11 @@ struct ScriptStep {
     LightingView view;
   };
   struct Save {};
+  struct Open {
+    std::string path;
+  };
   std::variant<Select, Algorithm, Resolution, Update, Priority, RedrawShadow, Move, Camera, Wait, Screenshot,
-               View, Save>
+               View, Save, Open>
       command;
   int line = 0;
 };

@@ -202,6 +202,11 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
     }
     if (facts.atlas_pages > shown_pages) ImGui::Text("(%u more pages)", facts.atlas_pages - shown_pages);
   }
+  ImGui::InputText("##open", open_path_.data(), open_path_.size());
+  ImGui::SameLine();
+  if (ImGui::Button("open") && open_path_[0] != '\0') open_request_ = std::string(open_path_.data());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("a .gltf or .glb file (or drop one on the window), replacing the scene");
   ImGui::TextDisabled("F1: help");
   ImGui::End();
 }
@@ -262,6 +267,7 @@ void SandboxUi::help_panel() {
       "mouse wheel          speed\n"
       "F                    frame the selected light, or the scene\n"
       "P                    screenshot (shadowgraph-N.png)\n"
+      "drop a .gltf / .glb  open it in place of the scene\n"
       "F1                   this help\n"
       "Esc                  quit");
   ImGui::End();

@@ -81,6 +81,8 @@ class SandboxUi {
 
   // True once after the user pressed "save" (the frame writes the sidecar, scene_sidecar.h).
   bool take_save_request() { return std::exchange(save_requested_, false); }
+  // The path typed into the Frame panel's "open", once, after the user pressed its button.
+  std::optional<std::string> take_open_request() { return std::exchange(open_request_, std::nullopt); }
   // True once after the user pressed "export glTF" (the frame writes SCENE.edited.glb).
   bool take_export_request() { return std::exchange(export_requested_, false); }
 
@@ -139,6 +141,8 @@ class SandboxUi {
   bool show_map_ = false;
   bool save_requested_ = false;
   bool export_requested_ = false;
+  std::array<char, 512> open_path_{};
+  std::optional<std::string> open_request_;
   bool playing_ = true;
   int view_ = 0;  // a LightingView
   glm::vec3 ambient_{0.0f};

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "sandbox/window_session.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <stdexcept>
 #include <thread>
 
@@ -32,7 +34,8 @@ VkExtent2D framebuffer_extent(GLFWwindow* window) {
 }  // namespace
 
 WindowSession::WindowSession(const Options& options)
-    : scene_(load_scene_view(options.frame, float(options.frame.width) / float(options.frame.height))) {
+    : options_(options),
+      scene_(load_scene_view(options.frame, float(options.frame.width) / float(options.frame.height))) {
   pacer_.set_max_fps(options.max_fps);
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   window_ =
@@ -48,6 +51,9 @@ WindowSession::WindowSession(const Options& options)
   });
   glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double steps) {
     static_cast<WindowSession*>(glfwGetWindowUserPointer(w))->scroll_ += float(steps);
+  });
+  glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
+    if (count > 0) static_cast<WindowSession*>(glfwGetWindowUserPointer(w))->dropped_ = paths[count - 1];
   });
 
   vk::ContextOptions vulkan_options = context_options(options.frame);
@@ -90,6 +96,25 @@ bool WindowSession::fit_to_window() {
   return true;
 }
 
+void WindowSession::open(const std::string& path) {
+  const Options next = options_to_open(options_, path);
+  const VkExtent2D extent = swapchain_extent();
+  try {
+    SceneView opened =
+        load_scene_view(next.frame, float(std::max(extent.width, 1u)) / float(std::max(extent.height, 1u)));
+    frames_->wait_idle();
+    frame_.reset();
+    scene_ = std::move(opened);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "shadowgraph: cannot open %s: %s\n", path.c_str(), error.what());
+    return;
+  }
+  options_ = next;
+  frame_ = std::make_unique<SandboxFrame>(*context_, scene_, options_, frames_->frames_in_flight(), window_);
+  ready_ = fit_to_window();
+  std::printf("shadowgraph: opened %s\n", scene_.scene.name.c_str());
+}
+
 void WindowSession::finish() {
   frames_->wait_idle();
   for (uint32_t slot = 0; slot < frames_->frames_in_flight(); ++slot) {
@@ -116,6 +141,10 @@ FlyInput WindowSession::fly_input() {
 }
 
 FrameResult WindowSession::frame() {
+  if (SandboxUi* ui = frame_->ui()) {
+    if (std::optional<std::string> path = ui->take_open_request()) dropped_ = std::move(path);
+  }
+  if (std::optional<std::string> path = std::exchange(dropped_, std::nullopt)) open(*path);
   if (const SandboxUi* ui = frame_->ui()) pacer_.set_max_fps(ui->max_fps());
   std::this_thread::sleep_for(pacer_.wait(FramePacer::Clock::now()));
   glfwPollEvents();

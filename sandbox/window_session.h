@@ -6,6 +6,7 @@
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -27,7 +28,8 @@ enum class FrameResult { rendered, minimized, swapchain_recreated, closed };
 
 // glfwInit must have succeeded before a session is created.
 // Esc closes the window, P writes shadowgraph-N.png in the working folder; the fly camera
-// (fly_camera.h) moves the view, and F frames the light selected in the panels, or the scene.
+// (fly_camera.h) moves the view, and F frames the light selected in the panels, or the scene. A
+// .gltf or .glb file dropped on the window (or opened from the Frame panel) replaces the scene.
 class WindowSession {
  public:
   explicit WindowSession(const Options& options);
@@ -51,10 +53,15 @@ class WindowSession {
 
  private:
   bool fit_to_window();
+  // Replaces the scene by the one at `path` (options_to_open); on a load error the scene stays
+  // and the error is printed.
+  void open(const std::string& path);
   FlyInput fly_input();
 
   GLFWwindow* window_ = nullptr;
+  Options options_;  // the current scene's
   SceneView scene_;
+  std::optional<std::string> dropped_;  // the last file dropped since the last frame
   std::unique_ptr<vk::VulkanContext> context_;
   std::unique_ptr<vk::Swapchain> swapchain_;
   std::unique_ptr<vk::FrameRing> frames_;

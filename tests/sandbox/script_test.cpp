@@ -24,9 +24,10 @@ TEST(Script, ParsesEveryCommandAndSkipsCommentsAndBlankLines) {
       "view shadows\n"
       "update on_demand\n"
       "priority -1.5\n"
-      "redraw_shadow\n",
+      "redraw_shadow\n"
+      "open models/a hall.glb\n",
       "test.txt");
-  ASSERT_EQ(steps.size(), 11u);
+  ASSERT_EQ(steps.size(), 12u);
   EXPECT_EQ(std::get<ScriptStep::Select>(steps[0].command).name, "spot east");
   EXPECT_EQ(steps[0].line, 2);
   EXPECT_EQ(std::get<ScriptStep::Algorithm>(steps[1].command).algorithm, scene::ShadowAlgorithm::pcss_noise);
@@ -40,6 +41,7 @@ TEST(Script, ParsesEveryCommandAndSkipsCommentsAndBlankLines) {
   EXPECT_EQ(std::get<ScriptStep::Update>(steps[8].command).update, scene::ShadowUpdate::on_demand);
   EXPECT_FLOAT_EQ(std::get<ScriptStep::Priority>(steps[9].command).tiers, -1.5f);
   EXPECT_TRUE(std::holds_alternative<ScriptStep::RedrawShadow>(steps[10].command));
+  EXPECT_EQ(std::get<ScriptStep::Open>(steps[11].command).path, "models/a hall.glb");
 }
 
 TEST(Script, ErrorsNameTheFileAndLine) {
@@ -66,6 +68,7 @@ TEST(Script, ErrorsNameTheFileAndLine) {
   EXPECT_EQ(error_of("priority nan"), "run.txt:1: priority takes a number of tiers, -4 to 4, got \"nan\"");
   EXPECT_EQ(error_of("redraw_shadow now"), "run.txt:1: redraw_shadow takes nothing, got \"now\"");
   EXPECT_EQ(error_of("view depth"), "run.txt:1: view takes lit or shadows, got \"depth\"");
+  EXPECT_EQ(error_of("open"), "run.txt:1: open takes a .gltf or .glb path or a built-in scene's name");
   EXPECT_NE(error_of("camera 1,2,3,1,2,3").find("run.txt:1: "), std::string::npos);
   EXPECT_THROW(load_script("/nonexistent/script.txt"), std::runtime_error);
 }
