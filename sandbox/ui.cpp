@@ -349,6 +349,8 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
     ImGui::SameLine();
   }
   ImGui::Checkbox("play", &playing_);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("glTF animations, orbits and bobs (--animate sets the start)");
   // One algorithm for every light listed, as --algorithm gives them at the start.
   if (enum_combo("algorithm of all", all_algorithm_)) {
     for (const auto& [entity, _] : listed_) {
@@ -357,8 +359,6 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
       });
     }
   }
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("glTF animations, orbits and bobs (--animate sets the start)");
   if (selected_ != ecs::null_entity && world.alive(selected_) && light_type(world, selected_) != 0) {
     ImGui::Separator();
     ImGui::TextUnformatted(type_names[light_type(world, selected_)]);
