@@ -20,6 +20,9 @@ const uint SHADOW_NOISE = 2u;
 const uint SHADOW_PCSS = 3u;
 const uint SHADOW_PCSS_NOISE = 4u;
 
+// info.y: the falloff in bits 0 to 7, the layers the light lights from this bit on.
+const uint LIGHT_MASK_SHIFT = 8u;
+
 const uint NO_SHADOW_MAP = 0xFFFFFFFFu;
 // info.w of a directional light whose maps are cascades (systems/shadows/cascades.h): each is a
 // record of its own after the frame's lights, holding its map in the shadow fields.
@@ -47,8 +50,8 @@ struct Light {
 };
 
 // Whether `light` lights a surface on `layers` (MeshInstance::light_layers).
-bool lights_layers(Light light, uint layers) { return ((light.info.y >> 8u) & layers) != 0u; }
+bool lights_layers(Light light, uint layers) { return ((light.info.y >> LIGHT_MASK_SHIFT) & layers) != 0u; }
 
-uint light_falloff(Light light) { return light.info.y & 0xFFu; }
+uint light_falloff(Light light) { return light.info.y & ((1u << LIGHT_MASK_SHIFT) - 1u); }
 
 #endif

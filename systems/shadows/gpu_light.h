@@ -21,8 +21,8 @@ namespace sg::shadows {
 enum class GpuLightType : std::uint32_t { point = 0, spot = 1, directional = 2, cylinder = 3 };
 
 // info.y's bits 8 to 15: the layers the light lights (ShadowSettings::light_mask); bits 0 to 7
-// its falloff.
-inline constexpr int light_mask_shift = 8;
+// its falloff (LIGHT_MASK_SHIFT in light_record.glsl).
+inline constexpr std::uint32_t light_mask_shift = 8;
 
 // info.w of a light that casts no shadow (NO_SHADOW_MAP in light_record.glsl).
 inline constexpr std::uint32_t no_shadow_map = 0xFFFFFFFFu;

@@ -125,6 +125,7 @@ TEST(LightRecordLayout, ShaderConstantsMatchTheCppValues) {
       {"SHADOW_PCSS_NOISE", value(ShadowAlgorithm::pcss_noise)},
       {"NO_SHADOW_MAP", value(no_shadow_map)},
       {"CASCADED_SHADOW_MAPS", value(cascaded_shadow_maps)},
+      {"LIGHT_MASK_SHIFT", value(light_mask_shift)},
   };
   EXPECT_EQ(parse_constants(read_text(SHADOWGRAPH_LIGHT_RECORD_GLSL)), cpp);
 }
