@@ -412,6 +412,26 @@ void SandboxUi::light_panel(scene::Scene& scene, const scene::CameraPose& pose, 
       changed |= enum_combo("update", shadow.update);
       changed |= ImGui::SliderFloat("priority", &shadow.priority, -scene::max_shadow_priority,
                                     scene::max_shadow_priority, "%.2f tiers");
+      // The kernel of the light's own algorithm.
+      const auto taps = [&](const char* label, uint32_t& value, uint32_t most) {
+        int shown = static_cast<int>(value);
+        if (!ImGui::SliderInt(label, &shown, 1, static_cast<int>(most))) return false;
+        value = static_cast<uint32_t>(shown);
+        return true;
+      };
+      scene::ShadowKernel& kernel = shadow.kernel;
+      if (shadow.algorithm == scene::ShadowAlgorithm::pcf) {
+        changed |= taps("pcf half width", kernel.pcf_half_width, scene::max_pcf_half_width);
+      } else if (shadow.algorithm == scene::ShadowAlgorithm::noise) {
+        int noise = kernel.noise_taps == 4 ? 0 : kernel.noise_taps == 8 ? 1 : 2;
+        if (ImGui::Combo("noise taps", &noise, "4\08\016\0")) {
+          kernel.noise_taps = 4u << noise;
+          changed = true;
+        }
+      } else if (shadow.algorithm != scene::ShadowAlgorithm::hard) {
+        changed |= taps("blocker taps", kernel.blocker_taps, scene::max_blocker_taps);
+        changed |= taps("filter taps", kernel.filter_taps, scene::max_filter_taps);
+      }
       changed |= ImGui::SliderFloat("contact shadow", &shadow.contact_length, 0.0f, 2.0f,
                                     shadow.contact_length > 0.0f ? "%.2f m" : "off");
       if (ImGui::IsItemHovered())

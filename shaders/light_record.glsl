@@ -23,6 +23,14 @@ const uint SHADOW_PCSS_NOISE = 4u;
 // info.y: the falloff in bits 0 to 7, the layers the light lights from this bit on.
 const uint LIGHT_MASK_SHIFT = 8u;
 
+// info.z: the algorithm in bits 0 to 7, then its kernel's sizes (sg::scene::ShadowKernel): the
+// pcf grid's half width (2 bits), the pcss blocker and filter taps less one (4 and 5 bits), log2
+// of the noise taps' stride through NOISE_SAMPLES (2 bits).
+const uint KERNEL_PCF_SHIFT = 8u;
+const uint KERNEL_BLOCKER_SHIFT = 10u;
+const uint KERNEL_FILTER_SHIFT = 14u;
+const uint KERNEL_NOISE_SHIFT = 19u;
+
 const uint NO_SHADOW_MAP = 0xFFFFFFFFu;
 // info.w of a directional light whose maps are cascades (systems/shadows/cascades.h): each is a
 // record of its own after the frame's lights, holding its map in the shadow fields.
@@ -38,7 +46,8 @@ struct Light {
   vec4 shadow_color_density;  // rgb: shadow color sc; a: density
   vec4 shadow_bias;           // x: constant bias b0, y: slope bias b1, z: pcf radius (texels), w: light size (world units)
   uvec4 info;                 // x: type (LIGHT_*); y: bits 0-7 falloff (FALLOFF_*), bits 8-15 the layers
-                              // it lights (ShadowSettings::light_mask); z: algorithm (SHADOW_*);
+                              // it lights (ShadowSettings::light_mask); z: bits 0-7 algorithm (SHADOW_*),
+                              // then its kernel's sizes (KERNEL_*);
                               // w: the shadow atlas layer of its map (or of all six cube faces), NO_SHADOW_MAP
                               // or CASCADED_SHADOW_MAPS
   vec4 shadow_rect;           // xy: 2D maps' uv offset in the layer; zw: uv scale of its (each face's) tile
@@ -51,6 +60,12 @@ struct Light {
 
 // Whether `light` lights a surface on `layers` (MeshInstance::light_layers).
 bool lights_layers(Light light, uint layers) { return ((light.info.y >> LIGHT_MASK_SHIFT) & layers) != 0u; }
+
+uint light_algorithm(Light light) { return light.info.z & ((1u << KERNEL_PCF_SHIFT) - 1u); }
+int pcf_half_width(Light light) { return int((light.info.z >> KERNEL_PCF_SHIFT) & 3u); }
+uint pcss_blocker_taps(Light light) { return ((light.info.z >> KERNEL_BLOCKER_SHIFT) & 15u) + 1u; }
+uint pcss_filter_taps(Light light) { return ((light.info.z >> KERNEL_FILTER_SHIFT) & 31u) + 1u; }
+uint noise_tap_stride(Light light) { return 1u << ((light.info.z >> KERNEL_NOISE_SHIFT) & 3u); }
 
 uint light_falloff(Light light) { return light.info.y & ((1u << LIGHT_MASK_SHIFT) - 1u); }
 

@@ -130,7 +130,7 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
 }
 
 vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
-  return shade_light_as(light, p, world_pos, light_shadow_kind(light), light.info.z, 0.0);
+  return shade_light_as(light, p, world_pos, light_shadow_kind(light), light_algorithm(light), 0.0);
 }
 
 // The sum over lights[0 .. light_count) at world_pos, without ambient.

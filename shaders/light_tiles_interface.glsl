@@ -66,7 +66,7 @@ uint group_of(uint light) {
   Light l = lights[light];
   uint kind = l.info.w == NO_SHADOW_MAP ? SHADOW_KIND_NONE
                                         : (l.info.x == LIGHT_POINT ? SHADOW_KIND_CUBE : SHADOW_KIND_MAP);
-  return light_group(kind, l.info.z);
+  return light_group(kind, light_algorithm(l));
 }
 
 // Widens a tile's depth bounds, [farthest, nearest] in reversed depths (camera_depth.glsl: the

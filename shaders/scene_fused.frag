@@ -36,7 +36,7 @@ vec3 shade_group(uint group, inout uint next, SurfacePoint p) {
     color += shade_light_as(light, p, in_world_position, kind, algorithm, 0.0);
     ++next;
     light = light_at(min(next, frame.counts.x - 1u));
-  } while (next < frame.counts.x && light_group(light_shadow_kind(light), light.info.z) == group);
+  } while (next < frame.counts.x && light_group(light_shadow_kind(light), light_algorithm(light)) == group);
   return color;
 }
 

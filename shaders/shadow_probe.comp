@@ -48,7 +48,7 @@ void main() {
       uint kind = light_shadow_kind(light);
       bool filtered = runs_own_filter(light, p, at, filter_floor);
       float n_dot_l = dot(p.normal, at.to_light);
-      float shade = light_shadow_as(light, position, p.normal, n_dot_l, kind, filtered ? light.info.z : SHADOW_HARD);
+      float shade = light_shadow_as(light, position, p.normal, n_dot_l, kind, filtered ? light_algorithm(light) : SHADOW_HARD);
       uint slot = atomicAdd(probe.kept, 1u);
       if (slot >= probe.capacity) continue;
       probe.pairs[3u * slot] = pixel_index;

@@ -14,11 +14,12 @@
 // (each fetch is a 2x2 bilinear PCF) and VK_COMPARE_OP_LESS_OR_EQUAL (1 = lit). Every fetch has an
 // explicit level of detail, as lights are evaluated in non-uniform control flow.
 //
-// Kernels: pcf a 3x3 grid (the source's), noise 16 Gaussian offsets (a stratified pattern turned
-// randomly per shadow-map texel, map_texel_seed), pcss 16 blocker-search and 32 filter samples of
-// a Poisson disk on 2D maps and the 20 directions of section 4 on cube maps, fewer where the
-// kernel spans a texel or two (search_taps_by_footprint); pcss_noise the same kernels rotated
-// randomly per shadow-map texel. Every kernel loop but the cube pcss filter's is marked [[unroll]]: left to
+// Kernels, at their default sizes (each light may choose others, light_record.glsl's KERNEL_*):
+// pcf a 3x3 grid (the source's), noise 16 Gaussian offsets (a stratified pattern turned randomly
+// per shadow-map texel, map_texel_seed), pcss 16 blocker-search and 32 filter samples of a Poisson
+// disk on 2D maps and the 20 directions of section 4 on cube maps, fewer where the kernel spans a
+// texel or two (search_taps_by_footprint); pcss_noise the same kernels rotated randomly per
+// shadow-map texel. Every kernel loop but the pcf grid's and the cube pcss filter's is marked [[unroll]]: left to
 // itself the compiler kept the 32-tap pcss filter a loop, whose Poisson disk lookups with the
 // loop counter llvmpipe does through memory, lane by lane (a fifth of the 2D pcss_noise pass);
 // unrolled, the table entries are constants. The cube pcss filter is a loop that lit areas skip,
@@ -33,7 +34,6 @@
 #include "light_groups.glsl"
 #include "lights_interface.glsl"
 
-const int PCF_HALF_WIDTH = 1;  // (2k + 1)^2 = 9 taps
 const uint NOISE_SAMPLES = 16u;
 const uint PCSS_BLOCKER_SAMPLES = 16u;
 const uint PCSS_FILTER_SAMPLES = 32u;
@@ -265,17 +265,18 @@ float compare_plane(Light light, MapPoint point, vec2 offset, float bias) {
   return compare_filtered(light, point.uv + offset, plane_reference(point, offset, bias) - point.texel_slack);
 }
 
-// 4.2: the hard test averaged over a (2k+1)^2 grid of offsets (x, y) * texel * pcfRadius.
+// 4.2: the hard test averaged over a (2k+1)^2 grid of offsets (x, y) * texel * pcfRadius, k the
+// light's (pcf_half_width, 1 to 3). Loops over the light's own bounds: every invocation of a pass
+// shades the same light at once, so a CPU driver runs exactly its taps, and the offsets come from
+// the counters, not from a table.
 float shadow_2d_pcf(Light light, MapPoint point, float bias) {
   float step_uv = light.shadow_bias.z * light.shadow_depth.z;
+  int k = pcf_half_width(light);
   float sum = 0.0;
-  [[unroll]] for (int y = -PCF_HALF_WIDTH; y <= PCF_HALF_WIDTH; ++y) {
-    [[unroll]] for (int x = -PCF_HALF_WIDTH; x <= PCF_HALF_WIDTH; ++x) {
-      sum += compare_plane(light, point, vec2(x, y) * step_uv, bias);
-    }
+  for (int y = -k; y <= k; ++y) {
+    for (int x = -k; x <= k; ++x) sum += compare_plane(light, point, vec2(x, y) * step_uv, bias);
   }
-  float taps = float((2 * PCF_HALF_WIDTH + 1) * (2 * PCF_HALF_WIDTH + 1));
-  return sum / taps;
+  return sum / float((2 * k + 1) * (2 * k + 1));
 }
 
 // The seed of the map texel holding `point` (map_texel_seed).
@@ -289,11 +290,14 @@ uvec3 map_point_seed(Light light, MapPoint point) {
 float shadow_2d_noise(Light light, MapPoint point, float bias) {
   float sigma_uv = light.shadow_bias.z * light.shadow_depth.z;
   mat2 rotation = random_rotation_2d(map_point_seed(light, point)) * sigma_uv;
+  // The light's taps: every stride-th of the radial strata, so fewer still span the distribution.
+  uint stride = noise_tap_stride(light);
   float sum = 0.0;
   [[unroll]] for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
+    if (i % stride != 0u) continue;
     sum += compare_plane(light, point, rotation * GAUSSIAN_DISK[i], bias);
   }
-  return sum / float(NOISE_SAMPLES);
+  return sum * float(stride) / float(NOISE_SAMPLES);
 }
 
 // 4.4 and 4.5. Radii are chosen in world units on the receiver's plane (facing the light) and
@@ -310,7 +314,7 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter) {
   mat2 rotation = jitter ? random_rotation_2d(map_point_seed(light, point)) : mat2(1.0);
 
   float search_uv = light_size * uv_per_unit;
-  uint search_taps = search_taps_by_footprint(search_uv / light.shadow_depth.z);
+  uint search_taps = min(search_taps_by_footprint(search_uv / light.shadow_depth.z), pcss_blocker_taps(light));
   float blocker_sum = 0.0;
   float blockers = 0.0;
   [[unroll]] for (uint i = 0u; i < PCSS_BLOCKER_SAMPLES; ++i) {
@@ -331,7 +335,8 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter) {
                     : pcss_penumbra_width(point.view_depth, blocker, light_size);
   float radius_uv = max(0.5 * width * uv_per_unit, light.shadow_depth.z);
   // Half the filter where it spans a texel or so (search_taps_by_footprint).
-  uint filter_taps = radius_uv <= 1.25 * light.shadow_depth.z ? PCSS_FILTER_SAMPLES / 2u : PCSS_FILTER_SAMPLES;
+  uint filter_taps = min(radius_uv <= 1.25 * light.shadow_depth.z ? PCSS_FILTER_SAMPLES / 2u : PCSS_FILTER_SAMPLES,
+                         pcss_filter_taps(light));
   float sum = 0.0;
   [[unroll]] for (uint i = 0u; i < PCSS_FILTER_SAMPLES; ++i) {
     if (i >= filter_taps) break;
@@ -477,7 +482,10 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter) {
   float texel_world = cube_texel_world_size(r.distance, light.shadow_depth.z);
 
   // Over two texels or less the eight corners read what the twenty do (search_taps_by_footprint).
-  uint search_taps = light_size <= 2.0 * texel_world ? CUBE_CORNER_COUNT : CUBE_OFFSET_COUNT;
+  // The light's own count: the corners alone below a full 2D search.
+  uint search_taps = light_size <= 2.0 * texel_world || pcss_blocker_taps(light) < PCSS_BLOCKER_SAMPLES
+                         ? CUBE_CORNER_COUNT
+                         : CUBE_OFFSET_COUNT;
   float blocker_sum = 0.0;
   float blockers = 0.0;
   [[unroll]] for (uint k = 0u; k < CUBE_OFFSET_COUNT; ++k) {
@@ -498,11 +506,12 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter) {
   float width = pcss_penumbra_width(r.distance, blocker, light_size);
   float radius = max(0.5 * width, texel_world);
   float sum = 0.0;
-  uint taps = blockers > 0.0 ? CUBE_OFFSET_COUNT : 0u;
+  uint kernel = pcss_filter_taps(light) < CUBE_OFFSET_COUNT ? CUBE_CORNER_COUNT : CUBE_OFFSET_COUNT;
+  uint taps = blockers > 0.0 ? kernel : 0u;
   [[dont_unroll]] for (uint k = 0u; k < taps; ++k) {
     sum += cube_sample(light, r, cube_pcss_offset(k, jitter, rotation) * radius);
   }
-  return sum / float(CUBE_OFFSET_COUNT);
+  return sum / float(kernel);
 }
 
 float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
@@ -534,11 +543,13 @@ float shadow_cube(Light light, vec3 world_pos, vec3 normal, float bias, uint alg
   if (algorithm == SHADOW_NOISE) {
     // GAUSSIAN_BALL turned by a random rotation per cube texel, as shadow_2d_noise does in 2D.
     vec4 rotation = random_rotation_3d(cube_point_seed(light, r));
+    uint stride = noise_tap_stride(light);
     float sum = 0.0;
     [[unroll]] for (uint i = 0u; i < NOISE_SAMPLES; ++i) {
+      if (i % stride != 0u) continue;
       sum += cube_sample(light, r, rotate(rotation, GAUSSIAN_BALL[i]) * radius);
     }
-    return sum / float(NOISE_SAMPLES);
+    return sum * float(stride) / float(NOISE_SAMPLES);
   }
   return shadow_cube_pcss(light, r, algorithm == SHADOW_PCSS_NOISE);
 }

@@ -83,6 +83,10 @@ Json light_json(const scene::Scene& scene, const std::string& name, ecs::Entity 
                      {"update", std::string(to_string(s.update))},
                      {"priority", s.priority},
                      {"contact_length", s.contact_length},
+                     {"pcf_half_width", s.kernel.pcf_half_width},
+                     {"blocker_taps", s.kernel.blocker_taps},
+                     {"filter_taps", s.kernel.filter_taps},
+                     {"noise_taps", s.kernel.noise_taps},
                      {"caster_mask", s.caster_mask},
                      {"light_mask", s.light_mask},
                      {"casts_shadow", s.casts_shadow}};
@@ -116,6 +120,15 @@ class Reader {
     if (!value.is_number() || !std::isfinite(value.get<double>()))
       fail(entry + "." + key, "is not a finite number");
     return value.get<float>();
+  }
+  // A whole number from 1 to `most`.
+  uint32_t count(const Json& object, const char* key, const std::string& entry, uint32_t fallback,
+                 uint32_t most) const {
+    if (!object.contains(key)) return fallback;
+    const Json& value = object.at(key);
+    if (!value.is_number_integer() || value.get<int64_t>() < 1 || value.get<int64_t>() > int64_t{most})
+      fail(entry + "." + key, "is not a whole number from 1 to " + std::to_string(most));
+    return static_cast<uint32_t>(value.get<int64_t>());
   }
   scene::LayerMask mask(const Json& object, const char* key, const std::string& entry,
                         scene::LayerMask fallback) const {
@@ -202,6 +215,13 @@ class Reader {
       if (light.shadow.contact_length < 0.0f || light.shadow.contact_length > scene::max_contact_length) {
         fail(where + ".contact_length", "is not within 0 .. 10");
       }
+      scene::ShadowKernel& kernel = light.shadow.kernel;
+      kernel.pcf_half_width =
+          count(s, "pcf_half_width", where, kernel.pcf_half_width, scene::max_pcf_half_width);
+      kernel.blocker_taps = count(s, "blocker_taps", where, kernel.blocker_taps, scene::max_blocker_taps);
+      kernel.filter_taps = count(s, "filter_taps", where, kernel.filter_taps, scene::max_filter_taps);
+      kernel.noise_taps = count(s, "noise_taps", where, kernel.noise_taps, scene::max_noise_taps);
+      if (!scene::valid_noise_taps(kernel.noise_taps)) fail(where + ".noise_taps", "is not 4, 8 or 16");
       light.shadow.caster_mask = mask(s, "caster_mask", where, light.shadow.caster_mask);
       light.shadow.light_mask = mask(s, "light_mask", where, light.shadow.light_mask);
       light.shadow.casts_shadow = s.value("casts_shadow", true);

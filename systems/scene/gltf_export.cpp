@@ -60,6 +60,10 @@ nlohmann::json shadow_json(const ShadowSettings& s) {
           {"update", std::string(to_string(s.update))},
           {"priority", s.priority},
           {"contact_length", s.contact_length},
+          {"pcf_half_width", s.kernel.pcf_half_width},
+          {"blocker_taps", s.kernel.blocker_taps},
+          {"filter_taps", s.kernel.filter_taps},
+          {"noise_taps", s.kernel.noise_taps},
           {"caster_mask", s.caster_mask},
           {"light_mask", s.light_mask},
           {"casts_shadow", s.casts_shadow}};

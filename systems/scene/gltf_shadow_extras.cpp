@@ -137,6 +137,21 @@ void read_keys(const ExtrasReader& reader, ShadowSettings& settings) {
   if (const auto cascades = reader.number("cascades", 1.0f, float(max_shadow_cascades))) {
     settings.cascades = static_cast<std::uint32_t>(std::lround(*cascades));
   }
+  const auto whole = [&](const char* key, std::uint32_t& target, std::uint32_t most) {
+    if (const auto value = reader.number(key, 1.0f, float(most)))
+      target = static_cast<std::uint32_t>(std::lround(*value));
+  };
+  whole("pcf_half_width", settings.kernel.pcf_half_width, max_pcf_half_width);
+  whole("blocker_taps", settings.kernel.blocker_taps, max_blocker_taps);
+  whole("filter_taps", settings.kernel.filter_taps, max_filter_taps);
+  std::uint32_t noise_taps = settings.kernel.noise_taps;
+  whole("noise_taps", noise_taps, max_noise_taps);
+  if (valid_noise_taps(noise_taps)) {
+    settings.kernel.noise_taps = noise_taps;
+  } else {
+    reader.report("noise_taps", std::to_string(noise_taps) + " is not 4, 8 or 16; using " +
+                                    std::to_string(settings.kernel.noise_taps));
+  }
   reader.read("priority", settings.priority, -max_shadow_priority, max_shadow_priority);
   reader.read("contact_length", settings.contact_length, 0.0f, max_contact_length);
   reader.read_enum("update", settings.update);

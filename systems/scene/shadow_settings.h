@@ -43,6 +43,30 @@ inline constexpr float max_contact_length = 10.0f;
 // The most cascaded maps a directional light may have (ShadowSettings::cascades).
 inline constexpr std::uint32_t max_shadow_cascades = 4;
 
+// The filter kernels' sizes a light may choose (docs/ALGORITHMS.md section 4). The defaults are
+// the kernels the algorithms were measured with (docs/QUALITY.md); the limits are those the
+// shaders unroll to.
+struct ShadowKernel {
+  // pcf on 2D maps: the tap grid's half width k, (2k + 1)^2 taps, 1 to max_pcf_half_width (cube
+  // maps keep section 4's 20 directions).
+  std::uint32_t pcf_half_width = 1;
+  // pcss and pcss_noise: the blocker search's taps (1 to 16) and the filter's (1 to 32), the first
+  // of a Poisson disk whose every prefix is well spread; fewer still where the kernel spans a
+  // texel or two. Cube maps search their 8 corner directions below 16 taps and filter with them
+  // below 20, else with all 20.
+  std::uint32_t blocker_taps = 16;
+  std::uint32_t filter_taps = 32;
+  // noise: 4, 8 or 16 Gaussian taps.
+  std::uint32_t noise_taps = 16;
+  friend bool operator==(const ShadowKernel&, const ShadowKernel&) = default;
+};
+inline constexpr std::uint32_t max_pcf_half_width = 3;
+inline constexpr std::uint32_t max_blocker_taps = 16;
+inline constexpr std::uint32_t max_filter_taps = 32;
+inline constexpr std::uint32_t max_noise_taps = 16;
+// The noise taps a light may take: max_noise_taps divided by 1, 2 or 4.
+constexpr bool valid_noise_taps(std::uint32_t taps) { return taps == 4 || taps == 8 || taps == 16; }
+
 // Biases are in normalized linear depth, so that one value means the same distance anywhere in
 // a map: view depth / far for spot maps, depth across near..far for orthographic maps
 // (directional, cylinder), distance / range for point lights (shaders/shadow_sampling.glsl).
@@ -63,6 +87,7 @@ struct ShadowSettings {
   // view that gains little from more (a camera far from the scene) uses fewer
   // (systems/shadows/cascades.h).
   std::uint32_t cascades = 4;
+  ShadowKernel kernel;
   ShadowUpdate update = ShadowUpdate::automatic;
   // Tiers added to log2 of the light's atlas importance (its size on screen), within
   // +-max_shadow_priority: +1 asks for a map twice as wide, and the memory and time budgets lower

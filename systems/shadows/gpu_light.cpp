@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "systems/shadows/gpu_light.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sg::shadows {
@@ -8,7 +9,15 @@ namespace {
 
 std::uint32_t to_gpu(GpuLightType type) { return static_cast<std::uint32_t>(type); }
 std::uint32_t to_gpu(scene::FalloffMode falloff) { return static_cast<std::uint32_t>(falloff); }
-std::uint32_t to_gpu(scene::ShadowAlgorithm algorithm) { return static_cast<std::uint32_t>(algorithm); }
+// info.z: the algorithm and its kernel's sizes, each held within its limits.
+std::uint32_t to_gpu(scene::ShadowAlgorithm algorithm, const scene::ShadowKernel& kernel) {
+  const std::uint32_t pcf = std::clamp(kernel.pcf_half_width, 1u, scene::max_pcf_half_width);
+  const std::uint32_t blocker = std::clamp(kernel.blocker_taps, 1u, scene::max_blocker_taps) - 1u;
+  const std::uint32_t filter = std::clamp(kernel.filter_taps, 1u, scene::max_filter_taps) - 1u;
+  const std::uint32_t noise_stride_log2 = kernel.noise_taps >= 16 ? 0u : kernel.noise_taps >= 8 ? 1u : 2u;
+  return static_cast<std::uint32_t>(algorithm) | pcf << kernel_pcf_shift | blocker << kernel_blocker_shift |
+         filter << kernel_filter_shift | noise_stride_log2 << kernel_noise_shift;
+}
 
 // The fields every light type fills the same way.
 GpuLight common_record(GpuLightType type, glm::vec3 color, float intensity,
@@ -19,7 +28,7 @@ GpuLight common_record(GpuLightType type, glm::vec3 color, float intensity,
   record.shadow_bias =
       glm::vec4(shadow.constant_bias, shadow.slope_bias, shadow.pcf_radius, shadow.light_size);
   record.info = glm::uvec4(to_gpu(type), std::uint32_t{shadow.light_mask} << light_mask_shift,
-                           to_gpu(shadow.algorithm), no_shadow_map);
+                           to_gpu(shadow.algorithm, shadow.kernel), no_shadow_map);
   record.direction_type.w = shadow.contact_length;
   return record;
 }

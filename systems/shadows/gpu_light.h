@@ -23,6 +23,13 @@ enum class GpuLightType : std::uint32_t { point = 0, spot = 1, directional = 2, 
 // info.y's bits 8 to 15: the layers the light lights (ShadowSettings::light_mask); bits 0 to 7
 // its falloff (LIGHT_MASK_SHIFT in light_record.glsl).
 inline constexpr std::uint32_t light_mask_shift = 8;
+// info.z: the algorithm in bits 0 to 7, then the kernel's sizes (ShadowKernel): the pcf half
+// width, the pcss blocker and filter taps less one, and log2 of the noise taps' stride through
+// the 16 (the KERNEL_* shifts of light_record.glsl).
+inline constexpr std::uint32_t kernel_pcf_shift = 8;       // 2 bits
+inline constexpr std::uint32_t kernel_blocker_shift = 10;  // 4 bits
+inline constexpr std::uint32_t kernel_filter_shift = 14;   // 5 bits
+inline constexpr std::uint32_t kernel_noise_shift = 19;    // 2 bits
 
 // info.w of a light that casts no shadow (NO_SHADOW_MAP in light_record.glsl).
 inline constexpr std::uint32_t no_shadow_map = 0xFFFFFFFFu;
@@ -58,7 +65,7 @@ static_assert(offsetof(GpuLight, shadow_matrix) == 144);
 
 // The shadow algorithm a record was packed with (info.z).
 inline scene::ShadowAlgorithm algorithm_of(const GpuLight& light) {
-  return static_cast<scene::ShadowAlgorithm>(light.info.z);
+  return static_cast<scene::ShadowAlgorithm>(light.info.z & ((1u << kernel_pcf_shift) - 1u));
 }
 
 // A light's record from its components: position and direction from its world transform

@@ -51,7 +51,7 @@ std::vector<FrameLight> frame_lights(const shadows::FrameLights& lights) {
     light.ray.light_size = gpu.shadow_bias.w;
     light.name = view_name.rfind("shadow ", 0) == 0 ? view_name.substr(7) : view_name;
     light.ray.name = light.name;
-    light.algorithm = static_cast<scene::ShadowAlgorithm>(gpu.info.z);
+    light.algorithm = shadows::algorithm_of(gpu);
     light.resolution = resolution;
     light.caster_mask = caster_mask;
   };

@@ -50,6 +50,7 @@ TEST(SceneSidecar, EditedLightsAndCameraComeBack) {
     edited.world.get_mut<scene::ShadowSettings>(spot).caster_mask = 0x81;
     edited.world.get_mut<scene::ShadowSettings>(spot).light_mask = 0;
     edited.world.get_mut<scene::ShadowSettings>(spot).contact_length = 0.25f;
+    edited.world.get_mut<scene::ShadowSettings>(spot).kernel = {3, 2, 9, 4};
     scene::add_light(edited, scene::PointLight{glm::vec3(1, 0, 0), 2.0f, 4.0f},
                      ecs::LocalTransform{{1, 2, 3}}, {}, "added");
     save_sidecar(path, edited, {{1, 5, 6}, {0, 0, 0}, {0, 1, 0}});
@@ -68,6 +69,7 @@ TEST(SceneSidecar, EditedLightsAndCameraComeBack) {
   EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(spot).caster_mask, 0x81);
   EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(spot).light_mask, 0);
   EXPECT_FLOAT_EQ(fresh.world.get<scene::ShadowSettings>(spot).contact_length, 0.25f);
+  EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(spot).kernel, (scene::ShadowKernel{3, 2, 9, 4}));
   EXPECT_EQ(named(fresh, "beam"), ecs::null_entity);
   EXPECT_EQ(fresh.world.get<scene::ShadowSettings>(named(fresh, "sun")).cascades, 2u);
   const ecs::Entity added = named(fresh, "added");
@@ -110,6 +112,10 @@ TEST(SceneSidecar, MalformedFilesAreRefusedLeavingTheSceneAsItWas) {
        "lights[0].shadow.caster_mask: is not a layer mask (an integer from 0 to 255)"},
       {R"({"name": "x", "type": "spot", "shadow": {"light_mask": -1}})",
        "lights[0].shadow.light_mask: is not"},
+      {R"({"name": "x", "type": "spot", "shadow": {"noise_taps": 6}})",
+       "lights[0].shadow.noise_taps: is not 4, 8 or 16"},
+      {R"({"name": "x", "type": "spot", "shadow": {"pcf_half_width": 4}})",
+       "lights[0].shadow.pcf_half_width: is not a whole number from 1 to 3"},
       {R"({"name": "x", "type": "spot", "shadow": {"contact_length": 11}})",
        "lights[0].shadow.contact_length: is not within 0 .. 10"},
   };

@@ -354,6 +354,37 @@ TEST_F(ShadowAlgorithms, FilteredAlgorithmsAreIntermediateOnlyNearTheEdge) {
   }
 }
 
+// Per-light kernel sizes (scene::ShadowKernel): a wider pcf grid spreads a coarse map's edge over
+// more pixels (as wide as 3 texels each side against 1); fewer noise or pcss taps change the
+// picture but keep the shadow where the reference puts it.
+TEST_F(ShadowAlgorithms, KernelSizesFollowTheLight) {
+  const auto measured = [&](ShadowScene s) {
+    const std::vector<std::optional<float>> shade_of_pixels = shade(s);
+    return std::pair{classify(shade_of_pixels, reference(s, 1)), shade_of_pixels};
+  };
+  ShadowScene pcf = with(LightKind::spot, scene::ShadowAlgorithm::pcf, 128);
+  const int narrow = measured(pcf).first.intermediate;
+  pcf.shadow.kernel.pcf_half_width = 3;
+  const int wide = measured(pcf).first.intermediate;
+  EXPECT_GT(wide, narrow * 3 / 2) << "pixels between lit and shadowed: " << narrow << " with 3x3, " << wide
+                                  << " with 7x7";
+  for (const scene::ShadowAlgorithm algorithm :
+       {scene::ShadowAlgorithm::noise, scene::ShadowAlgorithm::pcss}) {
+    SCOPED_TRACE(std::string(to_string(algorithm)));
+    ShadowScene s = with(LightKind::spot, algorithm, 256);
+    const auto full = measured(s).second;
+    s.shadow.kernel = {.pcf_half_width = 1, .blocker_taps = 4, .filter_taps = 4, .noise_taps = 4};
+    const auto [few, few_shade] = measured(s);
+    int differing = 0;
+    for (size_t i = 0; i < full.size(); ++i) {
+      differing += full[i] && few_shade[i] && std::abs(*full[i] - *few_shade[i]) > 0.02f;
+    }
+    EXPECT_GT(differing, 20) << "four taps are not the full kernel";
+    ASSERT_GT(few.shadowed, 100);
+    EXPECT_LE(few.misclassified, few.measured / 50) << few.misclassified << " of " << few.measured;
+  }
+}
+
 TEST_F(ShadowAlgorithms, PcssPenumbraWidensWithTheBlockerDistance) {
   int penumbra[2] = {0, 0};
   const float heights[2] = {0.3f, 2.5f};

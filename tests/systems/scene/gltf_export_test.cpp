@@ -78,6 +78,7 @@ TEST(GltfExport, TheDefaultSceneComesBackWithItsLightsDrawablesAndView) {
   edited.shadow_color = {0.2f, 0.1f, 0.0f};
   edited.caster_mask = 0x0C;
   edited.contact_length = 0.4f;
+  edited.kernel = {2, 6, 20, 8};
   edited.light_mask = 0x03;
   ecs::Entity drawable = ecs::null_entity;
   scene.world.query<const MeshInstance>().for_each([&](ecs::Entity e, const MeshInstance&) { drawable = e; });
@@ -120,6 +121,7 @@ TEST(GltfExport, TheDefaultSceneComesBackWithItsLightsDrawablesAndView) {
       EXPECT_EQ(other.shadow.resolution, facts.shadow.resolution) << file << ": " << name;
       EXPECT_EQ(other.shadow.caster_mask, facts.shadow.caster_mask) << file << ": " << name;
       EXPECT_FLOAT_EQ(other.shadow.contact_length, facts.shadow.contact_length) << file << ": " << name;
+      EXPECT_EQ(other.shadow.kernel, facts.shadow.kernel) << file << ": " << name;
       EXPECT_EQ(other.shadow.light_mask, facts.shadow.light_mask) << file << ": " << name;
     }
 

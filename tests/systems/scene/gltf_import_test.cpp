@@ -342,6 +342,10 @@ TEST(GltfImport, EachLightTypeWithShadowExtras) {
                     {"update", "on_demand"},
                     {"priority", -1.5},
                     {"contact_length", 0.3},
+                    {"pcf_half_width", 2},
+                    {"blocker_taps", 8},
+                    {"filter_taps", 12},
+                    {"noise_taps", 8},
                     {"caster_mask", 5},
                     {"light_mask", 2}}}});
   file.add_light(
@@ -383,6 +387,7 @@ TEST(GltfImport, EachLightTypeWithShadowExtras) {
         EXPECT_EQ(settings.update, ShadowUpdate::on_demand);
         EXPECT_FLOAT_EQ(settings.priority, -1.5f);
         EXPECT_FLOAT_EQ(settings.contact_length, 0.3f);
+        EXPECT_EQ(settings.kernel, (ShadowKernel{2, 8, 12, 8}));
         EXPECT_EQ(settings.caster_mask, 5);
         EXPECT_EQ(settings.light_mask, 2);
         EXPECT_NEAR(light_direction(world).y, -1.0f, 1e-5f);
@@ -440,6 +445,8 @@ TEST(GltfImport, OddLightValuesAreClampedWithWarnings) {
                     {"cascades", 9},
                     {"update", "often"},
                     {"priority", 7},
+                    {"noise_taps", 5},
+                    {"filter_taps", 40},
                     {"caster_mask", 256},
                     {"light_mask", "all"}}}});
   file.add_node({{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
@@ -456,6 +463,9 @@ TEST(GltfImport, OddLightValuesAreClampedWithWarnings) {
   EXPECT_EQ(shadows[0].update, ShadowUpdate::automatic);
   EXPECT_FLOAT_EQ(shadows[0].priority, max_shadow_priority);
   EXPECT_TRUE(has_warning(scene, "extras.update \"often\" is not one of"));
+  EXPECT_EQ(shadows[0].kernel.noise_taps, 16u);
+  EXPECT_EQ(shadows[0].kernel.filter_taps, max_filter_taps);
+  EXPECT_TRUE(has_warning(scene, "extras.noise_taps 5 is not 4, 8 or 16; using 16"));
   EXPECT_EQ(shadows[0].caster_mask, all_layers);
   EXPECT_EQ(shadows[0].light_mask, all_layers);
   EXPECT_TRUE(has_warning(scene, "extras.caster_mask 256 is not a layer mask (an integer from 0 to 255)"));

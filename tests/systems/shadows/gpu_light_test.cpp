@@ -42,7 +42,10 @@ TEST(GpuLight, PointLightRecord) {
   const GpuLight record = pack_light(light, placed({1, 2, 3}, {0, -1, 0}), test_shadow());
   EXPECT_EQ(record.position_range, glm::vec4(1, 2, 3, 7));
   EXPECT_EQ(record.color_intensity, glm::vec4(1.0f, 0.5f, 0.25f, 3.0f));
-  EXPECT_EQ(record.info, glm::uvec4(0u, 1u | 0xFFu << light_mask_shift, 4u, no_shadow_map));
+  EXPECT_EQ(record.info.x, 0u);
+  EXPECT_EQ(record.info.y, 1u | 0xFFu << light_mask_shift);
+  EXPECT_EQ(algorithm_of(record), scene::ShadowAlgorithm::pcss_noise);
+  EXPECT_EQ(record.info.w, no_shadow_map);
   EXPECT_EQ(record.shadow_bias, glm::vec4(0.001f, 0.02f, 2.5f, 0.4f));
   EXPECT_EQ(record.shadow_color_density, glm::vec4(0.1f, 0.2f, 0.3f, 0.5f));
 }
@@ -58,7 +61,25 @@ TEST(GpuLight, SpotLightRecord) {
   expect_near(glm::vec3(record.direction_type), direction);
   EXPECT_NEAR(record.shape.x, std::cos(glm::radians(15.0f)), 1e-6f);
   EXPECT_NEAR(record.shape.y, std::cos(glm::radians(30.0f)), 1e-6f);
-  EXPECT_EQ(record.info, glm::uvec4(1u, 0u | 0xFFu << light_mask_shift, 4u, no_shadow_map));
+  EXPECT_EQ(record.info.x, 1u);
+  EXPECT_EQ(record.info.y, 0xFFu << light_mask_shift);
+  EXPECT_EQ(algorithm_of(record), scene::ShadowAlgorithm::pcss_noise);
+  EXPECT_EQ(record.info.w, no_shadow_map);
+}
+
+// A light's kernel sizes ride above its algorithm in info.z, held within their limits.
+TEST(GpuLight, KernelSizesRideAboveTheAlgorithm) {
+  scene::ShadowSettings shadow = test_shadow();
+  shadow.algorithm = scene::ShadowAlgorithm::pcss_noise;
+  shadow.kernel = {.pcf_half_width = 3, .blocker_taps = 5, .filter_taps = 32, .noise_taps = 8};
+  const GpuLight light = pack_light(scene::SpotLight{}, placed({0, 4, 0}, {0, -1, 0}), shadow);
+  EXPECT_EQ(algorithm_of(light), scene::ShadowAlgorithm::pcss_noise);
+  EXPECT_EQ(light.info.z, 4u | 3u << kernel_pcf_shift | 4u << kernel_blocker_shift |
+                              31u << kernel_filter_shift | 1u << kernel_noise_shift);
+  shadow.kernel = {.pcf_half_width = 9, .blocker_taps = 0, .filter_taps = 99, .noise_taps = 4};
+  const GpuLight held = pack_light(scene::SpotLight{}, placed({0, 4, 0}, {0, -1, 0}), shadow);
+  EXPECT_EQ(held.info.z, 4u | 3u << kernel_pcf_shift | 0u << kernel_blocker_shift |
+                             31u << kernel_filter_shift | 2u << kernel_noise_shift);
 }
 
 // The light mask shares info.y with the falloff, and the contact length has direction_type.w.

@@ -126,6 +126,10 @@ TEST(LightRecordLayout, ShaderConstantsMatchTheCppValues) {
       {"NO_SHADOW_MAP", value(no_shadow_map)},
       {"CASCADED_SHADOW_MAPS", value(cascaded_shadow_maps)},
       {"LIGHT_MASK_SHIFT", value(light_mask_shift)},
+      {"KERNEL_PCF_SHIFT", value(kernel_pcf_shift)},
+      {"KERNEL_BLOCKER_SHIFT", value(kernel_blocker_shift)},
+      {"KERNEL_FILTER_SHIFT", value(kernel_filter_shift)},
+      {"KERNEL_NOISE_SHIFT", value(kernel_noise_shift)},
   };
   EXPECT_EQ(parse_constants(read_text(SHADOWGRAPH_LIGHT_RECORD_GLSL)), cpp);
 }
