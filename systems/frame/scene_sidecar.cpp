@@ -5,6 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include "ecs/query.h"
 #include "ecs/transform.h"
 #include "ecs/transform_system.h"
+#include "systems/scene/gltf_shadow_extras.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/scene_builder.h"
 #include "systems/scene/shadow_settings.h"
@@ -71,25 +73,11 @@ Json light_json(const scene::Scene& scene, const std::string& name, ecs::Entity 
                   {"outer_radius", beam->outer_radius}});
   }
   const scene::ShadowSettings& s = world.get<scene::ShadowSettings>(entity);
-  light["shadow"] = {{"algorithm", std::string(to_string(s.algorithm))},
-                     {"constant_bias", s.constant_bias},
-                     {"slope_bias", s.slope_bias},
-                     {"pcf_radius", s.pcf_radius},
-                     {"light_size", s.light_size},
-                     {"density", s.density},
-                     {"shadow_color", vec(s.shadow_color)},
-                     {"resolution", s.resolution},
-                     {"cascades", s.cascades},
-                     {"update", std::string(to_string(s.update))},
-                     {"priority", s.priority},
-                     {"contact_length", s.contact_length},
-                     {"pcf_half_width", s.kernel.pcf_half_width},
-                     {"blocker_taps", s.kernel.blocker_taps},
-                     {"filter_taps", s.kernel.filter_taps},
-                     {"noise_taps", s.kernel.noise_taps},
-                     {"caster_mask", s.caster_mask},
-                     {"light_mask", s.light_mask},
-                     {"casts_shadow", s.casts_shadow}};
+  // The extras' keys, but for the constant bias, which the sidecar's first form named in full.
+  Json shadow = scene::shadow_extras(s);
+  shadow["constant_bias"] = shadow["bias"];
+  shadow.erase("bias");
+  light["shadow"] = std::move(shadow);
   return light;
 }
 

@@ -46,29 +46,6 @@ tinygltf::Value to_value(const nlohmann::json& json) {
 
 nlohmann::json vec3(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
-// A light's shadow settings under the keys gltf_shadow_extras.h reads.
-nlohmann::json shadow_json(const ShadowSettings& s) {
-  return {{"algorithm", std::string(to_string(s.algorithm))},
-          {"bias", s.constant_bias},
-          {"slope_bias", s.slope_bias},
-          {"pcf_radius", s.pcf_radius},
-          {"light_size", s.light_size},
-          {"density", s.density},
-          {"shadow_color", vec3(s.shadow_color)},
-          {"resolution", s.resolution},
-          {"cascades", s.cascades},
-          {"update", std::string(to_string(s.update))},
-          {"priority", s.priority},
-          {"contact_length", s.contact_length},
-          {"pcf_half_width", s.kernel.pcf_half_width},
-          {"blocker_taps", s.kernel.blocker_taps},
-          {"filter_taps", s.kernel.filter_taps},
-          {"noise_taps", s.kernel.noise_taps},
-          {"caster_mask", s.caster_mask},
-          {"light_mask", s.light_mask},
-          {"casts_shadow", s.casts_shadow}};
-}
-
 tinygltf::Camera perspective(const Camera& lens) {
   tinygltf::Camera camera;
   camera.type = "perspective";
@@ -163,7 +140,7 @@ class Exporter {
     }
     if (const ShadowSettings* shadow = world.try_get<ShadowSettings>(entity)) {
       if (const auto* beam = world.try_get<CylinderLight>(entity)) {
-        nlohmann::json cylinder = shadow_json(*shadow);
+        nlohmann::json cylinder = shadow_extras(*shadow);
         cylinder.update({{"color", vec3(beam->color)},
                          {"intensity", beam->intensity},
                          {"inner_radius", beam->inner_radius},
@@ -186,7 +163,7 @@ class Exporter {
 
   std::optional<nlohmann::json> punctual_light(ecs::Entity entity, const ShadowSettings& shadow) const {
     const ecs::World& world = scene_.world;
-    nlohmann::json extras = shadow_json(shadow);
+    nlohmann::json extras = shadow_extras(shadow);
     nlohmann::json light;
     if (const auto* point = world.try_get<PointLight>(entity)) {
       light = {{"type", "point"},

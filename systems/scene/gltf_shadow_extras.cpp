@@ -191,6 +191,28 @@ std::optional<bool> read_shadow_flag(const nlohmann::json& json, ShadowFlag flag
                                                                                         : "receiveShadows");
 }
 
+nlohmann::json shadow_extras(const ShadowSettings& s) {
+  return {{"algorithm", std::string(to_string(s.algorithm))},
+          {"bias", s.constant_bias},
+          {"slope_bias", s.slope_bias},
+          {"pcf_radius", s.pcf_radius},
+          {"light_size", s.light_size},
+          {"density", s.density},
+          {"shadow_color", {s.shadow_color.r, s.shadow_color.g, s.shadow_color.b}},
+          {"resolution", s.resolution},
+          {"cascades", s.cascades},
+          {"update", std::string(to_string(s.update))},
+          {"priority", s.priority},
+          {"contact_length", s.contact_length},
+          {"pcf_half_width", s.kernel.pcf_half_width},
+          {"blocker_taps", s.kernel.blocker_taps},
+          {"filter_taps", s.kernel.filter_taps},
+          {"noise_taps", s.kernel.noise_taps},
+          {"caster_mask", s.caster_mask},
+          {"light_mask", s.light_mask},
+          {"casts_shadow", s.casts_shadow}};
+}
+
 std::optional<LayerMask> read_mesh_layers(const nlohmann::json& json, MeshLayers which,
                                           const std::string& object, Scene& scene) {
   const auto readers = extras_readers(json, object, scene);

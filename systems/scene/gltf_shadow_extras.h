@@ -29,6 +29,10 @@ enum class ShadowFlag { casts, receives };
 std::optional<bool> read_shadow_flag(const nlohmann::json& json, ShadowFlag flag, const std::string& object,
                                      Scene& scene);
 
+// `settings` under the keys read_light_shadow reads (export_gltf writes them so; the sidecar too,
+// with constant_bias for bias).
+nlohmann::json shadow_extras(const ShadowSettings& settings);
+
 // A node's or mesh's layers (MeshInstance::light_layers or ::shadow_layers): the integer 0 to
 // 255 under `light_layers` or `shadow_layers` in its extras (flat or in extras.shadowgraph, whose
 // keys win); nullopt when it has none, or not such an integer (reported, naming `object`).
