@@ -109,22 +109,24 @@ class Reader {
       fail(entry + "." + key, "is not a finite number");
     return value.get<float>();
   }
-  // A whole number from 1 to `most`.
-  uint32_t count(const Json& object, const char* key, const std::string& entry, uint32_t fallback,
-                 uint32_t most) const {
+  // An integer from `low` to `high`, refused as not `what`.
+  template <class T>
+  T integer(const Json& object, const char* key, const std::string& entry, T fallback, int64_t low,
+            int64_t high, const std::string& what) const {
     if (!object.contains(key)) return fallback;
     const Json& value = object.at(key);
-    if (!value.is_number_integer() || value.get<int64_t>() < 1 || value.get<int64_t>() > int64_t{most})
-      fail(entry + "." + key, "is not a whole number from 1 to " + std::to_string(most));
-    return static_cast<uint32_t>(value.get<int64_t>());
+    if (!value.is_number_integer() || value.get<int64_t>() < low || value.get<int64_t>() > high)
+      fail(entry + "." + key, "is not " + what);
+    return static_cast<T>(value.get<int64_t>());
+  }
+  uint32_t count(const Json& object, const char* key, const std::string& entry, uint32_t fallback,
+                 uint32_t most) const {
+    return integer(object, key, entry, fallback, 1, most, "a whole number from 1 to " + std::to_string(most));
   }
   scene::LayerMask mask(const Json& object, const char* key, const std::string& entry,
                         scene::LayerMask fallback) const {
-    if (!object.contains(key)) return fallback;
-    const Json& value = object.at(key);
-    if (!value.is_number_integer() || value.get<int64_t>() < 0 || value.get<int64_t>() > scene::all_layers)
-      fail(entry + "." + key, "is not a layer mask (an integer from 0 to 255)");
-    return static_cast<scene::LayerMask>(value.get<int64_t>());
+    return integer(object, key, entry, fallback, 0, scene::all_layers,
+                   "a layer mask (an integer from 0 to 255)");
   }
   template <NamedEnum E>
   E name(const Json& object, const char* key, const std::string& entry, E fallback) const {

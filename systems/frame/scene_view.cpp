@@ -96,21 +96,19 @@ SceneView load_scene_view(const FrameSettings& settings, float aspect) {
     std::printf("shadowgraph: lights%s from %s (--sidecar off ignores it)\n", named ? "" : " and camera",
                 sidecar.string().c_str());
   }
-  // --algorithm sets every light's algorithm once, here: the panels and scripts may change it
-  // afterwards, and a per-frame override would undo their edits.
-  if (settings.algorithm) {
-    result.scene.world.query<scene::ShadowSettings>().for_each(
-        [&](scene::ShadowSettings& shadow) { shadow.algorithm = *settings.algorithm; });
+  // --algorithm and --contact-shadows set every light's once, here: the panels and scripts may
+  // change them afterwards, and a per-frame override would undo their edits.
+  if (settings.algorithm || settings.contact_length) {
+    result.scene.world.query<scene::ShadowSettings>().for_each([&](scene::ShadowSettings& shadow) {
+      shadow.algorithm = settings.algorithm.value_or(shadow.algorithm);
+      shadow.contact_length = settings.contact_length.value_or(shadow.contact_length);
+    });
   }
   if (settings.cascades) {
     result.scene.world.query<const scene::DirectionalLight, scene::ShadowSettings>().for_each(
         [&](const scene::DirectionalLight&, scene::ShadowSettings& shadow) {
           shadow.cascades = *settings.cascades;
         });
-  }
-  if (settings.contact_length) {
-    result.scene.world.query<scene::ShadowSettings>().for_each(
-        [&](scene::ShadowSettings& shadow) { shadow.contact_length = *settings.contact_length; });
   }
   return result;
 }

@@ -26,10 +26,10 @@ constexpr EnumNames<LightingPath, 4> enum_names(LightingPath) {
 
 // automatic's choice on a CPU device for a frame of `lights` lights: fused while its cost, every
 // light at every pixel, stays below deferred's, whose passes cost more but a pixel only its
-// tile's lights; deferred where a light has contact shadows, which only it draws. On lavapipe at 1280x720
-// (2026-11-30), stress scene of 4.8k triangles with the sun, maps cached: 3 lights fused 23.4 against
-// deferred 41.9 ms a frame, 4 lights 42.5 against 50.1, 5 lights 70.6 against 53.9; the default scene (6
-// lights) about 250 against 200 (docs/PERFORMANCE.md).
+// tile's lights; deferred where a light has contact shadows, which only it draws. On lavapipe at
+// 1280x720 (2026-11-30), stress scene of 4.8k triangles with the sun, maps cached: 3 lights fused
+// 23.4 against deferred 41.9 ms a frame, 4 lights 42.5 against 50.1, 5 lights 70.6 against 53.9;
+// the default scene (6 lights) about 250 against 200 (docs/PERFORMANCE.md).
 constexpr LightingPath cpu_lighting_for(uint32_t lights, uint32_t contact_lights) {
   return lights <= 4 && contact_lights == 0 ? LightingPath::fused : LightingPath::deferred;
 }

@@ -56,6 +56,12 @@ struct ExtrasReader {
     if (const auto value = number(key, low, high)) target = *value;
   }
 
+  // A whole number: number() rounded.
+  void read(const char* key, std::uint32_t& target, std::uint32_t low, std::uint32_t high) const {
+    if (const auto value = number(key, float(low), float(high)))
+      target = static_cast<std::uint32_t>(std::lround(*value));
+  }
+
   // One of E's names; the default kept otherwise.
   template <NamedEnum E>
   void read_enum(const char* key, E& target) const {
@@ -131,21 +137,13 @@ void read_keys(const ExtrasReader& reader, ShadowSettings& settings) {
   reader.read("pcf_radius", settings.pcf_radius, 0.0f, 32.0f);
   reader.read("light_size", settings.light_size, 0.0f, unbounded);
   reader.read("density", settings.density, 0.0f, 1.0f);
-  if (const auto resolution = reader.number("resolution", 16.0f, 16384.0f)) {
-    settings.resolution = static_cast<std::uint32_t>(std::lround(*resolution));
-  }
-  if (const auto cascades = reader.number("cascades", 1.0f, float(max_shadow_cascades))) {
-    settings.cascades = static_cast<std::uint32_t>(std::lround(*cascades));
-  }
-  const auto whole = [&](const char* key, std::uint32_t& target, std::uint32_t most) {
-    if (const auto value = reader.number(key, 1.0f, float(most)))
-      target = static_cast<std::uint32_t>(std::lround(*value));
-  };
-  whole("pcf_half_width", settings.kernel.pcf_half_width, max_pcf_half_width);
-  whole("blocker_taps", settings.kernel.blocker_taps, max_blocker_taps);
-  whole("filter_taps", settings.kernel.filter_taps, max_filter_taps);
+  reader.read("resolution", settings.resolution, 16, 16384);
+  reader.read("cascades", settings.cascades, 1, max_shadow_cascades);
+  reader.read("pcf_half_width", settings.kernel.pcf_half_width, 1, max_pcf_half_width);
+  reader.read("blocker_taps", settings.kernel.blocker_taps, 1, max_blocker_taps);
+  reader.read("filter_taps", settings.kernel.filter_taps, 1, max_filter_taps);
   std::uint32_t noise_taps = settings.kernel.noise_taps;
-  whole("noise_taps", noise_taps, max_noise_taps);
+  reader.read("noise_taps", noise_taps, 1, max_noise_taps);
   if (valid_noise_taps(noise_taps)) {
     settings.kernel.noise_taps = noise_taps;
   } else {

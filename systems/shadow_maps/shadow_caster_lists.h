@@ -41,9 +41,8 @@ class ShadowCasterLists {
   void begin_frame(const GpuScene& scene, float typical_reach);
   // The casters of `scene` on a layer of `caster_mask` whose bounds meet the sphere `reach` (xyz
   // centre, w radius; a negative radius keeps every one), each drawn `copies` times (6 for
-  // layered cubes). A
-  // transparent caster whose bounds hold the centre, the light, is left out: a light inside a
-  // glass bulb or a marker is not shut in by it.
+  // layered cubes). A transparent caster whose bounds hold the centre, the light, is left out: a
+  // light inside a glass bulb or a marker is not shut in by it.
   CasterView add_view(const GpuScene& scene, const glm::vec4& reach, scene::LayerMask caster_mask,
                       uint32_t copies);
   // Writes the frame's ids and commands to the slot's buffers (after the last add_view).
