@@ -81,6 +81,12 @@ class ComponentPool final : public SparseSet {
   void swap_components(std::uint32_t a, std::uint32_t b) override {
     std::swap(components_[a], components_[b]);
   }
+  void permute_components(std::span<const std::uint32_t> old_slots) override {
+    LargeArray<T> sorted;
+    sorted.reserve(old_slots.size());
+    for (const std::uint32_t slot : old_slots) sorted.push_back(std::move(components_[slot]));
+    components_.swap(sorted);
+  }
 
   LargeArray<T> components_;
 };

@@ -40,11 +40,41 @@ void SparseSet::swap_slots(std::uint32_t a, std::uint32_t b) {
   std::swap(ticks_[a], ticks_[b]);
   sparse_[dense_[a].index] = a;
   sparse_[dense_[b].index] = b;
+  in_entity_order_ = false;
   // Each tick moved to a slot whose summaries must stay upper bounds.
   for (const std::uint32_t slot : {a, b}) {
     block_ticks_[slot / slots_per_block] = std::max(block_ticks_[slot / slots_per_block], ticks_[slot]);
     group_ticks_[slot / slots_per_group] = std::max(group_ticks_[slot / slots_per_group], ticks_[slot]);
   }
+  ++layout_version_;
+}
+
+void SparseSet::sort_by_entity() {
+  if (in_entity_order_) return;
+  // The sparse array lists the members by index already: one pass over it is the sorted order.
+  std::vector<std::uint32_t> old_slots;
+  old_slots.reserve(dense_.size());
+  for (const std::uint32_t slot : sparse_) {
+    if (slot != npos) old_slots.push_back(slot);
+  }
+  permute_components(old_slots);
+  LargeArray<Entity> dense(dense_.size());
+  LargeArray<Tick> ticks(ticks_.size());
+  for (std::uint32_t slot = 0; slot < old_slots.size(); ++slot) {
+    dense[slot] = dense_[old_slots[slot]];
+    ticks[slot] = ticks_[old_slots[slot]];
+    sparse_[dense[slot].index] = slot;
+  }
+  dense_.swap(dense);
+  ticks_.swap(ticks);
+  // Every tick moved, so the summaries are rebuilt exactly rather than raised.
+  std::fill(block_ticks_.begin(), block_ticks_.end(), Tick{0});
+  std::fill(group_ticks_.begin(), group_ticks_.end(), Tick{0});
+  for (std::uint32_t slot = 0; slot < ticks_.size(); ++slot) {
+    block_ticks_[slot / slots_per_block] = std::max(block_ticks_[slot / slots_per_block], ticks_[slot]);
+    group_ticks_[slot / slots_per_group] = std::max(group_ticks_[slot / slots_per_group], ticks_[slot]);
+  }
+  in_entity_order_ = true;
   ++layout_version_;
 }
 
@@ -103,6 +133,7 @@ std::uint32_t SparseSet::insert(Entity entity, Tick now) {
   if (entity.index >= sparse_.size()) sparse_.resize(entity.index + std::size_t{1}, npos);
   const auto slot = static_cast<std::uint32_t>(dense_.size());
   sparse_[entity.index] = slot;
+  in_entity_order_ = in_entity_order_ && (dense_.empty() || dense_.back().index < entity.index);
   dense_.push_back(entity);
   ticks_.push_back(now);
   if (slot % slots_per_block == 0 && slot / slots_per_block == block_ticks_.size()) block_ticks_.push_back(0);
@@ -119,6 +150,9 @@ void SparseSet::insert_many(std::span<const Entity> entities, Tick now) {
   const std::size_t first = dense_.size();
   const std::size_t size = first + entities.size();
   dense_.insert(dense_.end(), entities.begin(), entities.end());
+  for (std::size_t slot = std::max<std::size_t>(first, 1); slot < size && in_entity_order_; ++slot) {
+    in_entity_order_ = dense_[slot - 1].index < dense_[slot].index;
+  }
   ticks_.resize(size, now);
   block_ticks_.resize(std::max(block_ticks_.size(), (size + slots_per_block - 1) / slots_per_block));
   group_ticks_.resize(std::max(group_ticks_.size(), (size + slots_per_group - 1) / slots_per_group));
@@ -148,6 +182,7 @@ std::vector<bool> SparseSet::erase_many(std::span<const Entity> entities, Tick n
   if (doomed_count == dense_.size()) {  // all of them, as when a scene is unloaded: nothing to keep
     dense_.clear();
     ticks_.clear();
+    in_entity_order_ = true;
     ++layout_version_;
     return doomed;
   }
@@ -171,6 +206,7 @@ std::vector<bool> SparseSet::erase_many(std::span<const Entity> entities, Tick n
 void SparseSet::erase(std::uint32_t slot, Tick now) {
   const Entity removed = dense_[slot];
   const Entity last = dense_.back();
+  in_entity_order_ = in_entity_order_ && slot + std::size_t{1} == dense_.size();
   dense_[slot] = last;
   ticks_[slot] = ticks_.back();
   // The moved tick may be older than the hole's block: summaries only need to be upper bounds.

@@ -126,6 +126,14 @@ class SparseSet {
   std::span<const Removal> removed_since(Tick since) const;
   void forget_removals_before(Tick tick);
 
+  // True while the entities sit in ascending index order, as creating them and adding their
+  // components in one pass leaves them: pools in that order that hold the same entities share a
+  // layout. Appending a higher index keeps it; swap-removing before the last slot breaks it.
+  bool in_entity_order() const { return in_entity_order_; }
+  // Reorders the pool into ascending entity index order, keeping each component's change tick;
+  // O(size + highest index). A structural change: references and queries are invalidated.
+  void sort_by_entity();
+
   // The owning group that keeps this pool's order (World::group), or null.
   OwningGroup* owner() const { return owner_; }
   void set_owner(OwningGroup* group) { owner_ = group; }
@@ -156,6 +164,8 @@ class SparseSet {
   void erase(std::uint32_t slot, Tick now);
   // The typed pool's half of swap_slots.
   virtual void swap_components(std::uint32_t a, std::uint32_t b) = 0;
+  // The typed pool's half of sort_by_entity: new slot i takes the component of `old_slots[i]`.
+  virtual void permute_components(std::span<const std::uint32_t> old_slots) = 0;
 
  private:
   // Sets a summary tick to `now`, storing only if it differs: after the first write of a tick,
@@ -180,6 +190,7 @@ class SparseSet {
   LargeArray<Tick> group_ticks_;      // newest tick among slots_per_group slots
   Tick bulk_tick_ = 0;                // last mark_all_changed; 0 if never
   bool keeps_removals_ = false;
+  bool in_entity_order_ = true;
   OwningGroup* owner_ = nullptr;
   std::vector<Removal> removals_;     // ascending ticks; empty unless keeps_removals_
   std::uint64_t layout_version_ = 0;  // bumped by every insert and erase

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "ecs/world.h"
 
+#include <algorithm>
+
 namespace sg::ecs {
 
 bool World::destroy(Entity entity) {
@@ -18,6 +20,20 @@ std::size_t World::destroy_many(std::span<const Entity> entities) {
     if (set != nullptr) set->remove_many(entities, tick_);
   }
   return entities_.destroy_many(entities);
+}
+
+Tick World::advance_tick() {
+  for (SparseSet* pool : pools_to_sort_) {
+    if (pool->owner() == nullptr) pool->sort_by_entity();
+  }
+  pools_to_sort_.clear();
+  return ++tick_;
+}
+
+void World::sort_by_entity_later(SparseSet& pool) const {
+  if (std::find(pools_to_sort_.begin(), pools_to_sort_.end(), &pool) == pools_to_sort_.end()) {
+    pools_to_sort_.push_back(&pool);
+  }
 }
 
 void World::forget_removals_before(Tick tick) {

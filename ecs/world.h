@@ -55,7 +55,10 @@ class World {
   std::size_t entity_count() const { return entities_.alive_count(); }
 
   Tick tick() const { return tick_; }
-  Tick advance_tick() { return ++tick_; }
+  // Starts the next tick, typically once per frame. Between frames it is also when the pools
+  // that a query found holding the same entities as its other pools in another order are put
+  // into entity order (a structural change: see Query), after which that query is a plain loop.
+  Tick advance_tick();
 
   // Adds the component (or replaces the existing one) and marks it changed.
   template <typename T, typename... Args>
@@ -203,8 +206,13 @@ class World {
     return id < pools_.size() ? static_cast<ComponentPool<T>*>(pools_[id].get()) : nullptr;
   }
 
+  // Asked by a query that had to look its entities up in pools of one size; sorted at the next
+  // advance_tick, never during a query (a callback may run another query over the same pools).
+  void sort_by_entity_later(SparseSet& pool) const;
+
   EntityRegistry entities_;
   std::vector<std::unique_ptr<SparseSet>> pools_;  // by component_id; null if never used
+  mutable std::vector<SparseSet*> pools_to_sort_;
   std::vector<std::unique_ptr<OwningGroup>> groups_;
   Tick tick_ = 1;  // 0 is "before anything happened", so changed_since(0) means "ever"
 };

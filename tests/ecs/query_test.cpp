@@ -145,5 +145,82 @@ TEST(Query, AReusedIndexDoesNotInheritTheDestroyedEntitysComponents) {
   EXPECT_FALSE(world.has<Velocity>(reused));
 }
 
+// Velocity added in reverse creation order: both pools hold the same entities in other orders.
+std::vector<Entity> spawn_in_two_orders(World& world, int count) {
+  std::vector<Entity> entities;
+  for (int i = 0; i < count; ++i) entities.push_back(world.create());
+  for (int i = 0; i < count; ++i) world.add<Position>(entities[i], static_cast<float>(i), 0.0f);
+  for (int i = count - 1; i >= 0; --i) world.add<Velocity>(entities[i], static_cast<float>(10 * i), 0.0f);
+  return entities;
+}
+
+std::vector<Entity> velocity_order(World& world) {
+  std::vector<Entity> order;
+  world.query<const Velocity>().for_each([&](Entity entity, const Velocity&) { order.push_back(entity); });
+  return order;
+}
+
+TEST(Query, PoolsOfOneSetOfEntitiesInOtherOrdersTakeEntityOrderAtTheNextTick) {
+  World world;
+  const std::vector<Entity> entities = spawn_in_two_orders(world, 40);
+  const std::vector<Entity> reversed(entities.rbegin(), entities.rend());
+  const Tick added = world.tick();
+  world.advance_tick();
+  world.get_mut<Velocity>(entities[7]).y = 1.0f;  // one newer change tick, which must follow its entity
+  const Tick written = world.tick();
+
+  const auto step = [&] {
+    world.query<Position, const Velocity>().for_each(
+        [](Position& position, const Velocity& velocity) { position.x += velocity.x; });
+  };
+  step();
+  EXPECT_EQ(velocity_order(world), reversed) << "a query reorders nothing while it runs";
+  world.advance_tick();
+  EXPECT_EQ(velocity_order(world), entities);
+  step();
+  for (int i = 0; i < 40; ++i) {
+    EXPECT_EQ(world.get<Position>(entities[i]).x, static_cast<float>(i + 2 * 10 * i));
+    EXPECT_EQ(world.change_tick<Velocity>(entities[i]), i == 7 ? written : added);
+  }
+  std::vector<Entity> changed;
+  world.query<const Velocity>().changed_since<const Velocity>(added).for_each(
+      [&](Entity entity, const Velocity&) { changed.push_back(entity); });
+  EXPECT_EQ(changed, std::vector<Entity>{entities[7]});
+}
+
+TEST(Query, ANestedQueryOverPoolsInOtherOrdersSeesEveryEntity) {
+  World world;
+  const std::vector<Entity> entities = spawn_in_two_orders(world, 8);
+  std::size_t pairs = 0;
+  world.query<Position, const Velocity>().for_each(
+      [&](Position&, const Velocity&) { pairs += world.query<const Position, const Velocity>().count(); });
+  EXPECT_EQ(pairs, entities.size() * entities.size());
+}
+
+TEST(Query, PoolsOfDifferentSizesOrOfAGroupKeepTheirOrder) {
+  World unequal;
+  const std::vector<Entity> entities = spawn_in_two_orders(unequal, 8);
+  unequal.add<Position>(unequal.create());
+  unequal.query<Position, const Velocity>().for_each([](Position&, const Velocity&) {});
+  unequal.advance_tick();
+  EXPECT_EQ(velocity_order(unequal), std::vector<Entity>(entities.rbegin(), entities.rend()));
+
+  // Frozen added to the group's members in reverse: Position's order is the group's to keep.
+  World grouped;
+  grouped.group<Position, Velocity>();
+  const std::vector<Entity> members = spawn_in_two_orders(grouped, 8);
+  for (auto member = members.rbegin(); member != members.rend(); ++member) grouped.add<Frozen>(*member);
+  const auto position_order = [&] {
+    std::vector<Entity> order;
+    grouped.query<const Position>().for_each(
+        [&](Entity entity, const Position&) { order.push_back(entity); });
+    return order;
+  };
+  const std::vector<Entity> group_order = position_order();
+  grouped.query<Position, const Frozen>().for_each([](Position&, const Frozen&) {});
+  grouped.advance_tick();
+  EXPECT_EQ(position_order(), group_order);
+}
+
 }  // namespace
 }  // namespace sg::ecs
