@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: MIT
+// Times what the CPU does for lights each frame, as SceneRenderer does it but without a device:
+// animate and update transforms, gather the lights, schedule their shadow maps (place cascades,
+// importances, atlas plan, cache), sort the records by group. The stress hall, its lights and
+// its street camera are the sandbox's (--scene stress --camera street), so the phases read
+// against the sandbox's --stats cpu_phases_ms.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "ecs/jobs/thread_pool.h"
+#include "ecs/query.h"
+#include "ecs/transform_system.h"
+#include "systems/gpu/camera.h"
+#include "systems/scene/builtin_scenes.h"
+#include "systems/scene/camera.h"
+#include "systems/scene/scene_queries.h"
+#include "systems/shadows/cascades.h"
+#include "systems/shadows/frame_lights.h"
+#include "systems/shadows/shadow_schedule.h"
+#include "systems/shadows/shadow_view_path.h"
+
+namespace {
+
+using namespace sg;
+
+struct Options {
+  uint32_t point_lights = 50'000;
+  uint32_t spot_lights = 50'000;
+  float moving = 0.05f;
+  uint32_t frames = 60;
+  uint32_t threads = 0;  // 0: one per core
+  uint32_t width = 1920;
+  uint32_t height = 1080;
+  std::string camera = "street";
+};
+
+// The sandbox's atlas on a GPU with 256 MiB for shadows: four pages of 4096 with static layers.
+constexpr shadows::AtlasConfig atlas{4096, 4, shadows::min_shadow_resolution};
+
+struct Phases {
+  std::vector<double> update, gather, schedule, sort;
+};
+
+double median(std::vector<double> samples) {
+  if (samples.empty()) return 0.0;
+  std::nth_element(samples.begin(), samples.begin() + std::ptrdiff_t(samples.size() / 2), samples.end());
+  return samples[samples.size() / 2];
+}
+
+std::pair<scene::CameraPose, scene::Camera> named_camera(const ecs::World& world, const std::string& name) {
+  std::optional<std::pair<scene::CameraPose, scene::Camera>> found;
+  world.query<const ecs::WorldTransform, const scene::Camera, const scene::Name>().for_each(
+      [&](const ecs::WorldTransform& transform, const scene::Camera& lens, const scene::Name& camera_name) {
+        if (camera_name.value == name) found.emplace(scene::camera_pose(transform), lens);
+      });
+  if (!found) throw std::runtime_error("the scene has no camera named " + name);
+  return *found;
+}
+
+int run(const Options& options) {
+  scene::BuiltinSceneParams params;
+  params.point_lights = options.point_lights;
+  params.spot_lights = options.spot_lights;
+  params.moving_fraction = options.moving;
+  scene::Scene hall = scene::build_scene("stress", params);
+  ecs::World& world = hall.world;
+  const scene::Aabb bounds = scene::scene_bounds(hall);
+  const auto [pose, lens] = named_camera(world, options.camera);
+  const float aspect = float(options.width) / float(options.height);
+  const shadows::ShadowCamera camera{pose.eye, projection_matrix(lens, aspect) * view_matrix(pose),
+                                     float(options.height) / lens.yfov};
+
+  jobs::ThreadPool pool(options.threads == 0 ? jobs::ThreadPool::default_workers() : options.threads - 1);
+  shadows::FrameLights lights;
+  shadows::ShadowSchedule schedule(atlas, true);
+  Phases phases;
+  ecs::Tick transforms_updated = 0;
+  std::printf("light-bench: %u point and %u spot lights, %.0f%% moving, %u threads, %ux%u, camera %s\n",
+              options.point_lights, options.spot_lights, 100.0 * options.moving, pool.thread_count(),
+              options.width, options.height, options.camera.c_str());
+  for (uint32_t frame = 0; frame < options.frames; ++frame) {
+    auto mark = std::chrono::steady_clock::now();
+    const auto lap = [&](std::vector<double>& samples) {
+      const auto now = std::chrono::steady_clock::now();
+      samples.push_back(std::chrono::duration<double, std::milli>(now - mark).count());
+      mark = now;
+    };
+    pool.wake();
+    scene::animate_orbits(world, float(frame) / 60.0f, &pool);
+    ecs::update_world_transforms(world, transforms_updated, &pool);
+    transforms_updated = world.tick();
+    world.advance_tick();
+    lap(phases.update);
+    shadows::gather_lights(world, bounds, {}, lights, &pool);
+    lap(phases.gather);
+    shadows::place_cascades(lights, shadows::cascade_camera(pose, lens, aspect), bounds);
+    schedule.schedule(lights, camera, shadows::CasterUpdate::changes({}), shadows::default_shadow_view_budget,
+                      &pool);
+    lap(phases.schedule);
+    shadows::sort_by_group(lights, &pool);
+    lap(phases.sort);
+  }
+  // The first frames draw every map and fill the cache: the medians are of the frames after.
+  const auto steady = [&](std::vector<double>& samples) {
+    samples.erase(samples.begin(), samples.begin() + std::min<std::ptrdiff_t>(samples.size() / 4, 8));
+    return median(samples);
+  };
+  const double update = steady(phases.update), gather = steady(phases.gather),
+               scheduled = steady(phases.schedule), sort = steady(phases.sort);
+  std::printf(
+      "light-bench: medians over %zu frames, ms: update %.2f gather %.2f schedule %.2f sort %.2f "
+      "(gather + schedule + sort %.2f)\n",
+      phases.gather.size(), update, gather, scheduled, sort, gather + scheduled + sort);
+  const shadows::ShadowScheduleStats& stats = schedule.stats();
+  std::printf("light-bench: last frame: %u views drawn, %u cached, %u lights without a shadow\n",
+              stats.views_rendered, stats.views_cached, stats.lights_without_shadow);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"Times gathering and scheduling many lights on the CPU (no GPU)"};
+  app.add_option("--point-lights", options.point_lights);
+  app.add_option("--spot-lights", options.spot_lights);
+  app.add_option("--moving-lights", options.moving, "fraction of lights and crates that orbit")
+      ->check(CLI::Range(0.0f, 1.0f));
+  app.add_option("--frames", options.frames)->check(CLI::Range(1u, 100'000u));
+  app.add_option("--threads", options.threads, "threads, the caller included; 0: one per core");
+  app.add_option("--width", options.width)->check(CLI::Range(1u, 16384u));
+  app.add_option("--height", options.height)->check(CLI::Range(1u, 16384u));
+  app.add_option("--camera", options.camera, "a camera of the stress scene: street or overview");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    return run(options);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "light-bench: %s\n", error.what());
+    return 1;
+  }
+}
