@@ -177,6 +177,13 @@ class ShadowAtlasPlanner {
   // order does not depend on the order of requests.
   void order_least_important_first(std::span<const ShadowRequest> requests);
   uint64_t texels_that_do_not_fit() const;
+  // fit_budget's whole passes at once (see there): what they saved, and whether a pass would
+  // demote no light, which ends the stage.
+  struct WholePasses {
+    uint64_t saved = 0;
+    bool stage_done = false;
+  };
+  WholePasses whole_passes(std::span<const ShadowRequest> requests, bool to_quality_floor, uint64_t room);
   // Request indices ordered by decreasing resolution, cubes before 2D maps of the same size.
   std::vector<uint32_t> largest_first(std::span<const ShadowRequest> requests,
                                       std::span<const uint32_t> indices) const;
@@ -227,6 +234,7 @@ class ShadowAtlasPlanner {
   std::vector<uint64_t> cubes_per_tier_;
   std::vector<uint64_t> by_importance_;  // importance bits << 32 | request index
   std::vector<uint64_t> by_importance_scratch_;
+  std::vector<uint64_t> lights_by_tier_and_halvings_;  // whole_passes' counts
   std::vector<Tally> tallies_;
 
   AtlasStats stats_;

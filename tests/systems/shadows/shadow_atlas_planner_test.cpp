@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <map>
 #include <random>
@@ -342,6 +343,98 @@ TEST(ShadowAtlasPlanner, HundredThousandLightsAreDemotedByImportanceWithoutOverl
   // A second frame with every importance a little different.
   for (ShadowRequest& request : requests) request.importance *= 1.1f;
   expect_valid_tiles(config, requests, plan(planner, requests));
+}
+
+// The budget's rule walked one light at a time, as a model: passes from the least important
+// light up, each halving every light above its floor (its quality floor, then the smallest tile),
+// until the demotions so far save what did not fit and the tiles then pack (largest first, cubes
+// before maps, each on the lowest page with room); once all are at the smallest tile, the least
+// important lose their shadow. Takes the resolutions wanted, least important first.
+std::vector<uint32_t> fit_light_by_light(const AtlasConfig& config,
+                                         const std::vector<ShadowRequest>& requests,
+                                         std::vector<uint32_t> resolution) {
+  const auto tier = [&](uint32_t side) { return std::countr_zero(config.page_size / side); };
+  const auto does_not_fit = [&] {
+    std::vector<uint64_t> free(config.max_pages, 1);
+    uint64_t unplaced = 0;
+    for (int t = 0; config.page_size >> t >= config.min_resolution; ++t) {
+      if (t > 0) {
+        for (uint64_t& room : free) room *= 4;
+      }
+      uint64_t cubes = 0, maps = 0;
+      for (size_t i = 0; i < requests.size(); ++i) {
+        if (resolution[i] > 0 && tier(resolution[i]) == t) ++(requests[i].cube ? cubes : maps);
+      }
+      for (uint64_t& room : free) {
+        const uint64_t placed = std::min(cubes, room / 6);
+        room -= 6 * placed;
+        cubes -= placed;
+      }
+      for (uint64_t& room : free) {
+        const uint64_t placed = std::min(maps, room);
+        room -= placed;
+        maps -= placed;
+      }
+      unplaced += (6 * cubes + maps) * uint64_t(config.page_size >> t) * (config.page_size >> t);
+    }
+    return unplaced;
+  };
+  const auto saving = [&](size_t i, uint32_t to) {
+    return (requests[i].cube ? 6u : 1u) * (uint64_t(resolution[i]) * resolution[i] - uint64_t(to) * to);
+  };
+  for (int stage = 0; stage < 3;) {
+    bool demoted = false;
+    for (size_t i = 0; i < requests.size(); ++i) {
+      const uint64_t excess = does_not_fit();
+      if (excess == 0) return resolution;
+      // Steps until they save the excess, then the packing is checked again.
+      for (uint64_t saved = 0; saved < excess && i < requests.size(); ++i) {
+        if (stage == 2) {
+          saved += saving(i, 0);
+          resolution[i] = 0;
+          continue;
+        }
+        const uint32_t floor =
+            stage == 0 ? std::max(config.min_resolution, requests[i].quality_floor) : config.min_resolution;
+        if (resolution[i] / 2 < floor) continue;
+        saved += saving(i, resolution[i] / 2);
+        resolution[i] /= 2;
+        demoted = true;
+      }
+      --i;
+    }
+    if (!demoted) ++stage;
+  }
+  return resolution;
+}
+
+TEST(ShadowAtlasPlanner, TheBudgetDemotesAsWalkingItsPassesLightByLightWould) {
+  const AtlasConfig config{.page_size = 2048, .max_pages = 2, .min_resolution = 16};
+  std::mt19937 random(11);
+  std::uniform_int_distribution<int> tiers(4, 11);
+  std::uniform_int_distribution<int> floors(0, 3);
+  for (const size_t count : {40u, 700u, 3000u}) {
+    // Importances that are whole powers of two, so each light wants exactly that resolution.
+    std::vector<ShadowRequest> requests;
+    for (uint64_t i = 0; i < count; ++i) {
+      const float importance = std::exp2(float(tiers(random)));
+      requests.push_back(i % 7 == 0 ? cube_light(i, std::min(importance, 512.0f)) : map_light(i, importance));
+      requests.back().quality_floor = 16u << floors(random);
+    }
+    // Least important first, ties by key, as the planner orders them.
+    std::stable_sort(requests.begin(), requests.end(), [](const ShadowRequest& a, const ShadowRequest& b) {
+      return a.importance < b.importance;
+    });
+    std::vector<uint32_t> wanted;
+    for (const ShadowRequest& request : requests) wanted.push_back(uint32_t(request.importance));
+    const std::vector<uint32_t> expected = fit_light_by_light(config, requests, wanted);
+    ShadowAtlasPlanner planner(config);
+    const std::vector<ShadowPlacement> out = plan(planner, requests);
+    expect_valid_tiles(config, requests, out);
+    for (size_t i = 0; i < requests.size(); ++i) {
+      ASSERT_EQ(out[i].resolution, expected[i]) << count << " lights, light " << i;
+    }
+  }
 }
 
 TEST(ShadowAtlasPlanner, UnchangedLightsKeepTheirTilesNewAndChangedOnesMove) {
