@@ -12,7 +12,7 @@ namespace sg::scene {
 
 ecs::World make_scene_world() {
   ecs::World world;
-  world.keep_removals<MeshInstance, ecs::WorldTransform, Material>();
+  world.keep_removals<MeshInstance, ecs::WorldTransform, Material, Name>();
   return world;
 }
 

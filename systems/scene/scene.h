@@ -24,7 +24,8 @@ struct Name {
 };
 
 // A world that keeps the removal history of MeshInstance, WorldTransform and Material, which
-// renderers read to notice drawables that went away (GpuScene::gather_changes).
+// renderers read to notice drawables that went away (GpuScene::gather_changes), and of Name,
+// which gathering lights reads to rename the views of lights that lost theirs.
 ecs::World make_scene_world();
 
 struct Scene {
