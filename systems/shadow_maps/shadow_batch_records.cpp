@@ -162,8 +162,9 @@ void ShadowBatchRecords::write_views(uint32_t slot, const shadows::FrameLights& 
         continue;
       }
       const shadows::ShadowCubeView& cube = lights.cubes[i - lights.maps.size()];
+      const shadows::CubeViews faces = shadows::face_views(cube);
       for (uint32_t face = 0; face < 6; ++face) {
-        place_view(first + face, cube.views.view_projection[face], cube.position_far, view_kind_face,
+        place_view(first + face, faces.view_projection[face], cube.position_far, view_kind_face,
                    cube.caster_mask);
       }
     }

@@ -147,7 +147,7 @@ void ShadowPasses::prepare(uint32_t slot, const FrameLights& lights, const GpuSc
   for (size_t c = 0; c < lights.cubes.size(); ++c) {
     const ShadowCubeView& cube = lights.cubes[c];
     if (!cube.render) continue;
-    CubeFaces faces{cube.views.view_projection, {}};
+    CubeFaces faces{shadows::face_views(cube).view_projection, {}};
     for (int f = 0; f < 6; ++f) faces.tile[f] = shadows::tile_clip_transform(cube.tiles[f], page_size);
     std::memcpy(cube_faces_scratch_.data() + c * cube_faces_stride_, &faces, sizeof(faces));
   }
@@ -213,13 +213,15 @@ rg::ImageHandle ShadowPasses::add_to(rg::RenderGraph& graph, rg::ImageHandle atl
                      });
       continue;
     }
+    const shadows::CubeViews faces = shadows::face_views(cube);
     for (uint32_t face = 0; face < 6; ++face) {
       graph.add_pass(cube.name + " face " + std::to_string(face), write_layer(cube.tiles[face].page),
-                     [this, &cube, &scene, slot, face, faces_offset, view](const vk::PassRecorder& rec) {
+                     [this, &cube, &scene, slot, face, faces_offset, view,
+                      view_projection = faces.view_projection[face]](const vk::PassRecorder& rec) {
                        clear_tiles(rec.cmd(), {cube.tiles[face]});
                        rec.set_viewport(tile_rect(cube.tiles[face]));
-                       draw_casters(rec.cmd(), slot, &Pipelines::face, cube.views.view_projection[face],
-                                    cube.position_far, faces_offset, scene, view);
+                       draw_casters(rec.cmd(), slot, &Pipelines::face, view_projection, cube.position_far,
+                                    faces_offset, scene, view);
                      });
     }
   }

@@ -156,7 +156,6 @@ void fill_point(const ecs::World& world, const LightOverrides& overrides, ecs::T
   cube.light = index;
   cube.key = light_key(light.entity);
   cube.requested_resolution = clamp_resolution(s.resolution, max_cube_resolution);
-  cube.views = point_light_cube(position, parameters.range);
   cube.position_far = glm::vec4(position, parameters.range);
   cube.changed = changed_since<scene::PointLight>(world, light.entity, since, s.update);
   cube.update = s.update;

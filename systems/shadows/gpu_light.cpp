@@ -79,17 +79,17 @@ void set_shadow_map(GpuLight& light, std::uint32_t atlas_layer, const glm::vec4&
 }
 
 void set_shadow_cube(GpuLight& light, std::uint32_t atlas_layer, const std::array<glm::vec2, 6>& face_origins,
-                     float tile_scale, std::uint32_t resolution, const CubeViews& cube,
-                     const glm::vec3& origin) {
+                     float tile_scale, std::uint32_t resolution, const glm::vec4& position_far) {
   light.info.w = atlas_layer;
   light.shadow_rect = glm::vec4(0.0f, 0.0f, tile_scale, tile_scale);
-  light.shadow_depth = glm::vec4(cube.near, cube.far, 1.0f / float(resolution), 0.0f);
+  light.shadow_depth =
+      glm::vec4(shadow_near_plane(position_far.w), position_far.w, 1.0f / float(resolution), 0.0f);
   light.shadow_matrix = glm::mat4(0.0f);
   for (int f = 0; f < 6; ++f) {
     light.shadow_matrix[f / 2][2 * (f % 2)] = face_origins[f].x;
     light.shadow_matrix[f / 2][2 * (f % 2) + 1] = face_origins[f].y;
   }
-  light.shadow_matrix[3] = glm::vec4(origin, 1.0f);
+  light.shadow_matrix[3] = glm::vec4(glm::vec3(position_far), 1.0f);
 }
 
 }  // namespace sg::shadows

@@ -90,12 +90,12 @@ void set_shadow_map(GpuLight& light, std::uint32_t atlas_layer, const glm::vec4&
 
 // Gives a point light its cube: six square tiles of `resolution` texels, all on atlas layer
 // `atlas_layer`, each `tile_scale` wide in uv of the layer, face f (+X, -X, +Y, -Y, +Z, -Z)
-// with its top-left corner at face_origins[f]; rendered with `cube` (point_light_cube) from
-// `origin` (which may lag the light's position while the map is cached). Point lights need no
+// with its top-left corner at face_origins[f]; rendered from `position_far`'s origin out to its
+// far plane w (point_light_cube; the origin may lag the light's position while the map is
+// cached). Point lights need no
 // shadow matrix (the shaders select the face by the major axis), so its first three columns
 // carry the face origins, two faces a column, and the last the origin.
 void set_shadow_cube(GpuLight& light, std::uint32_t atlas_layer, const std::array<glm::vec2, 6>& face_origins,
-                     float tile_scale, std::uint32_t resolution, const CubeViews& cube,
-                     const glm::vec3& origin);
+                     float tile_scale, std::uint32_t resolution, const glm::vec4& position_far);
 
 }  // namespace sg::shadows

@@ -213,17 +213,14 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
         cube.tiles = placement.tiles;
         RenderedCube& rendered = rendered_cubes_[v - map_count];
         if (cube.moving_casters_only) {
-          cube.views = rendered.views;
-          cube.position_far = glm::vec4(rendered.origin, cube.position_far.w);
+          cube.position_far = rendered.position_far;
         } else if (cube.render) {
-          rendered.views = cube.views;
-          rendered.origin = glm::vec3(cube.position_far);
+          rendered.position_far = cube.position_far;
         }
         std::array<glm::vec2, 6> origins;
         for (int f = 0; f < 6; ++f) origins[f] = glm::vec2(tile_uv_rect(cube.tiles[f], page_size_));
         set_shadow_cube(lights.records[cube.light], cube.tiles[0].page, origins,
-                        float(cube.resolution) / float(page_size_), cube.resolution, rendered.views,
-                        rendered.origin);
+                        float(cube.resolution) / float(page_size_), cube.resolution, rendered.position_far);
       });
     }
   });

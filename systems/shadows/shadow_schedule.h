@@ -169,8 +169,7 @@ class ShadowSchedule {
   };
   struct RenderedCube {
     uint64_t key = 0;
-    CubeViews views;
-    glm::vec3 origin{0.0f};
+    glm::vec4 position_far{0.0f};
   };
   std::vector<RenderedMap> rendered_maps_;
   std::vector<RenderedCube> rendered_cubes_;

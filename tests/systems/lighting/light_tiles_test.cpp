@@ -65,8 +65,7 @@ shadows::FrameLights scattered_lights() {
     shadows::set_shadow_map(lights.records[map.light], 0, {0.0f, 0.0f, 1.0f, 1.0f}, 1024, map.view);
   }
   for (const shadows::ShadowCubeView& cube : lights.cubes) {
-    shadows::set_shadow_cube(lights.records[cube.light], 0, {}, 0.25f, 256, cube.views,
-                             glm::vec3(cube.position_far));
+    shadows::set_shadow_cube(lights.records[cube.light], 0, {}, 0.25f, 256, cube.position_far);
   }
   shadows::sort_by_group(lights);
   return lights;

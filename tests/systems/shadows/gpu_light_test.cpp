@@ -139,7 +139,7 @@ TEST(GpuLight, ShadowCubePlacement) {
   GpuLight record = pack_light(scene::PointLight{}, placed({0, 1, 0}, {0, 0, -1}), test_shadow());
   const std::array<glm::vec2, 6> faces{glm::vec2(0.0f, 0.0f), glm::vec2(0.25f, 0.0f), glm::vec2(0.5f, 0.0f),
                                        glm::vec2(0.0f, 0.5f), glm::vec2(0.25f, 0.5f), glm::vec2(0.5f, 0.5f)};
-  set_shadow_cube(record, 5, faces, 0.25f, 256, point_light_cube({0, 1, 0}, 10.0f), {0.0f, 0.5f, 0.0f});
+  set_shadow_cube(record, 5, faces, 0.25f, 256, {0.0f, 0.5f, 0.0f, 10.0f});
   EXPECT_EQ(record.info.w, 5u);
   EXPECT_EQ(record.shadow_depth, glm::vec4(shadow_near_plane(10.0f), 10.0f, 1.0f / 256.0f, 0.0f));
   EXPECT_EQ(record.shadow_rect, glm::vec4(0.0f, 0.0f, 0.25f, 0.25f));
