@@ -86,7 +86,8 @@ std::vector<Setting<S>> make_table() {
           "Khronos validation layer on (also SHADOWGRAPH_VALIDATION=1)"),
       text<S>(
           "scene", "NAME|PATH", [](auto& s) -> auto& { return s.scene; },
-          "default, stress, or a .gltf/.glb file"),
+          "default, stress, point-room, spot-columns (one light each: a point light in a 4.7k-triangle "
+          "room, a spot light on 53.7k triangles), or a .gltf/.glb file"),
       camera,
       on_off<S>(
           "sidecar", [](auto& s) -> auto& { return s.sidecar; },
@@ -192,7 +193,7 @@ std::vector<Setting<S>> make_table() {
       choice<S>("lighting", [](auto& s) -> auto& { return s.renderer.lighting; },
                 "deferred: G-buffer, light lists, a pass per light group; fused: depth prepass and one "
                 "forward pass of every light that tone-maps too (auto: deferred on GPUs; on CPU devices "
-                "chosen each frame, fused for up to four lights, deferred for more)",
+                "chosen each frame, fused for up to four lights and 8,192 triangles, deferred for more)",
                 {"auto", "deferred", "fused"}),
       choice<S>(
           "lit-sum-start", [](auto& s) -> auto& { return s.renderer.lit_sum_start; },

@@ -9,5 +9,7 @@ struct BuiltinSceneParams;  // builtin_scenes.h
 
 Scene build_default_scene();
 Scene build_stress_scene(const BuiltinSceneParams& params);
+Scene build_point_room_scene();
+Scene build_spot_columns_scene();
 
 }  // namespace sg::scene

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Scenes that need no files, selected by name, and the one entry point for the sandbox's
-// --scene default|stress|PATH.
+// --scene default|stress|point-room|spot-columns|PATH.
 //
 // "default": a 20 x 20 m room (floor top at y = 0, four walls 4 m high, no ceiling), four
 //   pillars and eight boxes, lit by a directional sun, two point lights, two spot lights and a
@@ -12,6 +12,10 @@
 //   turn, so all five appear once there are five lights), a sun, and a camera framing the hall.
 //   `moving_fraction` of the lights and of the crates get an OrbitMotion (animate_orbits).
 //   Everything follows from `seed`: equal parameters give identical scenes.
+// "point-room": a closed room with six columns (4,752 triangles), one point light in its middle
+//   with a 1024 cube and hard shadows. "spot-columns": 24 columns on a floor (53,676 triangles),
+//   one spot light with a 2048 map and 3 x 3 PCF. Both static, with a camera: the size of the
+//   shadow samples plain Vulkan renderers ship, for comparing one-light frames.
 // Built-in lights use FalloffMode::linear_window.
 #include <array>
 #include <cstdint>
@@ -37,7 +41,8 @@ struct BuiltinSceneParams {
   std::uint64_t seed = 1;
 };
 
-inline constexpr std::array<std::string_view, 2> builtin_scene_names = {"default", "stress"};
+inline constexpr std::array<std::string_view, 4> builtin_scene_names = {"default", "stress", "point-room",
+                                                                        "spot-columns"};
 
 // Throws SceneError for an unknown name (the message lists the known ones) or a
 // moving_fraction outside [0, 1]. World transforms are up to date on return.

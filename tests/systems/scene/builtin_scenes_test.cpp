@@ -61,6 +61,35 @@ TEST(BuiltinScenes, DefaultRoomHasEveryLightKindEveryAlgorithmAndACamera) {
   EXPECT_GT(stats.mesh_instances, 15u);
 }
 
+// The one-light scenes: the triangles and the light the shadow samples of plain Vulkan renderers
+// have, so a one-light frame can be timed against theirs.
+TEST(BuiltinScenes, OneLightScenesHaveTheirLightAndTriangles) {
+  struct Expected {
+    const char* name;
+    std::uint64_t triangles;
+    bool point;
+    ShadowAlgorithm algorithm;
+    std::uint32_t resolution;
+  };
+  for (const Expected& expected : {Expected{"point-room", 4752, true, ShadowAlgorithm::hard, 1024},
+                                   Expected{"spot-columns", 53676, false, ShadowAlgorithm::pcf, 2048}}) {
+    SCOPED_TRACE(expected.name);
+    Scene scene = build_scene(expected.name);
+    const SceneStats stats = scene_stats(scene);
+    EXPECT_EQ(stats.triangles, expected.triangles);
+    EXPECT_EQ(stats.point_lights, expected.point ? 1u : 0u);
+    EXPECT_EQ(stats.spot_lights, expected.point ? 0u : 1u);
+    EXPECT_EQ(stats.directional_lights + stats.cylinder_lights, 0u);
+    EXPECT_EQ(stats.shadow_casting_lights, 1u);
+    scene.world.query<const ShadowSettings>().for_each([&](const ShadowSettings& shadow) {
+      EXPECT_EQ(shadow.algorithm, expected.algorithm);
+      EXPECT_EQ(shadow.resolution, expected.resolution);
+      EXPECT_EQ(shadow.kernel.pcf_half_width, 1u);
+    });
+    EXPECT_TRUE(first_camera(scene).has_value());
+  }
+}
+
 TEST(BuiltinScenes, StressMeetsTheTriangleTargetAndLightCounts) {
   Scene scene = build_scene("stress", small_stress());
   const SceneStats stats = scene_stats(scene);
@@ -180,7 +209,8 @@ TEST(BuiltinScenes, UnknownNameAndBadFractionAreRefused) {
     build_scene("cathedral");
     ADD_FAILURE() << "an unknown scene name was accepted";
   } catch (const SceneError& error) {
-    EXPECT_NE(std::string(error.what()).find("\"cathedral\": unknown (known: default, stress)"),
+    EXPECT_NE(std::string(error.what())
+                  .find("\"cathedral\": unknown (known: default, stress, point-room, spot-columns)"),
               std::string::npos)
         << error.what();
   }
