@@ -257,6 +257,7 @@ void GpuScene::gather_all(const ecs::World& world, jobs::ThreadPool* pool) {
   regrow_scene_bounds(pool);
 
   commands_.clear();
+  triangles_ = 0;
   class_commands_.fill({});
   caster_groups_.clear();
   first_cut_out_group_ = 0;  // the opaque groups come first: their count
@@ -279,6 +280,7 @@ void GpuScene::gather_all(const ecs::World& world, jobs::ThreadPool* pool) {
                                                  range.first_index, static_cast<int32_t>(range.vertex_offset),
                                                  static_cast<uint32_t>(begin)};
       commands_.push_back(command);
+      triangles_ += uint64_t{range.index_count / 3} * command.instanceCount;
       if (casters > 0) {
         VkDrawIndexedIndirectCommand group = command;
         group.instanceCount = casters;

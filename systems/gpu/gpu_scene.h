@@ -108,6 +108,8 @@ class GpuScene {
   const vk::Buffer& vertices() const { return vertices_; }
   const vk::Buffer& indices() const { return indices_; }
   uint32_t instance_count() const { return static_cast<uint32_t>(bounds_.size()); }
+  // Triangles of all instances drawn, as the camera passes draw them (before culling).
+  uint64_t triangles() const { return triangles_; }
   // Per (draw class, mesh) with casters: its draw over exactly its casters (firstInstance and
   // instanceCount give their range in the instance buffer).
   std::span<const VkDrawIndexedIndirectCommand> caster_groups() const { return caster_groups_; }
@@ -214,6 +216,7 @@ class GpuScene {
   std::vector<uint64_t> keys_;
   scene::Aabb scene_bounds_;
   std::vector<VkDrawIndexedIndirectCommand> commands_;  // per (draw class, mesh), classes in order
+  uint64_t triangles_ = 0;                              // over commands_
   std::array<CommandRange, draw_class_count> class_commands_{};
   std::vector<VkDrawIndexedIndirectCommand> caster_groups_;
   uint32_t first_cut_out_group_ = 0;

@@ -24,14 +24,19 @@ constexpr EnumNames<LightingPath, 4> enum_names(LightingPath) {
            {LightingPath::fused, "fused"}}};
 }
 
-// automatic's choice on a CPU device for a frame of `lights` lights: fused while its cost, every
-// light at every pixel, stays below deferred's, whose passes cost more but a pixel only its
-// tile's lights; deferred where a light has contact shadows, which only it draws. On lavapipe at
-// 1280x720 (2026-11-30), stress scene of 4.8k triangles with the sun, maps cached: 3 lights fused
-// 23.4 against deferred 41.9 ms a frame, 4 lights 42.5 against 50.1, 5 lights 70.6 against 53.9;
-// the default scene (6 lights) about 250 against 200 (docs/PERFORMANCE.md).
-constexpr LightingPath cpu_lighting_for(uint32_t lights, uint32_t contact_lights) {
-  return lights <= 4 && contact_lights == 0 ? LightingPath::fused : LightingPath::deferred;
+// automatic's choice on a CPU device for a frame of `lights` lights and `triangles` drawn: fused
+// while its cost, every light at every pixel and the geometry drawn twice (depth prepass, then the
+// forward pass), stays below deferred's, whose passes cost more but a pixel only its tile's lights
+// and draw the geometry once; deferred where a light has contact shadows, which only it draws. On lavapipe at
+// 1280x720 (2026-11-30), stress scene of 4.8k triangles with the sun, maps cached: 3 lights fused 23.4
+// against deferred 41.9 ms a frame, 4 lights 42.5 against 50.1, 5 lights 70.6 against 53.9; the default scene
+// (6 lights) about 250 against 200. With more geometry (2026-12-03, 3 lights): 10k triangles fused 49.8
+// against 45.9, 25k 65.4 against 43.7, 50k 78.4 against 65.8; one light, point-room's 4.8k triangles 62
+// against 78, spot-columns' 53.7k 175 against 94 (docs/PERFORMANCE.md): fused up to 8,192 triangles.
+inline constexpr uint64_t max_fused_triangles = 8192;
+constexpr LightingPath cpu_lighting_for(uint32_t lights, uint32_t contact_lights, uint64_t triangles) {
+  return lights <= 4 && contact_lights == 0 && triangles <= max_fused_triangles ? LightingPath::fused
+                                                                                : LightingPath::deferred;
 }
 
 // Where deferred lighting's lit sum starts (the ambient term times the base color, the background

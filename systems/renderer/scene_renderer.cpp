@@ -172,7 +172,8 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     per_light_->prepare(slot, lights_, gpu_scene_, page_size, settings_.cube_shadows, settings_.cull_casters);
   }
   if (lighting_per_frame_) {
-    lighting_ = cpu_lighting_for(static_cast<uint32_t>(lights_.records.size()), lights_.contact_lights());
+    lighting_ = cpu_lighting_for(static_cast<uint32_t>(lights_.records.size()), lights_.contact_lights(),
+                                 gpu_scene_.triangles());
   }
   // Only deferred lighting reads the depth buffer its contact shadows march through.
   contact_shadows_skipped_ = lighting_ == LightingPath::deferred ? 0 : lights_.contact_lights();

@@ -214,7 +214,8 @@ TEST_F(FrameTest, DeferredLightingStartedByTheGBufferMatchesItsOwnPass) {
 }
 
 // automatic on a CPU device, each frame: the fused forward pass for up to four lights (fewest
-// full-screen passes), deferred for more; the default scene has six lights.
+// full-screen passes) and a few thousand triangles, deferred for more; the default scene has six
+// lights, spot-columns one light and 53.7k triangles.
 TEST_F(FrameTest, AutomaticLightingFusesAFewLightsOnACpuDevice) {
   render(FrameSettings{}, 1);
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
@@ -224,6 +225,10 @@ TEST_F(FrameTest, AutomaticLightingFusesAFewLightsOnACpuDevice) {
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "tone map"), 0);
   FrameSettings five_lights = stress(3000, 2, 2, 0.0f);
   render(five_lights, 1);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
+  FrameSettings heavy_geometry;
+  heavy_geometry.scene = "spot-columns";
+  render(heavy_geometry, 1);
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
 }
 
