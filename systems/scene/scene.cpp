@@ -12,7 +12,7 @@ namespace sg::scene {
 
 ecs::World make_scene_world() {
   ecs::World world;
-  world.keep_removals<MeshInstance, ecs::WorldTransform, Material, Name>();
+  world.keep_removals<MeshInstance, ecs::WorldTransform, Material>();
   return world;
 }
 

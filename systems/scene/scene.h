@@ -24,8 +24,7 @@ struct Name {
 };
 
 // A world that keeps the removal history of MeshInstance, WorldTransform and Material, which
-// renderers read to notice drawables that went away (GpuScene::gather_changes), and of Name,
-// which gathering lights reads to rename the views of lights that lost theirs.
+// renderers read to notice drawables that went away (GpuScene::gather_changes).
 ecs::World make_scene_world();
 
 struct Scene {

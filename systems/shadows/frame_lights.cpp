@@ -164,11 +164,6 @@ void fill_point(const ecs::World& world, const LightOverrides& overrides, ecs::T
   name_view(world, light.entity, "point", light.view, cube.name);
 }
 
-// Directional and cylinder views are fitted around the scene's bounds: filled every frame.
-bool follows_scene_bounds(GatheredLight::Kind kind) {
-  return kind == GatheredLight::directional || kind == GatheredLight::cylinder;
-}
-
 // Whether a light gathered last time as `light` is unchanged since `since`: a spot or point
 // light (directional and cylinder views follow the scene's bounds) whose components were not
 // written since, with a Name now (`name`) as it had one then (`named`).
@@ -178,8 +173,8 @@ bool kept_since(const ecs::World& world, const GatheredLight& light, const scene
       (name != nullptr && world.change_tick<scene::Name>(light.entity) >= since)) {
     return false;
   }
-  // Any write, whatever the light's update: its record follows it.
   switch (light.kind) {
+    // Any write, whatever the light's update: its record follows it.
     case GatheredLight::spot:
       return !changed_since<scene::SpotLight>(world, light.entity, since, scene::ShadowUpdate::automatic);
     case GatheredLight::point:
@@ -188,41 +183,6 @@ bool kept_since(const ecs::World& world, const GatheredLight& light, const scene
     case GatheredLight::cylinder: return false;
   }
   return false;
-}
-
-// Marks in scratch.refill the lights of `last_gathered` (the same list as this gather's) whose
-// transform, parameters, shadow settings or Name were written since `since`, or whose Name went.
-// The world's change ticks list the writes, so this costs what changed, not what there is.
-void mark_lights_to_refill(const ecs::World& world, ecs::Tick since, FrameLights::Scratch& scratch) {
-  const std::vector<GatheredLight>& lights = scratch.last_gathered;
-  std::vector<uint32_t>& place_of = scratch.place_of_entity;
-  if (place_of.empty() && !lights.empty()) {
-    uint32_t highest = 0;
-    for (const GatheredLight& light : lights) highest = std::max(highest, light.entity.index);
-    place_of.assign(highest + size_t{1}, UINT32_MAX);
-    for (uint32_t i = 0; i < lights.size(); ++i) place_of[lights[i].entity.index] = i;
-  }
-  scratch.refill.assign(lights.size(), 0);
-  const auto refill = [&](ecs::Entity entity) {
-    if (entity.index >= place_of.size()) return;
-    const uint32_t place = place_of[entity.index];
-    if (place != UINT32_MAX && lights[place].entity == entity) scratch.refill[place] = 1;
-  };
-  // Written at `since` or later: the last gather ran at tick `since`, and writes after it in the
-  // same tick count.
-  const ecs::Tick before = since > 0 ? since - 1 : 0;
-  const auto changed = [&]<class Light>(std::type_identity<Light>) {
-    using Query = ecs::Query<const ecs::WorldTransform, const Light, const scene::ShadowSettings>;
-    const auto mark = [&](ecs::Entity entity, const auto&...) { refill(entity); };
-    Query(world).template changed_since<const ecs::WorldTransform>(before).for_each(mark);
-    Query(world).template changed_since<const Light>(before).for_each(mark);
-    Query(world).template changed_since<const scene::ShadowSettings>(before).for_each(mark);
-  };
-  changed(std::type_identity<scene::SpotLight>{});
-  changed(std::type_identity<scene::PointLight>{});
-  world.query<const scene::Name>().changed_since<const scene::Name>(before).for_each(
-      [&](ecs::Entity entity, const scene::Name&) { refill(entity); });
-  for (const ecs::Removal& removal : world.removed_since<scene::Name>(before)) refill(removal.entity);
 }
 
 ShadowKind shadow_kind(const GpuLight& record) {
@@ -265,11 +225,6 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
   }
   FrameLights::Scratch& scratch = out.scratch;
   const bool same_lights = gathered == scratch.last_gathered && overrides == scratch.last_overrides;
-  if (gathered != scratch.last_gathered) scratch.place_of_entity.clear();
-  // In a world that keeps Name's removals (scene::make_scene_world) the change ticks say which
-  // lights to fill again; otherwise each light's ticks and Name are looked up.
-  const bool by_change_ticks = same_lights && world.keeps_removals<scene::Name>();
-  if (by_change_ticks) mark_lights_to_refill(world, since, scratch);
   scratch.packed.resize(gathered.size());
   scratch.named.resize(gathered.size());
 
@@ -280,11 +235,8 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
     for (size_t i = begin; i < end; ++i) {
       const auto index = static_cast<uint32_t>(i);
       const GatheredLight& light = gathered[i];
-      const scene::Name* name = by_change_ticks ? nullptr : world.try_get<scene::Name>(light.entity);
-      const bool kept = by_change_ticks
-                            ? scratch.refill[i] == 0 && !follows_scene_bounds(light.kind)
-                            : same_lights && kept_since(world, light, name, scratch.named[i] != 0, since);
-      if (kept) {
+      const scene::Name* name = world.try_get<scene::Name>(light.entity);
+      if (same_lights && kept_since(world, light, name, scratch.named[i] != 0, since)) {
         // Of what gathering sets, sort_by_group moved the record and `changed` may be stale; the
         // view's other fields are as gathering left them (the schedule's moving-caster draws put
         // back the view the light has anyway, unchanged since its map was drawn whole).
@@ -297,7 +249,6 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
         if (light.shadowed && light.kind != GatheredLight::point) keep(out.maps[light.view]);
         continue;
       }
-      if (by_change_ticks) name = world.try_get<scene::Name>(light.entity);
       scratch.named[i] = name != nullptr ? 1 : 0;
       switch (gathered[i].kind) {
         case GatheredLight::spot:

@@ -177,10 +177,6 @@ struct FrameLights {
     LightOverrides last_overrides;
     std::vector<GpuLight> packed;
     std::vector<uint8_t> named;
-    // By entity index, the light's place in last_gathered (found only for the lights there), and
-    // per place whether gathering fills the light again: what the change ticks say was written.
-    std::vector<uint32_t> place_of_entity;
-    std::vector<uint8_t> refill;
   } scratch;
 };
 
