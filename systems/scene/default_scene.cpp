@@ -10,15 +10,6 @@
 namespace sg::scene {
 namespace {
 
-ecs::LocalTransform placed(glm::vec3 center, glm::vec3 size, float yaw = 0.0f) {
-  return {center, glm::angleAxis(yaw, glm::vec3(0, 1, 0)), size};
-}
-
-// A light at `position` shining towards `target` (-Z forward).
-ecs::LocalTransform aimed(glm::vec3 position, glm::vec3 target) {
-  return {position, look_rotation(position, target), glm::vec3(1.0f)};
-}
-
 ShadowSettings shadow_with(ShadowAlgorithm algorithm) {
   ShadowSettings shadow;
   shadow.algorithm = algorithm;

@@ -12,8 +12,6 @@
 namespace sg::scene {
 namespace {
 
-ecs::LocalTransform placed(glm::vec3 center, glm::vec3 size) { return {center, glm::quat(1, 0, 0, 0), size}; }
-
 ShadowSettings one_shadow(ShadowAlgorithm algorithm, std::uint32_t resolution) {
   ShadowSettings shadow;
   shadow.algorithm = algorithm;
@@ -67,9 +65,8 @@ Scene build_spot_columns_scene() {
   }
   ShadowSettings shadow = one_shadow(ShadowAlgorithm::pcf, 2048);
   shadow.kernel.pcf_half_width = 1;
-  const glm::vec3 light_at{-10.0f, 9.0f, 10.0f};
   add_light(scene, SpotLight{{1.0f, 0.97f, 0.9f}, 3.0f, 40.0f, 0.5f, 0.6f},
-            {light_at, look_rotation(light_at, {0, 0, -1}), glm::vec3(1.0f)}, shadow, "spot");
+            aimed({-10.0f, 9.0f, 10.0f}, {0, 0, -1}), shadow, "spot");
   add_camera(scene.world, {{0.0f, 7.0f, 14.0f}, {0.0f, 0.5f, -2.0f}});
   return scene;
 }
