@@ -15,11 +15,9 @@
 #include <CLI/CLI.hpp>
 
 #include "ecs/jobs/thread_pool.h"
-#include "ecs/query.h"
 #include "ecs/transform_system.h"
+#include "systems/frame/scene_view.h"
 #include "systems/gpu/camera.h"
-#include "systems/scene/builtin_scenes.h"
-#include "systems/scene/camera.h"
 #include "systems/scene/scene_queries.h"
 #include "systems/shadows/cascades.h"
 #include "systems/shadows/frame_lights.h"
@@ -54,26 +52,20 @@ double median(std::vector<double> samples) {
   return samples[samples.size() / 2];
 }
 
-std::pair<scene::CameraPose, scene::Camera> named_camera(const ecs::World& world, const std::string& name) {
-  std::optional<std::pair<scene::CameraPose, scene::Camera>> found;
-  world.query<const ecs::WorldTransform, const scene::Camera, const scene::Name>().for_each(
-      [&](const ecs::WorldTransform& transform, const scene::Camera& lens, const scene::Name& camera_name) {
-        if (camera_name.value == name) found.emplace(scene::camera_pose(transform), lens);
-      });
-  if (!found) throw std::runtime_error("the scene has no camera named " + name);
-  return *found;
-}
-
 int run(const Options& options) {
-  scene::BuiltinSceneParams params;
-  params.point_lights = options.point_lights;
-  params.spot_lights = options.spot_lights;
-  params.moving_fraction = options.moving;
-  scene::Scene hall = scene::build_scene("stress", params);
-  ecs::World& world = hall.world;
-  const scene::Aabb bounds = scene::scene_bounds(hall);
-  const auto [pose, lens] = named_camera(world, options.camera);
+  // Loaded as the sandbox loads it: the stress scene and the camera named, no sidecar.
+  FrameSettings settings;
+  settings.scene = "stress";
+  settings.camera_name = options.camera;
+  settings.scene_params.point_lights = options.point_lights;
+  settings.scene_params.spot_lights = options.spot_lights;
+  settings.scene_params.moving_fraction = options.moving;
   const float aspect = float(options.width) / float(options.height);
+  SceneView view = load_scene_view(settings, aspect);
+  ecs::World& world = view.scene.world;
+  const scene::Aabb bounds = scene::scene_bounds(view.scene);
+  const scene::CameraPose& pose = view.pose;
+  const scene::Camera& lens = view.lens;
   const shadows::ShadowCamera camera{pose.eye, projection_matrix(lens, aspect) * view_matrix(pose),
                                      float(options.height) / lens.yfov};
 
