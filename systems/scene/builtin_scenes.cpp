@@ -20,13 +20,17 @@ Scene build_scene(std::string_view name, const BuiltinSceneParams& params) {
     throw SceneError("built-in scene", "light_spread",
                      std::to_string(params.light_spread) + " is outside (0, 1]");
   }
-  Scene scene = name == "default"      ? build_default_scene()
-                : name == "stress"     ? build_stress_scene(params)
-                : name == "point-room" ? build_point_room_scene()
-                : name == "spot-columns"
-                    ? build_spot_columns_scene()
-                    : throw SceneError("built-in scene", "\"" + std::string(name) + "\"",
-                                       "unknown (known: default, stress, point-room, spot-columns)");
+  const auto unknown = [&]() -> Scene {
+    std::string known;
+    for (const std::string_view builtin : builtin_scene_names)
+      known.append(known.empty() ? "" : ", ").append(builtin);
+    throw SceneError("built-in scene", "\"" + std::string(name) + "\"", "unknown (known: " + known + ")");
+  };
+  Scene scene = name == "default"        ? build_default_scene()
+                : name == "stress"       ? build_stress_scene(params)
+                : name == "point-room"   ? build_point_room_scene()
+                : name == "spot-columns" ? build_spot_columns_scene()
+                                         : unknown();
   ecs::update_world_transforms(scene.world, 0);
   return scene;
 }
