@@ -31,6 +31,11 @@ const int transparent_bounds_binding = 27;
 const int light_tiles_feedback_binding = 28;
 // Each light's shade and weight at each pixel, for measuring the frame (shadow_probe.comp).
 const int shadow_probe_binding = 29;
+// The coarse pass of light culling (light_tiles_coarse.glsl): each tile's volume, each coarse
+// tile's list of lights, and where each list lies.
+const int tile_volumes_binding = 30;
+const int coarse_lights_binding = 31;
+const int coarse_ranges_binding = 32;
 
 // GPU-driven shadow views (shadow_views.glsl): the casters' bounds, their meshes, the culled
 // (caster, view) pairs, their counts per draw, and the indirect commands built from them.

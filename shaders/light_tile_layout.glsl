@@ -5,5 +5,8 @@
 #define SG_LIGHT_TILE_LAYOUT_GLSL
 
 const uint LIGHT_TILE_SIZE = 16u;  // pixels per tile side; one workgroup per tile
+// Tiles per coarse tile side (light_tiles_coarse.comp): a coarse tile lists the lights that reach
+// any of its tiles, so that each tile tests those only.
+const uint LIGHT_COARSE_SIDE = 8u;
 
 #endif

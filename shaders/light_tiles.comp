@@ -1,23 +1,19 @@
 // SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// variant transparent TRANSPARENT_BOUNDS
 // Light culling on GPUs (light_tiles_interface.glsl says what it writes): one workgroup per
-// screen tile, its threads reading the tile's depths and testing the lights side by side.
-#include "light_tiles_interface.glsl"
+// screen tile, its threads testing side by side the lights its coarse tile lists
+// (light_tiles_coarse.comp, which also bounded the tile).
+#include "light_tile_lists.glsl"
+#include "light_tiles_coarse.glsl"
 
-// SIDE x SIDE threads, each reading a block of the tile's depth: a GPU wants threads to test many
-// lights at once. At least 4, so that every light group has a thread.
-const uint SIDE = 8u;
-layout(local_size_x = SIDE, local_size_y = SIDE) in;
-const uint THREADS = SIDE * SIDE;
-const uint BLOCK = LIGHT_TILE_SIZE / SIDE;  // pixels per thread side
+// A GPU wants threads to test many lights at once. At least LIGHT_GROUP_COUNT, so that every light
+// group has a thread.
+const uint THREADS = 64u;
+layout(local_size_x = THREADS) in;
 
-shared float thread_nearest[THREADS];
-shared float thread_farthest[THREADS];
-shared vec4 tile_sphere;
-shared bool has_surfaces;
-shared uint first_slot[THREADS];  // per thread: how many it found, then where its lights go
+#include "light_list_slots.glsl"
+
 shared uint tile_first;   // the tile's first entry in the pool
 shared uint tile_listed;  // how many entries it has there
 shared uint tile_wanted;  // how many lights reach it
@@ -26,16 +22,17 @@ shared uint search_high;
 shared uint group_first[LIGHT_GROUP_COUNT];  // per group, its range in the tile's list
 shared uint group_end[LIGHT_GROUP_COUNT];
 
-// Thread 0, once each thread has put its count in first_slot: turns the counts into where each
-// thread's lights start, and returns the tile's total.
-uint place_thread_counts() {
-  uint sum = 0u;
-  for (uint t = 0u; t < THREADS; ++t) {
-    uint count = first_slot[t];
-    first_slot[t] = sum;
-    sum += count;
+// The k-th light the tile tests: the k-th of its coarse tile's list (`coarse`), or light k where
+// that list did not fit its pool.
+uint candidate(uvec2 coarse, uint k) { return coarse.y == EVERY_LIGHT ? k : coarse_lights[coarse.x + k]; }
+
+// How many of the candidates in `chunk` listed_in_tile lists at worth `least`.
+uint count_candidates(uvec2 coarse, uvec2 chunk, TileVolume volume, uint least) {
+  uint count = 0u;
+  for (uint k = chunk.x; k < chunk.y; ++k) {
+    if (listed_in_tile(candidate(coarse, k), volume, least)) ++count;
   }
-  return sum;
+  return count;
 }
 
 // Widens `group`'s range in the tile's list to hold entries [first, end).
@@ -51,40 +48,15 @@ void main() {
     group_first[local] = ~0u;
     group_end[local] = 0u;
   }
-  // Each thread reduces its block, then one thread their results and the tile's bound:
-  // shared-memory atomics and 64 copies of the same sphere cost a CPU driver more than a short
-  // serial loop.
-  // Reversed depths (camera_depth.glsl): the nearest surface has the greatest.
-  float nearest = CAMERA_FAR_DEPTH;
-  float farthest = 1.0;
-  for (uint k = 0u; k < BLOCK * BLOCK; ++k) {
-    ivec2 pixel =
-        ivec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy * BLOCK + uvec2(k % BLOCK, k / BLOCK));
-    if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) bound_by_pixel(pixel, nearest, farthest);
-  }
-  thread_nearest[local] = nearest;
-  thread_farthest[local] = farthest;
-  barrier();
-  if (local == 0u) {
-    for (uint t = 1u; t < THREADS; ++t) {
-      nearest = max(nearest, thread_nearest[t]);
-      farthest = min(farthest, thread_farthest[t]);
-    }
-    bound_by_transparent_surfaces(tile, nearest, farthest);
-    has_surfaces = !is_background_depth(nearest);
-    tile_sphere = visible_sphere_of_tile(gl_WorkGroupID.xy, nearest, farthest);
-  }
-  barrier();
+  TileVolume volume = tile_volumes[tile];
+  uvec2 coarse = coarse_ranges[coarse_tile_of(gl_WorkGroupID.xy)];
+  uint candidates = volume.sphere.w < 0.0 ? 0u : (coarse.y == EVERY_LIGHT ? frame.counts.x : coarse.y);
 
-  // Lights in ordered chunks, one per thread: count, take the tile's entries of the pool, place
+  // Candidates in ordered chunks, one per thread: count, take the tile's entries of the pool, place
   // the chunks one after another and write in order, so the list is sorted by light index and the
   // same every frame.
-  uint light_count = has_surfaces ? frame.counts.x : 0u;
-  vec4 sphere = tile_sphere;
-  uint chunk = (light_count + THREADS - 1u) / THREADS;
-  uint first = min(local * chunk, light_count);
-  uint last = min(first + chunk, light_count);
-  first_slot[local] = count_listed(first, last, sphere, 0u);
+  uvec2 chunk = thread_chunk(local, candidates);
+  first_slot[local] = count_candidates(coarse, chunk, volume, 0u);
   barrier();
   if (local == 0u) {
     uint sum = place_thread_counts();
@@ -104,7 +76,7 @@ void main() {
       uint high = search_high;
       if (low >= high) break;
       uint middle = low + (high - low) / 2u;
-      first_slot[local] = count_listed(first, last, sphere, middle);
+      first_slot[local] = count_candidates(coarse, chunk, volume, middle);
       barrier();
       if (local == 0u) {
         if (place_thread_counts() <= tile_listed) {
@@ -116,7 +88,7 @@ void main() {
       barrier();
     }
     least = search_low;
-    first_slot[local] = count_listed(first, last, sphere, least);
+    first_slot[local] = count_candidates(coarse, chunk, volume, least);
     barrier();
     if (local == 0u) {
       uint sum = place_thread_counts();
@@ -130,8 +102,9 @@ void main() {
   uint slot = first_slot[local];
   uint run_group = LIGHT_GROUP_COUNT;
   uint run_first = 0u;
-  for (uint i = first; i < last && slot < tile_listed; ++i) {
-    if (!listed_in_tile(i, sphere, least)) continue;
+  for (uint k = chunk.x; k < chunk.y && slot < tile_listed; ++k) {
+    uint i = candidate(coarse, k);
+    if (!listed_in_tile(i, volume, least)) continue;
     tile_lights[tile_first + slot] = i;
     uint group = group_of(i);
     if (group != run_group) {

@@ -7,7 +7,8 @@
 // workgroup's invocations as the lanes of SIMD batches and switches between batches at every
 // barrier, which was most of light_tiles.comp's cost there; here each lane walks its own tile's
 // depths and then the lights in order, which also gives the list its order for free.
-#include "light_tiles_interface.glsl"
+#include "light_tile_bounds.glsl"
+#include "light_tile_lists.glsl"
 
 layout(local_size_x = 8) in;
 
@@ -34,8 +35,9 @@ void main() {
   // Counts the tile's lights, takes that many entries of the pool, then lists them: testing every
   // light twice costs less than any list of unbounded length kept in between.
   bool surfaces = !is_background_depth(nearest);
-  vec4 sphere = surfaces ? visible_sphere_of_tile(tile_xy, nearest, farthest) : vec4(0.0);
-  uint reached = count_listed(0u, surfaces ? frame.counts.x : 0u, sphere, 0u);
+  TileVolume volume;
+  if (surfaces) volume = visible_volume_of_tile(tile_xy, nearest, farthest);
+  uint reached = count_listed(0u, surfaces ? frame.counts.x : 0u, volume, 0u);
   uint listed;
   uint first = take_entries(reached, listed);
   // Where the pool holds fewer than the tile's lights, it lists those worth the most there: the
@@ -46,7 +48,7 @@ void main() {
     uint above = NO_WORTH;
     while (least < above) {
       uint middle = least + (above - least) / 2u;
-      if (count_listed(0u, frame.counts.x, sphere, middle) <= listed) {
+      if (count_listed(0u, frame.counts.x, volume, middle) <= listed) {
         above = middle;
       } else {
         least = middle + 1u;
@@ -55,7 +57,7 @@ void main() {
   }
   uint count = 0u;
   for (uint i = 0u; count < listed && i < frame.counts.x; ++i) {
-    if (!listed_in_tile(i, sphere, least)) continue;
+    if (!listed_in_tile(i, volume, least)) continue;
     tile_lights[first + count] = i;
     uint group = group_of(i);
     if (group_count[group] == 0u) group_first[group] = first + count;

@@ -34,23 +34,26 @@ struct LightTileGrid {
   uint32_t across = 0;
   uint32_t down = 0;
   uint32_t count() const { return across * down; }
+  // The grid of coarse tiles over this one (shaders/light_tiles_coarse.glsl).
+  LightTileGrid coarse() const;
   static LightTileGrid of(uint32_t width, uint32_t height);
 };
 
-// How the culling runs: a workgroup per tile, its threads side by side (shaders/light_tiles.comp,
-// GPUs), or an invocation per tile with no barriers (shaders/light_tiles_serial.comp, CPU drivers,
-// which switch between SIMD batches at every barrier). Both write the same lists; automatic picks
-// by device type.
+// How the culling runs: a coarse pass, then a workgroup per tile, its threads side by side
+// (shaders/light_tiles_coarse.comp and light_tiles.comp, GPUs), or an invocation per tile with no
+// barriers, testing every light (shaders/light_tiles_serial.comp, CPU drivers, which switch between
+// SIMD batches at every barrier). Both write the same lists; automatic picks by device type.
 enum class LightCullingShape { automatic, workgroup_per_tile, thread_per_tile };
 
 class LightTilesPass {
  public:
   // With `transparent_bounds`, tiles are bounded by where transparent surfaces may lie as well
   // (add_to's `transparent_bounds`, TransparentPass). The lists' pool holds at most
-  // `most_pool_entries` entries (0: what one storage buffer reaches, up to 1 GiB).
+  // `most_pool_entries` entries, the coarse tiles' pool `most_coarse_entries` (0: what one storage
+  // buffer reaches, up to 1 GiB).
   LightTilesPass(vk::VulkanContext& context, uint32_t frames_in_flight,
                  LightCullingShape shape = LightCullingShape::automatic, bool transparent_bounds = false,
-                 uint64_t most_pool_entries = 0);
+                 uint64_t most_pool_entries = 0, uint64_t most_coarse_entries = 0);
   LightCullingShape shape() const { return shape_; }
 
   // Bytes of each output for `grid`, for callers that provide their own buffers (whose `lights`
@@ -86,15 +89,24 @@ class LightTilesPass {
   }
 
  private:
+  struct CoarseLists;
+  struct Constants;
+  CoarseLists add_coarse_pass(rg::RenderGraph& graph, uint32_t slot, rg::ImageHandle depth,
+                              const vk::Buffer& lights, const Constants& constants,
+                              const vk::Buffer* transparent_bounds, LightTileGrid grid) const;
+
   LightCullingShape shape_;
   bool transparent_bounds_;
   // Per slot, as light_tiles_interface.glsl's Feedback: the dropped pairs, the entries wanted.
   vk::FrameBuffers feedback_;
   LightListPool pool_;
+  LightListPool coarse_pool_;  // of the coarse tiles' lists (workgroup_per_tile)
   uint64_t listed_pairs_ = 0;
   vk::UniqueSampler nearest_;
   vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;
+  vk::PipelineLayout coarse_layout_;  // workgroup_per_tile only
+  vk::UniquePipeline coarse_pipeline_;
 };
 
 }  // namespace sg

@@ -41,18 +41,23 @@ std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, u
       const glm::vec2 ndc_min = glm::vec2(tx * size, ty * size) * texel - 1.0f;
       const glm::vec2 ndc_max =
           glm::min(glm::vec2((tx + 1) * size, (ty + 1) * size) * texel - 1.0f, glm::vec2(1.0f));
-      const glm::vec4 sphere = glsl::tile_bounding_sphere(inverse, ndc_min, ndc_max, nearest, farthest);
-      const float hair = 1e-3f * sphere.w + 1e-4f;
+      const glsl::TileVolume volume = glsl::tile_volume(inverse, ndc_min, ndc_max, nearest, farthest);
+      // The GPU's rounding may differ: lights within a hair of the volume's bounds may go either way.
+      const float hair = 1e-3f * volume.sphere.w + 1e-4f;
+      const glm::vec4 inner(glm::vec3(volume.sphere), std::max(volume.sphere.w - hair, 0.0f));
+      const glm::vec4 outer(glm::vec3(volume.sphere), volume.sphere.w + hair);
       TileLightSets& sets = tiles[ty * across + tx];
       for (uint32_t i = 0; i < lights.size(); ++i) {
         glsl::Light light;
         std::memcpy(&light, &lights[i], sizeof(light));
-        if (glsl::light_reaches_sphere(light,
-                                       glm::vec4(glm::vec3(sphere), std::max(sphere.w - hair, 0.0f)))) {
-          sets.must.push_back(i);
-        }
-        if (glsl::light_reaches_sphere(light, glm::vec4(glm::vec3(sphere), sphere.w + hair)))
-          sets.may.push_back(i);
+        const auto meets_cone = [&](float margin) {
+          const uint32_t type = light.info.x;
+          const glm::vec4 bound(glm::vec3(light.position_range), light.position_range.w + margin);
+          return type == glsl::LIGHT_DIRECTIONAL || type == glsl::LIGHT_CYLINDER ||
+                 glsl::sphere_meets_tile_cone(bound, volume);
+        };
+        if (glsl::light_reaches_sphere(light, inner) && meets_cone(-hair)) sets.must.push_back(i);
+        if (glsl::light_reaches_sphere(light, outer) && meets_cone(hair)) sets.may.push_back(i);
       }
     }
   }

@@ -133,12 +133,14 @@ class LightTilesTest : public GpuTest {
     uint64_t asked = 0;    // LightTilesPass::listed_pairs
   };
   // Cullings of `lights` against `depth` on the device, `frames` one after another by one pass
-  // whose pool holds at most `most_pool_entries` (0: the device's limit), each frame's pool as
-  // the pass sizes it (LightTilesPass::pool_entries), read back.
+  // whose pools hold at most `most_pool_entries` and `most_coarse_entries` (0: the device's
+  // limit), each frame's pool as the pass sizes it (LightTilesPass::pool_entries), read back.
   std::vector<Culled> cull(const shadows::FrameLights& lights, LightCullingShape shape,
                            const std::vector<float>& depth, const glm::mat4& view_projection,
-                           uint32_t frames = 1, uint64_t most_pool_entries = 0);
-  void expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape);
+                           uint32_t frames = 1, uint64_t most_pool_entries = 0,
+                           uint64_t most_coarse_entries = 0);
+  void expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape,
+                                                       uint64_t most_coarse_entries = 0);
 };
 
 // Both shapes of the culling, whatever the device would pick.
@@ -148,6 +150,12 @@ TEST_F(LightTilesTest, ListsMatchABruteForceCpuAssignment) {
 
 TEST_F(LightTilesTest, ListsOfAnInvocationPerTileMatchABruteForceCpuAssignment) {
   expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::thread_per_tile);
+}
+
+// A coarse pool with no room for any coarse tile's list: each tile tests every light instead, and
+// lists the same.
+TEST_F(LightTilesTest, TilesWhoseCoarseListFoundNoRoomTestEveryLight) {
+  expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::workgroup_per_tile, 1);
 }
 
 // 300 point lights that reach everything on screen: how many (tile, light) pairs that asks of the
@@ -272,7 +280,8 @@ std::vector<LightTilesTest::Culled> LightTilesTest::cull(const shadows::FrameLig
                                                          LightCullingShape shape,
                                                          const std::vector<float>& depth,
                                                          const glm::mat4& view_projection, uint32_t frames,
-                                                         uint64_t most_pool_entries) {
+                                                         uint64_t most_pool_entries,
+                                                         uint64_t most_coarse_entries) {
   const LightTileGrid grid = LightTileGrid::of(width, height);
   vk::Image depth_image(context, {{width, height},
                                   VK_FORMAT_D32_SFLOAT,
@@ -288,7 +297,7 @@ std::vector<LightTilesTest::Culled> LightTilesTest::cull(const shadows::FrameLig
   upload.copy_to_image(depth_image, 1, std::as_bytes(std::span<const float>(depth)));
   upload.submit();
   vk::FrameRing ring(context);
-  LightTilesPass pass(context, ring.frames_in_flight(), shape, false, most_pool_entries);
+  LightTilesPass pass(context, ring.frames_in_flight(), shape, false, most_pool_entries, most_coarse_entries);
   EXPECT_EQ(pass.shape(), shape);
   const uint32_t light_count = uint32_t(lights.records.size());
   std::vector<Culled> culled;
@@ -334,13 +343,14 @@ std::vector<LightTilesTest::Culled> LightTilesTest::cull(const shadows::FrameLig
   return culled;
 }
 
-void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape) {
+void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape,
+                                                                     uint64_t most_coarse_entries) {
   const shadows::FrameLights lights = scattered_lights();
   const glm::mat4 view_projection =
       projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
   const std::vector<float> depth = scene_depth(view_projection);
   const LightTileGrid grid = LightTileGrid::of(width, height);
-  const Culled culled = cull(lights, shape, depth, view_projection).front();
+  const Culled culled = cull(lights, shape, depth, view_projection, 1, 0, most_coarse_entries).front();
   EXPECT_EQ(culled.dropped, 0u) << "the pool holds every list";
   const std::vector<uint32_t>& entries = culled.entries;
   const std::vector<glm::uvec2>& ranges = culled.ranges;

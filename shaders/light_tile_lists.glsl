@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// The tiles' lists, as light_tiles_interface.glsl describes them, for the shaders that write them
+// (light_tiles.comp, light_tiles_serial.comp).
+#ifndef SG_LIGHT_TILE_LISTS_GLSL
+#define SG_LIGHT_TILE_LISTS_GLSL
+
+#include "light_tiles_interface.glsl"
+
+// The pool of every tile's list, frame.counts.y entries.
+layout(std430, set = 0, binding = tile_lights_binding) writeonly buffer TileLights { uint tile_lights[]; };
+// Per tile and group: x the first entry in tile_lights, y how many.
+layout(std430, set = 0, binding = tile_ranges_binding) writeonly buffer TileRanges { uvec2 tile_ranges[]; };
+// Per group, tile_count slots: the tiles that have lights of the group, in no particular order.
+layout(std430, set = 0, binding = group_tiles_binding) writeonly buffer GroupTiles { uint group_tiles[]; };
+// Per group a VkDispatchIndirectCommand (x counts the group's tiles; y = z = 1), at a 16-byte
+// stride.
+layout(std430, set = 0, binding = group_commands_binding) buffer GroupCommands { uvec4 group_commands[]; };
+
+// Takes `wanted` entries of the pool for one tile's list: returns the first, and in `listed` how
+// many of them the pool holds (all of them unless it ran out this frame; the rest are counted as
+// dropped, and the CPU grows the pool for the frames after).
+uint take_entries(uint wanted, out uint listed) {
+  listed = 0u;
+  if (wanted == 0u) return 0u;
+  uint first = atomicAdd(entries_wanted, wanted);
+  listed = first >= frame.counts.y ? 0u : min(wanted, frame.counts.y - first);
+  if (listed < wanted) atomicAdd(dropped_pairs, wanted - listed);
+  return first;
+}
+
+// Records that `tile`'s lights of `group` are the `count` entries of the pool from `first` on,
+// and, when there are any, lists the tile for the group's dispatch.
+void publish_group_range(uint tile, uint group, uint first, uint count) {
+  tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(first, count);
+  if (count == 0u) return;
+  uint k = atomicAdd(group_commands[group].x, 1u);
+  group_tiles[group * frame.screen.w + k] = tile;
+}
+
+#endif

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// variant transparent TRANSPARENT_BOUNDS
+// The coarse pass of light culling on GPUs (light_tiles_coarse.glsl says what it writes): one
+// workgroup per coarse tile, its threads bounding the tiles' depths, then testing the lights side
+// by side against a volume around the tiles'.
+#include "light_tile_bounds.glsl"
+#include "light_tiles_coarse.glsl"
+
+// SIDE x SIDE threads, each reading a block of BLOCK x BLOCK pixels: a tile is TILE_BLOCKS x
+// TILE_BLOCKS of them.
+const uint SIDE = 16u;
+layout(local_size_x = SIDE, local_size_y = SIDE) in;
+const uint THREADS = SIDE * SIDE;
+const uint BLOCK = LIGHT_COARSE_SIDE * LIGHT_TILE_SIZE / SIDE;
+const uint TILE_BLOCKS = LIGHT_TILE_SIZE / BLOCK;
+const uint TILES = LIGHT_COARSE_SIDE * LIGHT_COARSE_SIDE;
+
+#include "light_list_slots.glsl"
+
+shared float block_nearest[THREADS];
+shared float block_farthest[THREADS];
+shared TileVolume volumes[TILES];
+shared TileVolume coarse_volume;
+shared uint coarse_first;
+
+// Thread `local` (< TILES), once every block is bounded: its tile's depth bounds from the tile's
+// blocks, and the volume they bound, also written to tile_volumes.
+TileVolume bound_tile(uint local) {
+  TileVolume volume;
+  volume.sphere.w = NO_SURFACES;
+  uvec2 in_coarse = uvec2(local % LIGHT_COARSE_SIDE, local / LIGHT_COARSE_SIDE);
+  uvec2 tile_xy = gl_WorkGroupID.xy * LIGHT_COARSE_SIDE + in_coarse;
+  if (tile_xy.x >= frame.screen.z || tile_xy.y >= frame.screen.w / frame.screen.z) return volume;
+  // Reversed depths (camera_depth.glsl): the nearest surface has the greatest.
+  float nearest = CAMERA_FAR_DEPTH;
+  float farthest = 1.0;
+  for (uint k = 0u; k < TILE_BLOCKS * TILE_BLOCKS; ++k) {
+    uvec2 block = in_coarse * TILE_BLOCKS + uvec2(k % TILE_BLOCKS, k / TILE_BLOCKS);
+    nearest = max(nearest, block_nearest[block.y * SIDE + block.x]);
+    farthest = min(farthest, block_farthest[block.y * SIDE + block.x]);
+  }
+  uint tile = tile_xy.y * frame.screen.z + tile_xy.x;
+  bound_by_transparent_surfaces(tile, nearest, farthest);
+  if (!is_background_depth(nearest)) volume = visible_volume_of_tile(tile_xy, nearest, farthest);
+  tile_volumes[tile] = volume;
+  return volume;
+}
+
+// Thread 0, once every tile is bounded: the volume around the tiles' volumes (the sphere around
+// their spheres, the cone around their cones, the shells around theirs), a hair wider so that
+// rounding never lets a light reach a tile but miss this volume; sphere.w is NO_SURFACES where no
+// tile has any.
+TileVolume volume_around_tiles() {
+  TileVolume around;
+  around.sphere.w = NO_SURFACES;
+  vec3 low = vec3(3.0e38);
+  vec3 high = vec3(-3.0e38);
+  vec3 axis = vec3(0.0);
+  vec2 shells = vec2(3.0e38, 0.0);
+  for (uint t = 0u; t < TILES; ++t) {
+    TileVolume tile = volumes[t];
+    if (tile.sphere.w < 0.0) continue;
+    low = min(low, tile.sphere.xyz - tile.sphere.w);
+    high = max(high, tile.sphere.xyz + tile.sphere.w);
+    axis += tile.axis_cos.xyz;
+    shells = vec2(min(shells.x, tile.shells.x), max(shells.y, tile.shells.y));
+    around.apex_sin.xyz = tile.apex_sin.xyz;
+  }
+  if (low.x > high.x) return around;
+  vec3 centre = 0.5 * (low + high);
+  axis = normalize(axis);
+  float radius = 0.0;
+  float half_angle = 0.0;
+  for (uint t = 0u; t < TILES; ++t) {
+    TileVolume tile = volumes[t];
+    if (tile.sphere.w < 0.0) continue;
+    radius = max(radius, length(tile.sphere.xyz - centre) + tile.sphere.w);
+    half_angle = max(half_angle, acos(clamp(dot(axis, tile.axis_cos.xyz), -1.0, 1.0)) + acos(tile.axis_cos.w));
+  }
+  // acos near 1 is good to about 4e-4 radians in floats.
+  half_angle = min(half_angle + 1.0e-3, 3.14159);
+  around.sphere = vec4(centre, radius * 1.0001 + 1.0e-4);
+  around.apex_sin.w = sin(half_angle);
+  around.axis_cos = vec4(axis, cos(half_angle));
+  around.shells = vec4(shells.x * 0.9999 - 1.0e-4, shells.y * 1.0001 + 1.0e-4, 0.0, 0.0);
+  return around;
+}
+
+void main() {
+  uint local = gl_LocalInvocationIndex;
+  float nearest = CAMERA_FAR_DEPTH;
+  float farthest = 1.0;
+  uvec2 origin = gl_WorkGroupID.xy * (SIDE * BLOCK) + gl_LocalInvocationID.xy * BLOCK;
+  for (uint k = 0u; k < BLOCK * BLOCK; ++k) {
+    ivec2 pixel = ivec2(origin + uvec2(k % BLOCK, k / BLOCK));
+    if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) bound_by_pixel(pixel, nearest, farthest);
+  }
+  block_nearest[local] = nearest;
+  block_farthest[local] = farthest;
+  barrier();
+  if (local < TILES) volumes[local] = bound_tile(local);
+  barrier();
+  if (local == 0u) coarse_volume = volume_around_tiles();
+  barrier();
+
+  // Lights in ordered chunks, one per thread, as the tiles' pass lists them.
+  TileVolume volume = coarse_volume;
+  uvec2 chunk = thread_chunk(local, volume.sphere.w < 0.0 ? 0u : frame.counts.x);
+  uint count = 0u;
+  for (uint i = chunk.x; i < chunk.y; ++i) {
+    if (light_reaches_tile(lights[i], volume)) ++count;
+  }
+  first_slot[local] = count;
+  barrier();
+  if (local == 0u) {
+    uint sum = place_thread_counts();
+    uint first = sum == 0u ? 0u : atomicAdd(coarse_wanted, sum);
+    bool fits = first <= frame.counts.z && sum <= frame.counts.z - first;
+    coarse_ranges[gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x] =
+        fits ? uvec2(first, sum) : uvec2(0u, EVERY_LIGHT);
+    coarse_first = fits ? first : EVERY_LIGHT;
+  }
+  barrier();
+  if (coarse_first == EVERY_LIGHT) return;
+  uint slot = coarse_first + first_slot[local];
+  for (uint i = chunk.x; i < chunk.y; ++i) {
+    if (light_reaches_tile(lights[i], volume)) coarse_lights[slot++] = i;
+  }
+}
