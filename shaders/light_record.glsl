@@ -40,16 +40,16 @@ struct Light {
   vec4 position_range;        // xyz: world position (point, spot, cylinder); w: range R (point, spot; 0 otherwise)
   vec4 direction_type;        // xyz: unit direction the light travels (spot, directional, cylinder);
                               // w: its contact shadows' length, world units (0: none)
-  vec4 color_intensity;       // rgb: linear color; a: intensity
-  vec4 shape;                 // spot: x cos(inner), y cos(outer); cylinder: z inner radius r, w outer radius R;
-                              // cascaded directional: x the first cascade's record, y the cascades in use
-  vec4 shadow_color_density;  // rgb: shadow color sc; a: density
-  vec4 shadow_bias;           // x: constant bias b0, y: slope bias b1, z: pcf radius (texels), w: light size (world units)
   uvec4 info;                 // x: type (LIGHT_*); y: bits 0-7 falloff (FALLOFF_*), bits 8-15 the layers
                               // it lights (ShadowSettings::light_mask); z: bits 0-7 algorithm (SHADOW_*),
                               // then its kernel's sizes (KERNEL_*);
                               // w: the shadow atlas layer of its map (or of all six cube faces), NO_SHADOW_MAP
                               // or CASCADED_SHADOW_MAPS
+  vec4 shape;                 // spot: x cos(inner), y cos(outer); cylinder: z inner radius r, w outer radius R;
+                              // cascaded directional: x the first cascade's record, y the cascades in use
+  vec4 shadow_color_density;  // rgb: shadow color sc; a: density
+  vec4 shadow_bias;           // x: constant bias b0, y: slope bias b1, z: pcf radius (texels), w: light size (world units)
+  vec4 color_intensity;       // rgb: linear color; a: intensity
   vec4 shadow_rect;           // xy: 2D maps' uv offset in the layer; zw: uv scale of its (each face's) tile
   vec4 shadow_depth;          // x: near, y: far, z: texel size in uv of the light's map (1/resolution),
                               // w: 0 perspective, 1 orthographic

@@ -32,11 +32,11 @@ Light light_at(uint index) {
   Light light;
   light.position_range = uintBitsToFloat(texelFetch(light_records, first));
   light.direction_type = uintBitsToFloat(texelFetch(light_records, first + 1));
-  light.color_intensity = uintBitsToFloat(texelFetch(light_records, first + 2));
+  light.info = texelFetch(light_records, first + 2);
   light.shape = uintBitsToFloat(texelFetch(light_records, first + 3));
   light.shadow_color_density = uintBitsToFloat(texelFetch(light_records, first + 4));
   light.shadow_bias = uintBitsToFloat(texelFetch(light_records, first + 5));
-  light.info = texelFetch(light_records, first + 6);
+  light.color_intensity = uintBitsToFloat(texelFetch(light_records, first + 6));
   light.shadow_rect = uintBitsToFloat(texelFetch(light_records, first + 7));
   light.shadow_depth = uintBitsToFloat(texelFetch(light_records, first + 8));
   light.shadow_matrix[0] = uintBitsToFloat(texelFetch(light_records, first + 9));
