@@ -78,7 +78,7 @@ class LightTilesPass {
 
   // After FrameRing::begin_frame returned `slot`, before add_to: the (tile, light) pairs the frame
   // that last used the slot could not list (its pool ran out), zeroed for this frame. What that
-  // frame's lists asked of the pool sizes the pool of the frames after.
+  // frame's lists, and its coarse tiles' lists, asked of their pools sizes them for the frames after.
   uint64_t take_dropped_pairs(uint32_t slot);
   // What the frame the last take_dropped_pairs read back asked of the pool: the (tile, light)
   // pairs its lists held, dropped ones included, which the lighting's cost follows.
