@@ -125,12 +125,18 @@ bool light_reaches_sphere(Light light, vec4 sphere) {
   return beyond_cone <= sphere.w && along >= -sphere.w;
 }
 
-// Whether `light` can reach anything in `tile`: its reach meets the tile's sphere, and the sphere of
-// its range (point and spot lights) meets the tile's cone.
-bool light_reaches_tile(Light light, TileVolume tile) {
-  if (!light_reaches_sphere(light, tile.sphere)) return false;
+// Whether the sphere of `light`'s range, grown by `margin`, meets the tile's cone; directional and
+// cylinder lights, which have no range, always do.
+bool light_range_meets_tile_cone(Light light, TileVolume tile, float margin) {
   uint type = light.info.x;
-  return type == LIGHT_DIRECTIONAL || type == LIGHT_CYLINDER || sphere_meets_tile_cone(light.position_range, tile);
+  if (type == LIGHT_DIRECTIONAL || type == LIGHT_CYLINDER) return true;
+  return sphere_meets_tile_cone(vec4(vec3(light.position_range), light.position_range.w + margin), tile);
+}
+
+// Whether `light` can reach anything in `tile`: its reach meets the tile's sphere, and the sphere of
+// its range meets the tile's cone.
+bool light_reaches_tile(Light light, TileVolume tile) {
+  return light_reaches_sphere(light, tile.sphere) && light_range_meets_tile_cone(light, tile, 0.0f);
 }
 
 #endif

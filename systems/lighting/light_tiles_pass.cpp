@@ -119,6 +119,9 @@ std::vector<VkDescriptorSetLayoutBinding> coarse_bindings(bool transparent_bound
 
 constexpr Feedback no_feedback{};
 
+// shaders/light_tiles.glsl's TileVolume: four vec4.
+constexpr uint64_t tile_volume_bytes = 4 * sizeof(glm::vec4);
+
 }  // namespace
 
 // light_tiles_interface.glsl's push constants.
@@ -215,12 +218,11 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, uint32_t slot, rg::Ima
         });
     return commands;
   }();
-  const LightTileGrid coarse = grid.coarse();
-  const Constants constants{
-      glm::inverse(view_projection),
-      {screen.width, screen.height, grid.across, grid.count()},
-      {light_count, uint32_t(pool_entries), uint32_t(coarse_pool_.entries(coarse.count(), light_count)), 0u}};
   const bool serial = shape_ == LightCullingShape::thread_per_tile;
+  const uint64_t coarse_entries = serial ? 0 : coarse_pool_.entries(grid.coarse().count(), light_count);
+  const Constants constants{glm::inverse(view_projection),
+                            {screen.width, screen.height, grid.across, grid.count()},
+                            {light_count, uint32_t(pool_entries), uint32_t(coarse_entries), 0u}};
   CoarseLists lists;
   if (!serial) lists = add_coarse_pass(graph, slot, depth, lights, constants, transparent_bounds, grid);
   LightTiles out;
@@ -288,7 +290,7 @@ LightTilesPass::CoarseLists LightTilesPass::add_coarse_pass(rg::RenderGraph& gra
         const auto output = [&](const char* name, uint64_t bytes) {
           return b.write(b.create_buffer(name, {bytes}), rg::Usage::storage_compute);
         };
-        out.volumes = output("tile volumes", uint64_t{grid.count()} * 4 * sizeof(glm::vec4));  // TileVolume
+        out.volumes = output("tile volumes", uint64_t{grid.count()} * tile_volume_bytes);
         out.lights = output("coarse lights", uint64_t{constants.counts.z} * sizeof(uint32_t));
         out.ranges = output("coarse ranges", uint64_t{coarse.count()} * sizeof(glm::uvec2));
         return out;

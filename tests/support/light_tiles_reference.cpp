@@ -50,14 +50,14 @@ std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, u
       for (uint32_t i = 0; i < lights.size(); ++i) {
         glsl::Light light;
         std::memcpy(&light, &lights[i], sizeof(light));
-        const auto meets_cone = [&](float margin) {
-          const uint32_t type = light.info.x;
-          const glm::vec4 bound(glm::vec3(light.position_range), light.position_range.w + margin);
-          return type == glsl::LIGHT_DIRECTIONAL || type == glsl::LIGHT_CYLINDER ||
-                 glsl::sphere_meets_tile_cone(bound, volume);
-        };
-        if (glsl::light_reaches_sphere(light, inner) && meets_cone(-hair)) sets.must.push_back(i);
-        if (glsl::light_reaches_sphere(light, outer) && meets_cone(hair)) sets.may.push_back(i);
+        if (glsl::light_reaches_sphere(light, inner) &&
+            glsl::light_range_meets_tile_cone(light, volume, -hair)) {
+          sets.must.push_back(i);
+        }
+        if (glsl::light_reaches_sphere(light, outer) &&
+            glsl::light_range_meets_tile_cone(light, volume, hair)) {
+          sets.may.push_back(i);
+        }
       }
     }
   }
