@@ -57,9 +57,8 @@ void main() {
   // same every frame.
   uvec2 chunk = thread_chunk(local, candidates);
   first_slot[local] = count_candidates(coarse, chunk, volume, 0u);
-  barrier();
+  uint sum = place_thread_counts(local);
   if (local == 0u) {
-    uint sum = place_thread_counts();
     tile_first = take_entries(sum, tile_listed);
     tile_wanted = sum;
     search_low = 0u;
@@ -77,9 +76,9 @@ void main() {
       if (low >= high) break;
       uint middle = low + (high - low) / 2u;
       first_slot[local] = count_candidates(coarse, chunk, volume, middle);
-      barrier();
+      uint kept = place_thread_counts(local);
       if (local == 0u) {
-        if (place_thread_counts() <= tile_listed) {
+        if (kept <= tile_listed) {
           search_high = middle;
         } else {
           search_low = middle + 1u;
@@ -89,11 +88,10 @@ void main() {
     }
     least = search_low;
     first_slot[local] = count_candidates(coarse, chunk, volume, least);
-    barrier();
+    uint kept = place_thread_counts(local);
     if (local == 0u) {
-      uint sum = place_thread_counts();
       // Lights worth exactly the least kept may not all fit: those left out count as dropped too.
-      if (sum < tile_listed) atomicAdd(dropped_pairs, tile_listed - sum);
+      if (kept < tile_listed) atomicAdd(dropped_pairs, tile_listed - kept);
     }
     barrier();
   }
