@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// variant storage_records LIGHT_RECORDS_IN_STORAGE
 // Ranked shadow filtering's floor, every pixel, before the light groups' passes: the shadow
 // weight (light_shading.glsl) of the FILTERED_LIGHTS-th heaviest of the tile's lights that filter
 // (the groups of pcf, noise, pcss and pcss_noise), written to the lit sum's alpha

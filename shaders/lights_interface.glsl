@@ -20,9 +20,19 @@ uint light_type(Light light) {
   return light.info.x;
 }
 
-// Every light of the frame (sg::shadows::GpuLight on the C++ side), its 208 bytes as 13 texels
-// of a uniform texel buffer (light_resources.h says why not a storage buffer). light_at(i) is the
-// i-th record; its members lie at the offsets of Light's std430 layout, 16 bytes a texel.
+// Every light of the frame (sg::shadows::GpuLight on the C++ side): light_at(i) is the i-th record.
+#ifdef LIGHT_RECORDS_IN_STORAGE
+// A storage buffer, in a shader's storage_records variant (LightRecordsIn in
+// systems/lighting/lighting_path.h says which passes take it where): the lanes of a GPU's warp
+// that read one light's record load it once, where 13 texel fetches go through the texture units
+// for every lane.
+layout(std430, set = 0, binding = lights_binding) readonly buffer LightRecords { Light light_records[]; };
+
+Light light_at(uint index) { return light_records[index]; }
+#else
+// 208 bytes as 13 texels of a uniform texel buffer: llvmpipe fetches texels for all lanes at once,
+// where it loads storage-buffer words lane by lane, one loop per load. The members lie at the
+// offsets of Light's std430 layout, 16 bytes a texel.
 layout(set = 0, binding = lights_binding) uniform usamplerBuffer light_records;
 
 const int LIGHT_RECORD_TEXELS = 13;
@@ -45,6 +55,7 @@ Light light_at(uint index) {
   light.shadow_matrix[3] = uintBitsToFloat(texelFetch(light_records, first + 12));
   return light;
 }
+#endif
 
 // Every shadow map: one depth array of atlas pages; a 2D map is the tile shadow_rect of layer
 // info.w, a point light's cube six tiles of that layer (light_record.glsl).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// variant storage_records LIGHT_RECORDS_IN_STORAGE
 // What the lit frame's shadows were, light by light, for measuring them (tools/reference's
 // whole-frame mode; systems/lighting/shadow_probe.h): after the light groups' passes, each pixel
 // walks its tile's lights of every group and, for each whose shadow can change the pixel

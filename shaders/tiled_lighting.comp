@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// variant storage_records LIGHT_RECORDS_IN_STORAGE
 // Tiled deferred lighting of one light group in compute (tiled_lighting.glsl): one workgroup per
 // tile that has lights of the group (light_tiles.comp's list; an indirect dispatch), each
 // invocation one pixel, adding the group's lights to the lit sum. With RANKED_FILTERING the lit

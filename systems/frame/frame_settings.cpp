@@ -72,7 +72,8 @@ std::vector<Setting<S>> make_table() {
       "naive", [](auto& s) -> auto& { return s.naive; },
       "the source documents' frame as a baseline: a pass per shadow view and six per cube, "
       "every map every frame, every caster in every shadow view, every light at every pixel");
-  naive.info.excludes = {"lighting", "lit-sum-start", "cube-shadows", "shadow-views", "shadow-cache"};
+  naive.info.excludes = {"lighting",     "lit-sum-start", "light-records",
+                         "cube-shadows", "shadow-views",  "shadow-cache"};
   return {
       whole<S>(
           "width", "W", [](auto& s) -> auto& { return s.width; }, 1, 16384, "output width in pixels"),
@@ -199,6 +200,11 @@ std::vector<Setting<S>> make_table() {
           "lit-sum-start", [](auto& s) -> auto& { return s.renderer.lit_sum_start; },
           "where deferred lighting starts the lit sum (ambient term, background): a full-screen "
           "pass, or a G-buffer target (auto: the G-buffer on CPU devices, the pass on GPUs)"),
+      choice<S>(
+          "light-records", [](auto& s) -> auto& { return s.renderer.light_records; },
+          "how deferred lighting reads the light records: from a storage buffer, or through a "
+          "texel buffer (auto: storage on GPUs, texel on CPU devices, whose storage loads go lane "
+          "by lane)"),
       ambient,
       number<S>(
           "exposure", "E", [](auto& s) -> auto& { return s.renderer.exposure; }, 1e-3, 1e3,

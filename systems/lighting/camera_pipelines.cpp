@@ -18,7 +18,7 @@ std::vector<VkDescriptorSetLayoutBinding> lit_camera_bindings(
                               VK_SHADER_STAGE_VERTEX_BIT | fragment, nullptr},
                              {bindings::material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                               1, fragment, nullptr}});
-  return LightResources::bindings(fragment, std::move(more));
+  return LightResources::bindings(LightRecordsIn::texel_buffer, fragment, std::move(more));
 }
 
 vk::GraphicsPipelineDesc camera_pipeline_desc(std::span<const uint32_t> fragment,

@@ -52,7 +52,7 @@ void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer
       atlas.views().get({0, 1, 0, atlas.array_layers(), VK_IMAGE_VIEW_TYPE_2D_ARRAY});
   vk::DescriptorWriter writer = layout_.write(slot_sets_.sets[slot]);
   writer.buffer(instances_binding, scene.instances(slot).handle());
-  light_resources_.write(writer, lights.texel_view(), atlas_view).update();
+  light_resources_.write(writer, lights, atlas_view).update();
 }
 
 ForwardTargets ForwardPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t height,

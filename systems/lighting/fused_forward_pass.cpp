@@ -70,7 +70,7 @@ FusedTargets FusedForwardPass::add_to(rg::RenderGraph& graph, rg::ImageHandle de
         vk::DescriptorWriter writer = layout_.write(rec.allocate_set(layout_));
         writer.buffer(instances_binding, scene.instances(slot).handle())
             .image(material_textures_binding, textures_.array().view(), textures_.sampler());
-        const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+        const VkDescriptorSet set = light_resources_.write(writer, lights, rec, atlas).update();
         scene.draw_camera_pass(rec, pipelines, layout_, set, constants, slot);
       });
   return targets;

@@ -2,6 +2,7 @@
 #include "systems/lighting/light_resources.h"
 
 #include "rendergraph/device/context.h"
+#include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "systems/gpu/shader_bindings.h"
@@ -21,29 +22,43 @@ VkFilter compare_filter(const vk::VulkanContext& context) {
 
 }  // namespace
 
-LightResources::LightResources(const vk::VulkanContext& context)
-    : nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
+LightRecordsIn resolved(LightRecordsIn records, const vk::VulkanContext& context) {
+  if (records != LightRecordsIn::automatic) return records;
+  return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? LightRecordsIn::texel_buffer
+                                                                        : LightRecordsIn::storage_buffer;
+}
+
+LightResources::LightResources(const vk::VulkanContext& context, LightRecordsIn records)
+    : records_(resolved(records, context)),
+      nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       compare_(vk::create_sampler(context.device(), compare_filter(context), true)) {}
 
 std::vector<VkDescriptorSetLayoutBinding> LightResources::bindings(
-    VkShaderStageFlags stages, std::vector<VkDescriptorSetLayoutBinding> more) {
+    LightRecordsIn records, VkShaderStageFlags stages, std::vector<VkDescriptorSetLayoutBinding> more) {
   using namespace bindings;
+  const VkDescriptorType records_type = records == LightRecordsIn::storage_buffer
+                                            ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
+                                            : VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
   more.insert(more.begin(),
-              {{lights_binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1, stages},
+              {{lights_binding, records_type, 1, stages},
                {shadow_maps_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages},
                {shadow_maps_compare_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages}});
   return more;
 }
 
-vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBufferView lights,
+vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, const vk::Buffer& lights,
                                             VkImageView atlas) const {
   using namespace bindings;
-  return writer.texel_buffer(lights_binding, lights)
-      .image(shadow_maps_binding, atlas, nearest_.get())
+  if (records_ == LightRecordsIn::storage_buffer) {
+    writer.buffer(lights_binding, lights.handle());
+  } else {
+    writer.texel_buffer(lights_binding, lights.texel_view());
+  }
+  return writer.image(shadow_maps_binding, atlas, nearest_.get())
       .image(shadow_maps_compare_binding, atlas, compare_.get());
 }
 
-vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, VkBufferView lights,
+vk::DescriptorWriter& LightResources::write(vk::DescriptorWriter& writer, const vk::Buffer& lights,
                                             const vk::PassRecorder& rec, rg::ImageHandle atlas) const {
   return write(writer, lights, rec.view(atlas, rg::SubresourceRange::all(), VK_IMAGE_VIEW_TYPE_2D_ARRAY));
 }

@@ -12,30 +12,39 @@
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
+#include "systems/lighting/lighting_path.h"
 
 namespace sg {
 
-// The lighting shaders read the records through a uniform texel buffer, a record being 16-byte
-// texels (lights_interface.glsl): llvmpipe fetches texels for all lanes at once, where it loads
-// storage-buffer words lane by lane, one loop per load.
+// The records' texel format where a shader reads them through a texel buffer (LightRecordsIn).
 inline constexpr VkFormat light_record_texel_format = VK_FORMAT_R32G32B32A32_UINT;
+
+// `records` for the context's device: automatic is the storage buffer on GPUs, the texel buffer on
+// CPU devices.
+LightRecordsIn resolved(LightRecordsIn records, const vk::VulkanContext& context);
 
 class LightResources {
  public:
-  explicit LightResources(const vk::VulkanContext& context);
+  // `records` resolved (an automatic one as resolved() does).
+  explicit LightResources(const vk::VulkanContext& context,
+                          LightRecordsIn records = LightRecordsIn::texel_buffer);
 
-  // The bindings, visible to `stages`, followed by a pass's own `more`.
-  static std::vector<VkDescriptorSetLayoutBinding> bindings(VkShaderStageFlags stages,
+  LightRecordsIn records() const { return records_; }
+
+  // The bindings for `records` (resolved), visible to `stages`, followed by a pass's own `more`.
+  static std::vector<VkDescriptorSetLayoutBinding> bindings(LightRecordsIn records, VkShaderStageFlags stages,
                                                             std::vector<VkDescriptorSetLayoutBinding> more);
 
-  // Writes the records (`lights`, the texel view of the records' buffer, texel format
+  // Writes the records (`lights`, the records' buffer; made with a texel view of format
   // light_record_texel_format) and the shadow atlas (`atlas`, a 2D array view of every page).
-  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBufferView lights, VkImageView atlas) const;
+  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, const vk::Buffer& lights,
+                              VkImageView atlas) const;
   // The same inside a pass that declared the shadow atlas `atlas` of its graph.
-  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, VkBufferView lights, const vk::PassRecorder& rec,
-                              rg::ImageHandle atlas) const;
+  vk::DescriptorWriter& write(vk::DescriptorWriter& writer, const vk::Buffer& lights,
+                              const vk::PassRecorder& rec, rg::ImageHandle atlas) const;
 
  private:
+  LightRecordsIn records_;
   vk::UniqueSampler nearest_;
   vk::UniqueSampler compare_;
 };

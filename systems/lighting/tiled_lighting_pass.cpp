@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "systems/lighting/tiled_lighting_pass.h"
 
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,8 +12,11 @@
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/lighting_ambient.comp.spv.h"
 #include "shaders/lighting_filter_floor.comp.spv.h"
+#include "shaders/lighting_filter_floor_storage_records.comp.spv.h"
 #include "shaders/shadow_probe.comp.spv.h"
+#include "shaders/shadow_probe_storage_records.comp.spv.h"
 #include "shaders/tiled_lighting.comp.spv.h"
+#include "shaders/tiled_lighting_storage_records.comp.spv.h"
 #include "systems/gpu/scene_gpu_types.h"
 #include "systems/gpu/shader_bindings.h"
 
@@ -50,6 +54,13 @@ LightingConstants with_group_light(LightingConstants constants, uint32_t light) 
   return constants;
 }
 
+// A shader's SPIR-V for where the pass reads the light records: its storage_records variant from
+// a storage buffer.
+std::span<const uint32_t> for_records(LightRecordsIn records, std::span<const uint32_t> texel_buffer,
+                                      std::span<const uint32_t> storage_buffer) {
+  return records == LightRecordsIn::storage_buffer ? storage_buffer : texel_buffer;
+}
+
 bool starts_in_gbuffer(LitSumStart start, const vk::VulkanContext& context) {
   if (start != LitSumStart::automatic) return start == LitSumStart::gbuffer;
   return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
@@ -57,10 +68,11 @@ bool starts_in_gbuffer(LitSumStart start, const vk::VulkanContext& context) {
 
 }  // namespace
 
-TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart start, uint32_t filtered_lights)
+TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart start, uint32_t filtered_lights,
+                                     LightRecordsIn records)
     : context_(context),
       lit_sum_from_gbuffer_(starts_in_gbuffer(start, context)),
-      light_resources_(context),
+      light_resources_(context, records),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       ambient_layout_(context.device(),
                       {{gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
@@ -74,7 +86,7 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
               : vk::UniquePipeline{}),
       layout_(context.device(),
               LightResources::bindings(
-                  compute_stage,
+                  light_resources_.records(), compute_stage,
                   {{scene_depth_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
                    {gbuffer_normal_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
                    {gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
@@ -93,7 +105,9 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
   // constant_id 0 to 5 as a group pass's (every light type: 0xF), 6: the lights a pixel filters.
   const std::vector<uint32_t> constants{0u, 0u, 0u, 0xFu, 0u, 0u, filtered_lights_};
   filter_floor_pipeline_ = vk::create_compute_pipeline(
-      context, {lighting_filter_floor_comp, constants, layout_.get(), "lighting filter floor"});
+      context, {for_records(light_resources_.records(), lighting_filter_floor_comp,
+                            lighting_filter_floor_storage_records_comp),
+                constants, layout_.get(), "lighting filter floor"});
 }
 
 void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView view) {
@@ -105,8 +119,10 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
   if (probing_ && !probe_pipelines_[ranked]) {
     // constant_id 0 to 5 as a group pass's, with every light type and the view lit.
     const std::vector<uint32_t> constants{0u, 0u, 0u, 0xFu, 0u, ranked};
-    probe_pipelines_[ranked] =
-        vk::create_compute_pipeline(context_, {shadow_probe_comp, constants, layout_.get(), "shadow probe"});
+    probe_pipelines_[ranked] = vk::create_compute_pipeline(
+        context_,
+        {for_records(light_resources_.records(), shadow_probe_comp, shadow_probe_storage_records_comp),
+         constants, layout_.get(), "shadow probe"});
   }
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
     const uint32_t types = lights.group_types[group];  // bit t for type t (lights_interface.glsl)
@@ -125,7 +141,10 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
     const std::vector<uint32_t> constants{group,  static_cast<uint32_t>(view), 0u, types, single, ranked, 0u,
                                           contact};
     const std::string name = "tiled lighting " + group_name(group);
-    pipeline = vk::create_compute_pipeline(context_, {tiled_lighting_comp, constants, layout_.get(), name});
+    pipeline = vk::create_compute_pipeline(
+        context_,
+        {for_records(light_resources_.records(), tiled_lighting_comp, tiled_lighting_storage_records_comp),
+         constants, layout_.get(), name});
     current_[group] = pipeline.get();
   }
 }
@@ -189,7 +208,7 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
         .buffer(group_tiles_binding, rec.buffer(tiles.tiles))
         .image(hdr_binding, rec.view(lit_sum), VK_NULL_HANDLE, VK_IMAGE_LAYOUT_GENERAL);
     if (probe != VK_NULL_HANDLE) writer.buffer(shadow_probe_binding, probe);
-    const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+    const VkDescriptorSet set = light_resources_.write(writer, lights, rec, atlas).update();
     vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
     layout_.bind_compute(rec.cmd(), set);
     layout_.push(rec.cmd(), constants);

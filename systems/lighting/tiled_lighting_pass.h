@@ -34,8 +34,10 @@ class TiledLightingPass {
  public:
   // `start` automatic is resolved for the context's device (lit_sum_from_gbuffer() says how).
   // `filtered_lights`: at each pixel, the most lights that run their own filter kernels; 0: all.
+  // `records`: how the shaders read the light records, automatic resolved for the device.
   explicit TiledLightingPass(vk::VulkanContext& context, LitSumStart start = LitSumStart::automatic,
-                             uint32_t filtered_lights = 0);
+                             uint32_t filtered_lights = 0,
+                             LightRecordsIn records = LightRecordsIn::automatic);
 
   // Picks, and compiles when first needed, the pipeline of each group that has lights in
   // `lights` (sorted by group): each holds one algorithm's shadow code and only the code of the

@@ -110,7 +110,7 @@ rg::ImageHandle TransparentPass::add_to(rg::RenderGraph& graph, rg::ImageHandle 
           writer.buffer(tile_lights_binding, rec.buffer(tiles->lights))
               .buffer(tile_ranges_binding, rec.buffer(tiles->ranges));
         }
-        const VkDescriptorSet set = light_resources_.write(writer, lights.texel_view(), rec, atlas).update();
+        const VkDescriptorSet set = light_resources_.write(writer, lights, rec, atlas).update();
         scene.draw_transparent(rec, pipelines, layout, set, constants);
       });
   return target;

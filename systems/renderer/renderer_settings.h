@@ -28,7 +28,8 @@ struct RendererSettings {
   shadows::LightOverrides lights;
   shadows::CubeShadowMode cube_shadows = shadows::CubeShadowMode::layered;
   LightingPath lighting = LightingPath::automatic;
-  LitSumStart lit_sum_start = LitSumStart::automatic;  // the deferred path's
+  LitSumStart lit_sum_start = LitSumStart::automatic;        // the deferred path's
+  LightRecordsIn light_records = LightRecordsIn::automatic;  // the deferred path's
   bool cull_casters = true;  // off: every shadow view draws every caster (the naive baseline)
   // Batched falls back to per-light where the device cannot draw views into atlas layers at once.
   shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;

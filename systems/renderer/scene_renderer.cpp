@@ -95,7 +95,8 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
     case LightingPath::deferred: {
       TiledLightingPass lighting(
           context, settings.lit_sum_start,
-          or_device_default(settings.filtered_lights, context, default_gpu_filtered_lights));
+          or_device_default(settings.filtered_lights, context, default_gpu_filtered_lights),
+          settings.light_records);
       if (lighting.filtered_lights() > 0) {
         std::printf(
             "shadowgraph: at each pixel the %u lights adding most to it run their shadow filters, the others "

@@ -131,6 +131,11 @@ TEST(SandboxOptions, LightingOptions) {
   EXPECT_EQ(defaults.frame.renderer.lit_sum_start, LitSumStart::automatic);
   EXPECT_EQ(parse_ok({"--lit-sum-start", "pass"}).frame.renderer.lit_sum_start, LitSumStart::pass);
   EXPECT_EQ(parse_ok({"--lit-sum-start", "gbuffer"}).frame.renderer.lit_sum_start, LitSumStart::gbuffer);
+  EXPECT_EQ(defaults.frame.renderer.light_records, LightRecordsIn::automatic);
+  EXPECT_EQ(parse_ok({"--light-records", "storage"}).frame.renderer.light_records,
+            LightRecordsIn::storage_buffer);
+  EXPECT_EQ(parse_ok({"--light-records", "texel"}).frame.renderer.light_records,
+            LightRecordsIn::texel_buffer);
   EXPECT_EQ(parse_ok({"--lighting", "deferred", "--exposure", "0.5"}).frame.renderer.exposure, 0.5f);
   EXPECT_TRUE(parse_ok({"--naive"}).frame.naive);
   for (const std::vector<std::string>& bad : {std::vector<std::string>{"--lighting", "raytraced"},
@@ -138,6 +143,8 @@ TEST(SandboxOptions, LightingOptions) {
                                               {"--naive", "--lighting", "deferred"},
                                               {"--deferred-passes", "compute"},
                                               {"--naive", "--lit-sum-start", "pass"},
+                                              {"--light-records", "uniform"},
+                                              {"--naive", "--light-records", "storage"},
                                               {"--naive", "--cube-shadows", "layered"}}) {
     EXPECT_EQ(parse(bad).exit_code, 2) << bad[0] << " " << bad[1];
   }

@@ -170,5 +170,19 @@ TEST_F(OffscreenRender, FloorMatchesLightingFormulaWithAColoredAmbient) {
   }
 }
 
+// Deferred lighting reading the light records either way (--light-records): the storage buffer
+// GPUs take, and the texel buffer CPU devices take; with ranked filtering, as on GPUs, so that
+// the filter floor's pass reads them too.
+TEST_F(OffscreenRender, FloorMatchesLightingFormulaWithTheRecordsInEitherBuffer) {
+  FrameSettings settings;
+  settings.renderer.lighting = LightingPath::deferred;
+  settings.renderer.filtered_lights = 1;
+  for (const LightRecordsIn records : {LightRecordsIn::storage_buffer, LightRecordsIn::texel_buffer}) {
+    SCOPED_TRACE(std::string(to_string(records)));
+    settings.renderer.light_records = records;
+    expect_floor_matches_formula(context, settings);
+  }
+}
+
 }  // namespace
 }  // namespace sg::test
