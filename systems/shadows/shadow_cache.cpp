@@ -19,7 +19,7 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
         "sg::shadows::ShadowCache::plan: render and usable need one element per light");
   }
   ++frame_;
-  if (align_by_key(lights, states_, index_of_key_, matched_)) by_key_.clear();
+  if (align_by_key(lights, states_, places_, matched_)) by_key_.clear();
   for (size_t i = 0; i < lights.size(); ++i) {
     LightState& state = states_[i];
     if (lights[i].invalid) state.valid = false;

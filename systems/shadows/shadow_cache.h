@@ -10,13 +10,13 @@
 // redrawn from that layer with just the moving casters: far fewer than all of them.
 #include <cstdint>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "systems/scene/aabb.h"
 #include "systems/scene/shadow_settings.h"
+#include "systems/shadows/align_by_key.h"
 #include "systems/shadows/spheres_meeting_boxes.h"
 
 namespace sg::shadows {
@@ -100,8 +100,9 @@ class ShadowCache {
   // the boxes near it (SpheresMeetingBoxes), plus, when the budget is short, ordering the dirty
   // lights (O(dirty), a radix sort on how stale they are). A frame allocates nothing once grown,
   // except when the lights are not the previous frame's keys in the previous frame's order: the
-  // key -> state map is then rebuilt (and the lights' key order, when next needed). With a
-  // `pool`, the lights are tested against the boxes on it.
+  // states are then matched to them through a table of keys (KeyPlaces), and the lights' key
+  // order is sorted anew when next needed. With a `pool`, the lights are tested against the
+  // boxes on it.
   void plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes, uint32_t view_budget,
             bool static_layers, std::span<uint8_t> render, std::span<uint8_t> usable,
             jobs::ThreadPool* pool = nullptr);
@@ -149,7 +150,7 @@ class ShadowCache {
 
   // Working storage, kept so that a frame allocates nothing once grown.
   std::vector<LightState> matched_;
-  std::unordered_map<uint64_t, uint32_t> index_of_key_;
+  KeyPlaces places_;  // for align_by_key
   struct KeyedLight {
     uint64_t key;
     uint32_t index;  // in `lights`

@@ -167,8 +167,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   // its record and its entry.
   // A light never has a cached map without its entry: the cache forgets lights that leave too.
   if (!aligned) {
-    align_by_key(lights.maps, rendered_maps_, index_of_key_, rendered_maps_scratch_);
-    align_by_key(lights.cubes, rendered_cubes_, index_of_key_, rendered_cubes_scratch_);
+    align_by_key(lights.maps, rendered_maps_, places_, rendered_maps_scratch_);
+    align_by_key(lights.cubes, rendered_cubes_, places_, rendered_cubes_scratch_);
   }
   const auto apply = [&](uint32_t request, auto& view, auto&& give_map) {
     view.resolution = 0;

@@ -12,7 +12,6 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -20,6 +19,7 @@
 
 #include "ecs/jobs/parallel_pieces.h"
 
+#include "systems/shadows/align_by_key.h"
 #include "systems/shadows/caster_changes.h"
 #include "systems/shadows/frame_lights.h"
 #include "systems/shadows/shadow_atlas_planner.h"
@@ -175,7 +175,7 @@ class ShadowSchedule {
   std::vector<RenderedCube> rendered_cubes_;
   std::vector<RenderedMap> rendered_maps_scratch_;    // for align_by_key
   std::vector<RenderedCube> rendered_cubes_scratch_;  // for align_by_key
-  std::unordered_map<uint64_t, uint32_t> index_of_key_;
+  KeyPlaces places_;                                  // for align_by_key
 };
 
 }  // namespace sg::shadows
