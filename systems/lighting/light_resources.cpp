@@ -20,13 +20,13 @@ VkFilter compare_filter(const vk::VulkanContext& context) {
   return filterable ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
 }
 
-}  // namespace
-
 LightRecordsIn resolved(LightRecordsIn records, const vk::VulkanContext& context) {
   if (records != LightRecordsIn::automatic) return records;
   return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? LightRecordsIn::texel_buffer
                                                                         : LightRecordsIn::storage_buffer;
 }
+
+}  // namespace
 
 LightResources::LightResources(const vk::VulkanContext& context, LightRecordsIn records)
     : records_(resolved(records, context)),

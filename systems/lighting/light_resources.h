@@ -19,19 +19,15 @@ namespace sg {
 // The records' texel format where a shader reads them through a texel buffer (LightRecordsIn).
 inline constexpr VkFormat light_record_texel_format = VK_FORMAT_R32G32B32A32_UINT;
 
-// `records` for the context's device: automatic is the storage buffer on GPUs, the texel buffer on
-// CPU devices.
-LightRecordsIn resolved(LightRecordsIn records, const vk::VulkanContext& context);
-
 class LightResources {
  public:
-  // `records` resolved (an automatic one as resolved() does).
+  // `records`: automatic reads the storage buffer on GPUs, the texel buffer on CPU devices.
   explicit LightResources(const vk::VulkanContext& context,
                           LightRecordsIn records = LightRecordsIn::texel_buffer);
 
-  LightRecordsIn records() const { return records_; }
+  LightRecordsIn records() const { return records_; }  // resolved: never automatic
 
-  // The bindings for `records` (resolved), visible to `stages`, followed by a pass's own `more`.
+  // The bindings for `records` (not automatic), visible to `stages`, followed by a pass's own `more`.
   static std::vector<VkDescriptorSetLayoutBinding> bindings(LightRecordsIn records, VkShaderStageFlags stages,
                                                             std::vector<VkDescriptorSetLayoutBinding> more);
 
