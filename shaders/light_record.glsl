@@ -35,6 +35,9 @@ const uint NO_SHADOW_MAP = 0xFFFFFFFFu;
 // info.w of a directional light whose maps are cascades (systems/shadows/cascades.h): each is a
 // record of its own after the frame's lights, holding its map in the shadow fields.
 const uint CASCADED_SHADOW_MAPS = 0xFFFFFFFEu;
+// The bit a directional light with cascades sets in a pass's LIGHT_TYPES (lights_interface.glsl)
+// instead of LIGHT_DIRECTIONAL's (sg::shadows::light_type_bits).
+const uint CASCADED_TYPE_BIT = 4u;
 
 struct Light {
   vec4 position_range;        // xyz: world position (point, spot, cylinder); w: range R (point, spot; 0 otherwise)

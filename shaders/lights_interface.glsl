@@ -6,17 +6,20 @@
 #include "bindings.glsl"
 #include "light_record.glsl"
 
-// Bit t set where lights of type t (LIGHT_*) may be shaded: a pass that knows the types of its
-// lights compiles only their code (a CPU driver runs every branch a shader holds). constant_id
-// 0 to 2 are the including shaders' own and material.glsl's.
-layout(constant_id = 3) const uint LIGHT_TYPES = 0xFu;
+// Bit t set where lights of type t (LIGHT_*) may be shaded, bit CASCADED_TYPE_BIT where
+// directional lights with cascades may (sg::shadows::light_type_bits): a pass that knows the
+// types of its lights compiles only their code (a CPU driver runs every branch a shader holds).
+// constant_id 0 to 2 are the including shaders' own and material.glsl's.
+layout(constant_id = 3) const uint LIGHT_TYPES = 0x1Fu;
+// The types alone, cascaded directional lights counted as directional.
+const uint LIGHT_TYPES_ONLY = (LIGHT_TYPES & 0xFu) | ((LIGHT_TYPES >> CASCADED_TYPE_BIT) & 1u) << LIGHT_DIRECTIONAL;
 
 // Light `light`'s type, a constant where LIGHT_TYPES admits one type only.
 uint light_type(Light light) {
-  if (LIGHT_TYPES == (1u << LIGHT_POINT)) return LIGHT_POINT;
-  if (LIGHT_TYPES == (1u << LIGHT_SPOT)) return LIGHT_SPOT;
-  if (LIGHT_TYPES == (1u << LIGHT_DIRECTIONAL)) return LIGHT_DIRECTIONAL;
-  if (LIGHT_TYPES == (1u << LIGHT_CYLINDER)) return LIGHT_CYLINDER;
+  if (LIGHT_TYPES_ONLY == (1u << LIGHT_POINT)) return LIGHT_POINT;
+  if (LIGHT_TYPES_ONLY == (1u << LIGHT_SPOT)) return LIGHT_SPOT;
+  if (LIGHT_TYPES_ONLY == (1u << LIGHT_DIRECTIONAL)) return LIGHT_DIRECTIONAL;
+  if (LIGHT_TYPES_ONLY == (1u << LIGHT_CYLINDER)) return LIGHT_CYLINDER;
   return light.info.x;
 }
 

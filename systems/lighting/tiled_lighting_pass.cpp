@@ -102,8 +102,8 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
                                 " filtered lights a pixel");
   }
   if (filtered_lights_ == 0) return;
-  // constant_id 0 to 5 as a group pass's (every light type: 0xF), 6: the lights a pixel filters.
-  const std::vector<uint32_t> constants{0u, 0u, 0u, 0xFu, 0u, 0u, filtered_lights_};
+  // constant_id 0 to 5 as a group pass's (every light type), 6: the lights a pixel filters.
+  const std::vector<uint32_t> constants{0u, 0u, 0u, shadows::all_light_type_bits, 0u, 0u, filtered_lights_};
   filter_floor_pipeline_ = vk::create_compute_pipeline(
       context, {for_records(light_resources_.records(), lighting_filter_floor_comp,
                             lighting_filter_floor_storage_records_comp),
@@ -118,14 +118,14 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
   probing_ = probe_ && view == LightingView::lit;
   if (probing_ && !probe_pipelines_[ranked]) {
     // constant_id 0 to 5 as a group pass's, with every light type and the view lit.
-    const std::vector<uint32_t> constants{0u, 0u, 0u, 0xFu, 0u, ranked};
+    const std::vector<uint32_t> constants{0u, 0u, 0u, shadows::all_light_type_bits, 0u, ranked};
     probe_pipelines_[ranked] = vk::create_compute_pipeline(
         context_,
         {for_records(light_resources_.records(), shadow_probe_comp, shadow_probe_storage_records_comp),
          constants, layout_.get(), "shadow probe"});
   }
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
-    const uint32_t types = lights.group_types[group];  // bit t for type t (lights_interface.glsl)
+    const uint32_t types = lights.group_types[group];  // shadows::light_type_bits
     if (types == 0) continue;                          // no light of the group this frame
     const uint32_t first = lights.group_begin[group];
     const uint32_t single = lights.group_begin[group + 1] == first + 1 ? 1u : 0u;

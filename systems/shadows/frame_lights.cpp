@@ -311,7 +311,7 @@ void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
       const uint32_t group = group_of(out.records[i]);
       scratch.moved_to[i] = group;
       ++groups[group];
-      types[group] |= 1u << out.records[i].info.x;
+      types[group] |= light_type_bits(out.records[i]);
       contact[group] += out.records[i].direction_type.w > 0.0f ? 1 : 0;
     }
   });

@@ -138,8 +138,8 @@ struct FrameLights {
   // [group_begin[g], group_begin[g + 1]), so a pass that shades one group reads one range.
   std::vector<GpuLight> records;
   std::array<uint32_t, light_group_count + 1> group_begin{};
-  // After sort_by_group, bit t of group_types[g] is set when group g has lights of type t
-  // (GpuLight::info.x): a group's pass need hold only those types' code.
+  // After sort_by_group, group g's light types (light_type_bits): a group's pass need hold only
+  // those types' code.
   std::array<uint32_t, light_group_count> group_types{};
   // After sort_by_group, group g's lights with contact shadows (ShadowSettings::contact_length >
   // 0): a group's pass marches them only where it has some.

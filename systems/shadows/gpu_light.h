@@ -37,6 +37,13 @@ inline constexpr std::uint32_t no_shadow_map = 0xFFFFFFFFu;
 // of its own (FrameLights::cascades), shape.x the first one's index and shape.y their count.
 inline constexpr std::uint32_t cascaded_shadow_maps = 0xFFFFFFFEu;
 
+// A light's bit among a lighting pass's light types (LIGHT_TYPES in lights_interface.glsl): bit
+// t for GpuLightType t, but a directional light with cascades sets bit 4 instead, so that a pass
+// holds the cascade walk only where it has such a light, and no single-map lookup where those
+// are its only 2D lights (a CPU driver runs every branch a shader holds).
+inline constexpr std::uint32_t cascaded_type_bit = 4;
+inline constexpr std::uint32_t all_light_type_bits = 0x1Fu;
+
 struct GpuLight {
   glm::vec4 position_range{0.0f};
   glm::vec4 direction_type{0.0f};
@@ -54,6 +61,10 @@ struct GpuLight {
 // 2026-12-03); new fields go in spare bits (info.y, direction_type.w). What light culling tests
 // (position and range, direction, type, shape) comes first, in 64 bytes.
 static_assert(sizeof(GpuLight) == 208);
+
+inline std::uint32_t light_type_bits(const GpuLight& light) {
+  return 1u << (light.info.w == cascaded_shadow_maps ? cascaded_type_bit : light.info.x);
+}
 static_assert(offsetof(GpuLight, direction_type) == 16);
 static_assert(offsetof(GpuLight, info) == 32);
 static_assert(offsetof(GpuLight, shape) == 48);

@@ -639,12 +639,12 @@ TEST(FrameLights, RecordsAreOrderedByLightGroup) {
     EXPECT_EQ(lights.records[cube.light].info.x, uint32_t(GpuLightType::point));
     EXPECT_GE(cube.light, lights.group_begin[cube_pcf]);
   }
-  // Each group's light types: bit t for GpuLightType t, none for an empty group.
+  // Each group's light types: its lights' light_type_bits, none for an empty group.
   const auto bit = [](GpuLightType type) { return 1u << uint32_t(type); };
   for (uint32_t group = 0; group < light_group_count; ++group) {
     uint32_t types = 0;
     for (uint32_t i = lights.group_begin[group]; i < lights.group_begin[group + 1]; ++i) {
-      types |= 1u << lights.records[i].info.x;
+      types |= light_type_bits(lights.records[i]);
     }
     EXPECT_EQ(lights.group_types[group], types) << "group " << group;
   }

@@ -107,6 +107,18 @@ TEST(GpuLight, DirectionalLightRecord) {
   EXPECT_EQ(record.info.x, 2u);
 }
 
+// A lighting pass's light types: the type's bit, but a directional light with cascades has a bit
+// of its own, so that a pass of such lights alone holds no single-map lookup.
+TEST(GpuLight, CascadedDirectionalLightsHaveATypeBitOfTheirOwn) {
+  GpuLight sun = pack_light(scene::DirectionalLight{}, placed({0, 9, 0}, {0, -1, 0}), test_shadow());
+  EXPECT_EQ(light_type_bits(sun), 1u << uint32_t(GpuLightType::directional));
+  sun.info.w = cascaded_shadow_maps;
+  EXPECT_EQ(light_type_bits(sun), 1u << cascaded_type_bit);
+  EXPECT_NE(light_type_bits(sun) & all_light_type_bits, 0u);
+  const GpuLight spot = pack_light(scene::SpotLight{}, placed({0, 9, 0}, {0, -1, 0}), test_shadow());
+  EXPECT_EQ(light_type_bits(spot), 1u << uint32_t(GpuLightType::spot));
+}
+
 TEST(GpuLight, CylinderLightRecord) {
   scene::CylinderLight light;
   light.inner_radius = 0.25f;
