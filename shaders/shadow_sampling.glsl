@@ -511,17 +511,17 @@ float shadow_cube_pcss(Light light, CubeReceiver r, bool jitter) {
   // No blockers means lit. A CPU driver runs a loop until none of its SIMD lanes continues, and
   // the body of an `if` always (masked): so the filter is a loop of no taps where no blocker was
   // found, which spares lit areas all but one masked tap (a sixth of the default scene's cube pcss
-  // pass on lavapipe). A do-while, as a for loop runs one more masked body (shadow_2d_pcf).
+  // pass on lavapipe). As a do-while with the taps masked inside, it ran no faster there and 2%
+  // slower on the H200 (1,024 and 100,000 lights, 2026-12-03).
   float blocker = blocker_sum / max(blockers, 1.0) * far;
   float width = pcss_penumbra_width(r.distance, blocker, light_size);
   float radius = max(0.5 * width, texel_world);
   float sum = 0.0;
   uint kernel = pcss_filter_taps(light) < CUBE_OFFSET_COUNT ? CUBE_CORNER_COUNT : CUBE_OFFSET_COUNT;
   uint taps = blockers > 0.0 ? kernel : 0u;
-  uint k = 0u;
-  [[dont_unroll]] do {
-    if (k < taps) sum += cube_sample(light, r, cube_pcss_offset(k, jitter, rotation) * radius);
-  } while (++k < taps);
+  [[dont_unroll]] for (uint k = 0u; k < taps; ++k) {
+    sum += cube_sample(light, r, cube_pcss_offset(k, jitter, rotation) * radius);
+  }
   return sum / float(kernel);
 }
 
