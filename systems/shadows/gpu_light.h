@@ -37,13 +37,6 @@ inline constexpr std::uint32_t no_shadow_map = 0xFFFFFFFFu;
 // of its own (FrameLights::cascades), shape.x the first one's index and shape.y their count.
 inline constexpr std::uint32_t cascaded_shadow_maps = 0xFFFFFFFEu;
 
-// A light's bit among a lighting pass's light types (LIGHT_TYPES in lights_interface.glsl): bit
-// t for GpuLightType t, but a directional light with cascades sets bit 4 instead, so that a pass
-// holds the cascade walk only where it has such a light, and no single-map lookup where those
-// are its only 2D lights (a CPU driver runs every branch a shader holds).
-inline constexpr std::uint32_t cascaded_type_bit = 4;
-inline constexpr std::uint32_t all_light_type_bits = 0x1Fu;
-
 struct GpuLight {
   glm::vec4 position_range{0.0f};
   glm::vec4 direction_type{0.0f};
@@ -61,10 +54,6 @@ struct GpuLight {
 // 2026-12-03); new fields go in spare bits (info.y, direction_type.w). What light culling tests
 // (position and range, direction, type, shape) comes first, in 64 bytes.
 static_assert(sizeof(GpuLight) == 208);
-
-inline std::uint32_t light_type_bits(const GpuLight& light) {
-  return 1u << (light.info.w == cascaded_shadow_maps ? cascaded_type_bit : light.info.x);
-}
 static_assert(offsetof(GpuLight, direction_type) == 16);
 static_assert(offsetof(GpuLight, info) == 32);
 static_assert(offsetof(GpuLight, shape) == 48);
@@ -78,6 +67,16 @@ static_assert(offsetof(GpuLight, shadow_matrix) == 144);
 // The shadow algorithm a record was packed with (info.z).
 inline scene::ShadowAlgorithm algorithm_of(const GpuLight& light) {
   return static_cast<scene::ShadowAlgorithm>(light.info.z & ((1u << kernel_pcf_shift) - 1u));
+}
+
+// A light's bit among a lighting pass's light types (LIGHT_TYPES in lights_interface.glsl): bit
+// t for GpuLightType t, but a directional light with cascades sets bit cascaded_type_bit instead,
+// so that a pass holds the cascade walk only where it has such a light, and no single-map lookup
+// where those are its only 2D lights (a CPU driver runs every branch a shader holds).
+inline constexpr std::uint32_t cascaded_type_bit = 4;
+inline constexpr std::uint32_t all_light_type_bits = 0x1Fu;
+inline std::uint32_t light_type_bits(const GpuLight& light) {
+  return 1u << (light.info.w == cascaded_shadow_maps ? cascaded_type_bit : light.info.x);
 }
 
 // A light's record from its components: position and direction from its world transform

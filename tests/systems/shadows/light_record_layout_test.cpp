@@ -125,6 +125,7 @@ TEST(LightRecordLayout, ShaderConstantsMatchTheCppValues) {
       {"SHADOW_PCSS_NOISE", value(ShadowAlgorithm::pcss_noise)},
       {"NO_SHADOW_MAP", value(no_shadow_map)},
       {"CASCADED_SHADOW_MAPS", value(cascaded_shadow_maps)},
+      {"CASCADED_TYPE_BIT", value(cascaded_type_bit)},
       {"LIGHT_MASK_SHIFT", value(light_mask_shift)},
       {"KERNEL_PCF_SHIFT", value(kernel_pcf_shift)},
       {"KERNEL_BLOCKER_SHIFT", value(kernel_blocker_shift)},
