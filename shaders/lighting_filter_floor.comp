@@ -22,43 +22,13 @@ layout(set = 0, binding = hdr_binding, rgba16f) uniform image2D hdr;
 // at least that heavy filters).
 const float MOST_FLOOR = 65000.0;
 
-// The tile's filtering lights, a batch at a time, with what shadow_weight reads of them: every
-// pixel of the tile reads every light, and fetched by each pixel the records cost the texture
-// units more than loading them once for the tile (H200, 1920x1080, 2026-12-02: lighting 10.33 ->
-// 9.42 ms with 16,384 lights over 20k triangles, 5.56 -> 5.38 with 1,024 on a sixteenth of the
-// stress hall; docs/PERFORMANCE.md). Tiles with few lights skip the pass, barriers and all.
-const uint BATCH = 256u;  // one light an invocation
-shared vec4 batch_position_range[BATCH];
-shared vec4 batch_direction_type[BATCH];
-shared vec4 batch_color_intensity[BATCH];
-shared vec4 batch_shape[BATCH];
-shared vec4 batch_shadow_color_density[BATCH];
-shared uvec2 batch_type_falloff[BATCH];
-
-void keep_in_batch(uint slot, Light light) {
-  batch_position_range[slot] = light.position_range;
-  batch_direction_type[slot] = light.direction_type;
-  batch_color_intensity[slot] = light.color_intensity;
-  batch_shape[slot] = light.shape;
-  batch_shadow_color_density[slot] = light.shadow_color_density;
-  batch_type_falloff[slot] = light.info.xy;
-}
-
-// Slot `slot`'s light, the members shadow_weight does not read left zero.
-Light batch_light(uint slot) {
-  Light light;
-  light.position_range = batch_position_range[slot];
-  light.direction_type = batch_direction_type[slot];
-  light.color_intensity = batch_color_intensity[slot];
-  light.shape = batch_shape[slot];
-  light.shadow_color_density = batch_shadow_color_density[slot];
-  light.info = uvec4(batch_type_falloff[slot], 0u, 0u);
-  light.shadow_bias = vec4(0.0);
-  light.shadow_rect = vec4(0.0);
-  light.shadow_depth = vec4(0.0);
-  light.shadow_matrix = mat4(0.0);
-  return light;
-}
+// The tile's filtering lights, a batch at a time (light_batch.glsl): fetched by each pixel the
+// records cost the texture units more than loading them once for the tile (H200, 1920x1080,
+// 2026-12-02: lighting 10.33 -> 9.42 ms with 16,384 lights over 20k triangles, 5.56 -> 5.38 with
+// 1,024 on a sixteenth of the stress hall; docs/PERFORMANCE.md). Tiles with few lights skip the
+// pass, barriers and all.
+const uint LIGHT_BATCH = 256u;  // one light an invocation
+#include "light_batch.glsl"
 
 // Whether `group`'s lights run a filter kernel (pcf, noise, pcss, pcss_noise).
 bool group_filters(uint group) {
@@ -88,8 +58,8 @@ void main() {
   for (uint group = 0u; group < LIGHT_GROUP_COUNT; ++group) {
     if (!group_filters(group)) continue;
     uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + group];
-    for (uint first = 0u; first < range.y; first += BATCH) {
-      uint count = min(range.y - first, BATCH);
+    for (uint first = 0u; first < range.y; first += LIGHT_BATCH) {
+      uint count = min(range.y - first, LIGHT_BATCH);
       if (gl_LocalInvocationIndex < count) keep_in_batch(gl_LocalInvocationIndex, light_at(tile_lights[range.x + first + gl_LocalInvocationIndex]));
       barrier();
       for (uint j = 0u; surface && j < count; ++j) {

@@ -13,14 +13,57 @@ layout(local_size_x = 16, local_size_y = 16) in;
 layout(set = 0, binding = hdr_binding, rgba16f) uniform image2D hdr;
 layout(std430, set = 0, binding = group_tiles_binding) readonly buffer GroupTiles { uint group_tiles[]; };
 
+#ifdef LIGHT_RECORDS_IN_STORAGE
+// Where the records come from a storage buffer (GPUs), the unshadowed group's lights are loaded
+// into shared memory a batch at a time (light_batch.glsl): their shading is short, and each
+// light's load stood between a pixel and it (H200, 100,000 lights at eye height: the pass took
+// 5.9 ms against 8.0, 2026-12-03). Shadowed groups read their records directly: with a batch of
+// whole records their passes took 40-190% longer, and so did every pass declaring one, shared
+// memory taken from the cache their shadow-map taps use. So other pipelines hold a batch of one.
+// A CPU driver takes the texel-buffer variant, which has no barriers to pay.
+const bool BATCHED = LIGHT_GROUP == 0u && !SINGLE_LIGHT;
+const uint LIGHT_BATCH = BATCHED ? 256u : 1u;  // one light an invocation
+#include "light_batch.glsl"
+
+// The unshadowed lights of `tile` at the surface point, where `surface`; every invocation of the
+// workgroup calls it, for the batches' barriers.
+vec3 shade_tile_batched(uint tile, bool surface, SurfacePoint p, vec3 position, float filter_floor) {
+  uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + LIGHT_GROUP];
+  vec3 color = vec3(0.0);
+  for (uint first = 0u; first < range.y; first += LIGHT_BATCH) {
+    uint count = min(range.y - first, LIGHT_BATCH);
+    if (gl_LocalInvocationIndex < count) {
+      keep_in_batch(gl_LocalInvocationIndex, light_at(tile_lights[range.x + first + gl_LocalInvocationIndex]));
+    }
+    barrier();
+    for (uint j = 0u; surface && j < count; ++j) {
+      color += shade_light_as(batch_light(j), p, position, SHADOW_KIND_NONE, SHADOW_HARD, filter_floor);
+    }
+    barrier();
+  }
+  return color;
+}
+#endif
+
 void main() {
   uint tile = group_tiles[LIGHT_GROUP * frame.screen.w + gl_WorkGroupID.x];
   uvec2 tile_xy = uvec2(tile % frame.screen.z, tile / frame.screen.z);
   ivec2 pixel = ivec2(tile_xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy);
-  if (pixel.x >= int(frame.screen.x) || pixel.y >= int(frame.screen.y)) return;
+  bool inside = pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y);
   SurfacePoint p;
   vec3 position;
-  if (!deferred_surface(pixel, p, position)) return;
+#ifdef LIGHT_RECORDS_IN_STORAGE
+  if (BATCHED) {
+    bool surface = inside && deferred_surface(pixel, p, position);
+    begin_contact_shadows(pixel);
+    vec4 sum = surface ? imageLoad(hdr, pixel) : vec4(0.0);
+    float filter_floor = RANKED_FILTERING ? sum.a : 0.0;
+    vec3 color = shade_tile_batched(tile, surface, p, position, filter_floor);
+    if (surface) imageStore(hdr, pixel, sum + vec4(color, 0.0));
+    return;
+  }
+#endif
+  if (!inside || !deferred_surface(pixel, p, position)) return;
   begin_contact_shadows(pixel);
   vec4 sum = imageLoad(hdr, pixel);
   float filter_floor = RANKED_FILTERING ? sum.a : 0.0;
