@@ -98,21 +98,27 @@ glm::vec3 expected_floor_color(const FloorScene& s, glm::vec3 point, const glm::
   return ambient * base + base * radiance * n_dot_l + m.specular * radiance * spec;
 }
 
+// The scene's picture with `settings`, after three frames (later frames exercise the
+// between-frame barriers).
+vk::Rgba8Image render(vk::VulkanContext& context, SceneView& scene, const FrameSettings& settings) {
+  vk::FrameRing frames(context);
+  Frame frame(context, scene, settings, frames.frames_in_flight());
+  frame.resize({width, height});
+  for (int i = 0; i < 3; ++i) {
+    vk::FrameSlot& slot = frames.begin_frame();
+    frame.record(slot, 0.0);
+    frames.submit();
+  }
+  frames.wait_idle();
+  return vk::read_rgba8(context, frame.image());
+}
+
 // Renders the floor scene with `settings` and compares every unoccluded floor pixel with the
 // formula.
 void expect_floor_matches_formula(vk::VulkanContext& context, const FrameSettings& settings) {
   FloorScene s = make_floor_scene();
   {
-    vk::FrameRing frames(context);
-    Frame frame(context, s.sandbox, settings, frames.frames_in_flight());
-    frame.resize({width, height});
-    for (int i = 0; i < 3; ++i) {  // later frames exercise the between-frame barriers
-      vk::FrameSlot& slot = frames.begin_frame();
-      frame.record(slot, 0.0);
-      frames.submit();
-    }
-    frames.wait_idle();
-    const vk::Rgba8Image image = vk::read_rgba8(context, frame.image());
+    const vk::Rgba8Image image = render(context, s.sandbox, settings);
     ASSERT_EQ(image.width, width);
 
     const CameraImage camera{s.sandbox.pose, s.sandbox.lens, {width, height}};
@@ -182,6 +188,42 @@ TEST_F(OffscreenRender, FloorMatchesLightingFormulaWithTheRecordsInEitherBuffer)
     settings.renderer.light_records = records;
     expect_floor_matches_formula(context, settings);
   }
+}
+
+// Many unshadowed lights over one spot: on GPUs the lighting pass loads a tile's unshadowed
+// lights into shared memory 256 at a time (shaders/light_batch.glsl), which 300 lights overfill;
+// the storage-buffer variant that does must light the floor as the texel-buffer one does.
+TEST_F(OffscreenRender, ManyUnshadowedLightsLightAlikeFromEitherRecordBuffer) {
+  FloorScene s = make_floor_scene();
+  FrameSettings settings;
+  settings.renderer.lighting = LightingPath::deferred;
+  const vk::Rgba8Image sun_alone = render(context, s.sandbox, settings);
+  scene::ShadowSettings no_shadow;
+  no_shadow.casts_shadow = false;
+  for (int i = 0; i < 300; ++i) {  // a sunflower spiral 3 m wide, 1.5 m above the floor
+    const float radius = 3.0f * std::sqrt(float(i) / 300.0f);
+    const float angle = 2.39996f * float(i);
+    const glm::vec3 color{0.5f + 0.5f * std::sin(angle), 0.6f, 0.5f + 0.5f * std::cos(angle)};
+    scene::add_light(s.sandbox.scene, scene::PointLight{color, 0.005f, 5.0f},
+                     {{radius * std::cos(angle), 1.5f, radius * std::sin(angle)}}, no_shadow, "");
+  }
+  ecs::update_world_transforms(s.sandbox.scene.world, 0);
+  std::vector<vk::Rgba8Image> images;
+  for (const LightRecordsIn records : {LightRecordsIn::storage_buffer, LightRecordsIn::texel_buffer}) {
+    settings.renderer.light_records = records;
+    images.push_back(render(context, s.sandbox, settings));
+  }
+  size_t brighter = 0, differing = 0;
+  for (uint32_t y = 0; y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        brighter += images[1].at(x, y)[c] > sun_alone.at(x, y)[c] + 8 ? 1 : 0;
+        differing += std::abs(int(images[0].at(x, y)[c]) - int(images[1].at(x, y)[c])) > 1 ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(brighter, size_t{width} * height / 10) << "the bulbs must light the floor";
+  EXPECT_EQ(differing, 0u);
 }
 
 }  // namespace
