@@ -13,15 +13,19 @@ layout(local_size_x = 16, local_size_y = 16) in;
 layout(set = 0, binding = hdr_binding, rgba16f) uniform image2D hdr;
 layout(std430, set = 0, binding = group_tiles_binding) readonly buffer GroupTiles { uint group_tiles[]; };
 
-#ifdef LIGHT_RECORDS_IN_STORAGE
 // Where the records come from a storage buffer (GPUs), the unshadowed group's lights are loaded
 // into shared memory a batch at a time (light_batch.glsl): their shading is short, and each
 // light's load stood between a pixel and it (H200, 1920x1080, 100,000 lights: the pass took 4.0
-// ms against 8.0 at eye height, 1.8 against 3.0 from afar, 2026-12-03). Shadowed groups read their records directly: with a batch of
-// whole records their passes took 40-190% longer, and so did every pass declaring one, shared
-// memory taken from the cache their shadow-map taps use. So other pipelines hold a batch of one.
-// A CPU driver takes the texel-buffer variant, which has no barriers to pay.
+// ms against 8.0 at eye height, 1.8 against 3.0 from afar, 2026-12-03). Shadowed groups read
+// their records directly: with a batch of whole records their passes took 40-190% longer, and so
+// did every pass declaring one, shared memory taken from the cache their shadow-map taps use. So
+// other pipelines hold a batch of one. A CPU driver takes the texel-buffer variant, which has no
+// barriers to pay.
+#ifdef LIGHT_RECORDS_IN_STORAGE
 const bool BATCHED = LIGHT_GROUP == 0u && !SINGLE_LIGHT;
+#else
+const bool BATCHED = false;
+#endif
 const uint LIGHT_BATCH = BATCHED ? 256u : 1u;  // one light an invocation
 #include "light_batch.glsl"
 
@@ -43,29 +47,20 @@ vec3 shade_tile_batched(uint tile, bool surface, SurfacePoint p, vec3 position, 
   }
   return color;
 }
-#endif
 
 void main() {
   uint tile = group_tiles[LIGHT_GROUP * frame.screen.w + gl_WorkGroupID.x];
   uvec2 tile_xy = uvec2(tile % frame.screen.z, tile / frame.screen.z);
   ivec2 pixel = ivec2(tile_xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy);
-  bool inside = pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y);
   SurfacePoint p;
   vec3 position;
-#ifdef LIGHT_RECORDS_IN_STORAGE
-  if (BATCHED) {
-    bool surface = inside && deferred_surface(pixel, p, position);
-    begin_contact_shadows(pixel);
-    vec4 sum = surface ? imageLoad(hdr, pixel) : vec4(0.0);
-    float filter_floor = RANKED_FILTERING ? sum.a : 0.0;
-    vec3 color = shade_tile_batched(tile, surface, p, position, filter_floor);
-    if (surface) imageStore(hdr, pixel, sum + vec4(color, 0.0));
-    return;
-  }
-#endif
-  if (!inside || !deferred_surface(pixel, p, position)) return;
+  bool surface = pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y) &&
+                 deferred_surface(pixel, p, position);
+  if (!surface && !BATCHED) return;  // a batched pass keeps every invocation for its barriers
   begin_contact_shadows(pixel);
-  vec4 sum = imageLoad(hdr, pixel);
+  vec4 sum = surface ? imageLoad(hdr, pixel) : vec4(0.0);
   float filter_floor = RANKED_FILTERING ? sum.a : 0.0;
-  imageStore(hdr, pixel, sum + vec4(shade_tile_group(tile, p, position, filter_floor), 0.0));
+  vec3 color = BATCHED ? shade_tile_batched(tile, surface, p, position, filter_floor)
+                       : shade_tile_group(tile, p, position, filter_floor);
+  if (surface) imageStore(hdr, pixel, sum + vec4(color, 0.0));
 }

@@ -74,7 +74,7 @@ inline scene::ShadowAlgorithm algorithm_of(const GpuLight& light) {
 // so that a pass holds the cascade walk only where it has such a light, and no single-map lookup
 // where those are its only 2D lights (a CPU driver runs every branch a shader holds).
 inline constexpr std::uint32_t cascaded_type_bit = 4;
-inline constexpr std::uint32_t all_light_type_bits = 0x1Fu;
+inline constexpr std::uint32_t all_light_type_bits = (2u << cascaded_type_bit) - 1u;
 inline std::uint32_t light_type_bits(const GpuLight& light) {
   return 1u << (light.info.w == cascaded_shadow_maps ? cascaded_type_bit : light.info.x);
 }
