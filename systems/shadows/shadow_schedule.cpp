@@ -76,7 +76,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   const size_t map_count = lights.maps.size();
   const size_t view_count = map_count + lights.cubes.size();
   view_requests_.resize(view_count);
-  view_cache_lights_.resize(view_count);
+  cache_lights_.resize(view_count);
   const bool same_counts =
       rendered_maps_.size() == map_count && rendered_cubes_.size() == lights.cubes.size();
   pieces_aligned_.assign(std::max<size_t>((view_count + views_per_piece - 1) / views_per_piece, 1), 1);
@@ -93,7 +93,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
                              map.importance,
                              quality_floor(algorithm_of(lights.records[map.light])),
                              pinned};
-        view_cache_lights_[v] = {map.key, map.reach, map.changed, false, 1, map.update};
+        cache_lights_[v] = {
+            .key = map.key, .reach = map.reach, .changed = map.changed, .views = 1, .update = map.update};
         aligned = aligned && rendered_maps_[v].key == map.key;
       } else {
         ShadowCubeView& cube = lights.cubes[v - map_count];
@@ -106,7 +107,11 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
                              cube.importance,
                              quality_floor(algorithm_of(lights.records[cube.light])),
                              pinned};
-        view_cache_lights_[v] = {cube.key, cube.position_far, cube.changed, false, 6, cube.update};
+        cache_lights_[v] = {.key = cube.key,
+                            .reach = cube.position_far,
+                            .changed = cube.changed,
+                            .views = 6,
+                            .update = cube.update};
         aligned = aligned && rendered_cubes_[v - map_count].key == cube.key;
       }
     }
@@ -132,33 +137,32 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   const ShadowTimeBudget::Limits& limits = time_budget_.limits();
   planner_.plan(requests_, placements_, pool, limits.lowered_tiers);
 
-  cache_lights_.resize(view_count);
-  cache_index_.resize(requests_.size());
-  const size_t cached_count = jobs::keep_in_pieces(
-      pool, view_count, views_per_piece, keep_scratch_,
-      [&](size_t v) { return request_of_[v] != no_request && placements_[request_of_[v]].resolution != 0; },
-      [&](size_t v, size_t k) {
-        const uint32_t request = request_of_[v];
-        cache_index_[request] = static_cast<uint32_t>(k);
-        cache_lights_[k] = view_cache_lights_[v];
-        cache_lights_[k].invalid = placements_[request].moved;
-      });
-  cache_lights_.resize(cached_count);
-  render_.assign(cache_lights_.size(), 0);
-  usable_.assign(cache_lights_.size(), 0);
+  // The cache sees every view, in the views' order (usually the last frame's, so that its states
+  // need no lookup by key), those without a tile as not placed; and what each map cost this
+  // frame, for the planner's redraw rates: a map drawn into new tiles says nothing of how often
+  // its light or its casters change.
+  jobs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) {
+      const uint32_t request = request_of_[v];
+      cache_lights_[v].placed = request != no_request && placements_[request].resolution != 0;
+      cache_lights_[v].invalid = cache_lights_[v].placed && placements_[request].moved;
+    }
+  });
+  render_.assign(view_count, 0);
+  usable_.assign(view_count, 0);
   const CasterChanges changes{casters.changes_only ? casters.changed : caster_changes_.update(casters.all),
                               casters.changes_only ? casters.moving : std::span<const scene::Aabb>{}};
   cache_.plan(cache_lights_, changes, tighter_cap(view_budget, limits.view_cap), static_layers_, render_,
               usable_, pool);
-  // What each map cost this frame, for the planner's redraw rates: a map drawn into new tiles
-  // says nothing of how often its light or its casters change.
   redraws_.resize(requests_.size());
-  jobs::run_in_pieces(pool, requests_.size(), views_per_piece, [&](size_t begin, size_t end) {
-    for (size_t r = begin; r < end; ++r) {
-      redraws_[r] = placements_[r].resolution == 0 || placements_[r].moved
-                        ? ShadowAtlasPlanner::no_redraw_sample
-                    : render_[cache_index_[r]] != keep_map ? ShadowAtlasPlanner::map_redrawn
-                                                           : ShadowAtlasPlanner::map_kept;
+  jobs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) {
+      const uint32_t request = request_of_[v];
+      if (request == no_request) continue;
+      redraws_[request] = !cache_lights_[v].placed || cache_lights_[v].invalid
+                              ? ShadowAtlasPlanner::no_redraw_sample
+                          : render_[v] != keep_map ? ShadowAtlasPlanner::map_redrawn
+                                                   : ShadowAtlasPlanner::map_kept;
     }
   });
   planner_.record_redraws(redraws_, pool);
@@ -170,18 +174,17 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     align_by_key(lights.maps, rendered_maps_, places_, rendered_maps_scratch_);
     align_by_key(lights.cubes, rendered_cubes_, places_, rendered_cubes_scratch_);
   }
-  const auto apply = [&](uint32_t request, auto& view, auto&& give_map) {
+  const auto apply = [&](size_t v, auto& view, auto&& give_map) {
     view.resolution = 0;
     view.render = false;
     view.moving_casters_only = false;
-    if (request == no_request || placements_[request].resolution == 0) return;
-    const uint32_t cached = cache_index_[request];  // the cache saw every request with a tile
-    if (usable_[cached] == 0) return;
-    const ShadowPlacement& placement = placements_[request];
+    if (usable_[v] == 0) return;  // not placed, or nothing valid in its tile yet
+    const ShadowPlacement& placement = placements_[request_of_[v]];
     view.resolution = placement.resolution;
-    view.render = render_[cached] != keep_map;
-    view.moving_casters_only = render_[cached] == draw_moving_casters;
-    view.frames_since_drawn = uint32_t(std::min<uint64_t>(cache_.plans_since_rendered(cached), UINT32_MAX));
+    view.render = render_[v] != keep_map;
+    view.moving_casters_only = render_[v] == draw_moving_casters;
+    view.frames_since_drawn =
+        uint32_t(std::min<uint64_t>(cache_.plans_since_rendered(uint32_t(v)), UINT32_MAX));
     give_map(placement);
   };
   // A cached map was rendered from where its light was then: the record samples it with that
@@ -191,7 +194,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       if (v < map_count) {
         ShadowMapView& map = lights.maps[v];
         if (map.cascade != no_cascade) lights.cascades[map.cascade] = GpuLight{};  // no map unless given one
-        apply(request_of_[v], map, [&](const ShadowPlacement& placement) {
+        apply(v, map, [&](const ShadowPlacement& placement) {
           map.tile = placement.tiles[0];
           RenderedMap& rendered = rendered_maps_[v];
           // Moving casters are drawn over the static layer with the view it was drawn with (a
@@ -209,7 +212,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
         continue;
       }
       ShadowCubeView& cube = lights.cubes[v - map_count];
-      apply(request_of_[v], cube, [&](const ShadowPlacement& placement) {
+      apply(v, cube, [&](const ShadowPlacement& placement) {
         cube.tiles = placement.tiles;
         RenderedCube& rendered = rendered_cubes_[v - map_count];
         if (cube.moving_casters_only) {

@@ -150,16 +150,14 @@ class ShadowSchedule {
   std::vector<uint32_t> request_of_;  // per view (maps, then cubes): its request or no_request
   // Per view, as request_of_: what it would request, and what the cache would see of it.
   std::vector<ShadowRequest> view_requests_;
-  std::vector<ShadowCacheLight> view_cache_lights_;
+  std::vector<ShadowCacheLight> cache_lights_;
   std::vector<uint8_t> pieces_aligned_;  // per piece of views: its views' rendered entries are theirs
   jobs::KeepScratch keep_scratch_;
   std::vector<ShadowRequest> requests_;
   std::vector<ShadowPlacement> placements_;
-  std::vector<ShadowCacheLight> cache_lights_;
   std::vector<uint8_t> render_;
   std::vector<uint8_t> usable_;
-  std::vector<uint32_t> cache_index_;  // per request with a tile: its place in cache_lights_
-  std::vector<uint8_t> redraws_;       // per request: ShadowAtlasPlanner::RedrawSample
+  std::vector<uint8_t> redraws_;  // per request: ShadowAtlasPlanner::RedrawSample
 
   // The view each light's map was last rendered with, in the order of the frame's maps and
   // cubes: usually the previous frame's lights in the same order, so nothing is looked up.

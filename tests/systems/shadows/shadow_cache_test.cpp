@@ -119,6 +119,32 @@ TEST(ShadowCache, LightsAreKnownByKeyNotByPlace) {
   EXPECT_EQ(back.render, (std::vector<uint8_t>{0, 1, 0}));
 }
 
+// A light without storage this frame keeps its place in the list (so the others need no lookup
+// by key) but is as if gone: nothing renders or counts it, casters do not reach it, and when it
+// is placed again it is new, ahead of stale lights.
+TEST(ShadowCache, ALightNotPlacedIsAsIfGoneButKeepsItsPlace) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights{spot(1), cube(2), spot(3)};
+  plan(cache, lights);
+  lights[1].placed = false;
+  const std::vector<scene::Aabb> everywhere{{glm::vec3(-10.0f), glm::vec3(10.0f)}};
+  const Plan away = plan(cache, lights, 0, everywhere);
+  EXPECT_EQ(away.render, (std::vector<uint8_t>{1, 0, 1}));
+  EXPECT_EQ(away.usable, (std::vector<uint8_t>{1, 0, 1}));
+  EXPECT_EQ(cache.stats().views_rendered, 2u);
+  EXPECT_EQ(cache.stats().views_cached, 0u);
+  EXPECT_EQ(cache.stats().lights_unavailable, 0u);
+  EXPECT_EQ(cache.stats().lights_due, 2u);
+
+  // Back, with light 1 changed too and a budget for one light: the new one renders first.
+  lights[1].placed = true;
+  lights[0].changed = true;
+  const Plan back = plan(cache, lights, 6);
+  EXPECT_EQ(back.render, (std::vector<uint8_t>{0, 1, 0}));
+  EXPECT_EQ(back.usable, all(3, 1));
+  EXPECT_EQ(cache.stats().lights_waiting, 1u);
+}
+
 TEST(ShadowCache, AnInvalidLightIsUnusableUntilRendered) {
   ShadowCache cache;
   std::vector<ShadowCacheLight> lights{spot(1), spot(2)};
