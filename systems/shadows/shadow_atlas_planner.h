@@ -172,10 +172,12 @@ class ShadowAtlasPlanner {
                            std::optional<float> previous_held, float redraw_rate, float lowered_tiers) const;
   void match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool, float lowered_tiers);
   void release_lights_not_requested();
-  void fit_budget(std::span<const ShadowRequest> requests);
-  // by_importance_: the requests with a shadow, least important first, ties by key so that the
-  // order does not depend on the order of requests.
-  void order_least_important_first(std::span<const ShadowRequest> requests);
+  void fit_budget(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool);
+  // by_importance_: the requests with a shadow, to be taken least important first, ties by key so
+  // that the order does not depend on the order of requests. Listed, then ordered only as far as
+  // least_important() is asked: the request of that rank.
+  void list_by_importance(std::span<const ShadowRequest> requests);
+  uint32_t least_important(std::span<const ShadowRequest> requests, size_t rank);
   uint64_t texels_that_do_not_fit() const;
   // fit_budget's whole passes at once (see there): what they saved, and whether a pass would
   // demote no light, which ends the stage.
@@ -183,7 +185,8 @@ class ShadowAtlasPlanner {
     uint64_t saved = 0;
     bool stage_done = false;
   };
-  WholePasses whole_passes(std::span<const ShadowRequest> requests, bool to_quality_floor, uint64_t room);
+  WholePasses whole_passes(std::span<const ShadowRequest> requests, bool to_quality_floor, uint64_t room,
+                           jobs::ThreadPool* pool);
   // Request indices ordered by decreasing resolution, cubes before 2D maps of the same size.
   std::vector<uint32_t> largest_first(std::span<const ShadowRequest> requests,
                                       std::span<const uint32_t> indices) const;
@@ -232,9 +235,11 @@ class ShadowAtlasPlanner {
   // Per tier (0: page_size, 1: half that, ...): the 2D maps and cubes the budget holds.
   std::vector<uint64_t> maps_per_tier_;
   std::vector<uint64_t> cubes_per_tier_;
-  std::vector<uint64_t> by_importance_;  // importance bits << 32 | request index
-  std::vector<uint64_t> by_importance_scratch_;
+  std::vector<uint64_t> by_importance_;                // importance bits << 32 | request index
+  size_t by_importance_ordered_ = 0;                   // its front, in order
+  std::vector<uint32_t> bucket_counts_;                // least_important's histogram
   std::vector<uint64_t> lights_by_tier_and_halvings_;  // whole_passes' counts
+  std::vector<uint64_t> piece_counts_;                 // and each piece's
   std::vector<Tally> tallies_;
 
   AtlasStats stats_;

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -428,11 +429,17 @@ TEST(ShadowAtlasPlanner, TheBudgetDemotesAsWalkingItsPassesLightByLightWould) {
     std::vector<uint32_t> wanted;
     for (const ShadowRequest& request : requests) wanted.push_back(uint32_t(request.importance));
     const std::vector<uint32_t> expected = fit_light_by_light(config, requests, wanted);
+    // Asked in a shuffled order: the planner orders them itself (a chunk at a time).
+    std::vector<size_t> asked(requests.size());
+    std::iota(asked.begin(), asked.end(), size_t{0});
+    std::shuffle(asked.begin(), asked.end(), random);
+    std::vector<ShadowRequest> shuffled;
+    for (const size_t i : asked) shuffled.push_back(requests[i]);
     ShadowAtlasPlanner planner(config);
-    const std::vector<ShadowPlacement> out = plan(planner, requests);
-    expect_valid_tiles(config, requests, out);
-    for (size_t i = 0; i < requests.size(); ++i) {
-      ASSERT_EQ(out[i].resolution, expected[i]) << count << " lights, light " << i;
+    const std::vector<ShadowPlacement> out = plan(planner, shuffled);
+    expect_valid_tiles(config, shuffled, out);
+    for (size_t k = 0; k < asked.size(); ++k) {
+      ASSERT_EQ(out[k].resolution, expected[asked[k]]) << count << " lights, light " << asked[k];
     }
   }
 }
