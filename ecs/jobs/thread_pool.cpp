@@ -69,21 +69,30 @@ void ThreadPool::run(std::size_t count, const Task& task) {
 }
 
 void ThreadPool::drain(std::uint32_t batch) {
+  // A claim takes a share of what is left, a part in two per thread of it (at least one task),
+  // so that a batch of thousands of small tasks costs a few dozen claims, not thousands, while
+  // its last tasks still spread over the threads. One task a claim, 1,560 pieces of 64 lights
+  // a pass over 100,000 cost 0.3-1.4 ms a pass on an H200 host's 16 threads (2026-12-03).
+  const std::uint32_t share = 2 * thread_count();
   for (;;) {
     std::uint64_t claim = claim_.load(std::memory_order_acquire);
+    std::uint32_t taken = 0;
     do {
       if (batch_of(claim) != batch || unclaimed_in(claim) == 0) return;
-    } while (!claim_.compare_exchange_weak(claim, claim - 1, std::memory_order_acq_rel,
+      taken = std::max<std::uint32_t>(unclaimed_in(claim) / share, 1);
+    } while (!claim_.compare_exchange_weak(claim, claim - taken, std::memory_order_acq_rel,
                                            std::memory_order_acquire));
     // Tasks are handed out in order, from the first.
-    const std::uint32_t index = count_.load(std::memory_order_relaxed) - unclaimed_in(claim);
-    try {
-      (*task_.load(std::memory_order_relaxed))(index);
-    } catch (...) {
-      const std::lock_guard lock(error_mutex_);
-      if (error_ == nullptr) error_ = std::current_exception();
+    const std::uint32_t first = count_.load(std::memory_order_relaxed) - unclaimed_in(claim);
+    for (std::uint32_t index = first; index < first + taken; ++index) {
+      try {
+        (*task_.load(std::memory_order_relaxed))(index);
+      } catch (...) {
+        const std::lock_guard lock(error_mutex_);
+        if (error_ == nullptr) error_ = std::current_exception();
+      }
     }
-    if (unfinished_.fetch_sub(1, std::memory_order_acq_rel) == 1) unfinished_.notify_all();
+    if (unfinished_.fetch_sub(taken, std::memory_order_acq_rel) == taken) unfinished_.notify_all();
   }
 }
 

@@ -60,8 +60,9 @@ class ThreadPool {
   // Wakes sleeping workers: they re-read claim_ and spin for a while.
   void signal_workers();
 
-  // Tasks are claimed without a lock, one compare-exchange each on this word: the batch number in
-  // the high half, the count of tasks not yet claimed in the low half. Whether a task is left is
+  // Tasks are claimed without a lock, one compare-exchange a claim (of one task or several, in
+  // order) on this word: the batch number in the high half, the count of tasks not yet claimed in
+  // the low half. Whether a task is left is
   // read from this word alone. Read from count_, as it once was, a worker waking late could see
   // the next batch's count_ beside the last batch's word, claim a task that did not exist, and
   // drive unfinished_ below zero, so that the caller slept forever. A mutex per claim cost more
