@@ -14,6 +14,8 @@
 
 #include <glm/glm.hpp>
 
+#include "ecs/jobs/parallel_pieces.h"
+
 #include "systems/scene/aabb.h"
 #include "systems/scene/shadow_settings.h"
 #include "systems/shadows/align_by_key.h"
@@ -70,6 +72,8 @@ struct ShadowCacheStats {
   uint32_t lag_p50 = 0;
   uint32_t lag_p99 = 0;
   uint32_t lag_max = 0;
+
+  friend bool operator==(const ShadowCacheStats&, const ShadowCacheStats&) = default;
 };
 
 class ShadowCache {
@@ -105,7 +109,7 @@ class ShadowCache {
   // lights (O(dirty), radix sorts on their keys and on how stale they are). A frame allocates
   // nothing once grown, except when the lights are not the previous frame's keys in the previous
   // frame's order: the states are then matched to them through a table of keys (KeyPlaces). With
-  // a `pool`, the lights are tested against the boxes on it.
+  // a `pool`, the passes over the lights and the tests against the boxes run in pieces on it.
   void plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes, uint32_t view_budget,
             bool static_layers, std::span<uint8_t> render, std::span<uint8_t> usable,
             jobs::ThreadPool* pool = nullptr);
@@ -143,7 +147,9 @@ class ShadowCache {
   void mark_by_casters(std::span<const ShadowCacheLight> lights, std::span<const scene::Aabb> boxes,
                        bool LightState::*flag, jobs::ThreadPool* pool);
   void choose_renders(std::span<const ShadowCacheLight> lights, uint32_t view_budget,
-                      std::span<uint8_t> render);
+                      std::span<uint8_t> render, jobs::ThreadPool* pool);
+  // Whether states_ holds the lights' keys in their order.
+  bool same_keys(std::span<const ShadowCacheLight> lights, jobs::ThreadPool* pool);
   // Fills stats_'s lag figures from lags_.
   void summarize_lags();
 
@@ -163,7 +169,10 @@ class ShadowCache {
   // The dirty lights, in the order they get renders: staleness rank << 32 | index in `lights`.
   std::vector<uint64_t> order_;
   std::vector<uint64_t> order_scratch_;
-  std::vector<uint32_t> lags_;        // the due lights' lags (ShadowCacheStats)
+  std::vector<uint32_t> lags_;             // the due lights' lags (ShadowCacheStats)
+  std::vector<ShadowCacheStats> tallies_;  // plan's counts, per piece of lights
+  std::vector<uint8_t> piece_flags_;       // same_keys: per piece of lights, whether its keys match
+  jobs::KeepScratch keep_scratch_;
   std::vector<uint32_t> candidates_;  // lights tested against the caster boxes, then the dirty ones
   std::vector<glm::vec4> candidate_reach_;
   std::vector<uint8_t> candidate_met_;

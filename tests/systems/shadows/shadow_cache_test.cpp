@@ -517,5 +517,42 @@ TEST(ShadowCache, ManyChangedCastersRenderExactlyTheLightsTheyReach) {
   EXPECT_LT(rendered, lights.size() / 2);  // the test means something: most lights stay cached
 }
 
+// The passes over the lights run in pieces on a pool: frames of changed, invalid, unplaced lights,
+// still and moving casters and a short budget plan there as on one thread, counts and lags included.
+TEST(ShadowCache, OnAPoolPlansAsOnOneThread) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> coordinate(-200.0f, 200.0f);
+  std::vector<ShadowCacheLight> lights;
+  for (uint64_t key = 0; key < 5'000; ++key) {
+    lights.push_back(key % 4 == 0 ? cube(key) : spot(key));
+    lights.back().reach =
+        glm::vec4(coordinate(random), 0.0f, coordinate(random), key % 500 == 0 ? -1.0f : 8.0f);
+  }
+  ShadowCache serial;
+  ShadowCache pooled;
+  jobs::ThreadPool threads(3);
+  for (int frame = 0; frame < 10; ++frame) {
+    std::vector<scene::Aabb> still;
+    std::vector<scene::Aabb> moving;
+    for (int b = 0; b < 20; ++b) {
+      const glm::vec3 min(coordinate(random), -1.0f, coordinate(random));
+      (b % 2 == 0 ? still : moving).push_back({min, min + glm::vec3(4.0f)});
+    }
+    Plan one{all(lights.size(), 0), all(lights.size(), 0)};
+    Plan many = one;
+    serial.plan(lights, {still, moving}, 900, true, one.render, one.usable);
+    pooled.plan(lights, {still, moving}, 900, true, many.render, many.usable, &threads);
+    ASSERT_EQ(many.render, one.render) << "frame " << frame;
+    ASSERT_EQ(many.usable, one.usable) << "frame " << frame;
+    EXPECT_TRUE(pooled.stats() == serial.stats()) << "frame " << frame;
+    EXPECT_GT(serial.stats().lights_waiting, 0u);  // the budget was short
+    for (ShadowCacheLight& light : lights) {
+      light.changed = random() % 20 == 0;
+      light.invalid = random() % 50 == 0;
+      light.placed = random() % 30 != 0;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sg::shadows
