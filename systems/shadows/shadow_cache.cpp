@@ -18,6 +18,11 @@ namespace {
 // Lights a piece of the cache's passes handles on the pool.
 constexpr size_t lights_per_piece = 256;
 
+// Dirty lights are few below one in this many: choose_renders sorts them by key on their own.
+// Sorting tens of thousands of them each frame while the maps were first drawn (100,000 lights)
+// took longer than reading every light's key order, sorted once.
+constexpr size_t few_dirty_lights = 8;
+
 }  // namespace
 
 void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes,
@@ -30,7 +35,10 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
   ++frame_;
   // Each pass over the lights runs in pieces on the pool: read one after another on one thread,
   // 100,000 lights' states took about a millisecond a pass on an H200 host (2026-12-03).
-  if (!same_keys(lights, pool)) align_by_key(lights, states_, places_, matched_);
+  if (!same_keys(lights, pool)) {
+    align_by_key(lights, states_, places_, matched_);
+    by_key_.clear();
+  }
   jobs::run_in_pieces(pool, lights.size(), lights_per_piece, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       LightState& state = states_[i];
@@ -204,25 +212,38 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
   }
 
   // Lights without a valid map, then the stalest (each of the two by staleness), ties by key
-  // (the header's order): the dirty lights sorted by key, then stably by how long ago each was
-  // rendered, a byte or two wide. Radix sorts over the dirty lights alone: a few thousand a frame
-  // where 100,000 lights have shadows, whose key order, sorted afresh whenever the lights with
-  // maps changed, took 2.3 ms a frame on an H200 host (2026-12-03).
+  // (the header's order): the dirty lights in key order, then a stable radix sort on how long ago
+  // each was rendered, a byte or two wide. The key order is the dirty lights' own, radix-sorted,
+  // when they are few (a few thousand of 100,000 once the maps are drawn); when many are (while
+  // the maps are first drawn), it is read from every light's key order, sorted once while the
+  // lights stay the same, in pieces on the pool.
   uint64_t oldest = UINT64_MAX;
   uint64_t newest = 0;
-  dirty_by_key_.clear();
   for (const uint32_t i : candidates_) {
     oldest = std::min(oldest, states_[i].rendered_frame);
     newest = std::max(newest, states_[i].rendered_frame);
-    dirty_by_key_.push_back({lights[i].key, i});
   }
-  radix_sort(dirty_by_key_, dirty_by_key_scratch_, [](const KeyedLight& light) { return light.key; });
   const uint64_t span = newest - oldest + 1;  // candidates_ is not empty: some are over the budget
-  order_.clear();
-  for (const KeyedLight& light : dirty_by_key_) {
-    const LightState& state = states_[light.index];
-    const uint64_t rank = (state.valid ? span : 0) + state.rendered_frame - oldest;
-    order_.push_back(rank << 32 | light.index);
+  const auto ranked = [&](uint32_t i) {
+    const LightState& state = states_[i];
+    return ((state.valid ? span : 0) + state.rendered_frame - oldest) << 32 | i;
+  };
+  order_.resize(candidates_.size());
+  if (candidates_.size() * few_dirty_lights < lights.size()) {
+    dirty_by_key_.clear();
+    for (const uint32_t i : candidates_) dirty_by_key_.push_back({lights[i].key, i});
+    radix_sort(dirty_by_key_, by_key_scratch_, [](const KeyedLight& light) { return light.key; });
+    for (size_t k = 0; k < dirty_by_key_.size(); ++k) order_[k] = ranked(dirty_by_key_[k].index);
+  } else {
+    if (by_key_.size() != lights.size()) {
+      by_key_.resize(lights.size());
+      for (uint32_t i = 0; i < lights.size(); ++i) by_key_[i] = {lights[i].key, i};
+      radix_sort(by_key_, by_key_scratch_, [](const KeyedLight& light) { return light.key; });
+    }
+    jobs::keep_in_pieces(
+        pool, by_key_.size(), lights_per_piece, keep_scratch_,
+        [&](size_t k) { return states_[by_key_[k].index].dirty || states_[by_key_[k].index].moving_dirty; },
+        [&](size_t k, size_t rank) { order_[rank] = ranked(by_key_[k].index); });
   }
   const auto rank_bits = static_cast<uint32_t>(std::bit_width(2 * span - 1));
   radix_sort(

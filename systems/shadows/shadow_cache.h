@@ -164,8 +164,11 @@ class ShadowCache {
     uint64_t key;
     uint32_t index;  // in `lights`
   };
-  std::vector<KeyedLight> dirty_by_key_;  // choose_renders: the dirty lights by key
-  std::vector<KeyedLight> dirty_by_key_scratch_;
+  // choose_renders: every light by key (kept while the lights' keys are the same), and the dirty
+  // lights by key when they are few.
+  std::vector<KeyedLight> by_key_;
+  std::vector<KeyedLight> dirty_by_key_;
+  std::vector<KeyedLight> by_key_scratch_;
   // The dirty lights, in the order they get renders: staleness rank << 32 | index in `lights`.
   std::vector<uint64_t> order_;
   std::vector<uint64_t> order_scratch_;

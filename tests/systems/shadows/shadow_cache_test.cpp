@@ -554,5 +554,27 @@ TEST(ShadowCache, OnAPoolPlansAsOnOneThread) {
   }
 }
 
+// Equally stale dirty lights render in key order whether they are few (sorted on their own) or
+// many (read from every light's key order).
+TEST(ShadowCache, FewOrManyDirtyLightsRenderInKeyOrder) {
+  for (const uint64_t dirty_count : {3u, 50u}) {
+    std::vector<ShadowCacheLight> lights;
+    for (uint64_t i = 0; i < 100; ++i) lights.push_back(spot((i * 37) % 100 + 1));  // keys out of order
+    ShadowCache cache;
+    plan(cache, lights);
+    std::vector<uint64_t> dirty_keys;
+    for (uint64_t i = 0; i < dirty_count; ++i) {
+      lights[i * 2].changed = true;
+      dirty_keys.push_back(lights[i * 2].key);
+    }
+    std::sort(dirty_keys.begin(), dirty_keys.end());
+    for (const uint64_t key : dirty_keys) {
+      EXPECT_EQ(rendered_keys(lights, plan(cache, lights, 1)), (std::vector<uint64_t>{key})) << dirty_count;
+      lights = unchanged(lights);
+    }
+    EXPECT_TRUE(rendered_keys(lights, plan(cache, lights, 1)).empty());
+  }
+}
+
 }  // namespace
 }  // namespace sg::shadows
