@@ -138,9 +138,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   planner_.plan(requests_, placements_, pool, limits.lowered_tiers);
 
   // The cache sees every view, in the views' order (usually the last frame's, so that its states
-  // need no lookup by key), those without a tile as not placed; and what each map cost this
-  // frame, for the planner's redraw rates: a map drawn into new tiles says nothing of how often
-  // its light or its casters change.
+  // need no lookup by key), those without a tile as not placed.
   jobs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       const uint32_t request = request_of_[v];
@@ -154,6 +152,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
                               casters.changes_only ? casters.moving : std::span<const scene::Aabb>{}};
   cache_.plan(cache_lights_, changes, tighter_cap(view_budget, limits.view_cap), static_layers_, render_,
               usable_, pool);
+  // What each map cost this frame, for the planner's redraw rates: a map drawn into new tiles
+  // says nothing of how often its light or its casters change.
   redraws_.resize(requests_.size());
   jobs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
