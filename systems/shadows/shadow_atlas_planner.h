@@ -174,10 +174,20 @@ class ShadowAtlasPlanner {
   void release_lights_not_requested();
   void fit_budget(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool);
   // by_importance_: the requests with a shadow, to be taken least important first, ties by key so
-  // that the order does not depend on the order of requests. Listed, then ordered only as far as
-  // least_important() is asked: the request of that rank.
+  // that the order does not depend on the order of requests; unordered when listed.
   void list_by_importance(std::span<const ShadowRequest> requests);
-  uint32_t least_important(std::span<const ShadowRequest> requests, size_t rank);
+  // What fit_budget does to its lights: halve them down to their quality floor, then to
+  // min_resolution, then drop them.
+  enum class BudgetStage { to_quality_floor, to_smallest_tier, dropping };
+  // What taking one light in `stage` saves (0: it is at its floor).
+  uint64_t step_saving(const ShadowRequest& request, uint32_t resolution, BudgetStage stage) const;
+  // Takes the pass's lights not taken yet (by_importance_ from taken_in_pass_), least important
+  // first, until they saved `room` or none is left: what they saved, and whether any was demoted.
+  struct PassStep {
+    uint64_t saved = 0;
+    bool demoted = false;
+  };
+  PassStep take_least_important(std::span<const ShadowRequest> requests, BudgetStage stage, uint64_t room);
   uint64_t texels_that_do_not_fit() const;
   // fit_budget's whole passes at once (see there): what they saved, and whether a pass would
   // demote no light, which ends the stage.
@@ -236,8 +246,8 @@ class ShadowAtlasPlanner {
   std::vector<uint64_t> maps_per_tier_;
   std::vector<uint64_t> cubes_per_tier_;
   std::vector<uint64_t> by_importance_;                // importance bits << 32 | request index
-  size_t by_importance_ordered_ = 0;                   // its front, in order
-  std::vector<uint32_t> bucket_counts_;                // least_important's histogram
+  size_t taken_in_pass_ = 0;                           // its front: the lights the pass took
+  std::vector<uint64_t> bucket_savings_;               // take_least_important's histogram
   std::vector<uint64_t> lights_by_tier_and_halvings_;  // whole_passes' counts
   std::vector<uint64_t> piece_counts_;                 // and each piece's
   std::vector<Tally> tallies_;
