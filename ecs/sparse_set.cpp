@@ -21,6 +21,16 @@ bool SparseSet::has_same_layout(const SparseSet& other) const {
   return known->same;
 }
 
+std::uint64_t SparseSet::layout_stamp() const {
+  // Drawn from one counter for every pool, so that no two pools ever share a stamp.
+  static std::atomic<std::uint64_t> next_stamp{1};
+  if (stamped_version_ != layout_version_) {
+    stamp_ = next_stamp.fetch_add(1, std::memory_order_relaxed);
+    stamped_version_ = layout_version_;
+  }
+  return stamp_;
+}
+
 void SparseSet::mark_range_changed(std::uint32_t begin, std::uint32_t end, Tick now) {
   if (begin >= end) return;
   std::fill(ticks_.begin() + begin, ticks_.begin() + end, now);

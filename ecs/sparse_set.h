@@ -85,6 +85,10 @@ class SparseSet {
   // and slot i of the other belong to the same entity. The answer is cached until either pool
   // changes structurally, so asking every frame is O(1).
   bool has_same_layout(const SparseSet& other) const;
+  // Names the entities and their slots as they are now: two stamps, from any pools of any
+  // worlds, are equal only when they are this pool's with no insert, erase or reordering
+  // between them. O(1); not to be called concurrently with itself.
+  std::uint64_t layout_stamp() const;
 
   // Records a write at `now`, the world's current tick, to the component in a slot. Calls for
   // different slots may run concurrently (a parallel query): the slot tick is the caller's
@@ -195,6 +199,8 @@ class SparseSet {
   std::vector<Removal> removals_;     // ascending ticks; empty unless keeps_removals_
   std::uint64_t layout_version_ = 0;  // bumped by every insert and erase
   mutable std::vector<LayoutComparison> layout_comparisons_;
+  mutable std::uint64_t stamp_ = 0;  // layout_stamp() of stamped_version_
+  mutable std::uint64_t stamped_version_ = ~std::uint64_t{0};
 };
 
 }  // namespace sg::ecs

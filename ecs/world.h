@@ -109,6 +109,14 @@ class World {
     return components->at(slot);
   }
 
+  // The layout stamp of T's pool (SparseSet::layout_stamp): equal stamps mean the same entities
+  // in the same order. 0 while the world has no pool of T.
+  template <typename T>
+  std::uint64_t layout_stamp() const {
+    const SparseSet* set = find_pool<T>();
+    return set != nullptr ? set->layout_stamp() : 0;
+  }
+
   // Tick of the newest write to the entity's component; throws std::out_of_range if absent.
   template <typename T>
   Tick change_tick(Entity entity) const {

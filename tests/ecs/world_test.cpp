@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <vector>
 
@@ -26,6 +27,41 @@ TEST(World, AddGetHasRemove) {
   EXPECT_TRUE(world.remove<Position>(entity));
   EXPECT_FALSE(world.has<Position>(entity));
   EXPECT_FALSE(world.remove<Position>(entity));
+}
+
+TEST(World, LayoutStampsChangeWithEveryInsertEraseAndReorderOnly) {
+  World world;
+  EXPECT_EQ(world.layout_stamp<Position>(), 0u);  // no pool yet
+  std::vector<Entity> entities;
+  for (int i = 0; i < 3; ++i) entities.push_back(world.create());
+  for (const Entity entity : entities) world.add<Position>(entity);
+  for (auto it = entities.rbegin(); it != entities.rend(); ++it) world.add<Velocity>(*it);
+  const uint64_t position = world.layout_stamp<Position>();
+  const uint64_t velocity = world.layout_stamp<Velocity>();
+  EXPECT_NE(position, 0u);
+  EXPECT_NE(position, velocity);
+
+  world.get_mut<Position>(entities[0]).x = 1.0f;  // a write is no structural change
+  world.advance_tick();
+  EXPECT_EQ(world.layout_stamp<Position>(), position);
+
+  // The query finds Velocity in another order; the next tick puts it in entity order.
+  world.query<const Position, const Velocity>().for_each([](const Position&, const Velocity&) {});
+  world.advance_tick();
+  EXPECT_EQ(world.layout_stamp<Position>(), position);
+  EXPECT_NE(world.layout_stamp<Velocity>(), velocity);
+
+  world.remove<Position>(entities[1]);
+  const uint64_t removed = world.layout_stamp<Position>();
+  EXPECT_NE(removed, position);
+  world.add<Position>(entities[1]);  // the same entities again, in another order
+  EXPECT_NE(world.layout_stamp<Position>(), removed);
+  EXPECT_NE(world.layout_stamp<Position>(), position);
+
+  World other;  // no pool of another world shares a stamp
+  other.add<Position>(other.create());
+  EXPECT_NE(other.layout_stamp<Position>(), position);
+  EXPECT_NE(other.layout_stamp<Position>(), world.layout_stamp<Position>());
 }
 
 TEST(World, AddReplacesExistingComponent) {
