@@ -133,6 +133,16 @@ struct GatheredLight {
   friend bool operator==(const GatheredLight&, const GatheredLight&) = default;
 };
 
+// What a gather's list gave out: map views, cube views and cascade records.
+struct GatheredViews {
+  uint32_t maps = 0;
+  uint32_t cubes = 0;
+  uint32_t cascades = 0;
+};
+
+// The layout stamps (ecs::World::layout_stamp) of the pools gathering lists lights from.
+using LightLayout = std::array<uint64_t, 6>;
+
 struct FrameLights {
   // After sort_by_group, ordered by light group (light_groups.h): the records of group g are
   // [group_begin[g], group_begin[g + 1]), so a pass that shades one group reads one range.
@@ -174,6 +184,9 @@ struct FrameLights {
     // The last gather's list, overrides, and each light's record as packed (before the schedule
     // gave it a shadow) and whether it had a Name: what a light unchanged since keeps.
     std::vector<GatheredLight> last_gathered;
+    GatheredViews views;                  // of last_gathered
+    std::vector<CascadedLight> cascaded;  // of last_gathered, by their places in it
+    LightLayout last_layout{};
     LightOverrides last_overrides;
     std::vector<GpuLight> packed;
     std::vector<uint8_t> named;

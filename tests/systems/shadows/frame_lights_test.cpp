@@ -482,7 +482,9 @@ TEST(FrameLights, AGatherKeepingUnchangedLightsEqualsAFreshGather) {
     if (i % 2 == 0) lights.push_back(scene::add_light(scene, scene::PointLight{}, at, shadow, name));
     if (i % 2 == 1) lights.push_back(scene::add_light(scene, scene::SpotLight{}, at, shadow, name));
   }
-  scene::add_light(scene, scene::DirectionalLight{}, above, shadow_at(512), "sun");
+  scene::ShadowSettings sun = shadow_at(512);
+  sun.cascades = 3;
+  scene::add_light(scene, scene::DirectionalLight{}, above, sun, "sun");
   scene::add_light(scene, scene::CylinderLight{}, above, shadow_at(512), "");
   ecs::World& world = scene.world;
   ecs::update_world_transforms(world, 0);
@@ -507,7 +509,10 @@ TEST(FrameLights, AGatherKeepingUnchangedLightsEqualsAFreshGather) {
             if (world.has<scene::SpotLight>(light)) world.get_mut<scene::SpotLight>(light).range += 1.0f;
             if (world.has<scene::PointLight>(light)) world.get_mut<scene::PointLight>(light).range += 1.0f;
             break;
-          case 2: world.get_mut<scene::ShadowSettings>(light).resolution *= 2; break;
+          case 2:  // on some frames only: the others reuse the last gather's list
+            if (frame % 3 == 0) world.get_mut<scene::ShadowSettings>(light).resolution *= 2;
+            if (frame % 3 != 0) world.get_mut<ecs::LocalTransform>(light).translation.x += 0.5f;
+            break;
           case 3:
             if (world.has<scene::Name>(light)) world.get_mut<scene::Name>(light).value += "'";
             break;
@@ -515,7 +520,14 @@ TEST(FrameLights, AGatherKeepingUnchangedLightsEqualsAFreshGather) {
       }
     }
     if (frame == 4) world.remove<scene::Name>(lights[1]);  // renamed by its kind and index
-    if (frame == 6) world.get_mut<scene::ShadowSettings>(lights[2]).casts_shadow = false;
+    if (frame == 5) world.get_mut<scene::ShadowSettings>(lights[2]).casts_shadow = false;
+    if (frame == 7) {
+      edited_now.insert(light_key(scene::add_light(scene, scene::SpotLight{}, above, shadow_at(256), "new")));
+    }
+    if (frame == 8) {
+      world.destroy(lights.back());
+      lights.pop_back();
+    }
     scene_bounds.max.x += 1.0f;  // the directional and cylinder views follow it
     ecs::update_world_transforms(world, transforms_at);
     transforms_at = world.tick();
@@ -530,6 +542,11 @@ TEST(FrameLights, AGatherKeepingUnchangedLightsEqualsAFreshGather) {
               0);
     ASSERT_EQ(kept.maps.size(), fresh.maps.size());
     ASSERT_EQ(kept.cubes.size(), fresh.cubes.size());
+    ASSERT_EQ(kept.cascaded.size(), fresh.cascaded.size());
+    for (size_t c = 0; c < fresh.cascaded.size(); ++c) {
+      EXPECT_EQ(kept.cascaded[c].record, fresh.cascaded[c].record);
+      EXPECT_EQ(kept.cascaded[c].first_view, fresh.cascaded[c].first_view);
+    }
     // What gathering sets in a map's or a cube's view alike.
     const auto expect_same_view = [&](const auto& kept_view, const auto& fresh_view,
                                       const std::string& which) {
