@@ -133,7 +133,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
         requests_[r] = view_requests_[v];
       });
   requests_.resize(request_count);
-  placements_.assign(requests_.size(), ShadowPlacement{});
+  placements_.resize(requests_.size());  // plan() writes every one: 8 MB serially for 79,000 requests
   const ShadowTimeBudget::Limits& limits = time_budget_.limits();
   planner_.plan(requests_, placements_, pool, limits.lowered_tiers);
 
