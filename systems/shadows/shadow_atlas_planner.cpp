@@ -27,6 +27,9 @@ AtlasConfig sanitized(AtlasConfig config) {
 
 uint32_t tile_count(bool cube) { return cube ? 6 : 1; }
 uint64_t area(uint32_t side) { return uint64_t(side) * side; }
+// fit_budget's entries are importance bits << 32 | request index. Importances are not negative,
+// so the float's sign bit marks the lights the current pass took.
+constexpr uint64_t taken_bit = uint64_t{1} << 63;
 // Importance as bits that sort as the floats do: NaN and negative importances count as 0.
 uint64_t importance_bits(const ShadowRequest& request) {
   return std::bit_cast<uint32_t>(request.importance > 0.0f ? request.importance : 0.0f);
@@ -191,49 +194,80 @@ uint64_t ShadowAtlasPlanner::step_saving(const ShadowRequest& request, uint32_t 
 
 // What walking the pass light by light would take, without ordering what it walks: a histogram
 // of the savings over the top 16 bits of the importances' bits (a float's sign, exponent and 7
-// bits of mantissa) finds the bucket where the savings reach `room`; the lights below it are all
-// taken, in any order, and only that bucket's are sorted and walked. Sorting the 52,000 lights a
-// pass walked from the street camera (100,000 lights, a 2 GiB atlas) and walking them one by one
-// took 12.9 ms a frame on an H200 host (2026-12-03).
-ShadowAtlasPlanner::PassStep ShadowAtlasPlanner::take_least_important(std::span<const ShadowRequest> requests,
-                                                                      BudgetStage stage, uint64_t room) {
+// bits of mantissa) finds the bucket where they reach `room`; the lights below it are all
+// taken, in any order and on the pool, and only that bucket's are sorted and walked. Sorting
+// the 52,000 lights a pass walked from the street camera (100,000 lights, a 2 GiB atlas) and
+// walking them one by one took 12.9 ms a frame on an H200 host (2026-12-03).
+uint64_t ShadowAtlasPlanner::take_least_important(std::span<const ShadowRequest> requests, BudgetStage stage,
+                                                  uint64_t room, jobs::ThreadPool* pool) {
   const auto bucket = [](uint64_t value) { return size_t(value >> 48); };
-  const auto first = by_importance_.begin() + std::ptrdiff_t(taken_in_pass_);
   bucket_savings_.assign(size_t{1} << 16, 0);
-  for (auto it = first; it != by_importance_.end(); ++it) {
-    const uint32_t i = uint32_t(*it);
-    bucket_savings_[bucket(*it)] += step_saving(requests[i], resolution_[i], stage);
+  for (const uint64_t value : by_importance_) {
+    if ((value & taken_bit) != 0) continue;
+    const uint32_t i = uint32_t(value);
+    bucket_savings_[bucket(value)] += step_saving(requests[i], resolution_[i], stage);
   }
   size_t boundary = 0;  // the first bucket whose savings reach the room, or past the last
   for (uint64_t saved = 0; boundary < bucket_savings_.size(); ++boundary) {
     if (saved + bucket_savings_[boundary] >= room) break;
     saved += bucket_savings_[boundary];
   }
-  // The lights below the boundary first, then the boundary bucket's in order (ties by key, so
-  // that the order does not depend on the order of requests), then the rest.
-  const auto below =
-      std::partition(first, by_importance_.end(), [&](uint64_t value) { return bucket(value) < boundary; });
-  const auto at =
-      std::partition(below, by_importance_.end(), [&](uint64_t value) { return bucket(value) == boundary; });
-  std::sort(below, at, [&](uint64_t a, uint64_t b) {
-    return a >> 32 != b >> 32 ? a >> 32 < b >> 32 : requests[uint32_t(a)].key < requests[uint32_t(b)].key;
-  });
-  PassStep step;
-  auto it = first;
-  for (; it != by_importance_.end() && (it < below || step.saved < room); ++it) {
-    const uint32_t i = uint32_t(*it);
+  // Each piece takes its lights below the boundary and counts what that changed; the boundary
+  // bucket's are listed.
+  const auto take = [&](uint64_t& value, StepTally& tally) {
+    value |= taken_bit;
+    ++tally.taken;
+    const uint32_t i = uint32_t(value);
     uint32_t& resolution = resolution_[i];
     const uint64_t saving = step_saving(requests[i], resolution, stage);
-    if (saving == 0) continue;
-    std::vector<uint64_t>& per_tier = requests[i].cube ? cubes_per_tier_ : maps_per_tier_;
+    if (saving == 0) return;
+    std::array<int64_t, max_tiers>& per_tier = tally.tier_changes[requests[i].cube ? 1 : 0];
     --per_tier[tier_of(resolution)];
     resolution = stage == BudgetStage::dropping ? 0 : resolution / 2;
     if (resolution > 0) ++per_tier[tier_of(resolution)];
-    step.saved += saving;
-    step.demoted = true;
+    tally.saved += saving;
+  };
+  step_tallies_.assign(
+      std::max<size_t>((by_importance_.size() + requests_per_count - 1) / requests_per_count, 1),
+      StepTally{});
+  boundary_lights_.resize(by_importance_.size());
+  boundary_lights_.resize(jobs::keep_in_pieces(
+      pool, by_importance_.size(), requests_per_count, keep_scratch_,
+      [&](size_t k) {
+        uint64_t& value = by_importance_[k];
+        if ((value & taken_bit) != 0 || bucket(value) > boundary) return false;
+        if (bucket(value) == boundary) return true;
+        take(value, step_tallies_[k / requests_per_count]);
+        return false;
+      },
+      [&](size_t k, size_t rank) { boundary_lights_[rank] = uint32_t(k); }));
+  StepTally& total = step_tallies_[0];
+  for (size_t piece = 1; piece < step_tallies_.size(); ++piece) {
+    total.saved += step_tallies_[piece].saved;
+    total.taken += step_tallies_[piece].taken;
+    for (size_t cube = 0; cube < 2; ++cube) {
+      for (size_t tier = 0; tier < max_tiers; ++tier) {
+        total.tier_changes[cube][tier] += step_tallies_[piece].tier_changes[cube][tier];
+      }
+    }
   }
-  taken_in_pass_ = size_t(it - by_importance_.begin());
-  return step;
+  // The boundary bucket's in order, ties by key (so that the order does not depend on the order
+  // of requests), until the room is saved.
+  std::sort(boundary_lights_.begin(), boundary_lights_.end(), [&](uint32_t a, uint32_t b) {
+    const uint64_t x = by_importance_[a];
+    const uint64_t y = by_importance_[b];
+    return x >> 32 != y >> 32 ? x >> 32 < y >> 32 : requests[uint32_t(x)].key < requests[uint32_t(y)].key;
+  });
+  for (const uint32_t k : boundary_lights_) {
+    if (total.saved >= room) break;
+    take(by_importance_[k], total);
+  }
+  for (uint32_t tier = 0; tier < tier_count(); ++tier) {
+    maps_per_tier_[tier] = uint64_t(int64_t(maps_per_tier_[tier]) + total.tier_changes[0][tier]);
+    cubes_per_tier_[tier] = uint64_t(int64_t(cubes_per_tier_[tier]) + total.tier_changes[1][tier]);
+  }
+  taken_in_pass_ += total.taken;
+  return total.saved;
 }
 
 void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool,
@@ -332,7 +366,7 @@ void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests, job
   // (whole_passes); a pass that would save that much takes lights until it has
   // (take_least_important).
   BudgetStage stage = BudgetStage::to_quality_floor;
-  taken_in_pass_ = 0;
+  taken_in_pass_ = 0;  // list_by_importance() marked none taken
   bool demoted_in_pass = false;
   bool passes_counted = false;  // whole_passes ran where this pass begins
   const auto next_stage = [&] {
@@ -357,12 +391,13 @@ void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests, job
         if (!demoted_in_pass) next_stage();
         demoted_in_pass = false;
         taken_in_pass_ = 0;
+        for (uint64_t& value : by_importance_) value &= ~taken_bit;
         passes_counted = false;
         continue;
       }
-      const PassStep step = take_least_important(requests, stage, room);
-      demoted_in_pass = demoted_in_pass || step.demoted;
-      if (step.saved > 0) return step.saved;
+      const uint64_t saved = take_least_important(requests, stage, room, pool);
+      demoted_in_pass = demoted_in_pass || saved > 0;
+      if (saved > 0) return saved;
     }
   };
   // Packing is checked only once the steps have saved the area that did not fit, so a plan()

@@ -181,13 +181,18 @@ class ShadowAtlasPlanner {
   enum class BudgetStage { to_quality_floor, to_smallest_tier, dropping };
   // What taking one light in `stage` saves (0: it is at its floor).
   uint64_t step_saving(const ShadowRequest& request, uint32_t resolution, BudgetStage stage) const;
-  // Takes the pass's lights not taken yet (by_importance_ from taken_in_pass_), least important
-  // first, until they saved `room` or none is left: what they saved, and whether any was demoted.
-  struct PassStep {
+  // Takes the pass's lights not taken yet (not marked in by_importance_), least important first,
+  // until they saved `room` or none is left; returns what they saved (0: none was demoted).
+  uint64_t take_least_important(std::span<const ShadowRequest> requests, BudgetStage stage, uint64_t room,
+                                jobs::ThreadPool* pool);
+  // What the lights one piece of take_least_important took changed, the lights per tier (2D
+  // maps, cubes) among it.
+  static constexpr size_t max_tiers = 11;  // page_size / min_resolution <= 1024
+  struct StepTally {
     uint64_t saved = 0;
-    bool demoted = false;
+    size_t taken = 0;
+    std::array<std::array<int64_t, max_tiers>, 2> tier_changes{};
   };
-  PassStep take_least_important(std::span<const ShadowRequest> requests, BudgetStage stage, uint64_t room);
   uint64_t texels_that_do_not_fit() const;
   // fit_budget's whole passes at once (see there): what they saved, and whether a pass would
   // demote no light, which ends the stage.
@@ -217,7 +222,7 @@ class ShadowAtlasPlanner {
     uint32_t retiled = 0;
     uint32_t pages_used = 0;
     uint64_t texels = 0;
-    std::array<uint32_t, 11> lights_per_tier{};  // at most 11 tiers: page_size / min_resolution <= 1024
+    std::array<uint32_t, max_tiers> lights_per_tier{};
   };
   // Counts one request: `light` its light (null for a key's second request) as placed.
   void count_into(Tally& tally, const Light* light, uint32_t resolution) const;
@@ -245,9 +250,11 @@ class ShadowAtlasPlanner {
   // Per tier (0: page_size, 1: half that, ...): the 2D maps and cubes the budget holds.
   std::vector<uint64_t> maps_per_tier_;
   std::vector<uint64_t> cubes_per_tier_;
-  std::vector<uint64_t> by_importance_;                // importance bits << 32 | request index
-  size_t taken_in_pass_ = 0;                           // its front: the lights the pass took
-  std::vector<uint64_t> bucket_savings_;               // take_least_important's histogram
+  std::vector<uint64_t> by_importance_;    // importance bits << 32 | request index
+  size_t taken_in_pass_ = 0;               // how many the pass took
+  std::vector<uint64_t> bucket_savings_;   // take_least_important's histogram
+  std::vector<uint32_t> boundary_lights_;  // and its boundary bucket's places in by_importance_
+  std::vector<StepTally> step_tallies_;
   std::vector<uint64_t> lights_by_tier_and_halvings_;  // whole_passes' counts
   std::vector<uint64_t> piece_counts_;                 // and each piece's
   std::vector<Tally> tallies_;

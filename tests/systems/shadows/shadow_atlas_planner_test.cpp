@@ -414,7 +414,8 @@ TEST(ShadowAtlasPlanner, TheBudgetDemotesAsWalkingItsPassesLightByLightWould) {
   std::mt19937 random(11);
   std::uniform_int_distribution<int> tiers(4, 11);
   std::uniform_int_distribution<int> floors(0, 3);
-  for (const size_t count : {40u, 700u, 3000u}) {
+  jobs::ThreadPool threads(3);
+  for (const size_t count : {40u, 700u, 3000u, 10'000u}) {
     // Importances that are whole powers of two, so each light wants exactly that resolution.
     std::vector<ShadowRequest> requests;
     for (uint64_t i = 0; i < count; ++i) {
@@ -429,17 +430,21 @@ TEST(ShadowAtlasPlanner, TheBudgetDemotesAsWalkingItsPassesLightByLightWould) {
     std::vector<uint32_t> wanted;
     for (const ShadowRequest& request : requests) wanted.push_back(uint32_t(request.importance));
     const std::vector<uint32_t> expected = fit_light_by_light(config, requests, wanted);
-    // Asked in a shuffled order: the planner orders them itself (a chunk at a time).
+    // Asked in a shuffled order: the planner finds the order itself. On one thread and on a pool.
     std::vector<size_t> asked(requests.size());
     std::iota(asked.begin(), asked.end(), size_t{0});
     std::shuffle(asked.begin(), asked.end(), random);
     std::vector<ShadowRequest> shuffled;
     for (const size_t i : asked) shuffled.push_back(requests[i]);
-    ShadowAtlasPlanner planner(config);
-    const std::vector<ShadowPlacement> out = plan(planner, shuffled);
-    expect_valid_tiles(config, shuffled, out);
-    for (size_t k = 0; k < asked.size(); ++k) {
-      ASSERT_EQ(out[k].resolution, expected[asked[k]]) << count << " lights, light " << asked[k];
+    for (jobs::ThreadPool* pool : {static_cast<jobs::ThreadPool*>(nullptr), &threads}) {
+      ShadowAtlasPlanner planner(config);
+      std::vector<ShadowPlacement> out(shuffled.size());
+      planner.plan(shuffled, out, pool);
+      expect_valid_tiles(config, shuffled, out);
+      for (size_t k = 0; k < asked.size(); ++k) {
+        ASSERT_EQ(out[k].resolution, expected[asked[k]])
+            << count << " lights, light " << asked[k] << (pool ? ", on a pool" : "");
+      }
     }
   }
 }
