@@ -172,6 +172,14 @@ class ShadowCache {
   // The dirty lights, in the order they get renders: staleness rank << 32 | index in `lights`.
   std::vector<uint64_t> order_;
   std::vector<uint64_t> order_scratch_;
+  // choose_renders, per piece of lights: its dirty lights' views and the range of their
+  // rendered_frame.
+  struct DirtyTally {
+    uint64_t views = 0;
+    uint64_t oldest = UINT64_MAX;
+    uint64_t newest = 0;
+  };
+  std::vector<DirtyTally> dirty_tallies_;
   std::vector<uint32_t> lags_;             // the due lights' lags (ShadowCacheStats)
   std::vector<ShadowCacheStats> tallies_;  // plan's counts, per piece of lights
   std::vector<uint8_t> piece_flags_;       // same_keys: per piece of lights, whether its keys match
