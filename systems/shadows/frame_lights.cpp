@@ -128,9 +128,6 @@ void fill_2d(const ecs::World& world, const LightOverrides& overrides, ecs::Tick
         ShadowMapView& cascade = out.maps[light.view + k];
         if (k > 0) cascade.name = map.name;
         cascade.light = index;
-        // A view another light left in this place is none of this cascade's: place_cascades
-        // then finds the cascade's view changed.
-        if (cascade.key != cascade_key(light.entity, k)) cascade.view = {};
         cascade.key = cascade_key(light.entity, k);
         cascade.requested_resolution = map.requested_resolution;
         cascade.reach = unbounded_reach;

@@ -559,7 +559,9 @@ TEST(FrameLights, AGatherKeepingUnchangedLightsEqualsAFreshGather) {
       const std::string which = "map " + std::to_string(m);
       expect_same_view(kept.maps[m], fresh.maps[m], which);
       EXPECT_EQ(kept.maps[m].reach, fresh.maps[m].reach) << which;
-      EXPECT_EQ(kept.maps[m].view.view_projection(), fresh.maps[m].view.view_projection()) << which;
+      if (fresh.maps[m].cascade == no_cascade) {  // place_cascades places the cascades' views
+        EXPECT_EQ(kept.maps[m].view.view_projection(), fresh.maps[m].view.view_projection()) << which;
+      }
       if (frame > 1 && kept.maps[m].reach.w > 0.0f) {
         EXPECT_EQ(kept.maps[m].changed, edited.contains(kept.maps[m].key)) << which;
       }
