@@ -14,7 +14,8 @@ namespace {
 
 // Requests a piece of the pool's work handles: a thousand lights keep 16 threads busy.
 constexpr size_t lights_per_piece = 64;
-// Requests whole_passes counts on a thread: each piece's counts are summed after.
+// Requests whole_passes and take_least_important count on a thread: each piece's counts are
+// summed after.
 constexpr size_t requests_per_count = 4096;
 
 // Power-of-two sizes, and a quadtree per page of at most 1024 x 1024 leaves.
@@ -182,14 +183,16 @@ void ShadowAtlasPlanner::list_by_importance(std::span<const ShadowRequest> reque
   }
 }
 
+uint32_t ShadowAtlasPlanner::stage_floor(const ShadowRequest& request, BudgetStage stage) const {
+  return stage == BudgetStage::to_quality_floor ? std::max(config_.min_resolution, request.quality_floor)
+                                                : config_.min_resolution;
+}
+
 uint64_t ShadowAtlasPlanner::step_saving(const ShadowRequest& request, uint32_t resolution,
                                          BudgetStage stage) const {
   const uint64_t tiles = tile_count(request.cube);
   if (stage == BudgetStage::dropping) return tiles * area(resolution);
-  const uint32_t floor = stage == BudgetStage::to_quality_floor
-                             ? std::max(config_.min_resolution, request.quality_floor)
-                             : config_.min_resolution;
-  return resolution / 2 < floor ? 0 : tiles * (area(resolution) - area(resolution / 2));
+  return resolution / 2 < stage_floor(request, stage) ? 0 : tiles * (area(resolution) - area(resolution / 2));
 }
 
 // What walking the pass light by light would take, without ordering what it walks: a histogram
@@ -378,7 +381,7 @@ void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests, job
     for (;;) {
       if (taken_in_pass_ == 0 && !passes_counted && stage != BudgetStage::dropping) {
         passes_counted = true;
-        const WholePasses passes = whole_passes(requests, stage == BudgetStage::to_quality_floor, room, pool);
+        const WholePasses passes = whole_passes(requests, stage, room, pool);
         if (passes.stage_done) {
           next_stage();
           passes_counted = false;
@@ -419,13 +422,11 @@ void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests, job
 // frame, half of what scheduling them took (9.5 of 18.6 ms of the atlas plan on the 2-core VM
 // with two threads, tools/light-bench, 2026-12-03).
 ShadowAtlasPlanner::WholePasses ShadowAtlasPlanner::whole_passes(std::span<const ShadowRequest> requests,
-                                                                 bool to_quality_floor, uint64_t room,
+                                                                 BudgetStage stage, uint64_t room,
                                                                  jobs::ThreadPool* pool) {
   const uint32_t tiers = tier_count();
   const auto halvings = [&](uint32_t i) {
-    const uint32_t floor =
-        std::bit_ceil(to_quality_floor ? std::max(config_.min_resolution, requests[i].quality_floor)
-                                       : config_.min_resolution);
+    const uint32_t floor = std::bit_ceil(stage_floor(requests[i], stage));
     return resolution_[i] > floor ? uint32_t(std::countr_zero(resolution_[i]) - std::countr_zero(floor)) : 0u;
   };
   // Counted in pieces on the pool, each into counts of its own, then summed: 2 ms a frame on one

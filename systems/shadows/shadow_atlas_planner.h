@@ -179,6 +179,8 @@ class ShadowAtlasPlanner {
   // What fit_budget does to its lights: halve them down to their quality floor, then to
   // min_resolution, then drop them.
   enum class BudgetStage { to_quality_floor, to_smallest_tier, dropping };
+  // The resolution below which `stage` does not halve the request (dropping ignores it).
+  uint32_t stage_floor(const ShadowRequest& request, BudgetStage stage) const;
   // What taking one light in `stage` saves (0: it is at its floor).
   uint64_t step_saving(const ShadowRequest& request, uint32_t resolution, BudgetStage stage) const;
   // Takes the pass's lights not taken yet (not marked in by_importance_), least important first,
@@ -194,13 +196,13 @@ class ShadowAtlasPlanner {
     std::array<std::array<int64_t, max_tiers>, 2> tier_changes{};
   };
   uint64_t texels_that_do_not_fit() const;
-  // fit_budget's whole passes at once (see there): what they saved, and whether a pass would
-  // demote no light, which ends the stage.
+  // fit_budget's whole passes of a halving `stage` at once (see there): what they saved, and
+  // whether a pass would demote no light, which ends the stage.
   struct WholePasses {
     uint64_t saved = 0;
     bool stage_done = false;
   };
-  WholePasses whole_passes(std::span<const ShadowRequest> requests, bool to_quality_floor, uint64_t room,
+  WholePasses whole_passes(std::span<const ShadowRequest> requests, BudgetStage stage, uint64_t room,
                            jobs::ThreadPool* pool);
   // Request indices ordered by decreasing resolution, cubes before 2D maps of the same size.
   std::vector<uint32_t> largest_first(std::span<const ShadowRequest> requests,
