@@ -173,9 +173,6 @@ class ShadowAtlasPlanner {
   void match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool, float lowered_tiers);
   void release_lights_not_requested();
   void fit_budget(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool);
-  // by_importance_: the requests with a shadow, to be taken least important first, ties by key so
-  // that the order does not depend on the order of requests; unordered when listed.
-  void list_by_importance(std::span<const ShadowRequest> requests);
   // What fit_budget does to its lights: halve them down to their quality floor, then to
   // min_resolution, then drop them.
   enum class BudgetStage { to_quality_floor, to_smallest_tier, dropping };
@@ -195,6 +192,7 @@ class ShadowAtlasPlanner {
     size_t taken = 0;
     std::array<std::array<int64_t, max_tiers>, 2> tier_changes{};
   };
+  StepTally summed_step_tallies() const;
   uint64_t texels_that_do_not_fit() const;
   // fit_budget's whole passes of a halving `stage` at once (see there): what they saved, and
   // whether a pass would demote no light, which ends the stage.
@@ -252,9 +250,11 @@ class ShadowAtlasPlanner {
   // Per tier (0: page_size, 1: half that, ...): the 2D maps and cubes the budget holds.
   std::vector<uint64_t> maps_per_tier_;
   std::vector<uint64_t> cubes_per_tier_;
-  std::vector<uint64_t> by_importance_;    // importance bits << 32 | request index
+  // fit_budget's requests with a shadow (importance bits << 32 | request index), unordered: taken
+  // least important first, ties by key, so that the order does not depend on the order of requests.
+  std::vector<uint64_t> by_importance_;
   size_t taken_in_pass_ = 0;               // how many the pass took
-  std::vector<uint64_t> bucket_savings_;   // take_least_important's histogram
+  std::vector<uint64_t> piece_savings_;    // take_least_important's histograms, 257 a piece
   std::vector<uint32_t> boundary_lights_;  // and its boundary bucket's places in by_importance_
   std::vector<StepTally> step_tallies_;
   std::vector<uint64_t> lights_by_tier_and_halvings_;  // whole_passes' counts
