@@ -169,8 +169,11 @@ class ShadowCache {
   std::vector<KeyedLight> by_key_;
   std::vector<KeyedLight> dirty_by_key_;
   std::vector<KeyedLight> by_key_scratch_;
-  // The dirty lights, in the order they get renders: staleness rank << 32 | index in `lights`.
+  // The dirty lights in key order, as staleness rank << 32 | index in `lights`; each piece's
+  // views per rank bucket; the lights of the buckets walked, ordered by rank.
   std::vector<uint64_t> order_;
+  std::vector<uint64_t> piece_views_;
+  std::vector<uint64_t> rest_;
   std::vector<uint64_t> order_scratch_;
   // choose_renders, per piece of lights: its dirty lights' views and the range of their
   // rendered_frame.

@@ -576,5 +576,33 @@ TEST(ShadowCache, FewOrManyDirtyLightsRenderInKeyOrder) {
   }
 }
 
+// Renders thousands of frames apart put several ranks of staleness in one bucket of the budget's
+// histogram: the bucket where the budget runs out is still ordered by staleness, then key.
+TEST(ShadowCache, ChoosesTheStalestWhenRendersLieThousandsOfFramesApart) {
+  // Keys against staleness: light i is rendered last at frame i + 1, light 4 thousands later.
+  std::vector<ShadowCacheLight> lights{spot(50), spot(40), spot(30), spot(20), spot(10)};
+  ShadowCache cache;
+  for (size_t i = 0; i < 4; ++i) {
+    std::vector<ShadowCacheLight> frame = unchanged(lights);
+    frame[i].changed = true;
+    plan(cache, frame, i == 0 ? 0 : 1);  // the first frame renders every new light
+  }
+  for (int frame = 0; frame < 5000; ++frame) {
+    std::vector<ShadowCacheLight> moved = unchanged(lights);
+    moved[4].changed = true;
+    plan(cache, moved, 1);
+  }
+  std::vector<ShadowCacheLight> all_changed = lights;
+  for (ShadowCacheLight& light : all_changed) light.changed = true;
+  const std::vector<ShadowCacheLight> none_changed = unchanged(lights);
+  std::vector<uint64_t> order;
+  for (size_t frame = 0; frame < lights.size(); ++frame) {
+    const std::vector<uint64_t> rendered =
+        rendered_keys(lights, plan(cache, frame == 0 ? all_changed : none_changed, 1));
+    order.insert(order.end(), rendered.begin(), rendered.end());
+  }
+  EXPECT_EQ(order, (std::vector<uint64_t>{50, 40, 30, 20, 10}));
+}
+
 }  // namespace
 }  // namespace sg::shadows
