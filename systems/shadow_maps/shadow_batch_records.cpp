@@ -42,7 +42,6 @@ uint32_t instance_word(const GpuScene& scene, uint32_t instance) {
   return instance | uint32_t{scene.shadow_layers(instance)} << 24;
 }
 
-constexpr uint32_t not_drawn = UINT32_MAX;
 // How a light's views are drawn this frame.
 constexpr uint8_t skipped = 0, with_every_caster = 1, with_moving_casters = 2;
 
@@ -57,37 +56,43 @@ const ShadowBatchFrame& ShadowBatchRecords::lay_out(const shadows::FrameLights& 
                                                     jobs::ThreadPool* pool) {
   // Where each drawn view goes: the views drawn with every caster first, then those drawn with
   // the moving casters alone (the cull's two dispatches take a range each). How each light is
-  // drawn is read on the pool, a byte a light (the views lie hundreds of bytes apart), the places
-  // counted here from the bytes, the tiles copied on the pool.
+  // drawn is read on the pool, a byte a light (the views lie hundreds of bytes apart), as the
+  // drawn lights are listed; their places are counted here, their tiles copied on the pool. Of
+  // 100,000 lights about 1,500 are drawn a frame, so only those are walked after the listing.
   const size_t map_count = lights.maps.size();
   const size_t light_count = map_count + lights.cubes.size();
   const auto drawn_as = [](const auto& view) {
     return !view.render ? skipped : view.moving_casters_only ? with_moving_casters : with_every_caster;
   };
   drawn_as_.resize(light_count);
-  jobs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i)
-      drawn_as_[i] = i < map_count ? drawn_as(lights.maps[i]) : drawn_as(lights.cubes[i - map_count]);
-  });
-  first_view_.assign(light_count, not_drawn);
+  drawn_.resize(light_count);
+  drawn_.resize(jobs::keep_in_pieces(
+      pool, light_count, 256, keep_scratch_,
+      [&](size_t i) {
+        drawn_as_[i] = i < map_count ? drawn_as(lights.maps[i]) : drawn_as(lights.cubes[i - map_count]);
+        return drawn_as_[i] != skipped;
+      },
+      [&](size_t i, size_t rank) {
+        drawn_[rank] = {static_cast<uint32_t>(i), 0};
+      }));
   uint32_t next = 0;
   for (const uint8_t pass : {with_every_caster, with_moving_casters}) {
-    for (size_t i = 0; i < light_count; ++i) {
-      if (drawn_as_[i] != pass) continue;
-      first_view_[i] = next;
-      next += i < map_count ? 1 : 6;
+    for (DrawnLight& light : drawn_) {
+      if (drawn_as_[light.index] != pass) continue;
+      light.first_view = next;
+      next += light.index < map_count ? 1 : 6;
     }
     if (pass == with_every_caster) every_caster_views_ = next;
   }
   tiles_.resize(next);
-  jobs::run_in_pieces(pool, light_count, 64, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
-      if (first_view_[i] == not_drawn) continue;
+  jobs::run_in_pieces(pool, drawn_.size(), 64, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      const auto [i, first] = drawn_[k];
       if (i < map_count) {
-        tiles_[first_view_[i]] = lights.maps[i].tile;
+        tiles_[first] = lights.maps[i].tile;
       } else {
         const std::array<shadows::AtlasTile, 6>& tiles = lights.cubes[i - map_count].tiles;
-        std::copy(tiles.begin(), tiles.end(), tiles_.begin() + first_view_[i]);
+        std::copy(tiles.begin(), tiles.end(), tiles_.begin() + first);
       }
     }
   });
@@ -152,10 +157,9 @@ void ShadowBatchRecords::write_views(uint32_t slot, const shadows::FrameLights& 
                 glm::uvec4(tile.page, kind, tile.size, caster_mask),
                 glm::uvec4(depth_places[v], layer, page_size)};
   };
-  jobs::run_in_pieces(pool, first_view_.size(), 64, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
-      const uint32_t first = first_view_[i];
-      if (first == not_drawn) continue;
+  jobs::run_in_pieces(pool, drawn_.size(), 16, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      const auto [i, first] = drawn_[k];
       if (i < lights.maps.size()) {
         const shadows::ShadowMapView& map = lights.maps[i];
         place_view(first, map.view.view_projection(), map.reach, view_kind_map, map.caster_mask);

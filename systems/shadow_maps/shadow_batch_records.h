@@ -21,6 +21,7 @@
 #include <glm/glm.hpp>
 
 #include "ecs/fwd.h"
+#include "ecs/jobs/parallel_pieces.h"
 #include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/fwd.h"
 #include "systems/gpu/gpu_scene.h"
@@ -114,9 +115,14 @@ class ShadowBatchRecords {
   vk::FrameBuffers caster_buffers_;
   vk::FrameBuffers mesh_buffers_;
   ShadowBatchFrame frame_;
-  uint32_t every_caster_views_ = 0;   // the views whose lights want every caster, first
-  std::vector<uint8_t> drawn_as_;     // per light (maps, then cubes): not, with every caster, moving ones
-  std::vector<uint32_t> first_view_;  // per light (maps, then cubes): its first view, if drawn
+  uint32_t every_caster_views_ = 0;  // the views whose lights want every caster, first
+  std::vector<uint8_t> drawn_as_;    // per light (maps, then cubes): not, with every caster, moving ones
+  struct DrawnLight {
+    uint32_t index;       // among maps, then cubes
+    uint32_t first_view;  // its views' first
+  };
+  std::vector<DrawnLight> drawn_;  // the lights drawn, in order
+  jobs::KeepScratch keep_scratch_;
   std::vector<shadows::AtlasTile> tiles_;     // per view
   std::vector<glm::uvec4> meshes_;            // per caster group: its CasterMesh
   std::vector<uint32_t> group_first_caster_;  // per caster group: its first caster record
