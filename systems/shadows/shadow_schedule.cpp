@@ -152,29 +152,22 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
                               casters.changes_only ? casters.moving : std::span<const scene::Aabb>{}};
   cache_.plan(cache_lights_, changes, tighter_cap(view_budget, limits.view_cap), static_layers_, render_,
               usable_, pool);
-  // What each map cost this frame, for the planner's redraw rates: a map drawn into new tiles
-  // says nothing of how often its light or its casters change.
-  redraws_.resize(requests_.size());
-  jobs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
-    for (size_t v = begin; v < end; ++v) {
-      const uint32_t request = request_of_[v];
-      if (request == no_request) continue;
-      redraws_[request] = !cache_lights_[v].placed || cache_lights_[v].invalid
-                              ? ShadowAtlasPlanner::no_redraw_sample
-                          : render_[v] != keep_map ? ShadowAtlasPlanner::map_redrawn
-                                                   : ShadowAtlasPlanner::map_kept;
-    }
-  });
-  planner_.record_redraws(redraws_, pool);
-
   // The results onto the views and their records, on the pool: each view writes only itself,
-  // its record and its entry.
+  // its record, its entry and what its map cost this frame, for the planner's redraw rates (a
+  // map drawn into new tiles says nothing of how often its light or its casters change).
   // A light never has a cached map without its entry: the cache forgets lights that leave too.
   if (!aligned) {
     align_by_key(lights.maps, rendered_maps_, places_, rendered_maps_scratch_);
     align_by_key(lights.cubes, rendered_cubes_, places_, rendered_cubes_scratch_);
   }
+  redraws_.resize(requests_.size());
   const auto apply = [&](size_t v, auto& view, auto&& give_map) {
+    if (const uint32_t request = request_of_[v]; request != no_request) {
+      redraws_[request] = !cache_lights_[v].placed || cache_lights_[v].invalid
+                              ? ShadowAtlasPlanner::no_redraw_sample
+                          : render_[v] != keep_map ? ShadowAtlasPlanner::map_redrawn
+                                                   : ShadowAtlasPlanner::map_kept;
+    }
     view.resolution = 0;
     view.render = false;
     view.moving_casters_only = false;
@@ -227,6 +220,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       });
     }
   });
+
+  planner_.record_redraws(redraws_, pool);
 
   // A cascaded light is shadowed where any of its cascades has a map.
   uint32_t idle_cascades = 0;
