@@ -97,4 +97,10 @@ void run_in_pieces(ThreadPool* pool, std::size_t count, std::size_t piece_size, 
             [&](std::size_t piece) { chunk(piece * piece_size, std::min(count, (piece + 1) * piece_size)); });
 }
 
+// How many pieces of `piece_size` cover `count` entries, at least one: the size of the tallies
+// a caller of run_in_pieces keeps per piece (a piece's begin / piece_size indexes them).
+inline std::size_t piece_count(std::size_t count, std::size_t piece_size) {
+  return std::max<std::size_t>((count + piece_size - 1) / piece_size, 1);
+}
+
 }  // namespace sg::jobs

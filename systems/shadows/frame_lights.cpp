@@ -320,7 +320,7 @@ void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
   // H200 host, 2026-12-01). Pieces of 128 records (26 KiB) keep a thousand lights on eight threads.
   constexpr size_t piece = 128;
   const size_t count = out.records.size();
-  const size_t pieces = std::max<size_t>((count + piece - 1) / piece, 1);
+  const size_t pieces = jobs::piece_count(count, piece);
   scratch.moved_to.resize(count);
   scratch.records.resize(count);
   scratch.piece_groups.assign(pieces * light_group_count, 0);

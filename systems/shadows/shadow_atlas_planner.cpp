@@ -136,8 +136,7 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
 
   // Each request writes its placement and its own light (a key's second request has none), and
   // counts into its piece's tally.
-  const size_t pieces = (requests.size() + lights_per_piece - 1) / lights_per_piece;
-  tallies_.assign(std::max<size_t>(pieces, 1), Tally{});
+  tallies_.assign(jobs::piece_count(requests.size(), lights_per_piece), Tally{});
   jobs::run_in_pieces(pool, requests.size(), lights_per_piece, [&](size_t begin, size_t end) {
     Tally& tally = tallies_[begin / lights_per_piece];
     for (size_t i = begin; i < end; ++i) {
@@ -201,8 +200,7 @@ uint64_t ShadowAtlasPlanner::take_least_important(std::span<const ShadowRequest>
   // The histogram in two passes on the pool, each of 256 buckets a piece: the top 8 bits, then
   // the low 8 within the top bucket where the savings reach the room. On one thread, one pass of
   // 65,536 buckets took 0.34 ms of an H200 host's frame at 100,000 lights (2026-12-04).
-  const size_t pieces =
-      std::max<size_t>((by_importance_.size() + requests_per_count - 1) / requests_per_count, 1);
+  const size_t pieces = jobs::piece_count(by_importance_.size(), requests_per_count);
   const auto savings_by = [&](const auto& digit) {  // digit(value): a bucket, or 256 for none
     piece_savings_.assign(pieces * 257, 0);
     jobs::run_in_pieces(pool, by_importance_.size(), requests_per_count, [&](size_t begin, size_t end) {
@@ -380,8 +378,7 @@ void ShadowAtlasPlanner::fit_budget(std::span<const ShadowRequest> requests, job
   // The lights per kind and tier (each piece's counted as changes from none), and the requests
   // with a shadow listed, unordered, in one pass on the pool: on one thread the two took 0.56 ms
   // of an H200 host's frame at 100,000 lights (2026-12-04).
-  step_tallies_.assign(std::max<size_t>((requests.size() + requests_per_count - 1) / requests_per_count, 1),
-                       StepTally{});
+  step_tallies_.assign(jobs::piece_count(requests.size(), requests_per_count), StepTally{});
   by_importance_.resize(requests.size());
   by_importance_.resize(jobs::keep_in_pieces(
       pool, requests.size(), requests_per_count, keep_scratch_,
@@ -472,7 +469,7 @@ ShadowAtlasPlanner::WholePasses ShadowAtlasPlanner::whole_passes(std::span<const
   // Counted in pieces on the pool, each into counts of its own, then summed: 2 ms a frame on one
   // thread of the 2-core VM with 77,000 requests (2026-12-03).
   const size_t per_piece = size_t{2} * tiers * tiers;  // [(cube * tiers + tier) * tiers + h]
-  const size_t pieces = std::max<size_t>((requests.size() + requests_per_count - 1) / requests_per_count, 1);
+  const size_t pieces = jobs::piece_count(requests.size(), requests_per_count);
   piece_counts_.assign(pieces * per_piece, 0);
   jobs::run_in_pieces(pool, requests.size(), requests_per_count, [&](size_t begin, size_t end) {
     uint64_t* counts = &piece_counts_[begin / requests_per_count * per_piece];

@@ -59,7 +59,7 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
 
   // How each chosen light renders, what is usable, and the counts, each piece into a tally of its
   // own; the due lights' lags listed in order.
-  const size_t pieces = std::max<size_t>((lights.size() + lights_per_piece - 1) / lights_per_piece, 1);
+  const size_t pieces = jobs::piece_count(lights.size(), lights_per_piece);
   tallies_.assign(pieces, ShadowCacheStats{});
   lags_.resize(lights.size());
   const size_t due_count = jobs::keep_in_pieces(
@@ -120,7 +120,7 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
 
 bool ShadowCache::same_keys(std::span<const ShadowCacheLight> lights, jobs::ThreadPool* pool) {
   if (lights.size() != states_.size()) return false;
-  const size_t pieces = std::max<size_t>((lights.size() + lights_per_piece - 1) / lights_per_piece, 1);
+  const size_t pieces = jobs::piece_count(lights.size(), lights_per_piece);
   piece_flags_.assign(pieces, 1);
   jobs::run_in_pieces(pool, lights.size(), lights_per_piece, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
@@ -203,8 +203,7 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
   std::fill(render.begin(), render.end(), uint8_t{0});
   // The dirty lights, and each piece's tally of them: 68,000 of 100,000 lights are dirty while
   // the moving crates are near (the street camera), too many to sum on one thread after.
-  dirty_tallies_.assign(std::max<size_t>((lights.size() + lights_per_piece - 1) / lights_per_piece, 1),
-                        DirtyTally{});
+  dirty_tallies_.assign(jobs::piece_count(lights.size(), lights_per_piece), DirtyTally{});
   candidates_.resize(lights.size());
   candidates_.resize(jobs::keep_in_pieces(
       pool, lights.size(), lights_per_piece, keep_scratch_,
@@ -266,7 +265,7 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
   const uint32_t shift = rank_bits > 12 ? rank_bits - 12 : 0;
   const size_t buckets = size_t(((2 * span - 1) >> shift) + 1);
   const auto bucket = [shift](uint64_t ordered) { return size_t(ordered >> 32 >> shift); };
-  const size_t pieces = (order_.size() + dirty_per_count - 1) / dirty_per_count;
+  const size_t pieces = jobs::piece_count(order_.size(), dirty_per_count);
   piece_views_.assign(pieces * buckets, 0);
   jobs::run_in_pieces(pool, order_.size(), dirty_per_count, [&](size_t begin, size_t end) {
     uint64_t* views = &piece_views_[begin / dirty_per_count * buckets];

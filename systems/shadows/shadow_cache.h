@@ -107,10 +107,11 @@ class ShadowCache {
   // Cost: O(lights), plus, when casters changed, testing each clean bounded light against only
   // the boxes near it (SpheresMeetingBoxes), plus, when the budget is short, ordering the dirty
   // lights (O(dirty): their key order, a histogram of how stale they are, and a sort of only
-  // the staleness bucket where the budget runs out, and of later ones if it walks past). A frame allocates nothing once grown, except when the lights are not the previous
-  // frame's keys in the previous frame's order: the states are then matched to them through a
-  // table of keys (KeyPlaces). With a `pool`, the passes over the lights and the tests against
-  // the boxes run in pieces on it.
+  // the staleness bucket where the budget runs out, and of later ones if it walks past). A
+  // frame allocates nothing once grown, except when the lights are not the previous frame's keys
+  // in the previous frame's order: the states are then matched to them through a table of keys
+  // (KeyPlaces). With a `pool`, the passes over the lights and the tests against the boxes run
+  // in pieces on it.
   void plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes, uint32_t view_budget,
             bool static_layers, std::span<uint8_t> render, std::span<uint8_t> usable,
             jobs::ThreadPool* pool = nullptr);

@@ -79,7 +79,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   cache_lights_.resize(view_count);
   const bool same_counts =
       rendered_maps_.size() == map_count && rendered_cubes_.size() == lights.cubes.size();
-  pieces_aligned_.assign(std::max<size_t>((view_count + views_per_piece - 1) / views_per_piece, 1), 1);
+  pieces_aligned_.assign(jobs::piece_count(view_count, views_per_piece), 1);
   jobs::run_in_pieces(pool, view_count, views_per_piece, [&](size_t begin, size_t end) {
     bool aligned = same_counts;
     for (size_t v = begin; v < end; ++v) {
