@@ -56,29 +56,27 @@ const ShadowBatchFrame& ShadowBatchRecords::lay_out(const shadows::FrameLights& 
                                                     jobs::ThreadPool* pool) {
   // Where each drawn view goes: the views drawn with every caster first, then those drawn with
   // the moving casters alone (the cull's two dispatches take a range each). How each light is
-  // drawn is read on the pool, a byte a light (the views lie hundreds of bytes apart), as the
-  // drawn lights are listed; their places are counted here, their tiles copied on the pool. Of
-  // 100,000 lights about 1,500 are drawn a frame, so only those are walked after the listing.
+  // drawn is read on the pool (the views lie hundreds of bytes apart) as the drawn lights are
+  // listed; their places are counted here, their tiles copied on the pool. Of 100,000 lights
+  // about 1,500 are drawn a frame, so only those are walked after the listing.
   const size_t map_count = lights.maps.size();
   const size_t light_count = map_count + lights.cubes.size();
   const auto drawn_as = [](const auto& view) {
     return !view.render ? skipped : view.moving_casters_only ? with_moving_casters : with_every_caster;
   };
-  drawn_as_.resize(light_count);
+  const auto light_drawn_as = [&](size_t i) {
+    return i < map_count ? drawn_as(lights.maps[i]) : drawn_as(lights.cubes[i - map_count]);
+  };
   drawn_.resize(light_count);
   drawn_.resize(jobs::keep_in_pieces(
-      pool, light_count, 256, keep_scratch_,
-      [&](size_t i) {
-        drawn_as_[i] = i < map_count ? drawn_as(lights.maps[i]) : drawn_as(lights.cubes[i - map_count]);
-        return drawn_as_[i] != skipped;
-      },
+      pool, light_count, 256, keep_scratch_, [&](size_t i) { return light_drawn_as(i) != skipped; },
       [&](size_t i, size_t rank) {
-        drawn_[rank] = {static_cast<uint32_t>(i), 0};
+        drawn_[rank] = {static_cast<uint32_t>(i), 0, light_drawn_as(i)};
       }));
   uint32_t next = 0;
   for (const uint8_t pass : {with_every_caster, with_moving_casters}) {
     for (DrawnLight& light : drawn_) {
-      if (drawn_as_[light.index] != pass) continue;
+      if (light.drawn_as != pass) continue;
       light.first_view = next;
       next += light.index < map_count ? 1 : 6;
     }
@@ -87,12 +85,12 @@ const ShadowBatchFrame& ShadowBatchRecords::lay_out(const shadows::FrameLights& 
   tiles_.resize(next);
   jobs::run_in_pieces(pool, drawn_.size(), 64, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
-      const auto [i, first] = drawn_[k];
-      if (i < map_count) {
-        tiles_[first] = lights.maps[i].tile;
+      const DrawnLight& light = drawn_[k];
+      if (light.index < map_count) {
+        tiles_[light.first_view] = lights.maps[light.index].tile;
       } else {
-        const std::array<shadows::AtlasTile, 6>& tiles = lights.cubes[i - map_count].tiles;
-        std::copy(tiles.begin(), tiles.end(), tiles_.begin() + first);
+        const std::array<shadows::AtlasTile, 6>& tiles = lights.cubes[light.index - map_count].tiles;
+        std::copy(tiles.begin(), tiles.end(), tiles_.begin() + light.first_view);
       }
     }
   });
@@ -159,16 +157,16 @@ void ShadowBatchRecords::write_views(uint32_t slot, const shadows::FrameLights& 
   };
   jobs::run_in_pieces(pool, drawn_.size(), 16, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
-      const auto [i, first] = drawn_[k];
-      if (i < lights.maps.size()) {
-        const shadows::ShadowMapView& map = lights.maps[i];
-        place_view(first, map.view.view_projection(), map.reach, view_kind_map, map.caster_mask);
+      const DrawnLight& light = drawn_[k];
+      if (light.index < lights.maps.size()) {
+        const shadows::ShadowMapView& map = lights.maps[light.index];
+        place_view(light.first_view, map.view.view_projection(), map.reach, view_kind_map, map.caster_mask);
         continue;
       }
-      const shadows::ShadowCubeView& cube = lights.cubes[i - lights.maps.size()];
+      const shadows::ShadowCubeView& cube = lights.cubes[light.index - lights.maps.size()];
       const shadows::CubeViews faces = shadows::face_views(cube);
       for (uint32_t face = 0; face < 6; ++face) {
-        place_view(first + face, faces.view_projection[face], cube.position_far, view_kind_face,
+        place_view(light.first_view + face, faces.view_projection[face], cube.position_far, view_kind_face,
                    cube.caster_mask);
       }
     }

@@ -116,10 +116,10 @@ class ShadowBatchRecords {
   vk::FrameBuffers mesh_buffers_;
   ShadowBatchFrame frame_;
   uint32_t every_caster_views_ = 0;  // the views whose lights want every caster, first
-  std::vector<uint8_t> drawn_as_;    // per light (maps, then cubes): not, with every caster, moving ones
   struct DrawnLight {
     uint32_t index;       // among maps, then cubes
     uint32_t first_view;  // its views' first
+    uint8_t drawn_as;     // with every caster, or the moving ones only
   };
   std::vector<DrawnLight> drawn_;  // the lights drawn, in order
   jobs::KeepScratch keep_scratch_;

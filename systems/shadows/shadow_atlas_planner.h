@@ -185,14 +185,15 @@ class ShadowAtlasPlanner {
   uint64_t take_least_important(std::span<const ShadowRequest> requests, BudgetStage stage, uint64_t room,
                                 jobs::ThreadPool* pool);
   // What the lights one piece of take_least_important took changed, the lights per tier (2D
-  // maps, cubes) among it.
+  // maps, cubes) among it; fit_budget counts its lights per tier in them too, as changes from
+  // none.
   static constexpr size_t max_tiers = 11;  // page_size / min_resolution <= 1024
   struct StepTally {
     uint64_t saved = 0;
     size_t taken = 0;
     std::array<std::array<int64_t, max_tiers>, 2> tier_changes{};
   };
-  StepTally summed_step_tallies() const;
+  StepTally summed_step_tallies() const;  // over step_tallies_' pieces
   uint64_t texels_that_do_not_fit() const;
   // fit_budget's whole passes of a halving `stage` at once (see there): what they saved, and
   // whether a pass would demote no light, which ends the stage.
@@ -254,7 +255,7 @@ class ShadowAtlasPlanner {
   // least important first, ties by key, so that the order does not depend on the order of requests.
   std::vector<uint64_t> by_importance_;
   size_t taken_in_pass_ = 0;               // how many the pass took
-  std::vector<uint64_t> piece_savings_;    // take_least_important's histograms, 257 a piece
+  std::vector<uint64_t> piece_savings_;    // take_least_important's histograms, one a piece
   std::vector<uint32_t> boundary_lights_;  // and its boundary bucket's places in by_importance_
   std::vector<StepTally> step_tallies_;
   std::vector<uint64_t> lights_by_tier_and_halvings_;  // whole_passes' counts
