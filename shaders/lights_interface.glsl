@@ -32,6 +32,7 @@ uint light_type(Light light) {
 layout(std430, set = 0, binding = lights_binding) readonly buffer LightRecords { Light light_records[]; };
 
 Light light_at(uint index) { return light_records[index]; }
+uvec4 light_info_at(uint index) { return light_records[index].info; }
 #else
 // 208 bytes as 13 texels of a uniform texel buffer: llvmpipe fetches texels for all lanes at once,
 // where it loads storage-buffer words lane by lane, one loop per load. The members lie at the
@@ -58,6 +59,10 @@ Light light_at(uint index) {
   light.shadow_matrix[3] = uintBitsToFloat(texelFetch(light_records, first + 12));
   return light;
 }
+
+// Record `index`'s info alone (Light::info): a walk over records sorted by group reads it to find
+// where a group ends, one texel where the whole record is 13.
+uvec4 light_info_at(uint index) { return texelFetch(light_records, int(index) * LIGHT_RECORD_TEXELS + 2); }
 #endif
 
 // Every shadow map: one depth array of atlas pages; a 2D map is the tile shadow_rect of layer

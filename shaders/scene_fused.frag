@@ -17,8 +17,19 @@
 #include "tone_map.glsl"
 
 layout(constant_id = 0) const uint GROUPS_PRESENT = 0x7FFu;
+// constant_id 1 to 3 are light_shading.glsl's, material.glsl's and lights_interface.glsl's. 4: bit g
+// set where group g has exactly one light, which is then shaded with no loop and no look at the
+// record after it.
+layout(constant_id = 4) const uint GROUPS_SINGLE = 0u;
 
 layout(location = 0) out vec4 out_color;
+
+// The light group of record `index` (at most the last), from its info alone.
+uint group_at(uint index) {
+  Light light;  // what light_shadow_kind and light_algorithm read
+  light.info = light_info_at(min(index, frame.counts.x - 1u));
+  return light_group(light_shadow_kind(light), light_algorithm(light));
+}
 
 // The lights of `group`, which are the records from `next` on: the records are sorted by group
 // (systems/shadows/frame_lights.h) and the groups are visited in order. Called with literal
@@ -26,17 +37,22 @@ layout(location = 0) out vec4 out_color;
 // nothing. A present group has at least one light, and a do-while runs its body exactly that
 // often on a CPU driver too (a for loop runs one more, masked, pass over the body), so a pixel
 // pays each light's own algorithm once, not every present group's code for every light.
+//
+// Where a group of several ends is read from the next record's info alone: fetching the whole
+// next record ahead, as the loop once did, cost a one-light group 13 texel fetches a pixel for
+// nothing.
 vec3 shade_group(uint group, inout uint next, SurfacePoint p) {
   vec3 color = vec3(0.0);
   if ((GROUPS_PRESENT & (1u << group)) == 0u) return color;
   uint kind = group_shadow_kind(group);
   uint algorithm = group_algorithm(group);
-  Light light = light_at(next);
+  if ((GROUPS_SINGLE & (1u << group)) != 0u) {
+    return shade_light_as(light_at(next++), p, in_world_position, kind, algorithm, 0.0);
+  }
   do {
-    color += shade_light_as(light, p, in_world_position, kind, algorithm, 0.0);
+    color += shade_light_as(light_at(next), p, in_world_position, kind, algorithm, 0.0);
     ++next;
-    light = light_at(min(next, frame.counts.x - 1u));
-  } while (next < frame.counts.x && light_group(light_shadow_kind(light), light_algorithm(light)) == group);
+  } while (next < frame.counts.x && group_at(next) == group);
   return color;
 }
 

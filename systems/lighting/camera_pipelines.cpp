@@ -71,4 +71,13 @@ vk::GraphicsPipelineDesc after_depth_prepass(vk::GraphicsPipelineDesc desc) {
   return desc;
 }
 
+std::vector<uint32_t> all_groups_pass_constants(const shadows::GroupsPresent& groups, LightingView view,
+                                                const GpuTextures& textures) {
+  std::vector<uint32_t> constants =
+      material_pass_constants(groups.present, static_cast<uint32_t>(view), textures);
+  constants.push_back(groups.light_types);
+  constants.push_back(groups.single);
+  return constants;
+}
+
 }  // namespace sg

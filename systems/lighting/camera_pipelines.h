@@ -16,8 +16,12 @@
 
 #include "rendergraph/device/pipeline.h"
 #include "systems/gpu/gpu_scene.h"
+#include "systems/lighting/lighting_path.h"
+#include "systems/shadows/light_groups.h"
 
 namespace sg {
+
+class GpuTextures;
 
 // The descriptor bindings of a pass that draws the scene from the camera and lights its surfaces
 // in the fragment shader (material.glsl, light_shading.glsl): the light resources, the instances
@@ -56,6 +60,12 @@ class CameraPipelines {
 // material_pass_constants (gpu_textures.h), made to draw `draw_class`: no culling for double-sided
 // surfaces, the cut-out for masked ones.
 vk::GraphicsPipelineDesc for_draw_class(vk::GraphicsPipelineDesc desc, uint32_t draw_class);
+
+// The fragment specialization of a pass that shades every light group at once
+// (shaders/scene_fused.frag and its transparent variant): material_pass_constants with GROUPS_PRESENT
+// and `view`, then LIGHT_TYPES (constant_id 3) and GROUPS_SINGLE (4).
+std::vector<uint32_t> all_groups_pass_constants(const shadows::GroupsPresent& groups, LightingView view,
+                                                const GpuTextures& textures);
 
 // `desc` shading only what a depth prepass kept (DepthPrepass, the same positions): tested for the
 // prepass's depth without writing it.

@@ -34,18 +34,16 @@ FusedForwardPass::FusedForwardPass(vk::VulkanContext& context, const GpuTextures
       light_resources_(context),
       layout_(context.device(), lit_camera_bindings(), vk::push_constants<FrameConstants>(both_stages)) {}
 
-void FusedForwardPass::prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
-                               LightingView view, const GpuScene& scene) {
-  const uint32_t groups = shadows::groups_present(group_begin);
-  key_ = groups | static_cast<uint32_t>(view) << 16;  // groups take the low light_group_count bits
+void FusedForwardPass::prepare(const shadows::GroupsPresent& groups, LightingView view,
+                               const GpuScene& scene) {
+  key_ = groups.key() | uint64_t{static_cast<uint32_t>(view)} << shadows::GroupsPresent::key_bits;
   pipelines_
       .try_emplace(key_,
                    [layout = layout_.get(), &textures = textures_, format = frame_format_, groups,
                     view](uint32_t draw_class) {
                      vk::GraphicsPipelineDesc desc =
                          camera_pipeline_desc(scene_fused_frag, {vk::to_vk(format)}, layout, "fused forward");
-                     desc.fragment_specialization =
-                         material_pass_constants(groups, static_cast<uint32_t>(view), textures);
+                     desc.fragment_specialization = all_groups_pass_constants(groups, view, textures);
                      return for_draw_class(after_depth_prepass(std::move(desc)), draw_class);
                    })
       .first->second.prepare(context_, scene);

@@ -35,10 +35,9 @@ class FusedForwardPass {
   // `frame_format`: the format of the images add_to draws into. `textures` must outlive the pass.
   FusedForwardPass(vk::VulkanContext& context, const GpuTextures& textures, rg::Format frame_format);
 
-  // Makes the pipelines for the groups that have lights (group_begin as in shadows::FrameLights),
-  // `view` and the draw classes `scene` has.
-  void prepare(const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view,
-               const GpuScene& scene);
+  // Makes the pipelines for the frame's light groups (shadows::groups_present), `view` and the
+  // draw classes `scene` has.
+  void prepare(const shadows::GroupsPresent& groups, LightingView view, const GpuScene& scene);
 
   // Shades every drawable where the prepass left it and writes the picture, exposed by
   // `exposure` and tone mapped, into all of `frame`; returns the new versions. `lights` and
@@ -53,8 +52,8 @@ class FusedForwardPass {
   rg::Format frame_format_;
   LightResources light_resources_;
   vk::PipelineLayout layout_;
-  std::unordered_map<uint32_t, CameraPipelines> pipelines_;  // by groups present and view
-  uint32_t key_ = 0;                                         // this frame's
+  std::unordered_map<uint64_t, CameraPipelines> pipelines_;  // by GroupsPresent::key and view
+  uint64_t key_ = 0;                                         // this frame's
 };
 
 }  // namespace sg

@@ -23,11 +23,12 @@ using namespace bindings;
 constexpr VkShaderStageFlags both_stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 
-// Groups take the low light_group_count bits, the view the next byte, tiled the next, the
-// format the rest.
-uint64_t pipeline_key(rg::Format format, bool tiled, uint32_t groups_present, LightingView view) {
-  return groups_present | static_cast<uint64_t>(view) << 16 | static_cast<uint64_t>(tiled) << 24 |
-         static_cast<uint64_t>(format) << 32;
+// The groups take GroupsPresent::key_bits, the view the next bit, tiled the next, the format the rest.
+uint64_t pipeline_key(rg::Format format, bool tiled, const shadows::GroupsPresent& groups,
+                      LightingView view) {
+  constexpr uint32_t bits = shadows::GroupsPresent::key_bits;
+  return groups.key() | static_cast<uint64_t>(view) << bits | static_cast<uint64_t>(tiled) << (bits + 1) |
+         static_cast<uint64_t>(format) << (bits + 2);
 }
 
 }  // namespace
@@ -47,8 +48,7 @@ TransparentPass::TransparentPass(vk::VulkanContext& context, uint32_t frames_in_
       every_light_layout_(context.device(), lit_camera_bindings(),
                           vk::push_constants<FrameConstants>(both_stages)) {}
 
-void TransparentPass::prepare(rg::Format format, bool tiled,
-                              const std::array<uint32_t, shadows::light_group_count + 1>& group_begin,
+void TransparentPass::prepare(rg::Format format, bool tiled, const shadows::GroupsPresent& groups,
                               LightingView view, const GpuScene& scene, uint32_t slot,
                               const glm::mat4& view_projection, glm::uvec2 screen) {
   tiled_ = tiled;
@@ -59,7 +59,6 @@ void TransparentPass::prepare(rg::Format format, bool tiled,
     transparent_tile_bounds(view_projection, LightTileGrid::of(screen.x, screen.y), screen, boxes_, bounds_);
     tile_bounds_.write(slot, std::span<const glm::vec2>(bounds_));
   }
-  const uint32_t groups = shadows::groups_present(group_begin);
   key_ = pipeline_key(format, tiled, groups, view);
   const VkPipelineLayout layout = (tiled ? tiled_layout_ : every_light_layout_).get();
   const std::span<const uint32_t> fragment_shader =
@@ -70,8 +69,7 @@ void TransparentPass::prepare(rg::Format format, bool tiled,
           [layout, fragment_shader, &textures = textures_, format, groups, view](uint32_t draw_class) {
             vk::GraphicsPipelineDesc desc =
                 camera_pipeline_desc(fragment_shader, {vk::to_vk(format)}, layout, "transparent");
-            desc.fragment_specialization =
-                material_pass_constants(groups, static_cast<uint32_t>(view), textures);
+            desc.fragment_specialization = all_groups_pass_constants(groups, view, textures);
             desc.depth_write = false;  // sorted, not depth-tested among themselves
             desc.blend = vk::Blend::alpha;
             return for_draw_class(std::move(desc), draw_class);

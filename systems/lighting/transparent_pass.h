@@ -52,11 +52,10 @@ class TransparentPass {
   TransparentPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);
 
   // Makes the pipelines for a target of `format`, lit from tile lists (`tiled`) or by every
-  // light, for the groups that have lights (group_begin as in shadows::FrameLights), `view` and
-  // the transparent classes `scene` has. Tiled, writes the slot's tile bounds for a camera of
-  // `view_projection` over `screen` pixels, from `scene`'s transparent instances.
-  void prepare(rg::Format format, bool tiled,
-               const std::array<uint32_t, shadows::light_group_count + 1>& group_begin, LightingView view,
+  // light, for the frame's light groups (shadows::groups_present), `view` and the transparent
+  // classes `scene` has. Tiled, writes the slot's tile bounds for a camera of `view_projection`
+  // over `screen` pixels, from `scene`'s transparent instances.
+  void prepare(rg::Format format, bool tiled, const shadows::GroupsPresent& groups, LightingView view,
                const GpuScene& scene, uint32_t slot, const glm::mat4& view_projection, glm::uvec2 screen);
 
   // LightTilesPass::take_dropped_pairs of the transparent surfaces' light tiles.

@@ -190,7 +190,8 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
       break;
     case LightingPath::fused:
       fused_->prepass.prepare(gpu_scene_);
-      fused_->forward.prepare(lights_.group_begin, settings_.view, gpu_scene_);
+      fused_->forward.prepare(shadows::groups_present(lights_.group_begin, lights_.group_types),
+                              settings_.view, gpu_scene_);
       break;
     case LightingPath::automatic:  // resolved
     case LightingPath::deferred:
@@ -203,8 +204,9 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     gpu_scene_.order_transparent(pose.eye);
     // Lit as the opaque surfaces were: from tile lists, or by every light.
     const bool tiled = lighting_ == LightingPath::deferred;
-    transparent_->prepare(lit_format(), tiled, lights_.group_begin, settings_.view, gpu_scene_, slot,
-                          camera.view_projection, {width, height});
+    transparent_->prepare(lit_format(), tiled,
+                          shadows::groups_present(lights_.group_begin, lights_.group_types), settings_.view,
+                          gpu_scene_, slot, camera.view_projection, {width, height});
   }
   // What the frame that last used this slot could not list, now that its fence has passed.
   dropped_light_pairs_ = take_dropped_light_pairs(slot);

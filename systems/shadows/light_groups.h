@@ -18,14 +18,34 @@ uint32_t light_group(ShadowKind kind, scene::ShadowAlgorithm algorithm);
 ShadowKind group_shadow_kind(uint32_t group);
 scene::ShadowAlgorithm group_algorithm(uint32_t group);
 
-// Bit g set for each group g with lights, from group_begin as in FrameLights (group g's records
-// are [group_begin[g], group_begin[g + 1])): the GROUPS_PRESENT of the forward shaders.
-inline uint32_t groups_present(const std::array<uint32_t, light_group_count + 1>& group_begin) {
+// What a shader that shades every light group of a frame in one pass is specialized on
+// (shaders/scene_fused.frag): the groups with lights (bit g for group g), those with exactly one,
+// and the light types among them all (light_type_bits, gpu_light.h). A CPU driver runs every
+// branch a shader holds, so each is code left out.
+struct GroupsPresent {
   uint32_t present = 0;
-  for (uint32_t group = 0; group < light_group_count; ++group) {
-    if (group_begin[group + 1] > group_begin[group]) present |= 1u << group;
+  uint32_t single = 0;
+  uint32_t light_types = 0;
+
+  // key_bits bits: groups take light_group_count bits each, light types five.
+  static constexpr uint32_t key_bits = 2 * light_group_count + 5;
+  uint64_t key() const {
+    return present | uint64_t{single} << light_group_count | uint64_t{light_types} << 2 * light_group_count;
   }
-  return present;
+};
+
+// From group_begin and group_types as in FrameLights (group g's records are [group_begin[g],
+// group_begin[g + 1]), their types group_types[g]).
+inline GroupsPresent groups_present(const std::array<uint32_t, light_group_count + 1>& group_begin,
+                                    const std::array<uint32_t, light_group_count>& group_types) {
+  GroupsPresent groups;
+  for (uint32_t group = 0; group < light_group_count; ++group) {
+    const uint32_t lights = group_begin[group + 1] - group_begin[group];
+    if (lights > 0) groups.present |= 1u << group;
+    if (lights == 1) groups.single |= 1u << group;
+    groups.light_types |= group_types[group];
+  }
+  return groups;
 }
 
 }  // namespace sg::shadows

@@ -179,11 +179,12 @@ TEST_F(FrameTest, EveryLightingPathHandsTheCameraDepthToLaterPasses) {
   for (size_t path = 1; path < depths.size(); ++path) EXPECT_EQ(depths[path], forward) << "path " << path;
 }
 
-// A group with one light shades from its record alone (SINGLE_LIGHT), a group with several from
-// each tile's list: with every light on pcf, the stress scene's three point lights share one
-// group and its three spots and the sun another, and deferred still draws what forward lighting
-// of every light draws.
-TEST_F(FrameTest, DeferredGroupsOfManyLightsMatchForward) {
+// A group with one light shades from its record alone (SINGLE_LIGHT, GROUPS_SINGLE), a group with
+// several from each tile's list or, fused, from the records up to the next group's: with every
+// light on pcf, the stress scene's three point lights share one group and its three spots and the
+// sun another, and deferred and fused lighting still draw what forward lighting of every light
+// draws.
+TEST_F(FrameTest, GroupsOfManyLightsMatchForward) {
   FrameSettings options = stress(3000, 3, 3, 0.0f);
   options.algorithm = scene::ShadowAlgorithm::pcf;
   options.renderer.lighting = LightingPath::every_light;
@@ -193,6 +194,10 @@ TEST_F(FrameTest, DeferredGroupsOfManyLightsMatchForward) {
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "lighting 2d pcf"), 1);
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "lighting cube pcf"), 1);
   expect_same_but_edges(forward, deferred);
+  options.renderer.lighting = LightingPath::fused;
+  const vk::Rgba8Image fused = render(options, 2);
+  EXPECT_EQ(passes.back(), "fused forward");
+  EXPECT_LE(largest_difference(fused, forward), 2) << "levels of 255 in the worst channel";
 }
 
 // Deferred lighting's lit sum started by a pass of its own or by the G-buffer: the same shading

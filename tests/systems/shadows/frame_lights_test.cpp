@@ -676,6 +676,32 @@ TEST(FrameLights, RecordsAreOrderedByLightGroup) {
   }
 }
 
+// What a shader shading every group at once is specialized on: the groups with lights, those with
+// one, and their light types together.
+TEST(FrameLights, GroupsPresentAreTheGroupsWithLightsAndThoseWithOne) {
+  const scene::Scene scene = five_lights();
+  FrameLights lights;
+  gather_lights(scene.world, bounds, {}, lights);
+  ShadowSchedule schedule(small_atlas);
+  schedule.schedule(lights, camera_at({0.0f, 5.0f, 2.0f}), {}, 0);
+  sort_by_group(lights);
+  const GroupsPresent groups = groups_present(lights.group_begin, lights.group_types);
+  const uint32_t map_pcf = light_group(ShadowKind::map, scene::ShadowAlgorithm::pcf);
+  const uint32_t cube_pcf = light_group(ShadowKind::cube, scene::ShadowAlgorithm::pcf);
+  EXPECT_EQ(groups.present, 1u | 1u << map_pcf | 1u << cube_pcf);
+  EXPECT_EQ(groups.single, 1u) << "the unshadowed light alone; two maps and two cubes";
+  uint32_t types = 0;
+  for (const GpuLight& record : lights.records) types |= light_type_bits(record);
+  EXPECT_EQ(groups.light_types, types);
+  EXPECT_NE(groups.light_types & 1u << uint32_t(GpuLightType::point), 0u);
+  // Each field changes the key.
+  for (GroupsPresent other : {GroupsPresent{groups.present ^ 2u, groups.single, groups.light_types},
+                              GroupsPresent{groups.present, groups.single ^ 2u, groups.light_types},
+                              GroupsPresent{groups.present, groups.single, groups.light_types ^ 1u}}) {
+    EXPECT_NE(other.key(), groups.key());
+  }
+}
+
 // Sorting on a thread pool moves every record where the serial sort does: 5,000 records of
 // every group, their indices in the position field so that each can be followed.
 TEST(SortByGroup, OnAThreadPoolMovesTheRecordsAsSerially) {
