@@ -89,8 +89,8 @@ bool runs_own_filter(Light light, SurfacePoint p, Incidence at, float filter_flo
 
 // One light at world_pos, with its contact shadow where the including pass reads the depth
 // buffer (contact_shadows.glsl, included first). `shadow_kind` and `algorithm` are the light's
-// own (light_shadow_kind, info.z); shade_light reads them from the record, a pass that shades one
-// light group passes its constants.
+// own (light_shadow_kind, info.z), `types` light types that hold its own (LIGHT_TYPES' bits);
+// shade_light reads them from the record, a pass that shades light groups passes its constants.
 //
 // Ranked filtering: a light whose shadow_weight at the pixel is below `filter_floor` takes the
 // hard test instead of its own kernel (0: every light filters). The deferred lighting sets the
@@ -98,10 +98,10 @@ bool runs_own_filter(Light light, SurfacePoint p, Incidence at, float filter_flo
 // overlap, what costs is their kernels' taps, and a light that adds little to the pixel changes
 // it by less than its weight times the filters' difference, which is zero outside penumbrae.
 vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kind, uint algorithm,
-                    float filter_floor) {
+                    float filter_floor, uint types) {
   // Only point lights have cube maps: with a constant shadow_kind the other types' branches
   // drop out of a cube group's shader (a CPU driver computes every branch, taken or not).
-  uint type = shadow_kind == SHADOW_KIND_CUBE ? LIGHT_POINT : light_type(light);
+  uint type = shadow_kind == SHADOW_KIND_CUBE ? LIGHT_POINT : light_type(light, types);
   Incidence at = light_incidence(light, world_pos, type);
   // There the light adds nothing whatever its shadow, and the shadow lookup, most of a light's
   // cost when many overlap, is skipped.
@@ -112,8 +112,8 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
   // surface that receives no shadow is lit.
   bool filtered = SHADOW_ONLY_VIEW || runs_own_filter(light, p, at, filter_floor);
   float shade = !p.receives_shadow ? 0.0
-                : filtered         ? light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, algorithm)
-                                   : light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, SHADOW_HARD);
+                : filtered ? light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, algorithm, types)
+                           : light_shadow_as(light, world_pos, p.normal, n_dot_l, shadow_kind, SHADOW_HARD, types);
 #ifdef SG_CONTACT_SHADOWS
   // The light's contact shadow over its map's, where the pass reads the depth buffer: for the
   // lights that run their own filter, which ranked filtering holds to a pixel's heaviest few.
@@ -130,7 +130,7 @@ vec3 shade_light_as(Light light, SurfacePoint p, vec3 world_pos, uint shadow_kin
 }
 
 vec3 shade_light(Light light, SurfacePoint p, vec3 world_pos) {
-  return shade_light_as(light, p, world_pos, light_shadow_kind(light), light_algorithm(light), 0.0);
+  return shade_light_as(light, p, world_pos, light_shadow_kind(light), light_algorithm(light), 0.0, LIGHT_TYPES);
 }
 
 // The sum over lights[0 .. light_count) at world_pos, without ambient.

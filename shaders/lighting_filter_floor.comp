@@ -64,7 +64,7 @@ void main() {
       barrier();
       for (uint j = 0u; surface && j < count; ++j) {
         Light light = batch_light(j);
-        float carried = shadow_weight(light, p, light_incidence(light, position, light_type(light)));
+        float carried = shadow_weight(light, p, light_incidence(light, position, light_type(light, LIGHT_TYPES)));
         if (carried <= heaviest[FILTERED_LIGHTS - 1u]) continue;
         [[unroll]] for (uint i = 0u; i < MOST_FILTERED_LIGHTS; ++i) {
           if (i < FILTERED_LIGHTS) {

@@ -9,18 +9,30 @@
 // Bit t set where lights of type t (LIGHT_*) may be shaded, bit CASCADED_TYPE_BIT where
 // directional lights with cascades may (sg::shadows::light_type_bits): a pass that knows the
 // types of its lights compiles only their code (a CPU driver runs every branch a shader holds).
+// The shading functions take such bits as an argument: LIGHT_TYPES, or, in a pass shading several
+// light groups, each group's own.
 // constant_id 0 to 2 are the including shaders' own and material.glsl's.
 layout(constant_id = 3) const uint LIGHT_TYPES = 0x1Fu;
-// The types alone, cascaded directional lights counted as directional.
-const uint LIGHT_TYPES_ONLY = (LIGHT_TYPES & 0xFu) | ((LIGHT_TYPES >> CASCADED_TYPE_BIT) & 1u) << LIGHT_DIRECTIONAL;
 
-// Light `light`'s type, a constant where LIGHT_TYPES admits one type only.
-uint light_type(Light light) {
-  if (LIGHT_TYPES_ONLY == (1u << LIGHT_POINT)) return LIGHT_POINT;
-  if (LIGHT_TYPES_ONLY == (1u << LIGHT_SPOT)) return LIGHT_SPOT;
-  if (LIGHT_TYPES_ONLY == (1u << LIGHT_DIRECTIONAL)) return LIGHT_DIRECTIONAL;
-  if (LIGHT_TYPES_ONLY == (1u << LIGHT_CYLINDER)) return LIGHT_CYLINDER;
+// The light types of `types` alone, cascaded directional lights counted as directional.
+uint light_types_only(uint types) {
+  return (types & 0xFu) | ((types >> CASCADED_TYPE_BIT) & 1u) << LIGHT_DIRECTIONAL;
+}
+
+// Light `light`'s type, a constant where `types` (a constant) admits one type only.
+uint light_type(Light light, uint types) {
+  uint only = light_types_only(types);
+  if (only == (1u << LIGHT_POINT)) return LIGHT_POINT;
+  if (only == (1u << LIGHT_SPOT)) return LIGHT_SPOT;
+  if (only == (1u << LIGHT_DIRECTIONAL)) return LIGHT_DIRECTIONAL;
+  if (only == (1u << LIGHT_CYLINDER)) return LIGHT_CYLINDER;
   return light.info.x;
+}
+
+// Group `group`'s light types from `packed`, five bits a group for the unshadowed and 2D groups
+// (sg::shadows::GroupsPresent::group_types); a cube group's lights are point lights.
+uint group_light_types(uint packed, uint group) {
+  return group < 6u ? (packed >> (5u * group)) & 0x1Fu : 1u << LIGHT_POINT;
 }
 
 // Every light of the frame (sg::shadows::GpuLight on the C++ side): light_at(i) is the i-th record.

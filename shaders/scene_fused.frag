@@ -19,8 +19,10 @@
 layout(constant_id = 0) const uint GROUPS_PRESENT = 0x7FFu;
 // constant_id 1 to 3 are light_shading.glsl's, material.glsl's and lights_interface.glsl's. 4: bit g
 // set where group g has exactly one light, which is then shaded with no loop and no look at the
-// record after it.
+// record after it. 5: each group's light types (group_light_types), so that a group holds only its
+// own lights' code, not that of every type the frame has.
 layout(constant_id = 4) const uint GROUPS_SINGLE = 0u;
+layout(constant_id = 5) const uint GROUP_TYPES = 0x3FFFFFFFu;
 
 layout(location = 0) out vec4 out_color;
 
@@ -46,13 +48,14 @@ vec3 shade_group(uint group, inout uint next, SurfacePoint p) {
   if ((GROUPS_PRESENT & (1u << group)) == 0u) return color;
   uint kind = group_shadow_kind(group);
   uint algorithm = group_algorithm(group);
-  if ((GROUPS_SINGLE & (1u << group)) != 0u) {
-    return shade_light_as(light_at(next++), p, in_world_position, kind, algorithm, 0.0);
-  }
+  uint types = group_light_types(GROUP_TYPES, group);
+  // One call of the shading, which the compiler inlines whole: a second, for single lights, made
+  // the pipelines take twice as long to build.
+  bool single = (GROUPS_SINGLE & (1u << group)) != 0u;
   do {
-    color += shade_light_as(light_at(next), p, in_world_position, kind, algorithm, 0.0);
+    color += shade_light_as(light_at(next), p, in_world_position, kind, algorithm, 0.0, types);
     ++next;
-  } while (next < frame.counts.x && group_at(next) == group);
+  } while (!single && next < frame.counts.x && group_at(next) == group);
   return color;
 }
 

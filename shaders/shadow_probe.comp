@@ -40,7 +40,7 @@ void main() {
     for (uint j = 0u; j < range.y; ++j) {
       uint index = tile_lights[range.x + j];
       Light light = light_at(index);
-      Incidence at = light_incidence(light, position, light_type(light));
+      Incidence at = light_incidence(light, position, light_type(light, LIGHT_TYPES));
       float weight = shadow_weight(light, p, at);
       if (weight <= 0.0) continue;
       ++met;
@@ -49,7 +49,8 @@ void main() {
       uint kind = light_shadow_kind(light);
       bool filtered = runs_own_filter(light, p, at, filter_floor);
       float n_dot_l = dot(p.normal, at.to_light);
-      float shade = light_shadow_as(light, position, p.normal, n_dot_l, kind, filtered ? light_algorithm(light) : SHADOW_HARD);
+      float shade = light_shadow_as(light, position, p.normal, n_dot_l, kind,
+                                    filtered ? light_algorithm(light) : SHADOW_HARD, LIGHT_TYPES);
       uint slot = atomicAdd(probe.kept, 1u);
       if (slot >= probe.capacity) continue;
       probe.pairs[3u * slot] = pixel_index;

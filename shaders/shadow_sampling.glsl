@@ -134,6 +134,7 @@ vec3 rotate(vec4 q, vec3 v) {
 // maps): a plane's stored depth is affine in the map's uv (for perspective maps because 1/z is),
 // so the plane's depth at any tap is one dot product away.
 struct MapPoint {
+  bool orthographic;  // the map's projection (map_is_orthographic)
   vec2 uv;            // in the light's own square map, [0, 1]^2
   float depth;        // the receiver's stored depth
   float view_depth;   // its distance along the light's axis, world units
@@ -142,24 +143,25 @@ struct MapPoint {
   float per_linear;   // d(stored depth)/d(normalized linear depth) at the receiver: biases to stored units
 };
 
-// Directional and cylinder maps are orthographic, spot maps perspective: where LIGHT_TYPES says
-// which the pass has, the other's code drops out.
-bool map_is_orthographic(Light light) {
+// Directional and cylinder maps are orthographic, spot maps perspective: where the light types
+// (`types`, LIGHT_TYPES' bits) say which the caller has, the other's code drops out.
+bool map_is_orthographic(Light light, uint types) {
   const uint orthographic = (1u << LIGHT_DIRECTIONAL) | (1u << LIGHT_CYLINDER);
-  if ((LIGHT_TYPES_ONLY & orthographic) == 0u) return false;
-  if ((LIGHT_TYPES_ONLY & (1u << LIGHT_SPOT)) == 0u) return true;
+  uint only = light_types_only(types);
+  if ((only & orthographic) == 0u) return false;
+  if ((only & (1u << LIGHT_SPOT)) == 0u) return true;
   return light.shadow_depth.w > 0.5;
 }
 
-float map_linear_depth(Light light, float stored_depth) {
-  if (map_is_orthographic(light)) return stored_depth;
+float map_linear_depth(Light light, float stored_depth, bool orthographic) {
+  if (orthographic) return stored_depth;
   return perspective_view_depth(stored_depth, light.shadow_depth.x, light.shadow_depth.y) /
          light.shadow_depth.y;
 }
 
-float map_view_depth(Light light, float linear_depth) {
+float map_view_depth(Light light, float linear_depth, bool orthographic) {
   float near = light.shadow_depth.x, far = light.shadow_depth.y;
-  return map_is_orthographic(light) ? near + linear_depth * (far - near) : linear_depth * far;
+  return orthographic ? near + linear_depth * (far - near) : linear_depth * far;
 }
 
 // Section 3's lookup: proj = M_b * shadow_matrix * world, divided by w. Vulkan's NDC y points
@@ -171,8 +173,9 @@ float map_view_depth(Light light, float linear_depth) {
 // lit surfaces at grazing angles, growing with the kernel). So the receiver's tangent plane is
 // carried into the map: the map's Jacobian at the point gives d(depth)/d(uv) on that plane, and
 // every sample is compared with the plane's depth at the sample (receiver-plane depth bias).
-bool project_to_map(Light light, vec3 world_pos, vec3 normal, out MapPoint point) {
+bool project_to_map(Light light, vec3 world_pos, vec3 normal, uint types, out MapPoint point) {
   vec4 clip = light.shadow_matrix * vec4(world_pos, 1.0);
+  point.orthographic = map_is_orthographic(light, types);
   point.uv = vec2(0.0);
   point.depth = 0.0;
   point.view_depth = 0.0;
@@ -187,8 +190,9 @@ bool project_to_map(Light light, vec3 world_pos, vec3 normal, out MapPoint point
     return false;
   }
   point.depth = ndc.z;
-  point.view_depth = map_view_depth(light, map_linear_depth(light, ndc.z));
-  if (!map_is_orthographic(light)) {
+  float linear_depth = map_linear_depth(light, ndc.z, point.orthographic);
+  point.view_depth = map_view_depth(light, linear_depth, point.orthographic);
+  if (!point.orthographic) {
     float near = light.shadow_depth.x, far = light.shadow_depth.y;
     point.per_linear = perspective_stored_depth_slope(point.view_depth, near, far) * far;
   }
@@ -314,7 +318,7 @@ float shadow_2d_noise(Light light, MapPoint point, float bias) {
 // most of the map searched. The filter radius is half the penumbra width, so the transition
 // from lit to shadowed is w wide, and at least one texel, so contact shadows stay antialiased.
 float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter) {
-  bool orthographic = map_is_orthographic(light);
+  bool orthographic = point.orthographic;
   float light_size = light.shadow_bias.w;
   float uv_per_unit = map_uv_per_world_unit(projection_x_scale(light.shadow_matrix),
                                             point.view_depth, orthographic);
@@ -336,7 +340,8 @@ float shadow_2d_pcss(Light light, MapPoint point, float bias, bool jitter) {
   if (blockers == 0.0) return 0.0;
 
   // Section 4.4 (b): the view depth recovered from the blockers' average stored depth.
-  float blocker = map_view_depth(light, map_linear_depth(light, blocker_sum / blockers));
+  float blocker_linear = map_linear_depth(light, blocker_sum / blockers, orthographic);
+  float blocker = map_view_depth(light, blocker_linear, orthographic);
   float width = orthographic
                     ? orthographic_penumbra_width(point.view_depth, blocker, light_size)
                     : pcss_penumbra_width(point.view_depth, blocker, light_size);
@@ -359,9 +364,9 @@ float shadow_2d_at(Light light, MapPoint point, float bias, uint algorithm) {
   return shadow_2d_pcss(light, point, bias, algorithm == SHADOW_PCSS_NOISE);
 }
 
-float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
+float shadow_2d(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm, uint types) {
   MapPoint point;
-  if (!project_to_map(light, world_pos, normal, point)) return 0.0;
+  if (!project_to_map(light, world_pos, normal, types, point)) return 0.0;
   return shadow_2d_at(light, point, bias, algorithm);
 }
 
@@ -387,7 +392,7 @@ Light cascade_of(Light light, uint k) {
 // cascades that did hold it give. Lit where none holds it. A do-while, so that a CPU driver runs
 // no masked kernel after the last cascade a lane needs (shadow_2d_pcf; the default scene's sun
 // took 74 ms against 87 on lavapipe, 2026-12-03).
-float shadow_cascades(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm) {
+float shadow_cascades(Light light, vec3 world_pos, vec3 normal, float bias, uint algorithm, uint types) {
   uint count = uint(light.shape.y);
   float shade = 0.0;
   float owed = 1.0;  // the share of the shade not yet taken from a cascade
@@ -395,7 +400,8 @@ float shadow_cascades(Light light, vec3 world_pos, vec3 normal, float bias, uint
   do {
     Light cascade = cascade_of(light, k);
     MapPoint point;
-    if (cascade.info.w == NO_SHADOW_MAP || !project_to_map(cascade, world_pos, normal, point)) continue;
+    if (cascade.info.w == NO_SHADOW_MAP) continue;
+    if (!project_to_map(cascade, world_pos, normal, types, point)) continue;
     vec2 to_edge = min(point.uv, 1.0 - point.uv);
     float inside = min(to_edge.x, to_edge.y) - CASCADE_EDGE_UV;
     bool last = k + 1u == count;
@@ -575,21 +581,22 @@ uint light_shadow_kind(Light light) {
 
 // `light`'s shadow factor at world_pos; `normal` is the receiver's unit normal and n_dot_l is
 // dot(N, L) for the slope-scaled bias. `shadow_kind` and `algorithm` must be the light's own
-// (light_shadow_kind, info.z): passed in, they can be compile-time constants, which leaves only
-// that algorithm's code in the shader.
+// (light_shadow_kind, info.z), and `types` (LIGHT_TYPES' bits) must hold its type: passed in,
+// they can be compile-time constants, which leaves only that algorithm's and those types' code
+// in the shader.
 float light_shadow_as(Light light, vec3 world_pos, vec3 normal, float n_dot_l, uint shadow_kind,
-                      uint algorithm) {
+                      uint algorithm, uint types) {
   if (shadow_kind == SHADOW_KIND_NONE) return 0.0;
   float bias = shadow_bias(n_dot_l, light.shadow_bias.x, light.shadow_bias.y);
   if (shadow_kind == SHADOW_KIND_CUBE) return shadow_cube(light, world_pos, normal, bias, algorithm);
-  // A pass whose only shadowed 2D lights have cascades holds no single-map lookup: on the default
-  // scene's sun, 68 ms against 74 on lavapipe (2026-12-03).
+  // Lights whose only 2D maps are cascades hold no single-map lookup: on the default scene's sun,
+  // 68 ms against 74 on lavapipe (2026-12-03). Point lights have cubes, never 2D maps.
   const uint cascaded = 1u << CASCADED_TYPE_BIT;
-  if ((LIGHT_TYPES & cascaded) != 0u &&
-      ((LIGHT_TYPES & ~cascaded) == 0u || light.info.w == CASCADED_SHADOW_MAPS)) {
-    return shadow_cascades(light, world_pos, normal, bias, algorithm);
+  const uint other_maps = ~(cascaded | (1u << LIGHT_POINT));
+  if ((types & cascaded) != 0u && ((types & other_maps) == 0u || light.info.w == CASCADED_SHADOW_MAPS)) {
+    return shadow_cascades(light, world_pos, normal, bias, algorithm, types);
   }
-  return shadow_2d(light, world_pos, normal, bias, algorithm);
+  return shadow_2d(light, world_pos, normal, bias, algorithm, types);
 }
 
 #endif

@@ -41,7 +41,7 @@ vec3 shade_tile_batched(uint tile, bool surface, SurfacePoint p, vec3 position, 
     }
     barrier();
     for (uint j = 0u; surface && j < count; ++j) {
-      color += shade_light_as(batch_light(j), p, position, SHADOW_KIND_NONE, SHADOW_HARD, filter_floor);
+      color += shade_light_as(batch_light(j), p, position, SHADOW_KIND_NONE, SHADOW_HARD, filter_floor, LIGHT_TYPES);
     }
     barrier();
   }

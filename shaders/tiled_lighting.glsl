@@ -53,12 +53,15 @@ bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {
 vec3 shade_tile_group(uint tile, SurfacePoint p, vec3 position, float filter_floor) {
   uint kind = group_shadow_kind(LIGHT_GROUP);
   uint algorithm = group_algorithm(LIGHT_GROUP);
-  if (SINGLE_LIGHT) return shade_light_as(light_at(frame.lights.x), p, position, kind, algorithm, filter_floor);
+  if (SINGLE_LIGHT) {
+    return shade_light_as(light_at(frame.lights.x), p, position, kind, algorithm, filter_floor, LIGHT_TYPES);
+  }
   uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + LIGHT_GROUP];
   vec3 color = vec3(0.0);
   uint j = 0u;
   do {
-    color += shade_light_as(light_at(tile_lights[range.x + j]), p, position, kind, algorithm, filter_floor);
+    color += shade_light_as(light_at(tile_lights[range.x + j]), p, position, kind, algorithm, filter_floor,
+                            LIGHT_TYPES);
     ++j;
   } while (j < range.y);
   return color;

@@ -14,6 +14,8 @@
 #include "tone_map.glsl"
 
 layout(constant_id = 0) const uint GROUPS_PRESENT = 0x7FFu;
+// constant_id 5: each group's light types (group_light_types), as scene_fused.frag's.
+layout(constant_id = 5) const uint GROUP_TYPES = 0x3FFFFFFFu;
 
 layout(std430, set = 0, binding = tile_lights_binding) readonly buffer TileLights { uint tile_lights[]; };
 layout(std430, set = 0, binding = tile_ranges_binding) readonly buffer TileRanges { uvec2 tile_ranges[]; };
@@ -31,7 +33,8 @@ vec3 shade_group(uint group, uint tile, SurfacePoint p) {
   uint j = 0u;
   do {
     uint light = min(tile_lights[range.x + j], frame.counts.x - 1u);
-    color += shade_light_as(light_at(light), p, in_world_position, group_shadow_kind(group), group_algorithm(group), 0.0);
+    color += shade_light_as(light_at(light), p, in_world_position, group_shadow_kind(group), group_algorithm(group),
+                            0.0, group_light_types(GROUP_TYPES, group));
     ++j;
   } while (j < range.y);
   return color;

@@ -77,6 +77,7 @@ std::vector<uint32_t> all_groups_pass_constants(const shadows::GroupsPresent& gr
       material_pass_constants(groups.present, static_cast<uint32_t>(view), textures);
   constants.push_back(groups.light_types);
   constants.push_back(groups.single);
+  constants.push_back(groups.group_types);
   return constants;
 }
 

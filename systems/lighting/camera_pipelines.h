@@ -62,8 +62,9 @@ class CameraPipelines {
 vk::GraphicsPipelineDesc for_draw_class(vk::GraphicsPipelineDesc desc, uint32_t draw_class);
 
 // The fragment specialization of a pass that shades every light group at once
-// (shaders/scene_fused.frag and its transparent variant): material_pass_constants with GROUPS_PRESENT
-// and `view`, then LIGHT_TYPES (constant_id 3) and GROUPS_SINGLE (4).
+// (shaders/scene_fused.frag and its transparent variant, shaders/transparent_tiled.frag):
+// material_pass_constants with GROUPS_PRESENT and `view`, then LIGHT_TYPES (constant_id 3),
+// GROUPS_SINGLE (4) and GROUP_TYPES (5).
 std::vector<uint32_t> all_groups_pass_constants(const shadows::GroupsPresent& groups, LightingView view,
                                                 const GpuTextures& textures);
 

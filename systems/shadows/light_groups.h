@@ -20,19 +20,26 @@ scene::ShadowAlgorithm group_algorithm(uint32_t group);
 
 // What a shader that shades every light group of a frame in one pass is specialized on
 // (shaders/scene_fused.frag): the groups with lights (bit g for group g), those with exactly one,
-// and the light types among them all (light_type_bits, gpu_light.h). A CPU driver runs every
-// branch a shader holds, so each is code left out.
+// the light types among them all (light_type_bits, gpu_light.h) and each group's, so that a group
+// holds the code of its own lights' types alone. A CPU driver runs every branch a shader holds,
+// so each is code left out.
 struct GroupsPresent {
   uint32_t present = 0;
   uint32_t single = 0;
   uint32_t light_types = 0;
+  // Five bits a group for the unshadowed and the 2D groups (lights_interface.glsl's
+  // group_light_types); a cube group's lights are point lights.
+  uint32_t group_types = 0;
 
-  // key_bits bits: groups take light_group_count bits each, light types five.
-  static constexpr uint32_t key_bits = 2 * light_group_count + 5;
+  // key_bits bits: the others follow from these.
+  static constexpr uint32_t key_bits = 2 * light_group_count + 30;
   uint64_t key() const {
-    return present | uint64_t{single} << light_group_count | uint64_t{light_types} << 2 * light_group_count;
+    return present | uint64_t{single} << light_group_count | uint64_t{group_types} << 2 * light_group_count;
   }
 };
+
+// Groups whose light types GroupsPresent::group_types holds: the unshadowed and the 2D ones.
+inline constexpr uint32_t groups_with_own_types = 6;
 
 // From group_begin and group_types as in FrameLights (group g's records are [group_begin[g],
 // group_begin[g + 1]), their types group_types[g]).
@@ -44,6 +51,7 @@ inline GroupsPresent groups_present(const std::array<uint32_t, light_group_count
     if (lights > 0) groups.present |= 1u << group;
     if (lights == 1) groups.single |= 1u << group;
     groups.light_types |= group_types[group];
+    if (group < groups_with_own_types) groups.group_types |= group_types[group] << 5 * group;
   }
   return groups;
 }

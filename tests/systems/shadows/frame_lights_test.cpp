@@ -677,7 +677,7 @@ TEST(FrameLights, RecordsAreOrderedByLightGroup) {
 }
 
 // What a shader shading every group at once is specialized on: the groups with lights, those with
-// one, and their light types together.
+// one, their light types together and each 2D group's own.
 TEST(FrameLights, GroupsPresentAreTheGroupsWithLightsAndThoseWithOne) {
   const scene::Scene scene = five_lights();
   FrameLights lights;
@@ -694,10 +694,15 @@ TEST(FrameLights, GroupsPresentAreTheGroupsWithLightsAndThoseWithOne) {
   for (const GpuLight& record : lights.records) types |= light_type_bits(record);
   EXPECT_EQ(groups.light_types, types);
   EXPECT_NE(groups.light_types & 1u << uint32_t(GpuLightType::point), 0u);
-  // Each field changes the key.
-  for (GroupsPresent other : {GroupsPresent{groups.present ^ 2u, groups.single, groups.light_types},
-                              GroupsPresent{groups.present, groups.single ^ 2u, groups.light_types},
-                              GroupsPresent{groups.present, groups.single, groups.light_types ^ 1u}}) {
+  for (uint32_t group = 0; group < groups_with_own_types; ++group) {
+    EXPECT_EQ((groups.group_types >> 5 * group) & 0x1Fu, lights.group_types[group]) << "group " << group;
+  }
+  EXPECT_NE((groups.group_types >> 5 * map_pcf) & 0x1Fu, 0u) << "the key light and the sun";
+  // Each field the shaders take apart from the types together changes the key.
+  for (GroupsPresent other :
+       {GroupsPresent{groups.present ^ 2u, groups.single, groups.light_types, groups.group_types},
+        GroupsPresent{groups.present, groups.single ^ 2u, groups.light_types, groups.group_types},
+        GroupsPresent{groups.present, groups.single, groups.light_types, groups.group_types ^ 1u}}) {
     EXPECT_NE(other.key(), groups.key());
   }
 }
