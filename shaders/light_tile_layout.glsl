@@ -8,5 +8,10 @@ const uint LIGHT_TILE_SIZE = 16u;  // pixels per tile side; one workgroup per ti
 // Tiles per coarse tile side (light_tiles_coarse.comp): a coarse tile lists the lights that reach
 // any of its tiles, so that each tile tests those only.
 const uint LIGHT_COARSE_SIDE = 8u;
+// The most group sets a frame shades (light_tiles_interface.glsl): tiles whose light groups are
+// one of them take one pass for all those groups.
+const uint LIGHT_GROUP_SETS = 8u;
+// The light groups a group set holds at most (tiled_lighting.glsl: their lights come as push constants).
+const uint LIGHT_GROUPS_A_SET = 4u;
 
 #endif

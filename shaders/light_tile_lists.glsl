@@ -10,10 +10,11 @@
 layout(std430, set = 0, binding = tile_lights_binding) writeonly buffer TileLights { uint tile_lights[]; };
 // Per tile and group: x the first entry in tile_lights, y how many.
 layout(std430, set = 0, binding = tile_ranges_binding) writeonly buffer TileRanges { uvec2 tile_ranges[]; };
-// Per group, tile_count slots: the tiles that have lights of the group, in no particular order.
+// Per group, then per group set, tile_count slots: the tiles that pass shades, in no particular
+// order.
 layout(std430, set = 0, binding = group_tiles_binding) writeonly buffer GroupTiles { uint group_tiles[]; };
-// Per group a VkDispatchIndirectCommand (x counts the group's tiles; y = z = 1), at a 16-byte
-// stride.
+// Per group, then per group set, a VkDispatchIndirectCommand (x counts the tiles; y = z = 1), at
+// a 16-byte stride.
 layout(std430, set = 0, binding = group_commands_binding) buffer GroupCommands { uvec4 group_commands[]; };
 
 // Takes `wanted` entries of the pool for one tile's list: returns the first, and in `listed` how
@@ -28,13 +29,38 @@ uint take_entries(uint wanted, out uint listed) {
   return first;
 }
 
+// Lists `tile` for dispatch `list`: a group's (its number) or a group set's (LIGHT_GROUP_COUNT and
+// the set's place in frame.sets).
+void list_tile(uint tile, uint list) {
+  uint k = atomicAdd(group_commands[list].x, 1u);
+  group_tiles[list * frame.screen.w + k] = tile;
+}
+
 // Records that `tile`'s lights of `group` are the `count` entries of the pool from `first` on,
-// and, when there are any, lists the tile for the group's dispatch.
-void publish_group_range(uint tile, uint group, uint first, uint count) {
+// and, when there are any and `listed` (the tile is in no group set), lists the tile for the
+// group's dispatch.
+void publish_group_range(uint tile, uint group, uint first, uint count, bool listed) {
   tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(first, count);
-  if (count == 0u) return;
-  uint k = atomicAdd(group_commands[group].x, 1u);
-  group_tiles[group * frame.screen.w + k] = tile;
+  if (count > 0u && listed) list_tile(tile, group);
+}
+
+// Group set `s` of frame.sets (bit g for group g; 0: none).
+uint group_set(uint s) { return frame.sets[s / 4u][s % 4u]; }
+
+// The place in frame.sets of the largest group set among the groups `groups` (bit g for group g),
+// LIGHT_GROUP_SETS where none is: that set's pass shades those of the tile's groups, each other
+// group's own pass the rest.
+uint group_set_within(uint groups) {
+  uint best = LIGHT_GROUP_SETS;
+  int most = 1;
+  for (uint s = 0u; s < LIGHT_GROUP_SETS; ++s) {
+    uint set = group_set(s);
+    if (set != 0u && (set & ~groups) == 0u && bitCount(set) > most) {
+      best = s;
+      most = bitCount(set);
+    }
+  }
+  return best;
 }
 
 #endif

@@ -9,6 +9,12 @@
 // lights of a group is appended to that group's tile list, whose length is the group's indirect
 // dispatch (tiled_lighting.comp). Both shapes write the same lists; on GPUs a coarse pass first
 // (light_tiles_coarse.glsl) bounds the tiles and narrows the lights each tile tests.
+//
+// Group sets (CPU drivers' shape only): a tile is listed for the pass of the largest of
+// frame.sets among its groups with lights (tiled_lighting.comp shades all the set's groups), and
+// for its other groups' own passes, instead of once for each group's: every pass pays for reading
+// the G-buffer and the lit sum at its pixels whatever its lights. The CPU picks the sets from the
+// tiles an earlier frame counted for each combination of groups (tiles_by_groups).
 // Their transparent variants (systems/lighting/transparent_pass.h) bound each tile by where
 // transparent surfaces may lie in it too (light_tile_bounds.glsl).
 #ifndef SG_LIGHT_TILES_INTERFACE_GLSL
@@ -30,12 +36,16 @@ layout(std430, set = 0, binding = light_tiles_feedback_binding) buffer Feedback 
   uint dropped_pairs;   // (tile, light) pairs that reached a tile but found no room in the pool
   uint entries_wanted;  // the entries every tile's lights asked of the pool: what sizes it
   uint coarse_wanted;   // the same of the coarse tiles' pool (light_tiles_coarse.glsl)
+  // Per combination of two groups or more (bit g for group g), the tiles whose groups with lights
+  // it is (CPU drivers' shape only).
+  uint tiles_by_groups[1u << LIGHT_GROUP_COUNT];
 };
 
 layout(push_constant) uniform Constants {
   mat4 inverse_view_projection;
   uvec4 screen;  // x width, y height, z tiles across, w tiles in all
   uvec4 counts;  // x lights, y entries in the pool (tile_lights), z entries in the coarse pool
+  uvec4 sets[LIGHT_GROUP_SETS / 4u];  // the group sets, bit g for group g; 0: none
 } frame;
 
 uint group_of(uint light) {

@@ -66,5 +66,13 @@ void main() {
   }
   // Lights worth exactly the least kept may not all fit: those left out count as dropped too.
   if (count < listed) atomicAdd(dropped_pairs, listed - count);
-  for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) publish_group_range(tile, g, group_first[g], group_count[g]);
+  uint groups = 0u;
+  for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) groups |= group_count[g] > 0u ? 1u << g : 0u;
+  if (bitCount(groups) > 1) atomicAdd(tiles_by_groups[groups], 1u);
+  uint set = group_set_within(groups);
+  uint in_set = set < LIGHT_GROUP_SETS ? group_set(set) : 0u;
+  for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) {
+    publish_group_range(tile, g, group_first[g], group_count[g], (in_set & (1u << g)) == 0u);
+  }
+  if (set < LIGHT_GROUP_SETS) list_tile(tile, LIGHT_GROUP_COUNT + set);
 }

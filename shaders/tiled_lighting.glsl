@@ -23,7 +23,6 @@ layout(constant_id = 4) const bool SINGLE_LIGHT = false;
 // constant_id 5: the lit sum's alpha holds each pixel's filter floor (lighting_filter_floor.comp),
 // below which a light takes the hard test instead of its own kernel (light_shading.glsl).
 layout(constant_id = 5) const bool RANKED_FILTERING = false;
-
 layout(set = 0, binding = gbuffer_normal_binding) uniform sampler2D gbuffer_normal;
 layout(set = 0, binding = gbuffer_albedo_binding) uniform sampler2D gbuffer_albedo;
 layout(std430, set = 0, binding = tile_lights_binding) readonly buffer TileLights { uint tile_lights[]; };

@@ -8,7 +8,8 @@ layout(push_constant) uniform Constants {
   mat4 inverse_view_projection;  // the camera's: positions from the depth buffer
   vec4 camera_position;
   uvec4 screen;  // x width, y height, z tiles across, w tiles in all
-  uvec4 lights;  // x: the group's light where SINGLE_LIGHT (tiled_lighting.glsl)
+  uvec4 lights;  // x: the group's light where SINGLE_LIGHT; a group set's lights, one a group in order
+  uvec4 set;     // x: a group set pass's place among the frame's sets (tiled_lighting.glsl)
 } frame;
 
 #endif

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "rendergraph/vulkan/transient_resources.h"
 
+#include <algorithm>
 #include <map>
+#include <span>
 #include <utility>
 
 #include "rendergraph/core/aliasing.h"
@@ -42,6 +44,31 @@ VkBuffer create_buffer(VkDevice device, const rg::CompiledResource& resource) {
   return buffer;
 }
 
+// Whether every transient of a group, placed by `aliasing` (the device's sizes), takes over memory
+// only from transients the compiled plan named as its previous occupants: its barriers
+// (rendergraph/core/barriers.cpp) wait for those last uses and no others. The device's sizes can
+// pack a group otherwise than compile()'s estimates did.
+bool waits_for_its_previous_occupants(const rg::AliasingPlan& aliasing, std::span<const uint32_t> resources,
+                                      const rg::CompiledPlan& plan) {
+  for (size_t r = 0; r < resources.size(); ++r) {
+    const std::vector<uint32_t>& planned = plan.resources[resources[r]].placement->previous_occupants;
+    for (const uint32_t previous : aliasing.placements[r].previous_occupants) {
+      if (std::find(planned.begin(), planned.end(), resources[previous]) == planned.end()) return false;
+    }
+  }
+  return true;
+}
+
+// Each request in memory of its own.
+rg::AliasingPlan unaliased(std::span<const rg::AliasingRequest> requests) {
+  rg::AliasingPlan plan;
+  for (uint32_t r = 0; r < requests.size(); ++r) {
+    plan.heaps.push_back({requests[r].kind, requests[r].size, requests[r].alignment});
+    plan.placements.push_back({r, 0, requests[r].size, {}});
+  }
+  return plan;
+}
+
 }  // namespace
 
 TransientResources::TransientResources(VulkanContext& context, const rg::CompiledPlan& plan)
@@ -78,7 +105,9 @@ TransientResources::TransientResources(VulkanContext& context, const rg::Compile
 
     for (const auto& [key, group] : groups) {
       const auto [kind, memory_types] = key;
-      const rg::AliasingPlan aliasing = rg::plan_aliasing(group.requests);
+      rg::AliasingPlan aliasing = rg::plan_aliasing(group.requests);
+      if (!waits_for_its_previous_occupants(aliasing, group.resources, plan))
+        aliasing = unaliased(group.requests);
       const size_t first_heap = heaps_.size();
       for (const rg::MemoryHeap& heap : aliasing.heaps) {
         const VkMemoryRequirements requirements{heap.size, heap.alignment, memory_types};

@@ -200,6 +200,11 @@ std::vector<Setting<S>> make_table() {
           "lit-sum-start", [](auto& s) -> auto& { return s.renderer.lit_sum_start; },
           "where deferred lighting starts the lit sum (ambient term, background): a full-screen "
           "pass, or a G-buffer target (auto: the G-buffer on CPU devices, the pass on GPUs)"),
+      on_off<S>(
+          "group-sets", [](auto& s) -> auto& { return s.renderer.group_sets; },
+          "deferred lighting on CPU devices: a tile whose light groups (a few, one light each) are "
+          "one of the frame's commonest sets takes one pass for them all, not one a group (the "
+          "frame that first picks a set builds its pipeline: seconds each on lavapipe)"),
       choice<S>(
           "light-records", [](auto& s) -> auto& { return s.renderer.light_records; },
           "how deferred lighting reads the light records: from a storage buffer, or through a "

@@ -31,7 +31,11 @@ struct Feedback {
   uint32_t dropped_pairs = 0;
   uint32_t entries_wanted = 0;
   uint32_t coarse_wanted = 0;
+  TilesByGroups tiles_by_groups{};
 };
+
+// The groups' dispatches, then the group sets'.
+constexpr uint32_t dispatch_count = light_group_count + tiles::LIGHT_GROUP_SETS;
 
 // The most entries the pool may hold: what one storage buffer binding reaches, and at most 1 GiB
 // (a quarter of a billion (tile, light) pairs; 1,024 lights in every tile of a 3840x2160 frame
@@ -42,9 +46,9 @@ uint64_t device_pool_entries(const vk::VulkanContext& context) {
   return bytes / sizeof(uint32_t);
 }
 
-// Every group's dispatch starts at zero workgroups (the culling counts them) of height and depth 1.
-std::array<glm::uvec4, light_group_count> empty_commands() {
-  std::array<glm::uvec4, light_group_count> commands;
+// Every dispatch starts at zero workgroups (the culling counts them) of height and depth 1.
+std::array<glm::uvec4, dispatch_count> empty_commands() {
+  std::array<glm::uvec4, dispatch_count> commands;
   commands.fill(glm::uvec4(0u, 1u, 1u, 0u));
   return commands;
 }
@@ -117,7 +121,7 @@ std::vector<VkDescriptorSetLayoutBinding> coarse_bindings(bool transparent_bound
   return bindings;
 }
 
-constexpr Feedback no_feedback{};
+const Feedback no_feedback{};
 
 // shaders/light_tiles.glsl's TileVolume: four vec4.
 constexpr uint64_t tile_volume_bytes = 4 * sizeof(glm::vec4);
@@ -129,7 +133,9 @@ struct LightTilesPass::Constants {
   glm::mat4 inverse_view_projection;
   glm::uvec4 screen;  // width, height, tiles across, tiles in all
   glm::uvec4 counts;  // lights, entries in the pool, entries in the coarse pool
+  GroupSets sets;
 };
+static_assert(sizeof(GroupSets) % sizeof(glm::uvec4) == 0);
 
 // The coarse pass's outputs (shaders/light_tiles_coarse.glsl).
 struct LightTilesPass::CoarseLists {
@@ -152,9 +158,9 @@ uint64_t LightTilesPass::ranges_bytes(LightTileGrid grid) {
   return uint64_t{grid.count()} * light_group_count * sizeof(glm::uvec2);
 }
 uint64_t LightTilesPass::tiles_bytes(LightTileGrid grid) {
-  return uint64_t{grid.count()} * light_group_count * sizeof(uint32_t);
+  return uint64_t{grid.count()} * dispatch_count * sizeof(uint32_t);
 }
-uint64_t LightTilesPass::commands_bytes() { return light_group_count * sizeof(glm::uvec4); }
+uint64_t LightTilesPass::commands_bytes() { return dispatch_count * sizeof(glm::uvec4); }
 uint64_t LightTilesPass::dispatch_offset(uint32_t group) { return group * sizeof(glm::uvec4); }
 
 LightTilesPass::LightTilesPass(vk::VulkanContext& context, uint32_t frames_in_flight, LightCullingShape shape,
@@ -185,13 +191,14 @@ uint64_t LightTilesPass::take_dropped_pairs(uint32_t slot) {
   pool_.asked(feedback.entries_wanted);
   coarse_pool_.asked(feedback.coarse_wanted);
   listed_pairs_ = feedback.entries_wanted;
+  tiles_by_groups_ = feedback.tiles_by_groups;
   return feedback.dropped_pairs;
 }
 
 LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, uint32_t slot, rg::ImageHandle depth,
                                   const vk::Buffer& lights, uint32_t light_count,
                                   const glm::mat4& view_projection, const LightTiles* outputs,
-                                  const vk::Buffer* transparent_bounds) const {
+                                  const vk::Buffer* transparent_bounds, const GroupSets& group_sets) const {
   if ((transparent_bounds != nullptr) != transparent_bounds_) {
     throw std::logic_error(
         "LightTilesPass::add_to: transparent bounds given to a pass made without them, or "
@@ -222,7 +229,8 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, uint32_t slot, rg::Ima
   const uint64_t coarse_entries = serial ? 0 : coarse_pool_.entries(grid.coarse().count(), light_count);
   const Constants constants{glm::inverse(view_projection),
                             {screen.width, screen.height, grid.across, grid.count()},
-                            {light_count, uint32_t(pool_entries), uint32_t(coarse_entries), 0u}};
+                            {light_count, uint32_t(pool_entries), uint32_t(coarse_entries), 0u},
+                            group_sets};
   CoarseLists lists;
   if (!serial) lists = add_coarse_pass(graph, slot, depth, lights, constants, transparent_bounds, grid);
   LightTiles out;

@@ -3,7 +3,9 @@
 // Light culling for tiled lighting (shaders/light_tiles.comp): per screen tile of
 // LIGHT_TILE_SIZE pixels, the lights that reach the tile's visible surfaces, grouped by light
 // group, and per group the tiles to shade with their indirect dispatch.
+#include <array>
 #include <cstdint>
+#include <span>
 
 #include <glm/glm.hpp>
 
@@ -13,6 +15,7 @@
 #include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
 #include "systems/lighting/light_list_pool.h"
+#include "systems/shadows/light_groups.h"
 
 namespace sg {
 
@@ -25,10 +28,17 @@ using uint = std::uint32_t;
 struct LightTiles {
   rg::BufferHandle lights;  // the pool of every tile's list of light indices (LightListPool)
   rg::BufferHandle ranges;  // per tile and group: first entry, count
-  rg::BufferHandle tiles;   // per group, the tiles that have its lights
-  // Per group a VkDispatchIndirectCommand (a workgroup per tile), at a 16-byte stride.
+  rg::BufferHandle tiles;   // per group, the tiles that have its lights, then per group set its tiles
+  // Per group, then per group set, a VkDispatchIndirectCommand (a workgroup per tile), at a
+  // 16-byte stride.
   rg::BufferHandle commands;
 };
+
+// A frame's group sets (shaders/light_tiles_interface.glsl): bit g for light group g, 0 for none.
+using GroupSets = std::array<uint32_t, tiles::LIGHT_GROUP_SETS>;
+
+// Per combination of light groups (bit g for group g), the tiles whose groups with lights it was.
+using TilesByGroups = std::array<uint32_t, std::size_t{1} << shadows::light_group_count>;
 
 struct LightTileGrid {
   uint32_t across = 0;
@@ -61,7 +71,8 @@ class LightTilesPass {
   static uint64_t ranges_bytes(LightTileGrid grid);
   static uint64_t tiles_bytes(LightTileGrid grid);
   static uint64_t commands_bytes();
-  // The offset in `commands` of `group`'s dispatch.
+  // The offset in `commands` of `group`'s dispatch, or of the group set's whose place is `group`
+  // less light_group_count.
   static uint64_t dispatch_offset(uint32_t group);
 
   // Culls the first `light_count` records of `lights` (sorted by group) against the tiles of
@@ -70,11 +81,12 @@ class LightTilesPass {
   // Writes into `outputs` when given (imported buffers of the sizes above), else into new
   // transients; returns the outputs' new versions. `lights` and `transparent_bounds` must live
   // until the frame is recorded. The lists' pool holds as many entries as LightListPool sizes, or
-  // as the given `outputs->lights` holds.
+  // as the given `outputs->lights` holds. Where the pass runs an invocation per tile, a tile whose
+  // groups with lights are one of `group_sets` is listed for that set's dispatch, not its groups'.
   LightTiles add_to(rg::RenderGraph& graph, uint32_t slot, rg::ImageHandle depth, const vk::Buffer& lights,
                     uint32_t light_count, const glm::mat4& view_projection,
-                    const LightTiles* outputs = nullptr,
-                    const vk::Buffer* transparent_bounds = nullptr) const;
+                    const LightTiles* outputs = nullptr, const vk::Buffer* transparent_bounds = nullptr,
+                    const GroupSets& group_sets = {}) const;
 
   // After FrameRing::begin_frame returned `slot`, before add_to: the (tile, light) pairs the frame
   // that last used the slot could not list (its pool ran out), zeroed for this frame. What that
@@ -83,6 +95,9 @@ class LightTilesPass {
   // What the frame the last take_dropped_pairs read back asked of the pool: the (tile, light)
   // pairs its lists held, dropped ones included, which the lighting's cost follows.
   uint64_t listed_pairs() const { return listed_pairs_; }
+  // That frame's tiles by their groups with lights, where it ran an invocation per tile (zeros
+  // otherwise): what a frame's group sets are chosen from (TiledLightingPass).
+  const TilesByGroups& tiles_by_groups() const { return tiles_by_groups_; }
   // The entries of the pool of the next frame culling `light_count` lights over `grid`.
   uint64_t pool_entries(LightTileGrid grid, uint32_t light_count) const {
     return pool_.entries(grid.count(), light_count);
@@ -102,6 +117,7 @@ class LightTilesPass {
   LightListPool pool_;
   LightListPool coarse_pool_;  // of the coarse tiles' lists (workgroup_per_tile)
   uint64_t listed_pairs_ = 0;
+  TilesByGroups tiles_by_groups_{};
   vk::UniqueSampler nearest_;
   vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "systems/lighting/tiled_lighting_pass.h"
 
+#include <algorithm>
+#include <bit>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -16,6 +18,8 @@
 #include "shaders/shadow_probe.comp.spv.h"
 #include "shaders/shadow_probe_storage_records.comp.spv.h"
 #include "shaders/tiled_lighting.comp.spv.h"
+#include "shaders/tiled_lighting_set.comp.spv.h"
+#include "shaders/tiled_lighting_set_storage_records.comp.spv.h"
 #include "shaders/tiled_lighting_storage_records.comp.spv.h"
 #include "systems/gpu/scene_gpu_types.h"
 #include "systems/gpu/shader_bindings.h"
@@ -37,8 +41,10 @@ struct LightingConstants {
   glm::mat4 inverse_view_projection;
   glm::vec4 camera_position;
   glm::uvec4 screen;  // width, height, tiles across, tiles in all
-  glm::uvec4 lights;  // x: a single-light group's light (SINGLE_LIGHT)
+  glm::uvec4 lights;  // x: a single-light group's light (SINGLE_LIGHT); a group set's, in group order
+  glm::uvec4 set;     // x: a group set's place among the frame's sets
 };
+static_assert(tiles::LIGHT_GROUPS_A_SET <= 4, "a group set's lights are one uvec4");
 
 std::string group_name(uint32_t group) {
   switch (shadows::group_shadow_kind(group)) {
@@ -49,8 +55,29 @@ std::string group_name(uint32_t group) {
   return "group " + std::to_string(group);
 }
 
+// The groups of group set `set` (bit g for group g), joined: "2d pcf + cube hard".
+std::string set_name(uint32_t set) {
+  std::string name;
+  for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+    if ((set >> group & 1u) != 0) name += (name.empty() ? "" : " + ") + group_name(group);
+  }
+  return name;
+}
+
 LightingConstants with_group_light(LightingConstants constants, uint32_t light) {
   constants.lights.x = light;
+  return constants;
+}
+
+// The constants of group set `set`, at place `place` among the frame's, whose groups' lights are
+// `group_light` (one a group).
+LightingConstants with_set(LightingConstants constants, uint32_t set, uint32_t place,
+                           const std::array<uint32_t, shadows::light_group_count>& group_light) {
+  uint32_t k = 0;
+  for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+    if ((set >> group & 1u) != 0) constants.lights[int(k++)] = group_light[group];
+  }
+  constants.set.x = place;
   return constants;
 }
 
@@ -110,7 +137,58 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
                 constants, layout_.get(), "lighting filter floor"});
 }
 
-void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView view) {
+void TiledLightingPass::choose_group_sets(const shadows::FrameLights& lights, const TilesByGroups& tiles) {
+  // A set's groups have one light each (its lights come as push constants) and no contact shadows
+  // (which the set's pipeline would march for every group).
+  uint32_t eligible = 0;
+  for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+    if (lights.group_begin[group + 1] == lights.group_begin[group] + 1 &&
+        lights.group_contact_lights[group] == 0)
+      eligible |= 1u << group;
+  }
+  // The tiles' combinations of groups, and the sets they could take: their eligible groups.
+  std::vector<std::pair<uint32_t, uint32_t>> counted;  // combination, tiles
+  std::vector<uint32_t> candidates;
+  for (uint32_t groups = 0; groups < tiles.size(); ++groups) {
+    if (tiles[groups] == 0) continue;
+    counted.emplace_back(groups, tiles[groups]);
+    const uint32_t set = groups & eligible;
+    if (std::popcount(set) >= 2 && std::popcount(set) <= int(tiles::LIGHT_GROUPS_A_SET))
+      candidates.push_back(set);
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  // Greedily, the set that spares the most passes over tiles beyond the sets taken: a tile takes
+  // the largest set among its groups (light_tile_lists.glsl's group_set_within), which spares a
+  // pass per group of it but one.
+  const auto largest_within = [&](uint32_t groups, size_t taken) {
+    int most = 1;
+    for (size_t s = 0; s < taken; ++s) {
+      if ((group_sets_[s] & ~groups) == 0) most = std::max(most, std::popcount(group_sets_[s]));
+    }
+    return most;
+  };
+  for (size_t taken = 0; taken < group_sets_.size(); ++taken) {
+    uint64_t best_spared = 0;
+    uint32_t best = 0;
+    for (const uint32_t set : candidates) {
+      uint64_t spared = 0;
+      for (const auto& [groups, count] : counted) {
+        if ((set & ~groups) != 0) continue;
+        spared += uint64_t{count} * uint64_t(std::max(std::popcount(set) - largest_within(groups, taken), 0));
+      }
+      if (spared > best_spared) {
+        best_spared = spared;
+        best = set;
+      }
+    }
+    if (best == 0) break;
+    group_sets_[taken] = best;
+  }
+}
+
+void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView view, bool group_sets,
+                                const TilesByGroups& tiles) {
   current_.fill(VK_NULL_HANDLE);
   // The shadow-only view shows each algorithm's own shade: every light filters there.
   ranked_ = filtered_lights_ > 0 && view == LightingView::lit;
@@ -146,6 +224,33 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
         {for_records(light_resources_.records(), tiled_lighting_comp, tiled_lighting_storage_records_comp),
          constants, layout_.get(), name});
     current_[group] = pipeline.get();
+  }
+  group_sets_.fill(0);
+  set_pipelines_.fill(VK_NULL_HANDLE);
+  if (group_sets) choose_group_sets(lights, tiles);
+  for (size_t s = 0; s < group_sets_.size(); ++s) {
+    const uint32_t set = group_sets_[s];
+    if (set == 0) continue;
+    // Each group's light types, and together.
+    const uint32_t group_types = shadows::packed_group_types(set, lights.group_types);
+    uint32_t types = 0;
+    for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+      if ((set >> group & 1u) != 0) types |= lights.group_types[group];
+    }
+    vk::UniquePipeline& pipeline =
+        pipelines_by_set_[set | uint64_t{group_types} << 11 | uint64_t{static_cast<uint32_t>(view)} << 41 |
+                          uint64_t{ranked} << 42];
+    if (!pipeline) {
+      // As a group's (above), but shaders/tiled_lighting_set.comp, constant_id 8: the set; 9: its
+      // groups' light types.
+      const std::vector<uint32_t> constants{
+          0u, static_cast<uint32_t>(view), 0u, types, 0u, ranked, 0u, 0u, set, group_types};
+      pipeline = vk::create_compute_pipeline(context_,
+                                             {for_records(light_resources_.records(), tiled_lighting_set_comp,
+                                                          tiled_lighting_set_storage_records_comp),
+                                              constants, layout_.get(), "tiled lighting " + set_name(set)});
+    }
+    set_pipelines_[s] = pipeline.get();
   }
 }
 
@@ -249,6 +354,22 @@ rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer&
           bind(rec, pipeline, lit_sum, constants);
           vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.commands),
                                 LightTilesPass::dispatch_offset(group));
+        });
+  }
+  for (uint32_t s = 0; s < group_sets_.size(); ++s) {
+    if (set_pipelines_[s] == VK_NULL_HANDLE) continue;
+    graph.add_pass(
+        "lighting " + set_name(group_sets_[s]),
+        [&](rg::PassBuilder& b) {
+          read_lighting_inputs(b);
+          b.read(tiles.commands, rg::Usage::indirect);
+          lit_sum = b.write(lit_sum, rg::Usage::storage_compute);
+        },
+        [s, bind, tiles, lit_sum, constants = with_set(constants, group_sets_[s], s, group_light_),
+         pipeline = set_pipelines_[s]](const vk::PassRecorder& rec) {
+          bind(rec, pipeline, lit_sum, constants);
+          vkCmdDispatchIndirect(rec.cmd(), rec.buffer(tiles.commands),
+                                LightTilesPass::dispatch_offset(shadows::light_group_count + s));
         });
   }
   if (probing_) {

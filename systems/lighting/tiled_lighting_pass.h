@@ -10,6 +10,10 @@
 // Ranked filtering (filtered_lights > 0): before the groups, a pass finds at each pixel the
 // weight of its filtered_lights-th heaviest light (shaders/lighting_filter_floor.comp); lighter
 // lights take the hard test instead of their filter kernels, which bounds the kernels a pixel runs.
+//
+// Group sets (shaders/light_tiles_interface.glsl): where the culling runs an invocation per tile
+// (CPU devices), tiles whose light groups are the same few groups of one light each are shaded by
+// one pass holding those groups' code, which reads the G-buffer and the lit sum once for them all.
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -42,8 +46,14 @@ class TiledLightingPass {
   // Picks, and compiles when first needed, the pipeline of each group that has lights in
   // `lights` (sorted by group): each holds one algorithm's shadow code and only the code of the
   // light types the group has this frame (LIGHT_TYPES), for `view`; a group with a single light
-  // reads no light lists (SINGLE_LIGHT). add_to uses them.
-  void prepare(const shadows::FrameLights& lights, LightingView view);
+  // reads no light lists (SINGLE_LIGHT). With `group_sets`, also picks the frame's group sets,
+  // those that spare the most passes over the tiles an earlier frame counted (`tiles`), and their
+  // pipelines. add_to uses them.
+  void prepare(const shadows::FrameLights& lights, LightingView view, bool group_sets = false,
+               const TilesByGroups& tiles = {});
+
+  // This frame's group sets, for the culling to list tiles by (LightTilesPass::add_to).
+  const GroupSets& group_sets() const { return group_sets_; }
 
   static constexpr rg::Format lit_sum_format = GBuffer::lit_sum_format;
 
@@ -92,6 +102,12 @@ class TiledLightingPass {
   std::array<VkPipeline, shadows::light_group_count> current_{};
   // This frame's first record of each group: the group's light where it has one (SINGLE_LIGHT).
   std::array<uint32_t, shadows::light_group_count> group_light_{};
+  // This frame's group sets (0: none), their pipelines, and the pipelines by set | types << 11 |
+  // LightingView << 41 | ranked << 42.
+  GroupSets group_sets_{};
+  std::array<VkPipeline, tiles::LIGHT_GROUP_SETS> set_pipelines_{};
+  std::unordered_map<uint64_t, vk::UniquePipeline> pipelines_by_set_;
+  void choose_group_sets(const shadows::FrameLights& lights, const TilesByGroups& tiles);
 };
 
 }  // namespace sg

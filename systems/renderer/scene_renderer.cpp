@@ -184,6 +184,17 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
         contact_shadows_skipped_, std::string(to_string(lighting_)).c_str());
     contact_shadows_message_given_ = true;
   }
+  // What the frame that last used this slot could not list, now that its fence has passed, and
+  // how its tiles' light groups fell (TiledLightingPass's group sets).
+  dropped_light_pairs_ = take_dropped_light_pairs(slot);
+  if (dropped_light_pairs_ > 0 && frames_since_drop_message_ >= 300) {
+    std::printf(
+        "shadowgraph: %llu (tile, light) pairs found no room in the light lists' pool, which grows for the "
+        "frames after; those lights are missing there in this frame\n",
+        static_cast<unsigned long long>(dropped_light_pairs_));
+    frames_since_drop_message_ = 0;
+  }
+  ++frames_since_drop_message_;
   switch (lighting_) {
     case LightingPath::every_light:
       every_light_->prepare(slot, gpu_scene_, records, atlas_, settings_.view);
@@ -196,7 +207,8 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     case LightingPath::automatic:  // resolved
     case LightingPath::deferred:
       deferred_->gbuffer.prepare(slot, gpu_scene_);
-      deferred_->lighting.prepare(lights_, settings_.view);
+      deferred_->lighting.prepare(lights_, settings_.view, settings_.group_sets,
+                                  deferred_->light_tiles.tiles_by_groups());
       break;
   }
   if (gpu_scene_.has_transparent()) {
@@ -208,16 +220,6 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
                           shadows::groups_present(lights_.group_begin, lights_.group_types), settings_.view,
                           gpu_scene_, slot, camera.view_projection, {width, height});
   }
-  // What the frame that last used this slot could not list, now that its fence has passed.
-  dropped_light_pairs_ = take_dropped_light_pairs(slot);
-  if (dropped_light_pairs_ > 0 && frames_since_drop_message_ >= 300) {
-    std::printf(
-        "shadowgraph: %llu (tile, light) pairs found no room in the light lists' pool, which grows for the "
-        "frames after; those lights are missing there in this frame\n",
-        static_cast<unsigned long long>(dropped_light_pairs_));
-    frames_since_drop_message_ = 0;
-  }
-  ++frames_since_drop_message_;
   ++frames_prepared_;
   cpu_steps_.views = lap(mark);
 }
@@ -306,7 +308,8 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
     const GBuffer gbuffer =
         deferred_->gbuffer.add_to(graph, target.width, target.height, gpu_scene_, slot, constants);
     const LightTiles tiles =
-        deferred_->light_tiles.add_to(graph, slot, gbuffer.depth, records, light_count, view_projection);
+        deferred_->light_tiles.add_to(graph, slot, gbuffer.depth, records, light_count, view_projection,
+                                      nullptr, nullptr, deferred_->lighting.group_sets());
     lit_sum = deferred_->lighting.add_to(graph, gbuffer, tiles, atlas, records, view_projection, pose.eye,
                                          ambient_term);
     depth = gbuffer.depth;

@@ -41,6 +41,17 @@ struct GroupsPresent {
 // Groups whose light types GroupsPresent::group_types holds: the unshadowed and the 2D ones.
 inline constexpr uint32_t groups_with_own_types = 6;
 
+// The light types of groups `groups` (bit g for group g), each group's `group_types[g]`, packed
+// as GroupsPresent::group_types.
+inline uint32_t packed_group_types(uint32_t groups,
+                                   const std::array<uint32_t, light_group_count>& group_types) {
+  uint32_t packed = 0;
+  for (uint32_t group = 0; group < groups_with_own_types; ++group) {
+    if ((groups >> group & 1u) != 0) packed |= group_types[group] << 5 * group;
+  }
+  return packed;
+}
+
 // From group_begin and group_types as in FrameLights (group g's records are [group_begin[g],
 // group_begin[g + 1]), their types group_types[g]).
 inline GroupsPresent groups_present(const std::array<uint32_t, light_group_count + 1>& group_begin,
@@ -51,8 +62,8 @@ inline GroupsPresent groups_present(const std::array<uint32_t, light_group_count
     if (lights > 0) groups.present |= 1u << group;
     if (lights == 1) groups.single |= 1u << group;
     groups.light_types |= group_types[group];
-    if (group < groups_with_own_types) groups.group_types |= group_types[group] << 5 * group;
   }
+  groups.group_types = packed_group_types(groups.present, group_types);
   return groups;
 }
 

@@ -17,6 +17,7 @@
 #include "systems/frame/gpu_time_log.h"
 #include "systems/frame/headless_frames.h"
 #include "systems/gpu/camera.h"
+#include "systems/lighting/light_tiles_pass.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
@@ -198,6 +199,29 @@ TEST_F(FrameTest, GroupsOfManyLightsMatchForward) {
   const vk::Rgba8Image fused = render(options, 2);
   EXPECT_EQ(passes.back(), "fused forward");
   EXPECT_LE(largest_difference(fused, forward), 2) << "levels of 255 in the worst channel";
+}
+
+// Group sets (TiledLightingPass): from the third frame, which reads what the first counted, tiles
+// where the default scene's lights overlap take one pass for their groups; the picture is the one
+// a pass per group draws, to the 16-bit lit sum's rounding.
+TEST_F(FrameTest, GroupSetsDrawWhatAPassPerGroupDraws) {
+  FrameSettings options = lit_by(LightingPath::deferred);
+  options.renderer.group_sets = false;
+  const vk::Rgba8Image per_group = render(options, 4);
+  EXPECT_EQ(std::count_if(passes.begin(), passes.end(),
+                          [](const std::string& name) { return name.find(" + ") != std::string::npos; }),
+            0);
+  options.renderer.group_sets = true;
+  const vk::Rgba8Image with_sets = render(options, 4);
+  const auto sets = std::count_if(passes.begin(), passes.end(), [](const std::string& name) {
+    return name.starts_with("lighting ") && name.find(" + ") != std::string::npos;
+  });
+  EXPECT_GE(sets, 2) << "the sun's group with others, in the most common combinations";
+  EXPECT_LE(sets, long(tiles::LIGHT_GROUP_SETS));
+  // A set sums its groups before the lit sum's 16 bits round, a pass per group after each: a
+  // level of rounding in a few percent of the channels.
+  EXPECT_LE(largest_difference(per_group, with_sets), 1) << "levels of 255 in the worst channel";
+  EXPECT_LT(share_differing(per_group, with_sets, 0), 0.1);
 }
 
 // Deferred lighting's lit sum started by a pass of its own or by the G-buffer: the same shading

@@ -635,13 +635,19 @@ TEST(ShadowSchedule, AThreadPoolSchedulesTheSameShadows) {
   EXPECT_GT(serial_schedule.stats().lights_waiting, 0u);
 }
 
-TEST(FrameLights, RecordsAreOrderedByLightGroup) {
+// five_lights() gathered, given maps from above and sorted by group.
+FrameLights five_lights_by_group() {
   const scene::Scene scene = five_lights();
   FrameLights lights;
   gather_lights(scene.world, bounds, {}, lights);
   ShadowSchedule schedule(small_atlas);
   schedule.schedule(lights, camera_at({0.0f, 5.0f, 2.0f}), {}, 0);
   sort_by_group(lights);
+  return lights;
+}
+
+TEST(FrameLights, RecordsAreOrderedByLightGroup) {
+  const FrameLights lights = five_lights_by_group();
   // Every light here uses pcf: "fill" is unshadowed, key and the sun have 2D maps, two cubes.
   const uint32_t map_pcf = light_group(ShadowKind::map, scene::ShadowAlgorithm::pcf);
   const uint32_t cube_pcf = light_group(ShadowKind::cube, scene::ShadowAlgorithm::pcf);
@@ -679,12 +685,7 @@ TEST(FrameLights, RecordsAreOrderedByLightGroup) {
 // What a shader shading every group at once is specialized on: the groups with lights, those with
 // one, their light types together and each 2D group's own.
 TEST(FrameLights, GroupsPresentAreTheGroupsWithLightsAndThoseWithOne) {
-  const scene::Scene scene = five_lights();
-  FrameLights lights;
-  gather_lights(scene.world, bounds, {}, lights);
-  ShadowSchedule schedule(small_atlas);
-  schedule.schedule(lights, camera_at({0.0f, 5.0f, 2.0f}), {}, 0);
-  sort_by_group(lights);
+  const FrameLights lights = five_lights_by_group();
   const GroupsPresent groups = groups_present(lights.group_begin, lights.group_types);
   const uint32_t map_pcf = light_group(ShadowKind::map, scene::ShadowAlgorithm::pcf);
   const uint32_t cube_pcf = light_group(ShadowKind::cube, scene::ShadowAlgorithm::pcf);
