@@ -140,15 +140,15 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
 void TiledLightingPass::choose_group_sets(const shadows::FrameLights& lights, const TilesByGroups& tiles) {
   // A set's groups have one light each (its lights come as push constants) and no contact shadows
   // (which the set's pipeline would march for every group).
-  uint32_t eligible = 0;
+  uint32_t eligible = shadows::groups_present(lights.group_begin, lights.group_types).single;
   for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
-    if (lights.group_begin[group + 1] == lights.group_begin[group] + 1 &&
-        lights.group_contact_lights[group] == 0)
-      eligible |= 1u << group;
+    if (lights.group_contact_lights[group] > 0) eligible &= ~(1u << group);
   }
   // The tiles' combinations of groups, and the sets they could take: their eligible groups.
-  std::vector<std::pair<uint32_t, uint32_t>> counted;  // combination, tiles
-  std::vector<uint32_t> candidates;
+  std::vector<std::pair<uint32_t, uint32_t>>& counted = counted_groups_;
+  std::vector<uint32_t>& candidates = candidate_sets_;
+  counted.clear();
+  candidates.clear();
   for (uint32_t groups = 0; groups < tiles.size(); ++groups) {
     if (tiles[groups] == 0) continue;
     counted.emplace_back(groups, tiles[groups]);

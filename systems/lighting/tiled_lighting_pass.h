@@ -17,6 +17,8 @@
 #include <array>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -107,6 +109,10 @@ class TiledLightingPass {
   GroupSets group_sets_{};
   std::array<VkPipeline, tiles::LIGHT_GROUP_SETS> set_pipelines_{};
   std::unordered_map<uint64_t, vk::UniquePipeline> pipelines_by_set_;
+  // choose_group_sets' working storage, kept so that a frame allocates nothing: the combinations of
+  // groups tiles had and their tiles, and the sets they could take.
+  std::vector<std::pair<uint32_t, uint32_t>> counted_groups_;
+  std::vector<uint32_t> candidate_sets_;
   void choose_group_sets(const shadows::FrameLights& lights, const TilesByGroups& tiles);
 };
 
