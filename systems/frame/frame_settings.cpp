@@ -203,8 +203,12 @@ std::vector<Setting<S>> make_table() {
       on_off<S>(
           "group-sets", [](auto& s) -> auto& { return s.renderer.group_sets; },
           "deferred lighting on CPU devices: a tile whose light groups (a few, one light each) are "
-          "one of the frame's commonest sets takes one pass for them all, not one a group (the "
-          "frame that first picks a set builds its pipeline: seconds each on lavapipe)"),
+          "one of the frame's commonest sets takes one pass for them all, not one a group"),
+      choice<S>(
+          "pipeline-builds", [](auto& s) -> auto& { return s.renderer.pipeline_builds; },
+          "when the group sets' pipelines are built (seconds each on lavapipe): background, on a "
+          "thread of their own while frames go on without them; in-frame, by the frame that first "
+          "takes a set, so that a run's pictures are the same every time"),
       choice<S>(
           "light-records", [](auto& s) -> auto& { return s.renderer.light_records; },
           "how deferred lighting reads the light records: from a storage buffer, or through a "

@@ -66,6 +66,16 @@ constexpr EnumNames<LightRecordsIn, 3> enum_names(LightRecordsIn) {
            {LightRecordsIn::storage_buffer, "storage"}}};
 }
 
+// When a pipeline that a frame can do without (deferred lighting's group sets) is built:
+// - background: on a thread of its own (vk::BackgroundPipelines), the frames doing without it until
+//   it is ready, so that none waits for it (lavapipe, `default` scene: eight set pipelines took 16 s
+//   to build, 2026-12-04). Which frame first takes it then depends on the build's speed;
+// - in_frame: by the frame that first needs it, so that a run's pictures are the same every time.
+enum class PipelineBuilds { background, in_frame };
+constexpr EnumNames<PipelineBuilds, 2> enum_names(PipelineBuilds) {
+  return {{{PipelineBuilds::background, "background"}, {PipelineBuilds::in_frame, "in-frame"}}};
+}
+
 // What the lighting writes: the lit picture, or the shadow-only debug view (white diffuse surfaces
 // under white lights of the same intensities, shadows at full density, no ambient).
 enum class LightingView : uint32_t { lit = 0, shadows = 1 };

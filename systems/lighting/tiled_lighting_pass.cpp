@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdio>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -123,7 +124,8 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
                    {hdr_binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, compute_stage},
                    {shadow_probe_binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute_stage}}),
               vk::push_constants<LightingConstants>(compute_stage)),
-      filtered_lights_(filtered_lights) {
+      filtered_lights_(filtered_lights),
+      pipelines_by_set_(std::make_unique<vk::BackgroundPipelines>(context)) {
   if (filtered_lights_ > most_filtered_lights) {
     throw std::invalid_argument("TiledLightingPass: at most " + std::to_string(most_filtered_lights) +
                                 " filtered lights a pixel");
@@ -188,7 +190,7 @@ void TiledLightingPass::choose_group_sets(const shadows::FrameLights& lights, co
 }
 
 void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView view, bool group_sets,
-                                const TilesByGroups& tiles) {
+                                const TilesByGroups& tiles, PipelineBuilds builds) {
   current_.fill(VK_NULL_HANDLE);
   // The shadow-only view shows each algorithm's own shade: every light filters there.
   ranked_ = filtered_lights_ > 0 && view == LightingView::lit;
@@ -227,31 +229,61 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
   }
   group_sets_.fill(0);
   set_pipelines_.fill(VK_NULL_HANDLE);
-  if (group_sets) choose_group_sets(lights, tiles);
-  for (size_t s = 0; s < group_sets_.size(); ++s) {
+  sets_chosen_ = group_sets ? take_group_sets(lights, view, tiles, builds)
+                            : std::array<ChosenSet, tiles::LIGHT_GROUP_SETS>{};
+}
+
+std::array<TiledLightingPass::ChosenSet, tiles::LIGHT_GROUP_SETS> TiledLightingPass::take_group_sets(
+    const shadows::FrameLights& lights, LightingView view, const TilesByGroups& tiles,
+    PipelineBuilds builds) {
+  const uint32_t ranked = ranked_ ? 1u : 0u;
+  choose_group_sets(lights, tiles);
+  std::array<uint64_t, tiles::LIGHT_GROUP_SETS> keys{};
+  std::array<ChosenSet, tiles::LIGHT_GROUP_SETS> chosen{};
+  uint32_t requested = 0;
+  for (size_t s = 0; s < group_sets_.size() && group_sets_[s] != 0; ++s) {
     const uint32_t set = group_sets_[s];
-    if (set == 0) continue;
     // Each group's light types, and together.
     const uint32_t group_types = shadows::packed_group_types(set, lights.group_types);
     uint32_t types = 0;
     for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
       if ((set >> group & 1u) != 0) types |= lights.group_types[group];
     }
-    vk::UniquePipeline& pipeline =
-        pipelines_by_set_[set | uint64_t{group_types} << 11 | uint64_t{static_cast<uint32_t>(view)} << 41 |
-                          uint64_t{ranked} << 42];
-    if (!pipeline) {
-      // As a group's (above), but shaders/tiled_lighting_set.comp, constant_id 8: the set; 9: its
-      // groups' light types.
-      const std::vector<uint32_t> constants{
-          0u, static_cast<uint32_t>(view), 0u, types, 0u, ranked, 0u, 0u, set, group_types};
-      pipeline = vk::create_compute_pipeline(context_,
-                                             {for_records(light_resources_.records(), tiled_lighting_set_comp,
-                                                          tiled_lighting_set_storage_records_comp),
-                                              constants, layout_.get(), "tiled lighting " + set_name(set)});
-    }
-    set_pipelines_[s] = pipeline.get();
+    keys[s] = set | uint64_t{group_types} << 11 | uint64_t{static_cast<uint32_t>(view)} << 41 |
+              uint64_t{ranked} << 42;
+    const auto before = std::find_if(sets_chosen_.begin(), sets_chosen_.end(),
+                                     [&](const ChosenSet& earlier) { return earlier.key == keys[s]; });
+    chosen[s] = {keys[s], before == sets_chosen_.end() ? 1u : before->frames + 1};
+    if (pipelines_by_set_->asked(keys[s])) continue;
+    if (builds == PipelineBuilds::background && chosen[s].frames < frames_before_background_build) continue;
+    // As a group's (above), but shaders/tiled_lighting_set.comp, constant_id 8: the set; 9: its
+    // groups' light types.
+    pipelines_by_set_->request(
+        keys[s], {for_records(light_resources_.records(), tiled_lighting_set_comp,
+                              tiled_lighting_set_storage_records_comp),
+                  {0u, static_cast<uint32_t>(view), 0u, types, 0u, ranked, 0u, 0u, set, group_types},
+                  layout_.get(),
+                  "tiled lighting " + set_name(set)});
+    ++requested;
   }
+  if (requested > 0 && builds == PipelineBuilds::background) {
+    std::printf(
+        "shadowgraph: building %u group sets' lighting pipelines in the background; their tiles take "
+        "a pass per light group until then\n",
+        requested);
+  }
+  if (builds == PipelineBuilds::in_frame) pipelines_by_set_->wait();
+  // The sets whose pipelines are built, in the order chosen; the others' tiles take their
+  // groups' own passes this frame.
+  size_t taken = 0;
+  for (size_t s = 0; s < group_sets_.size() && group_sets_[s] != 0; ++s) {
+    const VkPipeline pipeline = pipelines_by_set_->find(keys[s]);
+    if (pipeline == VK_NULL_HANDLE) continue;
+    group_sets_[taken] = group_sets_[s];
+    set_pipelines_[taken++] = pipeline;
+  }
+  std::fill(group_sets_.begin() + std::ptrdiff_t(taken), group_sets_.end(), 0u);
+  return chosen;
 }
 
 rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer& gbuffer,

@@ -16,6 +16,7 @@
 // one pass holding those groups' code, which reads the G-buffer and the lit sum once for them all.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -23,6 +24,7 @@
 #include <glm/glm.hpp>
 
 #include "rendergraph/core/render_graph.h"
+#include "rendergraph/device/background_pipelines.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/fwd.h"
 #include "rendergraph/device/unique_handle.h"
@@ -49,10 +51,20 @@ class TiledLightingPass {
   // `lights` (sorted by group): each holds one algorithm's shadow code and only the code of the
   // light types the group has this frame (LIGHT_TYPES), for `view`; a group with a single light
   // reads no light lists (SINGLE_LIGHT). With `group_sets`, also picks the frame's group sets,
-  // those that spare the most passes over the tiles an earlier frame counted (`tiles`), and their
-  // pipelines. add_to uses them.
+  // those that spare the most passes over the tiles an earlier frame counted (`tiles`), and
+  // builds their pipelines as `builds` says: in the background, once a set has been picked
+  // frames_before_background_build frames in a row, and a set whose pipeline is not built yet is
+  // left out of the frame (its tiles take their groups' passes). add_to uses them.
   void prepare(const shadows::FrameLights& lights, LightingView view, bool group_sets = false,
-               const TilesByGroups& tiles = {});
+               const TilesByGroups& tiles = {}, PipelineBuilds builds = PipelineBuilds::in_frame);
+
+  // Waits until the group sets' pipelines asked for are built: the next frame that picks them
+  // takes them all.
+  void wait_for_pipeline_builds() { pipelines_by_set_->wait(); }
+
+  // In the background, a set is built once picked this many frames in a row: a run of a few
+  // frames, or a camera sweeping past, starts no builds it would not use.
+  static constexpr uint32_t frames_before_background_build = 8;
 
   // This frame's group sets, for the culling to list tiles by (LightTilesPass::add_to).
   const GroupSets& group_sets() const { return group_sets_; }
@@ -104,16 +116,28 @@ class TiledLightingPass {
   std::array<VkPipeline, shadows::light_group_count> current_{};
   // This frame's first record of each group: the group's light where it has one (SINGLE_LIGHT).
   std::array<uint32_t, shadows::light_group_count> group_light_{};
-  // This frame's group sets (0: none), their pipelines, and the pipelines by set | types << 11 |
+  // This frame's group sets (0: none) and their pipelines; the pipelines by set | types << 11 |
   // LightingView << 41 | ranked << 42.
   GroupSets group_sets_{};
   std::array<VkPipeline, tiles::LIGHT_GROUP_SETS> set_pipelines_{};
-  std::unordered_map<uint64_t, vk::UniquePipeline> pipelines_by_set_;
+  std::unique_ptr<vk::BackgroundPipelines> pipelines_by_set_;  // on the heap: its thread holds it
+  // The sets picked last frame, by pipeline key, and the frames in a row each was picked.
+  struct ChosenSet {
+    uint64_t key = 0;
+    uint32_t frames = 0;
+  };
+  std::array<ChosenSet, tiles::LIGHT_GROUP_SETS> sets_chosen_{};
   // choose_group_sets' working storage, kept so that a frame allocates nothing: the combinations of
   // groups tiles had and their tiles, and the sets they could take.
   std::vector<std::pair<uint32_t, uint32_t>> counted_groups_;
   std::vector<uint32_t> candidate_sets_;
   void choose_group_sets(const shadows::FrameLights& lights, const TilesByGroups& tiles);
+  // Chooses the frame's group sets, asks for their pipelines as `builds` says and keeps those
+  // built (group_sets_, set_pipelines_); returns the sets chosen, built or not.
+  std::array<ChosenSet, tiles::LIGHT_GROUP_SETS> take_group_sets(const shadows::FrameLights& lights,
+                                                                 LightingView view,
+                                                                 const TilesByGroups& tiles,
+                                                                 PipelineBuilds builds);
 };
 
 }  // namespace sg

@@ -32,10 +32,8 @@ struct RendererSettings {
   LightRecordsIn light_records = LightRecordsIn::automatic;  // the deferred path's
   // Deferred lighting where the culling runs an invocation per tile (CPU devices): tiles whose
   // light groups are one of the frame's group sets take one pass for them all (TiledLightingPass).
-  // Off unless asked for: the frame that first picks a set builds its pipeline, which holds
-  // several groups' shadow code, and on lavapipe the default scene's eight sets took 16 s to
-  // build (2026-12-04).
-  bool group_sets = false;
+  bool group_sets = true;
+  PipelineBuilds pipeline_builds = PipelineBuilds::background;  // the group sets' pipelines
   bool cull_casters = true;  // off: every shadow view draws every caster (the naive baseline)
   // Batched falls back to per-light where the device cannot draw views into atlas layers at once.
   shadows::ShadowViewPath shadow_views = shadows::ShadowViewPath::batched;

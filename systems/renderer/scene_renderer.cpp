@@ -208,7 +208,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     case LightingPath::deferred:
       deferred_->gbuffer.prepare(slot, gpu_scene_);
       deferred_->lighting.prepare(lights_, settings_.view, settings_.group_sets,
-                                  deferred_->light_tiles.tiles_by_groups());
+                                  deferred_->light_tiles.tiles_by_groups(), settings_.pipeline_builds);
       break;
   }
   if (gpu_scene_.has_transparent()) {

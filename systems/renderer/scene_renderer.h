@@ -91,6 +91,11 @@ class SceneRenderer {
   uint32_t filtered_lights() const { return deferred_ ? deferred_->lighting.filtered_lights() : 0u; }
   // With the GPU idle: the pairs the frames not read back yet left out (every slot's).
   uint64_t drain_dropped_light_pairs();
+  // Waits for the pipelines being built in the background (RendererSettings::pipeline_builds):
+  // the next frame takes every one asked for, as an in-frame build would have had it.
+  void wait_for_pipeline_builds() {
+    if (deferred_) deferred_->lighting.wait_for_pipeline_builds();
+  }
   const ShadowAtlas& shadow_atlas() const { return atlas_; }
   const shadows::ShadowScheduleStats& shadow_stats() const { return schedule_.stats(); }
   // The path in use: the settings' one, or per-light where batching is not supported.

@@ -18,6 +18,7 @@
 #include "systems/frame/headless_frames.h"
 #include "systems/gpu/camera.h"
 #include "systems/lighting/light_tiles_pass.h"
+#include "systems/lighting/tiled_lighting_pass.h"
 #include "systems/scene/camera.h"
 #include "systems/scene/lights.h"
 #include "systems/scene/primitive_meshes.h"
@@ -203,16 +204,22 @@ TEST_F(FrameTest, GroupsOfManyLightsMatchForward) {
 
 // Group sets (TiledLightingPass): from the third frame, which reads what the first counted, tiles
 // where the default scene's lights overlap take one pass for their groups; the picture is the one
-// a pass per group draws, to the 16-bit lit sum's rounding.
+// a pass per group draws, to the 16-bit lit sum's rounding. Built in the background (the
+// default), a set's pipeline is asked for once the set has been picked
+// frames_before_background_build frames in a row, the frames going on without it; once built, a
+// frame takes it and draws what a run that builds it in the frame draws.
 TEST_F(FrameTest, GroupSetsDrawWhatAPassPerGroupDraws) {
+  constexpr uint32_t frame_count = TiledLightingPass::frames_before_background_build + 4;
   FrameSettings options = lit_by(LightingPath::deferred);
   options.renderer.group_sets = false;
-  const vk::Rgba8Image per_group = render(options, 4);
+  const vk::Rgba8Image per_group = render(options, frame_count);
   EXPECT_EQ(std::count_if(passes.begin(), passes.end(),
                           [](const std::string& name) { return name.find(" + ") != std::string::npos; }),
             0);
   options.renderer.group_sets = true;
-  const vk::Rgba8Image with_sets = render(options, 4);
+  options.renderer.pipeline_builds = PipelineBuilds::in_frame;
+  const vk::Rgba8Image with_sets = render(options, frame_count);
+  const std::vector<std::string> in_frame_passes = passes;
   const auto sets = std::count_if(passes.begin(), passes.end(), [](const std::string& name) {
     return name.starts_with("lighting ") && name.find(" + ") != std::string::npos;
   });
@@ -222,6 +229,18 @@ TEST_F(FrameTest, GroupSetsDrawWhatAPassPerGroupDraws) {
   // level of rounding in a few percent of the channels.
   EXPECT_LE(largest_difference(per_group, with_sets), 1) << "levels of 255 in the worst channel";
   EXPECT_LT(share_differing(per_group, with_sets, 0), 0.1);
+
+  options.renderer.pipeline_builds = PipelineBuilds::background;
+  SceneView scene = load_scene_view(options, float(width) / height);
+  vk::FrameRing frames(context);
+  Frame frame(context, scene, options, frames.frames_in_flight());
+  frame.resize({width, height});
+  GpuTimeLog gpu_times;
+  render_headless_frames(frame, frames, frame_count - 1, gpu_times);
+  frame.renderer().wait_for_pipeline_builds();
+  render_headless_frames(frame, frames, 1, gpu_times, false, frame_count - 1);
+  EXPECT_EQ(executed_passes(*frame.plan()), in_frame_passes);
+  EXPECT_EQ(vk::read_rgba8(context, frame.image()).pixels, with_sets.pixels);
 }
 
 // Deferred lighting's lit sum started by a pass of its own or by the G-buffer: the same shading
