@@ -9,6 +9,7 @@
 
 #include "device_test_shaders/write_constant.comp.spv.h"
 #include "rendergraph/device/background_pipelines.h"
+#include "rendergraph/device/barriers.h"
 #include "rendergraph/device/descriptors.h"
 #include "rendergraph/device/resources.h"
 #include "tests/support/gpu_test.h"
@@ -34,15 +35,8 @@ class BackgroundPipelinesTest : public GpuTest {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
       layout.bind_compute(cmd, sets.sets[0]);
       vkCmdDispatch(cmd, 1, 1, 1);
-      VkMemoryBarrier2 written{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-      written.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-      written.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-      written.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-      written.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-      VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-      dependency.memoryBarrierCount = 1;
-      dependency.pMemoryBarriers = &written;
-      vkCmdPipelineBarrier2(cmd, &dependency);
+      vk::memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                         VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     });
     uint32_t written = 0;
     std::memcpy(&written, out.mapped(), sizeof(written));
