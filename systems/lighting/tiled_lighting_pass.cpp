@@ -229,13 +229,15 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
   }
   group_sets_.fill(0);
   set_pipelines_.fill(VK_NULL_HANDLE);
-  sets_chosen_ = group_sets ? take_group_sets(lights, view, tiles, builds)
-                            : std::array<ChosenSet, tiles::LIGHT_GROUP_SETS>{};
+  if (group_sets) {
+    take_group_sets(lights, view, tiles, builds);
+  } else {
+    sets_chosen_ = {};
+  }
 }
 
-std::array<TiledLightingPass::ChosenSet, tiles::LIGHT_GROUP_SETS> TiledLightingPass::take_group_sets(
-    const shadows::FrameLights& lights, LightingView view, const TilesByGroups& tiles,
-    PipelineBuilds builds) {
+void TiledLightingPass::take_group_sets(const shadows::FrameLights& lights, LightingView view,
+                                        const TilesByGroups& tiles, PipelineBuilds builds) {
   const uint32_t ranked = ranked_ ? 1u : 0u;
   choose_group_sets(lights, tiles);
   std::array<uint64_t, tiles::LIGHT_GROUP_SETS> keys{};
@@ -283,7 +285,7 @@ std::array<TiledLightingPass::ChosenSet, tiles::LIGHT_GROUP_SETS> TiledLightingP
     set_pipelines_[taken++] = pipeline;
   }
   std::fill(group_sets_.begin() + std::ptrdiff_t(taken), group_sets_.end(), 0u);
-  return chosen;
+  sets_chosen_ = chosen;
 }
 
 rg::ImageHandle TiledLightingPass::add_to(rg::RenderGraph& graph, const GBuffer& gbuffer,

@@ -132,12 +132,10 @@ class TiledLightingPass {
   std::vector<std::pair<uint32_t, uint32_t>> counted_groups_;
   std::vector<uint32_t> candidate_sets_;
   void choose_group_sets(const shadows::FrameLights& lights, const TilesByGroups& tiles);
-  // Chooses the frame's group sets, asks for their pipelines as `builds` says and keeps those
-  // built (group_sets_, set_pipelines_); returns the sets chosen, built or not.
-  std::array<ChosenSet, tiles::LIGHT_GROUP_SETS> take_group_sets(const shadows::FrameLights& lights,
-                                                                 LightingView view,
-                                                                 const TilesByGroups& tiles,
-                                                                 PipelineBuilds builds);
+  // Chooses the frame's group sets (sets_chosen_, built or not), asks for their pipelines as
+  // `builds` says and keeps those built (group_sets_, set_pipelines_).
+  void take_group_sets(const shadows::FrameLights& lights, LightingView view, const TilesByGroups& tiles,
+                       PipelineBuilds builds);
 };
 
 }  // namespace sg

@@ -4,6 +4,7 @@
 // others, and the passes the plan runs.
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,14 +35,22 @@ constexpr uint32_t height = 96;
 
 class FrameTest : public GpuTest {
  protected:
-  // Renders `frame_count` frames of `settings`' scene and returns the last picture.
-  vk::Rgba8Image render(const FrameSettings& options, uint32_t frame_count) {
+  // Renders `frame_count` frames of `settings`' scene and returns the last picture; with
+  // `before_last`, calls it before the last frame.
+  vk::Rgba8Image render(const FrameSettings& options, uint32_t frame_count,
+                        const std::function<void(Frame&)>& before_last = {}) {
     SceneView scene = load_scene_view(options, float(width) / height);
     vk::FrameRing frames(context);
     Frame frame(context, scene, options, frames.frames_in_flight());
     frame.resize({width, height});
     GpuTimeLog gpu_times;
-    render_headless_frames(frame, frames, frame_count, gpu_times);
+    if (before_last) {
+      render_headless_frames(frame, frames, frame_count - 1, gpu_times);
+      before_last(frame);
+      render_headless_frames(frame, frames, 1, gpu_times, false, frame_count - 1);
+    } else {
+      render_headless_frames(frame, frames, frame_count, gpu_times);
+    }
     passes = executed_passes(*frame.plan());
     shadow_stats = frame.renderer().shadow_stats();
     dropped_light_pairs = frame.take_dropped_light_pairs();
@@ -231,16 +240,10 @@ TEST_F(FrameTest, GroupSetsDrawWhatAPassPerGroupDraws) {
   EXPECT_LT(share_differing(per_group, with_sets, 0), 0.1);
 
   options.renderer.pipeline_builds = PipelineBuilds::background;
-  SceneView scene = load_scene_view(options, float(width) / height);
-  vk::FrameRing frames(context);
-  Frame frame(context, scene, options, frames.frames_in_flight());
-  frame.resize({width, height});
-  GpuTimeLog gpu_times;
-  render_headless_frames(frame, frames, frame_count - 1, gpu_times);
-  frame.renderer().wait_for_pipeline_builds();
-  render_headless_frames(frame, frames, 1, gpu_times, false, frame_count - 1);
-  EXPECT_EQ(executed_passes(*frame.plan()), in_frame_passes);
-  EXPECT_EQ(vk::read_rgba8(context, frame.image()).pixels, with_sets.pixels);
+  const vk::Rgba8Image background =
+      render(options, frame_count, [](Frame& frame) { frame.renderer().wait_for_pipeline_builds(); });
+  EXPECT_EQ(passes, in_frame_passes);
+  EXPECT_EQ(background.pixels, with_sets.pixels);
 }
 
 // Deferred lighting's lit sum started by a pass of its own or by the G-buffer: the same shading
