@@ -20,7 +20,6 @@ class ToneMapPass {
                          float exposure) const;
 
  private:
-  vk::UniqueSampler sampler_;
   vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;
 };
