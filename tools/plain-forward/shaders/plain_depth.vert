@@ -1,0 +1,7 @@
+// SPDX-License-Identifier: MIT
+#version 460
+// The spot light's depth map: positions are already in world space.
+layout(location = 0) in vec3 in_position;
+layout(push_constant) uniform Constants { mat4 light; } constants;
+
+void main() { gl_Position = constants.light * vec4(in_position, 1.0); }
