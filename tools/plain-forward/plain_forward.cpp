@@ -3,9 +3,10 @@
 // samples of Vulkan sample collections draw theirs, as the baseline of the one-light frame
 // ratios in docs/PERFORMANCE.md. Every frame draws the light's shadow map again (a spot light's
 // depth map; a point light's six cube faces, each a pass writing the distance to a color target),
-// then one forward pass over every triangle lights each fragment with ambient plus Lambert
-// diffuse and its shadow (3 x 3 PCF of nine fetches, or one cube fetch) into an sRGB image. No
-// depth prepass, culling, caching or tone mapping: the frame a plain renderer pays.
+// then one forward pass over every triangle lights each fragment with the engine's lighting model
+// (ambient, Blinn with specular, the tone curve) and its shadow (3 x 3 PCF of nine fetches, or one
+// cube fetch) into an sRGB image: the engine's picture. No depth prepass, light lists, culling or
+// caching: the frame a plain renderer pays.
 //
 //   shadowgraph-plain-forward [--scene point-room|spot-columns] [--width W] [--height H]
 //                             [--frames N] [--screenshot PNG] [--device NAME] [--validation]
@@ -56,6 +57,7 @@ constexpr VkFormat distance_format = VK_FORMAT_R32_SFLOAT;
 // shaders/plain_interface.glsl's Frame.
 struct FrameUniforms {
   glm::mat4 camera;
+  glm::vec4 camera_position;
   glm::mat4 light;
   glm::vec4 light_position_range;
   glm::vec4 light_direction;
@@ -103,6 +105,8 @@ void vertex_input(vk::GraphicsPipelineDesc& desc, bool positions_only) {
   if (positions_only) return;
   desc.vertex_attributes.push_back({1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(PlainVertex, normal)});
   desc.vertex_attributes.push_back({2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(PlainVertex, color)});
+  desc.vertex_attributes.push_back(
+      {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(PlainVertex, specular_shininess)});
 }
 
 struct Target {
@@ -278,7 +282,10 @@ class ScenePass {
                   VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}}),
         sets_(layout_.allocate_sets(1)) {
     const plain_forward::PlainLight& light = scene.light;
-    const FrameUniforms uniforms{scene.camera, shadow.light_matrix(), glm::vec4(light.position, light.range),
+    const FrameUniforms uniforms{scene.camera,
+                                 glm::vec4(scene.eye, 1.0f),
+                                 shadow.light_matrix(),
+                                 glm::vec4(light.position, light.range),
                                  glm::vec4(light.direction, light.cos_outer),
                                  glm::vec4(light.color, light.cos_inner)};
     std::memcpy(uniforms_.mapped(), &uniforms, sizeof(uniforms));

@@ -16,14 +16,16 @@ namespace sg::plain_forward {
 namespace {
 
 void add_instance(PlainScene& out, const scene::MeshLibrary& meshes, const scene::MeshInstance& instance,
-                  const glm::mat4& model, const glm::vec3& color) {
+                  const glm::mat4& model, const scene::Material& material) {
   const scene::MeshRange& mesh = meshes.meshes[instance.mesh];
   const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model)));
   const auto first = static_cast<uint32_t>(out.vertices.size());
   for (uint32_t v = 0; v < mesh.vertex_count; ++v) {
     const scene::Vertex& vertex = meshes.vertices[mesh.vertex_offset + v];
     out.vertices.push_back({glm::vec3(model * glm::vec4(vertex.position, 1.0f)),
-                            glm::normalize(normal_matrix * vertex.normal), color});
+                            glm::normalize(normal_matrix * vertex.normal),
+                            glm::vec3(material.base_color),
+                            {material.specular, material.shininess}});
   }
   for (uint32_t i = 0; i < mesh.index_count; ++i)
     out.indices.push_back(first + meshes.indices[mesh.first_index + i]);
@@ -36,7 +38,7 @@ PlainScene flatten(const scene::Scene& scene, float aspect) {
   scene.world.query<const scene::MeshInstance, const ecs::WorldTransform, const scene::Material>().for_each(
       [&](const scene::MeshInstance& instance, const ecs::WorldTransform& world,
           const scene::Material& material) {
-        add_instance(out, scene.meshes, instance, world.matrix, glm::vec3(material.base_color));
+        add_instance(out, scene.meshes, instance, world.matrix, material);
       });
   uint32_t lights = 0;
   scene.world.query<const scene::SpotLight, const ecs::WorldTransform, const scene::ShadowSettings>()
@@ -74,7 +76,9 @@ PlainScene flatten(const scene::Scene& scene, float aspect) {
   if (!camera) throw std::runtime_error("the scene has no camera");
   const auto* lens = scene.world.try_get<scene::Camera>(*camera);
   const auto* placement = scene.world.try_get<ecs::WorldTransform>(*camera);
-  out.camera = projection_matrix(*lens, aspect) * view_matrix(scene::camera_pose(*placement));
+  const scene::CameraPose pose = scene::camera_pose(*placement);
+  out.camera = projection_matrix(*lens, aspect) * view_matrix(pose);
+  out.eye = pose.eye;
   return out;
 }
 

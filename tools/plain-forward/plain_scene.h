@@ -16,6 +16,7 @@ struct PlainVertex {
   glm::vec3 position;  // world space
   glm::vec3 normal;
   glm::vec3 color;  // the material's base color
+  glm::vec2 specular_shininess;
 };
 
 enum class LightKind { spot, point };
@@ -36,6 +37,7 @@ struct PlainScene {
   std::vector<uint32_t> indices;
   PlainLight light;
   glm::mat4 camera{1.0f};  // world -> clip space at the given aspect
+  glm::vec3 eye{0.0f};
 };
 
 // Throws std::runtime_error unless the scene has exactly one light, a spot or a point light

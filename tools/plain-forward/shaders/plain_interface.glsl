@@ -5,6 +5,7 @@
 
 layout(set = 0, binding = 1) uniform Frame {
   mat4 camera;                // world -> the camera's clip space
+  vec4 camera_position;
   mat4 light;                 // world -> the spot light's map (clip space); a point light's: unused
   vec4 light_position_range;  // xyz, range
   vec4 light_direction;       // xyz: the direction a spot light shines; w: cos(outer cone)

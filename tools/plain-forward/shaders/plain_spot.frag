@@ -2,13 +2,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // The spot light with 3 x 3 PCF: nine depth fetches around the point's map texel, each compared.
-#include "plain_lambert.glsl"
+#include "plain_shading.glsl"
 
 layout(set = 0, binding = 0) uniform sampler2D shadow_map;
 
-layout(location = 0) in vec3 in_position;
-layout(location = 1) in vec3 in_normal;
-layout(location = 2) in vec3 in_color;
 layout(location = 0) out vec4 out_color;
 
 const float BIAS = 0.0005;
@@ -25,6 +22,6 @@ void main() {
     }
   }
   vec3 to_light = normalize(frame.light_position_range.xyz - in_position);
-  float cone = smoothstep(frame.light_direction.w, frame.light_color.w, dot(-to_light, frame.light_direction.xyz));
-  out_color = vec4(lambert(in_position, in_normal, in_color, cone, lit / 9.0), 1.0);
+  float cone = spot_cone(dot(-to_light, frame.light_direction.xyz), frame.light_color.w, frame.light_direction.w);
+  out_color = shaded(cone, 1.0 - lit / 9.0);
 }
