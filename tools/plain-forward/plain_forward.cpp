@@ -142,30 +142,25 @@ void begin_pass(VkCommandBuffer cmd, const Target& target) {
   vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
 }
 
-// Each frame's images leave their last use: a full barrier into `new_layout`, contents dropped.
-void start_writes(VkCommandBuffer cmd, const vk::Image& image, VkImageLayout new_layout) {
-  vk::ImageTransition t;
-  t.image = image.handle();
-  t.aspect = image.aspect();
-  t.new_layout = new_layout;
-  t.src_stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  t.dst_stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-  t.dst_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
-  vk::transition(cmd, t);
-}
-
-void written_to(VkCommandBuffer cmd, const vk::Image& image, VkImageLayout from, VkImageLayout to,
+// A barrier after everything recorded before, which may have written `image`: its layout from
+// `from` (undefined: its contents dropped, as each frame's writes start) to `to`.
+void transition(VkCommandBuffer cmd, const vk::Image& image, VkImageLayout from, VkImageLayout to,
                 VkPipelineStageFlags2 dst_stages, VkAccessFlags2 dst_access) {
   vk::ImageTransition t;
   t.image = image.handle();
   t.aspect = image.aspect();
   t.old_layout = from;
   t.new_layout = to;
-  t.src_stages = VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT;
+  t.src_stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
   t.src_access = VK_ACCESS_2_MEMORY_WRITE_BIT;
   t.dst_stages = dst_stages;
   t.dst_access = dst_access;
   vk::transition(cmd, t);
+}
+
+void start_writes(VkCommandBuffer cmd, const vk::Image& image, VkImageLayout layout) {
+  transition(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, layout, VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT,
+             VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
 }
 
 // The light's shadow map, drawn again every frame, and what the scene pass samples of it.
@@ -237,7 +232,7 @@ class ShadowPass {
       layout_.push(cmd, light_matrix_);
       draw(cmd, geometry);
       vkCmdEndRendering(cmd);
-      written_to(cmd, map_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
+      transition(cmd, map_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
                  VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
       return;
     }
@@ -249,7 +244,7 @@ class ShadowPass {
       draw(cmd, geometry);
       vkCmdEndRendering(cmd);
     }
-    written_to(cmd, map_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
+    transition(cmd, map_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
   }
 
@@ -317,7 +312,7 @@ class ScenePass {
     layout_.bind(cmd, sets_.sets[0]);
     draw(cmd, geometry);
     vkCmdEndRendering(cmd);
-    written_to(cmd, frame_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+    transition(cmd, frame_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
   }
 
