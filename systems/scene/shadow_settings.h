@@ -103,6 +103,8 @@ struct ShadowSettings {
   // settings glTF's lights lack, read, written and edited with them.
   LayerMask light_mask = all_layers;
   bool casts_shadow = true;
+
+  friend bool operator==(const ShadowSettings&, const ShadowSettings&) = default;
 };
 
 }  // namespace sg::scene

@@ -29,6 +29,8 @@ struct ShadowScene {
   // Above floor_half_extent: two small boxes at (+-scene_half_extent, 0, +-scene_half_extent),
   // out of the camera's sight, widen the scene's bounds (and a directional light's fitted map).
   float scene_half_extent = 0.0f;
+
+  friend bool operator==(const ShadowScene&, const ShadowScene&) = default;
 };
 
 // Where the reference puts `s`'s light: a directional light's far along its rays.
