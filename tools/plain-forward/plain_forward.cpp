@@ -11,7 +11,10 @@
 //   shadowgraph-plain-forward [--scene point-room|spot-columns] [--width W] [--height H]
 //                             [--frames N] [--screenshot PNG] [--device NAME] [--validation]
 //
-// Prints the median wall and GPU milliseconds of the frames after the first.
+// Prints the median wall and GPU milliseconds of the frames after the first. Each frame is
+// submitted and waited for: on lavapipe, where the recording is a sliver of the frame, its wall
+// time is the GPU's; on a GPU it adds the round trip (the H200, point-room at 1920x1080:
+// 3.15 ms wall against 2.46 GPU, 2026-12-04).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
