@@ -15,11 +15,11 @@
 // submitted and waited for: on lavapipe, where the recording is a sliver of the frame, its wall
 // time is the GPU's; on a GPU it adds the round trip (the H200, point-room at 1920x1080:
 // 3.15 ms wall against 2.46 GPU, 2026-12-04).
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -42,6 +42,7 @@
 #include "rendergraph/device/upload.h"
 #include "rendergraph/vulkan/pass_timer.h"
 #include "systems/frame/png.h"
+#include "systems/frame/time_summary.h"
 #include "systems/scene/builtin_scenes.h"
 #include "systems/shadows/light_views.h"
 
@@ -67,9 +68,10 @@ struct FrameUniforms {
   glm::vec4 light_color;
 };
 
-struct CubeFaceConstants {
-  glm::mat4 face;
-  glm::vec4 light_position_range;
+// The shadow passes' push constants (shaders/plain_depth.vert, plain_distance.vert).
+struct ViewConstants {
+  glm::mat4 view_projection;
+  glm::vec4 light_position_range;  // xyz, range: a cube face's distances are to it
 };
 
 struct Geometry {
@@ -166,57 +168,71 @@ void start_writes(VkCommandBuffer cmd, const vk::Image& image, VkImageLayout lay
              VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
 }
 
-// The light's shadow map, drawn again every frame, and what the scene pass samples of it.
+// One pass into the shadow map: what it draws into, and from where.
+struct ShadowView {
+  VkImageView color = VK_NULL_HANDLE;  // a cube face of distances; none for a depth map
+  VkImageView depth = VK_NULL_HANDLE;
+  ViewConstants constants;
+};
+
+// The light's shadow map, drawn again every frame, and what the scene pass samples of it: a spot
+// light's depth map in one view, or a point light's cube of distances in six, each face with a
+// depth layer of its own.
 class ShadowPass {
  public:
-  ShadowPass(vk::VulkanContext& context, const PlainScene& scene) : light_(scene.light) {
-    const uint32_t size = light_.resolution;
-    if (light_.kind == LightKind::spot) {
-      map_ = vk::Image(context, {{size, size},
+  ShadowPass(vk::VulkanContext& context, const plain_forward::PlainLight& light)
+      : size_(light.resolution),
+        layout_(
+            context.device(), {},
+            vk::push_constants<ViewConstants>(VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT)) {
+    const glm::vec4 position_range(light.position, light.range);
+    vk::GraphicsPipelineDesc desc;
+    vertex_input(desc, true);
+    desc.depth_format = shadow_depth_format;
+    desc.layout = layout_.get();
+    if (light.kind == LightKind::spot) {
+      map_ = vk::Image(context, {{size_, size_},
                                  shadow_depth_format,
                                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                  1,
                                  1,
                                  VK_IMAGE_VIEW_TYPE_2D,
                                  "plain shadow map"});
-      light_matrix_ = shadows::spot_light_view(light_.position, light_.direction, std::acos(light_.cos_outer),
-                                               light_.range)
-                          .view_projection();
-      layout_ =
-          vk::PipelineLayout(context.device(), {}, vk::push_constants<glm::mat4>(VK_SHADER_STAGE_VERTEX_BIT));
-      vk::GraphicsPipelineDesc desc{.vertex_spirv = plain_depth_vert};
-      vertex_input(desc, true);
-      desc.depth_format = shadow_depth_format;
-      desc.layout = layout_.get();
+      map_written_ = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+      light_matrix_ =
+          shadows::spot_light_view(light.position, light.direction, std::acos(light.cos_outer), light.range)
+              .view_projection();
+      views_ = {{VK_NULL_HANDLE, map_.view(), {light_matrix_, position_range}}};
+      desc.vertex_spirv = plain_depth_vert;
       desc.name = "plain shadow map";
-      pipeline_ = vk::create_graphics_pipeline(context, desc);
-      return;
+    } else {
+      map_ = vk::Image(context, {{size_, size_},
+                                 distance_format,
+                                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                 1,
+                                 6,
+                                 VK_IMAGE_VIEW_TYPE_CUBE,
+                                 "plain shadow cube"});
+      map_written_ = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+      face_depths_ = vk::Image(context, {{size_, size_},
+                                         shadow_depth_format,
+                                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                         1,
+                                         6,
+                                         VK_IMAGE_VIEW_TYPE_2D_ARRAY,
+                                         "plain cube face depths"});
+      const shadows::CubeViews faces = shadows::point_light_cube(light.position, light.range);
+      for (uint32_t face = 0; face < 6; ++face) {
+        views_.push_back({map_.views().get({.base_layer = face}),
+                          face_depths_.views().get({.base_layer = face}),
+                          {faces.view_projection[face], position_range}});
+      }
+      desc.vertex_spirv = plain_distance_vert;
+      desc.fragment_spirv = plain_distance_frag;
+      desc.color_formats = {distance_format};
+      desc.front_face = VK_FRONT_FACE_CLOCKWISE;  // the cube's faces are mirrored (shadows::CubeViews)
+      desc.name = "plain shadow cube face";
     }
-    map_ = vk::Image(context, {{size, size},
-                               distance_format,
-                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                               1,
-                               6,
-                               VK_IMAGE_VIEW_TYPE_CUBE,
-                               "plain shadow cube"});
-    face_depth_ = vk::Image(context, {{size, size},
-                                      shadow_depth_format,
-                                      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                                      1,
-                                      1,
-                                      VK_IMAGE_VIEW_TYPE_2D,
-                                      "plain cube face depth"});
-    faces_ = shadows::point_light_cube(light_.position, light_.range);
-    layout_ = vk::PipelineLayout(
-        context.device(), {},
-        vk::push_constants<CubeFaceConstants>(VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT));
-    vk::GraphicsPipelineDesc desc{.vertex_spirv = plain_distance_vert, .fragment_spirv = plain_distance_frag};
-    vertex_input(desc, true);
-    desc.color_formats = {distance_format};
-    desc.depth_format = shadow_depth_format;
-    desc.front_face = VK_FRONT_FACE_CLOCKWISE;  // the cube's faces are mirrored (shadows::CubeViews)
-    desc.layout = layout_.get();
-    desc.name = "plain shadow cube face";
     pipeline_ = vk::create_graphics_pipeline(context, desc);
   }
 
@@ -225,37 +241,27 @@ class ShadowPass {
 
   // Leaves the map in READ_ONLY_OPTIMAL for the scene pass's fragment shader.
   void record(VkCommandBuffer cmd, const Geometry& geometry) const {
-    const VkExtent2D extent{light_.resolution, light_.resolution};
+    start_writes(cmd, map_, map_written_);
+    if (face_depths_.handle() != VK_NULL_HANDLE) {
+      start_writes(cmd, face_depths_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+    }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
-    start_writes(cmd, map_,
-                 light_.kind == LightKind::spot ? VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL
-                                                : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-    if (light_.kind == LightKind::spot) {
-      begin_pass(cmd, {VK_NULL_HANDLE, map_.view(), extent});
-      layout_.push(cmd, light_matrix_);
-      draw(cmd, geometry);
-      vkCmdEndRendering(cmd);
-      transition(cmd, map_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
-                 VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-      return;
-    }
-    for (uint32_t face = 0; face < 6; ++face) {
-      start_writes(cmd, face_depth_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-      begin_pass(cmd, {map_.views().get({.base_layer = face}), face_depth_.view(), extent});
-      layout_.push(cmd,
-                   CubeFaceConstants{faces_.view_projection[face], glm::vec4(light_.position, light_.range)});
+    for (const ShadowView& view : views_) {
+      begin_pass(cmd, {view.color, view.depth, {size_, size_}});
+      layout_.push(cmd, view.constants);
       draw(cmd, geometry);
       vkCmdEndRendering(cmd);
     }
-    transition(cmd, map_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
+    transition(cmd, map_, map_written_, VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL,
                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
   }
 
  private:
-  plain_forward::PlainLight light_;
+  uint32_t size_;
   vk::Image map_;
-  vk::Image face_depth_;  // point lights: each face's depth test
-  shadows::CubeViews faces_;
+  VkImageLayout map_written_ = VK_IMAGE_LAYOUT_UNDEFINED;  // its layout while the views draw
+  vk::Image face_depths_;                                  // point lights': a layer a face
+  std::vector<ShadowView> views_;
   glm::mat4 light_matrix_{1.0f};
   vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;
@@ -330,11 +336,6 @@ class ScenePass {
   vk::UniquePipeline pipeline_;
 };
 
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values.empty() ? 0.0 : values[values.size() / 2];
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -371,7 +372,7 @@ int main(int argc, char** argv) {
     const PlainScene scene =
         plain_forward::flatten(scene::build_scene(scene_name), float(width) / float(height));
     const Geometry geometry = upload_geometry(context, scene);
-    const ShadowPass shadow(context, scene);
+    const ShadowPass shadow(context, scene.light);
     const ScenePass forward(context, scene, shadow, {width, height});
     vk::PassTimer timer(context, 1);
     std::vector<double> wall_ms;
@@ -393,12 +394,15 @@ int main(int argc, char** argv) {
       const std::chrono::duration<double, std::milli> wall = std::chrono::steady_clock::now() - start;
       if (frame == 0) continue;  // pays for first use
       wall_ms.push_back(wall.count());
-      if (!timer.collect(0, pass_ms)) continue;
+      if (!timer.collect(0, pass_ms)) {
+        throw std::runtime_error("the device's queue has no timestamps, so nothing can be measured");
+      }
       shadow_ms.push_back(pass_ms[0]);
       forward_ms.push_back(pass_ms[1]);
       gpu_ms.push_back(pass_ms[0] + pass_ms[1]);
     }
     if (!screenshot.empty()) write_png(screenshot, vk::read_rgba8(context, forward.frame()));
+    const auto median = [](const std::vector<double>& ms) { return summarize(ms)->median; };  // never empty
     std::printf(
         "plain forward, %s (%zu triangles), %ux%u, %s: wall %.2f ms, GPU %.2f ms a frame (shadow map %.2f, "
         "forward pass %.2f; medians of %u)\n",

@@ -3,7 +3,7 @@
 layout(location = 0) in vec3 in_from_light;
 layout(location = 0) out float out_distance;  // distance / range
 layout(push_constant) uniform Constants {
-  mat4 face;
+  mat4 view_projection;
   vec4 light_position_range;
 } constants;
 
