@@ -158,13 +158,15 @@ TEST_F(LightTilesTest, TilesWhoseCoarseListFoundNoRoomTestEveryLight) {
   expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::workgroup_per_tile, 1);
 }
 
-// 300 point lights that reach everything on screen: how many (tile, light) pairs that asks of the
-// pool, and each tile's lists as one list.
+// A crowd of point lights (300 unless a test asks for more) that reach everything on screen: how
+// many (tile, light) pairs that asks of the pool, and each tile's lists as one list.
 class CrowdTest : public LightTilesTest {
  protected:
-  CrowdTest() {
+  CrowdTest() { gather_crowd(300); }
+
+  void gather_crowd(int size) {
     scene::Scene scene;
-    for (int i = 0; i < 300; ++i) {
+    for (int i = 0; i < size; ++i) {
       scene::PointLight point;
       point.range = 100.0f;
       scene::add_light(scene, point, {{0.0f, 0.0f, -10.0f - 0.01f * i}}, scene::ShadowSettings{}, "crowd");
@@ -175,6 +177,7 @@ class CrowdTest : public LightTilesTest {
     view_projection = projection_matrix(scene::Camera{}, float(width) / float(height)) *
                       view_matrix({{0, 0, 0}, {0, 0, -1}});
     depth = scene_depth(view_projection);
+    tiles_with_surfaces = 0;
     for (uint32_t tile = 0; tile < grid.count(); ++tile) {
       const uint32_t x0 = tile % grid.across * tiles::LIGHT_TILE_SIZE,
                      y0 = tile / grid.across * tiles::LIGHT_TILE_SIZE;
@@ -200,6 +203,26 @@ class CrowdTest : public LightTilesTest {
     return listed;
   }
 
+  // No limit per tile: every tile lists the whole crowd, in order, in both shapes of the culling.
+  void expect_every_tile_lists_the_crowd() {
+    const uint32_t size = uint32_t(lights.records.size());
+    ASSERT_GT(tiles_with_surfaces, 0u);
+    for (const LightCullingShape shape :
+         {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
+      const Culled culled = cull(lights, shape, depth, view_projection).front();
+      EXPECT_EQ(culled.dropped, 0u);
+      EXPECT_EQ(culled.asked, tiles_with_surfaces * size);
+      uint64_t full_tiles = 0;
+      for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
+        if (tile.empty()) continue;
+        ASSERT_EQ(tile.size(), size);
+        for (uint32_t j = 0; j < tile.size(); ++j) ASSERT_EQ(tile[j], j);
+        ++full_tiles;
+      }
+      EXPECT_EQ(full_tiles, tiles_with_surfaces);
+    }
+  }
+
   const LightTileGrid grid = LightTileGrid::of(width, height);
   shadows::FrameLights lights;
   glm::mat4 view_projection{1.0f};
@@ -207,23 +230,13 @@ class CrowdTest : public LightTilesTest {
   uint64_t tiles_with_surfaces = 0;
 };
 
-// No limit per tile: every tile lists all 300, in order, in both shapes of the culling.
-TEST_F(CrowdTest, EveryLightThatReachesATileIsListed) {
-  ASSERT_GT(tiles_with_surfaces, 0u);
-  for (const LightCullingShape shape :
-       {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
-    const Culled culled = cull(lights, shape, depth, view_projection).front();
-    EXPECT_EQ(culled.dropped, 0u);
-    EXPECT_EQ(culled.asked, tiles_with_surfaces * 300);
-    uint64_t full_tiles = 0;
-    for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
-      if (tile.empty()) continue;
-      ASSERT_EQ(tile.size(), 300u);
-      for (uint32_t j = 0; j < tile.size(); ++j) EXPECT_EQ(tile[j], j);
-      ++full_tiles;
-    }
-    EXPECT_EQ(full_tiles, tiles_with_surfaces);
-  }
+TEST_F(CrowdTest, EveryLightThatReachesATileIsListed) { expect_every_tile_lists_the_crowd(); }
+
+// More lights than the GPU shape keeps of a tile's list in shared memory (2,048): the list is
+// found again in chunks, whole and in order.
+TEST_F(CrowdTest, ListsLongerThanAWorkgroupHoldsAreListedWhole) {
+  gather_crowd(2100);
+  expect_every_tile_lists_the_crowd();
 }
 
 // A pool at the device's limit, smaller than the lists: every frame lists what fits and counts
