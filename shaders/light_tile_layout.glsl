@@ -11,6 +11,9 @@ const uint LIGHT_COARSE_SIDE = 8u;
 // The most group sets a frame shades (light_tiles_interface.glsl): tiles whose light groups are
 // one of them take one pass for all those groups.
 const uint LIGHT_GROUP_SETS = 8u;
+// A slot of a group's dispatch list that names no tile: on GPUs a group's list is in tile order,
+// a slot per tile up to the last with the group's lights (light_tile_lists.glsl).
+const uint NO_TILE = 0xFFFFFFFFu;
 // The light groups a group set holds at most (tiled_lighting.glsl: their lights come as push constants).
 const uint LIGHT_GROUPS_A_SET = 4u;
 

@@ -11,7 +11,7 @@ layout(std430, set = 0, binding = tile_lights_binding) writeonly buffer TileLigh
 // Per tile and group: x the first entry in tile_lights, y how many.
 layout(std430, set = 0, binding = tile_ranges_binding) writeonly buffer TileRanges { uvec2 tile_ranges[]; };
 // Per group, then per group set, tile_count slots: the tiles that pass shades, in no particular
-// order.
+// order (CPU drivers) or in tile order (GPUs, publish_group_range_in_tile_order).
 layout(std430, set = 0, binding = group_tiles_binding) writeonly buffer GroupTiles { uint group_tiles[]; };
 // Per group, then per group set, a VkDispatchIndirectCommand (x counts the tiles; y = z = 1), at
 // a 16-byte stride.
@@ -42,6 +42,18 @@ void list_tile(uint tile, uint list) {
 void publish_group_range(uint tile, uint group, uint first, uint count, bool listed) {
   tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(first, count);
   if (count > 0u && listed) list_tile(tile, group);
+}
+
+// Records that `tile`'s lights of `group` are the `count` entries of the pool from `first` on,
+// and gives the tile its own slot of the group's dispatch list, NO_TILE there where it has none of
+// the group's lights; the dispatch runs up to the last tile with some. The lighting passes then
+// shade tiles in screen order, which, where tiles took slots in the order their culling ended,
+// made lighting 100,000 lights 3.6 ms faster at eye height (20.5 to 16.9) and 0.7 ms from afar,
+// against 2.5 microseconds a pass for the empty slots (H200, 1920x1080, 2026-12-04).
+void publish_group_range_in_tile_order(uint tile, uint group, uint first, uint count) {
+  tile_ranges[tile * LIGHT_GROUP_COUNT + group] = uvec2(first, count);
+  group_tiles[group * frame.screen.w + tile] = count > 0u ? tile : NO_TILE;
+  if (count > 0u) atomicMax(group_commands[group].x, tile + 1u);
 }
 
 // Group set `s` of frame.sets (bit g for group g; 0: none).

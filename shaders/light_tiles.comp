@@ -185,6 +185,6 @@ void main() {
   barrier();
   if (local < LIGHT_GROUP_COUNT) {
     uint begin = min(group_first[local], group_end[local]);
-    publish_group_range(tile, local, tile_first + begin, group_end[local] - begin, true);  // no group sets
+    publish_group_range_in_tile_order(tile, local, tile_first + begin, group_end[local] - begin);
   }
 }

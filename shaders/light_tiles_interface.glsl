@@ -6,9 +6,10 @@
 // finds each group's range in that list. A tile's list is as long as its lights: each tile counts
 // them first, then takes that many entries of one pool shared by all tiles (take_entries); where
 // the pool runs out, a tile lists the lights worth most to it (light_worth_bits). Every tile with
-// lights of a group is appended to that group's tile list, whose length is the group's indirect
-// dispatch (tiled_lighting.comp). Both shapes write the same lists; on GPUs a coarse pass first
-// (light_tiles_coarse.glsl) bounds the tiles and narrows the lights each tile tests.
+// lights of a group is in that group's tile list, whose length is the group's indirect dispatch
+// (tiled_lighting.comp): appended on CPU drivers, in its own slot in tile order on GPUs. Both
+// shapes write the same light lists; on GPUs a coarse pass first (light_tiles_coarse.glsl)
+// bounds the tiles and narrows the lights each tile tests.
 //
 // Group sets (CPU drivers' shape only): a tile is listed for the pass of the largest of
 // frame.sets among its groups with lights (tiled_lighting.comp shades all the set's groups), and

@@ -3,9 +3,10 @@
 #extension GL_GOOGLE_include_directive : require
 // variant storage_records LIGHT_RECORDS_IN_STORAGE
 // Tiled deferred lighting of one light group in compute (tiled_lighting.glsl): one workgroup per
-// tile that has lights of the group (light_tiles.comp's list; an indirect dispatch), each
-// invocation one pixel, adding the group's lights to the lit sum. With RANKED_FILTERING the lit
-// sum's alpha holds the pixel's filter floor (lighting_filter_floor.comp).
+// slot of the group's dispatch list (the culling's; an indirect dispatch), which names a tile that
+// has lights of the group or NO_TILE, each invocation one pixel, adding the group's lights to the
+// lit sum. With RANKED_FILTERING the lit sum's alpha holds the pixel's filter floor
+// (lighting_filter_floor.comp).
 #include "tiled_lighting.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
@@ -50,6 +51,7 @@ vec3 shade_tile_batched(uint tile, bool surface, SurfacePoint p, vec3 position, 
 
 void main() {
   uint tile = group_tiles[LIGHT_GROUP * frame.screen.w + gl_WorkGroupID.x];
+  if (tile == NO_TILE) return;
   uvec2 tile_xy = uvec2(tile % frame.screen.z, tile / frame.screen.z);
   ivec2 pixel = ivec2(tile_xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy);
   SurfacePoint p;
