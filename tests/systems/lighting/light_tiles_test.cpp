@@ -27,8 +27,9 @@ constexpr uint32_t width = 200;  // not a multiple of the tile size: partial til
 constexpr uint32_t height = 120;
 
 // Lights of every type and several groups scattered in front of a camera at the origin looking
-// down -Z, spots aimed at the floor, sorted by group as the renderer uploads them.
-shadows::FrameLights scattered_lights() {
+// down -Z, spots aimed at the floor, and `behind` unshadowed point lights behind the camera, which
+// reach nothing it sees; sorted by group as the renderer uploads them.
+shadows::FrameLights scattered_lights(uint32_t behind = 0) {
   scene::Scene scene;
   uint32_t seed = 12345;
   const auto random = [&seed] {
@@ -57,6 +58,12 @@ shadows::FrameLights scattered_lights() {
     }
   }
   scene::add_light(scene, scene::DirectionalLight{}, ecs::LocalTransform{}, scene::ShadowSettings{}, "sun");
+  scene::ShadowSettings unshadowed;
+  unshadowed.casts_shadow = false;
+  for (uint32_t i = 0; i < behind; ++i) {
+    const glm::vec3 position(float(i % 256) * 0.1f, float(i / 256 % 64) * 0.1f, 20.0f + float(i / 16384));
+    scene::add_light(scene, scene::PointLight{}, {position}, unshadowed, "behind");
+  }
   ecs::update_world_transforms(scene.world, 0);
   shadows::FrameLights lights;
   shadows::gather_lights(scene.world, {glm::vec3(-20.0f), glm::vec3(20.0f)}, {}, lights);
@@ -139,7 +146,7 @@ class LightTilesTest : public GpuTest {
                            const std::vector<float>& depth, const glm::mat4& view_projection,
                            uint32_t frames = 1, uint64_t most_pool_entries = 0,
                            uint64_t most_coarse_entries = 0);
-  void expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape,
+  void expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape, uint32_t behind = 0,
                                                        uint64_t most_coarse_entries = 0);
 };
 
@@ -155,7 +162,13 @@ TEST_F(LightTilesTest, ListsOfAnInvocationPerTileMatchABruteForceCpuAssignment) 
 // A coarse pool with no room for any coarse tile's list: each tile tests every light instead, and
 // lists the same.
 TEST_F(LightTilesTest, TilesWhoseCoarseListFoundNoRoomTestEveryLight) {
-  expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::workgroup_per_tile, 1);
+  expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::workgroup_per_tile, 0, 1);
+}
+
+// More lights than the coarse pass keeps a bit for in shared memory (131,072): it tests them again
+// to write its lists, and lists the same.
+TEST_F(LightTilesTest, MoreLightsThanTheCoarsePassKeepsBitsForAreListedAlike) {
+  expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::workgroup_per_tile, 131100);
 }
 
 // A crowd of point lights (300 unless a test asks for more) that reach everything on screen: how
@@ -356,9 +369,9 @@ std::vector<LightTilesTest::Culled> LightTilesTest::cull(const shadows::FrameLig
   return culled;
 }
 
-void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape,
+void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape, uint32_t behind,
                                                                      uint64_t most_coarse_entries) {
-  const shadows::FrameLights lights = scattered_lights();
+  const shadows::FrameLights lights = scattered_lights(behind);
   const glm::mat4 view_projection =
       projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
   const std::vector<float> depth = scene_depth(view_projection);
