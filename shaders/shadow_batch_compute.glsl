@@ -17,6 +17,7 @@ layout(push_constant) uniform BatchConstants {
   uint list;         // 0 or 1: the pair list this dispatch writes or reads
   uint skip_moving;  // shadow_cull.comp: not 0: moving casters are left to list 1
   uint moving_capacity;  // shadow_draws.comp: list 1's capacity
+  uint block_base;       // shadow_cull.comp: the first block record of this dispatch's casters
 } pc;
 
 layout(std430, set = 0, binding = shadow_casters_binding) readonly buffer Casters { ShadowCaster casters[]; };

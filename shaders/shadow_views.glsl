@@ -35,6 +35,11 @@ struct ShadowCaster {
                   // (MeshInstance::shadow_layers)
 };
 
+// Casters a block record bounds (systems/shadow_maps/shadow_batch_records.h): after the casters,
+// each list's casters in blocks of CASTER_BLOCK, each block a ShadowCaster holding their bounds
+// and layers (no layers: none to keep), which shadow_cull.comp tests before their casters.
+const uint CASTER_BLOCK = 64u;
+
 const uint CASTER_MOVING = 0x80000000u;
 const uint CASTER_BLENDED = 0x40000000u;
 

@@ -49,7 +49,13 @@ struct BatchConstants {
   uint32_t list = 0;
   uint32_t skip_moving = 0;
   uint32_t moving_capacity = 0;
+  uint32_t block_base = 0;
 };
+
+// shaders/shadow_views.glsl's CASTER_BLOCK: the casters of a list whose bounds one block record
+// holds, so that the cull tests a view against a block before its casters.
+constexpr uint32_t caster_block = 64;
+inline uint32_t caster_blocks(uint32_t casters) { return (casters + caster_block - 1) / caster_block; }
 
 // shaders/shadow_draws.comp's Draws: the scatter's dispatch, the compute raster's of list 0 and
 // of list 1, then the draws.
@@ -75,7 +81,10 @@ struct ShadowBatchFrame {
   uint32_t full_views = 0;
   uint32_t casters = 0;         // records of every caster, by caster group
   uint32_t moving_casters = 0;  // layered: the moving casters' records again, after them
-  uint32_t caster_groups = 0;   // records in mesh_records (shaders/shadow_views.glsl's CasterMesh)
+  // After those, a block record per CASTER_BLOCK casters of each list (every caster's, then the
+  // moving casters'): their bounds and their layers. Index of the first.
+  uint32_t first_block = 0;
+  uint32_t caster_groups = 0;  // records in mesh_records (shaders/shadow_views.glsl's CasterMesh)
   // GpuScene::first_cut_out_group: the groups from here on are drawn cut out.
   uint32_t first_cut_out_group = 0;
   bool layered = false;                       // static layers kept: moving casters drawn apart (list 1)

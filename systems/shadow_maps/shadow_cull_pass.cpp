@@ -111,6 +111,7 @@ CulledPairs ShadowCullPass::add_to(rg::RenderGraph& graph, const ShadowBatchFram
   BatchConstants constants{frame.casters, frame.caster_groups, static_cast<uint32_t>(culled.capacity[0]), 0u};
   constants.skip_moving = frame.layered ? 1 : 0;
   constants.moving_capacity = static_cast<uint32_t>(culled.capacity[1]);
+  constants.block_base = frame.first_block;
   graph.add_pass(
       "shadow cull",
       [&](rg::PassBuilder& p) {
@@ -139,11 +140,11 @@ CulledPairs ShadowCullPass::add_to(rg::RenderGraph& graph, const ShadowBatchFram
                                           .buffer(draw_counts_binding, rec.buffer(written.counts))
                                           .update();
           cull_layout_.bind_compute(rec.cmd(), set);
-          const uint32_t columns = (list.caster_count + 63) / 64;
           for (uint32_t base = 0; base < view_count; base += max_views_per_dispatch_) {
             list.view_base = base;
             cull_layout_.push(rec.cmd(), list);
-            vkCmdDispatch(rec.cmd(), columns, std::min(max_views_per_dispatch_, view_count - base), 1);
+            vkCmdDispatch(rec.cmd(), 1, std::min(max_views_per_dispatch_, view_count - base),
+                          1);  // a workgroup a view
           }
         };
         if (frame.full_views > 0) cull(written.pairs, constants, frame.full_views);
@@ -154,6 +155,7 @@ CulledPairs ShadowCullPass::add_to(rg::RenderGraph& graph, const ShadowBatchFram
           moving.capacity = constants.moving_capacity;
           moving.list = 1;
           moving.skip_moving = 0;
+          moving.block_base = frame.first_block + shadow_batch::caster_blocks(frame.casters);
           cull(written.moving_pairs, moving, frame.views);
         }
       });

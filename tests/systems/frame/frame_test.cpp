@@ -344,6 +344,24 @@ TEST_F(FrameTest, BatchedShadowViewsRenderTheSamePictureAsPerLightPasses) {
   EXPECT_LE(largest_difference(a, b), 1);
 }
 
+// The same in the stress hall, whose 176 casters make three of the cull's blocks (CASTER_BLOCK),
+// lights and crates moving; the compute raster keeps static layers, so views are also drawn with
+// the moving casters alone, a list with blocks of its own. The blocks a view does not meet hold
+// no caster it draws.
+TEST_F(FrameTest, BatchedShadowViewsOfManyCastersRenderTheSamePictureAsPerLightPasses) {
+  FrameSettings per_light = stress(3000, 3, 3, 0.5f);
+  per_light.renderer.shadow_views = shadows::ShadowViewPath::per_light;
+  const vk::Rgba8Image a = render(per_light, 3);
+  for (const shadows::ShadowRaster raster :
+       {shadows::ShadowRaster::hardware, shadows::ShadowRaster::compute}) {
+    FrameSettings batched = stress(3000, 3, 3, 0.5f);
+    batched.renderer.shadow_raster = raster;
+    const vk::Rgba8Image b = render(batched, 3);
+    EXPECT_EQ(std::count(passes.begin(), passes.end(), "shadow cull"), 1);
+    EXPECT_LE(largest_difference(a, b), 1);
+  }
+}
+
 // A frame whose maps were all kept from earlier frames shows what drawing them again shows.
 TEST_F(FrameTest, CachedShadowsArePixelIdenticalToShadowsDrawnFromScratch) {
   for (const shadows::ShadowViewPath views :
