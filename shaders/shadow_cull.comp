@@ -58,7 +58,7 @@ bool kept(ShadowCaster caster, ShadowView view) {
 }
 
 // Lists the pair, and counts it towards its draw (list 0).
-void keep(uint caster, uint view, ShadowCaster record) {
+void keep(uint caster, ShadowCaster caster_record, uint view, ShadowView view_record) {
   if (pc.list != 0u) {
     uint slot = atomicAdd(moving_total, 1u);
     if (slot < pc.capacity) pairs[slot] = uvec2(caster, view);
@@ -67,14 +67,14 @@ void keep(uint caster, uint view, ShadowCaster record) {
   uint slot = atomicAdd(total, 1u);
   if (slot >= pc.capacity) return;
   pairs[slot] = uvec2(caster, view);
-  atomicAdd(counts[views[view].info.y * pc.group_count + caster_group(record)], 1u);
+  atomicAdd(counts[view_record.info.y * pc.group_count + caster_group(caster_record)], 1u);
 }
 
 void main() {
   uint local = gl_LocalInvocationIndex;
   uint view = pc.view_base + gl_WorkGroupID.y;
-  ShadowView record = views[view];
-  mat4 m = record.view_projection;
+  ShadowView view_record = views[view];
+  mat4 m = view_record.view_projection;
   vec4 row0 = vec4(m[0][0], m[1][0], m[2][0], m[3][0]);
   vec4 row1 = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
   vec4 row2 = vec4(m[0][2], m[1][2], m[2][2], m[3][2]);
@@ -85,7 +85,7 @@ void main() {
     if (local == 0u) blocks_met_count = 0u;
     barrier();
     uint block = first + local;
-    if (block < block_count && record_meets_view(casters[pc.block_base + block], record)) {
+    if (block < block_count && record_meets_view(casters[pc.block_base + block], view_record)) {
       blocks_met[atomicAdd(blocks_met_count, 1u)] = block;
     }
     barrier();
@@ -95,7 +95,7 @@ void main() {
       if (k >= pc.caster_count) continue;
       uint caster = pc.caster_base + k;
       ShadowCaster caster_record = casters[caster];
-      if (kept(caster_record, record)) keep(caster, view, caster_record);
+      if (kept(caster_record, view_record)) keep(caster, caster_record, view, view_record);
     }
     barrier();
   }

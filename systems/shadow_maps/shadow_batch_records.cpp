@@ -39,9 +39,41 @@ struct CasterRecord {
 };
 static_assert(sizeof(CasterRecord) == 32 && offsetof(CasterRecord, hi) == 16);
 
+// A caster record's instance word: the instance below bit 24, its shadow layers above.
+constexpr uint32_t layers_shift = 24;
+constexpr uint32_t layers_bits = ~0u << layers_shift;
+
 uint32_t instance_word(const GpuScene& scene, uint32_t instance) {
-  return instance | uint32_t{scene.shadow_layers(instance)} << 24;
+  return instance | uint32_t{scene.shadow_layers(instance)} << layers_shift;
 }
+
+// A list's block records (shadow_batch::caster_block), gathered while its casters are written: a
+// piece of casters starting at a block's first writes whole blocks. A block holds the bounds and
+// the layers of the casters its cull may keep; with none, it has no layers.
+class BlockWriter {
+ public:
+  BlockWriter(CasterRecord* blocks, size_t casters) : blocks_(blocks), casters_(casters) {}
+
+  // After caster `k` of the list (`kept`: the cull may keep it), writes the block it ends.
+  void add(size_t k, const CasterRecord& caster, bool kept) {
+    if (kept) {
+      block_.lo = glm::min(block_.lo, caster.lo);
+      block_.hi = glm::max(block_.hi, caster.hi);
+      block_.instance |= caster.instance & layers_bits;
+    }
+    if ((k + 1) % shadow_batch::caster_block == 0 || k + 1 == casters_) {
+      blocks_[k / shadow_batch::caster_block] = block_;
+      block_ = empty;
+    }
+  }
+
+ private:
+  static constexpr CasterRecord empty{glm::vec3(std::numeric_limits<float>::max()), 0,
+                                      glm::vec3(std::numeric_limits<float>::lowest()), 0};
+  CasterRecord* blocks_;
+  size_t casters_;
+  CasterRecord block_ = empty;
+};
 
 // How a light's views are drawn this frame.
 constexpr uint8_t skipped = 0, with_every_caster = 1, with_moving_casters = 2;
@@ -190,58 +222,40 @@ void ShadowBatchRecords::write_casters(uint32_t slot, const GpuScene& scene, job
                                  groups.begin() - 1);
   };
   const uint32_t caster_count = frame_.casters;
-  frame_.first_block = caster_count + frame_.moving_casters;
-  const uint32_t blocks =
-      shadow_batch::caster_blocks(caster_count) + shadow_batch::caster_blocks(frame_.moving_casters);
-  const vk::Buffer& buffer =
-      caster_buffers_.reserve(slot, (frame_.first_block + blocks) * sizeof(CasterRecord));
+  frame_.first_block = {caster_count + frame_.moving_casters,
+                        caster_count + frame_.moving_casters + shadow_batch::caster_blocks(caster_count)};
+  const vk::Buffer& buffer = caster_buffers_.reserve(
+      slot,
+      (frame_.first_block[1] + shadow_batch::caster_blocks(frame_.moving_casters)) * sizeof(CasterRecord));
   frame_.caster_records = buffer.handle();
   auto* casters = static_cast<CasterRecord*>(buffer.mapped());
-  // Each list's blocks: the bounds and the layers of the casters its cull may keep (list 0 on
-  // layered frames leaves its moving casters to list 1); a block with none has no layers. Pieces
-  // start at multiples of the block, so each piece writes whole blocks.
+  // Pieces start at multiples of the block, so that each writes whole blocks (BlockWriter).
   static_assert(512 % shadow_batch::caster_block == 0 && 1024 % shadow_batch::caster_block == 0);
-  const uint32_t moving_first_block = frame_.first_block + shadow_batch::caster_blocks(caster_count);
-  const CasterRecord empty_block{glm::vec3(std::numeric_limits<float>::max()), 0,
-                                 glm::vec3(std::numeric_limits<float>::lowest()), 0};
-  const auto grow = [](CasterRecord& block, const CasterRecord& caster) {
-    block.lo = glm::min(block.lo, caster.lo);
-    block.hi = glm::max(block.hi, caster.hi);
-    block.instance |= caster.instance & 0xFF000000u;  // the layers
-  };
   // Pieces of 512 casters (16 KiB of records): 15,000 casters in pieces of 2,048 left half of
   // 16 threads without a piece.
   jobs::run_in_pieces(pool, caster_count, 512, [&](size_t begin, size_t end) {
     auto g = static_cast<uint32_t>(
         std::upper_bound(group_first_caster_.begin(), group_first_caster_.end(), begin) -
         group_first_caster_.begin() - 1);
-    CasterRecord block = empty_block;
+    BlockWriter blocks(casters + frame_.first_block[0], caster_count);
     for (size_t c = begin; c < end; ++c) {
       while (g + 1 < groups.size() && c >= group_first_caster_[g + 1]) ++g;
       const uint32_t i = groups[g].firstInstance + static_cast<uint32_t>(c - group_first_caster_[g]);
       const bool moving = frame_.layered && scene.moving(i);
       const CasterRecord caster{bounds[i].min, group_word(i, g, moving), bounds[i].max,
                                 instance_word(scene, i)};
-      casters[c] = caster;
-      if (!moving) grow(block, caster);
-      if ((c + 1) % shadow_batch::caster_block == 0 || c + 1 == caster_count) {
-        casters[frame_.first_block + c / shadow_batch::caster_block] = block;
-        block = empty_block;
-      }
+      casters[c] = caster;             // mapped memory, written and never read back
+      blocks.add(c, caster, !moving);  // list 0 on layered frames leaves moving casters to list 1
     }
   });
   jobs::run_in_pieces(pool, moving_casters_.size(), 1024, [&](size_t begin, size_t end) {
-    CasterRecord block = empty_block;
+    BlockWriter blocks(casters + frame_.first_block[1], moving_casters_.size());
     for (size_t k = begin; k < end; ++k) {
       const uint32_t i = moving_casters_[k];
       const CasterRecord caster{bounds[i].min, group_word(i, group_of(i), true), bounds[i].max,
                                 instance_word(scene, i)};
       casters[caster_count + k] = caster;
-      grow(block, caster);
-      if ((k + 1) % shadow_batch::caster_block == 0 || k + 1 == moving_casters_.size()) {
-        casters[moving_first_block + k / shadow_batch::caster_block] = block;
-        block = empty_block;
-      }
+      blocks.add(k, caster, true);
     }
   });
 }

@@ -12,6 +12,7 @@
 // (ShadowViewBatch::static_layers_kept) the moving ones come again after them all, for pair
 // list 1.
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <span>
@@ -82,8 +83,8 @@ struct ShadowBatchFrame {
   uint32_t casters = 0;         // records of every caster, by caster group
   uint32_t moving_casters = 0;  // layered: the moving casters' records again, after them
   // After those, a block record per CASTER_BLOCK casters of each list (every caster's, then the
-  // moving casters'): their bounds and their layers. Index of the first.
-  uint32_t first_block = 0;
+  // moving casters'): their bounds and their layers. Per list, the index of its first.
+  std::array<uint32_t, 2> first_block{};
   uint32_t caster_groups = 0;  // records in mesh_records (shaders/shadow_views.glsl's CasterMesh)
   // GpuScene::first_cut_out_group: the groups from here on are drawn cut out.
   uint32_t first_cut_out_group = 0;

@@ -111,7 +111,7 @@ CulledPairs ShadowCullPass::add_to(rg::RenderGraph& graph, const ShadowBatchFram
   BatchConstants constants{frame.casters, frame.caster_groups, static_cast<uint32_t>(culled.capacity[0]), 0u};
   constants.skip_moving = frame.layered ? 1 : 0;
   constants.moving_capacity = static_cast<uint32_t>(culled.capacity[1]);
-  constants.block_base = frame.first_block;
+  constants.block_base = frame.first_block[0];
   graph.add_pass(
       "shadow cull",
       [&](rg::PassBuilder& p) {
@@ -155,7 +155,7 @@ CulledPairs ShadowCullPass::add_to(rg::RenderGraph& graph, const ShadowBatchFram
           moving.capacity = constants.moving_capacity;
           moving.list = 1;
           moving.skip_moving = 0;
-          moving.block_base = frame.first_block + shadow_batch::caster_blocks(frame.casters);
+          moving.block_base = frame.first_block[1];
           cull(written.moving_pairs, moving, frame.views);
         }
       });
