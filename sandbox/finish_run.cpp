@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <algorithm>
 #include <cstdio>
+#include <optional>
+#include <span>
+#include <vector>
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/readback.h"
@@ -44,6 +47,30 @@ void list_shadow_maps(const shadows::FrameLights& lights, RunStats::Shadows& out
   out.maps.resize(listed);
 }
 
+// The run's figures over the frames from the first in which no shadowed light waited for its
+// first map: until then the frames draw the maps' first fill and light the waiting lights without
+// a shadow, and a median over a short run is mostly those frames.
+std::optional<RunStats::Settled> settled_stats(const Frame& frame, const RunRecord& record) {
+  const std::optional<Frame::FirstMaps>& first = frame.first_maps();
+  if (!first || first->recorded >= record.cpu_frame_ms.size()) return std::nullopt;
+  const auto from_first = [&](std::span<const double> samples) {
+    return summarize(samples.subspan(std::min(first->recorded, samples.size())));
+  };
+  RunStats::Settled settled;
+  settled.from_frame = first->recorded;
+  settled.frames = record.cpu_frame_ms.size() - first->recorded;
+  settled.cpu_frame_ms = from_first(record.cpu_frame_ms);
+  settled.wall_frame_ms = from_first(record.wall_frame_ms);
+  if (record.gpu_times) {
+    const std::vector<uint64_t>& numbers = record.gpu_times->frame_numbers();
+    const auto timed = static_cast<size_t>(
+        std::lower_bound(numbers.begin(), numbers.end(), first->frame_number) - numbers.begin());
+    settled.gpu_frame_ms = summarize(std::span(record.gpu_times->frame_ms()).subspan(timed));
+    settled.passes = record.gpu_times->pass_summaries(timed);
+  }
+  return settled;
+}
+
 }  // namespace
 
 int finish_run(const Options& options, vk::VulkanContext& context, const SceneView& scene,
@@ -82,6 +109,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
     stats.gpu_frame_ms = summarize(record.gpu_times->frame_ms());
     stats.passes = record.gpu_times->pass_summaries();
   }
+  stats.settled = settled_stats(frame, record);
   if (context.validation_enabled()) stats.validation_errors = context.validation_errors();
   const SceneRenderer& renderer = frame.renderer();
   const ShadowAtlas& atlas = renderer.shadow_atlas();
@@ -172,6 +200,20 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
       std::printf(" (%zu shadow passes %.3f)", shadow_passes, shadow_ms);
     }
     std::printf("\n");
+  }
+  if (const std::optional<RunStats::Settled>& s = stats.settled; s && s->from_frame > 0 && s->cpu_frame_ms) {
+    std::printf(
+        "shadowgraph: every shadowed light had a map from frame %llu on; over the %llu frames since, "
+        "CPU frame median %.2f ms",
+        static_cast<unsigned long long>(s->from_frame), static_cast<unsigned long long>(s->frames),
+        s->cpu_frame_ms->median);
+    if (s->gpu_frame_ms) std::printf(", GPU frame median %.3f ms", s->gpu_frame_ms->median);
+    std::printf(" (--stats: settled)\n");
+  } else if (rendered && !s) {
+    std::printf(
+        "shadowgraph: %u lights waited for their first shadow map in every frame, the last included: every "
+        "figure here is of the maps' first fill (run more frames, or raise --shadow-updates)\n",
+        stats.shadows.lights_waiting);
   }
   if (stats.shadows.views_rendered) {
     const RunStats::Shadows& s = stats.shadows;

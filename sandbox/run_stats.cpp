@@ -54,12 +54,25 @@ Json shadow_budget_json(const RunStats::ShadowBudget& budget) {
       {"view_cap", budget.view_cap ? Json(*budget.view_cap) : Json()}};
 }
 
+Json passes_json(const std::vector<PassTime>& passes) {
+  Json json = Json::array();
+  for (const PassTime& pass : passes)
+    json.push_back({{"name", pass.name}, {"gpu_ms", summary_json(pass.gpu_ms)}});
+  return json;
+}
+
+Json settled_json(const std::optional<RunStats::Settled>& settled) {
+  if (!settled) return Json();
+  return {{"from_frame", settled->from_frame},
+          {"frames", settled->frames},
+          {"cpu_frame_ms", summary_json(settled->cpu_frame_ms)},
+          {"wall_frame_ms", summary_json(settled->wall_frame_ms)},
+          {"gpu_frame_ms", summary_json(settled->gpu_frame_ms)},
+          {"passes", passes_json(settled->passes)}};
+}
+
 Json stats_json(const RunStats& stats) {
   const scene::SceneStats& scene = stats.scene;
-  Json passes = Json::array();
-  for (const PassTime& pass : stats.passes) {
-    passes.push_back({{"name", pass.name}, {"gpu_ms", summary_json(pass.gpu_ms)}});
-  }
   const RunStats::Shadows& shadows = stats.shadows;
   Json maps = Json::array();
   for (const RunStats::Shadows::Map& map : shadows.maps) {
@@ -108,7 +121,8 @@ Json stats_json(const RunStats& stats) {
           {"wall_frame_ms", summary_json(stats.wall_frame_ms)},
           {"lighting", stats.lighting},
           {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},
-          {"passes", passes},
+          {"passes", passes_json(stats.passes)},
+          {"settled", settled_json(stats.settled)},
           {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},
           {"shadow_map_bytes", stats.shadow_map_bytes},
           {"dropped_light_pairs", stats.dropped_light_pairs},

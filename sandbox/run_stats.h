@@ -30,6 +30,12 @@
 //   "lighting": "deferred",                      // the lighting path used: forward, deferred
 //   "gpu_frame_ms": {"median": ..., "min": ..., "max": ...},  // null without GPU timestamps
 //   "passes": [{"name": "lighting", "gpu_ms": {"median": ..., "min": ..., "max": ...}}],
+//   "settled": {"from_frame": 85, "frames": 315,   // the frames from the first in which no
+//               "cpu_frame_ms": {...},           // shadowed light waited for its first map to
+//               "wall_frame_ms": {...},          // the last, and their times as above: what a
+//               "gpu_frame_ms": {...},           // longer run settles at, without the maps'
+//               "passes": [...]},                // first fill; null when lights waited in
+//                                                // every frame
 //   "validation_errors": 0,                      // null when the validation layer was off
 //   "shadow_map_bytes": 0,                       // GPU memory holding shadow maps (the atlas image)
 //   "dropped_light_pairs": 0,                    // (tile, light) pairs the light lists' pool had
@@ -135,6 +141,15 @@ struct RunStats {
   std::string lighting;
   std::optional<TimeSummary> gpu_frame_ms;  // unset when the device has no timestamps
   std::vector<PassTime> passes;             // in execution order
+  // The same figures over the frames from the first in which no shadowed light waited for its
+  // first map (Frame::first_maps) to the last; unset when some still waited in every frame.
+  struct Settled {
+    std::uint64_t from_frame = 0;  // counted from 0, the run's first frame
+    std::uint64_t frames = 0;
+    std::optional<TimeSummary> cpu_frame_ms, wall_frame_ms, gpu_frame_ms;
+    std::vector<PassTime> passes;
+  };
+  std::optional<Settled> settled;
   // Unset when the validation layer was off: 0 would claim a check that never ran.
   std::optional<std::uint32_t> validation_errors;
   std::uint64_t shadow_map_bytes = 0;

@@ -10,6 +10,7 @@ void GpuTimeLog::add(const std::optional<vk::FrameTimings>& timings) {
   if (!timings || (last_frame_ && *last_frame_ == timings->frame_number)) return;
   last_frame_ = timings->frame_number;
   frame_ms_.push_back(std::accumulate(timings->pass_ms.begin(), timings->pass_ms.end(), 0.0));
+  frame_numbers_.push_back(timings->frame_number);
 
   const size_t frame = frame_ms_.size();
   for (size_t p = 0; p < timings->pass_ms.size(); ++p) {
@@ -23,11 +24,12 @@ void GpuTimeLog::add(const std::optional<vk::FrameTimings>& timings) {
   }
 }
 
-std::vector<PassTime> GpuTimeLog::pass_summaries() const {
+std::vector<PassTime> GpuTimeLog::pass_summaries(size_t first) const {
   std::vector<PassTime> summaries;
   for (const PassSamples& pass : passes_) {
     std::vector<double> samples = pass.ms;
     samples.resize(frame_ms_.size(), 0.0);
+    samples.erase(samples.begin(), samples.begin() + std::ptrdiff_t(std::min(first, samples.size())));
     if (const auto summary = summarize(samples)) summaries.push_back({pass.name, *summary});
   }
   return summaries;

@@ -18,9 +18,11 @@ class GpuTimeLog {
 
   // Sum of a frame's passes, per logged frame.
   const std::vector<double>& frame_ms() const { return frame_ms_; }
+  // Per logged frame, its frame number (vk::FrameTimings::frame_number).
+  const std::vector<uint64_t>& frame_numbers() const { return frame_numbers_; }
   // One entry per pass name, in the order passes first appeared; passes that share a name (one
-  // per light) are summed per frame.
-  std::vector<PassTime> pass_summaries() const;
+  // per light) are summed per frame. Over the logged frames from `first` on.
+  std::vector<PassTime> pass_summaries(size_t first = 0) const;
 
  private:
   struct PassSamples {
@@ -29,6 +31,7 @@ class GpuTimeLog {
   };
   std::optional<uint64_t> last_frame_;
   std::vector<double> frame_ms_;
+  std::vector<uint64_t> frame_numbers_;
   std::vector<PassSamples> passes_;
 };
 

@@ -83,6 +83,12 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.lighting = "deferred";
   stats.gpu_frame_ms = TimeSummary{0.5, 0.25, 0.875};
   stats.passes = {{"shadow_atlas", {0.125, 0.0625, 0.25}}, {"lighting", {0.375, 0.25, 0.5}}};
+  stats.settled = RunStats::Settled{5,
+                                    7,
+                                    TimeSummary{1.25, 1.125, 2.5},
+                                    TimeSummary{16.25, 16.125, 17.0},
+                                    TimeSummary{0.375, 0.25, 0.5},
+                                    {{"lighting", {0.25, 0.125, 0.375}}}};
   stats.validation_errors = 4;
   stats.shadow_map_bytes = 67'108'864;
   stats.dropped_light_pairs = 12;
@@ -132,7 +138,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 21u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 22u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("schema_version"), stats_schema_version);
   EXPECT_EQ(json.at("generator"), "Shadowgraph " SHADOWGRAPH_VERSION);
   EXPECT_EQ(json.at("device"), stats.device);
@@ -166,6 +172,16 @@ TEST(StatsJson, EveryFieldRoundTrips) {
     EXPECT_EQ(passes[i].at("name"), stats.passes[i].name);
     expect_summary(passes[i].at("gpu_ms"), stats.passes[i].gpu_ms);
   }
+  const nlohmann::json& settled = json.at("settled");
+  EXPECT_EQ(settled.size(), 6u) << settled.dump(2);
+  EXPECT_EQ(settled.at("from_frame"), 5);
+  EXPECT_EQ(settled.at("frames"), 7);
+  expect_summary(settled.at("cpu_frame_ms"), *stats.settled->cpu_frame_ms);
+  expect_summary(settled.at("wall_frame_ms"), *stats.settled->wall_frame_ms);
+  expect_summary(settled.at("gpu_frame_ms"), *stats.settled->gpu_frame_ms);
+  ASSERT_EQ(settled.at("passes").size(), 1u);
+  EXPECT_EQ(settled.at("passes")[0].at("name"), "lighting");
+  expect_summary(settled.at("passes")[0].at("gpu_ms"), stats.settled->passes[0].gpu_ms);
   EXPECT_EQ(json.at("validation_errors"), 4);
   EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
   EXPECT_EQ(json.at("dropped_light_pairs"), 12);
@@ -244,6 +260,7 @@ TEST(StatsJson, MissingMeasurementsAreNull) {
   EXPECT_TRUE(json.at("cpu_frame_ms").is_null());
   EXPECT_TRUE(json.at("wall_frame_ms").is_null());
   EXPECT_TRUE(json.at("gpu_frame_ms").is_null());
+  EXPECT_TRUE(json.at("settled").is_null()) << "no frame in which every light had its map";
   EXPECT_TRUE(json.at("validation_errors").is_null());
   EXPECT_TRUE(json.at("passes").is_array());
   EXPECT_TRUE(json.at("passes").empty());
