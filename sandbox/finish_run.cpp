@@ -49,22 +49,23 @@ void list_shadow_maps(const shadows::FrameLights& lights, RunStats::Shadows& out
 
 // The run's figures over the frames from the first in which no shadowed light waited for its
 // first map: until then the frames draw the maps' first fill and light the waiting lights without
-// a shadow, and a median over a short run is mostly those frames.
+// a shadow, and a median over a short run is mostly those frames. The run's frames are numbered
+// as its frame ring numbers them, one per recorded frame, across scenes opened on the way.
 std::optional<RunStats::Settled> settled_stats(const Frame& frame, const RunRecord& record) {
-  const std::optional<Frame::FirstMaps>& first = frame.first_maps();
-  if (!first || first->recorded >= record.cpu_frame_ms.size()) return std::nullopt;
+  const std::optional<uint64_t> first = frame.first_maps();
+  if (!first || *first >= record.cpu_frame_ms.size()) return std::nullopt;
   const auto from_first = [&](std::span<const double> samples) {
-    return summarize(samples.subspan(std::min(first->recorded, samples.size())));
+    return summarize(samples.subspan(std::min(size_t(*first), samples.size())));
   };
   RunStats::Settled settled;
-  settled.from_frame = first->recorded;
-  settled.frames = record.cpu_frame_ms.size() - first->recorded;
+  settled.from_frame = *first;
+  settled.frames = record.cpu_frame_ms.size() - *first;
   settled.cpu_frame_ms = from_first(record.cpu_frame_ms);
   settled.wall_frame_ms = from_first(record.wall_frame_ms);
   if (record.gpu_times) {
     const std::vector<uint64_t>& numbers = record.gpu_times->frame_numbers();
-    const auto timed = static_cast<size_t>(
-        std::lower_bound(numbers.begin(), numbers.end(), first->frame_number) - numbers.begin());
+    const auto timed =
+        static_cast<size_t>(std::lower_bound(numbers.begin(), numbers.end(), *first) - numbers.begin());
     settled.gpu_frame_ms = summarize(std::span(record.gpu_times->frame_ms()).subspan(timed));
     settled.passes = record.gpu_times->pass_summaries(timed);
   }

@@ -113,9 +113,7 @@ void Frame::record(const vk::FrameSlot& frame, double time_seconds,
   map_timeline_.lights_changed_tier.push_back(shadows.lights_changed_tier);
   map_timeline_.lights_retiled.push_back(shadows.lights_retiled);
   map_timeline_.atlas_repacks += shadows.atlas_repacked ? 1 : 0;
-  if (!first_maps_ && shadows.lights_waiting == 0) {
-    first_maps_ = FirstMaps{frame.frame_number, shadow_views_rendered_.size() - 1};
-  }
+  if (!first_maps_ && shadows.lights_waiting == 0) first_maps_ = frame.frame_number;
   drawn_views_[frame.frame_number % drawn_views_.size()] = {frame.frame_number, renderer_.shadow_work()};
   record_shadow_budgets(shadows);
   dropped_light_pairs_ += renderer_.dropped_light_pairs();

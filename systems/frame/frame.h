@@ -129,15 +129,12 @@ class Frame {
     uint64_t atlas_repacks = 0;
   };
   const MapTimeline& map_timeline() const { return map_timeline_; }
-  // The first recorded frame in which no shadowed light waited for its first map (every one had
-  // a map to sample, if a stale one): its frame number and its place among the recorded frames.
-  // Until then some lights were lit without a shadow, and the frames drew views a settled run
-  // does not: a run's figures from here on are what it settles at. Unset while lights wait.
-  struct FirstMaps {
-    uint64_t frame_number = 0;
-    size_t recorded = 0;  // its index in the per-frame lists above
-  };
-  const std::optional<FirstMaps>& first_maps() const { return first_maps_; }
+  // The number (vk::Frame::frame_number, counted over the frame ring's run) of the first recorded
+  // frame in which no shadowed light waited for its first map: every one had a map to sample, if
+  // a stale one. Until then some lights were lit without a shadow and the frames drew views a
+  // settled run does not, so a run's figures from there on are what it settles at. Unset while
+  // lights wait.
+  std::optional<uint64_t> first_maps() const { return first_maps_; }
   // With the GPU idle: the (tile, light) pairs the light lists of the frames recorded so far had
   // no room for (SceneRenderer::dropped_light_pairs), counted from zero again after.
   uint64_t take_dropped_light_pairs();
@@ -185,7 +182,7 @@ class Frame {
   std::vector<double> shadow_views_cached_;
   std::vector<double> shadow_views_moving_only_;
   MapTimeline map_timeline_;
-  std::optional<FirstMaps> first_maps_;
+  std::optional<uint64_t> first_maps_;
   uint64_t dropped_light_pairs_ = 0;
   ShadowBudgetRecord shadow_budget_;
   // The shadow work the last frames drew, by frame number, until their timings come back.
