@@ -154,14 +154,13 @@ int run(const Options& options) {
   };
   const double update = settled(phases.update), gather = settled(phases.gather),
                scheduled = settled(phases.schedule), sort = settled(phases.sort);
+  const std::string which =
+      first_maps ? "from frame " + std::to_string(settled_from) + ", the first with every light's map"
+                 : "(lights waited for a first map in every frame: these are the maps' first fill)";
   std::printf(
       "light-bench: medians over %zu frames %s, ms: update %.2f gather %.2f schedule %.2f sort %.2f "
       "(gather + schedule + sort %.2f)\n",
-      phases.gather.size(),
-      first_maps
-          ? ("from frame " + std::to_string(settled_from) + ", the first with every light's map").c_str()
-          : "(lights waited for a first map in every frame: these are the maps' first fill)",
-      update, gather, scheduled, sort, gather + scheduled + sort);
+      phases.gather.size(), which.c_str(), update, gather, scheduled, sort, gather + scheduled + sort);
   const shadows::ShadowScheduleStats& stats = schedule.stats();
   std::printf(
       "light-bench: last frame: %u views drawn (%u of them moving casters only), %u cached, %u lights "
