@@ -105,7 +105,8 @@ inline constexpr bool is_flag_enum<BufferUsage> = true;
 
 // What an attachment write starts from instead of the attachment's earlier contents: the
 // executor turns it into VK_ATTACHMENT_LOAD_OP_CLEAR. Color attachments use `color`, depth
-// attachments `depth`.
+// attachments `depth`. A write without one keeps the earlier contents, except a transient's first
+// write, which has none (VK_ATTACHMENT_LOAD_OP_DONT_CARE): what it does not draw is undefined.
 struct ClearValue {
   std::array<float, 4> color{0.0f, 0.0f, 0.0f, 0.0f};
   float depth = 1.0f;
