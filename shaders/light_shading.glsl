@@ -81,6 +81,18 @@ float shadow_weight(Light light, SurfacePoint p, Incidence at) {
          density * luminance(shadow_color);
 }
 
+// At least shadow_weight, without its highlight's shape: the specular lobe (at most 1) and the
+// half vector's normalization are what the weight costs beyond the incidence, and a pixel
+// ranking hundreds of lights finds most of them lighter than its heaviest few by this bound
+// alone. A part in 10^4 over, for the two sums' rounding.
+float shadow_weight_bound(Light light, SurfacePoint p, Incidence at) {
+  vec3 radiance = radiance_at(light, at);
+  float n_dot_l = dot(p.normal, at.to_light);
+  float lit = n_dot_l > 0.0 ? luminance(p.base_color * radiance) * n_dot_l + p.specular * luminance(radiance) : 0.0;
+  float density = light.shadow_color_density.a;
+  return 1.0001 * (lit + density * luminance(shadow_color_at(light, at)));
+}
+
 // Ranked filtering (shade_light_as): whether `light` runs its own kernel at a pixel whose filter
 // floor is `filter_floor`, its shadow weighing at least that (0: every light filters).
 bool runs_own_filter(Light light, SurfacePoint p, Incidence at, float filter_floor) {

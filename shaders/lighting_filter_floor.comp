@@ -64,7 +64,9 @@ void main() {
       barrier();
       for (uint j = 0u; surface && j < count; ++j) {
         Light light = batch_light(j);
-        float carried = shadow_weight(light, p, light_incidence(light, position, light_type(light, LIGHT_TYPES)));
+        Incidence at = light_incidence(light, position, light_type(light, LIGHT_TYPES));
+        if (shadow_weight_bound(light, p, at) <= heaviest[FILTERED_LIGHTS - 1u]) continue;
+        float carried = shadow_weight(light, p, at);
         if (carried <= heaviest[FILTERED_LIGHTS - 1u]) continue;
         [[unroll]] for (uint i = 0u; i < MOST_FILTERED_LIGHTS; ++i) {
           if (i < FILTERED_LIGHTS) {

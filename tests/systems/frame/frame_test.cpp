@@ -504,6 +504,51 @@ TEST_F(FrameTest, RankedFilteringChangesLittleWhereManyLightsOverlap) {
   EXPECT_GT(share_differing(every_light, ranked, 0), 0.0) << "no light was ranked out of its filter";
 }
 
+// Ranking weighs a light's highlight as well as its diffuse light: on a black glossy floor, lit
+// only through its specular term, one filtering light a pixel still changes the penumbrae of the
+// others. A filter floor that missed the specular term (the pass's cheap bound skipping lights
+// heavier than its eighth) would be zero there, and every light would filter.
+TEST_F(FrameTest, RankedFilteringWeighsHighlights) {
+  const auto render_glossy = [&](uint32_t filtered_lights) {
+    SceneView scene;
+    scene.scene.name = "glossy floor";
+    const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
+    scene::Material glossy;
+    glossy.base_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    glossy.specular = 1.0f;
+    glossy.shininess = 2.0f;
+    scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
+                        glossy);
+    scene::add_instance(scene.scene, box, {{0.0f, 1.5f, 0.0f}, glm::quat(1, 0, 0, 0), {1.5f, 0.1f, 1.5f}},
+                        glossy);
+    scene::ShadowSettings soft;
+    soft.algorithm = scene::ShadowAlgorithm::pcf;
+    soft.resolution = 64;
+    soft.pcf_radius = 3.0f;
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3 at{1.5f * float(k - 1), 4.0f, -1.0f};
+      scene::SpotLight spot;
+      spot.range = 30.0f;
+      spot.outer_cone = glm::radians(60.0f);
+      scene::add_light(scene.scene, spot, {at, scene::look_rotation(at, {0.0f, 0.0f, 0.0f}), glm::vec3(1.0f)},
+                       soft, "spot " + std::to_string(k));
+    }
+    ecs::update_world_transforms(scene.scene.world, 0);
+    // Looking at the floor against the lights, where their highlights lie.
+    scene.pose = {{0.0f, 3.0f, 5.0f}, {0.0f, 0.0f, -0.5f}};
+    FrameSettings options = lit_by(LightingPath::deferred);
+    options.renderer.filtered_lights = filtered_lights;
+    vk::FrameRing frames(context);
+    Frame frame(context, scene, options, frames.frames_in_flight());
+    frame.resize({width, height});
+    GpuTimeLog gpu_times;
+    render_headless_frames(frame, frames, 2, gpu_times);
+    return vk::read_rgba8(context, frame.image());
+  };
+  const vk::Rgba8Image every_light = render_glossy(0);
+  EXPECT_GT(share_differing(every_light, render_glossy(1), 2), 0.001) << "one filtering light a pixel";
+}
+
 // A spot light's shadow color fades out with the light at its cone's rim: a plate shadows the
 // whole cone on a white floor, and the floor's red, the shadow color, runs from full under the
 // light's axis down to the background's near the rim (ALGORITHMS.md 2.5), where a shadow color
