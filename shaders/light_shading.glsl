@@ -94,9 +94,11 @@ float shadow_weight_bound(Light light, SurfacePoint p, Incidence at) {
 }
 
 // Ranked filtering (shade_light_as): whether `light` runs its own kernel at a pixel whose filter
-// floor is `filter_floor`, its shadow weighing at least that (0: every light filters).
+// floor is `filter_floor`, its shadow weighing at least that (0: every light filters). Most lights
+// fall below the floor by the bound alone, without the weight's highlight.
 bool runs_own_filter(Light light, SurfacePoint p, Incidence at, float filter_floor) {
-  return filter_floor <= 0.0 || shadow_weight(light, p, at) >= filter_floor;
+  return filter_floor <= 0.0 ||
+         (shadow_weight_bound(light, p, at) >= filter_floor && shadow_weight(light, p, at) >= filter_floor);
 }
 
 // One light at world_pos, with its contact shadow where the including pass reads the depth

@@ -505,11 +505,12 @@ TEST_F(FrameTest, RankedFilteringChangesLittleWhereManyLightsOverlap) {
 }
 
 // Ranking weighs a light's highlight as well as its diffuse light: on a black glossy floor, lit
-// only through its specular term, one filtering light a pixel still changes the penumbrae of the
-// others. A filter floor that missed the specular term (the pass's cheap bound skipping lights
-// heavier than its eighth) would be zero there, and every light would filter.
+// only through its specular term, one filtering light a pixel changes the penumbrae of the others,
+// and that one keeps its own. Weights bounded without the specular term (the cheap bound that
+// spares most lights the exact weight) would put the floor at zero there, every light
+// filtering, or keep every light below it, none filtering.
 TEST_F(FrameTest, RankedFilteringWeighsHighlights) {
-  const auto render_glossy = [&](uint32_t filtered_lights) {
+  const auto render_glossy = [&](uint32_t filtered_lights, scene::ShadowAlgorithm algorithm) {
     SceneView scene;
     scene.scene.name = "glossy floor";
     const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
@@ -522,7 +523,7 @@ TEST_F(FrameTest, RankedFilteringWeighsHighlights) {
     scene::add_instance(scene.scene, box, {{0.0f, 1.5f, 0.0f}, glm::quat(1, 0, 0, 0), {1.5f, 0.1f, 1.5f}},
                         glossy);
     scene::ShadowSettings soft;
-    soft.algorithm = scene::ShadowAlgorithm::pcf;
+    soft.algorithm = algorithm;
     soft.resolution = 64;
     soft.pcf_radius = 3.0f;
     for (int k = 0; k < 3; ++k) {
@@ -545,8 +546,11 @@ TEST_F(FrameTest, RankedFilteringWeighsHighlights) {
     render_headless_frames(frame, frames, 2, gpu_times);
     return vk::read_rgba8(context, frame.image());
   };
-  const vk::Rgba8Image every_light = render_glossy(0);
-  EXPECT_GT(share_differing(every_light, render_glossy(1), 2), 0.001) << "one filtering light a pixel";
+  const vk::Rgba8Image one_filtering = render_glossy(1, scene::ShadowAlgorithm::pcf);
+  EXPECT_GT(share_differing(render_glossy(0, scene::ShadowAlgorithm::pcf), one_filtering, 2), 0.001)
+      << "every light filtering";
+  EXPECT_GT(share_differing(render_glossy(0, scene::ShadowAlgorithm::hard), one_filtering, 2), 0.001)
+      << "no light filtering";
 }
 
 // A spot light's shadow color fades out with the light at its cone's rim: a plate shadows the
