@@ -80,6 +80,10 @@ struct ShadowRequest {
   uint32_t quality_floor = 0;
   // Wants its cap whatever its importance (which still orders the budget's demotions).
   bool pinned = false;
+  // Where the light's request stands from plan to plan, below plan()'s `slots`, one request a slot
+  // (ShadowSchedule: its view's index among every light's views, in sight or not): a light is
+  // found there without a lookup by key when the requests before it change.
+  uint32_t slot = 0;
 };
 
 struct ShadowPlacement {
@@ -116,9 +120,10 @@ class ShadowAtlasPlanner {
   // Fills out[i] for requests[i]; out.size() must equal requests.size(). Requests need not come
   // in the same order every frame. A key requested twice in one plan() gets a shadow only once.
   // With `pool`, the per-light passes that need no shared state run on it (same result).
-  // `lowered_tiers` >= 0: the time budget's (see above); 0: none.
+  // `lowered_tiers` >= 0: the time budget's (see above); 0: none. With `slots` > 0 the requests'
+  // slots hold their lights from plan to plan; 0: each request's place is its slot.
   void plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
-            jobs::ThreadPool* pool = nullptr, float lowered_tiers = 0.0f);
+            jobs::ThreadPool* pool = nullptr, float lowered_tiers = 0.0f, size_t slots = 0);
   // What became of the last plan()'s requests' maps this frame, per request: redraws[i] is
   // map_redrawn when request i's map was drawn for a change of its light or its casters,
   // map_kept when it was kept, no_redraw_sample when it tells nothing of the rate (no tile,
@@ -171,6 +176,10 @@ class ShadowAtlasPlanner {
   Wanted wanted_resolution(const ShadowRequest& request, uint32_t previous_full,
                            std::optional<float> previous_held, float redraw_rate, float lowered_tiers) const;
   void match_lights(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool, float lowered_tiers);
+  // Request i's slot in the current plan().
+  uint32_t slot_of(std::span<const ShadowRequest> requests, size_t i) const {
+    return slots_ > 0 ? requests[i].slot : static_cast<uint32_t>(i);
+  }
   void release_lights_not_requested();
   void fit_budget(std::span<const ShadowRequest> requests, jobs::ThreadPool* pool);
   // What fit_budget does to its lights: halve them down to their quality floor, then to
@@ -243,6 +252,11 @@ class ShadowAtlasPlanner {
   // Per request of the current plan(), kept to reuse their storage.
   static constexpr uint32_t no_light = ~0u;
   std::vector<uint32_t> light_of_request_;
+  // Per slot, the light the last plan() gave its request (no_light: none), and the same for the
+  // current plan(), swapped at its end.
+  std::vector<uint32_t> light_of_slot_;
+  std::vector<uint32_t> next_light_of_slot_;
+  size_t slots_ = 0;  // the current plan()'s `slots`
   std::vector<uint32_t> resolution_;
   std::vector<uint32_t> unmatched_;  // requests not matched by their place in the last plan
   std::vector<uint32_t> retiled_;    // by rank: the requests whose light changed resolution or kind

@@ -92,7 +92,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
                              map.requested_resolution,
                              map.importance,
                              quality_floor(algorithm_of(lights.records[map.light])),
-                             pinned};
+                             pinned,
+                             static_cast<uint32_t>(v)};
         cache_lights_[v] = {
             .key = map.key, .reach = map.reach, .changed = map.changed, .views = 1, .update = map.update};
         aligned = aligned && rendered_maps_[v].key == map.key;
@@ -106,7 +107,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
                              cube.requested_resolution,
                              cube.importance,
                              quality_floor(algorithm_of(lights.records[cube.light])),
-                             pinned};
+                             pinned,
+                             static_cast<uint32_t>(v)};
         cache_lights_[v] = {.key = cube.key,
                             .reach = cube.position_far,
                             .changed = cube.changed,
@@ -135,7 +137,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   requests_.resize(request_count);
   placements_.resize(requests_.size());  // plan() writes every one: 8 MB serially for 79,000 requests
   const ShadowTimeBudget::Limits& limits = time_budget_.limits();
-  planner_.plan(requests_, placements_, pool, limits.lowered_tiers);
+  planner_.plan(requests_, placements_, pool, limits.lowered_tiers, view_count);
 
   // The cache sees every view, in the views' order (usually the last frame's, so that its states
   // need no lookup by key), those without a tile as not placed.

@@ -700,6 +700,42 @@ TEST(ShadowAtlasPlanner, OnAThreadPoolPlansAsSerially) {
   EXPECT_GT(serial.stats().demoted_by_budget + serial.stats().dropped_by_budget, 0u);  // over budget
 }
 
+// Lights found by their slots (their views' places, as ShadowSchedule gives them) plan as lights
+// found by their places among the requests, which lights leaving and entering sight shift every
+// frame here; on a pool, a light moving to another slot now and then.
+TEST(ShadowAtlasPlanner, LightsFoundByTheirSlotsPlanAsLightsFoundByKey) {
+  const AtlasConfig config{.page_size = 1024, .max_pages = 2, .min_resolution = 32};
+  ShadowAtlasPlanner by_place(config);
+  ShadowAtlasPlanner by_slot(config);
+  jobs::ThreadPool threads(3);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<float> importance(600);
+  for (float& value : importance) value = std::exp2(4.0f + 7.0f * unit(random));
+  std::vector<uint32_t> slot_of_key(importance.size());
+  std::iota(slot_of_key.begin(), slot_of_key.end(), 0u);
+  for (int frame = 0; frame < 60; ++frame) {
+    if (frame % 10 == 9) std::swap(slot_of_key[frame], slot_of_key[frame + 300]);
+    std::vector<ShadowRequest> requests;
+    for (uint64_t key = 0; key < importance.size(); ++key) {
+      if (unit(random) < 0.1f) continue;  // out of sight this frame
+      importance[key] =
+          std::clamp(importance[key] * (unit(random) < 0.05f ? 4.0f * unit(random) : 1.0f), 1.0f, 4096.0f);
+      requests.push_back(
+          {.key = key, .cube = key % 3 == 0, .importance = importance[key], .slot = slot_of_key[key]});
+    }
+    const std::vector<ShadowPlacement> expected = plan(by_place, requests);
+    std::vector<ShadowPlacement> got(requests.size());
+    by_slot.plan(requests, got, &threads, 0.0f, importance.size());
+    for (size_t i = 0; i < requests.size(); ++i) {
+      ASSERT_EQ(got[i].resolution, expected[i].resolution) << "frame " << frame << " request " << i;
+      ASSERT_EQ(got[i].tiles, expected[i].tiles) << "frame " << frame << " request " << i;
+      ASSERT_EQ(got[i].moved, expected[i].moved) << "frame " << frame << " request " << i;
+    }
+  }
+  EXPECT_GT(by_place.stats().demoted_by_budget + by_place.stats().dropped_by_budget, 0u);  // over budget
+}
+
 TEST(ShadowAtlasPlanner, ANewBudgetRepacksIntoIt) {
   AtlasConfig config{.page_size = 1024, .max_pages = 4, .min_resolution = 32};
   ShadowAtlasPlanner planner(config);
