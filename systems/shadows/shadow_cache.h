@@ -186,6 +186,8 @@ class ShadowCache {
   };
   std::vector<DirtyTally> dirty_tallies_;
   std::vector<uint32_t> lags_;             // the due lights' lags (ShadowCacheStats)
+  std::vector<uint32_t> lag_counts_;       // summarize_lags: the due lights per lag below counted_lags
+  std::vector<uint32_t> long_lags_;        // and the longer lags, sorted
   std::vector<ShadowCacheStats> tallies_;  // plan's counts, per piece of lights
   std::vector<uint8_t> piece_flags_;       // same_keys: per piece of lights, whether its keys match
   jobs::KeepScratch keep_scratch_;

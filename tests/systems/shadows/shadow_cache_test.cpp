@@ -248,6 +248,24 @@ TEST(ShadowCache, LagCountsTheFramesEachDueMapHasBeenWrong) {
   EXPECT_EQ(cache.stats().lag_p50, 0u);
 }
 
+// Lags past a thousand frames are ranked as exactly as short ones: 2,000 lights changing every
+// frame under a budget of one view render in turn, and once each has rendered the due lights lag
+// 0, 1, ..., 1999 frames (the one rendered this frame 0).
+TEST(ShadowCache, LongLagsAreRankedExactly) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights;
+  for (uint64_t key = 1; key <= 2000; ++key) lights.push_back(spot(key));
+  for (int frame = 0; frame < 2100; ++frame) {
+    for (ShadowCacheLight& light : lights) light.changed = true;
+    plan(cache, lights, 1);
+  }
+  const ShadowCacheStats& stats = cache.stats();
+  EXPECT_EQ(stats.lights_due, 2000u);
+  EXPECT_EQ(stats.lag_p50, 999u);   // rank 999 of 0..1999
+  EXPECT_EQ(stats.lag_p99, 1979u);  // rank floor(0.99 * 1999)
+  EXPECT_EQ(stats.lag_max, 1999u);
+}
+
 // Thousands of dirty lights over the view budget, their staleness spread by random changes and
 // invalidations:
 // the choice is, frame after frame, a plain model's: lights without a valid map, then the
