@@ -87,6 +87,17 @@ FrameSettings stress(uint64_t triangles, uint32_t points, uint32_t spots, float 
   return options;
 }
 
+// A 20 x 20 floor whose top is at y = 0, and a square plate 0.1 thick and `plate_side` wide
+// centred at `plate_centre`, both of `material`.
+void add_floor_and_plate(scene::Scene& scene, const scene::Material& material, glm::vec3 plate_centre,
+                         float plate_side) {
+  const uint32_t box = scene::add_box_mesh(scene.meshes);
+  scene::add_instance(scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
+                      material);
+  scene::add_instance(scene, box, {plate_centre, glm::quat(1, 0, 0, 0), {plate_side, 0.1f, plate_side}},
+                      material);
+}
+
 FrameSettings lit_by(LightingPath lighting) {
   FrameSettings options;
   options.renderer.lighting = lighting;
@@ -513,15 +524,11 @@ TEST_F(FrameTest, RankedFilteringWeighsHighlights) {
   const auto render_glossy = [&](uint32_t filtered_lights, scene::ShadowAlgorithm algorithm) {
     SceneView scene;
     scene.scene.name = "glossy floor";
-    const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
     scene::Material glossy;
     glossy.base_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     glossy.specular = 1.0f;
     glossy.shininess = 2.0f;
-    scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
-                        glossy);
-    scene::add_instance(scene.scene, box, {{0.0f, 1.5f, 0.0f}, glm::quat(1, 0, 0, 0), {1.5f, 0.1f, 1.5f}},
-                        glossy);
+    add_floor_and_plate(scene.scene, glossy, {0.0f, 1.5f, 0.0f}, 1.5f);
     scene::ShadowSettings soft;
     soft.algorithm = algorithm;
     soft.resolution = 64;
@@ -560,14 +567,10 @@ TEST_F(FrameTest, RankedFilteringWeighsHighlights) {
 TEST_F(FrameTest, ShadowColorFadesOutAtTheSpotConesRim) {
   SceneView scene;
   scene.scene.name = "tinted shadow";
-  const uint32_t box = scene::add_box_mesh(scene.scene.meshes);
   scene::Material white;
   white.base_color = glm::vec4(1.0f);
   white.specular = 0.0f;
-  scene::add_instance(scene.scene, box, {{0.0f, -0.5f, 0.0f}, glm::quat(1, 0, 0, 0), {20.0f, 1.0f, 20.0f}},
-                      white);
-  scene::add_instance(scene.scene, box, {{0.0f, 2.5f, 0.0f}, glm::quat(1, 0, 0, 0), {8.0f, 0.1f, 8.0f}},
-                      white);
+  add_floor_and_plate(scene.scene, white, {0.0f, 2.5f, 0.0f}, 8.0f);
   scene::ShadowSettings tinted;
   tinted.algorithm = scene::ShadowAlgorithm::hard;
   tinted.shadow_color = {1.0f, 0.0f, 0.0f};

@@ -10,6 +10,7 @@
 #include <map>
 #include <numeric>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "ecs/jobs/thread_pool.h"
@@ -669,6 +670,45 @@ TEST(ShadowAtlasPlanner, RandomChurnNeverOverlapsAndMovedMeansNewTiles) {
   EXPECT_GT(kept_tiles, 0u);
 }
 
+// Churn for the tests that plan one way against another: 600 lights, a tenth of them out of sight
+// each frame (every later request moves), importances jumping now and then, a third cubes.
+class Churn {
+ public:
+  explicit Churn(unsigned seed) : random_(seed), importance_(600) {
+    for (float& value : importance_) value = std::exp2(4.0f + 7.0f * unit_(random_));
+  }
+  size_t lights() const { return importance_.size(); }
+  // The next frame's requests, each light's slot from `slot_of_key` where given.
+  std::vector<ShadowRequest> next(std::span<const uint32_t> slot_of_key = {}) {
+    std::vector<ShadowRequest> requests;
+    for (uint64_t key = 0; key < importance_.size(); ++key) {
+      if (unit_(random_) < 0.1f) continue;  // out of sight this frame
+      importance_[key] = std::clamp(
+          importance_[key] * (unit_(random_) < 0.05f ? 4.0f * unit_(random_) : 1.0f), 1.0f, 4096.0f);
+      requests.push_back({.key = key,
+                          .cube = key % 3 == 0,
+                          .importance = importance_[key],
+                          .slot = slot_of_key.empty() ? 0u : slot_of_key[key]});
+    }
+    return requests;
+  }
+
+ private:
+  std::mt19937 random_;
+  std::uniform_real_distribution<float> unit_{0.0f, 1.0f};
+  std::vector<float> importance_;
+};
+
+void expect_same_placements(const std::vector<ShadowPlacement>& got,
+                            const std::vector<ShadowPlacement>& expected, int frame) {
+  ASSERT_EQ(got.size(), expected.size());
+  for (size_t i = 0; i < got.size(); ++i) {
+    ASSERT_EQ(got[i].resolution, expected[i].resolution) << "frame " << frame << " request " << i;
+    ASSERT_EQ(got[i].tiles, expected[i].tiles) << "frame " << frame << " request " << i;
+    ASSERT_EQ(got[i].moved, expected[i].moved) << "frame " << frame << " request " << i;
+  }
+}
+
 // The pool's passes (which lights keep their tiles, the placements) decide what one thread does,
 // through churn that moves, demotes and drops lights.
 TEST(ShadowAtlasPlanner, OnAThreadPoolPlansAsSerially) {
@@ -676,62 +716,33 @@ TEST(ShadowAtlasPlanner, OnAThreadPoolPlansAsSerially) {
   ShadowAtlasPlanner serial(config);
   ShadowAtlasPlanner pooled(config);
   jobs::ThreadPool threads(3);
-  std::mt19937 random(5);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  std::vector<float> importance(600);
-  for (float& value : importance) value = std::exp2(4.0f + 7.0f * unit(random));
+  Churn churn(5);
   for (int frame = 0; frame < 60; ++frame) {
-    std::vector<ShadowRequest> requests;
-    for (uint64_t key = 0; key < importance.size(); ++key) {
-      if (unit(random) < 0.1f) continue;  // out of sight this frame
-      importance[key] =
-          std::clamp(importance[key] * (unit(random) < 0.05f ? 4.0f * unit(random) : 1.0f), 1.0f, 4096.0f);
-      requests.push_back({.key = key, .cube = key % 3 == 0, .importance = importance[key]});
-    }
-    const std::vector<ShadowPlacement> expected = plan(serial, requests);
+    const std::vector<ShadowRequest> requests = churn.next();
     std::vector<ShadowPlacement> got(requests.size());
     pooled.plan(requests, got, &threads);
-    for (size_t i = 0; i < requests.size(); ++i) {
-      ASSERT_EQ(got[i].resolution, expected[i].resolution) << "frame " << frame << " request " << i;
-      ASSERT_EQ(got[i].tiles, expected[i].tiles) << "frame " << frame << " request " << i;
-      ASSERT_EQ(got[i].moved, expected[i].moved) << "frame " << frame << " request " << i;
-    }
+    ASSERT_NO_FATAL_FAILURE(expect_same_placements(got, plan(serial, requests), frame));
   }
   EXPECT_GT(serial.stats().demoted_by_budget + serial.stats().dropped_by_budget, 0u);  // over budget
 }
 
 // Lights found by their slots (their views' places, as ShadowSchedule gives them) plan as lights
 // found by their places among the requests, which lights leaving and entering sight shift every
-// frame here; on a pool, a light moving to another slot now and then.
+// frame; on a pool, a light moving to another slot now and then.
 TEST(ShadowAtlasPlanner, LightsFoundByTheirSlotsPlanAsLightsFoundByKey) {
   const AtlasConfig config{.page_size = 1024, .max_pages = 2, .min_resolution = 32};
   ShadowAtlasPlanner by_place(config);
   ShadowAtlasPlanner by_slot(config);
   jobs::ThreadPool threads(3);
-  std::mt19937 random(7);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  std::vector<float> importance(600);
-  for (float& value : importance) value = std::exp2(4.0f + 7.0f * unit(random));
-  std::vector<uint32_t> slot_of_key(importance.size());
+  Churn churn(7);
+  std::vector<uint32_t> slot_of_key(churn.lights());
   std::iota(slot_of_key.begin(), slot_of_key.end(), 0u);
   for (int frame = 0; frame < 60; ++frame) {
     if (frame % 10 == 9) std::swap(slot_of_key[frame], slot_of_key[frame + 300]);
-    std::vector<ShadowRequest> requests;
-    for (uint64_t key = 0; key < importance.size(); ++key) {
-      if (unit(random) < 0.1f) continue;  // out of sight this frame
-      importance[key] =
-          std::clamp(importance[key] * (unit(random) < 0.05f ? 4.0f * unit(random) : 1.0f), 1.0f, 4096.0f);
-      requests.push_back(
-          {.key = key, .cube = key % 3 == 0, .importance = importance[key], .slot = slot_of_key[key]});
-    }
-    const std::vector<ShadowPlacement> expected = plan(by_place, requests);
+    const std::vector<ShadowRequest> requests = churn.next(slot_of_key);
     std::vector<ShadowPlacement> got(requests.size());
-    by_slot.plan(requests, got, &threads, 0.0f, importance.size());
-    for (size_t i = 0; i < requests.size(); ++i) {
-      ASSERT_EQ(got[i].resolution, expected[i].resolution) << "frame " << frame << " request " << i;
-      ASSERT_EQ(got[i].tiles, expected[i].tiles) << "frame " << frame << " request " << i;
-      ASSERT_EQ(got[i].moved, expected[i].moved) << "frame " << frame << " request " << i;
-    }
+    by_slot.plan(requests, got, &threads, 0.0f, churn.lights());
+    ASSERT_NO_FATAL_FAILURE(expect_same_placements(got, plan(by_place, requests), frame));
   }
   EXPECT_GT(by_place.stats().demoted_by_budget + by_place.stats().dropped_by_budget, 0u);  // over budget
 }
