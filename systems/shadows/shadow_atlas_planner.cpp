@@ -141,7 +141,9 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   jobs::run_in_pieces(pool, requests.size(), lights_per_piece, [&](size_t begin, size_t end) {
     Tally& tally = tallies_[begin / lights_per_piece];
     for (size_t i = begin; i < end; ++i) {
-      next_light_of_slot_[slot_of(requests, i)] = light_of_request_[i];
+      if (const uint32_t slot = slot_of(requests, i); slot < next_light_of_slot_.size()) {
+        next_light_of_slot_[slot] = light_of_request_[i];
+      }
       ShadowPlacement& placement = out[i];
       placement = {};
       const Light* light = nullptr;
@@ -319,8 +321,7 @@ void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, j
       pool, requests.size(), lights_per_piece, keep_scratch_,
       [&](size_t i) {
         const uint32_t slot = slot_of(requests, i);
-        assert(slot < slot_count);
-        const uint32_t index = light_of_slot_[slot];
+        const uint32_t index = slot < slot_count ? light_of_slot_[slot] : no_light;
         if (index == no_light || lights_[index].key != requests[i].key ||
             lights_[index].requested_in_plan == 0) {
           return true;

@@ -82,7 +82,8 @@ struct ShadowRequest {
   bool pinned = false;
   // Where the light's request stands from plan to plan, below plan()'s `slots`, one request a slot
   // (ShadowSchedule: its view's index among every light's views, in sight or not): a light is
-  // found there without a lookup by key when the requests before it change.
+  // found there without a lookup by key when the requests before it change. A slot out of that
+  // range is looked up by key every plan.
   uint32_t slot = 0;
 };
 

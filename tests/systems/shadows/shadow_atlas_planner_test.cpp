@@ -728,11 +728,13 @@ TEST(ShadowAtlasPlanner, OnAThreadPoolPlansAsSerially) {
 
 // Lights found by their slots (their views' places, as ShadowSchedule gives them) plan as lights
 // found by their places among the requests, which lights leaving and entering sight shift every
-// frame; on a pool, a light moving to another slot now and then.
+// frame; on a pool, a light moving to another slot now and then; and with half the slots out of
+// the range given, those lights looked up by key.
 TEST(ShadowAtlasPlanner, LightsFoundByTheirSlotsPlanAsLightsFoundByKey) {
   const AtlasConfig config{.page_size = 1024, .max_pages = 2, .min_resolution = 32};
   ShadowAtlasPlanner by_place(config);
   ShadowAtlasPlanner by_slot(config);
+  ShadowAtlasPlanner by_some_slots(config);
   jobs::ThreadPool threads(3);
   Churn churn(7);
   std::vector<uint32_t> slot_of_key(churn.lights());
@@ -742,7 +744,10 @@ TEST(ShadowAtlasPlanner, LightsFoundByTheirSlotsPlanAsLightsFoundByKey) {
     const std::vector<ShadowRequest> requests = churn.next(slot_of_key);
     std::vector<ShadowPlacement> got(requests.size());
     by_slot.plan(requests, got, &threads, 0.0f, churn.lights());
-    ASSERT_NO_FATAL_FAILURE(expect_same_placements(got, plan(by_place, requests), frame));
+    const std::vector<ShadowPlacement> expected = plan(by_place, requests);
+    ASSERT_NO_FATAL_FAILURE(expect_same_placements(got, expected, frame));
+    by_some_slots.plan(requests, got, &threads, 0.0f, churn.lights() / 2);
+    ASSERT_NO_FATAL_FAILURE(expect_same_placements(got, expected, frame));
   }
   EXPECT_GT(by_place.stats().demoted_by_budget + by_place.stats().dropped_by_budget, 0u);  // over budget
 }
