@@ -528,9 +528,10 @@ ShadowAtlasPlanner::WholePasses ShadowAtlasPlanner::whole_passes(std::span<const
   });
   std::fill(maps_per_tier_.begin(), maps_per_tier_.end(), 0);
   std::fill(cubes_per_tier_.begin(), cubes_per_tier_.end(), 0);
+  // A light of tier t halves at most tiers - 1 - t times (its floor is min_resolution or more).
   for (uint32_t cube = 0; cube < 2; ++cube) {
     for (uint32_t tier = 0; tier < tiers; ++tier) {
-      for (uint32_t h = 0; h < tiers; ++h) {
+      for (uint32_t h = 0; tier + h < tiers; ++h) {
         (cube != 0 ? cubes_per_tier_ : maps_per_tier_)[tier + std::min(passes, h)] +=
             counts[(cube * tiers + tier) * tiers + h];
       }
