@@ -74,8 +74,8 @@ std::string to_dot(const RenderGraph& graph, const CompiledPlan& plan) {
       write_edge(dot, p, access, resources[access.resource]);
       // A write without a clear keeps the earlier contents outside (or under) what it draws:
       // it depends on the version it replaces, shown dashed.
-      const bool has_contents = access.version > 1 || resources[access.resource].imported;
-      if (access.direction == Direction::write && !access.clear && has_contents) {
+      if (access.direction == Direction::write && !access.clear &&
+          has_earlier_contents(access, resources[access.resource].imported)) {
         ResourceAccess consumed = access;
         consumed.version = access.version - 1;
         draw_version(consumed);

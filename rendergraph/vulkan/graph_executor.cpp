@@ -187,11 +187,10 @@ void GraphExecutor::record_pass(VkCommandBuffer cmd, const rg::CompiledPass& pas
         resource.views->get({range.base_mip, 1, range.base_layer, range.layer_count,
                              range.layer_count == 1 ? VK_IMAGE_VIEW_TYPE_2D : VK_IMAGE_VIEW_TYPE_2D_ARRAY});
     attachment.imageLayout = to_vk(access.state.layout);
-    // A transient's first write has no earlier contents to keep.
-    const bool first_write = access.version == 0 && !recorder.descriptions_[access.resource].imported;
-    attachment.loadOp = access.clear  ? VK_ATTACHMENT_LOAD_OP_CLEAR
-                        : first_write ? VK_ATTACHMENT_LOAD_OP_DONT_CARE
-                                      : VK_ATTACHMENT_LOAD_OP_LOAD;
+    const bool keeps = rg::has_earlier_contents(access, recorder.descriptions_[access.resource].imported);
+    attachment.loadOp = access.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR
+                        : keeps      ? VK_ATTACHMENT_LOAD_OP_LOAD
+                                     : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     attachment.storeOp =
         access.direction == rg::Direction::write ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_NONE;
     if (access.clear) {

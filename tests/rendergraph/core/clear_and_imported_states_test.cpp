@@ -23,6 +23,28 @@ TEST(AttachmentClear, IsRecordedOnTheWriteAccess) {
   EXPECT_EQ(access.range, (SubresourceRange{0, 1, 3, 1}));
 }
 
+// A write without a clear keeps what the resource held before: an earlier pass's version or an
+// imported resource's contents. A transient's first write holds nothing to keep (the executor
+// loads nothing there).
+TEST(AttachmentClear, OnlyATransientsFirstWriteHasNoEarlierContents) {
+  RenderGraph graph;
+  ImageHandle atlas =
+      graph.import_image("atlas", shadow_atlas_desc, sampled_in_fragment, sampled_in_fragment);
+  ImageHandle color;
+  graph.add_pass("first", QueueType::graphics, [&](PassBuilder& b) {
+    color = b.write(b.create_image("color", screen_color_desc), Usage::color_attachment);
+    atlas = b.write(atlas, Usage::depth_attachment, SubresourceRange::layer(0));
+  });
+  graph.add_pass("second", QueueType::graphics,
+                 [&](PassBuilder& b) { color = b.write(color, Usage::color_attachment); });
+  ASSERT_TRUE(graph.errors().empty());
+  const std::vector<ResourceAccess>& first = graph.passes()[0].accesses;
+  ASSERT_EQ(first.size(), 2u);
+  EXPECT_FALSE(has_earlier_contents(first[0], false)) << "the transient's first write";
+  EXPECT_TRUE(has_earlier_contents(first[1], true)) << "the imported atlas";
+  EXPECT_TRUE(has_earlier_contents(graph.passes()[1].accesses[0], false)) << "the transient's second write";
+}
+
 TEST(AttachmentClear, IsRefusedForUsagesThatAreNotAttachments) {
   RenderGraph graph;
   graph.add_pass("copy", QueueType::transfer, [&](PassBuilder& b) {
