@@ -57,22 +57,22 @@ GBuffer GBufferPass::add_to(rg::RenderGraph& graph, uint32_t width, uint32_t hei
   graph.add_pass(
       "g-buffer",
       [&](rg::PassBuilder& b) {
-        const auto target = [&](const char* name, rg::Format format) {
+        const auto screen_image = [&](const char* name, rg::Format format) {
           return b.create_image(name, {width, height, format});
         };
         // Normal and albedo are read only where the depth holds a surface (deferred_surface,
         // lighting_ambient.comp): left uncleared, the background's texels stay undefined. The
         // two clears took 0.44 ms of the H200's 1.20 ms G-buffer of `default` at 1920x1080
         // (2026-12-04, docs/PERFORMANCE.md).
-        g.normal = b.write(target("g-buffer normal", normal_format), rg::Usage::color_attachment);
-        g.albedo = b.write(target("g-buffer albedo", albedo_format), rg::Usage::color_attachment);
+        g.normal = b.write(screen_image("g-buffer normal", normal_format), rg::Usage::color_attachment);
+        g.albedo = b.write(screen_image("g-buffer albedo", albedo_format), rg::Usage::color_attachment);
         if (writes_lit_sum_) {
           g.lit_sum = b.write(
-              target("lit sum", GBuffer::lit_sum_format), rg::Usage::color_attachment,
+              screen_image("lit sum", GBuffer::lit_sum_format), rg::Usage::color_attachment,
               rg::ClearValue::color_of(background_color.r, background_color.g, background_color.b, 1.0f));
         }
-        g.depth = b.write(b.create_image("depth", {width, height, camera_depth_format}),
-                          rg::Usage::depth_attachment, camera_depth_clear);
+        g.depth = b.write(screen_image("depth", camera_depth_format), rg::Usage::depth_attachment,
+                          camera_depth_clear);
       },
       [this, &scene, slot, constants](const vk::PassRecorder& rec) {
         scene.draw_camera_pass(rec, pipelines_.get(), layout_, slot_sets_.sets[slot], constants, slot);
