@@ -115,6 +115,13 @@ void ShadowAtlasPages::update_ancestors(Tree& tree, uint32_t depth, uint32_t i, 
   }
 }
 
+uint32_t ShadowAtlasPages::pages_used() const {
+  for (auto page = uint32_t(pages_.size()); page-- > 0;) {
+    if (pages_[page][0] != code(0)) return page + 1;  // its root not entirely free
+  }
+  return 0;
+}
+
 void ShadowAtlasPages::clear() {
   // A free root makes the rest of its tree stale, to be rewritten as it splits again.
   for (Tree& tree : pages_) tree[0] = code(0);

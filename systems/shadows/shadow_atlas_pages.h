@@ -39,6 +39,8 @@ class ShadowAtlasPages {
   void free(const AtlasTile& tile);
   // Gives back every tile.
   void clear();
+  // The highest page holding a tile, plus one (0: none).
+  uint32_t pages_used() const;
 
  private:
   // A page's quadtree: per node the size code of the largest free block in its subtree (0: none,

@@ -102,30 +102,22 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   release_lights_not_requested();
   fit_budget(requests, pool);
 
-  // Lights whose resolution or kind changed need new tiles; the others keep theirs. Which did is
-  // found on the pool, where the others' tiles (six a cube) are copied (0.07 ms on one thread
-  // with 4,096 lights, an H200 host, 2026-12-01). Lights going down or out give their tiles back
-  // here; a light going up, when it is placed (grows()).
+  // Lights whose resolution or kind changed need new tiles (tiles_); the others keep theirs.
+  // Which did is found on the pool. Lights going down or out give their tiles back here; a light
+  // going up, when it is placed (grows()).
   tiles_.resize(requests.size());
   retiled_.resize(requests.size());
   const size_t retiled_count = jobs::keep_in_pieces(
       pool, requests.size(), lights_per_piece, keep_scratch_,
-      [&](size_t i) {
-        if (light_of_request_[i] == no_light) return false;
-        const Light& light = lights_[light_of_request_[i]];
-        if (resolution_[i] == light.resolution && requests[i].cube == light.cube) {
-          tiles_[i] = light.tiles;
-          return false;
-        }
-        return true;
-      },
+      [&](size_t i) { return light_of_request_[i] != no_light && !keeps_tiles(requests, i); },
       [&](size_t i, size_t rank) { retiled_[rank] = static_cast<uint32_t>(i); });
   size_t changed_count = 0;  // retiled_ keeps, in front, those that still have a shadow
   for (size_t r = 0; r < retiled_count; ++r) {
     const uint32_t i = retiled_[r];
     const Light& light = lights_[light_of_request_[i]];
     if (light.resolution > 0 && !repack_pending_ && !grows(requests, i)) {
-      for (uint32_t k = 0; k < tile_count(light.cube); ++k) pages_.free(light.tiles[k]);
+      for (uint32_t k = 0; k < tile_count(light.cube); ++k)
+        pages_.free(light_tiles_[light_of_request_[i]][k]);
     }
     if (resolution_[i] > 0) retiled_[changed_count++] = i;
   }
@@ -144,26 +136,30 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
       if (const uint32_t slot = slot_of(requests, i); slot < next_light_of_slot_.size()) {
         next_light_of_slot_[slot] = light_of_request_[i];
       }
-      ShadowPlacement& placement = out[i];
-      placement = {};
-      const Light* light = nullptr;
-      if (light_of_request_[i] != no_light) {
-        Light& own = lights_[light_of_request_[i]];
-        placement.resolution = resolution_[i];
-        if (placement.resolution > 0) placement.tiles = tiles_[i];
-        placement.moved =
-            placement.resolution > 0 && (placement.resolution != own.resolution ||
-                                         requests[i].cube != own.cube || placement.tiles != own.tiles);
-        const bool placed_last_plan = own.placed_in_plan != 0 && own.placed_in_plan + 1 == plans_;
-        if (placed_last_plan && placement.resolution != own.resolution) ++tally.changed_tier;
-        tally.retiled += placement.moved ? 1 : 0;
-        own.placed_in_plan = plans_;
-        own.resolution = placement.resolution;
-        own.cube = requests[i].cube;
-        own.tiles = placement.tiles;
-        light = &own;
+      const uint32_t index = light_of_request_[i];
+      if (index == no_light) {
+        out[i] = {};
+        count_into(tally, nullptr, 0);
+        continue;
       }
-      count_into(tally, light, resolution_[i]);
+      Light& own = lights_[index];
+      std::array<AtlasTile, 6>& own_tiles = light_tiles_[index];
+      const uint32_t resolution = resolution_[i];
+      // A light that kept its resolution and kind kept its tiles, unless the atlas was repacked;
+      // the others' are in tiles_.
+      const bool kept = !stats_.repacked && keeps_tiles(requests, i);
+      const bool moved =
+          resolution > 0 && !kept &&
+          (resolution != own.resolution || requests[i].cube != own.cube || tiles_[i] != own_tiles);
+      out[i] = {resolution, moved};
+      const bool placed_last_plan = own.placed_in_plan != 0 && own.placed_in_plan + 1 == plans_;
+      if (placed_last_plan && resolution != own.resolution) ++tally.changed_tier;
+      tally.retiled += moved ? 1 : 0;
+      own.placed_in_plan = plans_;
+      own.resolution = resolution;
+      own.cube = requests[i].cube;
+      if (!kept && resolution > 0) own_tiles = tiles_[i];
+      count_into(tally, &own, resolution);
     }
   });
   light_of_slot_.swap(next_light_of_slot_);
@@ -339,10 +335,12 @@ void ShadowAtlasPlanner::match_lights(std::span<const ShadowRequest> requests, j
       if (unused_lights_.empty()) {
         found->second = uint32_t(lights_.size());
         lights_.emplace_back();
+        light_tiles_.emplace_back();
       } else {
         found->second = unused_lights_.back();
         unused_lights_.pop_back();
         lights_[found->second] = {};
+        light_tiles_[found->second] = {};
       }
       lights_[found->second].key = request.key;
     }
@@ -365,7 +363,7 @@ void ShadowAtlasPlanner::release_lights_not_requested() {
     // requested_in_plan is 0 for unused entries: plans count from 1.
     if (light.requested_in_plan == 0 || light.requested_in_plan == plans_) continue;
     if (light.resolution > 0 && !repack_pending_) {
-      for (uint32_t k = 0; k < tile_count(light.cube); ++k) pages_.free(light.tiles[k]);
+      for (uint32_t k = 0; k < tile_count(light.cube); ++k) pages_.free(light_tiles_[index][k]);
     }
     light_of_key_.erase(light.key);
     light = {};
@@ -579,6 +577,11 @@ std::vector<uint32_t> ShadowAtlasPlanner::largest_first(std::span<const ShadowRe
   return ordered;
 }
 
+bool ShadowAtlasPlanner::keeps_tiles(std::span<const ShadowRequest> requests, size_t i) const {
+  const Light& light = lights_[light_of_request_[i]];
+  return resolution_[i] == light.resolution && requests[i].cube == light.cube;
+}
+
 bool ShadowAtlasPlanner::grows(std::span<const ShadowRequest> requests, uint32_t i) const {
   const Light& light = lights_[light_of_request_[i]];
   return light.resolution > 0 && resolution_[i] > light.resolution && requests[i].cube == light.cube;
@@ -595,14 +598,15 @@ bool ShadowAtlasPlanner::place_changed_lights(std::span<const ShadowRequest> req
     const std::span<AtlasTile> tiles(tiles_[i].data(), tile_count(requests[i].cube));
     const Light& light = lights_[light_of_request_[i]];
     if (grows(requests, i)) {
-      // Its own tiles may be part of the larger one: given back first, taken again if not.
-      for (const AtlasTile& tile : std::span(light.tiles.data(), tiles.size())) pages_.free(tile);
+      // Its own tiles may be part of the larger one: given back first, taken again if not (the
+      // light then keeps its tiles, keeps_tiles()).
+      const std::span<const AtlasTile> own(light_tiles_[light_of_request_[i]].data(), tiles.size());
+      for (const AtlasTile& tile : own) pages_.free(tile);
       if (!pages_.allocate(resolution_[i], tiles)) {
-        for (const AtlasTile& tile : std::span(light.tiles.data(), tiles.size())) {
+        for (const AtlasTile& tile : own) {
           [[maybe_unused]] const bool claimed = pages_.claim(tile);
           assert(claimed);
         }
-        tiles_[i] = light.tiles;
         resolution_[i] = light.resolution;
         ++stats_.held_back_by_free_space;
       }
@@ -647,7 +651,6 @@ void ShadowAtlasPlanner::count_into(Tally& tally, const Light* light, uint32_t r
   }
   ++tally.lights_per_tier[tier_of(resolution)];
   tally.texels += tile_count(light->cube) * area(resolution);
-  tally.pages_used = std::max(tally.pages_used, light->tiles[0].page + 1);
   if (resolution < light->wanted) ++tally.demoted;
 }
 
@@ -662,11 +665,10 @@ void ShadowAtlasPlanner::update_stats() {
     total.changed_tier += tally.changed_tier;
     total.retiled += tally.retiled;
     total.texels += tally.texels;
-    total.pages_used = std::max(total.pages_used, tally.pages_used);
     for (size_t tier = 0; tier < total.lights_per_tier.size(); ++tier)
       total.lights_per_tier[tier] += tally.lights_per_tier[tier];
   }
-  stats_.pages_used = total.pages_used;
+  stats_.pages_used = pages_.pages_used();
   stats_.texels_used = total.texels;
   stats_.lights_without_shadow = total.without_shadow;
   stats_.demoted_by_budget = total.demoted;

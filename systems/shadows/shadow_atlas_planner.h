@@ -87,10 +87,13 @@ struct ShadowRequest {
   uint32_t slot = 0;
 };
 
+// What plan() gives a request; its tiles are ShadowAtlasPlanner::tiles_of's. Eight bytes: the
+// plan writes one for every request each frame, and with the tiles in it (104 bytes) that pass
+// moved 40 MB a frame at 100,000 lights and took as long on two threads as on one (the 2-core
+// VM, 2026-12-04).
 struct ShadowPlacement {
-  uint32_t resolution = 0;           // 0: no shadow this frame
-  std::array<AtlasTile, 6> tiles{};  // [0] for 2D maps; +X, -X, +Y, -Y, +Z, -Z faces for cubes
-  bool moved = false;                // tiles differ from last frame's for this key: the map must be rendered
+  uint32_t resolution = 0;  // 0: no shadow this frame
+  bool moved = false;       // tiles differ from last frame's for this key: the map must be rendered
 };
 
 struct AtlasStats {
@@ -131,6 +134,11 @@ class ShadowAtlasPlanner {
   // or drawn because its tiles are new). Each light's redraw rate follows them.
   enum RedrawSample : uint8_t { map_kept, map_redrawn, no_redraw_sample };
   void record_redraws(std::span<const uint8_t> redraws, jobs::ThreadPool* pool = nullptr);
+  // Request i's tiles as the last plan() placed them: [0] for a 2D map; +X, -X, +Y, -Y, +Z, -Z
+  // faces for a cube. Only where its placement's resolution is above 0, until the next plan().
+  const std::array<AtlasTile, 6>& tiles_of(size_t request) const {
+    return light_tiles_[light_of_request_[request]];
+  }
   // The last plan()'s.
   const AtlasStats& stats() const { return stats_; }
   // A line for the log when the budget's effect (lights demoted or dropped) differs from the last
@@ -145,18 +153,20 @@ class ShadowAtlasPlanner {
   static constexpr float hysteresis_tiers = 0.75f;
 
  private:
+  // What a plan's passes over every light read and write, in 48 bytes. Its tiles (96 bytes) are
+  // apart, in light_tiles_, written where they change and read where a view takes its map: with
+  // them inside, each of those passes moved 152 bytes a light, and they wait on memory.
   struct Light {
     uint64_t key = 0;
-    bool cube = false;
-    uint32_t full = 0;         // what its importance asks, after hysteresis; 0: cannot have a shadow
-    uint32_t wanted = 0;       // full lowered by the time budget
-    float held = 0.0f;         // log2 of what it gets, with a backlash (see the header)
-    float redraw_rate = 1.0f;  // the share of recent frames its map was redrawn in (record_redraws())
-    bool lowerable = false;    // wanted is above its quality floor
-    uint32_t resolution = 0;   // as placed
-    std::array<AtlasTile, 6> tiles{};
     uint64_t requested_in_plan = 0;
     uint64_t placed_in_plan = 0;  // the last plan that placed it; 0: none (plans count from 1)
+    uint32_t full = 0;            // what its importance asks, after hysteresis; 0: cannot have a shadow
+    uint32_t wanted = 0;          // full lowered by the time budget
+    float held = 0.0f;            // log2 of what it gets, with a backlash (see the header)
+    float redraw_rate = 1.0f;     // the share of recent frames its map was redrawn in (record_redraws())
+    uint32_t resolution = 0;      // as placed, in light_tiles_
+    bool cube = false;
+    bool lowerable = false;  // wanted is above its quality floor
   };
   struct BudgetEffect {
     uint32_t demoted = 0;
@@ -216,6 +226,10 @@ class ShadowAtlasPlanner {
   // Request indices ordered by decreasing resolution, cubes before 2D maps of the same size.
   std::vector<uint32_t> largest_first(std::span<const ShadowRequest> requests,
                                       std::span<const uint32_t> indices) const;
+  // Request i's light (which it has) keeps its resolution and kind, and so its tiles, before the
+  // plan places the changed lights; after it, until the light's tiles are written, unless the
+  // atlas was repacked.
+  bool keeps_tiles(std::span<const ShadowRequest> requests, size_t i) const;
   // Request i's light has tiles and goes up a size: it keeps them unless the larger ones are free.
   bool grows(std::span<const ShadowRequest> requests, uint32_t i) const;
   // False when a light found no free tile even at min_resolution: the plan must repack. Counts
@@ -231,7 +245,6 @@ class ShadowAtlasPlanner {
     uint32_t lowerable_by_time = 0;
     uint32_t changed_tier = 0;
     uint32_t retiled = 0;
-    uint32_t pages_used = 0;
     uint64_t texels = 0;
     std::array<uint32_t, max_tiers> lights_per_tier{};
   };
@@ -246,6 +259,7 @@ class ShadowAtlasPlanner {
   uint64_t plans_ = 0;
 
   std::vector<Light> lights_;
+  std::vector<std::array<AtlasTile, 6>> light_tiles_;  // lights_[i]'s tiles as placed
   std::vector<uint32_t> unused_lights_;
   std::unordered_map<uint64_t, uint32_t> light_of_key_;
   size_t lights_requested_ = 0;  // by the current plan(): its requests less the keys' second ones
@@ -262,6 +276,7 @@ class ShadowAtlasPlanner {
   std::vector<uint32_t> unmatched_;  // requests not matched by their place in the last plan
   std::vector<uint32_t> retiled_;    // by rank: the requests whose light changed resolution or kind
   jobs::KeepScratch keep_scratch_;
+  // Per request whose light changed resolution or kind (retiled_), its new tiles.
   std::vector<std::array<AtlasTile, 6>> tiles_;
   // Per tier (0: page_size, 1: half that, ...): the 2D maps and cubes the budget holds.
   std::vector<uint64_t> maps_per_tier_;

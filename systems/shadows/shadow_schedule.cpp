@@ -174,13 +174,13 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     view.render = false;
     view.moving_casters_only = false;
     if (usable_[v] == 0) return;  // not placed, or nothing valid in its tile yet
-    const ShadowPlacement& placement = placements_[request_of_[v]];
-    view.resolution = placement.resolution;
+    const uint32_t request = request_of_[v];
+    view.resolution = placements_[request].resolution;
     view.render = render_[v] != keep_map;
     view.moving_casters_only = render_[v] == draw_moving_casters;
     view.frames_since_drawn =
         uint32_t(std::min<uint64_t>(cache_.plans_since_rendered(uint32_t(v)), UINT32_MAX));
-    give_map(placement);
+    give_map(planner_.tiles_of(request));
   };
   // A cached map was rendered from where its light was then: the record samples it with that
   // view, not the light's present one.
@@ -189,8 +189,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
       if (v < map_count) {
         ShadowMapView& map = lights.maps[v];
         if (map.cascade != no_cascade) lights.cascades[map.cascade] = GpuLight{};  // no map unless given one
-        apply(v, map, [&](const ShadowPlacement& placement) {
-          map.tile = placement.tiles[0];
+        apply(v, map, [&](const std::array<AtlasTile, 6>& tiles) {
+          map.tile = tiles[0];
           RenderedMap& rendered = rendered_maps_[v];
           // Moving casters are drawn over the static layer with the view it was drawn with (a
           // map fitted to the scene's bounds may have moved since without its light changing).
@@ -207,8 +207,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
         continue;
       }
       ShadowCubeView& cube = lights.cubes[v - map_count];
-      apply(v, cube, [&](const ShadowPlacement& placement) {
-        cube.tiles = placement.tiles;
+      apply(v, cube, [&](const std::array<AtlasTile, 6>& tiles) {
+        cube.tiles = tiles;
         RenderedCube& rendered = rendered_cubes_[v - map_count];
         if (cube.moving_casters_only) {
           cube.position_far = rendered.position_far;

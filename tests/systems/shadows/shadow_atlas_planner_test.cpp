@@ -20,10 +20,23 @@
 namespace sg::shadows {
 namespace {
 
-std::vector<ShadowPlacement> plan(ShadowAtlasPlanner& planner, const std::vector<ShadowRequest>& requests) {
+// A request's placement with its tiles (ShadowAtlasPlanner::tiles_of), copied after the plan.
+struct Placed {
+  uint32_t resolution = 0;
+  std::array<AtlasTile, 6> tiles{};
+  bool moved = false;
+};
+
+std::vector<Placed> plan(ShadowAtlasPlanner& planner, const std::vector<ShadowRequest>& requests,
+                         jobs::ThreadPool* pool = nullptr, float lowered_tiers = 0.0f, size_t slots = 0) {
   std::vector<ShadowPlacement> out(requests.size());
-  planner.plan(requests, out);
-  return out;
+  planner.plan(requests, out, pool, lowered_tiers, slots);
+  std::vector<Placed> placed(out.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    placed[i] = {out[i].resolution, {}, out[i].moved};
+    if (out[i].resolution > 0) placed[i].tiles = planner.tiles_of(i);
+  }
+  return placed;
 }
 
 ShadowRequest map_light(uint64_t key, float importance, uint32_t max_resolution = 0) {
@@ -37,11 +50,11 @@ ShadowRequest cube_light(uint64_t key, float importance) {
 // Every tile inside a page below max_pages, aligned to its size, cube faces on one page, and no
 // two tiles overlapping (checked on a grid of min_resolution cells per page).
 void expect_valid_tiles(const AtlasConfig& config, const std::vector<ShadowRequest>& requests,
-                        const std::vector<ShadowPlacement>& placements) {
+                        const std::vector<Placed>& placements) {
   const uint32_t cells = config.page_size / config.min_resolution;
   std::vector<uint8_t> used(size_t(config.max_pages) * cells * cells, 0);
   for (size_t i = 0; i < requests.size(); ++i) {
-    const ShadowPlacement& placement = placements[i];
+    const Placed& placement = placements[i];
     if (placement.resolution == 0) continue;
     const size_t tiles = requests[i].cube ? 6 : 1;
     for (size_t k = 0; k < tiles; ++k) {
@@ -84,13 +97,34 @@ TEST(ShadowAtlasPages, ClaimTakesBackExactlyATileThatIsFree) {
   EXPECT_EQ(more[0].y / 64, quarters[0].y / 64);
 }
 
+// The planner's AtlasStats::pages_used comes from here.
+TEST(ShadowAtlasPages, PagesUsedEndAtTheHighestPageHoldingATile) {
+  ShadowAtlasPages pages(128, 32, 3);
+  EXPECT_EQ(pages.pages_used(), 0u);
+  std::array<AtlasTile, 1> first{}, second{}, third{};
+  ASSERT_TRUE(pages.allocate(128, first));
+  ASSERT_TRUE(pages.allocate(64, second));
+  ASSERT_TRUE(pages.allocate(128, third));
+  ASSERT_EQ(third[0].page, 2u);
+  EXPECT_EQ(pages.pages_used(), 3u);
+  pages.free(third[0]);
+  EXPECT_EQ(pages.pages_used(), 2u) << "the last page is free again";
+  pages.free(first[0]);
+  EXPECT_EQ(pages.pages_used(), 2u) << "a free page below a used one";
+  pages.free(second[0]);
+  EXPECT_EQ(pages.pages_used(), 0u);
+  ASSERT_TRUE(pages.allocate(32, first));
+  pages.clear();
+  EXPECT_EQ(pages.pages_used(), 0u);
+}
+
 TEST(ShadowAtlasPlanner, ResolutionIsImportanceRoundedToAPowerOfTwoWithinLimits) {
   ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 64, .min_resolution = 32});
   const std::vector<ShadowRequest> requests{
       map_light(1, 300.0f),        map_light(2, 400.0f), map_light(3, 2000.0f, 700), map_light(4, 1.0f),
       map_light(5, 1e9f),          cube_light(6, 1e9f),  map_light(7, 10.0f, 8),     cube_light(8, 100.0f),
       map_light(9, std::nanf("")), map_light(10, -5.0f)};
-  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  const std::vector<Placed> out = plan(planner, requests);
   EXPECT_EQ(out[0].resolution, 256u);
   EXPECT_EQ(out[1].resolution, 512u);
   EXPECT_EQ(out[2].resolution, 512u) << "max_resolution rounds down to a power of two";
@@ -110,7 +144,7 @@ TEST(ShadowAtlasPlanner, PinnedLightsWantTheirCapAndTheBudgetStillDemotesByImpor
   ShadowRequest far_cube = cube_light(2, 3.0f);
   far_map.pinned = far_cube.pinned = true;
   ShadowAtlasPlanner roomy({.page_size = 4096, .max_pages = 4, .min_resolution = 16});
-  const std::vector<ShadowPlacement> out = plan(roomy, {far_map, far_cube});
+  const std::vector<Placed> out = plan(roomy, {far_map, far_cube});
   EXPECT_EQ(out[0].resolution, 2048u);
   EXPECT_EQ(out[1].resolution, 1024u) << "a cube's cap: six faces on one page";
 
@@ -119,7 +153,7 @@ TEST(ShadowAtlasPlanner, PinnedLightsWantTheirCapAndTheBudgetStillDemotesByImpor
   ShadowAtlasPlanner tight({.page_size = 1024, .max_pages = 1, .min_resolution = 16});
   ShadowRequest large = map_light(1, 3.0f, 1024), small = map_light(2, 5.0f, 512);
   large.pinned = small.pinned = true;
-  const std::vector<ShadowPlacement> squeezed = plan(tight, {large, small});
+  const std::vector<Placed> squeezed = plan(tight, {large, small});
   EXPECT_EQ(squeezed[0].resolution, 512u);
   EXPECT_EQ(squeezed[1].resolution, 512u);
   EXPECT_EQ(tight.stats().demoted_by_budget, 1u);
@@ -131,11 +165,11 @@ TEST(ShadowAtlasPlanner, SmallImportanceOscillationsKeepTheResolutionLargeOnesCh
   // 2^+-0.6 around 256 would round to 512 and 128 without hysteresis.
   for (int frame = 0; frame < 20; ++frame) {
     const float importance = 256.0f * std::exp2(frame % 2 ? 0.6f : -0.6f);
-    const ShadowPlacement placement = plan(planner, {map_light(1, importance)})[0];
+    const Placed placement = plan(planner, {map_light(1, importance)})[0];
     EXPECT_EQ(placement.resolution, 256u) << "frame " << frame;
     EXPECT_FALSE(placement.moved);
   }
-  const ShadowPlacement up = plan(planner, {map_light(1, 256.0f * std::exp2(0.8f))})[0];
+  const Placed up = plan(planner, {map_light(1, 256.0f * std::exp2(0.8f))})[0];
   EXPECT_EQ(up.resolution, 512u);
   EXPECT_TRUE(up.moved);
   // Now held at 512: 2^-0.6 below it stays, a whole tier down goes.
@@ -169,8 +203,7 @@ TEST(ShadowAtlasPlanner, LoweredTiersLowerEveryLightDownToItsFloor) {
   ShadowRequest pinned = map_light(8, 3.0f, 512);
   pinned.pinned = true;
   requests.push_back(pinned);
-  std::vector<ShadowPlacement> out(requests.size());
-  planner.plan(requests, out, nullptr, 2.0f);
+  std::vector<Placed> out = plan(planner, requests, nullptr, 2.0f);
   EXPECT_EQ(out[0].resolution, 256u);
   EXPECT_EQ(out[1].resolution, 128u);
   EXPECT_EQ(out[2].resolution, 128u) << "at its floor already";
@@ -185,7 +218,7 @@ TEST(ShadowAtlasPlanner, LoweredTiersLowerEveryLightDownToItsFloor) {
   EXPECT_EQ(stats.demoted_by_budget, 0u) << "the memory budget did none of it";
 
   // Without lowered tiers, each light is back at what its importance asks at once.
-  planner.plan(requests, out);
+  out = plan(planner, requests);
   EXPECT_EQ(out[0].resolution, 1024u);
   EXPECT_EQ(out[4].resolution, 4096u);
   EXPECT_EQ(planner.stats().demoted_by_time, 0u);
@@ -200,13 +233,13 @@ TEST(ShadowAtlasPlanner, RedrawCostSparesMapsKeptFromFrameToFrame) {
     ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 4, .min_resolution = 32}, policy);
     std::vector<ShadowRequest> requests{map_light(1, 1024.0f), map_light(2, 1024.0f)};
     for (ShadowRequest& request : requests) request.quality_floor = 64;
-    std::vector<ShadowPlacement> out(requests.size());
+    std::vector<Placed> out(requests.size());
     const std::vector<uint8_t> redraws{ShadowAtlasPlanner::map_redrawn, ShadowAtlasPlanner::map_kept};
     for (int frame = 0; frame < 200; ++frame) {
-      planner.plan(requests, out);
+      out = plan(planner, requests);
       planner.record_redraws(redraws);
     }
-    planner.plan(requests, out, nullptr, 2.0f);
+    out = plan(planner, requests, nullptr, 2.0f);
     EXPECT_EQ(out[0].resolution, 256u) << "redrawn every frame: lowered";
     if (policy == ShadowTimePolicy::redraw_cost) {
       EXPECT_EQ(out[1].resolution, 1024u) << "kept: spared";
@@ -221,7 +254,7 @@ TEST(ShadowAtlasPlanner, RedrawCostSparesMapsKeptFromFrameToFrame) {
     // backlash of its held tiers).
     const std::vector<uint8_t> both_redrawn{ShadowAtlasPlanner::map_redrawn, ShadowAtlasPlanner::map_redrawn};
     for (int frame = 0; frame < 60; ++frame) {
-      planner.plan(requests, out, nullptr, 2.0f);
+      out = plan(planner, requests, nullptr, 2.0f);
       planner.record_redraws(both_redrawn);
     }
     EXPECT_LE(out[1].resolution, 512u);
@@ -231,8 +264,8 @@ TEST(ShadowAtlasPlanner, RedrawCostSparesMapsKeptFromFrameToFrame) {
 TEST(ShadowAtlasPlanner, LoweredTiersIgnoreWobblingImportancesAndStepBackExactly) {
   ShadowAtlasPlanner planner({.page_size = 4096, .max_pages = 4, .min_resolution = 32});
   const auto lowered = [&](float importance, float tiers) {
-    std::vector<ShadowPlacement> out(1);
-    planner.plan(std::vector<ShadowRequest>{map_light(1, importance)}, out, nullptr, tiers);
+    std::vector<Placed> out =
+        plan(planner, std::vector<ShadowRequest>{map_light(1, importance)}, nullptr, tiers);
     return out[0].resolution;
   };
   // 10.5 tiers lowered by 1: 9.5, on the boundary between 512 and 1024.
@@ -258,7 +291,7 @@ TEST(ShadowAtlasPlanner, OverBudgetTheLeastImportantLightsDropATierFirst) {
   std::vector<ShadowRequest> requests;
   for (uint64_t i = 0; i < 8; ++i) requests.push_back(map_light(i, 512.0f + 5.0f * float(i)));
   std::reverse(requests.begin(), requests.end());  // the order of requests does not matter
-  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  const std::vector<Placed> out = plan(planner, requests);
   expect_valid_tiles(config, requests, out);
   for (size_t r = 0; r < requests.size(); ++r) {
     EXPECT_EQ(out[r].resolution, requests[r].key >= 6 ? 512u : 256u) << "light " << requests[r].key;
@@ -282,7 +315,7 @@ TEST(ShadowAtlasPlanner, OverBudgetLightsAboveTheirQualityFloorDropFirst) {
     requests.push_back(map_light(i, 512.0f + 5.0f * float(i)));
     requests.back().quality_floor = 64;
   }
-  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  const std::vector<Placed> out = plan(planner, requests);
   expect_valid_tiles(config, requests, out);
   EXPECT_EQ(out[0].resolution, 256u) << "kept at its floor";
   EXPECT_EQ(out[1].resolution, 256u) << "the least important of the lights above their floors";
@@ -299,7 +332,7 @@ TEST(ShadowAtlasPlanner, WhenEveryLightIsAtItsFloorTheBudgetStillFits) {
     requests.push_back(map_light(i, 512.0f + 5.0f * float(i)));
     requests.back().quality_floor = 512;
   }
-  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  const std::vector<Placed> out = plan(planner, requests);
   expect_valid_tiles(config, requests, out);
   for (size_t r = 0; r < requests.size(); ++r) EXPECT_EQ(out[r].resolution, r >= 6 ? 512u : 256u) << r;
 }
@@ -310,7 +343,7 @@ TEST(ShadowAtlasPlanner, OnceAllAreAtTheSmallestTileTheLeastImportantLoseTheirSh
   // 100 lights wanting 64 where the page holds 64 tiles of 32.
   std::vector<ShadowRequest> requests;
   for (uint64_t i = 0; i < 100; ++i) requests.push_back(map_light(i, 64.0f + 0.1f * float(i)));
-  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  const std::vector<Placed> out = plan(planner, requests);
   expect_valid_tiles(config, requests, out);
   for (size_t i = 0; i < requests.size(); ++i) EXPECT_EQ(out[i].resolution, i < 36 ? 0u : 32u) << i;
   EXPECT_EQ(planner.stats().lights_without_shadow, 36u);
@@ -328,7 +361,7 @@ TEST(ShadowAtlasPlanner, HundredThousandLightsAreDemotedByImportanceWithoutOverl
     const float importance = std::exp2(tiers(random));
     requests.push_back(i % 10 == 0 ? cube_light(i, importance) : map_light(i, importance));
   }
-  const std::vector<ShadowPlacement> out = plan(planner, requests);
+  const std::vector<Placed> out = plan(planner, requests);
   expect_valid_tiles(config, requests, out);
   EXPECT_GT(planner.stats().lights_without_shadow, 0u);
   // A more important light never has a smaller map than a less important one of its kind.
@@ -439,8 +472,7 @@ TEST(ShadowAtlasPlanner, TheBudgetDemotesAsWalkingItsPassesLightByLightWould) {
     for (const size_t i : asked) shuffled.push_back(requests[i]);
     for (jobs::ThreadPool* pool : {static_cast<jobs::ThreadPool*>(nullptr), &threads}) {
       ShadowAtlasPlanner planner(config);
-      std::vector<ShadowPlacement> out(shuffled.size());
-      planner.plan(shuffled, out, pool);
+      std::vector<Placed> out = plan(planner, shuffled, pool);
       expect_valid_tiles(config, shuffled, out);
       for (size_t k = 0; k < asked.size(); ++k) {
         ASSERT_EQ(out[k].resolution, expected[asked[k]])
@@ -455,13 +487,13 @@ TEST(ShadowAtlasPlanner, UnchangedLightsKeepTheirTilesNewAndChangedOnesMove) {
   ShadowAtlasPlanner planner(config);
   std::vector<ShadowRequest> requests{map_light(1, 256.0f), cube_light(2, 64.0f), map_light(3, 512.0f),
                                       map_light(4, 32.0f)};
-  const std::vector<ShadowPlacement> first = plan(planner, requests);
-  for (const ShadowPlacement& placement : first) EXPECT_TRUE(placement.moved);
+  const std::vector<Placed> first = plan(planner, requests);
+  for (const Placed& placement : first) EXPECT_TRUE(placement.moved);
 
   // Reordered, with a new light and light 3 a tier down.
   std::vector<ShadowRequest> next{map_light(5, 128.0f), map_light(4, 32.0f), map_light(3, 256.0f),
                                   cube_light(2, 64.0f), map_light(1, 256.0f)};
-  const std::vector<ShadowPlacement> second = plan(planner, next);
+  const std::vector<Placed> second = plan(planner, next);
   expect_valid_tiles(config, next, second);
   EXPECT_TRUE(second[0].moved);
   EXPECT_FALSE(second[1].moved);
@@ -484,8 +516,7 @@ TEST(ShadowAtlasPlanner, AKeyRequestedTwiceGetsOneShadow) {
     std::vector<ShadowRequest> requests;
     for (uint64_t key = 0; key < 200; ++key) requests.push_back(map_light(key, 32.0f));
     for (int frame = 0; frame < 3; ++frame) {
-      std::vector<ShadowPlacement> out(requests.size());
-      planner.plan(requests, out, pool);
+      std::vector<Placed> out = plan(planner, requests, pool);
       expect_valid_tiles(config, requests, out);
       std::map<uint64_t, int> shadows_of_key;
       for (size_t i = 0; i < requests.size(); ++i) shadows_of_key[requests[i].key] += out[i].resolution > 0;
@@ -505,9 +536,9 @@ TEST(ShadowAtlasPlanner, LightsThatVanishFreeTheirTiles) {
   // Four lights of 128 fill the page.
   std::vector<ShadowRequest> requests;
   for (uint64_t key = 0; key < 4; ++key) requests.push_back(map_light(key, 128.0f));
-  const std::vector<ShadowPlacement> first = plan(planner, requests);
+  const std::vector<Placed> first = plan(planner, requests);
   requests[2] = map_light(9, 128.0f);
-  const std::vector<ShadowPlacement> second = plan(planner, requests);
+  const std::vector<Placed> second = plan(planner, requests);
   EXPECT_EQ(second[2].resolution, 128u);
   EXPECT_TRUE(second[2].moved);
   EXPECT_EQ(second[2].tiles[0], first[2].tiles[0]) << "the new light takes the vanished one's tile";
@@ -523,7 +554,7 @@ std::vector<ShadowRequest> half_page_in_strips(ShadowAtlasPlanner& planner,
                                                std::map<uint64_t, AtlasTile>& before) {
   std::vector<ShadowRequest> requests;
   for (uint64_t key = 0; key < 16; ++key) requests.push_back(map_light(key, 64.0f));
-  const std::vector<ShadowPlacement> full = plan(planner, requests);
+  const std::vector<Placed> full = plan(planner, requests);
   std::vector<ShadowRequest> kept;
   for (size_t i = 0; i < requests.size(); ++i) {
     if (full[i].tiles[0].x % 128 != 0) {
@@ -542,7 +573,7 @@ TEST(ShadowAtlasPlanner, ANewLightFindingNoFreeTileOfItsSizeTakesASmallerOneAndN
   std::vector<ShadowRequest> kept = half_page_in_strips(planner, before);
   ASSERT_EQ(kept.size(), 8u);
   kept.push_back(map_light(100, 128.0f));
-  const std::vector<ShadowPlacement> out = plan(planner, kept);
+  const std::vector<Placed> out = plan(planner, kept);
   expect_valid_tiles(config, kept, out);
   EXPECT_EQ(out.back().resolution, 64u) << "the largest free tile";
   EXPECT_TRUE(out.back().moved);
@@ -562,7 +593,7 @@ TEST(ShadowAtlasPlanner, ALightGoingUpKeepsItsMapUntilALargerTileIsFree) {
   std::map<uint64_t, AtlasTile> before;
   std::vector<ShadowRequest> kept = half_page_in_strips(planner, before);
   kept.front().importance = 128.0f;
-  std::vector<ShadowPlacement> out = plan(planner, kept);
+  std::vector<Placed> out = plan(planner, kept);
   EXPECT_EQ(out.front().resolution, 64u);
   EXPECT_FALSE(out.front().moved) << "its map stays valid";
   EXPECT_EQ(out.front().tiles[0], before[kept.front().key]);
@@ -592,7 +623,7 @@ TEST(ShadowAtlasPlanner, OnlyWhenNotEvenTheSmallestTilesFitIsEverythingRepacked)
   ShadowAtlasPlanner planner(config);
   std::vector<ShadowRequest> requests;
   for (uint64_t key = 0; key < 32; ++key) requests.push_back(map_light(key, 32.0f));
-  std::vector<ShadowPlacement> out = plan(planner, requests);
+  std::vector<Placed> out = plan(planner, requests);
   std::vector<ShadowRequest> kept;
   uint32_t freed_on[2] = {0, 0};
   for (size_t i = 0; i < requests.size(); ++i) {
@@ -623,7 +654,7 @@ TEST(ShadowAtlasPlanner, RandomChurnNeverOverlapsAndMovedMeansNewTiles) {
   std::vector<bool> active(key_count, false);
   std::vector<float> importance(key_count);
   for (float& value : importance) value = std::exp2(4.0f + 7.0f * unit(random));
-  std::map<uint64_t, ShadowPlacement> last;
+  std::map<uint64_t, Placed> last;
   size_t kept_tiles = 0;
   for (int frame = 0; frame < 400; ++frame) {
     std::vector<ShadowRequest> requests;
@@ -640,15 +671,15 @@ TEST(ShadowAtlasPlanner, RandomChurnNeverOverlapsAndMovedMeansNewTiles) {
                           .importance = importance[key]});
     }
     std::shuffle(requests.begin(), requests.end(), random);
-    const std::vector<ShadowPlacement> out = plan(planner, requests);
+    const std::vector<Placed> out = plan(planner, requests);
     expect_valid_tiles(config, requests, out);
     if (HasFatalFailure()) return;
 
-    std::map<uint64_t, ShadowPlacement> now;
+    std::map<uint64_t, Placed> now;
     uint32_t pages_used = 0, without_shadow = 0;
     uint64_t texels = 0;
     for (size_t i = 0; i < requests.size(); ++i) {
-      const ShadowPlacement& placement = out[i];
+      const Placed& placement = out[i];
       now[requests[i].key] = placement;
       if (placement.resolution == 0) {
         ++without_shadow;
@@ -699,8 +730,7 @@ class Churn {
   std::vector<float> importance_;
 };
 
-void expect_same_placements(const std::vector<ShadowPlacement>& got,
-                            const std::vector<ShadowPlacement>& expected, int frame) {
+void expect_same_placements(const std::vector<Placed>& got, const std::vector<Placed>& expected, int frame) {
   ASSERT_EQ(got.size(), expected.size());
   for (size_t i = 0; i < got.size(); ++i) {
     ASSERT_EQ(got[i].resolution, expected[i].resolution) << "frame " << frame << " request " << i;
@@ -719,8 +749,7 @@ TEST(ShadowAtlasPlanner, OnAThreadPoolPlansAsSerially) {
   Churn churn(5);
   for (int frame = 0; frame < 60; ++frame) {
     const std::vector<ShadowRequest> requests = churn.next();
-    std::vector<ShadowPlacement> got(requests.size());
-    pooled.plan(requests, got, &threads);
+    std::vector<Placed> got = plan(pooled, requests, &threads);
     ASSERT_NO_FATAL_FAILURE(expect_same_placements(got, plan(serial, requests), frame));
   }
   EXPECT_GT(serial.stats().demoted_by_budget + serial.stats().dropped_by_budget, 0u);  // over budget
@@ -742,11 +771,10 @@ TEST(ShadowAtlasPlanner, LightsFoundByTheirSlotsPlanAsLightsFoundByKey) {
   for (int frame = 0; frame < 60; ++frame) {
     if (frame % 10 == 9) std::swap(slot_of_key[frame], slot_of_key[frame + 300]);
     const std::vector<ShadowRequest> requests = churn.next(slot_of_key);
-    std::vector<ShadowPlacement> got(requests.size());
-    by_slot.plan(requests, got, &threads, 0.0f, churn.lights());
-    const std::vector<ShadowPlacement> expected = plan(by_place, requests);
+    std::vector<Placed> got = plan(by_slot, requests, &threads, 0.0f, churn.lights());
+    const std::vector<Placed> expected = plan(by_place, requests);
     ASSERT_NO_FATAL_FAILURE(expect_same_placements(got, expected, frame));
-    by_some_slots.plan(requests, got, &threads, 0.0f, churn.lights() / 2);
+    got = plan(by_some_slots, requests, &threads, 0.0f, churn.lights() / 2);
     ASSERT_NO_FATAL_FAILURE(expect_same_placements(got, expected, frame));
   }
   EXPECT_GT(by_place.stats().demoted_by_budget + by_place.stats().dropped_by_budget, 0u);  // over budget
@@ -762,7 +790,7 @@ TEST(ShadowAtlasPlanner, ANewBudgetRepacksIntoIt) {
 
   config.max_pages = 1;
   planner.set_config(config);
-  const std::vector<ShadowPlacement> shrunk = plan(planner, requests);
+  const std::vector<Placed> shrunk = plan(planner, requests);
   expect_valid_tiles(config, requests, shrunk);
   EXPECT_EQ(planner.stats().pages_used, 1u);
   EXPECT_EQ(shrunk[7].resolution, 512u);
@@ -770,9 +798,9 @@ TEST(ShadowAtlasPlanner, ANewBudgetRepacksIntoIt) {
 
   config.max_pages = 4;
   planner.set_config(config);
-  const std::vector<ShadowPlacement> grown = plan(planner, requests);
+  const std::vector<Placed> grown = plan(planner, requests);
   expect_valid_tiles(config, requests, grown);
-  for (const ShadowPlacement& placement : grown) EXPECT_EQ(placement.resolution, 512u);
+  for (const Placed& placement : grown) EXPECT_EQ(placement.resolution, 512u);
 }
 
 TEST(ShadowAtlasPlanner, BudgetMessagesAreRateLimitedAndSayWhenShadowsAreRestored) {
