@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "rendergraph/device/context.h"
@@ -104,6 +105,9 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
                          summarize(phases.declare), summarize(phases.execute),  summarize(phases.instances),
                          summarize(phases.lights),  summarize(phases.schedule), summarize(phases.upload),
                          summarize(phases.views)};
+  for (size_t step = 0; step < shadows::schedule_step_count; ++step) {
+    stats.schedule_steps_ms[step] = summarize(phases.schedule_steps[step]);
+  }
   stats.wall_frame_ms = summarize(record.wall_frame_ms);
   stats.lighting = to_string(frame.renderer().lighting());
   if (record.gpu_times) {
@@ -172,6 +176,14 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
         "prepare %.2f (schedule %.2f, upload %.2f, views %.2f), declare %.2f, execute %.2f ms\n",
         p.update->median, p.gather->median, p.instances->median, p.lights->median, p.prepare->median,
         p.schedule->median, p.upload->median, p.views->median, p.declare->median, p.execute->median);
+    std::string steps;
+    for (size_t step = 0; step < shadows::schedule_step_count; ++step) {
+      char figure[64];
+      std::snprintf(figure, sizeof(figure), "%s %s %.2f", step == 0 ? "" : ",",
+                    shadows::schedule_step_names[step], stats.schedule_steps_ms[step]->median);
+      steps += figure;
+    }
+    std::printf("shadowgraph: the shadow schedule's steps (medians):%s ms\n", steps.c_str());
   }
   if (stats.wall_frame_ms) {
     std::printf("shadowgraph: wall time per frame median %.2f ms (min %.2f, max %.2f), %s lighting\n",

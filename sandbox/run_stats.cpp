@@ -22,6 +22,14 @@ Json summary_json(const std::optional<TimeSummary>& summary) {
   return {{"median", summary->median}, {"min", summary->min}, {"max", summary->max}};
 }
 
+Json schedule_steps_json(const RunStats& stats) {
+  Json steps = Json::object();
+  for (size_t step = 0; step < shadows::schedule_step_count; ++step) {
+    steps[shadows::schedule_step_names[step]] = summary_json(stats.schedule_steps_ms[step]);
+  }
+  return steps;
+}
+
 Json setting_json(const RunStats::EchoedSetting& setting) {
   if (!setting.value) return nullptr;
   switch (setting.type) {
@@ -118,6 +126,7 @@ Json stats_json(const RunStats& stats) {
             {"prepare_schedule", summary_json(stats.cpu_phases_ms.schedule)},
             {"prepare_upload", summary_json(stats.cpu_phases_ms.upload)},
             {"prepare_views", summary_json(stats.cpu_phases_ms.views)}}},
+          {"schedule_steps_ms", schedule_steps_json(stats)},
           {"wall_frame_ms", summary_json(stats.wall_frame_ms)},
           {"lighting", stats.lighting},
           {"gpu_frame_ms", summary_json(stats.gpu_frame_ms)},

@@ -24,6 +24,11 @@
 //                     "gather_instances": {...}, "gather_lights": {...},  // within gather
 //                     "prepare_schedule": {...}, "prepare_upload": {...},  // within prepare
 //                     "prepare_views": {...}},
+//   "schedule_steps_ms": {"views": {...}, "requests": {...}, "match": {...}, "budget": {...},
+//                     "tiles": {...}, "placements": {...}, "dirty": {...}, "casters": {...},
+//                     "choose": {...}, "renders": {...}, "apply": {...}},  // within
+//                                                // prepare_schedule: the shadow schedule's steps
+//                                                // (systems/shadows/schedule_steps.h)
 //   "wall_frame_ms": {...},                      // elapsed time per frame, waits included:
 //                                                // present to present in a window, frame start
 //                                                // to frame start headless; null under 2 frames
@@ -109,6 +114,7 @@
 //                                                // settings tables): numbers, true/false for
 //                                                // flags, text for the rest; null when unset
 // }
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -118,6 +124,7 @@
 #include "systems/frame/setting.h"
 #include "systems/frame/time_summary.h"
 #include "systems/scene/scene_queries.h"
+#include "systems/shadows/schedule_steps.h"
 
 namespace sg::sandbox {
 
@@ -137,6 +144,8 @@ struct RunStats {
     // Within gather and prepare (SceneRenderer::CpuSteps).
     std::optional<TimeSummary> instances, lights, schedule, upload, views;
   } cpu_phases_ms;
+  // Within prepare_schedule: the shadow schedule's steps, by shadows::ScheduleStep.
+  std::array<std::optional<TimeSummary>, shadows::schedule_step_count> schedule_steps_ms;
   std::optional<TimeSummary> wall_frame_ms;
   std::string lighting;
   std::optional<TimeSummary> gpu_frame_ms;  // unset when the device has no timestamps

@@ -103,6 +103,9 @@ void Frame::record(const vk::FrameSlot& frame, double time_seconds,
   phase_ms_.schedule.push_back(steps.schedule);
   phase_ms_.upload.push_back(steps.upload);
   phase_ms_.views.push_back(steps.views);
+  for (size_t step = 0; step < shadows::schedule_step_count; ++step) {
+    phase_ms_.schedule_steps[step].push_back(renderer_.schedule_step_times()[step]);
+  }
   const shadows::ShadowScheduleStats& shadows = renderer_.shadow_stats();
   shadow_views_rendered_.push_back(shadows.views_rendered);
   shadow_views_cached_.push_back(shadows.views_cached);

@@ -105,11 +105,13 @@ class Frame {
   void capture_depth() { depth_capture_.emplace(); }
   vk::DepthImage read_captured_depth() const;
 
-  // Per recorded frame: CPU milliseconds of each phase of record(), and of the renderer's steps
-  // within gather and prepare (SceneRenderer::CpuSteps).
+  // Per recorded frame: CPU milliseconds of each phase of record(), of the renderer's steps
+  // within gather and prepare (SceneRenderer::CpuSteps), and of the shadow schedule's steps
+  // (shadows::ScheduleStep) within its schedule step.
   struct PhaseTimes {
     std::vector<double> update, gather, prepare, declare, execute;
     std::vector<double> instances, lights, schedule, upload, views;
+    std::array<std::vector<double>, shadows::schedule_step_count> schedule_steps;
   };
   const PhaseTimes& phase_ms() const { return phase_ms_; }
   // The last recorded frame's CPU milliseconds, all phases.

@@ -98,6 +98,8 @@ class SceneRenderer {
   }
   const ShadowAtlas& shadow_atlas() const { return atlas_; }
   const shadows::ShadowScheduleStats& shadow_stats() const { return schedule_.stats(); }
+  // How long the shadow schedule's steps took in the last prepare().
+  const shadows::ScheduleStepTimes& schedule_step_times() const { return schedule_.step_times(); }
   // The path in use: the settings' one, or per-light where batching is not supported.
   shadows::ShadowViewPath shadow_views() const {
     return batch_ ? shadows::ShadowViewPath::batched : shadows::ShadowViewPath::per_light;

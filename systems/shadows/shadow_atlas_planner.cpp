@@ -94,13 +94,15 @@ ShadowAtlasPlanner::Wanted ShadowAtlasPlanner::wanted_resolution(const ShadowReq
 }
 
 void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
-                              jobs::ThreadPool* pool, float lowered_tiers, size_t slots) {
+                              jobs::ThreadPool* pool, float lowered_tiers, size_t slots, StepClock* clock) {
   assert(out.size() == requests.size());
   ++plans_;
   slots_ = slots;
   match_lights(requests, pool, lowered_tiers);
+  lap(clock, ScheduleStep::match);
   release_lights_not_requested();
   fit_budget(requests, pool);
+  lap(clock, ScheduleStep::budget);
 
   // Lights whose resolution or kind changed need new tiles (tiles_); the others keep theirs.
   // Which did is found on the pool. Lights going down or out give their tiles back here; a light
@@ -126,6 +128,7 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   stats_.repacked = repack_pending_ || !place_changed_lights(requests, changed);
   if (stats_.repacked) repack(requests);
   repack_pending_ = false;
+  lap(clock, ScheduleStep::tiles);
 
   // Each request writes its placement and its own light (a key's second request has none), and
   // counts into its piece's tally.
@@ -164,6 +167,7 @@ void ShadowAtlasPlanner::plan(std::span<const ShadowRequest> requests, std::span
   });
   light_of_slot_.swap(next_light_of_slot_);
   update_stats();
+  lap(clock, ScheduleStep::placements);
 }
 
 void ShadowAtlasPlanner::record_redraws(std::span<const uint8_t> redraws, jobs::ThreadPool* pool) {

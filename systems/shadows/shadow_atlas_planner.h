@@ -52,6 +52,7 @@
 #include "ecs/jobs/parallel_pieces.h"
 
 #include "systems/shadows/budget_report.h"
+#include "systems/shadows/schedule_steps.h"
 #include "systems/shadows/shadow_atlas_pages.h"
 #include "systems/shadows/shadow_time_policy.h"
 
@@ -125,9 +126,11 @@ class ShadowAtlasPlanner {
   // in the same order every frame. A key requested twice in one plan() gets a shadow only once.
   // With `pool`, the per-light passes that need no shared state run on it (same result).
   // `lowered_tiers` >= 0: the time budget's (see above); 0: none. With `slots` > 0 the requests'
-  // slots hold their lights from plan to plan; 0: each request's place is its slot.
+  // slots hold their lights from plan to plan; 0: each request's place is its slot. `clock`, when
+  // given, times the match, budget, tiles and placements steps.
   void plan(std::span<const ShadowRequest> requests, std::span<ShadowPlacement> out,
-            jobs::ThreadPool* pool = nullptr, float lowered_tiers = 0.0f, size_t slots = 0);
+            jobs::ThreadPool* pool = nullptr, float lowered_tiers = 0.0f, size_t slots = 0,
+            StepClock* clock = nullptr);
   // What became of the last plan()'s requests' maps this frame, per request: redraws[i] is
   // map_redrawn when request i's map was drawn for a change of its light or its casters,
   // map_kept when it was kept, no_redraw_sample when it tells nothing of the rate (no tile,

@@ -29,7 +29,7 @@ constexpr size_t dirty_per_count = 4096;
 
 void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes,
                        uint32_t view_budget, bool static_layers, std::span<uint8_t> render,
-                       std::span<uint8_t> usable, jobs::ThreadPool* pool) {
+                       std::span<uint8_t> usable, jobs::ThreadPool* pool, StepClock* clock) {
   if (render.size() != lights.size() || usable.size() != lights.size()) {
     throw std::invalid_argument(
         "sg::shadows::ShadowCache::plan: render and usable need one element per light");
@@ -53,9 +53,12 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
                     lights[i].update == scene::ShadowUpdate::every_frame;
     }
   });
+  lap(clock, ScheduleStep::dirty);
   mark_by_casters(lights, changes.still, &LightState::dirty, pool);
   mark_by_casters(lights, changes.moving, &LightState::moving_dirty, pool);
+  lap(clock, ScheduleStep::casters);
   choose_renders(lights, view_budget, render, pool);
+  lap(clock, ScheduleStep::choose);
 
   // How each chosen light renders, what is usable, and the counts, each piece into a tally of its
   // own; the due lights' lags listed in order.
@@ -116,6 +119,7 @@ void ShadowCache::plan(std::span<const ShadowCacheLight> lights, const CasterCha
     stats_.lights_unavailable += tally.lights_unavailable;
   }
   summarize_lags();
+  lap(clock, ScheduleStep::renders);
 }
 
 bool ShadowCache::same_keys(std::span<const ShadowCacheLight> lights, jobs::ThreadPool* pool) {

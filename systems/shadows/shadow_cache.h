@@ -19,6 +19,7 @@
 #include "systems/scene/aabb.h"
 #include "systems/scene/shadow_settings.h"
 #include "systems/shadows/align_by_key.h"
+#include "systems/shadows/schedule_steps.h"
 #include "systems/shadows/spheres_meeting_boxes.h"
 
 namespace sg::shadows {
@@ -111,10 +112,10 @@ class ShadowCache {
   // frame allocates nothing once grown, except when the lights are not the previous frame's keys
   // in the previous frame's order: the states are then matched to them through a table of keys
   // (KeyPlaces). With a `pool`, the passes over the lights and the tests against the boxes run
-  // in pieces on it.
+  // in pieces on it. `clock`, when given, times the dirty, casters, choose and renders steps.
   void plan(std::span<const ShadowCacheLight> lights, const CasterChanges& changes, uint32_t view_budget,
             bool static_layers, std::span<uint8_t> render, std::span<uint8_t> usable,
-            jobs::ThreadPool* pool = nullptr);
+            jobs::ThreadPool* pool = nullptr, StepClock* clock = nullptr);
 
   // The last plan's counts.
   const ShadowCacheStats& stats() const { return stats_; }

@@ -71,6 +71,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   // the pool, the requests listed in order after. There too, each piece checks that its views
   // are the ones their entries of rendered_maps_ and rendered_cubes_ hold (usually: the last
   // frame's lights in the same order). One thread would read all that hundreds of bytes apart.
+  step_ms_.fill(0.0);
+  StepClock clock(step_ms_);
   const CameraFrustum frustum(camera);
   const bool pinned = resolution_ == ShadowResolution::requested;
   const size_t map_count = lights.maps.size();
@@ -119,6 +121,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     }
     pieces_aligned_[begin / views_per_piece] = aligned ? 1 : 0;
   });
+  clock.lap(ScheduleStep::views);
   const bool aligned =
       same_counts && std::find(pieces_aligned_.begin(), pieces_aligned_.end(), 0) == pieces_aligned_.end();
   // The requests, then the lights the cache sees (those given tiles), each listed in order on
@@ -135,9 +138,10 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
         requests_[r] = view_requests_[v];
       });
   requests_.resize(request_count);
-  placements_.resize(requests_.size());  // plan() writes every one: 8 MB serially for 79,000 requests
+  clock.lap(ScheduleStep::requests);
+  placements_.resize(requests_.size());  // plan() writes every one
   const ShadowTimeBudget::Limits& limits = time_budget_.limits();
-  planner_.plan(requests_, placements_, pool, limits.lowered_tiers, view_count);
+  planner_.plan(requests_, placements_, pool, limits.lowered_tiers, view_count, &clock);
 
   // The cache sees every view, in the views' order (usually the last frame's, so that its states
   // need no lookup by key), those without a tile as not placed.
@@ -153,7 +157,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   const CasterChanges changes{casters.changes_only ? casters.changed : caster_changes_.update(casters.all),
                               casters.changes_only ? casters.moving : std::span<const scene::Aabb>{}};
   cache_.plan(cache_lights_, changes, tighter_cap(view_budget, limits.view_cap), static_layers_, render_,
-              usable_, pool);
+              usable_, pool, &clock);
   // The results onto the views and their records, on the pool: each view writes only itself,
   // its record, its entry and what its map cost this frame, for the planner's redraw rates (a
   // map drawn into new tiles says nothing of how often its light or its casters change).
@@ -272,6 +276,7 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   }
   time_budget_.planned(
       {atlas.lowerable_by_time, uncapped, stats_.lights_demoted_by_time, stats_.views_deferred_by_time});
+  clock.lap(ScheduleStep::apply);
 }
 
 }  // namespace sg::shadows

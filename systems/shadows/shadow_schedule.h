@@ -22,6 +22,7 @@
 #include "systems/shadows/align_by_key.h"
 #include "systems/shadows/caster_changes.h"
 #include "systems/shadows/frame_lights.h"
+#include "systems/shadows/schedule_steps.h"
 #include "systems/shadows/shadow_atlas_planner.h"
 #include "systems/shadows/shadow_cache.h"
 #include "systems/shadows/shadow_resolution.h"
@@ -119,6 +120,8 @@ class ShadowSchedule {
   void static_layers_not_kept() { cache_.static_layers_not_kept(); }
 
   const ShadowScheduleStats& stats() const { return stats_; }
+  // How long the last schedule()'s steps took.
+  const ScheduleStepTimes& step_times() const { return step_ms_; }
   uint32_t pages_used() const { return planner_.stats().pages_used; }
   // A line for the log when the budget's effect changed (ShadowAtlasPlanner), rate limited.
   std::optional<std::string> take_budget_message() { return planner_.take_budget_message(); }
@@ -144,6 +147,7 @@ class ShadowSchedule {
   bool static_layers_;
   ShadowResolution resolution_;
   ShadowScheduleStats stats_;
+  ScheduleStepTimes step_ms_{};
 
   // Per frame, kept so that scheduling allocates nothing once grown.
   static constexpr uint32_t no_request = UINT32_MAX;

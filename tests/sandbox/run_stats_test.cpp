@@ -79,6 +79,9 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                          TimeSummary{0.25, 0.125, 0.5},   TimeSummary{0.125, 0.0625, 0.25},
                          TimeSummary{0.375, 0.25, 0.75},  TimeSummary{0.25, 0.125, 1.5},
                          TimeSummary{0.125, 0.0625, 0.5}, TimeSummary{0.0625, 0.03125, 0.125}};
+  for (size_t step = 0; step < stats.schedule_steps_ms.size(); ++step) {
+    stats.schedule_steps_ms[step] = TimeSummary{0.125 * double(step + 1), 0.0625, 2.0};
+  }
   stats.wall_frame_ms = TimeSummary{16.5, 16.25, 33.0};
   stats.lighting = "deferred";
   stats.gpu_frame_ms = TimeSummary{0.5, 0.25, 0.875};
@@ -138,7 +141,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 22u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 23u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("schema_version"), stats_schema_version);
   EXPECT_EQ(json.at("generator"), "Shadowgraph " SHADOWGRAPH_VERSION);
   EXPECT_EQ(json.at("device"), stats.device);
@@ -163,6 +166,11 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   expect_summary(phases.at("gather_lights"), *stats.cpu_phases_ms.lights);
   expect_summary(phases.at("prepare_upload"), *stats.cpu_phases_ms.upload);
   expect_summary(phases.at("prepare_views"), *stats.cpu_phases_ms.views);
+  const nlohmann::json& steps = json.at("schedule_steps_ms");
+  ASSERT_EQ(steps.size(), shadows::schedule_step_count);
+  expect_summary(steps.at("views"), *stats.schedule_steps_ms[0]);
+  expect_summary(steps.at("budget"), *stats.schedule_steps_ms[3]);
+  expect_summary(steps.at("apply"), *stats.schedule_steps_ms[10]);
   EXPECT_EQ(json.at("lighting"), "deferred");
   expect_summary(json.at("gpu_frame_ms"), *stats.gpu_frame_ms);
   const nlohmann::json& passes = json.at("passes");

@@ -6,6 +6,7 @@
 // the sandbox's --stats cpu_phases_ms. The shadow cache fills over the first frames (at 4,096 views a frame,
 // about 63 of them for 100,000 lights), and the schedule costs less after: compare runs of the same --frames.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -77,6 +78,7 @@ class MovedCasters {
 
 struct Phases {
   std::vector<double> update, gather, schedule, sort;
+  std::array<std::vector<double>, shadows::schedule_step_count> schedule_steps;  // within schedule
 };
 
 double median(std::vector<double> samples) {
@@ -141,6 +143,9 @@ int run(const Options& options) {
     schedule.schedule(lights, camera, shadows::CasterUpdate::changes({}, moved),
                       shadows::default_shadow_view_budget, &pool);
     lap(phases.schedule);
+    for (size_t step = 0; step < shadows::schedule_step_count; ++step) {
+      phases.schedule_steps[step].push_back(schedule.step_times()[step]);
+    }
     shadows::sort_by_group(lights, &pool);
     lap(phases.sort);
     if (!first_maps && schedule.stats().lights_waiting == 0) first_maps = frame;
@@ -161,6 +166,14 @@ int run(const Options& options) {
       "light-bench: medians over %zu frames %s, ms: update %.2f gather %.2f schedule %.2f sort %.2f "
       "(gather + schedule + sort %.2f)\n",
       phases.gather.size(), which.c_str(), update, gather, scheduled, sort, gather + scheduled + sort);
+  std::string steps;
+  for (size_t step = 0; step < shadows::schedule_step_count; ++step) {
+    char figure[64];
+    std::snprintf(figure, sizeof(figure), " %s %.2f", shadows::schedule_step_names[step],
+                  settled(phases.schedule_steps[step]));
+    steps += figure;
+  }
+  std::printf("light-bench: the schedule's steps, medians of the same frames, ms:%s\n", steps.c_str());
   const shadows::ShadowScheduleStats& stats = schedule.stats();
   std::printf(
       "light-bench: last frame: %u views drawn (%u of them moving casters only), %u cached, %u lights "

@@ -2,6 +2,7 @@
 // Gathering a frame's lights from the ECS world and scheduling their maps, without a GPU.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstring>
 #include <map>
 #include <random>
@@ -242,6 +243,29 @@ TEST(ShadowSchedule, GivesEachShadowedRecordItsTiles) {
   }
   EXPECT_EQ(schedule.stats().views_rendered, 2u + 12u);
   EXPECT_EQ(schedule.stats().lights_without_shadow, 0u);
+}
+
+// Every step of a schedule() is timed, once: the steps add up to no more than the call took.
+TEST(ShadowSchedule, StepTimesAddUpWithinTheCall) {
+  const scene::Scene scene = five_lights();
+  FrameLights lights;
+  gather_lights(scene.world, bounds, {}, lights);
+  ShadowSchedule schedule(small_atlas);
+  jobs::ThreadPool pool(2);
+  for (jobs::ThreadPool* on : {static_cast<jobs::ThreadPool*>(nullptr), &pool}) {
+    for (int call = 0; call < 3; ++call) {
+      const auto start = std::chrono::steady_clock::now();
+      schedule.schedule(lights, camera_at({0.0f, 5.0f, 2.0f}), {}, 0, on);
+      const double call_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      double sum = 0.0;
+      for (size_t step = 0; step < schedule_step_count; ++step) {
+        EXPECT_GT(schedule.step_times()[step], 0.0) << schedule_step_names[step] << " not timed";
+        sum += schedule.step_times()[step];
+      }
+      EXPECT_LE(sum, call_ms) << "call " << call;
+    }
+  }
 }
 
 TEST(ShadowSchedule, LightsOutOfSightGetNoShadow) {
