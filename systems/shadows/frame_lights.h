@@ -190,6 +190,12 @@ struct FrameLights {
     LightOverrides last_overrides;
     std::vector<GpuLight> packed;
     std::vector<uint8_t> named;
+    uint64_t last_names_layout = 0;  // the Name pool's layout stamp at the last gather
+    // Per entity index, its light's place in last_gathered (none: ~0u); per place, whether a
+    // component of the light (transform, light, shadow settings, name) was written since the last
+    // gather.
+    std::vector<uint32_t> place_of_entity;
+    std::vector<uint8_t> written;
   } scratch;
 };
 
