@@ -233,8 +233,9 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
   // whose components was written since, and that has a Name as it had then, keeps its view and
   // record. The writes are found from the pools' change ticks, not light by light: with four
   // ticks and a name looked up for each of 100,000 lights (5% moving), gathering took 5.7 ms on
-  // one thread of the 2-core VM against 4.5 (2026-12-04). Names added or removed anywhere send
-  // every light to a look at its own.
+  // one thread of the 2-core VM against 4.5 (2026-12-04). The transforms' writes include every
+  // moving mesh's: with 8 lights among the stress scene's crates, all moving, gathering took 0.01
+  // ms more. Names added or removed anywhere send every light to a look at its own.
   const uint64_t names_layout = world.layout_stamp<scene::Name>();
   const bool same_names = names_layout == scratch.last_names_layout;
   scratch.last_names_layout = names_layout;
