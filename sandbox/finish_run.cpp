@@ -176,6 +176,10 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
         "prepare %.2f (schedule %.2f, upload %.2f, views %.2f), declare %.2f, execute %.2f ms\n",
         p.update->median, p.gather->median, p.instances->median, p.lights->median, p.prepare->median,
         p.schedule->median, p.upload->median, p.views->median, p.declare->median, p.execute->median);
+  }
+  // Where the schedule is a tenth of a millisecond or more (thousands of lights), its steps;
+  // --stats has them always.
+  if (const RunStats::CpuPhases& p = stats.cpu_phases_ms; p.schedule && p.schedule->median >= 0.1) {
     std::string steps;
     for (size_t step = 0; step < shadows::schedule_step_count; ++step) {
       char figure[64];
