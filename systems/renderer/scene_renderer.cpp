@@ -161,7 +161,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
                              std::to_string(max_light_records_) + " light records");
   }
   const vk::Buffer& records =
-      write_in_pieces(light_records_, slot, std::span<const shadows::GpuLight>(lights_.records), &workers_,
+      write_in_pieces(light_records_, slot, std::span<const shadows::GpuLight>(lights_.sorted), &workers_,
                       std::span<const shadows::GpuLight>(lights_.cascades));
   cpu_steps_.upload = lap(mark);
   const uint32_t page_size = atlas_.shape().page_size;

@@ -273,8 +273,8 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
       if (gathered[i].cascades > 0) scratch.cascaded.push_back({i, gathered[i].view, gathered[i].cascades});
     }
   }
-  out.cascaded = scratch.cascaded;  // sort_by_group moved the records the last list named
-  scratch.packed.resize(gathered.size());
+  out.cascaded = scratch.cascaded;
+  out.refilled.resize(gathered.size());
   scratch.named.resize(gathered.size());
 
   // Pieces of 64 lights: a light's views and record take about half a microsecond, a kept one
@@ -284,15 +284,16 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
     for (size_t i = begin; i < end; ++i) {
       const auto index = static_cast<uint32_t>(i);
       const GatheredLight& light = gathered[i];
-      if (kept(i)) {
-        // Of what gathering sets, sort_by_group moved the record and `changed` may be stale; the
-        // view's other fields are as gathering left them (the schedule's moving-caster draws put
-        // back the view the light has anyway, unchanged since its map was drawn whole).
+      out.refilled[i] = kept(i) ? 0 : 1;
+      if (out.refilled[i] == 0) {
+        // Of what gathering sets, `changed` may be stale; the record (with the shadow fields the
+        // schedule gave it) and the view's other fields are as they were left (the schedule's
+        // moving-caster draws put back the view the light has anyway, unchanged since its map
+        // was drawn whole).
         const auto keep = [index](auto& view) {
           view.light = index;
           view.changed = false;
         };
-        out.records[i] = scratch.packed[i];
         if (light.shadowed && light.kind == GatheredLight::point) keep(out.cubes[light.view]);
         if (light.shadowed && light.kind != GatheredLight::point) keep(out.maps[light.view]);
         continue;
@@ -310,7 +311,6 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
           break;
         case GatheredLight::point: fill_point(world, overrides, since, gathered[i], index, out); break;
       }
-      scratch.packed[i] = out.records[i];
     }
   });
   scratch.last_overrides = overrides;
@@ -345,8 +345,8 @@ void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
   constexpr size_t piece = 128;
   const size_t count = out.records.size();
   const size_t pieces = jobs::piece_count(count, piece);
-  scratch.moved_to.resize(count);
-  scratch.records.resize(count);
+  out.sorted_place.resize(count);  // each record's group, then its place
+  out.sorted.resize(count);
   scratch.piece_groups.assign(pieces * light_group_count, 0);
   scratch.piece_types.assign(pieces * light_group_count, 0);
   scratch.piece_contact.assign(pieces * light_group_count, 0);
@@ -356,7 +356,7 @@ void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
     uint32_t* contact = &scratch.piece_contact[begin / piece * light_group_count];
     for (size_t i = begin; i < end; ++i) {
       const uint32_t group = group_of(out.records[i]);
-      scratch.moved_to[i] = group;
+      out.sorted_place[i] = group;
       ++groups[group];
       types[group] |= light_type_bits(out.records[i]);
       contact[group] += out.records[i].direction_type.w > 0.0f ? 1 : 0;
@@ -385,22 +385,11 @@ void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
   jobs::run_in_pieces(pool, count, piece, [&](size_t begin, size_t end) {
     uint32_t* places = &scratch.piece_groups[begin / piece * light_group_count];
     for (size_t i = begin; i < end; ++i) {
-      const uint32_t place = places[scratch.moved_to[i]]++;
-      scratch.moved_to[i] = place;
-      scratch.records[place] = out.records[i];
+      const uint32_t place = places[out.sorted_place[i]]++;
+      out.sorted_place[i] = place;
+      out.sorted[place] = out.records[i];
     }
   });
-  std::swap(out.records, scratch.records);
-  // The views lie hundreds of bytes apart: thousands of them are pointed at their records' new
-  // places on the pool.
-  const size_t map_count = out.maps.size();
-  jobs::run_in_pieces(pool, map_count + out.cubes.size(), piece, [&](size_t begin, size_t end) {
-    for (size_t v = begin; v < end; ++v) {
-      uint32_t& light = v < map_count ? out.maps[v].light : out.cubes[v - map_count].light;
-      light = scratch.moved_to[light];
-    }
-  });
-  for (FrameLights::CascadedLight& light : out.cascaded) light.record = scratch.moved_to[light.record];
 }
 
 }  // namespace sg::shadows

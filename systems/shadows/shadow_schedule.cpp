@@ -167,7 +167,15 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     align_by_key(lights.cubes, rendered_cubes_, places_, rendered_cubes_scratch_);
   }
   redraws_.resize(requests_.size());
-  const auto apply = [&](size_t v, auto& view, auto&& give_map) {
+  // The records keep their shadow fields from frame to frame (FrameLights::records): a record is
+  // written where gathering packed it afresh (without a map) or its map was drawn, and loses its
+  // map where its view has none usable. A map in new tiles or of a new resolution is usable only
+  // once drawn there. A light whose record no gather packed (FrameLights filled by hand) is
+  // written every time.
+  const auto refilled = [&](uint32_t light) {
+    return light >= lights.refilled.size() || lights.refilled[light] != 0;
+  };
+  const auto apply = [&](size_t v, auto& view, GpuLight& record, bool packed_afresh, auto&& give_map) {
     if (const uint32_t request = request_of_[v]; request != no_request) {
       redraws_[request] = !cache_lights_[v].placed || cache_lights_[v].invalid
                               ? ShadowAtlasPlanner::no_redraw_sample
@@ -177,14 +185,17 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     view.resolution = 0;
     view.render = false;
     view.moving_casters_only = false;
-    if (usable_[v] == 0) return;  // not placed, or nothing valid in its tile yet
+    if (usable_[v] == 0) {  // not placed, or nothing valid in its tile yet
+      record.info.w = no_shadow_map;
+      return;
+    }
     const uint32_t request = request_of_[v];
     view.resolution = placements_[request].resolution;
     view.render = render_[v] != keep_map;
     view.moving_casters_only = render_[v] == draw_moving_casters;
     view.frames_since_drawn =
         uint32_t(std::min<uint64_t>(cache_.plans_since_rendered(uint32_t(v)), UINT32_MAX));
-    give_map(planner_.tiles_of(request));
+    give_map(planner_.tiles_of(request), packed_afresh || view.render);
   };
   // A cached map was rendered from where its light was then: the record samples it with that
   // view, not the light's present one.
@@ -192,26 +203,30 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
     for (size_t v = begin; v < end; ++v) {
       if (v < map_count) {
         ShadowMapView& map = lights.maps[v];
-        if (map.cascade != no_cascade) lights.cascades[map.cascade] = GpuLight{};  // no map unless given one
-        apply(v, map, [&](const std::array<AtlasTile, 6>& tiles) {
-          map.tile = tiles[0];
-          RenderedMap& rendered = rendered_maps_[v];
-          // Moving casters are drawn over the static layer with the view it was drawn with (a
-          // map fitted to the scene's bounds may have moved since without its light changing).
-          if (map.moving_casters_only) {
-            map.view = rendered.view;
-          } else if (map.render) {
-            rendered.view = map.view;
-          }
-          GpuLight& record =
-              map.cascade == no_cascade ? lights.records[map.light] : lights.cascades[map.cascade];
-          set_shadow_map(record, map.tile.page, tile_uv_rect(map.tile, page_size_), map.resolution,
-                         rendered.view);
-        });
+        const bool cascade = map.cascade != no_cascade;
+        if (cascade) lights.cascades[map.cascade] = GpuLight{};  // no map unless given one
+        GpuLight& record = cascade ? lights.cascades[map.cascade] : lights.records[map.light];
+        apply(v, map, record, cascade || refilled(map.light),
+              [&](const std::array<AtlasTile, 6>& tiles, bool write) {
+                map.tile = tiles[0];
+                RenderedMap& rendered = rendered_maps_[v];
+                // Moving casters are drawn over the static layer with the view it was drawn with (a
+                // map fitted to the scene's bounds may have moved since without its light changing).
+                if (map.moving_casters_only) {
+                  map.view = rendered.view;
+                } else if (map.render) {
+                  rendered.view = map.view;
+                }
+                if (write) {
+                  set_shadow_map(record, map.tile.page, tile_uv_rect(map.tile, page_size_), map.resolution,
+                                 rendered.view);
+                }
+              });
         continue;
       }
       ShadowCubeView& cube = lights.cubes[v - map_count];
-      apply(v, cube, [&](const std::array<AtlasTile, 6>& tiles) {
+      GpuLight& record = lights.records[cube.light];
+      apply(v, cube, record, refilled(cube.light), [&](const std::array<AtlasTile, 6>& tiles, bool write) {
         cube.tiles = tiles;
         RenderedCube& rendered = rendered_cubes_[v - map_count];
         if (cube.moving_casters_only) {
@@ -219,10 +234,11 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
         } else if (cube.render) {
           rendered.position_far = cube.position_far;
         }
+        if (!write) return;
         std::array<glm::vec2, 6> origins;
         for (int f = 0; f < 6; ++f) origins[f] = glm::vec2(tile_uv_rect(cube.tiles[f], page_size_));
-        set_shadow_cube(lights.records[cube.light], cube.tiles[0].page, origins,
-                        float(cube.resolution) / float(page_size_), cube.resolution, rendered.position_far);
+        set_shadow_cube(record, cube.tiles[0].page, origins, float(cube.resolution) / float(page_size_),
+                        cube.resolution, rendered.position_far);
       });
     }
   });

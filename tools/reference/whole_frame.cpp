@@ -39,11 +39,12 @@ constexpr LightType record_types[] = {LightType::point, LightType::spot, LightTy
                                       LightType::cylinder};  // GpuLight::info.x's order
 
 std::vector<FrameLight> frame_lights(const shadows::FrameLights& lights) {
-  std::vector<FrameLight> out(lights.records.size());
+  // By the records' places on the GPU, where the probe's pairs name them.
+  std::vector<FrameLight> out(lights.sorted.size());
   const auto add = [&](uint32_t record, const std::string& view_name, uint32_t resolution,
                        scene::LayerMask caster_mask) {
     const shadows::GpuLight& gpu = lights.records[record];
-    FrameLight& light = out[record];
+    FrameLight& light = out[lights.sorted_place[record]];
     light.shadowed = true;
     light.ray.type = record_types[std::min(gpu.info.x, 3u)];
     light.ray.position = glm::vec3(gpu.position_range);

@@ -218,7 +218,7 @@ class CrowdTest : public LightTilesTest {
 
   // No limit per tile: every tile lists the whole crowd, in order, in both shapes of the culling.
   void expect_every_tile_lists_the_crowd() {
-    const uint32_t size = uint32_t(lights.records.size());
+    const uint32_t size = uint32_t(lights.sorted.size());
     ASSERT_GT(tiles_with_surfaces, 0u);
     for (const LightCullingShape shape :
          {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
@@ -281,8 +281,8 @@ TEST_F(CrowdTest, APoolAtItsLimitLeavesOutTheLightsWorthLeast) {
   const uint64_t wanted = tiles_with_surfaces * 300;
   constexpr uint64_t limit = 20000;
   for (const bool rising : {true, false}) {
-    for (size_t i = 0; i < lights.records.size(); ++i) {
-      lights.records[i].color_intensity.a = 1.0f + float(rising ? i : 299 - i);
+    for (size_t i = 0; i < lights.sorted.size(); ++i) {
+      lights.sorted[i].color_intensity.a = 1.0f + float(rising ? i : 299 - i);
     }
     for (const LightCullingShape shape :
          {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
@@ -316,16 +316,16 @@ std::vector<LightTilesTest::Culled> LightTilesTest::cull(const shadows::FrameLig
                                   1,
                                   VK_IMAGE_VIEW_TYPE_2D,
                                   "test depth"});
-  vk::Buffer records(context, {lights.records.size() * sizeof(shadows::GpuLight),
+  vk::Buffer records(context, {lights.sorted.size() * sizeof(shadows::GpuLight),
                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::upload, "test lights"});
-  std::memcpy(records.mapped(), lights.records.data(), records.size());
+  std::memcpy(records.mapped(), lights.sorted.data(), records.size());
   vk::UploadBatch upload(context);
   upload.copy_to_image(depth_image, 1, std::as_bytes(std::span<const float>(depth)));
   upload.submit();
   vk::FrameRing ring(context);
   LightTilesPass pass(context, ring.frames_in_flight(), shape, false, most_pool_entries, most_coarse_entries);
   EXPECT_EQ(pass.shape(), shape);
-  const uint32_t light_count = uint32_t(lights.records.size());
+  const uint32_t light_count = uint32_t(lights.sorted.size());
   std::vector<Culled> culled;
   for (uint32_t f = 0; f < frames; ++f) {
     const vk::Buffer tile_lights =
@@ -383,7 +383,7 @@ void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullin
   const std::vector<uint32_t>& tiles_of_group = culled.tiles_of_group;
   const std::vector<glm::uvec4>& commands = culled.commands;
   const std::vector<TileLightSets> reference =
-      reference_light_tiles(depth, width, height, view_projection, lights.records);
+      reference_light_tiles(depth, width, height, view_projection, lights.sorted);
   ASSERT_EQ(reference.size(), grid.count());
 
   const uint32_t groups = shadows::light_group_count;
@@ -424,8 +424,8 @@ void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullin
       const glm::vec4 world = inverse * ndc;
       const glm::vec3 point = glm::vec3(world) / world.w;
       const uint32_t tile = (y / 16) * grid.across + x / 16;
-      for (uint32_t light = 0; light < lights.records.size(); ++light) {
-        if (!lights_point(lights.records[light], point)) continue;
+      for (uint32_t light = 0; light < lights.sorted.size(); ++light) {
+        if (!lights_point(lights.sorted[light], point)) continue;
         ++reached;
         const uint32_t group = std::upper_bound(lights.group_begin.begin(), lights.group_begin.end(), light) -
                                lights.group_begin.begin() - 1;
