@@ -147,8 +147,8 @@ struct FrameLights {
   // One record per light, in the order gathering lists the lights (views' `light` index it),
   // kept from frame to frame: gathering packs again only the lights written since (`refilled`,
   // their records without a shadow map), and the schedule writes the shadow fields where a map
-  // was placed, drawn, moved or lost. At 100,000 lights copying every record afresh each frame
-  // took 2 ms of gathering on one thread of the 2-core VM, and writing every shadowed record's
+  // was drawn, a record packed afresh, or a map lost. At 100,000 lights copying every record afresh each
+  // frame took 2 ms of gathering on one thread of the 2-core VM, and writing every shadowed record's
   // fields 1.4 ms of the schedule (2026-12-04).
   std::vector<GpuLight> records;
   std::vector<uint8_t> refilled;  // per record: packed afresh by the last gather

@@ -107,10 +107,11 @@ class ShadowSchedule {
                           ShadowResolution resolution = ShadowResolution::screen, double time_budget_ms = 0.0,
                           ShadowTimePolicy time_policy = ShadowTimePolicy::redraw_cost);
 
-  // Places, caches and records every shadow of `lights` (gathered, not yet sorted). `casters`
-  // are the frame's shadow casters or their changes (CasterUpdate); view_budget caps the views
-  // rendered (0: no cap), and so may the time budget. With a `pool`, the per-light work runs in
-  // pieces on it (the same result).
+  // Places, caches and records every shadow of `lights` (gathered, not yet sorted). The records
+  // gathering kept (FrameLights::refilled 0) must hold what this schedule wrote into them last:
+  // it writes a record only where that changes. `casters` are the frame's shadow casters or
+  // their changes (CasterUpdate); view_budget caps the views rendered (0: no cap), and so may the
+  // time budget. With a `pool`, the per-light work runs in pieces on it (the same result).
   void schedule(FrameLights& lights, const ShadowCamera& camera, const CasterUpdate& casters,
                 uint32_t view_budget, jobs::ThreadPool* pool = nullptr);
   // Every map must be rendered again (the atlas image was recreated).
