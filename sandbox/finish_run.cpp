@@ -180,14 +180,12 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
   // Where the schedule is a tenth of a millisecond or more (thousands of lights), its steps;
   // --stats has them always.
   if (const RunStats::CpuPhases& p = stats.cpu_phases_ms; p.schedule && p.schedule->median >= 0.1) {
-    std::string steps;
+    shadows::ScheduleStepTimes medians{};
     for (size_t step = 0; step < shadows::schedule_step_count; ++step) {
-      char figure[64];
-      std::snprintf(figure, sizeof(figure), "%s %s %.2f", step == 0 ? "" : ",",
-                    shadows::schedule_step_names[step], stats.schedule_steps_ms[step]->median);
-      steps += figure;
+      medians[step] = stats.schedule_steps_ms[step]->median;
     }
-    std::printf("shadowgraph: the shadow schedule's steps (medians):%s ms\n", steps.c_str());
+    std::printf("shadowgraph: the shadow schedule's steps (medians): %s ms\n",
+                shadows::schedule_steps_text(medians).c_str());
   }
   if (stats.wall_frame_ms) {
     std::printf("shadowgraph: wall time per frame median %.2f ms (min %.2f, max %.2f), %s lighting\n",

@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 namespace sg::shadows {
 
@@ -33,6 +35,18 @@ inline constexpr std::array<const char*, schedule_step_count> schedule_step_name
 
 // Milliseconds per step of one schedule() call.
 using ScheduleStepTimes = std::array<double, schedule_step_count>;
+
+// "views 0.45, requests 0.40, ...", for a log line.
+inline std::string schedule_steps_text(const ScheduleStepTimes& ms) {
+  std::string text;
+  for (size_t step = 0; step < schedule_step_count; ++step) {
+    char figure[48];
+    std::snprintf(figure, sizeof(figure), "%s%s %.2f", step == 0 ? "" : ", ", schedule_step_names[step],
+                  ms[step]);
+    text += figure;
+  }
+  return text;
+}
 
 // Times consecutive steps into `times`: each lap() adds the time since the last lap (or since
 // the clock was made) to its step.

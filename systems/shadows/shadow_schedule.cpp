@@ -170,11 +170,8 @@ void ShadowSchedule::schedule(FrameLights& lights, const ShadowCamera& camera, c
   // The records keep their shadow fields from frame to frame (FrameLights::records): a record is
   // written where gathering packed it afresh (without a map) or its map was drawn, and loses its
   // map where its view has none usable. A map in new tiles or of a new resolution is usable only
-  // once drawn there. A light whose record no gather packed (FrameLights filled by hand) is
-  // written every time.
-  const auto refilled = [&](uint32_t light) {
-    return light >= lights.refilled.size() || lights.refilled[light] != 0;
-  };
+  // once drawn there.
+  const auto refilled = [&](uint32_t light) { return lights.refilled[light] != 0; };
   const auto apply = [&](size_t v, auto& view, GpuLight& record, bool packed_afresh, auto&& give_map) {
     if (const uint32_t request = request_of_[v]; request != no_request) {
       redraws_[request] = !cache_lights_[v].placed || cache_lights_[v].invalid

@@ -166,14 +166,11 @@ int run(const Options& options) {
       "light-bench: medians over %zu frames %s, ms: update %.2f gather %.2f schedule %.2f sort %.2f "
       "(gather + schedule + sort %.2f)\n",
       phases.gather.size(), which.c_str(), update, gather, scheduled, sort, gather + scheduled + sort);
-  std::string steps;
-  for (size_t step = 0; step < shadows::schedule_step_count; ++step) {
-    char figure[64];
-    std::snprintf(figure, sizeof(figure), " %s %.2f", shadows::schedule_step_names[step],
-                  settled(phases.schedule_steps[step]));
-    steps += figure;
-  }
-  std::printf("light-bench: the schedule's steps, medians of the same frames, ms:%s\n", steps.c_str());
+  shadows::ScheduleStepTimes steps{};
+  for (size_t step = 0; step < shadows::schedule_step_count; ++step)
+    steps[step] = settled(phases.schedule_steps[step]);
+  std::printf("light-bench: the schedule's steps, medians of the same frames, ms: %s\n",
+              shadows::schedule_steps_text(steps).c_str());
   const shadows::ShadowScheduleStats& stats = schedule.stats();
   std::printf(
       "light-bench: last frame: %u views drawn (%u of them moving casters only), %u cached, %u lights "
