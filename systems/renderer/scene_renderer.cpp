@@ -12,7 +12,6 @@
 
 #include "rendergraph/device/context.h"
 #include "systems/gpu/camera.h"
-#include "systems/gpu/frame_upload.h"
 #include "systems/lighting/light_resources.h"
 #include "systems/shadow_maps/shadow_pass_times.h"
 
@@ -150,19 +149,22 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
        {schedule_.take_budget_message(), schedule_.take_time_budget_message()}) {
     if (message) std::printf("shadowgraph: %s\n", message->c_str());
   }
-  shadows::sort_by_group(lights_, &workers_);
   cpu_steps_.schedule = lap(mark);
 
   gpu_scene_.upload(slot, &workers_);
-  if (lights_.records.size() + lights_.cascades.size() > max_light_records_) {
-    throw std::runtime_error(std::to_string(lights_.records.size()) + " lights and " +
+  const size_t light_count = lights_.records.size();
+  if (light_count + lights_.cascades.size() > max_light_records_) {
+    throw std::runtime_error(std::to_string(light_count) + " lights and " +
                              std::to_string(lights_.cascades.size()) +
                              " cascades, but this device's texel buffers hold " +
                              std::to_string(max_light_records_) + " light records");
   }
+  // The records sorted straight into the slot's mapped buffer, the cascades' after them.
   const vk::Buffer& records =
-      write_in_pieces(light_records_, slot, std::span<const shadows::GpuLight>(lights_.sorted), &workers_,
-                      std::span<const shadows::GpuLight>(lights_.cascades));
+      light_records_.reserve(slot, (light_count + lights_.cascades.size()) * sizeof(shadows::GpuLight));
+  auto* mapped = static_cast<shadows::GpuLight*>(records.mapped());
+  shadows::sort_by_group(lights_, std::span(mapped, light_count), &workers_);
+  std::copy(lights_.cascades.begin(), lights_.cascades.end(), mapped + light_count);
   cpu_steps_.upload = lap(mark);
   const uint32_t page_size = atlas_.shape().page_size;
   if (batch_) {

@@ -159,8 +159,8 @@ class SceneRenderer {
   struct CpuSteps {
     double instances = 0.0;  // gather: drawables (GpuScene::gather)
     double lights = 0.0;     // gather: light records and shadow views (gather_lights)
-    double schedule = 0.0;   // prepare: caster boxes, tiles, caching, sorting by light group
-    double upload = 0.0;     // prepare: instance and light buffers of the slot
+    double schedule = 0.0;   // prepare: caster boxes, tiles, caching
+    double upload = 0.0;     // prepare: instance and light buffers of the slot (sorting by light group)
     double views = 0.0;      // prepare: the shadow views' records, casters and batches; lighting pipelines
   };
   const CpuSteps& cpu_steps() const { return cpu_steps_; }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cstdio>
 #include <string>
 #include <type_traits>
@@ -333,7 +334,7 @@ void place_cascades(FrameLights& lights, const CascadeCamera& camera, const scen
   }
 }
 
-void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
+void sort_by_group(FrameLights& out, std::span<GpuLight> sorted, jobs::ThreadPool* pool) {
   FrameLights::Scratch& scratch = out.scratch;
   const auto group_of = [](const GpuLight& record) {
     return light_group(shadow_kind(record), algorithm_of(record));
@@ -344,9 +345,9 @@ void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
   // H200 host, 2026-12-01). Pieces of 128 records (26 KiB) keep a thousand lights on eight threads.
   constexpr size_t piece = 128;
   const size_t count = out.records.size();
+  assert(sorted.size() == count);
   const size_t pieces = jobs::piece_count(count, piece);
   out.sorted_place.resize(count);  // each record's group, then its place
-  out.sorted.resize(count);
   scratch.piece_groups.assign(pieces * light_group_count, 0);
   scratch.piece_types.assign(pieces * light_group_count, 0);
   scratch.piece_contact.assign(pieces * light_group_count, 0);
@@ -387,7 +388,7 @@ void sort_by_group(FrameLights& out, jobs::ThreadPool* pool) {
     for (size_t i = begin; i < end; ++i) {
       const uint32_t place = places[out.sorted_place[i]]++;
       out.sorted_place[i] = place;
-      out.sorted[place] = out.records[i];
+      sorted[place] = out.records[i];
     }
   });
 }

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <numeric>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -152,10 +153,9 @@ struct FrameLights {
   // fields 1.4 ms of the schedule (2026-12-04).
   std::vector<GpuLight> records;
   std::vector<uint8_t> refilled;  // per record: packed afresh by the last gather
-  // After sort_by_group: the records ordered by light group (light_groups.h), what the GPU
-  // reads; the records of group g are [group_begin[g], group_begin[g + 1]), so a pass that
-  // shades one group reads one range. sorted_place[i] is record i's place there.
-  std::vector<GpuLight> sorted;
+  // After sort_by_group: record i's place among the records ordered by light group
+  // (light_groups.h), the order the GPU reads; the records of group g are at [group_begin[g],
+  // group_begin[g + 1]), so a pass that shades one group reads one range.
   std::vector<uint32_t> sorted_place;
   std::array<uint32_t, light_group_count + 1> group_begin{};
   // After sort_by_group, group g's light types (light_type_bits): a group's pass need hold only
@@ -230,9 +230,11 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
 // the schedule, which gives the cascades' records their maps.
 void place_cascades(FrameLights& lights, const CascadeCamera& camera, const scene::Aabb& scene_bounds);
 
-// Copies the records into `sorted` by light group (stably, so lights keep the world's order
-// within a group), from each record's type, algorithm and whether it has a shadow map, and
-// fills sorted_place. With `pool`, the records are counted and copied on its threads.
-void sort_by_group(FrameLights& lights, jobs::ThreadPool* pool = nullptr);
+// Copies the records into `sorted` (as many places as records) by light group (stably, so
+// lights keep the world's order within a group), from each record's type, algorithm and whether
+// it has a shadow map, and fills sorted_place. The renderer passes the frame's mapped light
+// buffer, so that each record is copied once a frame. With `pool`, the records are counted and
+// copied on its threads.
+void sort_by_group(FrameLights& lights, std::span<GpuLight> sorted, jobs::ThreadPool* pool = nullptr);
 
 }  // namespace sg::shadows

@@ -40,7 +40,7 @@ constexpr LightType record_types[] = {LightType::point, LightType::spot, LightTy
 
 std::vector<FrameLight> frame_lights(const shadows::FrameLights& lights) {
   // By the records' places on the GPU, where the probe's pairs name them.
-  std::vector<FrameLight> out(lights.sorted.size());
+  std::vector<FrameLight> out(lights.records.size());
   const auto add = [&](uint32_t record, const std::string& view_name, uint32_t resolution,
                        scene::LayerMask caster_mask) {
     const shadows::GpuLight& gpu = lights.records[record];

@@ -2,6 +2,7 @@
 // Tiled light culling on lavapipe against a brute-force CPU assignment of the same lights to the
 // same tiles (tests/support/light_tiles_reference.h), with validation on.
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <vector>
 
@@ -26,10 +27,23 @@ namespace {
 constexpr uint32_t width = 200;  // not a multiple of the tile size: partial tiles at the edges
 constexpr uint32_t height = 120;
 
+// Light records as the renderer uploads them: sorted by group, each group's range.
+struct SortedLights {
+  std::vector<shadows::GpuLight> sorted;
+  std::array<uint32_t, shadows::light_group_count + 1> group_begin{};
+};
+
+SortedLights sorted_by_group(shadows::FrameLights& lights) {
+  SortedLights out{std::vector<shadows::GpuLight>(lights.records.size())};
+  shadows::sort_by_group(lights, out.sorted);
+  out.group_begin = lights.group_begin;
+  return out;
+}
+
 // Lights of every type and several groups scattered in front of a camera at the origin looking
 // down -Z, spots aimed at the floor, and `behind` unshadowed point lights behind the camera, which
 // reach nothing it sees; sorted by group as the renderer uploads them.
-shadows::FrameLights scattered_lights(uint32_t behind = 0) {
+SortedLights scattered_lights(uint32_t behind = 0) {
   scene::Scene scene;
   uint32_t seed = 12345;
   const auto random = [&seed] {
@@ -74,8 +88,7 @@ shadows::FrameLights scattered_lights(uint32_t behind = 0) {
   for (const shadows::ShadowCubeView& cube : lights.cubes) {
     shadows::set_shadow_cube(lights.records[cube.light], 0, {}, 0.25f, 256, cube.position_far);
   }
-  shadows::sort_by_group(lights);
-  return lights;
+  return sorted_by_group(lights);
 }
 
 // What the camera sees: a floor at y = -4 and a wall at z = -30, and a corner of sky (the far depth).
@@ -142,7 +155,7 @@ class LightTilesTest : public GpuTest {
   // Cullings of `lights` against `depth` on the device, `frames` one after another by one pass
   // whose pools hold at most `most_pool_entries` and `most_coarse_entries` (0: the device's
   // limit), each frame's pool as the pass sizes it (LightTilesPass::pool_entries), read back.
-  std::vector<Culled> cull(const shadows::FrameLights& lights, LightCullingShape shape,
+  std::vector<Culled> cull(const SortedLights& lights, LightCullingShape shape,
                            const std::vector<float>& depth, const glm::mat4& view_projection,
                            uint32_t frames = 1, uint64_t most_pool_entries = 0,
                            uint64_t most_coarse_entries = 0);
@@ -185,8 +198,9 @@ class CrowdTest : public LightTilesTest {
       scene::add_light(scene, point, {{0.0f, 0.0f, -10.0f - 0.01f * i}}, scene::ShadowSettings{}, "crowd");
     }
     ecs::update_world_transforms(scene.world, 0);
-    shadows::gather_lights(scene.world, {glm::vec3(-20.0f), glm::vec3(20.0f)}, {false}, lights);
-    shadows::sort_by_group(lights);
+    shadows::FrameLights gathered;
+    shadows::gather_lights(scene.world, {glm::vec3(-20.0f), glm::vec3(20.0f)}, {false}, gathered);
+    lights = sorted_by_group(gathered);
     view_projection = projection_matrix(scene::Camera{}, float(width) / float(height)) *
                       view_matrix({{0, 0, 0}, {0, 0, -1}});
     depth = scene_depth(view_projection);
@@ -237,7 +251,7 @@ class CrowdTest : public LightTilesTest {
   }
 
   const LightTileGrid grid = LightTileGrid::of(width, height);
-  shadows::FrameLights lights;
+  SortedLights lights;
   glm::mat4 view_projection{1.0f};
   std::vector<float> depth;
   uint64_t tiles_with_surfaces = 0;
@@ -302,8 +316,7 @@ TEST_F(CrowdTest, APoolAtItsLimitLeavesOutTheLightsWorthLeast) {
   }
 }
 
-std::vector<LightTilesTest::Culled> LightTilesTest::cull(const shadows::FrameLights& lights,
-                                                         LightCullingShape shape,
+std::vector<LightTilesTest::Culled> LightTilesTest::cull(const SortedLights& lights, LightCullingShape shape,
                                                          const std::vector<float>& depth,
                                                          const glm::mat4& view_projection, uint32_t frames,
                                                          uint64_t most_pool_entries,
@@ -371,7 +384,7 @@ std::vector<LightTilesTest::Culled> LightTilesTest::cull(const shadows::FrameLig
 
 void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape, uint32_t behind,
                                                                      uint64_t most_coarse_entries) {
-  const shadows::FrameLights lights = scattered_lights(behind);
+  const SortedLights lights = scattered_lights(behind);
   const glm::mat4 view_projection =
       projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
   const std::vector<float> depth = scene_depth(view_projection);

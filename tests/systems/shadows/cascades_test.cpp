@@ -187,8 +187,10 @@ TEST(Cascades, ACascadedSunHasAViewAndARecordPerCascade) {
     EXPECT_EQ(lights.cascades[k].info.w, map.tile.page);
     EXPECT_EQ(lights.cascades[k].shadow_matrix, map.view.view_projection());
   }
-  sort_by_group(lights);
-  EXPECT_EQ(lights.records[lights.cascaded[0].record].info.x, uint32_t(GpuLightType::directional));
+  std::vector<GpuLight> sorted(lights.records.size());
+  sort_by_group(lights, sorted);
+  EXPECT_EQ(sorted[lights.sorted_place[lights.cascaded[0].record]].info.x,
+            uint32_t(GpuLightType::directional));
 
   // Far away, the sun needs one cascade: the others ask for no tile and count for nothing.
   gather_lights(scene.world, hall, {}, lights);

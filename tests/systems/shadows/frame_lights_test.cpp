@@ -53,6 +53,13 @@ scene::Scene five_lights() {
   return scene;
 }
 
+// sort_by_group into an array of its own (the renderer's is the frame's light buffer).
+std::vector<GpuLight> sorted_by_group(FrameLights& lights, jobs::ThreadPool* pool = nullptr) {
+  std::vector<GpuLight> sorted(lights.records.size());
+  sort_by_group(lights, sorted, pool);
+  return sorted;
+}
+
 // A camera at `eye` looking down -Z with a 90 degree field of view, 1000 pixels high.
 // `record` with `other`'s shadow fields (its map, where and how drawn): what gathering sets, with
 // what the schedule sets taken from another record.
@@ -234,7 +241,7 @@ TEST(ShadowSchedule, GivesEachShadowedRecordItsTiles) {
   gather_lights(scene.world, bounds, {}, lights);
   ShadowSchedule schedule(small_atlas);
   schedule.schedule(lights, camera_at({0.0f, 5.0f, 2.0f}), {}, 0);  // the camera is inside every reach
-  sort_by_group(lights);
+  sorted_by_group(lights);
 
   const ShadowMapView& key = lights.maps[0];
   ASSERT_EQ(key.resolution, 512u);
@@ -615,7 +622,7 @@ TEST(FrameLights, AGatherKeepingUnchangedLightsEqualsAFreshGather) {
     // As the renderer goes on: moving crates redraw maps over their static layers.
     const std::vector<scene::Aabb> moving{crate_at(-2.0f - float(frame)), crate_at(-3.0f - float(frame))};
     schedule.schedule(kept, camera_at({10.0f, 10.0f, 5.0f}), CasterUpdate::changes({}, moving), 200, &pool);
-    sort_by_group(kept, &pool);
+    sorted_by_group(kept, &pool);
   }
 }
 
@@ -635,6 +642,7 @@ TEST(ShadowSchedule, KeptRecordsHoldWhatWritingEveryRecordGives) {
   ecs::World& world = scene.world;
   ecs::update_world_transforms(world, 0);
   FrameLights skipping, writing;
+  std::vector<GpuLight> skipping_sorted, writing_sorted;
   ShadowSchedule skipping_schedule(AtlasConfig{1024, 2, min_shadow_resolution}, true);
   ShadowSchedule writing_schedule(AtlasConfig{1024, 2, min_shadow_resolution}, true);
   std::mt19937 random(5);
@@ -649,14 +657,15 @@ TEST(ShadowSchedule, KeptRecordsHoldWhatWritingEveryRecordGives) {
     transforms_at = world.tick();
     const ShadowCamera camera = camera_at({float(frame) - 10.0f, 6.0f, 10.0f - float(frame)});
     const std::vector<scene::Aabb> moving{crate_at(-float(frame % 20) * 2.0f)};
-    for (auto [lights_now, schedule, write_all] :
-         {std::tuple(&skipping, &skipping_schedule, false), std::tuple(&writing, &writing_schedule, true)}) {
+    for (auto [lights_now, schedule, sorted, write_all] :
+         {std::tuple(&skipping, &skipping_schedule, &skipping_sorted, false),
+          std::tuple(&writing, &writing_schedule, &writing_sorted, true)}) {
       gather_lights(world, bounds, {}, *lights_now);
       if (write_all) lights_now->refilled.assign(lights_now->records.size(), 1);
       if (!write_all)
         written_less += size_t(std::count(lights_now->refilled.begin(), lights_now->refilled.end(), 0));
       schedule->schedule(*lights_now, camera, CasterUpdate::changes({}, moving), 60);
-      sort_by_group(*lights_now);
+      *sorted = sorted_by_group(*lights_now);
     }
     SCOPED_TRACE("frame " + std::to_string(frame));
     // A record has a map exactly where its view has one.
@@ -672,7 +681,7 @@ TEST(ShadowSchedule, KeptRecordsHoldWhatWritingEveryRecordGives) {
           << "record " << i;
     }
     EXPECT_EQ(
-        std::memcmp(skipping.sorted.data(), writing.sorted.data(), writing.sorted.size() * sizeof(GpuLight)),
+        std::memcmp(skipping_sorted.data(), writing_sorted.data(), writing_sorted.size() * sizeof(GpuLight)),
         0);
     EXPECT_EQ(skipping.sorted_place, writing.sorted_place);
     EXPECT_EQ(skipping.group_begin, writing.group_begin);
@@ -736,18 +745,22 @@ TEST(ShadowSchedule, AThreadPoolSchedulesTheSameShadows) {
 }
 
 // five_lights() gathered, given maps from above and sorted by group.
-FrameLights five_lights_by_group() {
-  const scene::Scene scene = five_lights();
+struct FiveLightsByGroup {
   FrameLights lights;
-  gather_lights(scene.world, bounds, {}, lights);
+  std::vector<GpuLight> sorted;
+};
+FiveLightsByGroup five_lights_by_group() {
+  const scene::Scene scene = five_lights();
+  FiveLightsByGroup out;
+  gather_lights(scene.world, bounds, {}, out.lights);
   ShadowSchedule schedule(small_atlas);
-  schedule.schedule(lights, camera_at({0.0f, 5.0f, 2.0f}), {}, 0);
-  sort_by_group(lights);
-  return lights;
+  schedule.schedule(out.lights, camera_at({0.0f, 5.0f, 2.0f}), {}, 0);
+  out.sorted = sorted_by_group(out.lights);
+  return out;
 }
 
 TEST(FrameLights, RecordsAreOrderedByLightGroup) {
-  const FrameLights lights = five_lights_by_group();
+  const auto [lights, sorted] = five_lights_by_group();
   // Every light here uses pcf: "fill" is unshadowed, key and the sun have 2D maps, two cubes.
   const uint32_t map_pcf = light_group(ShadowKind::map, scene::ShadowAlgorithm::pcf);
   const uint32_t cube_pcf = light_group(ShadowKind::cube, scene::ShadowAlgorithm::pcf);
@@ -763,16 +776,16 @@ TEST(FrameLights, RecordsAreOrderedByLightGroup) {
   for (const ShadowCubeView& cube : lights.cubes) {
     EXPECT_EQ(lights.records[cube.light].info.x, uint32_t(GpuLightType::point));
     EXPECT_GE(lights.sorted_place[cube.light], lights.group_begin[cube_pcf]);
-    EXPECT_EQ(std::memcmp(&lights.sorted[lights.sorted_place[cube.light]], &lights.records[cube.light],
-                          sizeof(GpuLight)),
-              0);
+    EXPECT_EQ(
+        std::memcmp(&sorted[lights.sorted_place[cube.light]], &lights.records[cube.light], sizeof(GpuLight)),
+        0);
   }
   // Each group's light types: its lights' light_type_bits, none for an empty group.
   const auto bit = [](GpuLightType type) { return 1u << uint32_t(type); };
   for (uint32_t group = 0; group < light_group_count; ++group) {
     uint32_t types = 0;
     for (uint32_t i = lights.group_begin[group]; i < lights.group_begin[group + 1]; ++i) {
-      types |= light_type_bits(lights.sorted[i]);
+      types |= light_type_bits(sorted[i]);
     }
     EXPECT_EQ(lights.group_types[group], types) << "group " << group;
   }
@@ -788,7 +801,7 @@ TEST(FrameLights, RecordsAreOrderedByLightGroup) {
 // What a shader shading every group at once is specialized on: the groups with lights, those with
 // one, their light types together and each 2D group's own.
 TEST(FrameLights, GroupsPresentAreTheGroupsWithLightsAndThoseWithOne) {
-  const FrameLights lights = five_lights_by_group();
+  const FrameLights lights = five_lights_by_group().lights;
   const GroupsPresent groups = groups_present(lights.group_begin, lights.group_types);
   const uint32_t map_pcf = light_group(ShadowKind::map, scene::ShadowAlgorithm::pcf);
   const uint32_t cube_pcf = light_group(ShadowKind::cube, scene::ShadowAlgorithm::pcf);
@@ -822,19 +835,18 @@ TEST(SortByGroup, OnAThreadPoolMovesTheRecordsAsSerially) {
     serial.records.push_back(record);
   }
   FrameLights pooled = serial;
-  sort_by_group(serial);
+  const std::vector<GpuLight> serial_sorted = sorted_by_group(serial);
   jobs::ThreadPool pool(4);
-  sort_by_group(pooled, &pool);
+  const std::vector<GpuLight> pooled_sorted = sorted_by_group(pooled, &pool);
   EXPECT_EQ(pooled.group_begin, serial.group_begin);
   EXPECT_EQ(pooled.group_types, serial.group_types);
   EXPECT_EQ(pooled.sorted_place, serial.sorted_place);
-  ASSERT_EQ(pooled.sorted.size(), serial.records.size());
-  EXPECT_EQ(std::memcmp(pooled.sorted.data(), serial.sorted.data(), serial.sorted.size() * sizeof(GpuLight)),
+  EXPECT_EQ(std::memcmp(pooled_sorted.data(), serial_sorted.data(), serial_sorted.size() * sizeof(GpuLight)),
             0);
   // Within each group the lights keep their order (the serial sort's groups are tested above).
   for (uint32_t group = 0; group < light_group_count; ++group) {
     for (uint32_t i = pooled.group_begin[group] + 1; i < pooled.group_begin[group + 1]; ++i) {
-      EXPECT_LT(pooled.sorted[i - 1].position_range.x, pooled.sorted[i].position_range.x) << i;
+      EXPECT_LT(pooled_sorted[i - 1].position_range.x, pooled_sorted[i].position_range.x) << i;
     }
   }
   EXPECT_GT(pooled.group_begin[light_group_count - 1], pooled.group_begin[1]);  // several groups
