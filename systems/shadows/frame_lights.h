@@ -169,7 +169,7 @@ struct FrameLights {
   }
   std::vector<ShadowMapView> maps;
   std::vector<ShadowCubeView> cubes;
-  // The cascades' records (cascades.h), uploaded right after `sorted`: a cascaded light's
+  // The cascades' records (cascades.h), uploaded right after the sorted records: a cascaded light's
   // record holds the index of its first one there (records.size() + its place here) and how
   // many the view uses (light_record.glsl). Each row of `cascaded` is one cascaded light.
   std::vector<GpuLight> cascades;
