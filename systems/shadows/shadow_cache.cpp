@@ -2,6 +2,7 @@
 #include "systems/shadows/shadow_cache.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <stdexcept>
@@ -327,22 +328,33 @@ void ShadowCache::choose_renders(std::span<const ShadowCacheLight> lights, uint3
   }
 
   // What is left is less than a light the walk skipped needs (a view or two where a cube did not
-  // fit): the stalest later light that fits takes it, then the next, as the walk would go on. Each
-  // takes a view or more, so a pass over the order per view left at most picks them out: sorting
-  // every later light instead (99,000 with every light moving) took 0.2-0.36 ms of one thread of
-  // the 2-core VM to render one (2026-12-05).
+  // fit): the stalest later lights that fit take it, as the walk would go on. Each takes a view or
+  // more, so at most views_left of them render: one pass over the order keeps that many, in
+  // walking order, and they are walked. Only a skip among them (lights of several sizes under
+  // a cube's) takes another pass. Sorting every later light instead (99,000 with every light
+  // moving) took 0.2-0.36 ms of one thread of the 2-core VM to render one (2026-12-05).
   while (views_left > 0) {
-    uint64_t stalest = UINT64_MAX;  // rank << 32 | index, the first of the lowest rank in key order
+    std::array<uint64_t, 8> stalest;  // rank << 32 | index, by rank, then in key order
+    const size_t most = std::min<size_t>(views_left, stalest.size());
+    size_t kept = 0;
     for (const uint64_t ordered : order_) {
       const auto i = static_cast<uint32_t>(ordered);
-      if ((ordered >> 32) < (stalest >> 32) && bucket(ordered) > boundary && render[i] == 0 &&
-          lights[i].views <= views_left) {
-        stalest = ordered;
+      if (bucket(ordered) <= boundary || (kept == most && (ordered >> 32) >= (stalest[kept - 1] >> 32)) ||
+          render[i] != 0 || lights[i].views > views_left) {
+        continue;
       }
+      size_t at = std::min(kept, most - 1);  // after the lights of its rank, dropping the last
+      for (; at > 0 && (stalest[at - 1] >> 32) > (ordered >> 32); --at) stalest[at] = stalest[at - 1];
+      stalest[at] = ordered;
+      kept = std::min(kept + 1, most);
     }
-    if (stalest == UINT64_MAX) break;
-    render[uint32_t(stalest)] = 1;
-    views_left -= lights[uint32_t(stalest)].views;
+    if (kept == 0) break;
+    for (size_t k = 0; k < kept && views_left > 0; ++k) {
+      const auto i = static_cast<uint32_t>(stalest[k]);
+      if (lights[i].views > views_left) continue;
+      render[i] = 1;
+      views_left -= lights[i].views;
+    }
   }
 }
 

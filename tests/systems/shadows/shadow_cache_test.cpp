@@ -271,13 +271,17 @@ TEST(ShadowCache, LongLagsAreRankedExactly) {
 // the choice is, frame after frame, a plain model's: lights without a valid map, then the
 // others, each by the frame they last rendered in, ties by key, each taken while its views fit (cubes leave
 // views no cube fits, so lights behind them are looked at too); on a pool as on one thread.
+// Spots and cubes; with `sizes`, lights of two and three views too, so that the views a cube
+// leaves are taken by lights that do not all fit.
 TEST(ShadowCache, ChoosesTheStalestInOrderAsAPlainModelDoes) {
-  for (const uint32_t light_count : {1500u, 3000u}) {
+  for (const auto& [light_count, sizes] :
+       {std::pair(1500u, false), std::pair(3000u, false), std::pair(3000u, true)}) {
     std::vector<ShadowCacheLight> lights;
-    std::mt19937 random(light_count);
+    std::mt19937 random(light_count + sizes);
     for (uint32_t i = 0; i < light_count; ++i) {
       const uint64_t key = uint64_t{random()} << 16 | i;  // keys out of order
       lights.push_back(i % 3 == 0 ? spot(key) : cube(key));
+      if (sizes && i % 3 == 1) lights.back().views = 2 + i % 2;
     }
     const uint32_t budget = light_count + 3;
     ShadowCache serial;
@@ -362,6 +366,25 @@ TEST(ShadowCache, ALightLargerThanTheBudgetLeftWaitsWhileSmallerOnesBehindItRend
   const Plan second = plan(cache, lights, 6);
   EXPECT_EQ(second.render, (std::vector<uint8_t>{0, 1, 0}));
   EXPECT_EQ(cache.stats().lights_waiting, 2u);
+}
+
+// The views a skipped cube leaves go to the stalest later lights that fit, in key order within a
+// staleness, each as the views left allow: lights of two and three views here, so that one is
+// skipped there too.
+TEST(ShadowCache, ViewsACubeLeftGoToTheStalestLaterLightsThatFit) {
+  ShadowCache cache;
+  std::vector<ShadowCacheLight> lights{spot(1), cube(2), spot(10), spot(11), spot(12), spot(13)};
+  lights[2].views = 3;
+  lights[3].views = 2;
+  plan(cache, lights);  // every map drawn on frame 1
+  for (size_t i = 2; i < lights.size(); ++i) lights[i].changed = true;
+  plan(cache, lights);  // the later four again on frame 2: staler are the first two
+  for (ShadowCacheLight& light : lights) light.changed = true;
+  // Five views: the spot keyed 1 takes one, the cube does not fit the four left; of them the
+  // three-view light takes three, the two-view one does not fit what is left, the spot keyed 12
+  // takes it.
+  EXPECT_EQ(plan(cache, lights, 5).render, (std::vector<uint8_t>{1, 0, 1, 0, 1, 0}));
+  EXPECT_EQ(cache.stats().views_rendered, 5u);
 }
 
 TEST(ShadowCache, InvalidateAllMakesEveryMapUnusableUntilRendered) {
