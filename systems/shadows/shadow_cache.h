@@ -173,7 +173,7 @@ class ShadowCache {
   std::vector<KeyedLight> dirty_by_key_;
   std::vector<KeyedLight> by_key_scratch_;
   // The dirty lights in key order, as staleness rank << 32 | index in `lights`; each piece's
-  // views per rank bucket; the lights of the buckets walked, ordered by rank.
+  // views per rank bucket; the lights of the bucket where the budget runs out, ordered by rank.
   std::vector<uint64_t> order_;
   std::vector<uint64_t> piece_views_;
   std::vector<uint64_t> rest_;
