@@ -148,7 +148,7 @@ class Query {
     }
     if (watched_ != nullptr) {
       // Collected first, so writes made by the callback cannot change what this pass visits.
-      std::vector<std::uint32_t> changed;
+      std::vector<std::uint32_t> changed = world_->lend_slot_list();
       watched_->collect_changed_since(since_, changed);
       jobs::run_in_pieces(threads, changed.size(), entities_per_task,
                           [&](std::size_t begin, std::size_t end) {
@@ -156,6 +156,7 @@ class Query {
                                 watched_, [&](std::size_t i) { return changed[i]; }, begin, end, now, fn,
                                 std::index_sequence_for<Components...>{}, nullptr);
                           });
+      world_->give_back_slot_list(std::move(changed));
       return;
     }
     const auto identity = [](std::size_t i) { return static_cast<std::uint32_t>(i); };

@@ -36,6 +36,18 @@ void World::sort_by_entity_later(SparseSet& pool) const {
   }
 }
 
+std::vector<std::uint32_t> World::lend_slot_list() const {
+  if (slot_lists_.empty()) return {};
+  std::vector<std::uint32_t> list = std::move(slot_lists_.back());
+  slot_lists_.pop_back();
+  list.clear();
+  return list;
+}
+
+void World::give_back_slot_list(std::vector<std::uint32_t> list) const {
+  slot_lists_.push_back(std::move(list));
+}
+
 void World::forget_removals_before(Tick tick) {
   for (const std::unique_ptr<SparseSet>& set : pools_) {
     if (set != nullptr) set->forget_removals_before(tick);

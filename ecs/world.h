@@ -217,10 +217,16 @@ class World {
   // Asked by a query that had to look its entities up in pools of one size; sorted at the next
   // advance_tick, never during a query (a callback may run another query over the same pools).
   void sort_by_entity_later(SparseSet& pool) const;
+  // A changed-since query's list of the slots it visits, lent (empty) for the query's length and
+  // given back for the next: gathering lights runs five such queries a frame, 100,000 slots each
+  // with every light moving, and a callback may run another query, so one list per query running.
+  std::vector<std::uint32_t> lend_slot_list() const;
+  void give_back_slot_list(std::vector<std::uint32_t> list) const;
 
   EntityRegistry entities_;
   std::vector<std::unique_ptr<SparseSet>> pools_;  // by component_id; null if never used
   mutable std::vector<SparseSet*> pools_to_sort_;
+  mutable std::vector<std::vector<std::uint32_t>> slot_lists_;  // lent by lend_slot_list
   std::vector<std::unique_ptr<OwningGroup>> groups_;
   Tick tick_ = 1;  // 0 is "before anything happened", so changed_since(0) means "ever"
 };

@@ -217,6 +217,37 @@ TEST(ChangeDetection, WritesInsideChangedQueryDoNotRepeatOrHideEntities) {
   EXPECT_EQ(visits, 2);
 }
 
+// A changed-since query run inside another's callback lists its own changes: each query running
+// borrows a slot list of its own from the world, over frames in which the lists are reused.
+TEST(ChangeDetection, AChangedQueryInsideAnotherListsItsOwnChanges) {
+  World world;
+  std::vector<Entity> entities;
+  for (int i = 0; i < 8; ++i) entities.push_back(test::spawn_moving(world));
+  for (int frame = 0; frame < 3; ++frame) {
+    const Tick before = world.tick();
+    world.advance_tick();
+    for (int i = 0; i < 8; ++i) {
+      if (i % 2 == frame % 2) world.get_mut<Position>(entities[i]);
+      if (i % 3 == frame % 3) world.get_mut<Velocity>(entities[i]);
+    }
+    std::vector<Entity> positions, velocities;
+    world.query<const Position>().changed_since<Position>(before).for_each(
+        [&](Entity entity, const Position&) {
+          positions.push_back(entity);
+          if (positions.size() > 1) return;
+          world.query<const Velocity>().changed_since<Velocity>(before).for_each(
+              [&](Entity moved, const Velocity&) { velocities.push_back(moved); });
+        });
+    std::vector<Entity> expected_positions, expected_velocities;
+    for (int i = 0; i < 8; ++i) {
+      if (i % 2 == frame % 2) expected_positions.push_back(entities[i]);
+      if (i % 3 == frame % 3) expected_velocities.push_back(entities[i]);
+    }
+    EXPECT_EQ(sorted(positions), sorted(expected_positions)) << "frame " << frame;
+    EXPECT_EQ(sorted(velocities), sorted(expected_velocities)) << "frame " << frame;
+  }
+}
+
 TEST(ChangeDetection, PartialWritesOverManyTicksMatchAModel) {
   // Sparse writes, adds and removals over enough ticks for the change log to be compacted in
   // several passes, each spread over ticks; every tick the reported history is checked against
