@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include <sys/mman.h>
+
 #include "rendergraph/device/vulkan_error.h"
 
 namespace sg::vk {
@@ -28,11 +30,31 @@ MemoryPreference preference_for(MemoryUsage usage) {
 
 bool is_host_visible(MemoryUsage usage) { return usage != MemoryUsage::gpu_only; }
 
+// On a CPU device the shaders read every image through this mapping, and a shadow atlas's rows
+// lie 16 KiB apart: each row a kernel's taps reach is another 4 KiB page. Asked before anything
+// touches the block, the kernel backs it with 2 MiB pages where transparent huge pages are left
+// to madvise (Debian's default). Advice only: where the kernel declines, nothing changes.
+// Lavapipe, `default` at 1280x720 on a 2-core EPYC VM, 2026-12-05: frames 126-132 ms against
+// 130-148 without, five interleaved runs (docs/PERFORMANCE.md).
+void advise_huge_pages(void* mapped, VkDeviceSize size) {
+#ifdef MADV_HUGEPAGE
+  constexpr uintptr_t page = 4096;
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(mapped) + page - 1) & ~(page - 1);
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(mapped) + size) & ~(page - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)mapped, (void)size;
+#endif
+}
+
 }  // namespace
 
 GpuAllocator::GpuAllocator(VkPhysicalDevice physical_device, VkDevice device, VkDeviceSize block_size)
     : device_(device), block_size_(block_size) {
   vkGetPhysicalDeviceMemoryProperties(physical_device, &memory_properties_);
+  VkPhysicalDeviceProperties properties;
+  vkGetPhysicalDeviceProperties(physical_device, &properties);
+  host_memory_ = properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
 }
 
 GpuAllocator::~GpuAllocator() {
@@ -71,6 +93,7 @@ uint32_t GpuAllocator::create_block(uint32_t memory_type, ResourceTiling tiling,
   const VkMemoryPropertyFlags flags = memory_properties_.memoryTypes[memory_type].propertyFlags;
   if (flags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) {
     check(vkMapMemory(device_, block.memory, 0, VK_WHOLE_SIZE, 0, &block.mapped), "vkMapMemory");
+    if (host_memory_) advise_huge_pages(block.mapped, size);
   }
   block.memory_type = memory_type;
   block.tiling = tiling;

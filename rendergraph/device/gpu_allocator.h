@@ -69,6 +69,7 @@ class GpuAllocator {
 
   VkDevice device_;
   VkDeviceSize block_size_;
+  bool host_memory_ = false;  // a CPU device: blocks are the process's own pages
   VkPhysicalDeviceMemoryProperties memory_properties_{};
   std::vector<Block> blocks_;  // a freed block keeps its slot (memory null) so indices stay valid
 };

@@ -1,5 +1,10 @@
 // SPDX-License-Identifier: MIT
+#include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -73,6 +78,38 @@ TEST_F(ContextTest, ResourceLargerThanABlockGetsItsOwnBlock) {
   const vk::MemoryStats stats = context.allocator().stats();
   EXPECT_EQ(stats.block_count, 2u);
   EXPECT_GE(stats.reserved_bytes, big + vk::GpuAllocator::default_block_size);
+}
+
+// The VmFlags of the mapping holding `address` in /proc/self/smaps; empty when none is found.
+std::string mapping_flags(const void* address) {
+  const auto at = reinterpret_cast<std::uintptr_t>(address);
+  std::ifstream smaps("/proc/self/smaps");
+  bool inside = false;
+  for (std::string line; std::getline(smaps, line);) {
+    std::uintptr_t begin = 0, end = 0;
+    char dash = 0;
+    std::istringstream range(line);
+    if (range >> std::hex >> begin >> dash >> end && dash == '-') {
+      inside = begin <= at && at < end;
+    } else if (inside && line.starts_with("VmFlags:")) {
+      return line;
+    }
+  }
+  return {};
+}
+
+TEST_F(ContextTest, CpuDeviceBlocksAskForHugePages) {
+  if (context.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)
+    GTEST_SKIP() << "a GPU's memory is its own";
+  if (!std::filesystem::exists("/sys/kernel/mm/transparent_hugepage") ||
+      !std::filesystem::exists("/proc/self/smaps")) {
+    GTEST_SKIP() << "no transparent huge pages here";
+  }
+  vk::Buffer buffer(context, {1 << 20, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::upload, "huge"});
+  ASSERT_NE(buffer.mapped(), nullptr);
+  const std::string flags = mapping_flags(buffer.mapped());
+  ASSERT_FALSE(flags.empty()) << "no mapping holds the buffer's memory";
+  EXPECT_NE((flags + " ").find(" hg "), std::string::npos) << flags;
 }
 
 TEST_F(ContextTest, StagedUploadReachesDeviceLocalBuffer) {
