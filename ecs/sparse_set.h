@@ -94,11 +94,14 @@ class SparseSet {
   // different slots may run concurrently (a parallel query): the slot tick is the caller's
   // alone, and neighbours share summaries, which are written atomically (all with the same
   // `now`, so any order is right). Plain pointers like LiveLookup, with the same validity.
+  // Inlined by force: called out of line from a query's loop, the call stalled on the tick's
+  // store while the loop's prefetches waited (a scattered write through lookups 14.0-14.6 ns an
+  // entity against 12.6-12.8 inlined, 2-core EPYC VM, 2026-12-05).
   struct ChangeMarker {
     Tick* ticks;
     Tick* block_ticks;
     Tick* group_ticks;
-    void operator()(std::uint32_t slot, Tick now) const {
+    [[gnu::always_inline]] void operator()(std::uint32_t slot, Tick now) const {
       ticks[slot] = now;
       mark_summary(block_ticks[slot / slots_per_block], now);
       mark_summary(group_ticks[slot / slots_per_group], now);
