@@ -3,7 +3,8 @@
 // Device memory suballocator: resources take ranges of large VkDeviceMemory blocks instead of
 // one vkAllocateMemory each (drivers cap the number of allocations, e.g. 4096, and each one is
 // slow). Linear resources (buffers) and optimal-tiling images live in separate blocks, so
-// bufferImageGranularity never needs padding. Host-visible blocks stay persistently mapped.
+// bufferImageGranularity never needs padding. Host-visible blocks stay persistently mapped; on
+// CPU devices each asks for 2 MiB pages as it is mapped.
 // Not thread-safe: the engine allocates from one thread.
 #include <cstdint>
 #include <memory>
