@@ -6,6 +6,7 @@
 #include <string>
 
 #include <sys/mman.h>
+#include <unistd.h>
 
 #include "rendergraph/device/vulkan_error.h"
 
@@ -38,7 +39,7 @@ bool is_host_visible(MemoryUsage usage) { return usage != MemoryUsage::gpu_only;
 // 130-148 without, five interleaved runs (docs/PERFORMANCE.md).
 void advise_huge_pages(void* mapped, VkDeviceSize size) {
 #ifdef MADV_HUGEPAGE
-  constexpr uintptr_t page = 4096;
+  const auto page = static_cast<uintptr_t>(sysconf(_SC_PAGESIZE));  // 16 or 64 KiB on some ARM kernels
   const uintptr_t begin = (reinterpret_cast<uintptr_t>(mapped) + page - 1) & ~(page - 1);
   const uintptr_t end = (reinterpret_cast<uintptr_t>(mapped) + size) & ~(page - 1);
   if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
