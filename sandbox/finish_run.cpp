@@ -131,6 +131,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
   const std::optional<shadows::ShadowRaster> raster = renderer.shadow_raster();
   stats.shadows = {std::string(to_string(renderer.shadow_views())),
                    raster ? std::optional<std::string>(to_string(*raster)) : std::nullopt,
+                   renderer.shadow_comparisons_filtered() ? "linear" : "nearest",
                    atlas.shape().budget_bytes,
                    atlas.shape().page_size,
                    atlas.pages(),

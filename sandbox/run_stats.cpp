@@ -141,6 +141,7 @@ Json stats_json(const RunStats& stats) {
           {"shadows",
            {{"views", shadows.views},
             {"raster", shadows.raster ? Json(*shadows.raster) : Json()},
+            {"comparison_filter", shadows.comparison_filter},
             {"budget_bytes", shadows.budget_bytes},
             {"page_size", shadows.page_size},
             {"pages", shadows.pages},

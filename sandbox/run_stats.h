@@ -59,6 +59,9 @@
 //   "shadows": {
 //     "views": "batched",                        // batched or per-light (--shadow-views)
 //     "raster": "compute",                       // batched: compute or hardware; per-light: null
+//     "comparison_filter": "linear",             // the 2D kernels' hardware taps: linear, each a
+//                                                // bilinear 2x2; nearest where the device cannot
+//                                                // filter the maps' depth format (harder edges)
 //     "budget_bytes": 1073741824,                // the atlas's budget (--shadow-memory)
 //     "page_size": 4096, "pages": 2,             // the atlas image: pages of page_size texels
 //     "used_bytes": 12345678,                    // what the lights' tiles take, last frame
@@ -177,6 +180,7 @@ struct RunStats {
   struct Shadows {
     std::string views;
     std::optional<std::string> raster;
+    std::string comparison_filter;  // linear or nearest
     std::uint64_t budget_bytes = 0;
     std::uint32_t page_size = 0;
     std::uint32_t pages = 0;

@@ -15,9 +15,7 @@ VkFilter compare_filter(const vk::VulkanContext& context) {
   VkFormatProperties properties;
   vkGetPhysicalDeviceFormatProperties(context.physical_device(), vk::to_vk(ShadowAtlas::depth_format),
                                       &properties);
-  const bool filterable =
-      properties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-  return filterable ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  return comparison_filter(properties.optimalTilingFeatures);
 }
 
 LightRecordsIn resolved(LightRecordsIn records, const vk::VulkanContext& context) {
@@ -27,6 +25,15 @@ LightRecordsIn resolved(LightRecordsIn records, const vk::VulkanContext& context
 }
 
 }  // namespace
+
+VkFilter comparison_filter(VkFormatFeatureFlags features) {
+  return (features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0 ? VK_FILTER_LINEAR
+                                                                             : VK_FILTER_NEAREST;
+}
+
+bool shadow_comparisons_filter(const vk::VulkanContext& context) {
+  return compare_filter(context) == VK_FILTER_LINEAR;
+}
 
 LightResources::LightResources(const vk::VulkanContext& context, LightRecordsIn records)
     : records_(resolved(records, context)),

@@ -3,7 +3,7 @@
 // What every pass that shades lights binds (shaders/lights_interface.glsl): the frame's light
 // records and the shadow atlas, with the samplers shadow_sampling.glsl expects. Nearest reads,
 // and a comparison sampler whose linear filter makes each fetch a hardware 2x2 PCF (nearest
-// where the device cannot filter the depth format).
+// where the device cannot filter the depth format: shadow_comparisons_filter).
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -18,6 +18,13 @@ namespace sg {
 
 // The records' texel format where a shader reads them through a texel buffer (LightRecordsIn).
 inline constexpr VkFormat light_record_texel_format = VK_FORMAT_R32G32B32A32_UINT;
+
+// The comparison sampler's filter for a depth format with `features` (its optimal tiling's):
+// linear, each comparison a bilinear 2x2, where the format can be filtered; nearest, one texel,
+// where not (lavapipe cannot filter d32_sfloat).
+VkFilter comparison_filter(VkFormatFeatureFlags features);
+// Whether `context`'s device filters the shadow atlas's comparisons (ShadowAtlas::depth_format).
+bool shadow_comparisons_filter(const vk::VulkanContext& context);
 
 class LightResources {
  public:

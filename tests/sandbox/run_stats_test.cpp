@@ -100,6 +100,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.contact_shadows_skipped = 3;
   stats.shadows = {"batched",
                    "compute",
+                   "nearest",
                    1ull << 30,
                    4096,
                    1,
@@ -203,9 +204,10 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                                                  {"lighting", "deferred"},
                                                  {"camera", nullptr}}));
   const nlohmann::json& shadows = json.at("shadows");
-  EXPECT_EQ(shadows.size(), 19u) << shadows.dump(2);
+  EXPECT_EQ(shadows.size(), 20u) << shadows.dump(2);
   EXPECT_EQ(shadows.at("views"), "batched");
   EXPECT_EQ(shadows.at("raster"), "compute");
+  EXPECT_EQ(shadows.at("comparison_filter"), "nearest");
   EXPECT_EQ(shadows.at("budget_bytes"), 1ull << 30);
   EXPECT_EQ(shadows.at("page_size"), 4096);
   EXPECT_EQ(shadows.at("pages"), 1);
