@@ -96,6 +96,8 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
   stats.device = context.device_name();
   stats.width = frame.image().extent().width;
   stats.height = frame.image().extent().height;
+  stats.scene_width = frame.scene_extent().width;
+  stats.scene_height = frame.scene_extent().height;
   stats.frames = record.cpu_frame_ms.size();
   stats.scene_name = scene.scene.name;
   stats.scene = scene::scene_stats(scene.scene);

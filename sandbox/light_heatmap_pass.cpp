@@ -19,6 +19,7 @@ constexpr float full_scale = 32.0f;
 struct HeatMap {
   uint32_t tiles_across;
   float full_scale;
+  float scene_per_frame;  // scene pixels per frame pixel
 };
 
 }  // namespace
@@ -36,22 +37,23 @@ LightHeatmapPass::LightHeatmapPass(vk::VulkanContext& context, rg::Format color_
                                                        .name = "light heat map"})) {}
 
 rg::ImageHandle LightHeatmapPass::add_to(rg::RenderGraph& graph, const LightTiles& tiles,
-                                         rg::ImageHandle color) const {
-  const rg::ImageDesc& frame = graph.resources()[color.index].image;
-  const LightTileGrid grid = LightTileGrid::of(frame.width, frame.height);
+                                         rg::ImageHandle scene, rg::ImageHandle color) const {
+  const rg::ImageDesc& culled = graph.resources()[scene.index].image;
+  const LightTileGrid grid = LightTileGrid::of(culled.width, culled.height);
+  const float scene_per_frame = float(culled.width) / float(graph.resources()[color.index].image.width);
   graph.add_pass(
       "light heat map",
       [&](rg::PassBuilder& b) {
         b.read(tiles.ranges, rg::Usage::storage_fragment);
         color = b.write(color, rg::Usage::color_attachment);  // no clear: over the frame
       },
-      [this, ranges = tiles.ranges, grid](const vk::PassRecorder& rec) {
+      [this, ranges = tiles.ranges, grid, scene_per_frame](const vk::PassRecorder& rec) {
         rec.set_full_viewport();
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
         layout_.bind(
             rec.cmd(),
             layout_.write(rec.allocate_set(layout_)).buffer(ranges_binding, rec.buffer(ranges)).update());
-        layout_.push(rec.cmd(), HeatMap{grid.across, full_scale});
+        layout_.push(rec.cmd(), HeatMap{grid.across, full_scale, scene_per_frame});
         vkCmdDraw(rec.cmd(), 3, 1, 0, 0);
       });
   return color;

@@ -15,9 +15,10 @@ class LightHeatmapPass {
  public:
   LightHeatmapPass(vk::VulkanContext& context, rg::Format color_format);
 
-  // Draws over `color` (the frame, whose size the tiles were culled at) and returns its new
-  // version.
-  rg::ImageHandle add_to(rg::RenderGraph& graph, const LightTiles& tiles, rg::ImageHandle color) const;
+  // Draws over `color` (the frame) and returns its new version. `scene`: the image the tiles were
+  // culled for (the frame's depth), which the frame's render scale may make smaller than `color`.
+  rg::ImageHandle add_to(rg::RenderGraph& graph, const LightTiles& tiles, rg::ImageHandle scene,
+                         rg::ImageHandle color) const;
 
  private:
   vk::PipelineLayout layout_;

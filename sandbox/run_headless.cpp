@@ -88,7 +88,7 @@ RunRecord run_script(const Options& options, vk::VulkanContext& context, SceneVi
             frame.reset();
             scene = std::move(opened);
             frame = std::make_unique<SandboxFrame>(context, scene, next, frames.frames_in_flight());
-            frame->frame().resize({next.frame.width, next.frame.height});
+            frame->fit({next.frame.width, next.frame.height}, false);
             selected = ecs::null_entity;
             std::printf("shadowgraph: opened %s\n", scene.scene.name.c_str());
           } else if constexpr (std::is_same_v<Command, ScriptStep::Screenshot>) {
@@ -113,7 +113,7 @@ int run_headless(const Options& options) {
 
   vk::FrameRing frames(context);
   auto frame = std::make_unique<SandboxFrame>(context, scene, options, frames.frames_in_flight());
-  frame->frame().resize({settings.width, settings.height});
+  frame->fit({settings.width, settings.height}, false);
   GpuTimeLog gpu_times;
   const RunRecord record =
       options.script.empty()

@@ -102,6 +102,7 @@ Json stats_json(const RunStats& stats) {
           {"generator", "Shadowgraph " SHADOWGRAPH_VERSION},
           {"device", stats.device},
           {"resolution", {{"width", stats.width}, {"height", stats.height}}},
+          {"scene_resolution", {{"width", stats.scene_width}, {"height", stats.scene_height}}},
           {"frames", stats.frames},
           {"scene",
            {{"name", stats.scene_name},

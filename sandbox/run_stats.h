@@ -11,6 +11,8 @@
 //   "generator": "Shadowgraph 0.1.0",            // the engine that wrote it
 //   "device": "NVIDIA H100 ...",                 // the Vulkan device's name
 //   "resolution": {"width": 1280, "height": 720},
+//   "scene_resolution": {"width": 640, "height": 360},  // what the scene was drawn at, scaled up
+//                                                // to "resolution" (--render-scale)
 //   "frames": 3,                                 // frames rendered
 //   "scene": {
 //     "name": "default",                         // built-in name or the file path
@@ -138,6 +140,8 @@ struct RunStats {
   std::string device;
   std::uint32_t width = 0;
   std::uint32_t height = 0;
+  std::uint32_t scene_width = 0;  // Frame::scene_extent
+  std::uint32_t scene_height = 0;
   std::uint64_t frames = 0;
   std::string scene_name;
   scene::SceneStats scene;  // scene::scene_stats of the rendered scene

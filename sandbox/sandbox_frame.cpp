@@ -22,6 +22,7 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Op
                            uint32_t frames_in_flight, GLFWwindow* window)
     : context_(context),
       view_(view),
+      settings_(options.frame),
       scene_name_(options.frame.scene),
       depth_overlay_enabled_(options.depth_overlay),
       depth_overlay_(context, frame_format),
@@ -43,6 +44,18 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Op
 }
 
 SandboxFrame::~SandboxFrame() = default;
+
+void SandboxFrame::fit(VkExtent2D extent, bool window) {
+  const float scale = render_scale_for(settings_, context_, window);
+  frame_.resize(extent, scale);
+  if (scale < 1.0f && !render_scale_told_) {
+    const VkExtent2D scene = frame_.scene_extent();
+    std::printf("shadowgraph: the scene is rendered at %ux%u and scaled up to %ux%u (--render-scale %g%s)\n",
+                scene.width, scene.height, extent.width, extent.height, double(scale),
+                settings_.render_scale ? "" : ", the default in a window on a CPU device; 1: full size");
+    render_scale_told_ = true;
+  }
+}
 
 FrameExtension SandboxFrame::extension() {
   FrameExtension extension;
@@ -70,7 +83,8 @@ FrameExtension SandboxFrame::extension() {
                                 uint32_t slot) {
     if (depth_overlay_enabled_) color = depth_overlay_.add_to(graph, rendered.depth, color, view_.lens);
     const bool heatmap = ui_ ? ui_->light_heatmap() : light_heatmap_.has_value();
-    if (heatmap && rendered.light_tiles) color = light_heatmap_->add_to(graph, *rendered.light_tiles, color);
+    if (heatmap && rendered.light_tiles)
+      color = light_heatmap_->add_to(graph, *rendered.light_tiles, rendered.depth, color);
     if (ui_pass_) color = ui_pass_->add_to(graph, color, rendered.shadow_atlas, slot);
     return color;
   };
@@ -123,6 +137,8 @@ UiFacts SandboxFrame::ui_facts() const {
   facts.lights = static_cast<uint32_t>(renderer.lights().records.size());
   facts.shadow_mib = double(renderer.shadow_atlas().bytes()) / (1 << 20);
   facts.lighting = to_string(renderer.lighting());
+  facts.scene_extent = frame_.scene_extent();
+  facts.frame_extent = frame_.image().extent();
   facts.frame_lights = &renderer.lights();
   facts.atlas_page = renderer.shadow_atlas().shape().page_size;
   facts.atlas_pages = renderer.shadow_atlas().pages();

@@ -36,6 +36,9 @@ class SandboxFrame {
 
   Frame& frame() { return frame_; }
   const Frame& frame() const { return frame_; }
+  // The frame resized to `extent` at its render scale (render_scale_for; `window`: presented in
+  // one), saying once where the scene is drawn smaller than the picture.
+  void fit(VkExtent2D extent, bool window);
   // Whether the panels take the mouse or keyboard this frame (false without panels).
   bool ui_wants_input() const;
   // Lit picture or shadow-only view, from the next record() on (the panels' "view" follows).
@@ -54,6 +57,8 @@ class SandboxFrame {
 
   vk::VulkanContext& context_;
   SceneView& view_;
+  FrameSettings settings_;
+  bool render_scale_told_ = false;
   std::string scene_name_;  // --scene: where the sidecar of saved edits goes
   bool depth_overlay_enabled_;
   DepthOverlayPass depth_overlay_;

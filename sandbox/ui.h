@@ -62,6 +62,8 @@ struct UiFacts {
   uint32_t lights_without_shadow = 0;
   double shadow_mib = 0.0;
   std::string lighting;
+  VkExtent2D scene_extent{};  // what the scene is drawn at (Frame::scene_extent)
+  VkExtent2D frame_extent{};  // and the picture it is scaled up to
 };
 
 class SandboxUi {

@@ -146,11 +146,15 @@ rg::ImageHandle UiPass::add_to(rg::RenderGraph& graph, rg::ImageHandle color, rg
         for (int l = 0; l < data.CmdListsCount; ++l) {
           const ImDrawList* list = data.CmdLists[l];
           for (const ImDrawCmd& command : list->CmdBuffer) {
-            // The command's clip rectangle, in framebuffer pixels, within the frame.
-            const float x0 = std::max(command.ClipRect.x - data.DisplayPos.x, 0.0f);
-            const float y0 = std::max(command.ClipRect.y - data.DisplayPos.y, 0.0f);
-            const float x1 = std::min(command.ClipRect.z - data.DisplayPos.x, float(extent.width));
-            const float y1 = std::min(command.ClipRect.w - data.DisplayPos.y, float(extent.height));
+            // The command's clip rectangle, in framebuffer pixels (the window's points times its
+            // framebuffer scale on high-density displays), within the frame.
+            const ImVec2 to_pixels = data.FramebufferScale;
+            const float x0 = std::max((command.ClipRect.x - data.DisplayPos.x) * to_pixels.x, 0.0f);
+            const float y0 = std::max((command.ClipRect.y - data.DisplayPos.y) * to_pixels.y, 0.0f);
+            const float x1 =
+                std::min((command.ClipRect.z - data.DisplayPos.x) * to_pixels.x, float(extent.width));
+            const float y1 =
+                std::min((command.ClipRect.w - data.DisplayPos.y) * to_pixels.y, float(extent.height));
             if (x1 <= x0 || y1 <= y0) continue;
             const VkRect2D scissor{{int32_t(x0), int32_t(y0)}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}};
             vkCmdSetScissor(rec.cmd(), 0, 1, &scissor);

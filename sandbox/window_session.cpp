@@ -92,7 +92,7 @@ VkExtent2D WindowSession::swapchain_extent() const {
 bool WindowSession::fit_to_window() {
   // recreate() waits for the device to go idle, so the old frame image is free too.
   if (!swapchain_->recreate(framebuffer_extent(window_))) return false;
-  frame_->frame().resize(swapchain_->extent());
+  frame_->fit(swapchain_->extent(), true);
   return true;
 }
 

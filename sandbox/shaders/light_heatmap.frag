@@ -12,13 +12,14 @@ layout(std430, set = 0, binding = 0) readonly buffer TileRanges { uvec2 ranges[]
 
 layout(push_constant) uniform HeatMap {
   uint tiles_across;
-  float full_scale;  // lights at which the ramp reaches red
+  float full_scale;       // lights at which the ramp reaches red
+  float scene_per_frame;  // scene pixels per frame pixel (the frame's render scale)
 } pass;
 
 layout(location = 0) out vec4 out_color;
 
 void main() {
-  uvec2 tile = uvec2(gl_FragCoord.xy) / LIGHT_TILE_SIZE;
+  uvec2 tile = uvec2(gl_FragCoord.xy * pass.scene_per_frame) / LIGHT_TILE_SIZE;
   uint first = (tile.y * pass.tiles_across + tile.x) * LIGHT_GROUP_COUNT;
   uint lights = 0u;
   for (uint g = 0u; g < LIGHT_GROUP_COUNT; ++g) lights += ranges[first + g].y;

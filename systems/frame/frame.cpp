@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "systems/frame/frame.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -17,6 +19,28 @@ namespace {
 
 constexpr rg::ResourceState transfer_source{rg::PipelineStage::all_transfer, rg::Access::transfer_read,
                                             rg::ImageLayout::transfer_src_optimal};
+
+// Scales `scene` (the renderer's picture, smaller than the frame) up into `frame`, filtered.
+rg::ImageHandle add_upscale(rg::RenderGraph& graph, rg::ImageHandle scene, rg::ImageHandle frame) {
+  graph.add_pass(
+      "upscale",
+      [&](rg::PassBuilder& b) {
+        b.read(scene, rg::Usage::transfer);
+        frame = b.write(frame, rg::Usage::transfer);
+      },
+      [scene, frame, &graph](const vk::PassRecorder& rec) {
+        const rg::ImageDesc& src = graph.resources()[scene.index].image;
+        const rg::ImageDesc& dst = graph.resources()[frame.index].image;
+        VkImageBlit region{};
+        region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.srcOffsets[1] = {int32_t(src.width), int32_t(src.height), 1};
+        region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.dstOffsets[1] = {int32_t(dst.width), int32_t(dst.height), 1};
+        vkCmdBlitImage(rec.cmd(), rec.image(scene), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, rec.image(frame),
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_LINEAR);
+      });
+  return frame;
+}
 
 // Blits the frame onto the swapchain image (scaling if sizes differ) and leaves it presentable.
 void add_present(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHandle frame,
@@ -62,10 +86,26 @@ uint64_t Frame::take_dropped_light_pairs() {
   return std::exchange(dropped_light_pairs_, 0) + renderer_.drain_dropped_light_pairs();
 }
 
-void Frame::resize(VkExtent2D extent) {
-  image_ = vk::Image(context_, {extent, vk::to_vk(frame_format),
-                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, 1, 1,
-                                VK_IMAGE_VIEW_TYPE_2D, "frame"});
+void Frame::resize(VkExtent2D extent, float render_scale) {
+  if (!(render_scale > 0.0f && render_scale <= 1.0f)) {
+    throw std::invalid_argument("Frame::resize: the render scale must be in (0, 1], got " +
+                                std::to_string(render_scale));
+  }
+  const auto color_image = [this](VkExtent2D size, const char* name) {
+    return vk::Image(context_, {size, vk::to_vk(frame_format),
+                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                1, 1, VK_IMAGE_VIEW_TYPE_2D, name});
+  };
+  const auto scaled = [render_scale](uint32_t size) {
+    return std::max(1u, static_cast<uint32_t>(std::lround(double(size) * render_scale)));
+  };
+  image_ = color_image(extent, "frame");
+  scene_extent_ = {scaled(extent.width), scaled(extent.height)};
+  scene_image_.reset();
+  if (scene_extent_.width != extent.width || scene_extent_.height != extent.height) {
+    scene_image_ = color_image(scene_extent_, "scene color");
+  }
 }
 
 vk::FrameSlot& Frame::begin(vk::FrameRing& ring) {
@@ -92,7 +132,7 @@ void Frame::record(const vk::FrameSlot& frame, double time_seconds,
   renderer_.gather(std::as_const(view_.scene.world));
   timed(phase_ms_.gather);
   report_shadow_time();
-  renderer_.prepare(frame.slot, view_.pose, view_.lens, image_.extent().width, image_.extent().height);
+  renderer_.prepare(frame.slot, view_.pose, view_.lens, scene_extent_.width, scene_extent_.height);
   for (const FrameExtension& extension : extensions_) {
     if (extension.prepare) extension.prepare(frame.slot);
   }
@@ -177,10 +217,13 @@ void Frame::update(double seconds) {
 void Frame::declare_passes(uint32_t slot, const std::optional<PresentTarget>& present) {
   graph_ = rg::RenderGraph();
   const rg::ImageHandle frame_image = imports_.import_image(graph_, "frame", image_, transfer_source);
+  const rg::ImageHandle scene_image =
+      scene_image_ ? imports_.import_image(graph_, "scene color", *scene_image_, transfer_source)
+                   : frame_image;
   const RenderedFrame targets =
-      renderer_.add_passes(graph_, imports_, frame_image, slot, view_.pose, view_.lens);
+      renderer_.add_passes(graph_, imports_, scene_image, slot, view_.pose, view_.lens);
   if (depth_capture_) depth_capture_->add_to(context_, graph_, imports_, targets.depth);
-  rg::ImageHandle color = targets.color;
+  rg::ImageHandle color = scene_image_ ? add_upscale(graph_, targets.color, frame_image) : targets.color;
   for (const FrameExtension& extension : extensions_) {
     if (extension.add_passes) color = extension.add_passes(graph_, targets, color, slot);
   }

@@ -76,8 +76,13 @@ class Frame {
   Frame(vk::VulkanContext& context, SceneView& view, const FrameSettings& settings, uint32_t frames_in_flight,
         std::vector<FrameExtension> extensions = {});
 
-  // (Re)creates the frame image. The GPU must not be using the old one (wait idle first).
-  void resize(VkExtent2D extent);
+  // (Re)creates the frame image at `extent`. The scene is rendered at `render_scale` (0 to 1] of
+  // it (scene_extent) and scaled up into it before the extensions' passes, which draw at the
+  // frame's own size: a CPU device's window keeps its panels sharp while a quarter of the pixels
+  // are lit. The GPU must not be using the old image (wait idle first).
+  void resize(VkExtent2D extent, float render_scale = 1.0f);
+  // What the renderer draws: the frame image's extent times the render scale, at least 1x1.
+  VkExtent2D scene_extent() const { return scene_extent_; }
 
   // ring.begin_frame(), waking the worker threads of record()'s batches shortly before the wait
   // for the GPU ends: asleep since the last frame, they took longer to wake than the frame's
@@ -175,6 +180,8 @@ class Frame {
   rg::PlanCache plans_;
   vk::GraphImports imports_;
   vk::Image image_;
+  VkExtent2D scene_extent_{};
+  std::optional<vk::Image> scene_image_;  // the renderer's picture where it is smaller than the frame
   ecs::Tick transforms_updated_ = 0;
   rg::RenderGraph graph_;
   std::shared_ptr<const rg::CompiledPlan> plan_;

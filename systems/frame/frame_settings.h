@@ -20,6 +20,9 @@ namespace sg {
 struct FrameSettings {
   uint32_t width = 1280;  // the picture; a window's first size
   uint32_t height = 720;
+  // The scene rendered at this fraction of the picture's size and scaled up into it
+  // (Frame::resize); unset: render_scale_for's default.
+  std::optional<float> render_scale;
   std::string device;             // a substring of the Vulkan device's name; empty: the best device
   bool validation = false;        // also on with SHADOWGRAPH_VALIDATION=1 (context_options)
   std::string scene = "default";  // a built-in scene's name or a .gltf/.glb path
@@ -51,6 +54,10 @@ struct FrameSettings {
 // building the scene, so the command line refuses them.
 inline constexpr uint64_t max_scene_triangles = 100'000'000;
 inline constexpr uint32_t max_lights_per_type = 100'000;
+
+// The render scale a frame on `context`'s device takes: the settings' own, or where unset 1, but
+// half in a window on a CPU device, where every pixel lit costs the CPU (docs/PERFORMANCE.md).
+float render_scale_for(const FrameSettings& settings, const vk::VulkanContext& context, bool window);
 
 // Every frame setting, in the order the option list shows them.
 std::span<const Setting<FrameSettings>> frame_settings_table();

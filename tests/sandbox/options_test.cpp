@@ -59,6 +59,15 @@ TEST(SandboxOptions, ExistingOptionsStillWork) {
   EXPECT_FALSE(options.vsync);
 }
 
+TEST(SandboxOptions, RenderScaleIsAFractionOfTheOutput) {
+  EXPECT_FALSE(parse_ok({}).frame.render_scale.has_value()) << "unset: the device decides";
+  EXPECT_EQ(parse_ok({"--render-scale", "0.5"}).frame.render_scale, 0.5f);
+  EXPECT_EQ(parse_ok({"--render-scale", "1"}).frame.render_scale, 1.0f);
+  for (const char* bad : {"0", "0.1", "1.5", "half"}) {
+    EXPECT_EQ(parse({"--render-scale", bad}).exit_code, 2) << bad;
+  }
+}
+
 TEST(SandboxOptions, ShadowOptions) {
   const Options defaults = parse_ok({});
   EXPECT_FALSE(defaults.frame.algorithm.has_value());

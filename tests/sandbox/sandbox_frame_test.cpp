@@ -4,6 +4,7 @@
 // render graph's extension example).
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -40,7 +41,8 @@ class SandboxFrameTest : public GpuTest {
     vk::FrameRing frames(context);
     sandbox::SandboxFrame sandbox_frame(context, scene, options, frames.frames_in_flight());
     Frame& frame = sandbox_frame.frame();
-    frame.resize({width, height});
+    sandbox_frame.fit({width, height}, false);
+    scene_extent = frame.scene_extent();
     GpuTimeLog gpu_times;
     render_headless_frames(frame, frames, frame_count, gpu_times);
     passes = executed_passes(*frame.plan());
@@ -48,7 +50,21 @@ class SandboxFrameTest : public GpuTest {
   }
 
   std::vector<std::string> passes;
+  VkExtent2D scene_extent{};
 };
+
+// The pixels where `colored` differs from `plain` by more than a level.
+std::vector<bool> changed_pixels(const vk::Rgba8Image& plain, const vk::Rgba8Image& colored) {
+  std::vector<bool> changed;
+  for (uint32_t y = 0; y < plain.height; ++y) {
+    for (uint32_t x = 0; x < plain.width; ++x) {
+      bool differs = false;
+      for (int c = 0; c < 3; ++c) differs |= std::abs(int(plain.at(x, y)[c]) - int(colored.at(x, y)[c])) > 1;
+      changed.push_back(differs);
+    }
+  }
+  return changed;
+}
 
 // --ui: Dear ImGui's panels drawn by the frame's own "ui" pass, headless (no input), over the
 // picture and under validation; without it the picture is untouched.
@@ -183,6 +199,44 @@ TEST_F(SandboxFrameTest, TheLightHeatMapColorsTheLitTiles) {
   heat.frame.naive = true;
   render(heat, 1);
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "light heat map"), 0);
+}
+
+// --render-scale 0.5: the scene drawn at half the frame's size and scaled up into it, the
+// overlays over it at full size. The picture stays the scene's, and the heat map colors the same
+// places of the picture as at full size: its tiles are read at the scene's scale.
+TEST_F(SandboxFrameTest, RenderScaleDrawsTheSceneSmallerUnderFullSizeOverlays) {
+  sandbox::Options full;
+  const vk::Rgba8Image plain = render(full, 1);
+  full.light_heatmap = true;
+  const vk::Rgba8Image heat = render(full, 1);
+  EXPECT_EQ(scene_extent.width, width);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), "upscale"), 0);
+
+  sandbox::Options half = full;
+  half.frame.render_scale = 0.5f;
+  const vk::Rgba8Image half_heat = render(half, 1);
+  EXPECT_EQ(scene_extent.width, width / 2);
+  EXPECT_EQ(scene_extent.height, height / 2);
+  ASSERT_EQ(half_heat.width, width) << "the frame keeps its size";
+  const auto upscale = std::find(passes.begin(), passes.end(), "upscale");
+  ASSERT_NE(upscale, passes.end());
+  EXPECT_LT(upscale - passes.begin(),
+            std::find(passes.begin(), passes.end(), "light heat map") - passes.begin());
+  half.light_heatmap = false;
+  const vk::Rgba8Image half_plain = render(half, 1);
+  EXPECT_LT(share_differing(plain, half_plain, 48), 0.05) << "the same scene, softer";
+
+  const std::vector<bool> at_full = changed_pixels(plain, heat);
+  const std::vector<bool> at_half = changed_pixels(half_plain, half_heat);
+  size_t agree = 0, colored = 0;
+  for (size_t i = 0; i < at_full.size(); ++i) {
+    agree += at_full[i] == at_half[i];
+    colored += at_half[i];
+  }
+  EXPECT_GT(colored, at_full.size() / 4);
+  // 83% at this size, where a tile of the half-size scene is 32 pixels of the frame; reading the
+  // tiles at the frame's scale agrees on 25%.
+  EXPECT_GT(double(agree) / double(at_full.size()), 0.7);
 }
 
 TEST_F(SandboxFrameTest, DepthOverlayDrawsOnlyIntoTheBottomRightQuarter) {

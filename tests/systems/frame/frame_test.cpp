@@ -296,6 +296,36 @@ TEST_F(FrameTest, AutomaticLightingFusesAFewLightsOnACpuDevice) {
   EXPECT_EQ(std::count(passes.begin(), passes.end(), "g-buffer"), 1);
 }
 
+// A window on a CPU device draws the scene at half its size unless told otherwise; headless
+// frames and GPUs at full size.
+TEST_F(FrameTest, RenderScaleIsHalfOnlyInACpuDevicesWindowByDefault) {
+  ASSERT_EQ(context.properties().deviceType, VK_PHYSICAL_DEVICE_TYPE_CPU);
+  FrameSettings settings;
+  EXPECT_EQ(render_scale_for(settings, context, true), 0.5f);
+  EXPECT_EQ(render_scale_for(settings, context, false), 1.0f);
+  settings.render_scale = 0.75f;
+  EXPECT_EQ(render_scale_for(settings, context, true), 0.75f);
+  EXPECT_EQ(render_scale_for(settings, context, false), 0.75f);
+}
+
+// The scene's extent is the frame's times the scale, rounded, at least a pixel; scales outside
+// (0, 1] are refused.
+TEST_F(FrameTest, TheSceneExtentFollowsTheRenderScale) {
+  SceneView scene = load_scene_view(FrameSettings{}, 1.0f);
+  Frame frame(context, scene, FrameSettings{}, 2);
+  frame.resize({101, 51}, 0.5f);
+  EXPECT_EQ(frame.image().extent().width, 101u);
+  EXPECT_EQ(frame.scene_extent().width, 51u);
+  EXPECT_EQ(frame.scene_extent().height, 26u);
+  frame.resize({3, 1}, 0.25f);
+  EXPECT_EQ(frame.scene_extent().width, 1u);
+  EXPECT_EQ(frame.scene_extent().height, 1u);
+  frame.resize({64, 64});
+  EXPECT_EQ(frame.scene_extent().width, 64u);
+  EXPECT_THROW(frame.resize({64, 64}, 0.0f), std::invalid_argument);
+  EXPECT_THROW(frame.resize({64, 64}, 1.5f), std::invalid_argument);
+}
+
 // The shadow-only view: white surfaces under white light, so every pixel is grey but the
 // background (the clear color, as in the top-left corner), on every lighting path alike, and
 // unlike the lit picture.
