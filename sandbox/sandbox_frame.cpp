@@ -48,6 +48,7 @@ SandboxFrame::~SandboxFrame() = default;
 void SandboxFrame::fit(VkExtent2D extent, bool window) {
   const float scale = render_scale_for(settings_, context_, window);
   frame_.resize(extent, scale);
+  if (ui_) ui_->set_render_scale(scale);
   if (scale < 1.0f && !render_scale_told_) {
     const VkExtent2D scene = frame_.scene_extent();
     std::printf("shadowgraph: the scene is rendered at %ux%u and scaled up to %ux%u (--render-scale %g%s)\n",
@@ -138,7 +139,6 @@ UiFacts SandboxFrame::ui_facts() const {
   facts.shadow_mib = double(renderer.shadow_atlas().bytes()) / (1 << 20);
   facts.lighting = to_string(renderer.lighting());
   facts.scene_extent = frame_.scene_extent();
-  facts.frame_extent = frame_.image().extent();
   facts.frame_lights = &renderer.lights();
   facts.atlas_page = renderer.shadow_atlas().shape().page_size;
   facts.atlas_pages = renderer.shadow_atlas().pages();

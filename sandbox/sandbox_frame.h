@@ -39,6 +39,8 @@ class SandboxFrame {
   // The frame resized to `extent` at its render scale (render_scale_for; `window`: presented in
   // one), saying once where the scene is drawn smaller than the picture.
   void fit(VkExtent2D extent, bool window);
+  // The render scale from the next fit() on (the Frame panel's).
+  void set_render_scale(float scale) { settings_.render_scale = scale; }
   // Whether the panels take the mouse or keyboard this frame (false without panels).
   bool ui_wants_input() const;
   // Lit picture or shadow-only view, from the next record() on (the panels' "view" follows).

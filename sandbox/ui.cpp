@@ -164,10 +164,10 @@ void SandboxUi::stats_panel(const UiFacts& facts) {
               facts.views_moving_only, facts.views_cached);
   ImGui::Text("due maps wrong for %u frames (99%%), %u at most", facts.map_lag_p99, facts.map_lag_max);
   ImGui::Text("shadow atlas %.0f MiB (--shadow-memory at the start)", facts.shadow_mib);
-  if (facts.scene_extent.width != facts.frame_extent.width) {
-    ImGui::Text("scene drawn at %ux%u, scaled up (--render-scale)", facts.scene_extent.width,
-                facts.scene_extent.height);
-  }
+  ImGui::SliderFloat("render scale", &render_scale_, 0.25f, 1.0f, "%.2f");
+  if (ImGui::IsItemDeactivatedAfterEdit()) render_scale_request_ = render_scale_;
+  ImGui::SameLine();
+  ImGui::TextDisabled("%ux%u", facts.scene_extent.width, facts.scene_extent.height);
   ImGui::DragInt("shadow updates", &shadow_view_budget_, 4.0f, 0, 1 << 24,
                  shadow_view_budget_ > 0 ? "%d views a frame" : "every due view");
   constexpr double no_budget = 0.0, most_budget = 1000.0;

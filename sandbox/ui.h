@@ -63,7 +63,6 @@ struct UiFacts {
   double shadow_mib = 0.0;
   std::string lighting;
   VkExtent2D scene_extent{};  // what the scene is drawn at (Frame::scene_extent)
-  VkExtent2D frame_extent{};  // and the picture it is scaled up to
 };
 
 class SandboxUi {
@@ -98,6 +97,12 @@ class SandboxUi {
   // The Frame panel's frame-rate cap (FramePacer, 0: none).
   float max_fps() const { return max_fps_; }
   void set_max_fps(float fps) { max_fps_ = fps; }
+  // The Frame panel's render scale (Frame::resize): the one in use, and a new one once its
+  // slider is let go.
+  void set_render_scale(float scale) { render_scale_ = scale; }
+  std::optional<float> take_render_scale_request() {
+    return std::exchange(render_scale_request_, std::nullopt);
+  }
   // The Frame panel's shadow budgets (SceneRenderer::set_shadow_budgets).
   uint32_t shadow_view_budget() const { return uint32_t(shadow_view_budget_); }
   double shadow_time_budget_ms() const { return shadow_time_budget_ms_; }
@@ -145,6 +150,8 @@ class SandboxUi {
   bool export_requested_ = false;
   std::array<char, 512> open_path_{};
   std::optional<std::string> open_request_;
+  float render_scale_ = 1.0f;
+  std::optional<float> render_scale_request_;
   bool playing_ = true;
   int view_ = 0;  // a LightingView
   glm::vec3 ambient_{0.0f};

@@ -145,7 +145,16 @@ FrameResult WindowSession::frame() {
     if (std::optional<std::string> path = ui->take_open_request()) dropped_ = std::move(path);
   }
   if (std::optional<std::string> path = std::exchange(dropped_, std::nullopt)) open(*path);
-  if (const SandboxUi* ui = frame_->ui()) pacer_.set_max_fps(ui->max_fps());
+  if (SandboxUi* ui = frame_->ui()) {
+    pacer_.set_max_fps(ui->max_fps());
+    if (std::optional<float> scale = ui->take_render_scale_request()) {
+      frame_->set_render_scale(*scale);
+      if (ready_) {
+        frames_->wait_idle();  // the frame's images are made anew
+        frame_->fit(swapchain_extent(), true);
+      }
+    }
+  }
   std::this_thread::sleep_for(pacer_.wait(FramePacer::Clock::now()));
   glfwPollEvents();
   if (glfwWindowShouldClose(window_)) return FrameResult::closed;
