@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Window-system tests. They need an X or Wayland display (CI runs the suite under Xvfb) and
 // are skipped without one.
+#include <cmath>
 #include <cstdlib>
 
 #define GLFW_INCLUDE_VULKAN
@@ -9,6 +10,7 @@
 
 #include "rendergraph/device/swapchain.h"
 #include "rendergraph/device/vulkan_error.h"
+#include "sandbox/sandbox_frame.h"
 #include "sandbox/window_session.h"
 #include "tests/support/gpu_test.h"
 
@@ -71,6 +73,11 @@ TEST_F(WindowTest, TheSandboxSurvivesResizeMinimizeAndRestore) {
     EXPECT_EQ(session.swapchain_extent().width, uint32_t(w));
     EXPECT_EQ(session.swapchain_extent().height, uint32_t(h));
     EXPECT_EQ(render_until_rendered(session), sandbox::FrameResult::rendered);
+    // A CPU device's window draws the scene at half its size (render_scale_for), the frame at its own.
+    const Frame& frame = session.sandbox_frame().frame();
+    EXPECT_EQ(frame.image().extent().width, uint32_t(w));
+    EXPECT_EQ(frame.scene_extent().width, uint32_t(std::lround(w * 0.5)));
+    EXPECT_EQ(frame.scene_extent().height, uint32_t(std::lround(h * 0.5)));
   }
   glfwIconifyWindow(session.window());
   for (int i = 0; i < 5; ++i) session.frame();
