@@ -20,26 +20,28 @@ namespace {
 constexpr rg::ResourceState transfer_source{rg::PipelineStage::all_transfer, rg::Access::transfer_read,
                                             rg::ImageLayout::transfer_src_optimal};
 
-// Scales `scene` (the renderer's picture, smaller than the frame) up into `frame`, filtered.
-rg::ImageHandle add_upscale(rg::RenderGraph& graph, rg::ImageHandle scene, rg::ImageHandle frame) {
+// A pass blitting the whole of `source` onto the whole of `target`, filtered where the sizes
+// differ; returns `target`'s new version.
+rg::ImageHandle add_blit(rg::RenderGraph& graph, const char* name, rg::ImageHandle source,
+                         rg::ImageHandle target) {
   graph.add_pass(
-      "upscale",
+      name,
       [&](rg::PassBuilder& b) {
-        b.read(scene, rg::Usage::transfer);
-        frame = b.write(frame, rg::Usage::transfer);
+        b.read(source, rg::Usage::transfer);
+        target = b.write(target, rg::Usage::transfer);
       },
-      [scene, frame, &graph](const vk::PassRecorder& rec) {
-        const rg::ImageDesc& src = graph.resources()[scene.index].image;
-        const rg::ImageDesc& dst = graph.resources()[frame.index].image;
+      [source, target, &graph](const vk::PassRecorder& rec) {
+        const rg::ImageDesc& src = graph.resources()[source.index].image;
+        const rg::ImageDesc& dst = graph.resources()[target.index].image;
         VkImageBlit region{};
         region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.srcOffsets[1] = {int32_t(src.width), int32_t(src.height), 1};
         region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.dstOffsets[1] = {int32_t(dst.width), int32_t(dst.height), 1};
-        vkCmdBlitImage(rec.cmd(), rec.image(scene), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, rec.image(frame),
+        vkCmdBlitImage(rec.cmd(), rec.image(source), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, rec.image(target),
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_LINEAR);
       });
-  return frame;
+  return target;
 }
 
 // Blits the frame onto the swapchain image (scaling if sizes differ) and leaves it presentable.
@@ -47,28 +49,11 @@ void add_present(rg::RenderGraph& graph, vk::GraphImports& imports, rg::ImageHan
                  const PresentTarget& target) {
   // The first use chains with the acquire semaphore's wait at acquire_wait_stage; the contents
   // of an acquired image are not needed (UNDEFINED).
-  rg::ImageHandle swapchain = imports.import_image(
+  const rg::ImageHandle swapchain = imports.import_image(
       graph, "swapchain", target.image, target.format, target.extent,
       rg::ResourceState{rg::PipelineStage::all_transfer, rg::Access::none, rg::ImageLayout::undefined},
       rg::ResourceState{rg::PipelineStage::none, rg::Access::none, rg::ImageLayout::present_src});
-  graph.add_pass(
-      "present",
-      [&](rg::PassBuilder& b) {
-        b.read(frame, rg::Usage::transfer);
-        swapchain = b.write(swapchain, rg::Usage::transfer);
-      },
-      [frame, swapchain, &graph](const vk::PassRecorder& rec) {
-        const rg::ImageDesc& src = graph.resources()[frame.index].image;
-        const rg::ImageDesc& dst = graph.resources()[swapchain.index].image;
-        VkImageBlit region{};
-        region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.srcOffsets[1] = {int32_t(src.width), int32_t(src.height), 1};
-        region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.dstOffsets[1] = {int32_t(dst.width), int32_t(dst.height), 1};
-        vkCmdBlitImage(rec.cmd(), rec.image(frame), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                       rec.image(swapchain), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region,
-                       VK_FILTER_LINEAR);
-      });
+  add_blit(graph, "present", frame, swapchain);
 }
 
 }  // namespace
@@ -223,7 +208,9 @@ void Frame::declare_passes(uint32_t slot, const std::optional<PresentTarget>& pr
   const RenderedFrame targets =
       renderer_.add_passes(graph_, imports_, scene_image, slot, view_.pose, view_.lens);
   if (depth_capture_) depth_capture_->add_to(context_, graph_, imports_, targets.depth);
-  rg::ImageHandle color = scene_image_ ? add_upscale(graph_, targets.color, frame_image) : targets.color;
+  // The renderer's smaller picture scaled up into the frame (resize's render scale).
+  rg::ImageHandle color =
+      scene_image_ ? add_blit(graph_, "upscale", targets.color, frame_image) : targets.color;
   for (const FrameExtension& extension : extensions_) {
     if (extension.add_passes) color = extension.add_passes(graph_, targets, color, slot);
   }
