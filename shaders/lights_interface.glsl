@@ -13,6 +13,10 @@
 // light groups, each group's own.
 // constant_id 0 to 2 are the including shaders' own and material.glsl's.
 layout(constant_id = 3) const uint LIGHT_TYPES = 0x1Fu;
+// constant_id 10 (4 to 9 are the including shaders' own): the device cannot filter the shadow
+// atlas's depth format, so shadow_atlas_compare is nearest and each comparison reads one texel
+// (sg::LightResources::specialized).
+layout(constant_id = 10) const bool NEAREST_COMPARISONS = false;
 
 // The light types of `types` alone, cascaded directional lights counted as directional.
 uint light_types_only(uint types) {

@@ -269,16 +269,66 @@ float compare_plane(Light light, MapPoint point, vec2 offset, float bias) {
   return compare_filtered(light, point.uv + offset, plane_reference(point, offset, bias) - point.texel_slack);
 }
 
+// The atlas texel, per axis, that a nearest fetch at map uv `uv` reads: the sampler's own
+// arithmetic (clamp to the edge, scale, floor) on the same coordinate.
+ivec2 nearest_atlas_texel(Light light, vec2 uv, vec2 atlas_size) {
+  return ivec2(floor(atlas_coord(light, uv).xy * atlas_size));
+}
+
+// shadow_2d_pcf's 3x3 grid where each comparison reads one texel (NEAREST_COMPARISONS): the nine
+// taps' texels lie in the 4x4 block from the first tap's wherever the grid spans at most three
+// texels a side (pcfRadius up to 1.5), and four gathers read that block, where nine fetches read
+// a texel each. The taps compare exactly what the comparison sampler would, so the picture is
+// the same to the bit; on lavapipe the default scene's frame took 120.7-121.6 ms against
+// 126.9-127.4, `spot-columns`' light 16.1-16.7 against 18.9-19.6 (2026-12-05,
+// docs/PERFORMANCE.md). `spans_block` is false where the grid is wider.
+float shadow_2d_pcf_gathered(Light light, MapPoint point, float bias, float step_uv, out bool spans_block) {
+  vec2 atlas_size = vec2(textureSize(shadow_atlas, 0).xy);
+  ivec2 first = nearest_atlas_texel(light, point.uv - vec2(step_uv), atlas_size);
+  ivec2 middle = nearest_atlas_texel(light, point.uv, atlas_size) - first;
+  ivec2 last = nearest_atlas_texel(light, point.uv + vec2(step_uv), atlas_size) - first;
+  spans_block = all(lessThanEqual(last, ivec2(3))) && all(greaterThanEqual(middle, ivec2(0)));
+  // A gather at a texel corner reads the 2x2 texels around it, as (0,1) (1,1) (1,0) (0,0).
+  float layer = float(light.info.w);
+  vec2 corner = vec2(first) + 1.0;
+  vec4 top_left = textureGather(shadow_atlas, vec3(corner / atlas_size, layer), 0);
+  vec4 top_right = textureGather(shadow_atlas, vec3((corner + vec2(2.0, 0.0)) / atlas_size, layer), 0);
+  vec4 bottom_left = textureGather(shadow_atlas, vec3((corner + vec2(0.0, 2.0)) / atlas_size, layer), 0);
+  vec4 bottom_right = textureGather(shadow_atlas, vec3((corner + vec2(2.0)) / atlas_size, layer), 0);
+  vec4 block[4] = vec4[](vec4(top_left.wz, top_right.wz), vec4(top_left.xy, top_right.xy),
+                         vec4(bottom_left.wz, bottom_right.wz), vec4(bottom_left.xy, bottom_right.xy));
+  ivec3 columns = ivec3(0, middle.x, last.x);
+  ivec3 rows = ivec3(0, middle.y, last.y);
+  float sum = 0.0;
+  // Texels picked by selects: a local array indexed per lane goes through memory on a CPU driver.
+  [[unroll]] for (int y = 0; y < 3; ++y) {
+    int r = rows[y];
+    vec4 row = r == 0 ? block[0] : (r == 1 ? block[1] : (r == 2 ? block[2] : block[3]));
+    [[unroll]] for (int x = 0; x < 3; ++x) {
+      int c = columns[x];
+      float depth = c == 0 ? row.x : (c == 1 ? row.y : (c == 2 ? row.z : row.w));
+      float reference = plane_reference(point, vec2(x - 1, y - 1) * step_uv, bias) - point.texel_slack;
+      sum += reference > depth ? 1.0 : 0.0;  // compare_plane's test, LESS_OR_EQUAL lit
+    }
+  }
+  return sum / 9.0;
+}
+
 // 4.2: the hard test averaged over a (2k+1)^2 grid of offsets (x, y) * texel * pcfRadius, k the
 // light's (pcf_half_width, 1 to 3). Loops over the light's own bounds: every invocation of a pass
 // shades the same light at once, so a CPU driver runs exactly its taps, and the offsets come from
 // the counters, not from a table. Do-while loops: llvmpipe tests whether any lane continues at a
 // loop's end, so a for loop, whose lanes leave at the top, runs its body once more, masked (16
 // taps' work for a 3x3 grid; the default scene's 2D pcf pass took 87 ms against 99 on lavapipe,
-// 2026-12-03).
+// 2026-12-03). Where the grid's nine nearest texels are gathered, the loops run once, masked.
 float shadow_2d_pcf(Light light, MapPoint point, float bias) {
   float step_uv = light.shadow_bias.z * light.shadow_depth.z;
   int k = pcf_half_width(light);
+  if (NEAREST_COMPARISONS && k == 1) {
+    bool spans_block;
+    float gathered = shadow_2d_pcf_gathered(light, point, bias, step_uv, spans_block);
+    if (spans_block) return gathered;
+  }
   float sum = 0.0;
   int y = -k;
   do {

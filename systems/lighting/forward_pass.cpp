@@ -12,6 +12,7 @@
 #include "systems/gpu/shader_bindings.h"
 #include "systems/scene/mesh_library.h"
 #include "systems/shadow_maps/shadow_atlas.h"
+#include "systems/shadows/gpu_light.h"
 
 namespace sg {
 namespace {
@@ -38,12 +39,15 @@ void ForwardPass::prepare(uint32_t slot, const GpuScene& scene, const vk::Buffer
   view_ = view;
   pipelines_
       .try_emplace(static_cast<uint32_t>(view),
-                   [layout = layout_.get(), &textures = textures_, view](uint32_t draw_class) {
+                   [layout = layout_.get(), &textures = textures_, &resources = light_resources_,
+                    view](uint32_t draw_class) {
                      vk::GraphicsPipelineDesc desc =
                          camera_pipeline_desc(scene_frag, {vk::to_vk(lit_sum_format)}, layout, "forward");
-                     // Constant 0 is unused here, 1 is light_shading.glsl's view.
-                     desc.fragment_specialization =
+                     // Constant 0 is unused here, 1 is light_shading.glsl's view, 3 every light type.
+                     std::vector<uint32_t> constants =
                          material_pass_constants(0, static_cast<uint32_t>(view), textures);
+                     constants.push_back(shadows::all_light_type_bits);
+                     desc.fragment_specialization = resources.specialized(std::move(constants));
                      return for_draw_class(std::move(desc), draw_class);
                    })
       .first->second.prepare(context_, scene);

@@ -39,11 +39,12 @@ void FusedForwardPass::prepare(const shadows::GroupsPresent& groups, LightingVie
   key_ = groups.key() | uint64_t{static_cast<uint32_t>(view)} << shadows::GroupsPresent::key_bits;
   pipelines_
       .try_emplace(key_,
-                   [layout = layout_.get(), &textures = textures_, format = frame_format_, groups,
-                    view](uint32_t draw_class) {
+                   [layout = layout_.get(), &textures = textures_, &resources = light_resources_,
+                    format = frame_format_, groups, view](uint32_t draw_class) {
                      vk::GraphicsPipelineDesc desc =
                          camera_pipeline_desc(scene_fused_frag, {vk::to_vk(format)}, layout, "fused forward");
-                     desc.fragment_specialization = all_groups_pass_constants(groups, view, textures);
+                     desc.fragment_specialization =
+                         resources.specialized(all_groups_pass_constants(groups, view, textures));
                      return for_draw_class(after_depth_prepass(std::move(desc)), draw_class);
                    })
       .first->second.prepare(context_, scene);

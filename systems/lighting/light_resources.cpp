@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "systems/lighting/light_resources.h"
 
+#include <stdexcept>
+
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
@@ -37,8 +39,23 @@ bool shadow_comparisons_filter(const vk::VulkanContext& context) {
 
 LightResources::LightResources(const vk::VulkanContext& context, LightRecordsIn records)
     : records_(resolved(records, context)),
+      nearest_comparisons_(compare_filter(context) == VK_FILTER_NEAREST),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
-      compare_(vk::create_sampler(context.device(), compare_filter(context), true)) {}
+      compare_(vk::create_sampler(context.device(),
+                                  nearest_comparisons_ ? VK_FILTER_NEAREST : VK_FILTER_LINEAR, true)) {}
+
+std::vector<uint32_t> LightResources::specialized(std::vector<uint32_t> constants) const {
+  constexpr size_t light_types_constant = 3;
+  constexpr size_t nearest_comparisons_constant = 10;
+  if (constants.size() <= light_types_constant) {
+    throw std::logic_error(
+        "LightResources::specialized: the constants must reach LIGHT_TYPES (constant_id 3)");
+  }
+  if (constants.size() <= nearest_comparisons_constant)
+    constants.resize(nearest_comparisons_constant + 1, 0u);
+  constants[nearest_comparisons_constant] = nearest_comparisons_ ? 1u : 0u;
+  return constants;
+}
 
 std::vector<VkDescriptorSetLayoutBinding> LightResources::bindings(
     LightRecordsIn records, VkShaderStageFlags stages, std::vector<VkDescriptorSetLayoutBinding> more) {

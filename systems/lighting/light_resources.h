@@ -34,6 +34,12 @@ class LightResources {
 
   LightRecordsIn records() const { return records_; }  // resolved: never automatic
 
+  // A lighting pipeline's specialization `constants` (constant_id i = constants[i]), which must
+  // reach LIGHT_TYPES (3), with NEAREST_COMPARISONS (lights_interface.glsl's constant_id 10) set
+  // where this device's comparisons read one texel. The ids it adds before 10 are 0, every
+  // shader's default for them but the filter floor pass's own constant 6, which it sets itself.
+  std::vector<uint32_t> specialized(std::vector<uint32_t> constants) const;
+
   // The bindings for `records` (not automatic), visible to `stages`, followed by a pass's own `more`.
   static std::vector<VkDescriptorSetLayoutBinding> bindings(LightRecordsIn records, VkShaderStageFlags stages,
                                                             std::vector<VkDescriptorSetLayoutBinding> more);
@@ -48,6 +54,7 @@ class LightResources {
 
  private:
   LightRecordsIn records_;
+  bool nearest_comparisons_;
   vk::UniqueSampler nearest_;
   vk::UniqueSampler compare_;
 };

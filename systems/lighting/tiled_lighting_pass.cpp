@@ -132,7 +132,8 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
   }
   if (filtered_lights_ == 0) return;
   // constant_id 0 to 5 as a group pass's (every light type), 6: the lights a pixel filters.
-  const std::vector<uint32_t> constants{0u, 0u, 0u, shadows::all_light_type_bits, 0u, 0u, filtered_lights_};
+  const std::vector<uint32_t> constants =
+      light_resources_.specialized({0u, 0u, 0u, shadows::all_light_type_bits, 0u, 0u, filtered_lights_});
   filter_floor_pipeline_ = vk::create_compute_pipeline(
       context, {for_records(light_resources_.records(), lighting_filter_floor_comp,
                             lighting_filter_floor_storage_records_comp),
@@ -198,7 +199,8 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
   probing_ = probe_ && view == LightingView::lit;
   if (probing_ && !probe_pipelines_[ranked]) {
     // constant_id 0 to 5 as a group pass's, with every light type and the view lit.
-    const std::vector<uint32_t> constants{0u, 0u, 0u, shadows::all_light_type_bits, 0u, ranked};
+    const std::vector<uint32_t> constants =
+        light_resources_.specialized({0u, 0u, 0u, shadows::all_light_type_bits, 0u, ranked});
     probe_pipelines_[ranked] = vk::create_compute_pipeline(
         context_,
         {for_records(light_resources_.records(), shadow_probe_comp, shadow_probe_storage_records_comp),
@@ -218,8 +220,8 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
     // constant_id 0: the group; 1: the view; 2: material.glsl's, unused here; 3: the light types;
     // 4: whether the group has a single light; 5: whether the lit sum's alpha holds the filter
     // floor; 6: the floor pass's, unused here; 7: whether a light of the group has contact shadows.
-    const std::vector<uint32_t> constants{group,  static_cast<uint32_t>(view), 0u, types, single, ranked, 0u,
-                                          contact};
+    const std::vector<uint32_t> constants = light_resources_.specialized(
+        {group, static_cast<uint32_t>(view), 0u, types, single, ranked, 0u, contact});
     const std::string name = "tiled lighting " + group_name(group);
     pipeline = vk::create_compute_pipeline(
         context_,
@@ -263,9 +265,9 @@ void TiledLightingPass::take_group_sets(const shadows::FrameLights& lights, Ligh
     pipelines_by_set_->request(
         keys[s], {for_records(light_resources_.records(), tiled_lighting_set_comp,
                               tiled_lighting_set_storage_records_comp),
-                  {0u, static_cast<uint32_t>(view), 0u, types, 0u, ranked, 0u, 0u, set, group_types},
-                  layout_.get(),
-                  "tiled lighting " + set_name(set)});
+                  light_resources_.specialized(
+                      {0u, static_cast<uint32_t>(view), 0u, types, 0u, ranked, 0u, 0u, set, group_types}),
+                  layout_.get(), "tiled lighting " + set_name(set)});
     ++requested;
   }
   if (requested > 0 && builds == PipelineBuilds::background) {

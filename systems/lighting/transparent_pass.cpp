@@ -66,10 +66,12 @@ void TransparentPass::prepare(rg::Format format, bool tiled, const shadows::Grou
   pipelines_
       .try_emplace(
           key_,
-          [layout, fragment_shader, &textures = textures_, format, groups, view](uint32_t draw_class) {
+          [layout, fragment_shader, &textures = textures_, &resources = light_resources_, format, groups,
+           view](uint32_t draw_class) {
             vk::GraphicsPipelineDesc desc =
                 camera_pipeline_desc(fragment_shader, {vk::to_vk(format)}, layout, "transparent");
-            desc.fragment_specialization = all_groups_pass_constants(groups, view, textures);
+            desc.fragment_specialization =
+                resources.specialized(all_groups_pass_constants(groups, view, textures));
             desc.depth_write = false;  // sorted, not depth-tested among themselves
             desc.blend = vk::Blend::alpha;
             return for_draw_class(std::move(desc), draw_class);
