@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "sandbox/light_heatmap_pass.h"
 
+#include <glm/glm.hpp>
+
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/vulkan/pass_recorder.h"
@@ -19,7 +21,7 @@ constexpr float full_scale = 32.0f;
 struct HeatMap {
   uint32_t tiles_across;
   float full_scale;
-  float scene_per_frame;  // scene pixels per frame pixel
+  glm::vec2 scene_per_frame;  // scene pixels per frame pixel, each axis (the sizes round apart)
 };
 
 }  // namespace
@@ -40,7 +42,9 @@ rg::ImageHandle LightHeatmapPass::add_to(rg::RenderGraph& graph, const LightTile
                                          rg::ImageHandle scene, rg::ImageHandle color) const {
   const rg::ImageDesc& culled = graph.resources()[scene.index].image;
   const LightTileGrid grid = LightTileGrid::of(culled.width, culled.height);
-  const float scene_per_frame = float(culled.width) / float(graph.resources()[color.index].image.width);
+  const rg::ImageDesc& frame = graph.resources()[color.index].image;
+  const glm::vec2 scene_per_frame(float(culled.width) / float(frame.width),
+                                  float(culled.height) / float(frame.height));
   graph.add_pass(
       "light heat map",
       [&](rg::PassBuilder& b) {

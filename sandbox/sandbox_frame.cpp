@@ -22,7 +22,7 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Op
                            uint32_t frames_in_flight, GLFWwindow* window)
     : context_(context),
       view_(view),
-      settings_(options.frame),
+      render_scale_(options.frame.render_scale),
       scene_name_(options.frame.scene),
       depth_overlay_enabled_(options.depth_overlay),
       depth_overlay_(context, frame_format),
@@ -46,14 +46,14 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Op
 SandboxFrame::~SandboxFrame() = default;
 
 void SandboxFrame::fit(VkExtent2D extent, bool window) {
-  const float scale = render_scale_for(settings_, context_, window);
+  const float scale = render_scale_for(render_scale_, context_, window);
   frame_.resize(extent, scale);
   if (ui_) ui_->set_render_scale(scale);
   if (scale < 1.0f && !render_scale_told_) {
     const VkExtent2D scene = frame_.scene_extent();
     std::printf("shadowgraph: the scene is rendered at %ux%u and scaled up to %ux%u (--render-scale %g%s)\n",
                 scene.width, scene.height, extent.width, extent.height, double(scale),
-                settings_.render_scale ? "" : ", the default in a window on a CPU device; 1: full size");
+                render_scale_ ? "" : ", the default in a window on a CPU device; 1: full size");
     render_scale_told_ = true;
   }
 }

@@ -40,7 +40,7 @@ class SandboxFrame {
   // one), saying once where the scene is drawn smaller than the picture.
   void fit(VkExtent2D extent, bool window);
   // The render scale from the next fit() on (the Frame panel's).
-  void set_render_scale(float scale) { settings_.render_scale = scale; }
+  void set_render_scale(float scale) { render_scale_ = scale; }
   // Whether the panels take the mouse or keyboard this frame (false without panels).
   bool ui_wants_input() const;
   // Lit picture or shadow-only view, from the next record() on (the panels' "view" follows).
@@ -59,7 +59,7 @@ class SandboxFrame {
 
   vk::VulkanContext& context_;
   SceneView& view_;
-  FrameSettings settings_;
+  std::optional<float> render_scale_;  // --render-scale, then the Frame panel's
   bool render_scale_told_ = false;
   std::string scene_name_;  // --scene: where the sidecar of saved edits goes
   bool depth_overlay_enabled_;

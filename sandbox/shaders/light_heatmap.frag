@@ -13,7 +13,7 @@ layout(std430, set = 0, binding = 0) readonly buffer TileRanges { uvec2 ranges[]
 layout(push_constant) uniform HeatMap {
   uint tiles_across;
   float full_scale;       // lights at which the ramp reaches red
-  float scene_per_frame;  // scene pixels per frame pixel (the frame's render scale)
+  vec2 scene_per_frame;   // scene pixels per frame pixel (the frame's render scale)
 } pass;
 
 layout(location = 0) out vec4 out_color;

@@ -243,10 +243,10 @@ FrameSettings command_line_defaults() {
   return settings;
 }
 
-float render_scale_for(const FrameSettings& settings, const vk::VulkanContext& context, bool window) {
-  if (settings.render_scale) return *settings.render_scale;
-  // On lavapipe (2-core VM) `default` took 305 ms a frame at 1280x720 and 92 at 640x360
-  // (2026-11-30): a window at full size is not interactive there.
+float render_scale_for(std::optional<float> chosen, const vk::VulkanContext& context, bool window) {
+  if (chosen) return *chosen;
+  // On lavapipe (2-core VM) `default` takes 131-135 ms a frame at 1280x720 and 45-46 at half
+  // scale (2026-12-05): a window at full size is not interactive there.
   return window && context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0.5f : 1.0f;
 }
 

@@ -55,9 +55,10 @@ struct FrameSettings {
 inline constexpr uint64_t max_scene_triangles = 100'000'000;
 inline constexpr uint32_t max_lights_per_type = 100'000;
 
-// The render scale a frame on `context`'s device takes: the settings' own, or where unset 1, but
-// half in a window on a CPU device, where every pixel lit costs the CPU (docs/PERFORMANCE.md).
-float render_scale_for(const FrameSettings& settings, const vk::VulkanContext& context, bool window);
+// The render scale a frame on `context`'s device takes: `chosen` (FrameSettings::render_scale), or
+// where unset 1, but half in a window on a CPU device, where every pixel lit costs the CPU
+// (docs/PERFORMANCE.md).
+float render_scale_for(std::optional<float> chosen, const vk::VulkanContext& context, bool window);
 
 // Every frame setting, in the order the option list shows them.
 std::span<const Setting<FrameSettings>> frame_settings_table();

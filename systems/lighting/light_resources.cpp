@@ -13,13 +13,6 @@
 namespace sg {
 namespace {
 
-VkFilter compare_filter(const vk::VulkanContext& context) {
-  VkFormatProperties properties;
-  vkGetPhysicalDeviceFormatProperties(context.physical_device(), vk::to_vk(ShadowAtlas::depth_format),
-                                      &properties);
-  return comparison_filter(properties.optimalTilingFeatures);
-}
-
 LightRecordsIn resolved(LightRecordsIn records, const vk::VulkanContext& context) {
   if (records != LightRecordsIn::automatic) return records;
   return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? LightRecordsIn::texel_buffer
@@ -34,12 +27,15 @@ VkFilter comparison_filter(VkFormatFeatureFlags features) {
 }
 
 bool shadow_comparisons_filter(const vk::VulkanContext& context) {
-  return compare_filter(context) == VK_FILTER_LINEAR;
+  VkFormatProperties properties;
+  vkGetPhysicalDeviceFormatProperties(context.physical_device(), vk::to_vk(ShadowAtlas::depth_format),
+                                      &properties);
+  return comparison_filter(properties.optimalTilingFeatures) == VK_FILTER_LINEAR;
 }
 
 LightResources::LightResources(const vk::VulkanContext& context, LightRecordsIn records)
     : records_(resolved(records, context)),
-      nearest_comparisons_(compare_filter(context) == VK_FILTER_NEAREST),
+      nearest_comparisons_(!shadow_comparisons_filter(context)),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       compare_(vk::create_sampler(context.device(),
                                   nearest_comparisons_ ? VK_FILTER_NEAREST : VK_FILTER_LINEAR, true)) {}

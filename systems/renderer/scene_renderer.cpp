@@ -78,15 +78,12 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
       light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
                      frames_in_flight, "light records", light_record_texel_format),
       max_light_records_(context.properties().limits.maxTexelBufferElements /
-                         (sizeof(shadows::GpuLight) / 16)),
-      shadow_comparisons_filtered_(shadow_comparisons_filter(context)) {
-  if (!shadow_comparisons_filtered_) {
+                         (sizeof(shadows::GpuLight) / 16)) {
+  if (!shadow_comparisons_filtered()) {
     std::printf(
         "shadowgraph: %s cannot filter the shadow maps' depth format, so each tap of the 2D pcf, noise and "
-        "pcss "
-        "kernels compares the nearest texel instead of a bilinear 2x2: their edges are harder than on "
-        "devices "
-        "that filter it\n",
+        "pcss kernels compares the nearest texel instead of a bilinear 2x2: their edges are harder than on "
+        "devices that filter it\n",
         context.properties().deviceName);
   }
   if (batched_shadow_views(context, settings)) {

@@ -110,7 +110,7 @@ class SceneRenderer {
   }
   // Whether the 2D kernels' hardware comparisons each filter a bilinear 2x2 or compare the
   // nearest texel, on devices that cannot filter the atlas's depth format (lavapipe).
-  bool shadow_comparisons_filtered() const { return shadow_comparisons_filtered_; }
+  bool shadow_comparisons_filtered() const { return shadow_comparisons_filter(context_); }
   // Caster instances drawn into shadow views: the batch's count (read back a few frames late) or
   // the per-light passes' CPU culling.
   uint64_t shadow_caster_draws() const;
@@ -213,7 +213,6 @@ class SceneRenderer {
   uint64_t frames_since_drop_message_ = 300;  // a message at most every 300 frames
   uint32_t contact_shadows_skipped_ = 0;
   bool contact_shadows_message_given_ = false;  // once a run
-  bool shadow_comparisons_filtered_;            // told once in the log where not
   uint64_t frames_prepared_ = 0;
 };
 

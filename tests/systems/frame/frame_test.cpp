@@ -301,11 +301,11 @@ TEST_F(FrameTest, AutomaticLightingFusesAFewLightsOnACpuDevice) {
 TEST_F(FrameTest, RenderScaleIsHalfOnlyInACpuDevicesWindowByDefault) {
   ASSERT_EQ(context.properties().deviceType, VK_PHYSICAL_DEVICE_TYPE_CPU);
   FrameSettings settings;
-  EXPECT_EQ(render_scale_for(settings, context, true), 0.5f);
-  EXPECT_EQ(render_scale_for(settings, context, false), 1.0f);
+  EXPECT_EQ(render_scale_for(settings.render_scale, context, true), 0.5f);
+  EXPECT_EQ(render_scale_for(settings.render_scale, context, false), 1.0f);
   settings.render_scale = 0.75f;
-  EXPECT_EQ(render_scale_for(settings, context, true), 0.75f);
-  EXPECT_EQ(render_scale_for(settings, context, false), 0.75f);
+  EXPECT_EQ(render_scale_for(settings.render_scale, context, true), 0.75f);
+  EXPECT_EQ(render_scale_for(settings.render_scale, context, false), 0.75f);
 }
 
 // The scene's extent is the frame's times the scale, rounded, at least a pixel; scales outside
