@@ -98,6 +98,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
   stats.height = frame.image().extent().height;
   stats.scene_width = frame.scene_extent().width;
   stats.scene_height = frame.scene_extent().height;
+  stats.render_scale_changes = sandbox_frame.render_scale_changes();
   stats.frames = record.cpu_frame_ms.size();
   stats.scene_name = scene.scene.name;
   stats.scene = scene::scene_stats(scene.scene);

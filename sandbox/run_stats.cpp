@@ -103,6 +103,7 @@ Json stats_json(const RunStats& stats) {
           {"device", stats.device},
           {"resolution", {{"width", stats.width}, {"height", stats.height}}},
           {"scene_resolution", {{"width", stats.scene_width}, {"height", stats.scene_height}}},
+          {"render_scale_changes", stats.render_scale_changes},
           {"frames", stats.frames},
           {"scene",
            {{"name", stats.scene_name},

@@ -13,6 +13,9 @@
 //   "resolution": {"width": 1280, "height": 720},
 //   "scene_resolution": {"width": 640, "height": 360},  // what the scene was drawn at, scaled up
 //                                                // to "resolution" (--render-scale)
+//   "render_scale_changes": 0,                   // how often a CPU device's window changed its
+//                                                // render scale to the frame time (the last
+//                                                // one is scene_resolution's)
 //   "frames": 3,                                 // frames rendered
 //   "scene": {
 //     "name": "default",                         // built-in name or the file path
@@ -142,6 +145,7 @@ struct RunStats {
   std::uint32_t height = 0;
   std::uint32_t scene_width = 0;  // Frame::scene_extent
   std::uint32_t scene_height = 0;
+  std::uint32_t render_scale_changes = 0;  // SandboxFrame::render_scale_changes
   std::uint64_t frames = 0;
   std::string scene_name;
   scene::SceneStats scene;  // scene::scene_stats of the rendered scene

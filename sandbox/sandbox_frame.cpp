@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "rendergraph/device/context.h"
+#include "rendergraph/vulkan/graph_executor.h"
 #include "systems/frame/scene_sidecar.h"
 #include "systems/scene/gltf_export.h"
 
@@ -46,16 +47,47 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Op
 SandboxFrame::~SandboxFrame() = default;
 
 void SandboxFrame::fit(VkExtent2D extent, bool window) {
-  const float scale = render_scale_for(render_scale_, context_, window);
+  const float default_scale = render_scale_for(std::nullopt, context_, window);
+  if (!render_scale_ && !adaptive_scale_ && default_scale < 1.0f) adaptive_scale_.emplace(default_scale);
+  const float scale =
+      adaptive_scale_ ? adaptive_scale_->scale() : render_scale_for(render_scale_, context_, window);
   frame_.resize(extent, scale);
+  fitted_scale_ = scale;
   if (ui_) ui_->set_render_scale(scale);
   if (scale < 1.0f && !render_scale_told_) {
     const VkExtent2D scene = frame_.scene_extent();
     std::printf("shadowgraph: the scene is rendered at %ux%u and scaled up to %ux%u (--render-scale %g%s)\n",
                 scene.width, scene.height, extent.width, extent.height, double(scale),
-                render_scale_ ? "" : ", the default in a window on a CPU device; 1: full size");
+                adaptive_scale_
+                    ? ", the start in a window on a CPU device, where the scale follows the frame "
+                      "time; choose one to hold it"
+                    : "");
     render_scale_told_ = true;
   }
+}
+
+std::optional<float> SandboxFrame::adapt_render_scale(const vk::FrameTimings& timings) {
+  if (!adaptive_scale_) return std::nullopt;
+  // The scene's passes are those before its upscale into the frame (Frame::resize).
+  double frame_ms = 0.0;
+  double scene_ms = 0.0;
+  bool scene = true;
+  for (size_t p = 0; p < timings.pass_ms.size(); ++p) {
+    if (timings.plan->passes[p].name == "upscale") scene = false;
+    frame_ms += timings.pass_ms[p];
+    if (scene) scene_ms += timings.pass_ms[p];
+  }
+  const float before = adaptive_scale_->scale();
+  const std::optional<float> scale = adaptive_scale_->take_frame(frame_ms, scene_ms);
+  if (scale) {
+    ++render_scale_changes_;
+    std::printf(
+        "shadowgraph: render scale %g -> %g: the GPU frame took %.1f ms (median of %zu frames) "
+        "against a budget of %g ms\n",
+        double(before), double(*scale), adaptive_scale_->judged_ms(), RenderScaleControl::window,
+        adaptive_scale_->budget_ms());
+  }
+  return scale;
 }
 
 FrameExtension SandboxFrame::extension() {

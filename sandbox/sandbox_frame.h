@@ -11,6 +11,7 @@
 #include "sandbox/depth_overlay_pass.h"
 #include "sandbox/light_heatmap_pass.h"
 #include "sandbox/options.h"
+#include "sandbox/render_scale_control.h"
 #include "sandbox/ui.h"
 #include "sandbox/ui_pass.h"
 #include "systems/frame/frame.h"
@@ -37,10 +38,21 @@ class SandboxFrame {
   Frame& frame() { return frame_; }
   const Frame& frame() const { return frame_; }
   // The frame resized to `extent` at its render scale (render_scale_for; `window`: presented in
-  // one), saying once where the scene is drawn smaller than the picture.
+  // one), saying once where the scene is drawn smaller than the picture. In a CPU device's window
+  // without a chosen scale, the scale adapts to the frame time (adapt_render_scale).
   void fit(VkExtent2D extent, bool window);
-  // The render scale from the next fit() on (the Frame panel's).
-  void set_render_scale(float scale) { render_scale_ = scale; }
+  // The render scale from the next fit() on (the Frame panel's): chosen, so no longer adapted.
+  void set_render_scale(float scale) {
+    render_scale_ = scale;
+    adaptive_scale_.reset();
+  }
+  // Takes a frame's pass times where the render scale adapts (RenderScaleControl); returns the
+  // scale the next fit() takes where it changed, and says so.
+  std::optional<float> adapt_render_scale(const vk::FrameTimings& timings);
+  // The render scale the last fit() took.
+  float render_scale() const { return fitted_scale_; }
+  // How often the adaptive render scale changed (--stats).
+  uint32_t render_scale_changes() const { return render_scale_changes_; }
   // Whether the panels take the mouse or keyboard this frame (false without panels).
   bool ui_wants_input() const;
   // Lit picture or shadow-only view, from the next record() on (the panels' "view" follows).
@@ -59,7 +71,10 @@ class SandboxFrame {
 
   vk::VulkanContext& context_;
   SceneView& view_;
-  std::optional<float> render_scale_;  // --render-scale, then the Frame panel's
+  std::optional<float> render_scale_;                 // --render-scale, then the Frame panel's
+  std::optional<RenderScaleControl> adaptive_scale_;  // in a CPU device's window, none chosen
+  uint32_t render_scale_changes_ = 0;
+  float fitted_scale_ = 1.0f;
   bool render_scale_told_ = false;
   std::string scene_name_;  // --scene: where the sidecar of saved edits goes
   bool depth_overlay_enabled_;

@@ -149,11 +149,12 @@ FrameResult WindowSession::frame() {
     pacer_.set_max_fps(ui->max_fps());
     if (std::optional<float> scale = ui->take_render_scale_request()) {
       frame_->set_render_scale(*scale);
-      if (ready_) {
-        frames_->wait_idle();  // the frame's images are made anew
-        frame_->fit(swapchain_extent(), true);
-      }
+      rescale_ = true;
     }
+  }
+  if (std::exchange(rescale_, false) && ready_) {
+    frames_->wait_idle();  // the frame's images are made anew
+    frame_->fit(swapchain_extent(), true);
   }
   std::this_thread::sleep_for(pacer_.wait(FramePacer::Clock::now()));
   glfwPollEvents();
@@ -202,7 +203,12 @@ FrameResult WindowSession::frame() {
     wall_frame_ms_.push_back(std::chrono::duration<double, std::milli>(presented - *last_present_).count());
   }
   last_present_ = presented;
-  gpu_times_.add(frame_->frame().executor().latest_timings());
+  const size_t timed = gpu_times_.frame_ms().size();
+  const std::optional<vk::FrameTimings>& timings = frame_->frame().executor().latest_timings();
+  gpu_times_.add(timings);
+  if (gpu_times_.frame_ms().size() > timed && frame_->adapt_render_scale(*timings)) {
+    rescale_ = true;  // at the next frame's start
+  }
   if (std::exchange(screenshot_, false)) {
     frames_->wait_idle();
     const std::string path = "shadowgraph-" + std::to_string(++screenshots_) + ".png";

@@ -74,6 +74,7 @@ class WindowSession {
   float scroll_ = 0.0f;       // wheel steps since the last frame
   bool frame_scene_ = false;  // F pressed since the last frame
   bool screenshot_ = false;   // P pressed since the last frame
+  bool rescale_ = false;      // the render scale changed since the last frame
   int screenshots_ = 0;
   std::vector<double> frame_ms_;
   std::vector<double> wall_frame_ms_;

@@ -82,7 +82,8 @@ std::vector<Setting<S>> make_table() {
       number<S>(
           "render-scale", "S", [](auto& s) -> auto& { return s.render_scale; }, 0.25, 1.0,
           "render the scene at S times the output's size and scale it up, under panels and overlays "
-          "drawn at full size (default: 0.5 in a window on CPU devices, 1 otherwise)"),
+          "drawn at full size (default: 1; in a window on a CPU device it starts at 0.5 and follows the "
+          "frame time)"),
       text<S>(
           "device", "NAME", [](auto& s) -> auto& { return s.device; },
           "use the Vulkan device whose name contains NAME (case-insensitive)"),

@@ -65,6 +65,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.height = 360;
   stats.scene_width = 320;
   stats.scene_height = 180;
+  stats.render_scale_changes = 3;
   stats.frames = 12;
   stats.scene_name = "stress";
   stats.scene.triangles = 250'123;
@@ -144,12 +145,13 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 24u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 25u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("schema_version"), stats_schema_version);
   EXPECT_EQ(json.at("generator"), "Shadowgraph " SHADOWGRAPH_VERSION);
   EXPECT_EQ(json.at("device"), stats.device);
   EXPECT_EQ(json.at("resolution"), nlohmann::json({{"width", 640}, {"height", 360}}));
   EXPECT_EQ(json.at("scene_resolution"), nlohmann::json({{"width", 320}, {"height", 180}}));
+  EXPECT_EQ(json.at("render_scale_changes"), 3);
   EXPECT_EQ(json.at("frames"), 12);
   const nlohmann::json& scene = json.at("scene");
   EXPECT_EQ(scene.size(), 5u) << scene.dump(2);

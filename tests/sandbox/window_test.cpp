@@ -73,11 +73,12 @@ TEST_F(WindowTest, TheSandboxSurvivesResizeMinimizeAndRestore) {
     EXPECT_EQ(session.swapchain_extent().width, uint32_t(w));
     EXPECT_EQ(session.swapchain_extent().height, uint32_t(h));
     EXPECT_EQ(render_until_rendered(session), sandbox::FrameResult::rendered);
-    // A CPU device's window draws the scene at half its size (render_scale_for), the frame at its own.
+    // A CPU device's window draws the scene at its render scale, the frame at its own size.
     const Frame& frame = session.sandbox_frame().frame();
+    const float scale = session.sandbox_frame().render_scale();
     EXPECT_EQ(frame.image().extent().width, uint32_t(w));
-    EXPECT_EQ(frame.scene_extent().width, uint32_t(std::lround(w * 0.5)));
-    EXPECT_EQ(frame.scene_extent().height, uint32_t(std::lround(h * 0.5)));
+    EXPECT_EQ(frame.scene_extent().width, uint32_t(std::lround(w * scale)));
+    EXPECT_EQ(frame.scene_extent().height, uint32_t(std::lround(h * scale)));
   }
   glfwIconifyWindow(session.window());
   for (int i = 0; i < 5; ++i) session.frame();
@@ -85,6 +86,27 @@ TEST_F(WindowTest, TheSandboxSurvivesResizeMinimizeAndRestore) {
   EXPECT_EQ(render_until_rendered(session), sandbox::FrameResult::rendered);
   session.finish();
   EXPECT_EQ(session.context().validation_errors(), 0u);
+}
+
+// In a CPU device's window without a chosen render scale the scene starts at half the window's
+// size and follows the frame time (RenderScaleControl): a small window's frames are short, so
+// it steps up to full size, and says so in --stats.
+TEST_F(WindowTest, TheRenderScaleFollowsTheFrameTime) {
+  sandbox::Options options;
+  options.frame.width = 160;
+  options.frame.height = 120;
+  options.frame.scene = "point-room";
+  sandbox::WindowSession session(options);
+  ASSERT_EQ(render_until_rendered(session), sandbox::FrameResult::rendered);
+  const Frame& frame = session.sandbox_frame().frame();
+  EXPECT_EQ(session.sandbox_frame().render_scale(), 0.5f);
+  EXPECT_EQ(frame.scene_extent().width, 80u);
+  for (int i = 0; i < 400 && session.sandbox_frame().render_scale() < 1.0f; ++i) session.frame();
+  EXPECT_EQ(session.sandbox_frame().render_scale(), 1.0f);
+  EXPECT_EQ(session.sandbox_frame().render_scale_changes(), 2u) << "0.5 -> 0.7 -> 1";
+  EXPECT_EQ(frame.scene_extent().width, 160u);
+  EXPECT_EQ(frame.scene_extent().height, 120u);
+  session.finish();
 }
 
 // A minimized window has a zero-sized framebuffer: the swapchain must go away rather than
