@@ -47,10 +47,10 @@ SandboxFrame::SandboxFrame(vk::VulkanContext& context, SceneView& view, const Op
 SandboxFrame::~SandboxFrame() = default;
 
 void SandboxFrame::fit(VkExtent2D extent, bool window) {
-  const float default_scale = render_scale_for(std::nullopt, context_, window);
-  if (!render_scale_ && !adaptive_scale_ && default_scale < 1.0f) adaptive_scale_.emplace(default_scale);
-  const float scale =
-      adaptive_scale_ ? adaptive_scale_->scale() : render_scale_for(render_scale_, context_, window);
+  // Where none was chosen, a scale under 1 (a CPU device's window) follows the frame time from there.
+  const float given = render_scale_for(render_scale_, context_, window);
+  if (!render_scale_ && !adaptive_scale_ && given < 1.0f) adaptive_scale_.emplace(given);
+  const float scale = adaptive_scale_ ? adaptive_scale_->scale() : given;
   frame_.resize(extent, scale);
   fitted_scale_ = scale;
   if (ui_) ui_->set_render_scale(scale);
@@ -68,12 +68,12 @@ void SandboxFrame::fit(VkExtent2D extent, bool window) {
 
 std::optional<float> SandboxFrame::adapt_render_scale(const vk::FrameTimings& timings) {
   if (!adaptive_scale_) return std::nullopt;
-  // The scene's passes are those before its upscale into the frame (Frame::resize).
+  // The scene's passes are those before its upscale into the frame.
   double frame_ms = 0.0;
   double scene_ms = 0.0;
   bool scene = true;
   for (size_t p = 0; p < timings.pass_ms.size(); ++p) {
-    if (timings.plan->passes[p].name == "upscale") scene = false;
+    if (timings.plan->passes[p].name == upscale_pass_name) scene = false;
     frame_ms += timings.pass_ms[p];
     if (scene) scene_ms += timings.pass_ms[p];
   }

@@ -210,7 +210,7 @@ void Frame::declare_passes(uint32_t slot, const std::optional<PresentTarget>& pr
   if (depth_capture_) depth_capture_->add_to(context_, graph_, imports_, targets.depth);
   // The renderer's smaller picture scaled up into the frame (resize's render scale).
   rg::ImageHandle color =
-      scene_image_ ? add_blit(graph_, "upscale", targets.color, frame_image) : targets.color;
+      scene_image_ ? add_blit(graph_, upscale_pass_name, targets.color, frame_image) : targets.color;
   for (const FrameExtension& extension : extensions_) {
     if (extension.add_passes) color = extension.add_passes(graph_, targets, color, slot);
   }

@@ -52,6 +52,9 @@ inline constexpr VkPipelineStageFlags2 acquire_wait_stage = VK_PIPELINE_STAGE_2_
 
 // The frame image's format: what screenshots read and the present pass blits.
 inline constexpr rg::Format frame_format = rg::Format::rgba8_srgb;
+// The pass that scales the renderer's picture up into the frame where the render scale is under
+// 1 (Frame::resize): the passes before it draw the scene at its size, those after at the frame's.
+inline constexpr const char* upscale_pass_name = "upscale";
 
 // What an application or a library adds to the frame without editing it (the sandbox: its panels
 // and overlays; sandbox/examples/custom_pass: a pass of its own, built against the installed

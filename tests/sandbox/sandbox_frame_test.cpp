@@ -210,7 +210,7 @@ TEST_F(SandboxFrameTest, RenderScaleDrawsTheSceneSmallerUnderFullSizeOverlays) {
   full.light_heatmap = true;
   const vk::Rgba8Image heat = render(full, 1);
   EXPECT_EQ(scene_extent.width, width);
-  EXPECT_EQ(std::count(passes.begin(), passes.end(), "upscale"), 0);
+  EXPECT_EQ(std::count(passes.begin(), passes.end(), upscale_pass_name), 0);
 
   sandbox::Options half = full;
   half.frame.render_scale = 0.5f;
@@ -218,7 +218,7 @@ TEST_F(SandboxFrameTest, RenderScaleDrawsTheSceneSmallerUnderFullSizeOverlays) {
   EXPECT_EQ(scene_extent.width, width / 2);
   EXPECT_EQ(scene_extent.height, height / 2);
   ASSERT_EQ(half_heat.width, width) << "the frame keeps its size";
-  const auto upscale = std::find(passes.begin(), passes.end(), "upscale");
+  const auto upscale = std::find(passes.begin(), passes.end(), upscale_pass_name);
   ASSERT_NE(upscale, passes.end());
   EXPECT_LT(upscale - passes.begin(),
             std::find(passes.begin(), passes.end(), "light heat map") - passes.begin());
