@@ -119,6 +119,11 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
   }
   stats.settled = settled_stats(frame, record);
   if (context.validation_enabled()) stats.validation_errors = context.validation_errors();
+  if (const vk::PipelineStatisticsLog* log = context.pipeline_statistics()) {
+    stats.pipelines = log->executables();
+    std::printf("shadowgraph: statistics of %zu pipeline executables (--stats' \"pipelines\")\n",
+                stats.pipelines->size());
+  }
   const SceneRenderer& renderer = frame.renderer();
   const ShadowAtlas& atlas = renderer.shadow_atlas();
   const shadows::ShadowScheduleStats& schedule = renderer.shadow_stats();

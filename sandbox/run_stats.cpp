@@ -42,6 +42,19 @@ Json setting_json(const RunStats::EchoedSetting& setting) {
   return *setting.value;
 }
 
+Json pipelines_json(const std::optional<std::vector<vk::PipelineExecutable>>& pipelines) {
+  if (!pipelines) return nullptr;
+  Json list = Json::array();
+  for (const vk::PipelineExecutable& executable : *pipelines) {
+    Json statistics = Json::object();
+    for (const vk::PipelineStatistic& statistic : executable.statistics)
+      statistics[statistic.name] = statistic.value;
+    list.push_back(
+        {{"pipeline", executable.pipeline}, {"executable", executable.name}, {"statistics", statistics}});
+  }
+  return list;
+}
+
 // The budget that held the most frames down; time on a tie.
 const char* bound_most(const RunStats::ShadowBudget& budget) {
   if (budget.frames_bound_by_time == 0 && budget.frames_bound_by_memory == 0) return "none";
@@ -165,6 +178,7 @@ Json stats_json(const RunStats& stats) {
             {"maps", {{"total", shadows.maps_total}, {"largest", maps}}},
             {"caster_draws", shadows.caster_draws}}},
           {"shadow_budget", shadow_budget_json(stats.shadow_budget)},
+          {"pipelines", pipelines_json(stats.pipelines)},
           {"settings", settings}};
 }
 

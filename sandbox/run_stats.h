@@ -117,6 +117,12 @@
 //     "view_cap": null                           // last frame: the time budget's cap on views
 //                                                // redrawn; null: none
 //   },
+//   "pipelines": [                               // with --pipeline-statistics where the driver
+//                                                // reports them, else null: every pipeline
+//                                                // built, in order (vk::PipelineExecutable)
+//     {"pipeline": "tiled lighting cube pcss", "executable": "Compute Shader",
+//      "statistics": {"Register Count": 64, ...}}  // the driver's names and figures
+//   ],
 //   "settings": {"width": 1280, "lighting": "auto", "camera": null, "headless": true, ...}
 //                                                // every option of the run by name (the
 //                                                // settings tables): numbers, true/false for
@@ -129,6 +135,7 @@
 #include <string>
 #include <vector>
 
+#include "rendergraph/device/pipeline_statistics.h"
 #include "systems/frame/setting.h"
 #include "systems/frame/time_summary.h"
 #include "systems/scene/scene_queries.h"
@@ -230,6 +237,8 @@ struct RunStats {
     double lowered_tiers = 0.0;
     std::optional<std::uint32_t> view_cap;  // unset: none
   } shadow_budget;
+  // Unset without --pipeline-statistics or where the driver reports none.
+  std::optional<std::vector<vk::PipelineExecutable>> pipelines;
 };
 
 // Writes `stats` as the JSON above (indented, one trailing newline), replacing the file.

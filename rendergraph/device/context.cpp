@@ -71,6 +71,15 @@ std::string version_string(uint32_t v) {
          std::to_string(VK_API_VERSION_PATCH(v));
 }
 
+bool has_device_extension(VkPhysicalDevice device, const char* name) {
+  uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
 // Why `device` cannot run the engine, or empty when it can.
 std::vector<std::string> disqualifications(VkPhysicalDevice device, bool presentation,
                                            uint32_t& queue_family) {
@@ -99,15 +108,8 @@ std::vector<std::string> disqualifications(VkPhysicalDevice device, bool present
   }
   if (queue_family == UINT32_MAX) reasons.push_back("no graphics+compute queue with timestamps");
 
-  if (presentation) {
-    uint32_t ext_count = 0;
-    vkEnumerateDeviceExtensionProperties(device, nullptr, &ext_count, nullptr);
-    std::vector<VkExtensionProperties> exts(ext_count);
-    vkEnumerateDeviceExtensionProperties(device, nullptr, &ext_count, exts.data());
-    const bool swapchain = std::any_of(exts.begin(), exts.end(), [](const auto& e) {
-      return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
-    });
-    if (!swapchain) reasons.push_back("no VK_KHR_swapchain (cannot present to a window)");
+  if (presentation && !has_device_extension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) {
+    reasons.push_back("no VK_KHR_swapchain (cannot present to a window)");
   }
   return reasons;
 }
@@ -327,6 +329,20 @@ void VulkanContext::create_device(const ContextOptions& options) {
   optional_features_ = enable_optional_features(supported, features);
   std::vector<const char*> extensions;
   if (options.presentation) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executable_info{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+  if (options.pipeline_statistics) {
+    if (has_device_extension(physical_device_, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) {
+      extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+      executable_info.pipelineExecutableInfo = VK_TRUE;
+      executable_info.pNext = features.core.pNext;
+      features.core.pNext = &executable_info;
+      pipeline_statistics_ = std::make_unique<PipelineStatisticsLog>();
+    } else {
+      std::printf("shadowgraph: %s reports no pipeline statistics (no %s)\n", properties_.deviceName,
+                  VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+    }
+  }
 
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   info.pNext = &features.core;

@@ -17,6 +17,7 @@
 
 #include "rendergraph/device/device_features.h"
 #include "rendergraph/device/gpu_allocator.h"
+#include "rendergraph/device/pipeline_statistics.h"
 
 namespace sg::vk {
 
@@ -26,6 +27,9 @@ struct ContextOptions {
   std::string device_name;                       // case-insensitive substring; empty: best type
   std::vector<std::string> instance_extensions;  // e.g. the window system's surface extensions
   bool presentation = false;                     // enable VK_KHR_swapchain on the device
+  // Keep every pipeline's compiler statistics (pipeline_statistics.h) where the device reports
+  // them; a device that does not is used all the same, and the log says so.
+  bool pipeline_statistics = false;
 };
 
 // True when SHADOWGRAPH_VALIDATION is set to something other than "0" in the environment.
@@ -56,6 +60,10 @@ class VulkanContext {
   GpuAllocator& allocator() { return *allocator_; }
   // The optional features this device has, all of them enabled.
   const OptionalFeatures& optional_features() const { return optional_features_; }
+
+  // The pipelines' statistics, where ContextOptions::pipeline_statistics asked for them and the
+  // device reports them; null otherwise. Pipelines built on this context add to it.
+  PipelineStatisticsLog* pipeline_statistics() const { return pipeline_statistics_.get(); }
 
   bool validation_enabled() const { return messenger_ != VK_NULL_HANDLE; }
   uint32_t validation_errors() const { return validation_errors_.load(); }
@@ -89,6 +97,7 @@ class VulkanContext {
   OptionalFeatures optional_features_;
   VkCommandPool one_time_pool_ = VK_NULL_HANDLE;
   std::unique_ptr<GpuAllocator> allocator_;
+  std::unique_ptr<PipelineStatisticsLog> pipeline_statistics_;
 
   PFN_vkCmdBeginDebugUtilsLabelEXT cmd_begin_label_ = nullptr;
   PFN_vkCmdEndDebugUtilsLabelEXT cmd_end_label_ = nullptr;

@@ -49,6 +49,19 @@ VkPipelineColorBlendAttachmentState attachment_blend(Blend blend) {
   return a;
 }
 
+// The pipelines' create flags: capture statistics where the context keeps them.
+VkPipelineCreateFlags create_flags(const VulkanContext& context) {
+  return context.pipeline_statistics() ? VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR : 0;
+}
+
+// Names the pipeline and adds its statistics to the context's log, where it keeps one.
+void describe(VulkanContext& context, VkPipeline pipeline, const std::string& name) {
+  if (!name.empty())
+    context.set_name(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<uint64_t>(pipeline), name.c_str());
+  if (PipelineStatisticsLog* log = context.pipeline_statistics())
+    log->capture(context.device(), pipeline, name);
+}
+
 }  // namespace
 
 UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPipelineDesc& desc) {
@@ -127,12 +140,11 @@ UniquePipeline create_graphics_pipeline(VulkanContext& context, const GraphicsPi
   info.pColorBlendState = &blend;
   info.pDynamicState = &dynamic;
   info.layout = desc.layout;
+  info.flags = create_flags(context);
   VkPipeline pipeline;
   check(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
         "vkCreateGraphicsPipelines " + desc.name);
-  if (!desc.name.empty()) {
-    context.set_name(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<uint64_t>(pipeline), desc.name.c_str());
-  }
+  describe(context, pipeline, desc.name);
   return UniquePipeline(context.device(), pipeline);
 }
 
@@ -146,12 +158,11 @@ UniquePipeline create_compute_pipeline(VulkanContext& context, const ComputePipe
   info.stage.pName = "main";
   info.stage.pSpecializationInfo = specialization.get();
   info.layout = desc.layout;
+  info.flags = create_flags(context);
   VkPipeline pipeline;
   check(vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
         "vkCreateComputePipelines " + desc.name);
-  if (!desc.name.empty()) {
-    context.set_name(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<uint64_t>(pipeline), desc.name.c_str());
-  }
+  describe(context, pipeline, desc.name);
   return UniquePipeline(context.device(), pipeline);
 }
 

@@ -90,6 +90,10 @@ std::vector<Setting<S>> make_table() {
       flag<S>(
           "validation", [](auto& s) -> auto& { return s.validation; },
           "Khronos validation layer on (also SHADOWGRAPH_VALIDATION=1)"),
+      flag<S>(
+          "pipeline-statistics", [](auto& s) -> auto& { return s.pipeline_statistics; },
+          "keep every pipeline's compiler statistics where the driver reports them (NVIDIA's: "
+          "registers, instructions), for --stats' \"pipelines\""),
       text<S>(
           "scene", "NAME|PATH", [](auto& s) -> auto& { return s.scene; },
           "default, stress, point-room, spot-columns (one light each: a point light in a 4.7k-triangle "
@@ -255,6 +259,7 @@ vk::ContextOptions context_options(const FrameSettings& settings) {
   vk::ContextOptions context;
   context.validation = settings.validation || vk::validation_requested_by_environment();
   context.device_name = settings.device;
+  context.pipeline_statistics = settings.pipeline_statistics;
   return context;
 }
 

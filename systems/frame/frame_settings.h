@@ -23,9 +23,10 @@ struct FrameSettings {
   // The scene rendered at this fraction of the picture's size and scaled up into it
   // (Frame::resize); unset: render_scale_for's default.
   std::optional<float> render_scale;
-  std::string device;             // a substring of the Vulkan device's name; empty: the best device
-  bool validation = false;        // also on with SHADOWGRAPH_VALIDATION=1 (context_options)
-  std::string scene = "default";  // a built-in scene's name or a .gltf/.glb path
+  std::string device;                // a substring of the Vulkan device's name; empty: the best device
+  bool validation = false;           // also on with SHADOWGRAPH_VALIDATION=1 (context_options)
+  bool pipeline_statistics = false;  // vk::ContextOptions::pipeline_statistics
+  std::string scene = "default";     // a built-in scene's name or a .gltf/.glb path
   // --camera: a pose, or the name of one of the scene's cameras (camera_name); neither: the
   // scene's first camera, or one framing it.
   std::optional<scene::CameraPose> camera;

@@ -139,13 +139,14 @@ TEST(StatsJson, EveryFieldRoundTrips) {
                     {"naive", SettingType::flag, "true"},
                     {"lighting", SettingType::choice, "deferred"},
                     {"camera", SettingType::text, std::nullopt}};
+  stats.pipelines = {{{"tiled lighting", "Compute Shader", {{"Register Count", 64}, {"Spills", 0}}}}};
 
   TempDir dir;
   const std::string path = dir.path("stats.json").string();
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 25u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 26u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("schema_version"), stats_schema_version);
   EXPECT_EQ(json.at("generator"), "Shadowgraph " SHADOWGRAPH_VERSION);
   EXPECT_EQ(json.at("device"), stats.device);
@@ -251,6 +252,8 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   expect_summary(budget.at("lights_dropped_by_memory"), *stats.shadow_budget.lights_dropped_by_memory);
   EXPECT_EQ(budget.at("lowered_tiers"), 1.25);
   EXPECT_EQ(budget.at("view_cap"), 96);
+  EXPECT_EQ(json.at("pipelines"), nlohmann::json::parse(R"([{"pipeline": "tiled lighting",
+      "executable": "Compute Shader", "statistics": {"Register Count": 64, "Spills": 0}}])"));
 }
 
 TEST(StatsJson, TheShadowBudgetBoundIsTheOneThatHeldTheMostFramesDown) {
@@ -277,6 +280,7 @@ TEST(StatsJson, MissingMeasurementsAreNull) {
   EXPECT_TRUE(json.at("gpu_frame_ms").is_null());
   EXPECT_TRUE(json.at("settled").is_null()) << "no frame in which every light had its map";
   EXPECT_TRUE(json.at("validation_errors").is_null());
+  EXPECT_TRUE(json.at("pipelines").is_null()) << "no statistics kept";
   EXPECT_TRUE(json.at("passes").is_array());
   EXPECT_TRUE(json.at("passes").empty());
   EXPECT_EQ(json.at("frames"), 0);
