@@ -119,7 +119,7 @@
 //   },
 //   "pipelines": [                               // with --pipeline-statistics where the driver
 //                                                // reports them, else null: every pipeline
-//                                                // built, in order (vk::PipelineExecutable)
+//                                                // the engine built, in order (not the panels')
 //     {"pipeline": "tiled lighting cube pcss", "executable": "Compute Shader",
 //      "statistics": {"Register Count": 64, ...}}  // the driver's names and figures
 //   ],

@@ -4,7 +4,8 @@
 // properties): on NVIDIA a shader's registers and instructions; lavapipe (Mesa 22.3) reports none.
 // A shader's registers bound how many of its invocations a GPU keeps in flight, which is what
 // hides its loads' latency, and no timer shows them: with the log on
-// (ContextOptions::pipeline_statistics) every pipeline built reports its executables here.
+// (ContextOptions::pipeline_statistics) every pipeline built by create_*_pipeline (pipeline.h)
+// reports its executables here; the panels' (ImGui's own) does not.
 #include <mutex>
 #include <string>
 #include <string_view>
