@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Pipelines' compiler statistics: kept only when asked for, and then for every pipeline built, in
-// the frame or on the background builder's thread. lavapipe (Mesa 22.3) reports none, so there the
-// second test checks that the device really lacks the extension and skips.
+// Pipelines' compiler statistics, when asked for: kept for every pipeline built, in the frame or on
+// the background builder's thread. lavapipe (Mesa 22.3) reports none, so there the test checks
+// that the device really lacks the extension and skips.
 #include <algorithm>
 #include <cstring>
 #include <string>
