@@ -16,22 +16,29 @@ layout(set = 0, binding = hdr_binding, rgba16f) uniform readonly image2D hdr;
 // Set before the dispatch (ShadowProbe::record_start): `capacity` pairs fit; a pair is kept where
 // its cell_random draw is below `keep` (1: every pair). The pass counts the pairs it met in
 // `wanted` (one atomic a pixel) and those it kept in `kept`, writing the first `capacity` kept:
-// pixel index, record index, and packHalf2x16(shade, weight).
+// pixel index, record index, and packHalf2x16(shade, weight). `listed` counts the (tile, light)
+// pairs of the light lists, each tile's by its first pixel.
 layout(std430, set = 0, binding = shadow_probe_binding) buffer Probe {
   uint wanted;
   uint kept;
   uint capacity;
   float keep;
+  uint listed;
   uint pairs[];
 } probe;
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(frame.screen.x) || pixel.y >= int(frame.screen.y)) return;
+  uint tile = (uint(pixel.y) / LIGHT_TILE_SIZE) * frame.screen.z + uint(pixel.x) / LIGHT_TILE_SIZE;
+  if (all(equal(uvec2(pixel) % LIGHT_TILE_SIZE, uvec2(0u)))) {
+    uint listed = 0u;
+    for (uint group = 0u; group < LIGHT_GROUP_COUNT; ++group) listed += tile_ranges[tile * LIGHT_GROUP_COUNT + group].y;
+    atomicAdd(probe.listed, listed);
+  }
   SurfacePoint p;
   vec3 position;
   if (!deferred_surface(pixel, p, position)) return;
-  uint tile = (uint(pixel.y) / LIGHT_TILE_SIZE) * frame.screen.z + uint(pixel.x) / LIGHT_TILE_SIZE;
   float filter_floor = RANKED_FILTERING ? imageLoad(hdr, pixel).a : 0.0;
   uint pixel_index = uint(pixel.y) * frame.screen.x + uint(pixel.x);
   uint met = 0u;

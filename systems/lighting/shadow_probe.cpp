@@ -9,6 +9,7 @@
 #include <glm/packing.hpp>
 
 #include "rendergraph/device/barriers.h"
+#include "systems/lighting/light_tiles_pass.h"
 
 namespace sg {
 namespace {
@@ -19,6 +20,7 @@ struct Header {
   uint32_t kept;
   uint32_t capacity;
   float keep;
+  uint32_t listed;
 };
 constexpr uint64_t words_per_pair = 3;
 
@@ -27,6 +29,19 @@ VkDeviceSize probe_bytes(uint32_t capacity) {
 }
 
 }  // namespace
+
+uint64_t ShadowProbeResult::lighting_list_pairs(uint32_t width) const {
+  const uint32_t across = LightTileGrid::of(width, 1).across;
+  std::vector<uint64_t> keys;
+  keys.reserve(pairs.size());
+  for (const ShadowProbePair& pair : pairs) {
+    const uint32_t x = pair.pixel % width, y = pair.pixel / width;
+    const uint64_t tile = uint64_t{y / tiles::LIGHT_TILE_SIZE} * across + x / tiles::LIGHT_TILE_SIZE;
+    keys.push_back(tile << 32 | pair.light);
+  }
+  std::sort(keys.begin(), keys.end());
+  return static_cast<uint64_t>(std::unique(keys.begin(), keys.end()) - keys.begin());
+}
 
 ShadowProbe::ShadowProbe(vk::VulkanContext& context, uint64_t capacity, float keep)
     : capacity_(
@@ -43,7 +58,7 @@ ShadowProbe::ShadowProbe(vk::VulkanContext& context, uint64_t capacity, float ke
 }
 
 void ShadowProbe::record_start(VkCommandBuffer cmd) const {
-  const Header header{0, 0, capacity_, keep_};
+  const Header header{0, 0, capacity_, keep_, 0};
   vkCmdUpdateBuffer(cmd, device_.handle(), 0, sizeof(header), &header);
   vk::memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -62,7 +77,7 @@ void ShadowProbe::record_finish(VkCommandBuffer cmd) const {
 ShadowProbeResult ShadowProbe::read() const {
   Header header;
   std::memcpy(&header, host_.mapped(), sizeof(header));
-  ShadowProbeResult result{header.wanted, header.kept, {}};
+  ShadowProbeResult result{header.wanted, header.kept, header.listed, {}};
   if (header.kept > capacity_) return result;
   const auto* words =
       reinterpret_cast<const uint32_t*>(static_cast<const std::byte*>(host_.mapped()) + sizeof(Header));

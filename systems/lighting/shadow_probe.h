@@ -30,8 +30,12 @@ struct ShadowProbePair {
 struct ShadowProbeResult {
   uint64_t wanted = 0;                 // pairs the frame had
   uint64_t kept = 0;                   // of them, drawn into the sample (all where keep was 1)
+  uint64_t listed = 0;                 // (tile, light) pairs the frame's light lists held
   std::vector<ShadowProbePair> pairs;  // the kept pairs, unless more were kept than fit
   bool complete() const { return kept == pairs.size(); }
+  // Of the `listed` (tile, light) pairs, those the kept pairs fall in: the pairs that light at
+  // least one pixel of a frame `width` pixels wide, where every pair was kept (fewer otherwise).
+  uint64_t lighting_list_pairs(uint32_t width) const;
 };
 
 class ShadowProbe {

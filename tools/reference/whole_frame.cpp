@@ -218,6 +218,8 @@ WholeFrameReport run_whole_frame(vk::VulkanContext& context, const FrameSettings
     report.lights_without_map += light.shadowed && light.resolution == 0 ? 1 : 0;
   }
   report.frame_pairs = probed.probe.wanted;
+  report.list_pairs = probed.probe.listed;
+  if (keep == 1.0f) report.lighting_list_pairs = probed.probe.lighting_list_pairs(frame.width);
   report.sampled_fraction = keep;
   report.soft_samples = settings.soft_samples;
   report.edge_band = settings.edge_band;

@@ -14,6 +14,7 @@
 // Where the frame has more pairs than `pairs_per_pixel` times its pixels, the run is repeated
 // keeping a random share of the pairs (the same share of every light's), and the report says so.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,10 @@ struct WholeFrameReport {
       0;                      // of those, with no map this frame (out of sight, or over the memory budget)
   uint64_t frame_pairs = 0;   // (pixel, shadowed light) pairs the frame shaded
   uint64_t traced_pairs = 0;  // of them, traced
+  // The (tile, light) pairs of the light lists, and of them those that light at least one pixel
+  // (where the frame's pairs were not sampled): how tightly the culling lists the lights.
+  uint64_t list_pairs = 0;
+  std::optional<uint64_t> lighting_list_pairs;
   double sampled_fraction = 1.0;  // the share of pairs kept
   uint32_t soft_samples = 0;
   int edge_band = 0;

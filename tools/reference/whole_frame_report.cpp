@@ -25,6 +25,13 @@ void print_whole_frame(std::FILE* out, const WholeFrameReport& report) {
                100.0 * e.misclassified, static_cast<unsigned long long>(e.lit_pixels), e.mae,
                static_cast<unsigned long long>(e.pairs), static_cast<unsigned long long>(e.band_pairs),
                report.edge_band, report.trace_seconds);
+  if (report.lighting_list_pairs) {
+    std::fprintf(
+        out, "light lists: %llu (tile, light) pairs, %llu of them lighting a pixel (%.1f%%)\n\n",
+        static_cast<unsigned long long>(report.list_pairs),
+        static_cast<unsigned long long>(*report.lighting_list_pairs),
+        report.list_pairs ? 100.0 * double(*report.lighting_list_pairs) / double(report.list_pairs) : 0.0);
+  }
   std::fprintf(
       out,
       "| light | type | algorithm | map | pairs | weight share | misclassified | MAE | adds to frame "
@@ -75,6 +82,9 @@ nlohmann::json to_json(const WholeFrameReport& report) {
             {"band_pairs", e.band_pairs},
             {"frame_pairs", report.frame_pairs},
             {"traced_pairs", report.traced_pairs},
+            {"list_pairs", report.list_pairs},
+            {"lighting_list_pairs",
+             report.lighting_list_pairs ? nlohmann::json(*report.lighting_list_pairs) : nlohmann::json()},
             {"sampled_fraction", report.sampled_fraction},
             {"sampled", report.sampled_fraction < 1.0}}},
           {"worst_lights", std::move(lights)}};

@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: MIT
 // shadowgraph-reference --whole-frame on lavapipe: with one light on it measures what the
 // per-light mode measures, a starved shadow budget comes out worse than the default, and a frame
-// with more pairs than the probe holds is measured on a sample that says so.
+// with more pairs than the probe holds is measured on a sample that says so, and the light lists'
+// pairs are counted as the frame holds them, with those that light a pixel.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "rendergraph/device/frame_ring.h"
+#include "systems/frame/frame.h"
+#include "systems/frame/gpu_time_log.h"
+#include "systems/frame/headless_frames.h"
+#include "systems/frame/scene_view.h"
 #include "tests/support/gpu_test.h"
 #include "tools/reference/run_reference.h"
 #include "tools/reference/whole_frame.h"
@@ -87,6 +93,28 @@ TEST_F(WholeFrame, AFrameWithMorePairsThanRoomIsMeasuredOnASample) {
   EXPECT_LE(sampled.traced_pairs, 160u * 90);
   EXPECT_EQ(sampled.frame_pairs, all.frame_pairs);
   EXPECT_NEAR(sampled.error.mae, all.error.mae, 0.5 * all.error.mae + 0.002);
+  EXPECT_FALSE(sampled.lighting_list_pairs) << "a sample cannot tell which pairs light nothing";
+  EXPECT_EQ(sampled.list_pairs, all.list_pairs);
+}
+
+TEST_F(WholeFrame, CountsTheListPairsAndThoseThatLightAPixel) {
+  FrameSettings options = small_hall();  // standing still: every frame has the same lists
+  options.renderer.lighting = LightingPath::deferred;
+  const reference::WholeFrameReport report = reference::run_whole_frame(context, options, {});
+
+  // The lists as the renderer counts them, in frames of their own.
+  SceneView view = load_scene_view(options, float(options.width) / float(options.height));
+  vk::FrameRing ring(context);
+  Frame frame(context, view, options, ring.frames_in_flight());
+  frame.resize({options.width, options.height});
+  GpuTimeLog times;
+  render_headless_frames(frame, ring, 4, times);
+  ASSERT_FALSE(frame.light_list_pairs().empty());
+  EXPECT_EQ(report.list_pairs, uint64_t(frame.light_list_pairs().back()));
+  ASSERT_TRUE(report.lighting_list_pairs);
+  EXPECT_GE(*report.lighting_list_pairs, uint64_t(frame.light_list_pairs().back()) / 4);
+  // From afar the spots, pointing down, light a few tiles of those the culling lists them in.
+  EXPECT_LT(*report.lighting_list_pairs, report.list_pairs);
 }
 
 }  // namespace
