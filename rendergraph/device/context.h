@@ -32,6 +32,9 @@ struct ContextOptions {
   bool pipeline_statistics = false;
 };
 
+// Whether `device` offers the device extension `name`.
+bool has_device_extension(VkPhysicalDevice device, const char* name);
+
 // True when SHADOWGRAPH_VALIDATION is set to something other than "0" in the environment.
 bool validation_requested_by_environment();
 
