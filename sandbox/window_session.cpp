@@ -203,10 +203,8 @@ FrameResult WindowSession::frame() {
     wall_frame_ms_.push_back(std::chrono::duration<double, std::milli>(presented - *last_present_).count());
   }
   last_present_ = presented;
-  const size_t timed = gpu_times_.frame_ms().size();
   const std::optional<vk::FrameTimings>& timings = frame_->frame().executor().latest_timings();
-  gpu_times_.add(timings);
-  if (gpu_times_.frame_ms().size() > timed && frame_->adapt_render_scale(*timings)) {
+  if (gpu_times_.add(timings) && frame_->adapt_render_scale(*timings)) {
     rescale_ = true;  // at the next frame's start
   }
   if (std::exchange(screenshot_, false)) {

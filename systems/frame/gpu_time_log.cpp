@@ -6,8 +6,8 @@
 
 namespace sg {
 
-void GpuTimeLog::add(const std::optional<vk::FrameTimings>& timings) {
-  if (!timings || (last_frame_ && *last_frame_ == timings->frame_number)) return;
+bool GpuTimeLog::add(const std::optional<vk::FrameTimings>& timings) {
+  if (!timings || (last_frame_ && *last_frame_ == timings->frame_number)) return false;
   last_frame_ = timings->frame_number;
   frame_ms_.push_back(std::accumulate(timings->pass_ms.begin(), timings->pass_ms.end(), 0.0));
   frame_numbers_.push_back(timings->frame_number);
@@ -22,6 +22,7 @@ void GpuTimeLog::add(const std::optional<vk::FrameTimings>& timings) {
     found->ms.resize(frame, 0.0);
     found->ms.back() += timings->pass_ms[p];
   }
+  return true;
 }
 
 std::vector<PassTime> GpuTimeLog::pass_summaries(size_t first) const {

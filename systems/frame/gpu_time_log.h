@@ -13,8 +13,9 @@ namespace sg {
 
 class GpuTimeLog {
  public:
-  // Takes the timings of a completed frame; the same frame offered twice counts once.
-  void add(const std::optional<vk::FrameTimings>& timings);
+  // Takes the timings of a completed frame; the same frame offered twice counts once. Whether
+  // they were a frame not logged before.
+  bool add(const std::optional<vk::FrameTimings>& timings);
 
   // Sum of a frame's passes, per logged frame.
   const std::vector<double>& frame_ms() const { return frame_ms_; }
