@@ -337,7 +337,6 @@ void VulkanContext::create_device(const ContextOptions& options) {
       executable_info.pipelineExecutableInfo = VK_TRUE;
       executable_info.pNext = features.core.pNext;
       features.core.pNext = &executable_info;
-      pipeline_statistics_ = std::make_unique<PipelineStatisticsLog>();
     } else {
       std::printf("shadowgraph: %s reports no pipeline statistics (no %s)\n", properties_.deviceName,
                   VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
@@ -351,6 +350,8 @@ void VulkanContext::create_device(const ContextOptions& options) {
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
   check(vkCreateDevice(physical_device_, &info, nullptr, &device_), "vkCreateDevice");
+  if (executable_info.pipelineExecutableInfo)
+    pipeline_statistics_ = std::make_unique<PipelineStatisticsLog>(device_);
   vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
 
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

@@ -58,8 +58,7 @@ VkPipelineCreateFlags create_flags(const VulkanContext& context) {
 void describe(VulkanContext& context, VkPipeline pipeline, const std::string& name) {
   if (!name.empty())
     context.set_name(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<uint64_t>(pipeline), name.c_str());
-  if (PipelineStatisticsLog* log = context.pipeline_statistics())
-    log->capture(context.device(), pipeline, name);
+  if (PipelineStatisticsLog* log = context.pipeline_statistics()) log->capture(pipeline, name);
 }
 
 }  // namespace

@@ -18,19 +18,21 @@ double statistic_value(const VkPipelineExecutableStatisticKHR& statistic) {
 
 }  // namespace
 
-void PipelineStatisticsLog::capture(VkDevice device, VkPipeline pipeline, std::string_view name) {
-  // Extension commands: the loader exports only the core ones.
-  const auto get_properties = reinterpret_cast<PFN_vkGetPipelineExecutablePropertiesKHR>(
-      vkGetDeviceProcAddr(device, "vkGetPipelineExecutablePropertiesKHR"));
-  const auto get_statistics = reinterpret_cast<PFN_vkGetPipelineExecutableStatisticsKHR>(
-      vkGetDeviceProcAddr(device, "vkGetPipelineExecutableStatisticsKHR"));
+PipelineStatisticsLog::PipelineStatisticsLog(VkDevice device)
+    : device_(device),
+      get_properties_(reinterpret_cast<PFN_vkGetPipelineExecutablePropertiesKHR>(
+          vkGetDeviceProcAddr(device, "vkGetPipelineExecutablePropertiesKHR"))),
+      get_statistics_(reinterpret_cast<PFN_vkGetPipelineExecutableStatisticsKHR>(
+          vkGetDeviceProcAddr(device, "vkGetPipelineExecutableStatisticsKHR"))) {}
+
+void PipelineStatisticsLog::capture(VkPipeline pipeline, std::string_view name) {
   VkPipelineInfoKHR pipeline_info{VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR};
   pipeline_info.pipeline = pipeline;
   uint32_t count = 0;
-  check(get_properties(device, &pipeline_info, &count, nullptr), "vkGetPipelineExecutablePropertiesKHR");
+  check(get_properties_(device_, &pipeline_info, &count, nullptr), "vkGetPipelineExecutablePropertiesKHR");
   std::vector<VkPipelineExecutablePropertiesKHR> properties(
       count, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR});
-  check(get_properties(device, &pipeline_info, &count, properties.data()),
+  check(get_properties_(device_, &pipeline_info, &count, properties.data()),
         "vkGetPipelineExecutablePropertiesKHR");
 
   std::vector<PipelineExecutable> captured;
@@ -39,11 +41,11 @@ void PipelineStatisticsLog::capture(VkDevice device, VkPipeline pipeline, std::s
     executable_info.pipeline = pipeline;
     executable_info.executableIndex = index;
     uint32_t statistic_count = 0;
-    check(get_statistics(device, &executable_info, &statistic_count, nullptr),
+    check(get_statistics_(device_, &executable_info, &statistic_count, nullptr),
           "vkGetPipelineExecutableStatisticsKHR");
     std::vector<VkPipelineExecutableStatisticKHR> statistics(
         statistic_count, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR});
-    check(get_statistics(device, &executable_info, &statistic_count, statistics.data()),
+    check(get_statistics_(device_, &executable_info, &statistic_count, statistics.data()),
           "vkGetPipelineExecutableStatisticsKHR");
     PipelineExecutable executable{std::string(name), properties[index].name, {}};
     for (const VkPipelineExecutableStatisticKHR& statistic : statistics) {

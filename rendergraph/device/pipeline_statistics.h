@@ -31,11 +31,17 @@ struct PipelineExecutable {
 // The pipelines' executables in the order they were built; any thread may add to it.
 class PipelineStatisticsLog {
  public:
+  // For `device`, created with the extension and its pipelineExecutableInfo feature.
+  explicit PipelineStatisticsLog(VkDevice device);
   // The executables of `pipeline`, built with VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR.
-  void capture(VkDevice device, VkPipeline pipeline, std::string_view name);
+  void capture(VkPipeline pipeline, std::string_view name);
   std::vector<PipelineExecutable> executables() const;
 
  private:
+  VkDevice device_;
+  // Extension commands: the loader exports only the core ones.
+  PFN_vkGetPipelineExecutablePropertiesKHR get_properties_;
+  PFN_vkGetPipelineExecutableStatisticsKHR get_statistics_;
   mutable std::mutex mutex_;
   std::vector<PipelineExecutable> executables_;
 };
