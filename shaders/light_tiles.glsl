@@ -36,7 +36,9 @@ struct TileVolume {
   vec4 sphere;    // xyz centre, w radius; w < 0: no surfaces
   vec4 apex_sin;  // xyz the camera's position, w sin of the cone's half angle
   vec4 axis_cos;  // xyz the cone's unit axis, w cos of its half angle
-  vec4 shells;    // x, y: the least and greatest distance from the camera of the tile's surfaces
+  vec4 shells;    // x, y: the least and greatest distance from the camera of the tile's surfaces;
+                  // z, w: its nearest and farthest depth plane's distance along the view direction
+  vec4 rays[4];   // xyz: the tile's corner rays from the camera, a unit step along the view direction
 };
 
 // The camera's position: the point every view ray starts from (clip space (0, 0, 1, 0) brought back).
@@ -58,6 +60,7 @@ TileVolume tile_volume(mat4 inverse_view_projection, vec2 ndc_min, vec2 ndc_max,
   vec3 axis = vec3(0.0f);
   float nearest = 3.0e38f;
   float farthest = 0.0f;
+  vec2 planes = vec2(3.0e38f, 0.0f);
   for (uint i = 0u; i < 8u; ++i) {
     vec4 ndc = vec4((i & 1u) != 0u ? ndc_max.x : ndc_min.x, (i & 2u) != 0u ? ndc_max.y : ndc_min.y,
                     (i & 4u) != 0u ? depth_max : depth_min, 1.0f);
@@ -65,11 +68,14 @@ TileVolume tile_volume(mat4 inverse_view_projection, vec2 ndc_min, vec2 ndc_max,
     vec3 offset = vec3(world) / world.w - apex;
     // No point of a depth's plane in the tile is nearer than that plane along the view direction;
     // the farthest is a corner.
-    nearest = min(nearest, dot(offset, forward));
+    float ahead = dot(offset, forward);
+    nearest = min(nearest, ahead);
     farthest = max(farthest, length(offset));
+    planes = vec2(min(planes.x, ahead), max(planes.y, ahead));
     if (i < 4u) {
       rays[i] = normalize(offset);
       axis += rays[i];
+      tile.rays[i] = vec4(offset / ahead, 0.0f);
     }
   }
   axis = normalize(axis);
@@ -77,7 +83,7 @@ TileVolume tile_volume(mat4 inverse_view_projection, vec2 ndc_min, vec2 ndc_max,
   for (uint i = 0u; i < 4u; ++i) cos_half = min(cos_half, dot(axis, rays[i]));
   tile.apex_sin = vec4(apex, sqrt(max(1.0f - cos_half * cos_half, 0.0f)));
   tile.axis_cos = vec4(axis, cos_half);
-  tile.shells = vec4(nearest, farthest, 0.0f, 0.0f);
+  tile.shells = vec4(nearest, farthest, planes.x, planes.y);
   return tile;
 }
 
@@ -133,10 +139,41 @@ bool light_range_meets_tile_cone(Light light, TileVolume tile, float margin) {
   return sphere_meets_tile_cone(vec4(vec3(light.position_range), light.position_range.w + margin), tile);
 }
 
-// Whether `light` can reach anything in `tile`: its reach meets the tile's sphere, and the sphere of
-// its range meets the tile's cone.
+// Whether a spot light's cone misses the tile's slice of the view frustum by more than `margin`:
+// the plane through the light tangent to its cone on the side that faces the tile's sphere has
+// every corner of the slice beyond it. The cone lies behind every such plane, so this never drops
+// a tile the cone meets; it drops those the tests of spheres keep because a sphere around a
+// floor's tile reaches below the floor, where the cone is wider than its pool of light.
+bool spot_cone_misses_slice(Light light, TileVolume tile, float margin) {
+  if (light.info.x != LIGHT_SPOT) return false;
+  vec3 apex = vec3(light.position_range);
+  vec3 axis = vec3(light.direction_type);
+  vec3 offset = vec3(tile.sphere) - apex;
+  vec3 across = offset - dot(offset, axis) * axis;
+  float across_length = length(across);
+  if (across_length <= 0.0f) return false;
+  float cos_outer = light.shape.y;
+  float sin_outer = sqrt(max(1.0f - cos_outer * cos_outer, 0.0f));
+  vec3 normal = across * (cos_outer / across_length) - axis * sin_outer;
+  float least = 3.0e38f;
+  for (uint i = 0u; i < 4u; ++i) {
+    float step = dot(normal, vec3(tile.rays[i]));
+    least = min(least, min(step * tile.shells.z, step * tile.shells.w));
+  }
+  return dot(normal, vec3(tile.apex_sin) - apex) + least > margin;
+}
+
+// Whether `light` can reach anything in `volume`: its reach meets the volume's sphere, and the
+// sphere of its range meets the volume's cone. Both tests only grow with the sphere, the cone and
+// the shells, so they also bound a volume around several tiles (light_tiles_coarse.comp).
+bool light_reaches_volume(Light light, TileVolume volume) {
+  return light_reaches_sphere(light, volume.sphere) && light_range_meets_tile_cone(light, volume, 0.0f);
+}
+
+// Whether `light` can reach anything in `tile`: light_reaches_volume, and a spot's cone does not
+// miss the tile's slice.
 bool light_reaches_tile(Light light, TileVolume tile) {
-  return light_reaches_sphere(light, tile.sphere) && light_range_meets_tile_cone(light, tile, 0.0f);
+  return light_reaches_volume(light, tile) && !spot_cone_misses_slice(light, tile, 0.0f);
 }
 
 #endif

@@ -122,7 +122,7 @@ void main() {
   uvec2 chunk = thread_chunk(local, lights_tested);
   uint count = 0u;
   for (uint i = chunk.x; i < chunk.y; ++i) {
-    if (light_reaches_tile(lights[i], volume)) {
+    if (light_reaches_volume(lights[i], volume)) {
       ++count;
       if (bits) atomicOr(scratch[i / 32u], 1u << (i % 32u));
     }
@@ -140,7 +140,7 @@ void main() {
   if (coarse_first == EVERY_LIGHT) return;
   uint slot = coarse_first + first_slot[local];
   for (uint i = chunk.x; i < chunk.y; ++i) {
-    if (bits ? (scratch[i / 32u] & (1u << (i % 32u))) != 0u : light_reaches_tile(lights[i], volume)) {
+    if (bits ? (scratch[i / 32u] & (1u << (i % 32u))) != 0u : light_reaches_volume(lights[i], volume)) {
       coarse_lights[slot++] = i;
     }
   }

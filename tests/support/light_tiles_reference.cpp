@@ -51,11 +51,13 @@ std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, u
         glsl::Light light;
         std::memcpy(&light, &lights[i], sizeof(light));
         if (glsl::light_reaches_sphere(light, inner) &&
-            glsl::light_range_meets_tile_cone(light, volume, -hair)) {
+            glsl::light_range_meets_tile_cone(light, volume, -hair) &&
+            !glsl::spot_cone_misses_slice(light, volume, -hair)) {
           sets.must.push_back(i);
         }
         if (glsl::light_reaches_sphere(light, outer) &&
-            glsl::light_range_meets_tile_cone(light, volume, hair)) {
+            glsl::light_range_meets_tile_cone(light, volume, hair) &&
+            !glsl::spot_cone_misses_slice(light, volume, hair)) {
           sets.may.push_back(i);
         }
       }

@@ -91,23 +91,34 @@ SortedLights scattered_lights(uint32_t behind = 0) {
   return sorted_by_group(lights);
 }
 
-// What the camera sees: a floor at y = -4 and a wall at z = -30, and a corner of sky (the far depth).
-std::vector<float> scene_depth(const glm::mat4& view_projection) {
+// The depth buffer of what `view_projection` sees from `eye`: `hit(x, y, ray)` is how far along
+// the unit `ray` through pixel (x, y) the first surface lies, or 0 where there is none.
+template <class Hit>
+std::vector<float> depth_of(const glm::mat4& view_projection, const glm::vec3& eye, Hit hit) {
   const glm::mat4 inverse = glm::inverse(view_projection);
   std::vector<float> depth(width * height, camera_far_depth);
   for (uint32_t y = 0; y < height; ++y) {
     for (uint32_t x = 0; x < width; ++x) {
-      if (x < 40 && y < 30) continue;
       const glm::vec2 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f);
       const glm::vec4 far_point = inverse * glm::vec4(ndc, camera_far_depth, 1.0f);
-      const glm::vec3 ray = glm::normalize(glm::vec3(far_point) / far_point.w);
-      float t = -30.0f / ray.z;                          // the wall
-      if (ray.y < 0.0f) t = std::min(t, -4.0f / ray.y);  // the floor, where nearer
-      const glm::vec4 clip = view_projection * glm::vec4(ray * t, 1.0f);
+      const glm::vec3 ray = glm::normalize(glm::vec3(far_point) / far_point.w - eye);
+      const float t = hit(x, y, ray);
+      if (t <= 0.0f) continue;
+      const glm::vec4 clip = view_projection * glm::vec4(eye + ray * t, 1.0f);
       depth[y * width + x] = clip.z / clip.w;
     }
   }
   return depth;
+}
+
+// What a camera at the origin sees: a floor at y = -4 and a wall at z = -30, and a corner of sky
+// (the far depth).
+std::vector<float> scene_depth(const glm::mat4& view_projection) {
+  return depth_of(view_projection, glm::vec3(0.0f), [](uint32_t x, uint32_t y, const glm::vec3& ray) {
+    if (x < 40 && y < 30) return 0.0f;
+    const float wall = -30.0f / ray.z;
+    return ray.y < 0.0f ? std::min(wall, -4.0f / ray.y) : wall;  // the floor, where nearer
+  });
 }
 
 vk::Buffer readable(vk::VulkanContext& context, uint64_t bytes, VkBufferUsageFlags usage) {
@@ -139,6 +150,71 @@ bool lights_point(const shadows::GpuLight& light, const glm::vec3& point) {
              glm::dot(axis, offset) >= light.shape.y * glm::length(offset);
   }
   return false;
+}
+
+// A wide spot light aimed down at a floor seen from above: a sphere around a floor's tile reaches
+// below the floor, where the cone is wider than its pool of light, so tests of spheres alone list
+// the spot two tiles and more beyond the pool. The tiles' slices of the view frustum against the
+// cone's tangent planes list it only in tiles the pool lights or their neighbours.
+TEST(SpotLightCulling, ListsASpotOnlyNearItsPoolOfLight) {
+  scene::Scene scene;
+  scene::SpotLight spot;
+  spot.range = 20.0f;
+  spot.outer_cone = 1.2f;
+  spot.inner_cone = 1.0f;
+  scene::ShadowSettings unshadowed;
+  unshadowed.casts_shadow = false;
+  const glm::vec3 position(1.0f, 2.0f, -1.0f);
+  scene::add_light(scene, spot,
+                   {position, scene::look_rotation(position, position - glm::vec3(0, 1, 0)), glm::vec3(1.0f)},
+                   unshadowed, "spot");
+  ecs::update_world_transforms(scene.world, 0);
+  shadows::FrameLights gathered;
+  shadows::gather_lights(scene.world, {glm::vec3(-50.0f), glm::vec3(50.0f)}, {false}, gathered);
+  const SortedLights lights = sorted_by_group(gathered);
+  ASSERT_EQ(lights.sorted.size(), 1u);
+  const glm::vec3 eye(0.0f, 16.0f, 6.0f);
+  const glm::mat4 view_projection =
+      projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({eye, {0, 0, 0}});
+  const std::vector<float> depth =
+      depth_of(view_projection, eye, [&eye](uint32_t, uint32_t, const glm::vec3& ray) {
+        return ray.y < 0.0f ? -eye.y / ray.y : 0.0f;  // a floor at y = 0
+      });
+  const std::vector<TileLightSets> reference =
+      reference_light_tiles(depth, width, height, view_projection, lights.sorted);
+
+  const LightTileGrid grid = LightTileGrid::of(width, height);
+  std::vector<uint8_t> lit(grid.count(), 0);
+  const glm::mat4 inverse = glm::inverse(view_projection);
+  for (uint32_t y = 0; y < height; ++y) {
+    for (uint32_t x = 0; x < width; ++x) {
+      const glm::vec4 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f,
+                          depth[y * width + x], 1.0f);
+      const glm::vec4 world = inverse * ndc;
+      if (lights_point(lights.sorted[0], glm::vec3(world) / world.w))
+        lit[(y / tiles::LIGHT_TILE_SIZE) * grid.across + x / tiles::LIGHT_TILE_SIZE] = 1;
+    }
+  }
+  uint32_t lit_tiles = 0, listed = 0, far_listed = 0;
+  for (uint32_t tile = 0; tile < grid.count(); ++tile) {
+    lit_tiles += lit[tile];
+    if (reference[tile].may.empty()) continue;
+    ++listed;
+    const int tx = int(tile % grid.across), ty = int(tile / grid.across);
+    bool near = false;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = tx + dx, ny = ty + dy;
+        if (nx >= 0 && ny >= 0 && nx < int(grid.across) && ny < int(grid.count() / grid.across)) {
+          near = near || lit[ny * grid.across + nx];
+        }
+      }
+    }
+    far_listed += !near;
+  }
+  EXPECT_GT(lit_tiles, 4u);
+  EXPECT_GE(listed, lit_tiles);
+  EXPECT_EQ(far_listed, 0u) << "of " << listed << " tiles listing the spot";
 }
 
 class LightTilesTest : public GpuTest {
