@@ -16,9 +16,8 @@ layout(std430, set = 0, binding = transparent_bounds_binding) readonly buffer Tr
 #endif
 
 // Widens a tile's depth bounds, [farthest, nearest] in reversed depths (camera_depth.glsl: the
-// nearest surface has the greatest), by the surfaces at `pixel`; background bounds nothing.
-void bound_by_pixel(ivec2 pixel, inout float nearest, inout float farthest) {
-  float depth = texelFetch(scene_depth, pixel, 0).r;
+// nearest surface has the greatest), by a pixel's `depth`; background bounds nothing.
+void bound_by_depth(float depth, inout float nearest, inout float farthest) {
   if (!is_background_depth(depth)) {
     nearest = max(nearest, depth);
     farthest = min(farthest, depth);
@@ -43,5 +42,25 @@ TileVolume visible_volume_of_tile(uvec2 tile_xy, float nearest, float farthest) 
   vec2 ndc_min = vec2(tile_xy * LIGHT_TILE_SIZE) * texel - 1.0;
   vec2 ndc_max = min(vec2((tile_xy + 1u) * LIGHT_TILE_SIZE) * texel - 1.0, vec2(1.0));
   return tile_volume(frame.inverse_view_projection, ndc_min, ndc_max, nearest, farthest);
+}
+
+// The depth slice of `tile` (depth_slice_bit) that holds a surface at `depth`; none for the
+// background.
+uint depth_slice_of(TileVolume tile, float depth) {
+  return is_background_depth(depth) ? 0u : depth_slice_bit(depth_slice_position(tile, depth));
+}
+
+// In the transparent variants, the depth slices of tile `tile_index` (`tile`) from the nearest to
+// the farthest depth where transparent surfaces may lie; none otherwise.
+uint depth_slices_of_transparent_surfaces(uint tile_index, TileVolume tile) {
+#ifdef TRANSPARENT_BOUNDS
+  vec2 bounds = transparent_bounds[tile_index];
+  if (bounds.x > 0.0) {
+    uint nearest = depth_slice_of(tile, bounds.x);
+    uint farthest = depth_slice_of(tile, bounds.y);
+    return (farthest | (farthest - 1u)) & ~(nearest - 1u);
+  }
+#endif
+  return 0u;
 }
 #endif

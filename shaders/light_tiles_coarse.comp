@@ -25,12 +25,14 @@ const uint TILES = LIGHT_COARSE_SIDE * LIGHT_COARSE_SIDE;
 // the tiles are bounded, a bit per light: whether it reaches the coarse volume, so that the lights
 // are tested once, for the list's count, and its entries read the bits. With 100,000 lights the
 // pass took 0.44 ms from afar and 0.63 at eye height, against 0.78 and 1.14 testing them twice
-// (H200, 1920x1080, 2026-12-04). 16 KiB, 131,072 lights: lavapipe's workgroups hold 32 KiB; past
-// that the lights are tested again.
+// (H200, 1920x1080, 2026-12-04). 16 KiB, 131,072 lights; past that the lights are tested again.
+// With the tiles' volumes and the lists' slots the pass holds about 31 KiB of the 32 that
+// lavapipe's workgroups may share.
 const uint SCRATCH_WORDS = 4096u;
 shared uint scratch[SCRATCH_WORDS];
 const uint BIT_LIGHTS = 32u * SCRATCH_WORDS;
 shared TileVolume volumes[TILES];
+shared uint tile_slices[TILES];  // each tile's depth slices with a surface (TileVolume.slices)
 shared TileVolume coarse_volume;
 shared uint coarse_first;
 
@@ -102,18 +104,37 @@ void main() {
   float nearest = CAMERA_FAR_DEPTH;
   float farthest = 1.0;
   uvec2 origin = gl_WorkGroupID.xy * (SIDE * BLOCK) + gl_LocalInvocationID.xy * BLOCK;
+  float depths[BLOCK * BLOCK];
   for (uint k = 0u; k < BLOCK * BLOCK; ++k) {
     ivec2 pixel = ivec2(origin + uvec2(k % BLOCK, k / BLOCK));
-    if (pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y)) bound_by_pixel(pixel, nearest, farthest);
+    bool inside = pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y);
+    depths[k] = inside ? texelFetch(scene_depth, pixel, 0).r : CAMERA_FAR_DEPTH;
+    bound_by_depth(depths[k], nearest, farthest);
   }
   scratch[local] = floatBitsToUint(nearest);
   scratch[THREADS + local] = floatBitsToUint(farthest);
+  if (local < TILES) tile_slices[local] = 0u;
   barrier();
   if (local < TILES) volumes[local] = bound_tile(local);
   barrier();
+  // Each block marks its tile's depth slices that hold its pixels' surfaces.
+  uvec2 in_coarse = gl_LocalInvocationID.xy / TILE_BLOCKS;
+  uint tile_local = in_coarse.y * LIGHT_COARSE_SIDE + in_coarse.x;
+  if (volumes[tile_local].sphere.w >= 0.0) {
+    uint slices = 0u;
+    for (uint k = 0u; k < BLOCK * BLOCK; ++k) {
+      slices |= depth_slice_of(volumes[tile_local], depths[k]);
+    }
+    if (slices != 0u) atomicOr(tile_slices[tile_local], slices);
+  }
   if (local == 0u) coarse_volume = volume_around_tiles();
   for (uint word = local; word < SCRATCH_WORDS; word += THREADS) scratch[word] = 0u;
   barrier();
+  if (local < TILES && volumes[local].sphere.w >= 0.0) {
+    uvec2 tile_xy = gl_WorkGroupID.xy * LIGHT_COARSE_SIDE + uvec2(local % LIGHT_COARSE_SIDE, local / LIGHT_COARSE_SIDE);
+    uint tile = tile_xy.y * frame.screen.z + tile_xy.x;
+    tile_volumes[tile].slices.x = tile_slices[local] | depth_slices_of_transparent_surfaces(tile, volumes[local]);
+  }
 
   // Lights in ordered chunks, one per thread, as the tiles' pass lists them.
   TileVolume volume = coarse_volume;

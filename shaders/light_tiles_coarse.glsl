@@ -6,8 +6,8 @@
 // bounds each tile's surfaces (TileVolume), once; then each coarse tile (LIGHT_COARSE_SIDE tiles a
 // side) lists, in light order, the lights that reach a volume around its tiles' volumes, and a tile
 // tests only that list. The list holds every light that reaches any of its tiles: the tests of
-// light_reaches_tile only grow with the sphere, the cone and the shells, and light_reaches_sphere's
-// move no faster than the sphere's centre.
+// light_reaches_volume only grow with the sphere, the cone and the shells, and light_reaches_sphere's
+// move no faster than the sphere's centre; the tiles' own depth slices and spot tests come after.
 #ifndef SG_LIGHT_TILES_COARSE_GLSL
 #define SG_LIGHT_TILES_COARSE_GLSL
 

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include <glm/integer.hpp>
+
 #include "systems/gpu/camera.h"
 
 namespace sg::test {
@@ -42,6 +44,22 @@ std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, u
       const glm::vec2 ndc_max =
           glm::min(glm::vec2((tx + 1) * size, (ty + 1) * size) * texel - 1.0f, glm::vec2(1.0f));
       const glsl::TileVolume volume = glsl::tile_volume(inverse, ndc_min, ndc_max, nearest, farthest);
+      // The depth slices a surface may be in (`may`), and those it is in whichever way the GPU
+      // rounds its depth (`must`).
+      uint32_t may_slices = 0, must_slices = 0;
+      const float span = volume.shells.w - volume.shells.z;
+      const float rounding = span > 0.0f ? 1e-4f * volume.shells.w * glsl::DEPTH_SLICES / span : 0.0f;
+      for (uint32_t y = ty * size; y < std::min(height, (ty + 1) * size); ++y) {
+        for (uint32_t x = tx * size; x < std::min(width, (tx + 1) * size); ++x) {
+          const float d = depth[y * width + x];
+          if (d <= camera_far_depth) continue;
+          const float position = glsl::depth_slice_position(volume, d);
+          const uint32_t first = glsl::depth_slice_bit(position - rounding);
+          const uint32_t last = glsl::depth_slice_bit(position + rounding);
+          may_slices |= (last | (last - 1)) & ~(first - 1);
+          if (first == last) must_slices |= first;
+        }
+      }
       // The GPU's rounding may differ: lights within a hair of the volume's bounds may go either way.
       const float hair = 1e-3f * volume.sphere.w + 1e-4f;
       const glm::vec4 inner(glm::vec3(volume.sphere), std::max(volume.sphere.w - hair, 0.0f));
@@ -50,14 +68,18 @@ std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, u
       for (uint32_t i = 0; i < lights.size(); ++i) {
         glsl::Light light;
         std::memcpy(&light, &lights[i], sizeof(light));
+        // A spot whose tile has no slice it must be in may be dropped (spot_cone_misses_tile
+        // keeps every light where it knows no slices).
+        const bool must_spot =
+            light.info.x != glsl::LIGHT_SPOT ||
+            (must_slices != 0 && !glsl::spot_cone_misses_tile(light, volume, must_slices, -hair));
         if (glsl::light_reaches_sphere(light, inner) &&
-            glsl::light_range_meets_tile_cone(light, volume, -hair) &&
-            !glsl::spot_cone_misses_slice(light, volume, -hair)) {
+            glsl::light_range_meets_tile_cone(light, volume, -hair) && must_spot) {
           sets.must.push_back(i);
         }
         if (glsl::light_reaches_sphere(light, outer) &&
             glsl::light_range_meets_tile_cone(light, volume, hair) &&
-            !glsl::spot_cone_misses_slice(light, volume, hair)) {
+            !glsl::spot_cone_misses_tile(light, volume, may_slices, hair)) {
           sets.may.push_back(i);
         }
       }

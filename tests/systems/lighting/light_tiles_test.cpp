@@ -111,12 +111,13 @@ std::vector<float> depth_of(const glm::mat4& view_projection, const glm::vec3& e
   return depth;
 }
 
-// What a camera at the origin sees: a floor at y = -4 and a wall at z = -30, and a corner of sky
-// (the far depth).
-std::vector<float> scene_depth(const glm::mat4& view_projection) {
-  return depth_of(view_projection, glm::vec3(0.0f), [](uint32_t x, uint32_t y, const glm::vec3& ray) {
+// What a camera at the origin sees: a floor at y = -4, a wall at z = -30 and a corner of sky (the
+// far depth); with `posts`, posts at z = -6 in every 24th pixel column and the three after it, so
+// that tiles hold surfaces 6 m and 30 m away and nothing between.
+std::vector<float> scene_depth(const glm::mat4& view_projection, bool posts = false) {
+  return depth_of(view_projection, glm::vec3(0.0f), [posts](uint32_t x, uint32_t y, const glm::vec3& ray) {
     if (x < 40 && y < 30) return 0.0f;
-    const float wall = -30.0f / ray.z;
+    const float wall = (posts && x % 24 < 4 ? -6.0f : -30.0f) / ray.z;
     return ray.y < 0.0f ? std::min(wall, -4.0f / ray.y) : wall;  // the floor, where nearer
   });
 }
@@ -152,26 +153,30 @@ bool lights_point(const shadows::GpuLight& light, const glm::vec3& point) {
   return false;
 }
 
+// One unshadowed spot light at `position` aimed along `direction`.
+SortedLights one_spot(const glm::vec3& position, const glm::vec3& direction, float outer_cone, float range) {
+  scene::Scene scene;
+  scene::SpotLight spot;
+  spot.range = range;
+  spot.outer_cone = outer_cone;
+  spot.inner_cone = 0.8f * outer_cone;
+  scene::ShadowSettings unshadowed;
+  unshadowed.casts_shadow = false;
+  scene::add_light(scene, spot,
+                   {position, scene::look_rotation(position, position + direction), glm::vec3(1.0f)},
+                   unshadowed, "spot");
+  ecs::update_world_transforms(scene.world, 0);
+  shadows::FrameLights gathered;
+  shadows::gather_lights(scene.world, {glm::vec3(-50.0f), glm::vec3(50.0f)}, {false}, gathered);
+  return sorted_by_group(gathered);
+}
+
 // A wide spot light aimed down at a floor seen from above: a sphere around a floor's tile reaches
 // below the floor, where the cone is wider than its pool of light, so tests of spheres alone list
 // the spot two tiles and more beyond the pool. The tiles' slices of the view frustum against the
 // cone's tangent planes list it only in tiles the pool lights or their neighbours.
 TEST(SpotLightCulling, ListsASpotOnlyNearItsPoolOfLight) {
-  scene::Scene scene;
-  scene::SpotLight spot;
-  spot.range = 20.0f;
-  spot.outer_cone = 1.2f;
-  spot.inner_cone = 1.0f;
-  scene::ShadowSettings unshadowed;
-  unshadowed.casts_shadow = false;
-  const glm::vec3 position(1.0f, 2.0f, -1.0f);
-  scene::add_light(scene, spot,
-                   {position, scene::look_rotation(position, position - glm::vec3(0, 1, 0)), glm::vec3(1.0f)},
-                   unshadowed, "spot");
-  ecs::update_world_transforms(scene.world, 0);
-  shadows::FrameLights gathered;
-  shadows::gather_lights(scene.world, {glm::vec3(-50.0f), glm::vec3(50.0f)}, {false}, gathered);
-  const SortedLights lights = sorted_by_group(gathered);
+  const SortedLights lights = one_spot({1.0f, 2.0f, -1.0f}, {0, -1, 0}, 1.2f, 20.0f);
   ASSERT_EQ(lights.sorted.size(), 1u);
   const glm::vec3 eye(0.0f, 16.0f, 6.0f);
   const glm::mat4 view_projection =
@@ -215,6 +220,22 @@ TEST(SpotLightCulling, ListsASpotOnlyNearItsPoolOfLight) {
   EXPECT_GT(lit_tiles, 4u);
   EXPECT_GE(listed, lit_tiles);
   EXPECT_EQ(far_listed, 0u) << "of " << listed << " tiles listing the spot";
+}
+
+// A narrow spot light between posts 6 m away and a wall 30 m away, aimed up where there is no
+// ceiling: it lights no pixel. The tiles that see both a post and the wall have a slice of the
+// view frustum from 6 to 30 m that the cone crosses; their depth slices with a surface are at
+// either end, and the cone misses those.
+TEST(SpotLightCulling, ASpotBetweenANearAndAFarSurfaceIsListedNowhere) {
+  const SortedLights lights = one_spot({0.5f, -1.0f, -15.0f}, {0, 1, 0}, 0.3f, 2.5f);
+  ASSERT_EQ(lights.sorted.size(), 1u);
+  const glm::mat4 view_projection =
+      projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
+  const std::vector<TileLightSets> reference = reference_light_tiles(
+      scene_depth(view_projection, true), width, height, view_projection, lights.sorted);
+  for (uint32_t tile = 0; tile < reference.size(); ++tile) {
+    EXPECT_TRUE(reference[tile].may.empty()) << "tile " << tile;
+  }
 }
 
 class LightTilesTest : public GpuTest {
@@ -463,7 +484,7 @@ void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullin
   const SortedLights lights = scattered_lights(behind);
   const glm::mat4 view_projection =
       projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
-  const std::vector<float> depth = scene_depth(view_projection);
+  const std::vector<float> depth = scene_depth(view_projection, true);
   const LightTileGrid grid = LightTileGrid::of(width, height);
   const Culled culled = cull(lights, shape, depth, view_projection, 1, 0, most_coarse_entries).front();
   EXPECT_EQ(culled.dropped, 0u) << "the pool holds every list";

@@ -275,6 +275,35 @@ TEST_F(AlphaMaterials, APaneOverTheBackgroundIsLitByTheLightsNearIt) {
   }
 }
 
+// A pane of alpha 0.5 1 m up, over a floor 11 m below it, lit by a spot light from the side whose
+// cone meets the floor only far beyond the pane: the tiles over the pane hold opaque surfaces at
+// the floor's depth alone, yet their lights for transparent surfaces include the spot (the culling
+// marks the depths where transparent surfaces may lie). Deferred lighting's transparent pass reads
+// the tiles' lists; unlit, the pane's green is 0.10.
+TEST_F(AlphaMaterials, APaneFarBeforeTheFloorIsLitByASpotThatMissesTheFloorBehindIt) {
+  SceneView scene;
+  scene.scene.name = "pane over a deep floor";
+  scene::add_box_mesh(scene.scene.meshes);
+  const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
+  scene::add_instance(scene.scene, box_mesh,
+                      {{0.0f, -10.5f, 0.0f}, glm::quat(1, 0, 0, 0), {40.0f, 1.0f, 40.0f}},
+                      matte({0.5f, 0.5f, 0.5f, 1.0f}));
+  scene::Material glass = matte({0.9f, 0.9f, 0.9f, 0.5f});
+  glass.alpha_mode = scene::AlphaMode::blend;
+  scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
+                      glass);
+  scene::ShadowSettings no_shadow;
+  no_shadow.casts_shadow = false;
+  const glm::vec3 spot_at(-1.5f, 2.0f, 0.0f);
+  scene::add_light(scene.scene, scene::SpotLight{glm::vec3(1.0f), 2.0f, 4.0f, 0.25f, 0.3f},
+                   {spot_at, scene::look_rotation(spot_at, {0.0f, 1.0f, 0.0f}), glm::vec3(1.0f)}, no_shadow,
+                   "spot");
+  ecs::update_world_transforms(scene.scene.world, 0);
+  scene.pose = {{0.0f, 6.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
+  const vk::Rgba8Image image = render(scene, LightingPath::deferred);
+  EXPECT_GT(mean_seen(image, scene, {0.0f, 1.0f, 0.0f}).g, 0.25f);
+}
+
 // A point light inside a transparent box (alpha 0.9) lights the floor around the box as it does
 // without the box: the box casts no shadow of the light it holds.
 TEST_F(AlphaMaterials, ATransparentBoxShutsInNoLight) {
