@@ -49,7 +49,9 @@ struct TileVolume {
 // its farthest is cut into DEPTH_SLICES equal slices; the culling marks those that hold a surface,
 // and lists a spot light only where its cone meets a marked slice. Among 4,000 spots in the stress
 // hall at 1920x1080 the lists held 32,479 pairs at eye height against 73,901 with the tile's whole
-// slice alone, and 34,245 with 16 slices (lavapipe, 2026-12-05).
+// slice alone, and 34,245 with 16 slices (lavapipe, 2026-12-05). Among 100,000 lights at eye height
+// the frame took 26.1 ms against 27.7 with the whole slice alone, but from afar 13.5 against 12.5:
+// the slices' loop takes the tiles' pass from 65 registers a thread to 82 (H100, 2026-12-05).
 const uint DEPTH_SLICES = 32u;
 
 // The camera's position: the point every view ray starts from (clip space (0, 0, 1, 0) brought back).
