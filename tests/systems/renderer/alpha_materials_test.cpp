@@ -73,6 +73,20 @@ SceneView floor_scene(const char* name, glm::vec4 floor_color) {
   return scene;
 }
 
+// A 2 x 2 m pane of alpha 0.5 facing up, 1 m above the origin, of `scene`'s mesh `quad`.
+void add_glass_pane(SceneView& scene, uint32_t quad) {
+  scene::Material glass = matte({0.9f, 0.9f, 0.9f, 0.5f});
+  glass.alpha_mode = scene::AlphaMode::blend;
+  scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
+                      glass);
+}
+
+scene::ShadowSettings unshadowed() {
+  scene::ShadowSettings shadow;
+  shadow.casts_shadow = false;
+  return shadow;
+}
+
 class AlphaMaterials : public GpuTest {
  protected:
   // One frame of `scene` on `lighting`, its shadow views drawn by `shadow_path`.
@@ -229,12 +243,10 @@ TEST_F(AlphaMaterials, OverlappingPanesBlendBackToFront) {
                         {{4.0f, height, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
                         matte(glm::vec4(glm::vec3(color), 1.0f)));
   }
-  scene::ShadowSettings no_shadow;
-  no_shadow.casts_shadow = false;
   scene::add_light(
       scene.scene, scene::DirectionalLight{glm::vec3(1.0f), 0.8f},
       {glm::vec3(0.0f, 5.0f, 0.0f), scene::look_rotation({0, 5, 0}, {0.0f, 4.0f, 0.01f}), glm::vec3(1.0f)},
-      no_shadow, "sun");
+      unshadowed(), "sun");
   ecs::update_world_transforms(scene.scene.world, 0);
   scene.pose = {{2.0f, 9.0f, 0.01f}, {2.0f, 0.0f, 0.0f}};
   for (const LightingPath path : every_path) {
@@ -257,14 +269,10 @@ TEST_F(AlphaMaterials, APaneOverTheBackgroundIsLitByTheLightsNearIt) {
   SceneView scene;
   scene.scene.name = "pane in the dark";
   const uint32_t quad = scene::add_quad_mesh(scene.scene.meshes);
-  scene::Material glass = matte({0.9f, 0.9f, 0.9f, 0.5f});
-  glass.alpha_mode = scene::AlphaMode::blend;
-  scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
-                      glass);
-  scene::ShadowSettings no_shadow;
-  no_shadow.casts_shadow = false;
+  add_glass_pane(scene, quad);
   scene::add_light(scene.scene, scene::PointLight{glm::vec3(1.0f), 1.0f, 3.0f},
-                   {glm::vec3(0.0f, 1.5f, 0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f)}, no_shadow, "bulb");
+                   {glm::vec3(0.0f, 1.5f, 0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f)}, unshadowed(),
+                   "bulb");
   ecs::update_world_transforms(scene.scene.world, 0);
   scene.pose = {{0.0f, 6.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
   for (const LightingPath path : every_path) {
@@ -288,16 +296,11 @@ TEST_F(AlphaMaterials, APaneFarBeforeTheFloorIsLitByASpotThatMissesTheFloorBehin
   scene::add_instance(scene.scene, box_mesh,
                       {{0.0f, -10.5f, 0.0f}, glm::quat(1, 0, 0, 0), {40.0f, 1.0f, 40.0f}},
                       matte({0.5f, 0.5f, 0.5f, 1.0f}));
-  scene::Material glass = matte({0.9f, 0.9f, 0.9f, 0.5f});
-  glass.alpha_mode = scene::AlphaMode::blend;
-  scene::add_instance(scene.scene, quad, {{0.0f, 1.0f, 0.0f}, glm::quat(1, 0, 0, 0), {2.0f, 1.0f, 2.0f}},
-                      glass);
-  scene::ShadowSettings no_shadow;
-  no_shadow.casts_shadow = false;
+  add_glass_pane(scene, quad);
   const glm::vec3 spot_at(-1.5f, 2.0f, 0.0f);
   scene::add_light(scene.scene, scene::SpotLight{glm::vec3(1.0f), 2.0f, 4.0f, 0.25f, 0.3f},
-                   {spot_at, scene::look_rotation(spot_at, {0.0f, 1.0f, 0.0f}), glm::vec3(1.0f)}, no_shadow,
-                   "spot");
+                   {spot_at, scene::look_rotation(spot_at, {0.0f, 1.0f, 0.0f}), glm::vec3(1.0f)},
+                   unshadowed(), "spot");
   ecs::update_world_transforms(scene.scene.world, 0);
   scene.pose = {{0.0f, 6.0f, 0.01f}, {0.0f, 0.0f, 0.0f}};
   const vk::Rgba8Image image = render(scene, LightingPath::deferred);
