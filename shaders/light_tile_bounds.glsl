@@ -56,9 +56,7 @@ uint depth_slices_of_transparent_surfaces(uint tile_index, TileVolume tile) {
 #ifdef TRANSPARENT_BOUNDS
   vec2 bounds = transparent_bounds[tile_index];
   if (bounds.x > 0.0) {
-    uint nearest = depth_slice_of(tile, bounds.x);
-    uint farthest = depth_slice_of(tile, bounds.y);
-    return (farthest | (farthest - 1u)) & ~(nearest - 1u);
+    return depth_slices_between(depth_slice_of(tile, bounds.x), depth_slice_of(tile, bounds.y));
   }
 #endif
   return 0u;

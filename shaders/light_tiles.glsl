@@ -173,6 +173,9 @@ uint depth_slice_bit(float position) {
   return 1u << uint(clamp(position, 0.0f, float(DEPTH_SLICES - 1u)));
 }
 
+// The depth slices from the one of bit `nearest` to the one of bit `farthest`, both included.
+uint depth_slices_between(uint nearest, uint farthest) { return (farthest | (farthest - 1u)) & ~(nearest - 1u); }
+
 // Whether a spot light's cone misses, by more than `margin`, the part of the tile's slice of the
 // view frustum between the planes `near` and `far` along the view direction: all eight corners of
 // that part lie behind the light, or beyond the plane through the light tangent to its cone on the

@@ -56,7 +56,7 @@ std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, u
           const float position = glsl::depth_slice_position(volume, d);
           const uint32_t first = glsl::depth_slice_bit(position - rounding);
           const uint32_t last = glsl::depth_slice_bit(position + rounding);
-          may_slices |= (last | (last - 1)) & ~(first - 1);
+          may_slices |= glsl::depth_slices_between(first, last);
           if (first == last) must_slices |= first;
         }
       }

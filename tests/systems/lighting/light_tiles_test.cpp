@@ -91,6 +91,18 @@ SortedLights scattered_lights(uint32_t behind = 0) {
   return sorted_by_group(lights);
 }
 
+// The centre of pixel (x, y) in normalized device coordinates.
+glm::vec2 pixel_ndc(uint32_t x, uint32_t y) {
+  return {(x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f};
+}
+
+// The world position of the surface at pixel (x, y) with depth `depth`, through `inverse`, the
+// inverse of the view-projection that drew it.
+glm::vec3 surface_at(const glm::mat4& inverse, uint32_t x, uint32_t y, float depth) {
+  const glm::vec4 world = inverse * glm::vec4(pixel_ndc(x, y), depth, 1.0f);
+  return glm::vec3(world) / world.w;
+}
+
 // The depth buffer of what `view_projection` sees from `eye`: `hit(x, y, ray)` is how far along
 // the unit `ray` through pixel (x, y) the first surface lies, or 0 where there is none.
 template <class Hit>
@@ -99,9 +111,7 @@ std::vector<float> depth_of(const glm::mat4& view_projection, const glm::vec3& e
   std::vector<float> depth(width * height, camera_far_depth);
   for (uint32_t y = 0; y < height; ++y) {
     for (uint32_t x = 0; x < width; ++x) {
-      const glm::vec2 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f);
-      const glm::vec4 far_point = inverse * glm::vec4(ndc, camera_far_depth, 1.0f);
-      const glm::vec3 ray = glm::normalize(glm::vec3(far_point) / far_point.w - eye);
+      const glm::vec3 ray = glm::normalize(surface_at(inverse, x, y, camera_far_depth) - eye);
       const float t = hit(x, y, ray);
       if (t <= 0.0f) continue;
       const glm::vec4 clip = view_projection * glm::vec4(eye + ray * t, 1.0f);
@@ -193,10 +203,7 @@ TEST(SpotLightCulling, ListsASpotOnlyNearItsPoolOfLight) {
   const glm::mat4 inverse = glm::inverse(view_projection);
   for (uint32_t y = 0; y < height; ++y) {
     for (uint32_t x = 0; x < width; ++x) {
-      const glm::vec4 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f,
-                          depth[y * width + x], 1.0f);
-      const glm::vec4 world = inverse * ndc;
-      if (lights_point(lights.sorted[0], glm::vec3(world) / world.w))
+      if (lights_point(lights.sorted[0], surface_at(inverse, x, y, depth[y * width + x])))
         lit[(y / tiles::LIGHT_TILE_SIZE) * grid.across + x / tiles::LIGHT_TILE_SIZE] = 1;
     }
   }
@@ -530,9 +537,7 @@ void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullin
     for (uint32_t x = 0; x < width; x += 3) {
       const float d = depth[y * width + x];
       if (d <= camera_far_depth) continue;
-      const glm::vec4 ndc((x + 0.5f) / width * 2.0f - 1.0f, (y + 0.5f) / height * 2.0f - 1.0f, d, 1.0f);
-      const glm::vec4 world = inverse * ndc;
-      const glm::vec3 point = glm::vec3(world) / world.w;
+      const glm::vec3 point = surface_at(inverse, x, y, d);
       const uint32_t tile = (y / 16) * grid.across + x / 16;
       for (uint32_t light = 0; light < lights.sorted.size(); ++light) {
         if (!lights_point(lights.sorted[light], point)) continue;
