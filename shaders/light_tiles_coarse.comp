@@ -26,8 +26,9 @@ const uint TILES = LIGHT_COARSE_SIDE * LIGHT_COARSE_SIDE;
 // are tested once, for the list's count, and its entries read the bits. With 100,000 lights the
 // pass took 0.44 ms from afar and 0.63 at eye height, against 0.78 and 1.14 testing them twice
 // (H200, 1920x1080, 2026-12-04). 16 KiB, 131,072 lights; past that the lights are tested again.
-// With the tiles' volumes and the lists' slots the pass shares close to the 32 KiB that lavapipe's
-// workgroups may: a field more in TileVolume may need the volumes kept elsewhere.
+// With the tiles' volumes (176 bytes each) and the lists' slots the pass shares 32,312 of the
+// 32,768 bytes that lavapipe's workgroups may: a field more in TileVolume needs the volumes kept
+// elsewhere.
 const uint SCRATCH_WORDS = 4096u;
 shared uint scratch[SCRATCH_WORDS];
 const uint BIT_LIGHTS = 32u * SCRATCH_WORDS;

@@ -123,8 +123,8 @@ std::vector<VkDescriptorSetLayoutBinding> coarse_bindings(bool transparent_bound
 
 const Feedback no_feedback{};
 
-// shaders/light_tiles.glsl's TileVolume: ten 16-byte vectors.
-constexpr uint64_t tile_volume_bytes = 10 * sizeof(glm::vec4);
+// shaders/light_tiles.glsl's TileVolume: eleven 16-byte vectors.
+constexpr uint64_t tile_volume_bytes = 11 * sizeof(glm::vec4);
 
 }  // namespace
 

@@ -68,18 +68,22 @@ std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, u
       for (uint32_t i = 0; i < lights.size(); ++i) {
         glsl::Light light;
         std::memcpy(&light, &lights[i], sizeof(light));
-        // A spot whose tile has no slice it must be in may be dropped (spot_cone_misses_tile
-        // keeps every light where it knows no slices).
-        const bool must_spot =
-            light.info.x != glsl::LIGHT_SPOT ||
-            (must_slices != 0 && !glsl::spot_cone_misses_tile(light, volume, must_slices, -hair));
+        // A light whose range or cone is tested against the slices, where the tile has no slice
+        // it must be in, may be dropped (light_reaches_tile keeps every light where it knows no
+        // slices); the others reach every slice.
+        const uint32_t must_reach = glsl::depth_slices_in_reach(light, volume, -hair);
+        const uint32_t must_reached = must_slices & must_reach;
+        const uint32_t may_reached = may_slices & glsl::depth_slices_in_reach(light, volume, hair);
+        const bool must_slice =
+            (must_reach == ~0u && light.info.x != glsl::LIGHT_SPOT) ||
+            (must_reached != 0 && !glsl::spot_cone_misses_tile(light, volume, must_reached, -hair));
         if (glsl::light_reaches_sphere(light, inner) &&
-            glsl::light_range_meets_tile_cone(light, volume, -hair) && must_spot) {
+            glsl::light_range_meets_tile_cone(light, volume, -hair) && must_slice) {
           sets.must.push_back(i);
         }
         if (glsl::light_reaches_sphere(light, outer) &&
-            glsl::light_range_meets_tile_cone(light, volume, hair) &&
-            !glsl::spot_cone_misses_tile(light, volume, may_slices, hair)) {
+            glsl::light_range_meets_tile_cone(light, volume, hair) && may_reached != 0 &&
+            !glsl::spot_cone_misses_tile(light, volume, may_reached, hair)) {
           sets.may.push_back(i);
         }
       }

@@ -163,22 +163,26 @@ bool lights_point(const shadows::GpuLight& light, const glm::vec3& point) {
   return false;
 }
 
-// One unshadowed spot light at `position` aimed along `direction`.
-SortedLights one_spot(const glm::vec3& position, const glm::vec3& direction, float outer_cone, float range) {
+// One unshadowed light (a scene::PointLight, SpotLight, ...) placed by `local`.
+template <typename Light>
+SortedLights one_light(const Light& light, const ecs::LocalTransform& local) {
   scene::Scene scene;
-  scene::SpotLight spot;
-  spot.range = range;
-  spot.outer_cone = outer_cone;
-  spot.inner_cone = 0.8f * outer_cone;
   scene::ShadowSettings unshadowed;
   unshadowed.casts_shadow = false;
-  scene::add_light(scene, spot,
-                   {position, scene::look_rotation(position, position + direction), glm::vec3(1.0f)},
-                   unshadowed, "spot");
+  scene::add_light(scene, light, local, unshadowed, "light");
   ecs::update_world_transforms(scene.world, 0);
   shadows::FrameLights gathered;
   shadows::gather_lights(scene.world, {glm::vec3(-50.0f), glm::vec3(50.0f)}, {false}, gathered);
   return sorted_by_group(gathered);
+}
+
+// One unshadowed spot light at `position` aimed along `direction`.
+SortedLights one_spot(const glm::vec3& position, const glm::vec3& direction, float outer_cone, float range) {
+  scene::SpotLight spot;
+  spot.range = range;
+  spot.outer_cone = outer_cone;
+  spot.inner_cone = 0.8f * outer_cone;
+  return one_light(spot, {position, scene::look_rotation(position, position + direction), glm::vec3(1.0f)});
 }
 
 // A wide spot light aimed down at a floor seen from above: a sphere around a floor's tile reaches
@@ -235,6 +239,25 @@ TEST(SpotLightCulling, ListsASpotOnlyNearItsPoolOfLight) {
 // either end, and the cone misses those.
 TEST(SpotLightCulling, ASpotBetweenANearAndAFarSurfaceIsListedNowhere) {
   const SortedLights lights = one_spot({0.5f, -1.0f, -15.0f}, {0, 1, 0}, 0.3f, 2.5f);
+  ASSERT_EQ(lights.sorted.size(), 1u);
+  const glm::mat4 view_projection =
+      projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
+  const std::vector<TileLightSets> reference = reference_light_tiles(
+      scene_depth(view_projection, true), width, height, view_projection, lights.sorted);
+  for (uint32_t tile = 0; tile < reference.size(); ++tile) {
+    EXPECT_TRUE(reference[tile].may.empty()) << "tile " << tile;
+  }
+}
+
+// A point light halfway between posts 6 m away and a wall 30 m away, above the floor and out of
+// the posts' and the wall's reach: it lights no pixel. The tiles that see both a post and the wall
+// have a slice of the view frustum that holds its sphere; their depth slices with a surface are
+// at either end, beyond its range along the view direction.
+TEST(PointLightCulling, APointLightBetweenANearAndAFarSurfaceIsListedNowhere) {
+  scene::PointLight point;
+  point.range = 2.5f;
+  const SortedLights lights =
+      one_light(point, {{0.5f, 1.0f, -15.0f}, glm::quat(1, 0, 0, 0), glm::vec3(1.0f)});
   ASSERT_EQ(lights.sorted.size(), 1u);
   const glm::mat4 view_projection =
       projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
