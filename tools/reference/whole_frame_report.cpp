@@ -31,6 +31,11 @@ void print_whole_frame(std::FILE* out, const WholeFrameReport& report) {
         static_cast<unsigned long long>(report.list_pairs),
         static_cast<unsigned long long>(*report.lighting_list_pairs),
         report.list_pairs ? 100.0 * double(*report.lighting_list_pairs) / double(report.list_pairs) : 0.0);
+  } else {
+    std::fprintf(out,
+                 "light lists: %llu (tile, light) pairs; those lighting a pixel are counted only where "
+                 "every pair is traced (raise --pairs-per-pixel)\n\n",
+                 static_cast<unsigned long long>(report.list_pairs));
   }
   std::fprintf(
       out,
