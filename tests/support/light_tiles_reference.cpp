@@ -48,7 +48,8 @@ std::vector<TileLightSets> reference_light_tiles(std::span<const float> depth, u
       // rounds its depth (`must`).
       uint32_t may_slices = 0, must_slices = 0;
       const float span = volume.shells.w - volume.shells.z;
-      const float rounding = span > 0.0f ? 1e-4f * volume.shells.w * glsl::DEPTH_SLICES / span : 0.0f;
+      const float rounding =
+          span > 0.0f ? glsl::depth_slice_rounding(volume) * glsl::DEPTH_SLICES / span : 0.0f;
       for (uint32_t y = ty * size; y < std::min(height, (ty + 1) * size); ++y) {
         for (uint32_t x = tx * size; x < std::min(width, (tx + 1) * size); ++x) {
           const float d = depth[y * width + x];
