@@ -18,10 +18,20 @@ layout(local_size_x = THREADS) in;
 // Each thread's copy of what its tile tests against.
 TileVolume volume;  // the tile's surfaces
 uvec2 coarse;       // its coarse tile's list: first entry, count (or EVERY_LIGHT)
+uint quadrant_bit;  // its quadrant's bit in that list's entries
 
-// The k-th light the tile tests: the k-th of its coarse tile's list, or light k where that list
-// did not fit its pool.
-uint candidate(uint k) { return coarse.y == EVERY_LIGHT ? k : coarse_lights[coarse.x + k]; }
+// Whether the k-th light the tile tests goes in its list at worth `least` (listed_in_tile), and
+// which light that is: the k-th of its coarse tile's list, tested where it reaches the tile's
+// quadrant, or light k where that list did not fit its pool.
+bool lists_candidate(uint k, uint least, out uint light) {
+  if (coarse.y == EVERY_LIGHT) {
+    light = k;
+    return listed_in_tile(k, volume, least);
+  }
+  uint entry = coarse_lights[coarse.x + k];
+  light = entry & COARSE_ENTRY_LIGHT;
+  return (entry & quadrant_bit) != 0u && listed_in_tile(light, volume, least);
+}
 
 #include "light_list_slots.glsl"
 
@@ -48,8 +58,8 @@ uint list_in_rounds(uint count, uint local) {
   uint listed_count = 0u;
   for (uint base = 0u, round = 0u; base < count; base += THREADS, ++round) {
     uint masks = (round % 3u) * MASK_WORDS;
-    uint light = base + local < count ? candidate(base + local) : 0u;
-    bool keep = base + local < count && listed_in_tile(light, volume, 0u);
+    uint light = 0u;
+    bool keep = base + local < count && lists_candidate(base + local, 0u, light);
     if (keep) atomicOr(round_masks[masks + word], bit);
     barrier();
     uint before = bitCount(round_masks[masks + word] & (bit - 1u));
@@ -78,8 +88,9 @@ shared uint group_end[LIGHT_GROUP_COUNT];
 // How many of the candidates in `chunk` listed_in_tile lists at worth `least`.
 uint count_candidates(uvec2 chunk, uint least) {
   uint count = 0u;
+  uint light;
   for (uint k = chunk.x; k < chunk.y; ++k) {
-    if (listed_in_tile(candidate(k), volume, least)) ++count;
+    if (lists_candidate(k, least, light)) ++count;
   }
   return count;
 }
@@ -144,8 +155,8 @@ void list_in_chunks(uint candidates, uint local) {
   uint run_group = LIGHT_GROUP_COUNT;
   uint run_first = 0u;
   for (uint k = chunk.x; k < chunk.y && slot < tile_listed; ++k) {
-    uint i = candidate(k);
-    if (!listed_in_tile(i, volume, least)) continue;
+    uint i;
+    if (!lists_candidate(k, least, i)) continue;
     tile_lights[tile_first + slot] = i;
     uint group = group_of(i);
     if (group != run_group) {
@@ -167,6 +178,7 @@ void main() {
   }
   volume = tile_volumes[tile];
   coarse = coarse_ranges[coarse_tile_of(gl_WorkGroupID.xy)];
+  quadrant_bit = 1u << (COARSE_QUADRANT_SHIFT + coarse_quadrant(gl_WorkGroupID.xy % LIGHT_COARSE_SIDE));
   uint candidates = volume.sphere.w < 0.0 ? 0u : (coarse.y == EVERY_LIGHT ? frame.counts.x : coarse.y);
 
   // Sorted by light index, the list is the same every frame.

@@ -26,15 +26,17 @@ const uint TILES = LIGHT_COARSE_SIDE * LIGHT_COARSE_SIDE;
 // are tested once, for the list's count, and its entries read the bits. With 100,000 lights the
 // pass took 0.44 ms from afar and 0.63 at eye height, against 0.78 and 1.14 testing them twice
 // (H200, 1920x1080, 2026-12-04). 16 KiB, 131,072 lights; past that the lights are tested again.
-// With the tiles' volumes (176 bytes each) and the lists' slots the pass shares 32,312 of the
+// With the tiles' volumes (176 bytes each) and the lists' slots the pass shares 32,136 of the
 // 32,768 bytes that lavapipe's workgroups may: a field more in TileVolume needs the volumes kept
 // elsewhere.
 const uint SCRATCH_WORDS = 4096u;
 shared uint scratch[SCRATCH_WORDS];
 const uint BIT_LIGHTS = 32u * SCRATCH_WORDS;
+// Each tile's volume; once the tiles are bounded, the first five hold the volumes around the
+// coarse tile's quadrants' tiles (coarse_quadrant), then around all its tiles.
 shared TileVolume volumes[TILES];
+const uint WHOLE_COARSE_TILE = 4u;
 shared uint tile_slices[TILES];  // each tile's depth slices with a surface (TileVolume.slices)
-shared TileVolume coarse_volume;
 shared uint coarse_first;
 
 // Thread `local` (< TILES), once every block is bounded: its tile's depth bounds from the tile's
@@ -60,11 +62,17 @@ TileVolume bound_tile(uint local) {
   return volume;
 }
 
-// Thread 0, once every tile is bounded: the volume around the tiles' volumes (the sphere around
-// their spheres, the cone around their cones, the shells around theirs), a hair wider so that
-// rounding never lets a light reach a tile but miss this volume; sphere.w is NO_SURFACES where no
-// tile has any.
-TileVolume volume_around_tiles() {
+// Whether tile `t` of the coarse tile lies in `quadrant` (WHOLE_COARSE_TILE: every tile does).
+bool in_quadrant(uint t, uint quadrant) {
+  return quadrant == WHOLE_COARSE_TILE ||
+         coarse_quadrant(uvec2(t % LIGHT_COARSE_SIDE, t / LIGHT_COARSE_SIDE)) == quadrant;
+}
+
+// Once every tile is bounded: the volume around the volumes of the tiles in `quadrant`, or of all
+// of them (WHOLE_COARSE_TILE): the sphere around their spheres, the cone around their cones, the
+// shells around theirs, a hair wider so that rounding never lets a light reach a tile but miss
+// this volume; sphere.w is NO_SURFACES where no such tile has any.
+TileVolume volume_around_tiles(uint quadrant) {
   TileVolume around;
   around.sphere.w = NO_SURFACES;
   vec3 low = vec3(3.0e38);
@@ -73,7 +81,7 @@ TileVolume volume_around_tiles() {
   vec2 shells = vec2(3.0e38, 0.0);
   for (uint t = 0u; t < TILES; ++t) {
     TileVolume tile = volumes[t];
-    if (tile.sphere.w < 0.0) continue;
+    if (tile.sphere.w < 0.0 || !in_quadrant(t, quadrant)) continue;
     low = min(low, tile.sphere.xyz - tile.sphere.w);
     high = max(high, tile.sphere.xyz + tile.sphere.w);
     axis += tile.axis_cos.xyz;
@@ -87,7 +95,7 @@ TileVolume volume_around_tiles() {
   float half_angle = 0.0;
   for (uint t = 0u; t < TILES; ++t) {
     TileVolume tile = volumes[t];
-    if (tile.sphere.w < 0.0) continue;
+    if (tile.sphere.w < 0.0 || !in_quadrant(t, quadrant)) continue;
     radius = max(radius, length(tile.sphere.xyz - centre) + tile.sphere.w);
     half_angle = max(half_angle, acos(clamp(dot(axis, tile.axis_cos.xyz), -1.0, 1.0)) + acos(tile.axis_cos.w));
   }
@@ -128,7 +136,8 @@ void main() {
     }
     if (slices != 0u) atomicOr(tile_slices[tile_local], slices);
   }
-  if (local == 0u) coarse_volume = volume_around_tiles();
+  TileVolume around;
+  if (local <= WHOLE_COARSE_TILE) around = volume_around_tiles(local);
   for (uint word = local; word < SCRATCH_WORDS; word += THREADS) scratch[word] = 0u;
   barrier();
   if (local < TILES && volumes[local].sphere.w >= 0.0) {
@@ -136,9 +145,12 @@ void main() {
     uint tile = tile_xy.y * frame.screen.z + tile_xy.x;
     tile_volumes[tile].slices.x = tile_slices[local] | depth_slices_of_transparent_surfaces(tile, volumes[local]);
   }
+  barrier();
+  if (local <= WHOLE_COARSE_TILE) volumes[local] = around;
+  barrier();
 
   // Lights in ordered chunks, one per thread, as the tiles' pass lists them.
-  TileVolume volume = coarse_volume;
+  TileVolume volume = volumes[WHOLE_COARSE_TILE];
   uint lights_tested = volume.sphere.w < 0.0 ? 0u : frame.counts.x;
   bool bits = lights_tested <= BIT_LIGHTS;
   uvec2 chunk = thread_chunk(local, lights_tested);
@@ -153,7 +165,7 @@ void main() {
   uint sum = place_thread_counts(local);
   if (local == 0u) {
     uint first = sum == 0u ? 0u : atomicAdd(coarse_wanted, sum);
-    bool fits = first <= frame.counts.z && sum <= frame.counts.z - first;
+    bool fits = first <= frame.counts.z && sum <= frame.counts.z - first && frame.counts.x <= COARSE_ENTRY_LIGHT + 1u;
     coarse_ranges[gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x] =
         fits ? uvec2(first, sum) : uvec2(0u, EVERY_LIGHT);
     coarse_first = fits ? first : EVERY_LIGHT;
@@ -163,7 +175,11 @@ void main() {
   uint slot = coarse_first + first_slot[local];
   for (uint i = chunk.x; i < chunk.y; ++i) {
     if (bits ? (scratch[i / 32u] & (1u << (i % 32u))) != 0u : light_reaches_volume(lights[i], volume)) {
-      coarse_lights[slot++] = i;
+      uint quadrants = 0u;
+      for (uint q = 0u; q < WHOLE_COARSE_TILE; ++q) {
+        if (volumes[q].sphere.w >= 0.0 && light_reaches_volume(lights[i], volumes[q])) quadrants |= 1u << q;
+      }
+      coarse_lights[slot++] = i | quadrants << COARSE_QUADRANT_SHIFT;
     }
   }
 }

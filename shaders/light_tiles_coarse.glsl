@@ -25,6 +25,22 @@ layout(std430, set = 0, binding = coarse_ranges_binding) buffer CoarseRanges { u
 const uint EVERY_LIGHT = 0xFFFFFFFFu;
 const float NO_SURFACES = -1.0;
 
+// A coarse list's entry: the light's index in the low bits, and above them a bit per quadrant of
+// the coarse tile (LIGHT_COARSE_SIDE / 2 tiles a side) whose volume the light reaches, so that a
+// tile tests only its quadrant's lights. Among 100,000 lights the tiles' pass took 0.75 ms against
+// 1.41 from afar and 1.59 against 2.01 at eye height, the coarse pass 0.63 against 0.43 and 0.85
+// against 0.70: the frame 12.0 ms against 12.45, and 25.05 against 25.3. Coarse tiles of 4 x 4
+// tiles instead cost the coarse pass 2.29 ms at eye height (H100, 1920x1080, 2026-12-05).
+const uint COARSE_QUADRANT_SHIFT = 28u;
+const uint COARSE_ENTRY_LIGHT = (1u << COARSE_QUADRANT_SHIFT) - 1u;  // the light's index
+
+// The quadrant (0 to 3) of the coarse tile that the tile at `in_coarse` (its place in its coarse
+// tile) lies in.
+uint coarse_quadrant(uvec2 in_coarse) {
+  uvec2 half_side = in_coarse / (LIGHT_COARSE_SIDE / 2u);
+  return half_side.y * 2u + half_side.x;
+}
+
 uint coarse_tile_of(uvec2 tile_xy) {
   uint across = (frame.screen.z + LIGHT_COARSE_SIDE - 1u) / LIGHT_COARSE_SIDE;
   uvec2 coarse = tile_xy / LIGHT_COARSE_SIDE;
