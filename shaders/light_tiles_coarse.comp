@@ -165,6 +165,8 @@ void main() {
   uint sum = place_thread_counts(local);
   if (local == 0u) {
     uint first = sum == 0u ? 0u : atomicAdd(coarse_wanted, sum);
+    // Light indices past an entry's low bits, far beyond what the light records hold, would make
+    // every tile test every light as a full pool does.
     bool fits = first <= frame.counts.z && sum <= frame.counts.z - first && frame.counts.x <= COARSE_ENTRY_LIGHT + 1u;
     coarse_ranges[gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x] =
         fits ? uvec2(first, sum) : uvec2(0u, EVERY_LIGHT);
