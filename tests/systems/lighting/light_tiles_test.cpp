@@ -121,6 +121,13 @@ std::vector<float> depth_of(const glm::mat4& view_projection, const glm::vec3& e
   return depth;
 }
 
+// The view-projection of a camera at the origin looking down -Z, which scene_depth's scene is
+// laid out for.
+glm::mat4 origin_view_projection() {
+  return projection_matrix(scene::Camera{}, float(width) / float(height)) *
+         view_matrix({{0, 0, 0}, {0, 0, -1}});
+}
+
 // What a camera at the origin sees: a floor at y = -4, a wall at z = -30 and a corner of sky (the
 // far depth); with `posts`, posts at z = -6 in every 24th pixel column and the three after it, so
 // that tiles hold surfaces 6 m and 30 m away and nothing between.
@@ -233,20 +240,24 @@ TEST(SpotLightCulling, ListsASpotOnlyNearItsPoolOfLight) {
   EXPECT_EQ(far_listed, 0u) << "of " << listed << " tiles listing the spot";
 }
 
-// A narrow spot light between posts 6 m away and a wall 30 m away, aimed up where there is no
-// ceiling: it lights no pixel. The tiles that see both a post and the wall have a slice of the
-// view frustum from 6 to 30 m that the cone crosses; their depth slices with a surface are at
-// either end, and the cone misses those.
-TEST(SpotLightCulling, ASpotBetweenANearAndAFarSurfaceIsListedNowhere) {
-  const SortedLights lights = one_spot({0.5f, -1.0f, -15.0f}, {0, 1, 0}, 0.3f, 2.5f);
+// Expects `lights`, one light that reaches none of scene_depth's surfaces with posts, to be in no
+// tile's list, not even among the lights the CPU reference allows (`may`).
+void expect_listed_nowhere_among_the_posts(const SortedLights& lights) {
   ASSERT_EQ(lights.sorted.size(), 1u);
-  const glm::mat4 view_projection =
-      projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
+  const glm::mat4 view_projection = origin_view_projection();
   const std::vector<TileLightSets> reference = reference_light_tiles(
       scene_depth(view_projection, true), width, height, view_projection, lights.sorted);
   for (uint32_t tile = 0; tile < reference.size(); ++tile) {
     EXPECT_TRUE(reference[tile].may.empty()) << "tile " << tile;
   }
+}
+
+// A narrow spot light between posts 6 m away and a wall 30 m away, aimed up where there is no
+// ceiling: it lights no pixel. The tiles that see both a post and the wall have a slice of the
+// view frustum from 6 to 30 m that the cone crosses; their depth slices with a surface are at
+// either end, and the cone misses those.
+TEST(SpotLightCulling, ASpotBetweenANearAndAFarSurfaceIsListedNowhere) {
+  expect_listed_nowhere_among_the_posts(one_spot({0.5f, -1.0f, -15.0f}, {0, 1, 0}, 0.3f, 2.5f));
 }
 
 // A point light halfway between posts 6 m away and a wall 30 m away, above the floor and out of
@@ -256,16 +267,8 @@ TEST(SpotLightCulling, ASpotBetweenANearAndAFarSurfaceIsListedNowhere) {
 TEST(PointLightCulling, APointLightBetweenANearAndAFarSurfaceIsListedNowhere) {
   scene::PointLight point;
   point.range = 2.5f;
-  const SortedLights lights =
-      one_light(point, {{0.5f, 1.0f, -15.0f}, glm::quat(1, 0, 0, 0), glm::vec3(1.0f)});
-  ASSERT_EQ(lights.sorted.size(), 1u);
-  const glm::mat4 view_projection =
-      projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
-  const std::vector<TileLightSets> reference = reference_light_tiles(
-      scene_depth(view_projection, true), width, height, view_projection, lights.sorted);
-  for (uint32_t tile = 0; tile < reference.size(); ++tile) {
-    EXPECT_TRUE(reference[tile].may.empty()) << "tile " << tile;
-  }
+  expect_listed_nowhere_among_the_posts(
+      one_light(point, {{0.5f, 1.0f, -15.0f}, glm::quat(1, 0, 0, 0), glm::vec3(1.0f)}));
 }
 
 class LightTilesTest : public GpuTest {
@@ -328,8 +331,7 @@ class CrowdTest : public LightTilesTest {
     shadows::FrameLights gathered;
     shadows::gather_lights(scene.world, {glm::vec3(-20.0f), glm::vec3(20.0f)}, {false}, gathered);
     lights = sorted_by_group(gathered);
-    view_projection = projection_matrix(scene::Camera{}, float(width) / float(height)) *
-                      view_matrix({{0, 0, 0}, {0, 0, -1}});
+    view_projection = origin_view_projection();
     depth = scene_depth(view_projection);
     tiles_with_surfaces = 0;
     for (uint32_t tile = 0; tile < grid.count(); ++tile) {
@@ -512,8 +514,7 @@ std::vector<LightTilesTest::Culled> LightTilesTest::cull(const SortedLights& lig
 void LightTilesTest::expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape, uint32_t behind,
                                                                      uint64_t most_coarse_entries) {
   const SortedLights lights = scattered_lights(behind);
-  const glm::mat4 view_projection =
-      projection_matrix(scene::Camera{}, float(width) / float(height)) * view_matrix({{0, 0, 0}, {0, 0, -1}});
+  const glm::mat4 view_projection = origin_view_projection();
   const std::vector<float> depth = scene_depth(view_projection, true);
   const LightTileGrid grid = LightTileGrid::of(width, height);
   const Culled culled = cull(lights, shape, depth, view_projection, 1, 0, most_coarse_entries).front();
