@@ -7,16 +7,28 @@
 #include "rendergraph/device/pipeline.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
+#include "shaders/shadow_depth_copy.frag.spv.h"
+#include "shaders/shadow_depth_copy.vert.spv.h"
 #include "shaders/shadow_raster.comp.spv.h"
 #include "shaders/shadow_raster_cut_out.comp.spv.h"
 #include "systems/gpu/gpu_textures.h"
 #include "systems/gpu/shader_bindings.h"
+#include "systems/shadow_maps/shadow_atlas.h"
 
 namespace sg {
 namespace {
 
 using namespace bindings;
 using namespace shadow_batch;
+
+// Rectangles of due tiles from this size on are copied into the atlas, the views of smaller ones
+// drawn: a copy pays for each rectangle (about 2 us on the H200, docs/PERFORMANCE.md), a draw
+// writing depth from its fragment shader pays more than a copy for each texel. H100, 1920x1080, the stress
+// hall, GPU frame, ms: 100,000 lights from afar (4,096 views of 16-64 texels a frame) 11.84 copying every
+// rectangle, 11.36 drawing every view, 11.39 at 16,384 texels; at eye height 25.05, 24.52 and 24.56; 1,024
+// lights at eye height (tiles of 64-512 texels, cube faces side by side) 6.36, 7.24 and 6.35; at
+// 65,536 texels 6.51 there (2026-12-05).
+constexpr uint64_t copied_texels = 16384;
 
 }  // namespace
 
@@ -35,7 +47,9 @@ ComputeShadowRaster::ComputeShadowRaster(vk::VulkanContext& context, const GpuTe
                {mesh_vertices_binding, storage, 1, compute},
                {mesh_indices_binding, storage, 1, compute},
                {material_textures_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute}},
-              vk::push_constants<BatchConstants>(compute)) {
+              vk::push_constants<BatchConstants>(compute)),
+      copy_layout_(context.device(), {{shadow_views_binding, storage, 1, VK_SHADER_STAGE_VERTEX_BIT},
+                                      {shadow_depths_binding, storage, 1, VK_SHADER_STAGE_FRAGMENT_BIT}}) {
   if (!with_pipelines) return;
   if (context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
     std::printf(
@@ -43,20 +57,22 @@ ComputeShadowRaster::ComputeShadowRaster(vk::VulkanContext& context, const GpuTe
         "after 65,535 iterations, which can leave tiles over 512 texels incomplete\n");
   }
   pipeline_ = vk::create_compute_pipeline(context, {shadow_raster_comp, {}, layout_.get(), "shadow raster"});
+  vk::GraphicsPipelineDesc copy;
+  copy.vertex_spirv = shadow_depth_copy_vert;
+  copy.fragment_spirv = shadow_depth_copy_frag;
+  copy.depth_format = vk::to_vk(ShadowAtlas::depth_format);
+  copy.depth_compare = VK_COMPARE_OP_ALWAYS;  // the view's new depths replace its tile's
+  copy.cull_mode = VK_CULL_MODE_NONE;
+  copy.layout = copy_layout_.get();
+  copy.name = "shadow copy draw";
+  copy_pipeline_ = vk::create_graphics_pipeline(context, copy);
   static_layers_.emplace(context);
 }
 
-void ComputeShadowRaster::make_cut_out_pipeline() {
-  if (!pipeline_ || cut_out_pipeline_) return;
-  cut_out_pipeline_ = vk::create_compute_pipeline(
-      context_, {shadow_raster_cut_out_comp, material_pass_constants(0, 0, textures_), layout_.get(),
-                 "shadow raster cut out"});
-}
-
 void ComputeShadowRaster::place_depths(std::span<const shadows::AtlasTile> tiles) {
-  if (!placement_.place(tiles)) return;
+  if (!placement_.place(tiles, copied_texels)) return;
   copies_.clear();
-  for (const shadows::DepthRegion& region : placement_.regions()) {
+  for (const shadows::DepthRegion& region : placement_.copied()) {
     VkBufferImageCopy copy{};
     copy.bufferOffset = region.offset * sizeof(float);
     copy.bufferRowLength = region.width;
@@ -66,6 +82,13 @@ void ComputeShadowRaster::place_depths(std::span<const shadows::AtlasTile> tiles
     copy.imageExtent = {region.width, region.height, 1};
     copies_.push_back(copy);
   }
+}
+
+void ComputeShadowRaster::make_cut_out_pipeline() {
+  if (!pipeline_ || cut_out_pipeline_) return;
+  cut_out_pipeline_ = vk::create_compute_pipeline(
+      context_, {shadow_raster_cut_out_comp, material_pass_constants(0, 0, textures_), layout_.get(),
+                 "shadow raster cut out"});
 }
 
 void ComputeShadowRaster::add_raster(rg::RenderGraph& graph, const char* name, uint32_t list,
@@ -128,17 +151,39 @@ rg::ImageHandle ComputeShadowRaster::add_to(rg::RenderGraph& graph, rg::ImageHan
   }
   if (culled.moving_pairs.valid())
     add_raster(graph, "shadow raster moving", 1, frame, culled, scene, slot, depths);
-  graph.add_pass(
-      "shadow copy",
-      [&](rg::PassBuilder& p) {
-        p.read(depths, rg::Usage::transfer);
-        atlas = p.write(atlas, rg::Usage::transfer);  // the other tiles keep their contents
-      },
-      [this, depths, atlas](const vk::PassRecorder& rec) {
-        vkCmdCopyBufferToImage(rec.cmd(), rec.buffer(depths), rec.image(atlas),
-                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, static_cast<uint32_t>(copies_.size()),
-                               copies_.data());
-      });
+  if (!copies_.empty()) {
+    graph.add_pass(
+        "shadow copy",
+        [&](rg::PassBuilder& p) {
+          p.read(depths, rg::Usage::transfer);
+          atlas = p.write(atlas, rg::Usage::transfer);  // the other tiles keep their contents
+        },
+        [this, depths, atlas](const vk::PassRecorder& rec) {
+          vkCmdCopyBufferToImage(rec.cmd(), rec.buffer(depths), rec.image(atlas),
+                                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, static_cast<uint32_t>(copies_.size()),
+                                 copies_.data());
+        });
+  }
+  if (!placement_.drawn().empty()) {
+    graph.add_pass(
+        "shadow copy draw",
+        [&](rg::PassBuilder& p) {
+          p.read(depths, rg::Usage::storage_fragment);
+          atlas = p.write(atlas, rg::Usage::depth_attachment);  // the other tiles keep their contents
+        },
+        [this, depths, views = frame.view_records](const vk::PassRecorder& rec) {
+          const VkDescriptorSet set = copy_layout_.write(rec.allocate_set(copy_layout_))
+                                          .buffer(shadow_views_binding, views)
+                                          .buffer(shadow_depths_binding, rec.buffer(depths))
+                                          .update();
+          rec.set_full_viewport();
+          vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, copy_pipeline_.get());
+          copy_layout_.bind(rec.cmd(), set);
+          // Two triangles a view (shadow_depth_copy.vert).
+          for (const shadows::ViewRun& run : placement_.drawn())
+            vkCmdDraw(rec.cmd(), 6, run.count, 0, run.first);
+        });
+  }
   return atlas;
 }
 

@@ -5,9 +5,13 @@
 //
 //   shadow raster    (compute)  a workgroup per pair writes its triangles' depths into the
 //                               views' squares of a depth buffer (shaders/shadow_raster.comp)
-//   shadow copy      (transfer) the squares into their atlas tiles
+//   shadow copy      (transfer) the squares into their atlas tiles, in rectangles of
+//                               16,384 texels or more
+//   shadow copy draw (raster)   the views of smaller rectangles, two triangles each writing its
+//                               depths (shaders/shadow_depth_copy.vert)
 //
-// Where each view's square lies, and the regions copied, come from shadows::DepthPlacement.
+// Where each view's square lies, and which rectangles are copied, come from
+// shadows::DepthPlacement.
 //
 // With static layers (the atlas's, ShadowAtlas; shadow_static_layers.h) it draws moving casters
 // (GpuScene::moving) apart: a view drawn with every caster is culled against the still casters
@@ -51,8 +55,7 @@ class ComputeShadowRaster {
   // has such casters; later calls do nothing, as do calls without pipelines.
   void make_cut_out_pipeline();
 
-  // Where the views of `tiles` put their depths, for a frame it rasterizes; the places and copy
-  // regions of the last call stand while the tiles are the same.
+  // Where the views of `tiles` put their depths, for a frame it rasterizes.
   void place_depths(std::span<const shadows::AtlasTile> tiles);
   // `views` views placed nowhere, for a frame the hardware rasterizes.
   void place_nowhere(size_t views) { placement_.place_nowhere(views); }
@@ -80,9 +83,11 @@ class ComputeShadowRaster {
   vk::PipelineLayout layout_;
   vk::UniquePipeline pipeline_;
   vk::UniquePipeline cut_out_pipeline_;
+  vk::PipelineLayout copy_layout_;
+  vk::UniquePipeline copy_pipeline_;                 // "shadow copy draw"
   std::optional<ShadowStaticLayers> static_layers_;  // with the pipelines
   shadows::DepthPlacement placement_;
-  std::vector<VkBufferImageCopy> copies_;  // placement_'s regions
+  std::vector<VkBufferImageCopy> copies_;  // placement_'s copied rectangles
 };
 
 }  // namespace sg

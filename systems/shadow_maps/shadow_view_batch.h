@@ -15,7 +15,8 @@
 // or in compute (shadows::ShadowRaster::compute, compute_shadow_raster.h):
 //   shadow raster    (compute)  a workgroup per pair writes its triangles' depths into the
 //                               views' squares of a depth buffer (shaders/shadow_raster.comp)
-//   shadow copy      (transfer) the squares into their atlas tiles
+//   shadow copy      (transfer) the squares into their atlas tiles, large rectangles of them
+//   shadow copy draw (raster)   the others, two triangles a view writing its depths
 //
 // With static layers (the atlas's, ShadowAtlas), the compute raster draws moving casters apart
 // ("shadow raster moving"), over each view's static layer of its still casters ("shadow static
@@ -27,8 +28,9 @@
 // so CPU time grows with views and casters, not with their product, and the number of passes is
 // fixed. Casters of masked or transparent materials (GpuScene::first_cut_out_group) are drawn with
 // the shaders' cut_out variants (shaders/shadow_cut_out.glsl); a transparent caster holding a
-// view's light is culled from that view. The hardware raster needs shaderOutputLayer (gl_Layer from the
-// vertex stage, shaders/shadow_batch.vert); supported() says whether the device has it.
+// view's light is culled from that view. Both rasters need shaderOutputLayer (gl_Layer from the
+// vertex stage: shaders/shadow_batch.vert, shaders/shadow_depth_copy.vert); supported() says
+// whether the device has it.
 //
 // ShadowViewBatch owns the parts and chooses each frame's raster.
 #include <cstdint>

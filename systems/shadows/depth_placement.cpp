@@ -20,12 +20,18 @@ void DepthPlacement::place_nowhere(size_t views) {
   tiles_.clear();
   places_.assign(views, glm::uvec2(0u));
   regions_.clear();
+  copied_.clear();
+  drawn_.clear();
   texels_ = 0;
 }
 
-bool DepthPlacement::place(std::span<const AtlasTile> tiles) {
-  if (std::equal(tiles.begin(), tiles.end(), tiles_.begin(), tiles_.end())) return false;
+bool DepthPlacement::place(std::span<const AtlasTile> tiles, uint64_t copied_texels) {
+  if (copied_texels == copied_texels_ &&
+      std::equal(tiles.begin(), tiles.end(), tiles_.begin(), tiles_.end())) {
+    return false;
+  }
   tiles_.assign(tiles.begin(), tiles.end());
+  copied_texels_ = copied_texels;
   places_.assign(tiles.size(), glm::uvec2(0u));
   // By page, size, row, column, packed into 40 bits: tiles lie on multiples of their size, so
   // rows and columns count tiles, not texels (below 2^11 for pages of up to 2^11 of the smallest
@@ -78,17 +84,32 @@ bool DepthPlacement::place(std::span<const AtlasTile> tiles) {
   }
 
   texels_ = 0;
+  copied_.clear();
   for (DepthRegion& region : regions_) {
     region.offset = texels_;
-    texels_ += uint64_t{region.width} * region.height;
+    const uint64_t area = uint64_t{region.width} * region.height;
+    texels_ += area;
+    if (area >= copied_texels) copied_.push_back(region);
   }
+  view_drawn_.assign(tiles.size(), 0);
   for (const Run& run : runs_) {
     const DepthRegion& region = regions_[run.region];
+    const bool drawn = uint64_t{region.width} * region.height < copied_texels;
     for (size_t k = run.begin; k < run.end; ++k) {
       const AtlasTile& tile = tile_at(k);
       const uint64_t texel =
           region.offset + uint64_t{tile.y - region.corner.y} * region.width + (tile.x - region.corner.x);
       places_[placed_[k].view] = {static_cast<uint32_t>(texel), region.width};
+      view_drawn_[placed_[k].view] = drawn ? 1 : 0;
+    }
+  }
+  drawn_.clear();
+  for (uint32_t v = 0; v < view_drawn_.size(); ++v) {
+    if (!view_drawn_[v]) continue;
+    if (!drawn_.empty() && drawn_.back().first + drawn_.back().count == v) {
+      ++drawn_.back().count;
+    } else {
+      drawn_.push_back({v, 1});
     }
   }
   return true;

@@ -107,9 +107,9 @@ class ShadowRasterTest : public GpuTest {
     return frame.renderer().shadow_stats();
   }
 
-  // Every texel of every shadow view, in view order, rendered with `raster`.
-  std::vector<float> depths(shadows::ShadowRaster raster) {
-    SceneView scene = clipped_scene();
+  // Every texel of every shadow view of `resolution` texels, in view order, rendered with `raster`.
+  std::vector<float> depths(shadows::ShadowRaster raster, uint32_t resolution) {
+    SceneView scene = clipped_scene(nullptr, resolution);
     const std::unique_ptr<Frame> frame = frame_of(scene, raster);
     draw(*frame);
     EXPECT_EQ(frame->renderer().lights().maps.size(), 2u);
@@ -117,21 +117,29 @@ class ShadowRasterTest : public GpuTest {
     return view_depths(context, *frame);
   }
 
+  // The compute raster's views of `resolution` texels hold what the hardware raster's hold.
+  void expect_rasters_alike(uint32_t resolution) {
+    const std::vector<float> hardware = depths(shadows::ShadowRaster::hardware, resolution);
+    const std::vector<float> compute = depths(shadows::ShadowRaster::compute, resolution);
+    ASSERT_EQ(hardware.size(), compute.size());
+    ASSERT_EQ(hardware.size(), 8u * resolution * resolution);
+    // Texel centres on a triangle's edge may go either way, and depths differ by rounding.
+    const auto covered =
+        std::count_if(hardware.begin(), hardware.end(), [](float depth) { return depth < 1.0f; });
+    EXPECT_GT(size_t(covered), hardware.size() / 2) << "the floor fills most views";
+    const size_t different = differing(hardware, compute, 1e-4f);
+    EXPECT_LT(different, hardware.size() / 200) << different << " of " << hardware.size() << " texels differ";
+  }
+
   vk::FrameRing frames{context};
 };
 
-TEST_F(ShadowRasterTest, ComputeRasterWritesWhatTheHardwareWrites) {
-  const std::vector<float> hardware = depths(shadows::ShadowRaster::hardware);
-  const std::vector<float> compute = depths(shadows::ShadowRaster::compute);
-  ASSERT_EQ(hardware.size(), compute.size());
-  ASSERT_EQ(hardware.size(), 8u * 256 * 256);
-  // Texel centres on a triangle's edge may go either way, and depths differ by rounding.
-  const auto covered =
-      std::count_if(hardware.begin(), hardware.end(), [](float depth) { return depth < 1.0f; });
-  EXPECT_GT(size_t(covered), hardware.size() / 2) << "the floor fills most views";
-  const size_t different = differing(hardware, compute, 1e-4f);
-  EXPECT_LT(different, hardware.size() / 200) << different << " of " << hardware.size() << " texels differ";
-}
+// Tiles of 256 texels: the compute raster's depths reach the atlas by a copy.
+TEST_F(ShadowRasterTest, ComputeRasterWritesWhatTheHardwareWrites) { expect_rasters_alike(256); }
+
+// Tiles of 32 texels, all eight views' 8,192 texels fewer than a copied rectangle: their depths
+// reach the atlas by a draw.
+TEST_F(ShadowRasterTest, ComputeRasterWritesWhatTheHardwareWritesInSmallTiles) { expect_rasters_alike(32); }
 
 // The compute raster keeps a static layer per map: once the crate has started moving, the maps it
 // crosses redraw from their layers with the crate alone, and must hold what drawing every caster

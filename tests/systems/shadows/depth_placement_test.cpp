@@ -19,8 +19,7 @@ AtlasTile tile(uint32_t page, uint32_t x, uint32_t y, uint32_t size) {
   return t;
 }
 
-// Every view's square lies inside the buffer, no two overlap, and each sits in its region where
-// its tile sits in the region's rectangle of the atlas.
+// Every view's square lies inside the buffer, no two overlap, and together they fill it.
 void expect_consistent(const DepthPlacement& placement, const std::vector<AtlasTile>& tiles) {
   ASSERT_EQ(placement.places().size(), tiles.size());
   std::set<uint64_t> texels;
@@ -34,9 +33,7 @@ void expect_consistent(const DepthPlacement& placement, const std::vector<AtlasT
       }
     }
   }
-  uint64_t area = 0;
-  for (const DepthRegion& region : placement.regions()) area += uint64_t{region.width} * region.height;
-  EXPECT_EQ(area, placement.texels());
+  EXPECT_EQ(texels.size(), placement.texels()) << "texels no view writes";
 }
 
 TEST(DepthPlacement, ABlockOfTilesCopiesAsOneRegion) {
@@ -44,10 +41,10 @@ TEST(DepthPlacement, ABlockOfTilesCopiesAsOneRegion) {
   const std::vector<AtlasTile> tiles{tile(0, 64, 64, 64), tile(0, 0, 0, 64), tile(0, 64, 0, 64),
                                      tile(0, 0, 64, 64)};
   DepthPlacement placement;
-  EXPECT_TRUE(placement.place(tiles));
-  ASSERT_EQ(placement.regions().size(), 1u);
-  EXPECT_EQ(placement.regions()[0].width, 128u);
-  EXPECT_EQ(placement.regions()[0].height, 128u);
+  EXPECT_TRUE(placement.place(tiles, 0));
+  ASSERT_EQ(placement.copied().size(), 1u);
+  EXPECT_EQ(placement.copied()[0].width, 128u);
+  EXPECT_EQ(placement.copied()[0].height, 128u);
   EXPECT_EQ(placement.texels(), 128u * 128u);
   EXPECT_EQ(placement.places()[1], glm::uvec2(0u, 128u)) << "the block's top-left tile starts it";
   EXPECT_EQ(placement.places()[0], glm::uvec2(64u * 128u + 64u, 128u));
@@ -58,19 +55,41 @@ TEST(DepthPlacement, TilesOfOtherPagesOrSizesGetRegionsOfTheirOwn) {
   const std::vector<AtlasTile> tiles{tile(0, 0, 0, 64), tile(1, 0, 0, 64), tile(0, 128, 0, 32),
                                      tile(0, 256, 0, 64)};
   DepthPlacement placement;
-  EXPECT_TRUE(placement.place(tiles));
-  EXPECT_EQ(placement.regions().size(), 4u) << "no two of them side by side on a row of one page";
+  EXPECT_TRUE(placement.place(tiles, 0));
+  EXPECT_EQ(placement.copied().size(), 4u) << "no two of them side by side on a row of one page";
+  expect_consistent(placement, tiles);
+}
+
+TEST(DepthPlacement, RectanglesBelowTheCopiedSizeAreDrawnViewByView) {
+  // Views 0 and 2 form a 2 x 1 block of 64-texel tiles (8,192 texels); views 1, 3 and 4 lie
+  // apart; view 3's 128-texel tile alone reaches the copied size.
+  const std::vector<AtlasTile> tiles{tile(0, 0, 0, 64), tile(0, 512, 0, 32), tile(0, 64, 0, 64),
+                                     tile(1, 0, 0, 128), tile(1, 512, 512, 16)};
+  DepthPlacement placement;
+  EXPECT_TRUE(placement.place(tiles, 128 * 128));
+  ASSERT_EQ(placement.copied().size(), 1u);
+  EXPECT_EQ(placement.copied()[0].corner.page, 1u);
+  EXPECT_EQ(placement.copied()[0].width, 128u);
+  const std::vector<ViewRun> drawn(placement.drawn().begin(), placement.drawn().end());
+  ASSERT_EQ(drawn.size(), 2u) << "views 0-2, then view 4";
+  EXPECT_EQ(drawn[0].first, 0u);
+  EXPECT_EQ(drawn[0].count, 3u);
+  EXPECT_EQ(drawn[1].first, 4u);
+  EXPECT_EQ(drawn[1].count, 1u);
+  EXPECT_EQ(placement.places()[2].y, 128u) << "the block's views share its rows";
+  EXPECT_TRUE(placement.place(tiles, 8192)) << "another size places anew";
+  EXPECT_EQ(placement.copied().size(), 2u) << "the block is copied too";
   expect_consistent(placement, tiles);
 }
 
 TEST(DepthPlacement, TheSameTilesKeepTheirPlacesUntilPlacedNowhere) {
   const std::vector<AtlasTile> tiles{tile(0, 0, 0, 64), tile(0, 64, 0, 64)};
   DepthPlacement placement;
-  EXPECT_TRUE(placement.place(tiles));
-  EXPECT_FALSE(placement.place(tiles)) << "the last places stand";
+  EXPECT_TRUE(placement.place(tiles, 0));
+  EXPECT_FALSE(placement.place(tiles, 0)) << "the last places stand";
   placement.place_nowhere(2);
   EXPECT_EQ(placement.places()[1], glm::uvec2(0u));
-  EXPECT_TRUE(placement.place(tiles)) << "placed anew after a frame placed nowhere";
+  EXPECT_TRUE(placement.place(tiles, 0)) << "placed anew after a frame placed nowhere";
   expect_consistent(placement, tiles);
 }
 
