@@ -8,6 +8,10 @@ const uint LIGHT_TILE_SIZE = 16u;  // pixels per tile side; one workgroup per ti
 // Tiles per coarse tile side (light_tiles_coarse.comp): a coarse tile lists the lights that reach
 // any of its tiles, so that each tile tests those only.
 const uint LIGHT_COARSE_SIDE = 8u;
+// The most workgroups per coarse tile (light_tiles_coarse.comp), each listing a segment of the
+// lights; a frame takes that many from LIGHT_COARSE_SEGMENT_LIGHTS lights on, one below.
+const uint LIGHT_COARSE_SEGMENTS = 2u;
+const uint LIGHT_COARSE_SEGMENT_LIGHTS = 32768u;
 // The most group sets a frame shades (light_tiles_interface.glsl): tiles whose light groups are
 // one of them take one pass for all those groups.
 const uint LIGHT_GROUP_SETS = 8u;

@@ -17,18 +17,29 @@ layout(local_size_x = THREADS) in;
 
 // Each thread's copy of what its tile tests against.
 TileVolume volume;  // the tile's surfaces
-uvec2 coarse;       // its coarse tile's list: first entry, count (or EVERY_LIGHT)
-uint quadrant_bit;  // its quadrant's bit in that list's entries
+uvec2 coarse[LIGHT_COARSE_SEGMENTS];  // its coarse tile's lists, a segment of the lights each:
+                                      // first entry, count
+bool every_light;                     // one of them did not fit its pool: every light is tested
+uint quadrant_bit;                    // its quadrant's bit in those lists' entries
 
 // Whether the k-th light the tile tests goes in its list at worth `least` (listed_in_tile), and
-// which light that is: the k-th of its coarse tile's list, tested where it reaches the tile's
-// quadrant, or light k where that list did not fit its pool.
+// which light that is: the k-th of its coarse tile's lists, one after another, tested where it
+// reaches the tile's quadrant, or light k where a list did not fit its pool.
 bool lists_candidate(uint k, uint least, out uint light) {
-  if (coarse.y == EVERY_LIGHT) {
+  if (every_light) {
     light = k;
     return listed_in_tile(k, volume, least);
   }
-  uint entry = coarse_lights[coarse.x + k];
+  uint first = coarse[0].x;
+  bool found = false;
+  for (uint segment = 1u; segment < LIGHT_COARSE_SEGMENTS; ++segment) {
+    found = found || k < coarse[segment - 1u].y;
+    if (!found) {
+      k -= coarse[segment - 1u].y;
+      first = coarse[segment].x;
+    }
+  }
+  uint entry = coarse_lights[first + k];
   light = entry & COARSE_ENTRY_LIGHT;
   return (entry & quadrant_bit) != 0u && listed_in_tile(light, volume, least);
 }
@@ -177,9 +188,16 @@ void main() {
     group_end[local] = 0u;
   }
   volume = tile_volumes[tile];
-  coarse = coarse_ranges[coarse_tile_of(gl_WorkGroupID.xy)];
+  uint listed_coarse = 0u;
+  every_light = false;
+  for (uint segment = 0u; segment < LIGHT_COARSE_SEGMENTS; ++segment) {
+    coarse[segment] = segment < frame.counts.w ? coarse_ranges[first_coarse_range(gl_WorkGroupID.xy) + segment]
+                                               : uvec2(0u);
+    every_light = every_light || coarse[segment].y == EVERY_LIGHT;
+    listed_coarse += coarse[segment].y;
+  }
   quadrant_bit = 1u << (COARSE_QUADRANT_SHIFT + coarse_quadrant(gl_WorkGroupID.xy % LIGHT_COARSE_SIDE));
-  uint candidates = volume.sphere.w < 0.0 ? 0u : (coarse.y == EVERY_LIGHT ? frame.counts.x : coarse.y);
+  uint candidates = volume.sphere.w < 0.0 ? 0u : (every_light ? frame.counts.x : listed_coarse);
 
   // Sorted by light index, the list is the same every frame.
   uint wanted = list_in_rounds(candidates, local);

@@ -18,8 +18,9 @@
 layout(std430, set = 0, binding = tile_volumes_binding) buffer TileVolumes { TileVolume tile_volumes[]; };
 // The pool of the coarse tiles' lists, frame.counts.z entries.
 layout(std430, set = 0, binding = coarse_lights_binding) buffer CoarseLights { uint coarse_lights[]; };
-// Per coarse tile: x its list's first entry in coarse_lights, y how many, or EVERY_LIGHT where the
-// pool had no room for its list (its tiles then test every light; the pool grows for the frames after).
+// Per coarse tile, per segment of the lights (LIGHT_COARSE_SEGMENTS, in light order): x its list's
+// first entry in coarse_lights, y how many, or EVERY_LIGHT where the pool had no room for its list
+// (its tiles then test every light; the pool grows for the frames after).
 layout(std430, set = 0, binding = coarse_ranges_binding) buffer CoarseRanges { uvec2 coarse_ranges[]; };
 
 const uint EVERY_LIGHT = 0xFFFFFFFFu;
@@ -41,10 +42,12 @@ uint coarse_quadrant(uvec2 in_coarse) {
   return half_side.y * 2u + half_side.x;
 }
 
-uint coarse_tile_of(uvec2 tile_xy) {
+// The first of the LIGHT_COARSE_SEGMENTS ranges in coarse_ranges of the coarse tile holding the
+// tile at `tile_xy`.
+uint first_coarse_range(uvec2 tile_xy) {
   uint across = (frame.screen.z + LIGHT_COARSE_SIDE - 1u) / LIGHT_COARSE_SIDE;
   uvec2 coarse = tile_xy / LIGHT_COARSE_SIDE;
-  return coarse.y * across + coarse.x;
+  return (coarse.y * across + coarse.x) * LIGHT_COARSE_SEGMENTS;
 }
 
 #endif

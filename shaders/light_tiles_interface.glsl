@@ -45,7 +45,8 @@ layout(std430, set = 0, binding = light_tiles_feedback_binding) buffer Feedback 
 layout(push_constant) uniform Constants {
   mat4 inverse_view_projection;
   uvec4 screen;  // x width, y height, z tiles across, w tiles in all
-  uvec4 counts;  // x lights, y entries in the pool (tile_lights), z entries in the coarse pool
+  uvec4 counts;  // x lights, y entries in the pool (tile_lights), z entries in the coarse pool,
+                 // w the coarse pass's workgroups per coarse tile (LIGHT_COARSE_SEGMENTS at most)
   uvec4 sets[LIGHT_GROUP_SETS / 4u];  // the group sets, bit g for group g; 0: none
 } frame;
 

@@ -132,7 +132,7 @@ constexpr uint64_t tile_volume_bytes = 11 * sizeof(glm::vec4);
 struct LightTilesPass::Constants {
   glm::mat4 inverse_view_projection;
   glm::uvec4 screen;  // width, height, tiles across, tiles in all
-  glm::uvec4 counts;  // lights, entries in the pool, entries in the coarse pool
+  glm::uvec4 counts;  // lights, entries in the pool, entries in the coarse pool, coarse segments
   GroupSets sets;
 };
 static_assert(sizeof(GroupSets) % sizeof(glm::uvec4) == 0);
@@ -227,9 +227,11 @@ LightTiles LightTilesPass::add_to(rg::RenderGraph& graph, uint32_t slot, rg::Ima
   }();
   const bool serial = shape_ == LightCullingShape::thread_per_tile;
   const uint64_t coarse_entries = serial ? 0 : coarse_pool_.entries(grid.coarse().count(), light_count);
+  const uint32_t coarse_segments =
+      light_count >= tiles::LIGHT_COARSE_SEGMENT_LIGHTS ? tiles::LIGHT_COARSE_SEGMENTS : 1u;
   const Constants constants{glm::inverse(view_projection),
                             {screen.width, screen.height, grid.across, grid.count()},
-                            {light_count, uint32_t(pool_entries), uint32_t(coarse_entries), 0u},
+                            {light_count, uint32_t(pool_entries), uint32_t(coarse_entries), coarse_segments},
                             group_sets};
   CoarseLists lists;
   if (!serial) lists = add_coarse_pass(graph, slot, depth, lights, constants, transparent_bounds, grid);
@@ -300,7 +302,8 @@ LightTilesPass::CoarseLists LightTilesPass::add_coarse_pass(rg::RenderGraph& gra
         };
         out.volumes = output("tile volumes", uint64_t{grid.count()} * tile_volume_bytes);
         out.lights = output("coarse lights", uint64_t{constants.counts.z} * sizeof(uint32_t));
-        out.ranges = output("coarse ranges", uint64_t{coarse.count()} * sizeof(glm::uvec2));
+        out.ranges = output("coarse ranges",
+                            uint64_t{coarse.count()} * tiles::LIGHT_COARSE_SEGMENTS * sizeof(glm::uvec2));
         return out;
       },
       [this, slot, depth, transparent_bounds, coarse, &lights, constants](const CoarseLists& written,
@@ -317,7 +320,7 @@ LightTilesPass::CoarseLists LightTilesPass::add_coarse_pass(rg::RenderGraph& gra
         vkCmdBindPipeline(rec.cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, coarse_pipeline_.get());
         coarse_layout_.bind_compute(rec.cmd(), set);
         coarse_layout_.push(rec.cmd(), constants);
-        vkCmdDispatch(rec.cmd(), coarse.across, coarse.down, 1);
+        vkCmdDispatch(rec.cmd(), coarse.across, coarse.down, constants.counts.w);
       });
   return out;
 }

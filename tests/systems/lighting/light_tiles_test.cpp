@@ -308,10 +308,10 @@ TEST_F(LightTilesTest, TilesWhoseCoarseListFoundNoRoomTestEveryLight) {
   expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::workgroup_per_tile, 0, 1);
 }
 
-// More lights than the coarse pass keeps a bit for in shared memory (131,072): it tests them again
-// to write its lists, and lists the same.
+// More lights than the coarse pass keeps a bit for in shared memory in each of its two segments
+// (2 x 131,072): it tests them again to write its lists, and lists the same.
 TEST_F(LightTilesTest, MoreLightsThanTheCoarsePassKeepsBitsForAreListedAlike) {
-  expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::workgroup_per_tile, 131100);
+  expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::workgroup_per_tile, 262200);
 }
 
 // A crowd of point lights (300 unless a test asks for more) that reach everything on screen: how
