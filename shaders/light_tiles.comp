@@ -191,8 +191,8 @@ void main() {
   uint listed_coarse = 0u;
   every_light = false;
   for (uint segment = 0u; segment < LIGHT_COARSE_SEGMENTS; ++segment) {
-    coarse[segment] = segment < frame.counts.w ? coarse_ranges[first_coarse_range(gl_WorkGroupID.xy) + segment]
-                                               : uvec2(0u);
+    uint range = first_coarse_range(gl_WorkGroupID.xy) + segment;
+    coarse[segment] = segment < frame.counts.w ? coarse_ranges[range] : uvec2(0u);
     every_light = every_light || coarse[segment].y == EVERY_LIGHT;
     listed_coarse += coarse[segment].y;
   }

@@ -23,11 +23,11 @@ using namespace shadow_batch;
 
 // Rectangles of due tiles from this size on are copied into the atlas, the views of smaller ones
 // drawn: a copy pays for each rectangle (about 2 us on the H200, docs/PERFORMANCE.md), a draw
-// writing depth from its fragment shader pays more than a copy for each texel. H100, 1920x1080, the stress
-// hall, GPU frame, ms: 100,000 lights from afar (4,096 views of 16-64 texels a frame) 11.84 copying every
-// rectangle, 11.36 drawing every view, 11.39 at 16,384 texels; at eye height 25.05, 24.52 and 24.56; 1,024
-// lights at eye height (tiles of 64-512 texels, cube faces side by side) 6.36, 7.24 and 6.35; at
-// 65,536 texels 6.51 there (2026-12-05).
+// writing depth from its fragment shader pays more than a copy for each texel. H100, 1920x1080,
+// the stress hall, GPU frame, ms: 100,000 lights from afar (4,096 views of 16-64 texels a frame)
+// 11.84 copying every rectangle, 11.36 drawing every view, 11.39 from 16,384 texels; at eye height
+// 25.05, 24.52 and 24.56; 1,024 lights at eye height (tiles of 64-512 texels, cube faces side by
+// side) 6.36, 7.24 and 6.35, and 6.51 from 65,536 texels (2026-12-05).
 constexpr uint64_t copied_texels = 16384;
 
 }  // namespace
@@ -69,6 +69,13 @@ ComputeShadowRaster::ComputeShadowRaster(vk::VulkanContext& context, const GpuTe
   static_layers_.emplace(context);
 }
 
+void ComputeShadowRaster::make_cut_out_pipeline() {
+  if (!pipeline_ || cut_out_pipeline_) return;
+  cut_out_pipeline_ = vk::create_compute_pipeline(
+      context_, {shadow_raster_cut_out_comp, material_pass_constants(0, 0, textures_), layout_.get(),
+                 "shadow raster cut out"});
+}
+
 void ComputeShadowRaster::place_depths(std::span<const shadows::AtlasTile> tiles) {
   if (!placement_.place(tiles, copied_texels)) return;
   copies_.clear();
@@ -82,13 +89,6 @@ void ComputeShadowRaster::place_depths(std::span<const shadows::AtlasTile> tiles
     copy.imageExtent = {region.width, region.height, 1};
     copies_.push_back(copy);
   }
-}
-
-void ComputeShadowRaster::make_cut_out_pipeline() {
-  if (!pipeline_ || cut_out_pipeline_) return;
-  cut_out_pipeline_ = vk::create_compute_pipeline(
-      context_, {shadow_raster_cut_out_comp, material_pass_constants(0, 0, textures_), layout_.get(),
-                 "shadow raster cut out"});
 }
 
 void ComputeShadowRaster::add_raster(rg::RenderGraph& graph, const char* name, uint32_t list,

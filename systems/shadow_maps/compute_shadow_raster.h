@@ -55,7 +55,8 @@ class ComputeShadowRaster {
   // has such casters; later calls do nothing, as do calls without pipelines.
   void make_cut_out_pipeline();
 
-  // Where the views of `tiles` put their depths, for a frame it rasterizes.
+  // Where the views of `tiles` put their depths, for a frame it rasterizes; the places, copied
+  // rectangles and drawn views of the last call stand while the tiles are the same.
   void place_depths(std::span<const shadows::AtlasTile> tiles);
   // `views` views placed nowhere, for a frame the hardware rasterizes.
   void place_nowhere(size_t views) { placement_.place_nowhere(views); }
