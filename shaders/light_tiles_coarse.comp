@@ -43,6 +43,10 @@ const uint WHOLE_COARSE_TILE = 4u;
 shared uint tile_slices[TILES];  // each tile's depth slices with a surface (TileVolume.slices)
 shared uint coarse_first;
 
+// Whether this workgroup writes its tiles' volumes and depth slices: the first segment's does;
+// the others bound the same tiles only for the volumes around them.
+bool writes_tile_volumes() { return gl_WorkGroupID.z == 0u; }
+
 // Thread `local` (< TILES), once every block is bounded: its tile's depth bounds from the tile's
 // blocks, and the volume they bound, also written to tile_volumes.
 TileVolume bound_tile(uint local) {
@@ -62,7 +66,7 @@ TileVolume bound_tile(uint local) {
   uint tile = tile_xy.y * frame.screen.z + tile_xy.x;
   bound_by_transparent_surfaces(tile, nearest, farthest);
   if (!is_background_depth(nearest)) volume = visible_volume_of_tile(tile_xy, nearest, farthest);
-  if (gl_WorkGroupID.z == 0u) tile_volumes[tile] = volume;  // each segment's workgroup bounds the same
+  if (writes_tile_volumes()) tile_volumes[tile] = volume;
   return volume;
 }
 
@@ -133,7 +137,7 @@ void main() {
   // Each block marks its tile's depth slices that hold its pixels' surfaces.
   uvec2 in_coarse = gl_LocalInvocationID.xy / TILE_BLOCKS;
   uint tile_local = in_coarse.y * LIGHT_COARSE_SIDE + in_coarse.x;
-  if (volumes[tile_local].sphere.w >= 0.0) {
+  if (writes_tile_volumes() && volumes[tile_local].sphere.w >= 0.0) {
     uint slices = 0u;
     for (uint k = 0u; k < BLOCK * BLOCK; ++k) {
       slices |= depth_slice_of(volumes[tile_local], depths[k]);
@@ -144,7 +148,7 @@ void main() {
   if (local <= WHOLE_COARSE_TILE) around = volume_around_tiles(local);
   for (uint word = local; word < SCRATCH_WORDS; word += THREADS) scratch[word] = 0u;
   barrier();
-  if (gl_WorkGroupID.z == 0u && local < TILES && volumes[local].sphere.w >= 0.0) {
+  if (writes_tile_volumes() && local < TILES && volumes[local].sphere.w >= 0.0) {
     uvec2 tile_xy = gl_WorkGroupID.xy * LIGHT_COARSE_SIDE + uvec2(local % LIGHT_COARSE_SIDE, local / LIGHT_COARSE_SIDE);
     uint tile = tile_xy.y * frame.screen.z + tile_xy.x;
     tile_volumes[tile].slices.x = tile_slices[local] | depth_slices_of_transparent_surfaces(tile, volumes[local]);

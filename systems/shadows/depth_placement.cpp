@@ -13,6 +13,7 @@ bool same_page_and_size(const AtlasTile& a, const AtlasTile& b) {
   return a.page == b.page && a.size == b.size;
 }
 bool same_row(const AtlasTile& a, const AtlasTile& b) { return same_page_and_size(a, b) && a.y == b.y; }
+uint64_t texels_of(const DepthRegion& region) { return uint64_t{region.width} * region.height; }
 
 }  // namespace
 
@@ -87,14 +88,13 @@ bool DepthPlacement::place(std::span<const AtlasTile> tiles, uint64_t copied_tex
   copied_.clear();
   for (DepthRegion& region : regions_) {
     region.offset = texels_;
-    const uint64_t area = uint64_t{region.width} * region.height;
-    texels_ += area;
-    if (area >= copied_texels) copied_.push_back(region);
+    texels_ += texels_of(region);
+    if (texels_of(region) >= copied_texels) copied_.push_back(region);
   }
   view_drawn_.assign(tiles.size(), 0);
   for (const Run& run : runs_) {
     const DepthRegion& region = regions_[run.region];
-    const bool drawn = uint64_t{region.width} * region.height < copied_texels;
+    const bool drawn = texels_of(region) < copied_texels;
     for (size_t k = run.begin; k < run.end; ++k) {
       const AtlasTile& tile = tile_at(k);
       const uint64_t texel =

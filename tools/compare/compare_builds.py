@@ -88,14 +88,15 @@ def main():
     names = [name for name, _ in args.builds]
     if len(set(names)) != len(names):
         parser.error("each build needs a name of its own")
-    scenes = {"quick": QUICK} if args.quick else {}
-    for scene in [s for s in args.scenes.split(",") if s] if not args.quick else []:
-        if scene not in SCENES:
-            parser.error(f"--scenes takes {', '.join(SCENES)}; not {scene}")
-        scenes[scene] = SCENES[scene]
-    if not scenes or args.rounds < 1:
-        parser.error("at least one scene and one round")
-    rounds = 1 if args.quick else args.rounds
+    if args.quick:
+        scenes, rounds = {"quick": QUICK}, 1
+    else:
+        names_asked = [s for s in args.scenes.split(",") if s]
+        unknown = [s for s in names_asked if s not in SCENES]
+        if unknown or not names_asked or args.rounds < 1:
+            parser.error(f"--scenes takes {', '.join(SCENES)} (not {', '.join(unknown) or 'none'}); "
+                         "--rounds at least 1")
+        scenes, rounds = {s: SCENES[s] for s in names_asked}, args.rounds
     passes = [p.strip() for p in args.passes.split(",") if p.strip()]
     extra = shlex.split(args.args)
     os.makedirs(args.out, exist_ok=True)
