@@ -133,6 +133,11 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
     std::printf("shadowgraph: %llu (tile, light) pairs found no room in the light lists over the run\n",
                 static_cast<unsigned long long>(stats.dropped_light_pairs));
   }
+  stats.light_tiles_cut = renderer.light_tiles_cut();
+  if (stats.light_tiles_cut > 0) {
+    std::printf("shadowgraph: the CPU driver cut %llu tiles' light lists short over the run\n",
+                static_cast<unsigned long long>(stats.light_tiles_cut));
+  }
   stats.light_list_pairs = summarize(frame.light_list_pairs());
   stats.filtered_shadows = frame.renderer().filtered_lights();
   stats.contact_shadows_skipped = frame.renderer().contact_shadows_skipped();

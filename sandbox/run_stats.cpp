@@ -150,6 +150,7 @@ Json stats_json(const RunStats& stats) {
           {"validation_errors", stats.validation_errors ? Json(*stats.validation_errors) : Json()},
           {"shadow_map_bytes", stats.shadow_map_bytes},
           {"dropped_light_pairs", stats.dropped_light_pairs},
+          {"light_tiles_cut", stats.light_tiles_cut},
           {"light_list_pairs", summary_json(stats.light_list_pairs)},
           {"contact_shadows_skipped", stats.contact_shadows_skipped},
           {"filtered_shadows", stats.filtered_shadows},

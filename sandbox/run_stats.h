@@ -50,6 +50,9 @@
 //   "shadow_map_bytes": 0,                       // GPU memory holding shadow maps (the atlas image)
 //   "dropped_light_pairs": 0,                    // (tile, light) pairs the light lists' pool had
 //                                                // no room for over the run: lights missing there
+//   "light_tiles_cut": 0,                        // tiles whose lists a CPU driver's guard against
+//                                                // endless loops cut short over the run: lights
+//                                                // missing there
 //   "light_list_pairs": {"median": ..., "min": ..., "max": ...},  // per frame: the (tile, light)
 //                                                // pairs the opaque surfaces' light lists held,
 //                                                // which lighting's cost follows, from the
@@ -181,6 +184,7 @@ struct RunStats {
   std::optional<std::uint32_t> validation_errors;
   std::uint64_t shadow_map_bytes = 0;
   std::uint64_t dropped_light_pairs = 0;
+  std::uint64_t light_tiles_cut = 0;
   std::optional<TimeSummary> light_list_pairs;  // counts, summarized like times
   std::uint32_t contact_shadows_skipped = 0;
   std::uint32_t filtered_shadows = 0;

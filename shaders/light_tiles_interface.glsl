@@ -37,6 +37,7 @@ layout(std430, set = 0, binding = light_tiles_feedback_binding) buffer Feedback 
   uint dropped_pairs;   // (tile, light) pairs that reached a tile but found no room in the pool
   uint entries_wanted;  // the entries every tile's lights asked of the pool: what sizes it
   uint coarse_wanted;   // the same of the coarse tiles' pool (light_tiles_coarse.glsl)
+  uint tiles_cut;       // tiles whose lists a CPU driver's loop guard cut short (light_tiles_serial.comp)
   // Per combination of two groups or more (bit g for group g), the tiles whose groups with lights
   // it is (CPU drivers' shape only).
   uint tiles_by_groups[1u << LIGHT_GROUP_COUNT];
@@ -80,15 +81,6 @@ const uint NO_WORTH = 0x7F800001u;
 // there (0: every light that reaches it).
 bool listed_in_tile(uint i, TileVolume tile, uint least) {
   return light_reaches_tile(lights[i], tile) && (least == 0u || light_worth_bits(lights[i], tile.sphere) >= least);
-}
-
-// How many of lights [first, end) listed_in_tile lists at worth `least`.
-uint count_listed(uint first, uint end, TileVolume tile, uint least) {
-  uint count = 0u;
-  for (uint i = first; i < end; ++i) {
-    if (listed_in_tile(i, tile, least)) ++count;
-  }
-  return count;
 }
 
 #endif

@@ -12,6 +12,26 @@
 
 layout(local_size_x = 8) in;
 
+// llvmpipe ends every loop of a shader invocation once its loops have run 65,535 iterations in
+// all (a guard against endless loops), and an invocation here tests every light twice, each test
+// about two iterations (a CPU driver runs a loop's body at least once, masked: the spot test's
+// loop over depth slices runs in every test). From about 16,200 of the frame's lights on, a
+// tile's loops end before its last lights (lavapipe, Debian 12, 2026-12-05): its lists miss them,
+// and the tile counts in tiles_cut, which the CPU reports and --stats counts. Testing sixteen
+// lights an iteration, unrolled, ended them sooner (about 14,800).
+bool loops_ended_early = false;
+
+// How many of the frame's lights listed_in_tile lists at worth `least`.
+uint count_listed(TileVolume tile, uint least) {
+  uint count = 0u;
+  uint i = 0u;
+  for (; i < frame.counts.x; ++i) {
+    if (listed_in_tile(i, tile, least)) ++count;
+  }
+  loops_ended_early = loops_ended_early || i < frame.counts.x;
+  return count;
+}
+
 void main() {
   uint tile = gl_GlobalInvocationID.x;
   if (tile >= frame.screen.w) return;
@@ -53,18 +73,19 @@ void main() {
     }
     volume.slices.x = slices;
   }
-  uint reached = count_listed(0u, surfaces ? frame.counts.x : 0u, volume, 0u);
+  uint reached = surfaces ? count_listed(volume, 0u) : 0u;
   uint listed;
   uint first = take_entries(reached, listed);
   // Where the pool holds fewer than the tile's lights, it lists those worth the most there: the
   // least worth it keeps, found by halving (light_worth_bits), is the smallest that leaves at most
   // `listed` lights. A rare frame's work: the pool grows for the next ones.
   uint least = 0u;
+  uint above = 0u;
   if (listed < reached) {
-    uint above = NO_WORTH;
+    above = NO_WORTH;
     while (least < above) {
       uint middle = least + (above - least) / 2u;
-      if (count_listed(0u, frame.counts.x, volume, middle) <= listed) {
+      if (count_listed(volume, middle) <= listed) {
         above = middle;
       } else {
         least = middle + 1u;
@@ -72,7 +93,8 @@ void main() {
     }
   }
   uint count = 0u;
-  for (uint i = 0u; count < listed && i < frame.counts.x; ++i) {
+  uint i = 0u;
+  for (; count < listed && i < frame.counts.x; ++i) {
     if (!listed_in_tile(i, volume, least)) continue;
     tile_lights[first + count] = i;
     uint group = group_of(i);
@@ -80,6 +102,8 @@ void main() {
     ++group_count[group];
     ++count;
   }
+  loops_ended_early = loops_ended_early || least < above || (count < listed && i < frame.counts.x);
+  if (loops_ended_early) atomicAdd(tiles_cut, 1u);
   // Lights worth exactly the least kept may not all fit: those left out count as dropped too.
   if (count < listed) atomicAdd(dropped_pairs, listed - count);
   uint groups = 0u;

@@ -31,6 +31,7 @@ struct Feedback {
   uint32_t dropped_pairs = 0;
   uint32_t entries_wanted = 0;
   uint32_t coarse_wanted = 0;
+  uint32_t tiles_cut = 0;
   TilesByGroups tiles_by_groups{};
 };
 
@@ -191,6 +192,7 @@ uint64_t LightTilesPass::take_dropped_pairs(uint32_t slot) {
   pool_.asked(feedback.entries_wanted);
   coarse_pool_.asked(feedback.coarse_wanted);
   listed_pairs_ = feedback.entries_wanted;
+  tiles_cut_ = feedback.tiles_cut;
   tiles_by_groups_ = feedback.tiles_by_groups;
   return feedback.dropped_pairs;
 }

@@ -95,6 +95,9 @@ class LightTilesPass {
   // What the frame the last take_dropped_pairs read back asked of the pool: the (tile, light)
   // pairs its lists held, dropped ones included, which the lighting's cost follows.
   uint64_t listed_pairs() const { return listed_pairs_; }
+  // That frame's tiles whose lists a CPU driver's guard against endless loops cut short (an
+  // invocation per tile; shaders/light_tiles_serial.comp): lights of theirs are missing.
+  uint32_t tiles_cut() const { return tiles_cut_; }
   // That frame's tiles by their groups with lights, where it ran an invocation per tile (zeros
   // otherwise): what a frame's group sets are chosen from (TiledLightingPass).
   const TilesByGroups& tiles_by_groups() const { return tiles_by_groups_; }
@@ -117,6 +120,7 @@ class LightTilesPass {
   LightListPool pool_;
   LightListPool coarse_pool_;  // of the coarse tiles' lists (workgroup_per_tile)
   uint64_t listed_pairs_ = 0;
+  uint32_t tiles_cut_ = 0;
   TilesByGroups tiles_by_groups_{};
   vk::UniqueSampler nearest_;
   vk::PipelineLayout layout_;

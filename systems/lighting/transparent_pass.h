@@ -60,6 +60,8 @@ class TransparentPass {
 
   // LightTilesPass::take_dropped_pairs of the transparent surfaces' light tiles.
   uint64_t take_dropped_pairs(uint32_t slot) { return light_tiles_.take_dropped_pairs(slot); }
+  // LightTilesPass::tiles_cut of the same.
+  uint32_t tiles_cut() const { return light_tiles_.tiles_cut(); }
 
   // Blends the transparent surfaces of `scene` (as ordered for this frame) over `target`, as
   // prepared, tone-mapping them first where `constants.counts.w` is 1; returns its new version.

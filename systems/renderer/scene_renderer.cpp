@@ -204,6 +204,14 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
     frames_since_drop_message_ = 0;
   }
   ++frames_since_drop_message_;
+  if (light_tiles_cut_ > 0 && !told_of_cut_tiles_) {
+    std::printf(
+        "shadowgraph: the CPU driver ended the light culling's loops early (llvmpipe ends a shader "
+        "invocation's loops after 65,535 iterations in all): some tiles' lists miss lights of the %zu; fewer "
+        "lights, or a GPU, list them all (--stats' light_tiles_cut counts the tiles)\n",
+        light_count);
+    told_of_cut_tiles_ = true;
+  }
   switch (lighting_) {
     case LightingPath::every_light:
       every_light_->prepare(slot, gpu_scene_, records, atlas_, settings_.view);
@@ -332,8 +340,11 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
 }
 
 uint64_t SceneRenderer::take_dropped_light_pairs(uint32_t slot) {
-  return (deferred_ ? deferred_->light_tiles.take_dropped_pairs(slot) : 0) +
-         (transparent_ ? transparent_->take_dropped_pairs(slot) : 0);
+  const uint64_t dropped = (deferred_ ? deferred_->light_tiles.take_dropped_pairs(slot) : 0) +
+                           (transparent_ ? transparent_->take_dropped_pairs(slot) : 0);
+  light_tiles_cut_ +=
+      (deferred_ ? deferred_->light_tiles.tiles_cut() : 0) + (transparent_ ? transparent_->tiles_cut() : 0);
+  return dropped;
 }
 
 std::optional<uint64_t> SceneRenderer::light_list_pairs() const {

@@ -79,6 +79,9 @@ class SceneRenderer {
   // The (tile, light) pairs the light lists' pool had no room for in the frame read back in the
   // last prepare (frames in flight ago): lights missing from some tiles' lighting.
   uint64_t dropped_light_pairs() const { return dropped_light_pairs_; }
+  // Over the frames read back so far, the tiles whose lists a CPU driver's guard against endless
+  // loops cut short (LightTilesPass::tiles_cut): lights are missing from them.
+  uint64_t light_tiles_cut() const { return light_tiles_cut_; }
   // The last prepared frame's lights whose contact shadows were not drawn: all of them on a path
   // other than deferred, the only one that reads the depth buffer they march through.
   uint32_t contact_shadows_skipped() const { return contact_shadows_skipped_; }
@@ -210,6 +213,8 @@ class SceneRenderer {
   std::size_t max_light_records_;  // what the device's texel buffers hold (maxTexelBufferElements)
   shadows::FrameLights lights_;
   uint64_t dropped_light_pairs_ = 0;
+  uint64_t light_tiles_cut_ = 0;
+  bool told_of_cut_tiles_ = false;
   uint64_t frames_since_drop_message_ = 300;  // a message at most every 300 frames
   uint32_t contact_shadows_skipped_ = 0;
   bool contact_shadows_message_given_ = false;  // once a run

@@ -98,6 +98,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.validation_errors = 4;
   stats.shadow_map_bytes = 67'108'864;
   stats.dropped_light_pairs = 12;
+  stats.light_tiles_cut = 3;
   stats.light_list_pairs = TimeSummary{5000.0, 4000.0, 6000.0};
   stats.filtered_shadows = 8;
   stats.contact_shadows_skipped = 3;
@@ -146,7 +147,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 26u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 27u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("schema_version"), stats_schema_version);
   EXPECT_EQ(json.at("generator"), "Shadowgraph " SHADOWGRAPH_VERSION);
   EXPECT_EQ(json.at("device"), stats.device);
@@ -200,6 +201,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(json.at("validation_errors"), 4);
   EXPECT_EQ(json.at("shadow_map_bytes"), 67'108'864);
   EXPECT_EQ(json.at("dropped_light_pairs"), 12);
+  EXPECT_EQ(json.at("light_tiles_cut"), 3);
   EXPECT_EQ(json.at("contact_shadows_skipped"), 3);
   EXPECT_EQ(json.at("filtered_shadows"), 8);
   expect_summary(json.at("light_list_pairs"), *stats.light_list_pairs);

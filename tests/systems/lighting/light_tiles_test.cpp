@@ -281,6 +281,7 @@ class LightTilesTest : public GpuTest {
     std::vector<glm::uvec4> commands;
     uint64_t dropped = 0;  // LightTilesPass::take_dropped_pairs
     uint64_t asked = 0;    // LightTilesPass::listed_pairs
+    uint32_t cut = 0;      // LightTilesPass::tiles_cut
   };
   // Cullings of `lights` against `depth` on the device, `frames` one after another by one pass
   // whose pools hold at most `most_pool_entries` and `most_coarse_entries` (0: the device's
@@ -325,7 +326,9 @@ class CrowdTest : public LightTilesTest {
     for (int i = 0; i < size; ++i) {
       scene::PointLight point;
       point.range = 100.0f;
-      scene::add_light(scene, point, {{0.0f, 0.0f, -10.0f - 0.01f * i}}, scene::ShadowSettings{}, "crowd");
+      // Within 20 units of the first, however many: every light reaches what the camera sees.
+      scene::add_light(scene, point, {{0.0f, 0.0f, -10.0f - 0.01f * float(i % 2000)}},
+                       scene::ShadowSettings{}, "crowd");
     }
     ecs::update_world_transforms(scene.world, 0);
     shadows::FrameLights gathered;
@@ -365,7 +368,10 @@ class CrowdTest : public LightTilesTest {
     ASSERT_GT(tiles_with_surfaces, 0u);
     for (const LightCullingShape shape :
          {LightCullingShape::workgroup_per_tile, LightCullingShape::thread_per_tile}) {
+      SCOPED_TRACE(shape == LightCullingShape::thread_per_tile ? "an invocation per tile"
+                                                               : "a workgroup per tile");
       const Culled culled = cull(lights, shape, depth, view_projection).front();
+      EXPECT_EQ(culled.cut, 0u);
       EXPECT_EQ(culled.dropped, 0u);
       EXPECT_EQ(culled.asked, tiles_with_surfaces * size);
       uint64_t full_tiles = 0;
@@ -393,6 +399,22 @@ TEST_F(CrowdTest, EveryLightThatReachesATileIsListed) { expect_every_tile_lists_
 TEST_F(CrowdTest, ListsLongerThanAWorkgroupHoldsAreListedWhole) {
   gather_crowd(2100);
   expect_every_tile_lists_the_crowd();
+}
+
+// llvmpipe ends a shader invocation's loops once they have run 65,535 iterations in all (a guard
+// against endless loops), and an invocation per tile tests each light twice, each test about two
+// iterations (shaders/light_tiles_serial.comp): 15,000 lights in every tile are listed whole and
+// in order all the same, and no tile counts as cut short. About 16,200 are (lavapipe, Debian 12).
+TEST_F(CrowdTest, FifteenThousandLightsStayWithinACpuDriversLoopGuard) {
+  gather_crowd(15000);
+  expect_every_tile_lists_the_crowd();
+}
+
+// Beyond that, the tiles whose loops the guard ended are counted: their lists miss lights.
+TEST_F(CrowdTest, TilesACpuDriversLoopGuardCutShortAreCounted) {
+  gather_crowd(20000);
+  const Culled culled = cull(lights, LightCullingShape::thread_per_tile, depth, view_projection).front();
+  EXPECT_EQ(culled.cut, tiles_with_surfaces);
 }
 
 // A pool at the device's limit, smaller than the lists: every frame lists what fits and counts
@@ -506,7 +528,7 @@ std::vector<LightTilesTest::Culled> LightTilesTest::cull(const SortedLights& lig
     const uint64_t dropped = pass.take_dropped_pairs(frame.slot);
     culled.push_back({contents<uint32_t>(tile_lights), contents<glm::uvec2>(tile_ranges),
                       contents<uint32_t>(group_tiles), contents<glm::uvec4>(group_commands), dropped,
-                      pass.listed_pairs()});
+                      pass.listed_pairs(), pass.tiles_cut()});
   }
   return culled;
 }
