@@ -195,7 +195,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   }
   // What the frame that last used this slot could not list, now that its fence has passed, and
   // how its tiles' light groups fell (TiledLightingPass's group sets).
-  dropped_light_pairs_ = take_dropped_light_pairs(slot);
+  dropped_light_pairs_ = read_light_tiles_feedback(slot);
   if (dropped_light_pairs_ > 0 && frames_since_drop_message_ >= 300) {
     std::printf(
         "shadowgraph: %llu (tile, light) pairs found no room in the light lists' pool, which grows for the "
@@ -339,7 +339,7 @@ RenderedFrame SceneRenderer::add_passes(rg::RenderGraph& graph, vk::GraphImports
   return {tone_map_.add_to(graph, lit_sum, frame, settings_.exposure), depth, atlas, light_tiles};
 }
 
-uint64_t SceneRenderer::take_dropped_light_pairs(uint32_t slot) {
+uint64_t SceneRenderer::read_light_tiles_feedback(uint32_t slot) {
   const uint64_t dropped = (deferred_ ? deferred_->light_tiles.take_dropped_pairs(slot) : 0) +
                            (transparent_ ? transparent_->take_dropped_pairs(slot) : 0);
   light_tiles_cut_ +=
@@ -354,7 +354,7 @@ std::optional<uint64_t> SceneRenderer::light_list_pairs() const {
 
 uint64_t SceneRenderer::drain_dropped_light_pairs() {
   uint64_t dropped = 0;
-  for (uint32_t slot = 0; slot < frames_in_flight_; ++slot) dropped += take_dropped_light_pairs(slot);
+  for (uint32_t slot = 0; slot < frames_in_flight_; ++slot) dropped += read_light_tiles_feedback(slot);
   return dropped;
 }
 

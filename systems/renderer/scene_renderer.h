@@ -207,7 +207,9 @@ class SceneRenderer {
   std::optional<TransparentPass> transparent_;  // made with the first transparent surface
   // The format of the image the path lights into: its lit sum, or the frame (fused).
   rg::Format lit_format() const;
-  uint64_t take_dropped_light_pairs(uint32_t slot);
+  // What the light culling of the frame that last used `slot` reported, read back (both light
+  // tiles' passes): returns its dropped (tile, light) pairs and adds its cut tiles to light_tiles_cut_.
+  uint64_t read_light_tiles_feedback(uint32_t slot);
   ToneMapPass tone_map_;
   vk::FrameBuffers light_records_;
   std::size_t max_light_records_;  // what the device's texel buffers hold (maxTexelBufferElements)
