@@ -44,7 +44,7 @@ void main() {
     if (group_filters(group)) filtering += tile_ranges[tile * LIGHT_GROUP_COUNT + group].y;
   }
   if (filtering <= FILTERED_LIGHTS) return;
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 pixel = ivec2(gl_WorkGroupID.xy * LIGHT_TILE_SIZE + pixel_in_tile());
   SurfacePoint p;
   vec3 position;
   // Every invocation takes part in the batches' barriers, a surface under it or not.

@@ -53,7 +53,7 @@ void main() {
   uint tile = group_tiles[LIGHT_GROUP * frame.screen.w + gl_WorkGroupID.x];
   if (tile == NO_TILE) return;
   uvec2 tile_xy = uvec2(tile % frame.screen.z, tile / frame.screen.z);
-  ivec2 pixel = ivec2(tile_xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy);
+  ivec2 pixel = ivec2(tile_xy * LIGHT_TILE_SIZE + pixel_in_tile());
   SurfacePoint p;
   vec3 position;
   bool surface = pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y) &&

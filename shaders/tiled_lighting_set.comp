@@ -51,7 +51,7 @@ void main() {
   // Group sets' tile lists follow the groups' (light_tile_lists.glsl).
   uint tile = group_tiles[(LIGHT_GROUP_COUNT + frame.set.x) * frame.screen.w + gl_WorkGroupID.x];
   uvec2 tile_xy = uvec2(tile % frame.screen.z, tile / frame.screen.z);
-  ivec2 pixel = ivec2(tile_xy * LIGHT_TILE_SIZE + gl_LocalInvocationID.xy);
+  ivec2 pixel = ivec2(tile_xy * LIGHT_TILE_SIZE + pixel_in_tile());
   SurfacePoint p;
   vec3 position;
   if (pixel.x >= int(frame.screen.x) || pixel.y >= int(frame.screen.y) || !deferred_surface(pixel, p, position)) {
