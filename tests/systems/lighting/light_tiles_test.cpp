@@ -43,14 +43,14 @@ SortedLights sorted_by_group(shadows::FrameLights& lights) {
 // Lights of every type and several groups scattered in front of a camera at the origin looking
 // down -Z, spots aimed at the floor, and `behind` unshadowed point lights behind the camera, which
 // reach nothing it sees; sorted by group as the renderer uploads them.
-SortedLights scattered_lights(uint32_t behind = 0) {
+SortedLights scattered_lights(uint32_t behind = 0, int count = 60) {
   scene::Scene scene;
   uint32_t seed = 12345;
   const auto random = [&seed] {
     seed = seed * 1664525u + 1013904223u;
     return float(seed >> 8) / float(1u << 24);
   };
-  for (int i = 0; i < 60; ++i) {
+  for (int i = 0; i < count; ++i) {
     const glm::vec3 position(random() * 30.0f - 15.0f, random() * 8.0f - 3.0f, -2.0f - random() * 26.0f);
     const glm::vec3 target(position.x + random() * 6.0f - 3.0f, -4.0f, position.z + random() * 6.0f - 3.0f);
     scene::ShadowSettings shadow;
@@ -301,6 +301,38 @@ TEST_F(LightTilesTest, ListsMatchABruteForceCpuAssignment) {
 
 TEST_F(LightTilesTest, ListsOfAnInvocationPerTileMatchABruteForceCpuAssignment) {
   expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::thread_per_tile);
+}
+
+// A frame of fewer lights than the culling finds depth slices for (light_tiles_serial.comp) is
+// listed as if every depth slice of a tile held a surface: an invocation per tile lists at least
+// what a workgroup per tile lists with the slices, which ListsMatchABruteForceCpuAssignment holds
+// to the CPU reference.
+TEST_F(LightTilesTest, AnInvocationPerTileListsAFewLightsWhereverTheSlicedCullingDoes) {
+  const SortedLights lights = scattered_lights(0, 7);  // three spots, four point lights and the sun
+  ASSERT_LT(lights.sorted.size(), 9u);
+  const glm::mat4 view_projection = origin_view_projection();
+  const std::vector<float> depth = scene_depth(view_projection, true);
+  const Culled sliced = cull(lights, LightCullingShape::workgroup_per_tile, depth, view_projection).front();
+  const Culled few = cull(lights, LightCullingShape::thread_per_tile, depth, view_projection).front();
+  const auto listed = [](const Culled& culled, uint32_t tile) {
+    std::vector<uint32_t> lights;
+    for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+      const glm::uvec2 range = culled.ranges[tile * shadows::light_group_count + group];
+      lights.insert(lights.end(), culled.entries.begin() + range.x,
+                    culled.entries.begin() + range.x + range.y);
+    }
+    std::sort(lights.begin(), lights.end());
+    return lights;
+  };
+  size_t pairs = 0;
+  for (uint32_t tile = 0; tile < LightTileGrid::of(width, height).count(); ++tile) {
+    const std::vector<uint32_t> with_slices = listed(sliced, tile);
+    const std::vector<uint32_t> without = listed(few, tile);
+    EXPECT_TRUE(std::includes(without.begin(), without.end(), with_slices.begin(), with_slices.end()))
+        << "tile " << tile;
+    pairs += with_slices.size();
+  }
+  EXPECT_GT(pairs, 100u) << "the lights reach many tiles";
 }
 
 // A coarse pool with no room for any coarse tile's list: each tile tests every light instead, and
