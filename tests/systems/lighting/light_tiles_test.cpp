@@ -40,9 +40,9 @@ SortedLights sorted_by_group(shadows::FrameLights& lights) {
   return out;
 }
 
-// Lights of every type and several groups scattered in front of a camera at the origin looking
-// down -Z, spots aimed at the floor, and `behind` unshadowed point lights behind the camera, which
-// reach nothing it sees; sorted by group as the renderer uploads them.
+// `count` lights of every type and several groups scattered in front of a camera at the origin
+// looking down -Z, spots aimed at the floor, the sun, and `behind` unshadowed point lights behind
+// the camera, which reach nothing it sees; sorted by group as the renderer uploads them.
 SortedLights scattered_lights(uint32_t behind = 0, int count = 60) {
   scene::Scene scene;
   uint32_t seed = 12345;
@@ -292,6 +292,18 @@ class LightTilesTest : public GpuTest {
                            uint64_t most_coarse_entries = 0);
   void expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape shape, uint32_t behind = 0,
                                                        uint64_t most_coarse_entries = 0);
+  // Each of the first `tiles` tiles' lists, its groups' one after another.
+  static std::vector<std::vector<uint32_t>> listed_per_tile(const Culled& culled, uint32_t tiles) {
+    std::vector<std::vector<uint32_t>> listed(tiles);
+    for (uint32_t tile = 0; tile < tiles; ++tile) {
+      for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
+        const glm::uvec2 range = culled.ranges[tile * shadows::light_group_count + group];
+        listed[tile].insert(listed[tile].end(), culled.entries.begin() + range.x,
+                            culled.entries.begin() + range.x + range.y);
+      }
+    }
+    return listed;
+  }
 };
 
 // Both shapes of the culling, whatever the device would pick.
@@ -314,23 +326,17 @@ TEST_F(LightTilesTest, AnInvocationPerTileListsAFewLightsWhereverTheSlicedCullin
   const std::vector<float> depth = scene_depth(view_projection, true);
   const Culled sliced = cull(lights, LightCullingShape::workgroup_per_tile, depth, view_projection).front();
   const Culled few = cull(lights, LightCullingShape::thread_per_tile, depth, view_projection).front();
-  const auto listed = [](const Culled& culled, uint32_t tile) {
-    std::vector<uint32_t> lights;
-    for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
-      const glm::uvec2 range = culled.ranges[tile * shadows::light_group_count + group];
-      lights.insert(lights.end(), culled.entries.begin() + range.x,
-                    culled.entries.begin() + range.x + range.y);
-    }
-    std::sort(lights.begin(), lights.end());
-    return lights;
-  };
+  const uint32_t tiles = LightTileGrid::of(width, height).count();
+  std::vector<std::vector<uint32_t>> with_slices = listed_per_tile(sliced, tiles);
+  std::vector<std::vector<uint32_t>> without = listed_per_tile(few, tiles);
   size_t pairs = 0;
-  for (uint32_t tile = 0; tile < LightTileGrid::of(width, height).count(); ++tile) {
-    const std::vector<uint32_t> with_slices = listed(sliced, tile);
-    const std::vector<uint32_t> without = listed(few, tile);
-    EXPECT_TRUE(std::includes(without.begin(), without.end(), with_slices.begin(), with_slices.end()))
+  for (uint32_t tile = 0; tile < tiles; ++tile) {
+    std::sort(with_slices[tile].begin(), with_slices[tile].end());
+    std::sort(without[tile].begin(), without[tile].end());
+    EXPECT_TRUE(std::includes(without[tile].begin(), without[tile].end(), with_slices[tile].begin(),
+                              with_slices[tile].end()))
         << "tile " << tile;
-    pairs += with_slices.size();
+    pairs += with_slices[tile].size();
   }
   EXPECT_GT(pairs, 100u) << "the lights reach many tiles";
 }
@@ -382,18 +388,6 @@ class CrowdTest : public LightTilesTest {
     }
   }
 
-  std::vector<std::vector<uint32_t>> listed_per_tile(const Culled& culled) const {
-    std::vector<std::vector<uint32_t>> listed(grid.count());
-    for (uint32_t tile = 0; tile < grid.count(); ++tile) {
-      for (uint32_t group = 0; group < shadows::light_group_count; ++group) {
-        const glm::uvec2 range = culled.ranges[tile * shadows::light_group_count + group];
-        listed[tile].insert(listed[tile].end(), culled.entries.begin() + range.x,
-                            culled.entries.begin() + range.x + range.y);
-      }
-    }
-    return listed;
-  }
-
   // No limit per tile: every tile lists the whole crowd, in order, in both shapes of the culling.
   void expect_every_tile_lists_the_crowd() {
     const uint32_t size = uint32_t(lights.sorted.size());
@@ -407,7 +401,7 @@ class CrowdTest : public LightTilesTest {
       EXPECT_EQ(culled.dropped, 0u);
       EXPECT_EQ(culled.asked, tiles_with_surfaces * size);
       uint64_t full_tiles = 0;
-      for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
+      for (const std::vector<uint32_t>& tile : listed_per_tile(culled, grid.count())) {
         if (tile.empty()) continue;
         ASSERT_EQ(tile.size(), size);
         for (uint32_t j = 0; j < tile.size(); ++j) ASSERT_EQ(tile[j], j);
@@ -462,7 +456,7 @@ TEST_F(CrowdTest, APoolAtItsLimitListsWhatFitsAndCountsTheRest) {
       EXPECT_EQ(culled.dropped, wanted - limit);
       EXPECT_EQ(culled.asked, wanted) << "what the lists asked for, the dropped pairs included";
       uint64_t listed = 0;
-      for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
+      for (const std::vector<uint32_t>& tile : listed_per_tile(culled, grid.count())) {
         EXPECT_TRUE(std::is_sorted(tile.begin(), tile.end()));
         EXPECT_EQ(std::adjacent_find(tile.begin(), tile.end()), tile.end()) << "each light once";
         listed += tile.size();
@@ -486,7 +480,7 @@ TEST_F(CrowdTest, APoolAtItsLimitLeavesOutTheLightsWorthLeast) {
       const Culled culled = cull(lights, shape, depth, view_projection, 1, limit).front();
       EXPECT_EQ(culled.dropped, wanted - limit);
       uint64_t listed = 0;
-      for (const std::vector<uint32_t>& tile : listed_per_tile(culled)) {
+      for (const std::vector<uint32_t>& tile : listed_per_tile(culled, grid.count())) {
         const uint32_t first_kept = rising ? 300 - uint32_t(tile.size()) : 0;
         for (uint32_t j = 0; j < tile.size(); ++j) {
           ASSERT_EQ(tile[j], first_kept + j)
