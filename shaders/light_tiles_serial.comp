@@ -42,13 +42,6 @@ vec4 tile_depths(ivec2 origin, int x, int y, vec2 texel) {
   return textureGather(scene_depth, vec2(origin + ivec2(x + 1, y + 1)) * texel, 0);  // the block's inner corner
 }
 
-// With few lights the depth slices drop next to no (tile, light) pairs, and finding a tile's
-// slices takes a second walk over its depths: a frame of fewer lights than this lists them with
-// every slice of the tile counted as holding a surface (lavapipe, 1280x720, 2026-12-06: the pass
-// took 1.33-1.43 ms against 1.82-2.04 on spot-columns, the same 1,824 pairs; 1.81-2.32 against
-// 2.34-3.16 on default, 8,023 pairs against 8,020; pictures bit-identical).
-const uint FEWEST_LIGHTS_SLICED = 9u;
-
 void main() {
   uint tile = gl_GlobalInvocationID.x;
   if (tile >= frame.screen.w) return;
@@ -82,8 +75,8 @@ void main() {
   if (surfaces) {
     volume = visible_volume_of_tile(tile_xy, nearest, farthest);
     uint slices = depth_slices_of_transparent_surfaces(tile, volume);
-    // A loop of no rows where the slices are not found: a CPU driver runs the body of an `if` not
-    // taken, masked, and a loop's body only once.
+    // Frames of few lights find no slices (FEWEST_LIGHTS_SLICED), by a loop of no rows: a CPU
+    // driver runs the body of an `if` not taken, masked, and a loop's body only once.
     bool sliced = frame.counts.x >= FEWEST_LIGHTS_SLICED;
     for (int y = 0; y < (sliced ? int(LIGHT_TILE_SIZE) : 0); y += 2) {
       for (int x = 0; x < int(LIGHT_TILE_SIZE); x += 2) {

@@ -315,24 +315,23 @@ TEST_F(LightTilesTest, ListsOfAnInvocationPerTileMatchABruteForceCpuAssignment) 
   expect_lists_match_a_brute_force_cpu_assignment(LightCullingShape::thread_per_tile);
 }
 
-// A frame of fewer lights than the culling finds depth slices for (light_tiles_serial.comp) is
+// A frame of fewer lights than the culling finds depth slices for (FEWEST_LIGHTS_SLICED) is
 // listed as if every depth slice of a tile held a surface: an invocation per tile lists at least
 // what a workgroup per tile lists with the slices, which ListsMatchABruteForceCpuAssignment holds
-// to the CPU reference.
+// to the CPU reference. Both list a tile's lights in order.
 TEST_F(LightTilesTest, AnInvocationPerTileListsAFewLightsWhereverTheSlicedCullingDoes) {
-  const SortedLights lights = scattered_lights(0, 7);  // three spots, four point lights and the sun
-  ASSERT_LT(lights.sorted.size(), 9u);
+  // Spots, point lights and the sun.
+  const SortedLights lights = scattered_lights(0, int(tiles::FEWEST_LIGHTS_SLICED) - 2);
+  ASSERT_LT(lights.sorted.size(), tiles::FEWEST_LIGHTS_SLICED);
   const glm::mat4 view_projection = origin_view_projection();
   const std::vector<float> depth = scene_depth(view_projection, true);
   const Culled sliced = cull(lights, LightCullingShape::workgroup_per_tile, depth, view_projection).front();
   const Culled few = cull(lights, LightCullingShape::thread_per_tile, depth, view_projection).front();
   const uint32_t tiles = LightTileGrid::of(width, height).count();
-  std::vector<std::vector<uint32_t>> with_slices = listed_per_tile(sliced, tiles);
-  std::vector<std::vector<uint32_t>> without = listed_per_tile(few, tiles);
+  const std::vector<std::vector<uint32_t>> with_slices = listed_per_tile(sliced, tiles);
+  const std::vector<std::vector<uint32_t>> without = listed_per_tile(few, tiles);
   size_t pairs = 0;
   for (uint32_t tile = 0; tile < tiles; ++tile) {
-    std::sort(with_slices[tile].begin(), with_slices[tile].end());
-    std::sort(without[tile].begin(), without[tile].end());
     EXPECT_TRUE(std::includes(without[tile].begin(), without[tile].end(), with_slices[tile].begin(),
                               with_slices[tile].end()))
         << "tile " << tile;
