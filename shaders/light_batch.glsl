@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
-// A tile's lights in shared memory, a batch at a time, holding what shadow_weight and an
-// unshadowed light's shading read of each (light_shading.glsl): every pixel of a tile reads every
-// light of the tile, and loaded once for the tile the records cost less than once a pixel, through
-// the texture units or a warp's storage loads (docs/PERFORMANCE.md: the filter floor, and the
-// unshadowed lights' pass). The including shader defines LIGHT_BATCH, the lights a batch holds,
-// before including this.
+// A tile's lights in shared memory, a batch at a time, holding what an unshadowed light's shading
+// reads of each (light_shading.glsl): every pixel of a tile reads every light of the tile, and
+// loaded once for the tile the records cost less than once a pixel, through the texture units or
+// a warp's storage loads (docs/PERFORMANCE.md: the unshadowed lights' pass). The including shader
+// defines LIGHT_BATCH, the lights a batch holds, before including this.
 #ifndef SG_LIGHT_BATCH_GLSL
 #define SG_LIGHT_BATCH_GLSL
 

@@ -8,7 +8,8 @@
 #define SG_LIGHT_FORMULAS_GLSL
 
 // Rec. 709 luminance of a linear color: how bright a light or a sum of lights reads.
-float luminance(vec3 color) { return dot(color, vec3(0.2126f, 0.7152f, 0.0722f)); }
+const vec3 LUMINANCE_WEIGHTS = vec3(0.2126f, 0.7152f, 0.0722f);
+float luminance(vec3 color) { return dot(color, LUMINANCE_WEIGHTS); }
 
 // Distance falloff, linear window (section 2): A = max(1 - d / R, 0).
 float falloff_linear_window(float distance, float range) {

@@ -22,13 +22,65 @@ layout(set = 0, binding = hdr_binding, rgba16f) uniform image2D hdr;
 // at least that heavy filters).
 const float MOST_FLOOR = 65000.0;
 
-// The tile's filtering lights, a batch at a time (light_batch.glsl): fetched by each pixel the
-// records cost the texture units more than loading them once for the tile (H200, 1920x1080,
-// 2026-12-02: lighting 10.33 -> 9.42 ms with 16,384 lights over 20k triangles, 5.56 -> 5.38 with
-// 1,024 on a sixteenth of the stress hall; docs/PERFORMANCE.md). Tiles with few lights skip the
-// pass, barriers and all.
+// The tile's filtering lights, a batch at a time: fetched by each pixel the records cost the
+// texture units more than loading them once for the tile (H200, 1920x1080, 2026-12-02: lighting
+// 10.33 -> 9.42 ms with 16,384 lights over 20k triangles, 5.56 -> 5.38 with 1,024 on a sixteenth
+// of the stress hall; docs/PERFORMANCE.md). A batch holds what a light's bound reads
+// (floor_bound), its constants worked out once for the tile, and the record's index for the
+// exact weight. Tiles with few lights skip the pass, barriers and all.
 const uint LIGHT_BATCH = 256u;  // one light an invocation
-#include "light_batch.glsl"
+shared vec4 batch_position_inverse_range[LIGHT_BATCH];  // xyz position; w 1 / range
+shared vec4 batch_direction_outer[LIGHT_BATCH];         // xyz spot direction; w cos(outer)
+shared vec4 batch_radiance[LIGHT_BATCH];                // rgb color * intensity; w its luminance
+shared vec4 batch_terms[LIGHT_BATCH];  // x 1 / (cos(inner) - cos(outer)); y density * luminance(shadow color);
+                                       // z type | falloff << 8; w the record's index
+
+void keep_in_batch(uint slot, uint index) {
+  Light light = light_at(index);
+  vec3 radiance = light.color_intensity.rgb * light.color_intensity.a;
+  batch_position_inverse_range[slot] = vec4(light.position_range.xyz, 1.0 / light.position_range.w);
+  batch_direction_outer[slot] = vec4(light.direction_type.xyz, light.shape.y);
+  batch_radiance[slot] = vec4(radiance, luminance(radiance));
+  batch_terms[slot] = vec4(1.0 / max(light.shape.x - light.shape.y, 1e-6),
+                           light.shadow_color_density.a * luminance(light.shadow_color_density.rgb),
+                           uintBitsToFloat(light_type(light, LIGHT_TYPES) | light_falloff(light) << 8u),
+                           uintBitsToFloat(index));
+}
+
+// At least batch light `j`'s shadow_weight at the surface point, `lit_color` the base color
+// weighted for luminance: shadow_weight_bound with the light's constants worked out per tile and
+// reciprocals for its divisions, a part in 1,000 over for the rounding that differs. Most lights
+// a pixel ranks fall below its heaviest few by this alone, and so the pass's time is this
+// function's (H100, 1920x1080, 100,000 lights: the pass took 1.39 ms against 1.78 with
+// light_incidence and shadow_weight_bound from the record from afar, 3.10 against 4.28 at eye
+// height, 2026-12-06). Point and spot lights only, what frames of many lights are made of; for
+// the other types a bound that passes, so that their exact weight is worked out.
+float floor_bound(uint j, SurfacePoint p, vec3 lit_color, vec3 position) {
+  vec4 terms = batch_terms[j];
+  uint bits = floatBitsToUint(terms.z);
+  uint type = bits & 0xFFu;
+  if (type != LIGHT_POINT && type != LIGHT_SPOT) return 1e30;
+  vec4 position_inverse_range = batch_position_inverse_range[j];
+  vec3 offset = position_inverse_range.xyz - position;
+  float distance2 = dot(offset, offset);
+  float inverse_distance = inversesqrt(max(distance2, 1e-12));
+  vec3 to_light = offset * inverse_distance;
+  float ratio2 = distance2 * position_inverse_range.w * position_inverse_range.w;
+  float window = clamp(1.0 - ratio2 * ratio2, 0.0, 1.0);
+  bool gltf = (bits >> 8u) == FALLOFF_GLTF_PUNCTUAL;
+  float fade = gltf ? window * window : max(1.0 - distance2 * inverse_distance * position_inverse_range.w, 0.0);
+  float reach = gltf ? fade / max(distance2, 1e-4) : fade;
+  if (type == LIGHT_SPOT) {
+    vec4 direction_outer = batch_direction_outer[j];
+    float cone = clamp((dot(direction_outer.xyz, -to_light) - direction_outer.w) * terms.x, 0.0, 1.0);
+    reach *= cone;
+    fade *= cone;
+  }
+  vec4 radiance = batch_radiance[j];
+  float n_dot_l = dot(p.normal, to_light);
+  float lit = n_dot_l > 0.0 ? reach * (n_dot_l * dot(lit_color, radiance.rgb) + p.specular * radiance.w) : 0.0;
+  return 1.001 * (lit + fade * terms.y);
+}
 
 // Whether `group`'s lights run a filter kernel (pcf, noise, pcss, pcss_noise).
 bool group_filters(uint group) {
@@ -51,6 +103,9 @@ void main() {
   bool surface = pixel.x < int(frame.screen.x) && pixel.y < int(frame.screen.y) &&
                  deferred_surface(pixel, p, position);
 
+  // The base color weighted for luminance, so that luminance(base_color * radiance) is
+  // dot(lit_color, radiance).
+  vec3 lit_color = surface ? p.base_color * LUMINANCE_WEIGHTS : vec3(0.0);
   // The heaviest weights so far, heaviest first: each weight is carried down the list, the larger
   // of each pair staying (unrolled, the list lives in registers).
   float heaviest[MOST_FILTERED_LIGHTS];
@@ -60,13 +115,15 @@ void main() {
     uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + group];
     for (uint first = 0u; first < range.y; first += LIGHT_BATCH) {
       uint count = min(range.y - first, LIGHT_BATCH);
-      if (gl_LocalInvocationIndex < count) keep_in_batch(gl_LocalInvocationIndex, light_at(tile_lights[range.x + first + gl_LocalInvocationIndex]));
+      if (gl_LocalInvocationIndex < count) {
+        keep_in_batch(gl_LocalInvocationIndex, tile_lights[range.x + first + gl_LocalInvocationIndex]);
+      }
       barrier();
       for (uint j = 0u; surface && j < count; ++j) {
-        Light light = batch_light(j);
-        Incidence at = light_incidence(light, position, light_type(light, LIGHT_TYPES));
-        if (shadow_weight_bound(light, p, at) <= heaviest[FILTERED_LIGHTS - 1u]) continue;
-        float carried = shadow_weight(light, p, at);
+        if (floor_bound(j, p, lit_color, position) <= heaviest[FILTERED_LIGHTS - 1u]) continue;
+        // The exact weight from the whole record, as the group passes work it out.
+        Light light = light_at(floatBitsToUint(batch_terms[j].w));
+        float carried = shadow_weight(light, p, light_incidence(light, position, light_type(light, LIGHT_TYPES)));
         if (carried <= heaviest[FILTERED_LIGHTS - 1u]) continue;
         [[unroll]] for (uint i = 0u; i < MOST_FILTERED_LIGHTS; ++i) {
           if (i < FILTERED_LIGHTS) {
