@@ -16,13 +16,15 @@ float falloff_linear_window(float distance, float range) {
   return max(1.0f - distance / range, 0.0f);
 }
 
-// The range window of glTF KHR_lights_punctual's falloff: clamp(1 - (d/R)^4, 0, 1)^2, 1 at the
-// light and 0 from R on.
-float gltf_range_window(float distance, float range) {
-  float ratio2 = (distance / range) * (distance / range);
+// gltf_range_window from (d/R)^2, for a caller that has it without dividing by R.
+float gltf_window(float ratio2) {
   float window = clamp(1.0f - ratio2 * ratio2, 0.0f, 1.0f);
   return window * window;
 }
+
+// The range window of glTF KHR_lights_punctual's falloff: clamp(1 - (d/R)^4, 0, 1)^2, 1 at the
+// light and 0 from R on.
+float gltf_range_window(float distance, float range) { return gltf_window((distance / range) * (distance / range)); }
 
 // Distance falloff of glTF KHR_lights_punctual (section 2): A = clamp(1 - (d/R)^4, 0, 1)^2 / d^2.
 // d^2 is held at 1 cm^2 or more so that a surface touching the light stays finite.

@@ -65,10 +65,10 @@ float floor_bound(uint j, SurfacePoint p, vec3 lit_color, vec3 position) {
   float distance2 = dot(offset, offset);
   float inverse_distance = inversesqrt(max(distance2, 1e-12));
   vec3 to_light = offset * inverse_distance;
-  float ratio2 = distance2 * position_inverse_range.w * position_inverse_range.w;
-  float window = clamp(1.0 - ratio2 * ratio2, 0.0, 1.0);
+  float inverse_range = position_inverse_range.w;
   bool gltf = (bits >> 8u) == FALLOFF_GLTF_PUNCTUAL;
-  float fade = gltf ? window * window : max(1.0 - distance2 * inverse_distance * position_inverse_range.w, 0.0);
+  float fade = gltf ? gltf_window(distance2 * inverse_range * inverse_range)
+                    : max(1.0 - distance2 * inverse_distance * inverse_range, 0.0);
   float reach = gltf ? fade / max(distance2, 1e-4) : fade;
   if (type == LIGHT_SPOT) {
     vec4 direction_outer = batch_direction_outer[j];

@@ -12,6 +12,7 @@ namespace sg::shadows::glsl {
 
 float luminance(glm::vec3 color);
 float falloff_linear_window(float distance, float range);
+float gltf_window(float ratio2);
 float gltf_range_window(float distance, float range);
 float falloff_gltf_punctual(float distance, float range);
 float spot_cone(float cos_angle, float cos_inner, float cos_outer);
