@@ -295,49 +295,53 @@ TEST_F(ShadowLayers, OnlyCastersOnItsCasterMaskShadowALight) {
 // map still shadows the floor beside it through the depth buffer, within the light's contact
 // length, where the ray-cast reference puts the floor in its shadow; the lit floor stays lit.
 // A CPU device's automatic lighting takes the deferred path for them; fused lighting draws none
-// and says so.
+// and says so. A filtering light and a hard one: a hard light's shading skips the ranking that
+// decides between kernels, which its contact shadow still reads.
 TEST_F(ShadowAlgorithms, ContactShadowsDarkenTheFloorBesideABoxNoMapHolds) {
-  ShadowScene s = with(LightKind::spot, scene::ShadowAlgorithm::pcf);
-  s.box_bottom = 0.05f;
-  s.light_position = {-1.0f, 2.2f, -4.5f};  // low, behind the box: its shadow falls toward the camera
-  s.aim = glm::normalize(glm::vec3(0.0f, 0.3f, 0.0f) - s.light_position);
-  const FloorPixels floor = reference(s, 1);
-  const auto render_contact = [&](float contact_length, LightingPath path) {
-    s.shadow.contact_length = contact_length;
-    SceneView view = build(s, s.intensity);
-    bool first = true;  // the floor is the scene's first instance (floor_box_scene.h), the box the second
-    view.scene.world.query<scene::MeshInstance>().for_each([&](ecs::Entity, scene::MeshInstance& instance) {
-      if (!first) instance.casts_shadow = false;
-      first = false;
-    });
-    FrameSettings options;
-    options.renderer.lighting = path;
-    return render(view, options);
-  };
-  const std::vector<float> without = render_contact(0.0f, LightingPath::automatic);
-  EXPECT_EQ(last_lighting, LightingPath::fused) << "one light without contact shadows on lavapipe";
-  const std::vector<float> with = render_contact(2.0f, LightingPath::automatic);
-  EXPECT_EQ(last_lighting, LightingPath::deferred) << "contact shadows are deferred lighting's";
-  EXPECT_EQ(last_contact_skipped, 0u);
-  int shadowed = 0, darkened = 0, lit = 0, lit_darkened = 0;
-  for (size_t i = 0; i < floor.pixels.size(); ++i) {
-    if (floor.pixels[i] == FloorPixel::shadowed) {
-      ++shadowed;
-      darkened += with[i] < without[i] - 0.05f;
-    } else if (floor.pixels[i] == FloorPixel::lit) {
-      ++lit;
-      lit_darkened += with[i] < without[i] - 0.05f;
+  for (const scene::ShadowAlgorithm algorithm : {scene::ShadowAlgorithm::pcf, scene::ShadowAlgorithm::hard}) {
+    SCOPED_TRACE(std::string(to_string(algorithm)));
+    ShadowScene s = with(LightKind::spot, algorithm);
+    s.box_bottom = 0.05f;
+    s.light_position = {-1.0f, 2.2f, -4.5f};  // low, behind the box: its shadow falls toward the camera
+    s.aim = glm::normalize(glm::vec3(0.0f, 0.3f, 0.0f) - s.light_position);
+    const FloorPixels floor = reference(s, 1);
+    const auto render_contact = [&](float contact_length, LightingPath path) {
+      s.shadow.contact_length = contact_length;
+      SceneView view = build(s, s.intensity);
+      bool first = true;  // the floor is the scene's first instance (floor_box_scene.h), the box the second
+      view.scene.world.query<scene::MeshInstance>().for_each([&](ecs::Entity, scene::MeshInstance& instance) {
+        if (!first) instance.casts_shadow = false;
+        first = false;
+      });
+      FrameSettings options;
+      options.renderer.lighting = path;
+      return render(view, options);
+    };
+    const std::vector<float> without = render_contact(0.0f, LightingPath::automatic);
+    EXPECT_EQ(last_lighting, LightingPath::fused) << "one light without contact shadows on lavapipe";
+    const std::vector<float> with = render_contact(2.0f, LightingPath::automatic);
+    EXPECT_EQ(last_lighting, LightingPath::deferred) << "contact shadows are deferred lighting's";
+    EXPECT_EQ(last_contact_skipped, 0u);
+    int shadowed = 0, darkened = 0, lit = 0, lit_darkened = 0;
+    for (size_t i = 0; i < floor.pixels.size(); ++i) {
+      if (floor.pixels[i] == FloorPixel::shadowed) {
+        ++shadowed;
+        darkened += with[i] < without[i] - 0.05f;
+      } else if (floor.pixels[i] == FloorPixel::lit) {
+        ++lit;
+        lit_darkened += with[i] < without[i] - 0.05f;
+      }
     }
-  }
-  ASSERT_GT(shadowed, 50);
-  EXPECT_GT(darkened, shadowed * 8 / 10) << "of " << shadowed << " floor pixels in the box's shadow";
-  EXPECT_LE(lit_darkened, lit / 100) << "of " << lit << " lit floor pixels";
+    ASSERT_GT(shadowed, 50);
+    EXPECT_GT(darkened, shadowed * 8 / 10) << "of " << shadowed << " floor pixels in the box's shadow";
+    EXPECT_LE(lit_darkened, lit / 100) << "of " << lit << " lit floor pixels";
 
-  const std::vector<float> fused = render_contact(2.0f, LightingPath::fused);
-  EXPECT_EQ(last_contact_skipped, 1u) << "fused lighting draws no contact shadows, and counts the light";
-  int differing = 0;
-  for (size_t i = 0; i < fused.size(); ++i) differing += std::abs(fused[i] - without[i]) > 1.0f / 255.0f;
-  EXPECT_EQ(differing, 0);
+    const std::vector<float> fused = render_contact(2.0f, LightingPath::fused);
+    EXPECT_EQ(last_contact_skipped, 1u) << "fused lighting draws no contact shadows, and counts the light";
+    int differing = 0;
+    for (size_t i = 0; i < fused.size(); ++i) differing += std::abs(fused[i] - without[i]) > 1.0f / 255.0f;
+    EXPECT_EQ(differing, 0);
+  }
 }
 
 TEST_F(ShadowAlgorithms, HardSpotShadowMatchesRayCastingAwayFromTheEdge) {
