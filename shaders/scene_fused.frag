@@ -2,16 +2,26 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // variant transparent TRANSPARENT
+// variant groups_1 GROUP_SLOTS=1
+// variant groups_2 GROUP_SLOTS=2
+// variant groups_3 GROUP_SLOTS=3
+// variant groups_4 GROUP_SLOTS=4
+// variant transparent_groups_1 TRANSPARENT GROUP_SLOTS=1
+// variant transparent_groups_2 TRANSPARENT GROUP_SLOTS=2
+// variant transparent_groups_3 TRANSPARENT GROUP_SLOTS=3
+// variant transparent_groups_4 TRANSPARENT GROUP_SLOTS=4
 // Forward lighting and tone mapping in one pass, for frames of a few lights: every light at
 // every pixel (no light lists), each with its own group's shadow code, the shader holding only
 // the code of the light groups the frame has (GROUPS_PRESENT, bit g for group g, a
 // specialization constant), the picture written straight into the frame. On a CPU driver every
 // full-screen pass costs milliseconds, and this path has two: the depth prepass and this one
-// (docs/PERFORMANCE.md).
+// (docs/PERFORMANCE.md). The groups_N variants call the shading for the frame's N groups alone
+// (group_slots.glsl), which their pipelines build in a fraction of the time.
 //
 // The transparent variant (systems/lighting/transparent_pass.h) gives the surface's alpha for blending,
 // its color tone-mapped only where frame.counts.w is 1: into the fused path's frame, or as a
 // lit sum after the every-light path.
+#include "group_slots.glsl"
 #include "light_shading.glsl"
 #include "material.glsl"
 #include "tone_map.glsl"
@@ -63,17 +73,27 @@ void main() {
   SurfacePoint p = fragment_surface();
   vec3 color = frame.ambient.rgb * p.base_color;
   uint next = 0u;
-  color += shade_group(0u, next, p);
-  color += shade_group(1u, next, p);
-  color += shade_group(2u, next, p);
-  color += shade_group(3u, next, p);
-  color += shade_group(4u, next, p);
-  color += shade_group(5u, next, p);
-  color += shade_group(6u, next, p);
-  color += shade_group(7u, next, p);
-  color += shade_group(8u, next, p);
-  color += shade_group(9u, next, p);
-  color += shade_group(10u, next, p);
+  // A call a group slot (group_slots.glsl), each with a group that is a constant, so that its shadow
+  // code is resolved when the pipeline is built.
+  color += shade_group(slot_group(0u), next, p);
+#if GROUP_SLOTS > 1
+  color += shade_group(slot_group(1u), next, p);
+#endif
+#if GROUP_SLOTS > 2
+  color += shade_group(slot_group(2u), next, p);
+#endif
+#if GROUP_SLOTS > 3
+  color += shade_group(slot_group(3u), next, p);
+#endif
+#if GROUP_SLOTS > 4
+  color += shade_group(slot_group(4u), next, p);
+  color += shade_group(slot_group(5u), next, p);
+  color += shade_group(slot_group(6u), next, p);
+  color += shade_group(slot_group(7u), next, p);
+  color += shade_group(slot_group(8u), next, p);
+  color += shade_group(slot_group(9u), next, p);
+  color += shade_group(slot_group(10u), next, p);
+#endif
 #ifdef TRANSPARENT
   if (frame.counts.w == 1u) color = tone_map(color, uintBitsToFloat(frame.counts.z));
   out_color = vec4(color, fragment_base_color().a);

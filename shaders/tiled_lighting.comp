@@ -62,7 +62,11 @@ void main() {
   begin_contact_shadows(pixel);
   vec4 sum = surface ? imageLoad(hdr, pixel) : vec4(0.0);
   float filter_floor = RANKED_FILTERING ? sum.a : 0.0;
+#ifdef LIGHT_RECORDS_IN_STORAGE
   vec3 color = BATCHED ? shade_tile_batched(tile, surface, p, position, filter_floor)
                        : shade_tile_group(tile, p, position, filter_floor);
+#else
+  vec3 color = shade_tile_group(tile, p, position, filter_floor);  // one call of the shading
+#endif
   if (surface) imageStore(hdr, pixel, sum + vec4(color, 0.0));
 }

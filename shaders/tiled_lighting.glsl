@@ -59,19 +59,19 @@ bool deferred_surface(ivec2 pixel, out SurfacePoint p, out vec3 position) {
 }
 
 // The light group's lights of `tile` at the surface point. The tile has at least one (or it
-// would not be drawn), and a do-while runs its body exactly that often on a CPU driver too.
+// would not be drawn), and a do-while runs its body exactly that often on a CPU driver too. One
+// call of the shading, a single light's too: a CPU driver inlines each call's whole shading code
+// before the constants fold (group_slots.glsl): with a second call for single lights a group's
+// pipeline took 0.52-0.96 s to build on lavapipe, with one 0.15-0.35 s (2026-12-06).
 vec3 shade_tile_group(uint tile, SurfacePoint p, vec3 position, float filter_floor) {
   uint kind = group_shadow_kind(LIGHT_GROUP);
   uint algorithm = group_algorithm(LIGHT_GROUP);
-  if (SINGLE_LIGHT) {
-    return shade_light_as(light_at(frame.lights.x), p, position, kind, algorithm, filter_floor, LIGHT_TYPES);
-  }
-  uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + LIGHT_GROUP];
+  uvec2 range = SINGLE_LIGHT ? uvec2(0u, 1u) : tile_ranges[tile * LIGHT_GROUP_COUNT + LIGHT_GROUP];
   vec3 color = vec3(0.0);
   uint j = 0u;
   do {
-    color += shade_light_as(light_at(tile_lights[range.x + j]), p, position, kind, algorithm, filter_floor,
-                            LIGHT_TYPES);
+    uint light = SINGLE_LIGHT ? frame.lights.x : tile_lights[range.x + j];
+    color += shade_light_as(light_at(light), p, position, kind, algorithm, filter_floor, LIGHT_TYPES);
     ++j;
   } while (j < range.y);
   return color;

@@ -1,13 +1,19 @@
 // SPDX-License-Identifier: MIT
 #version 460
 #extension GL_GOOGLE_include_directive : require
+// variant groups_1 GROUP_SLOTS=1
+// variant groups_2 GROUP_SLOTS=2
+// variant groups_3 GROUP_SLOTS=3
+// variant groups_4 GROUP_SLOTS=4
 // Transparent surfaces lit from tile lists (systems/lighting/transparent_pass.h): ambient plus the lights
 // of this pixel's screen tile (light_tiles.comp, its transparent variant), group by group, each
 // group's shadow kind and algorithm a constant, and the surface's alpha for blending. Where
 // frame.counts.w is 1 the color is tone-mapped with the exposure in counts.z, for a frame that
 // is already: the curve is the identity below its knee, where blending after it is blending
 // before. GROUPS_PRESENT (a specialization constant, bit g for group g) removes the groups the
-// frame has no light of, so the shader holds only the shadow code the frame uses.
+// frame has no light of, so the shader holds only the shadow code the frame uses; the groups_N
+// variants call the shading for the frame's N groups alone (group_slots.glsl).
+#include "group_slots.glsl"
 #include "light_shading.glsl"
 #include "light_tiles.glsl"
 #include "material.glsl"
@@ -45,18 +51,27 @@ void main() {
   uvec2 tile_xy = uvec2(gl_FragCoord.xy) / LIGHT_TILE_SIZE;
   uint tile = tile_xy.y * frame.counts.y + tile_xy.x;  // counts.y: tiles across
   vec3 color = frame.ambient.rgb * p.base_color;
-  // One call per group with a literal group, so each call's shadow code is resolved at compile time.
-  color += shade_group(0u, tile, p);
-  color += shade_group(1u, tile, p);
-  color += shade_group(2u, tile, p);
-  color += shade_group(3u, tile, p);
-  color += shade_group(4u, tile, p);
-  color += shade_group(5u, tile, p);
-  color += shade_group(6u, tile, p);
-  color += shade_group(7u, tile, p);
-  color += shade_group(8u, tile, p);
-  color += shade_group(9u, tile, p);
-  color += shade_group(10u, tile, p);
+  // A call a group slot (group_slots.glsl), each with a group that is a constant, so that its shadow
+  // code is resolved when the pipeline is built.
+  color += shade_group(slot_group(0u), tile, p);
+#if GROUP_SLOTS > 1
+  color += shade_group(slot_group(1u), tile, p);
+#endif
+#if GROUP_SLOTS > 2
+  color += shade_group(slot_group(2u), tile, p);
+#endif
+#if GROUP_SLOTS > 3
+  color += shade_group(slot_group(3u), tile, p);
+#endif
+#if GROUP_SLOTS > 4
+  color += shade_group(slot_group(4u), tile, p);
+  color += shade_group(slot_group(5u), tile, p);
+  color += shade_group(slot_group(6u), tile, p);
+  color += shade_group(slot_group(7u), tile, p);
+  color += shade_group(slot_group(8u), tile, p);
+  color += shade_group(slot_group(9u), tile, p);
+  color += shade_group(slot_group(10u), tile, p);
+#endif
   if (frame.counts.w == 1u) color = tone_map(color, uintBitsToFloat(frame.counts.z));
   out_color = vec4(color, fragment_base_color().a);
 }

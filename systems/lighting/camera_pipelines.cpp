@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "systems/lighting/camera_pipelines.h"
 
+#include <bit>
 #include <string>
 
 #include "rendergraph/vulkan/plan_translation.h"
@@ -71,6 +72,12 @@ vk::GraphicsPipelineDesc after_depth_prepass(vk::GraphicsPipelineDesc desc) {
   return desc;
 }
 
+std::span<const uint32_t> for_groups(uint32_t groups, std::span<const uint32_t> every,
+                                     const std::array<std::span<const uint32_t>, 4>& few) {
+  const auto present = static_cast<size_t>(std::popcount(groups));
+  return present >= 1 && present <= few.size() ? few[present - 1] : every;
+}
+
 std::vector<uint32_t> all_groups_pass_constants(const shadows::GroupsPresent& groups, LightingView view,
                                                 const GpuTextures& textures) {
   std::vector<uint32_t> constants =
@@ -78,6 +85,7 @@ std::vector<uint32_t> all_groups_pass_constants(const shadows::GroupsPresent& gr
   constants.push_back(groups.light_types);
   constants.push_back(groups.single);
   constants.push_back(groups.group_types);
+  constants.push_back(shadows::group_slot_list(groups.present));
   return constants;
 }
 

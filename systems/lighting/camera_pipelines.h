@@ -61,10 +61,16 @@ class CameraPipelines {
 // surfaces, the cut-out for masked ones.
 vk::GraphicsPipelineDesc for_draw_class(vk::GraphicsPipelineDesc desc, uint32_t draw_class);
 
-// The fragment specialization of a pass that shades every light group at once
-// (shaders/scene_fused.frag and its transparent variant, shaders/transparent_tiled.frag):
-// material_pass_constants with GROUPS_PRESENT and `view`, then LIGHT_TYPES (constant_id 3),
-// GROUPS_SINGLE (4) and GROUP_TYPES (5).
+// The fragment shader of a pass that shades every light group at once (shaders/scene_fused.frag
+// and its transparent variant, shaders/transparent_tiled.frag) for the groups present, `groups`
+// (bit g for group g): `few[n - 1]`, its variant that calls the shading for n groups alone
+// (shaders/group_slots.glsl), where there are n <= 4 groups; `every` otherwise.
+std::span<const uint32_t> for_groups(uint32_t groups, std::span<const uint32_t> every,
+                                     const std::array<std::span<const uint32_t>, 4>& few);
+
+// The fragment specialization of such a pass: material_pass_constants with GROUPS_PRESENT and
+// `view`, then LIGHT_TYPES (constant_id 3), GROUPS_SINGLE (4), GROUP_TYPES (5) and
+// GROUP_SLOT_LIST (6), the groups present in order, four bits each.
 std::vector<uint32_t> all_groups_pass_constants(const shadows::GroupsPresent& groups, LightingView view,
                                                 const GpuTextures& textures);
 

@@ -8,6 +8,10 @@
 #include "rendergraph/device/resources.h"
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "shaders/scene_fused.frag.spv.h"
+#include "shaders/scene_fused_groups_1.frag.spv.h"
+#include "shaders/scene_fused_groups_2.frag.spv.h"
+#include "shaders/scene_fused_groups_3.frag.spv.h"
+#include "shaders/scene_fused_groups_4.frag.spv.h"
 #include "systems/gpu/gpu_scene.h"
 #include "systems/gpu/gpu_textures.h"
 #include "systems/gpu/shader_bindings.h"
@@ -41,8 +45,11 @@ void FusedForwardPass::prepare(const shadows::GroupsPresent& groups, LightingVie
       .try_emplace(key_,
                    [layout = layout_.get(), &textures = textures_, &resources = light_resources_,
                     format = frame_format_, groups, view](uint32_t draw_class) {
-                     vk::GraphicsPipelineDesc desc =
-                         camera_pipeline_desc(scene_fused_frag, {vk::to_vk(format)}, layout, "fused forward");
+                     vk::GraphicsPipelineDesc desc = camera_pipeline_desc(
+                         for_groups(groups.present, scene_fused_frag,
+                                    {scene_fused_groups_1_frag, scene_fused_groups_2_frag,
+                                     scene_fused_groups_3_frag, scene_fused_groups_4_frag}),
+                         {vk::to_vk(format)}, layout, "fused forward");
                      desc.fragment_specialization =
                          resources.specialized(all_groups_pass_constants(groups, view, textures));
                      return for_draw_class(after_depth_prepass(std::move(desc)), draw_class);

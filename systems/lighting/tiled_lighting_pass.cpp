@@ -260,13 +260,13 @@ void TiledLightingPass::take_group_sets(const shadows::FrameLights& lights, Ligh
     chosen[s] = {keys[s], before == sets_chosen_.end() ? 1u : before->frames + 1};
     if (pipelines_by_set_->asked(keys[s])) continue;
     if (builds == PipelineBuilds::background && chosen[s].frames < frames_before_background_build) continue;
-    // As a group's (above), but shaders/tiled_lighting_set.comp, constant_id 8: the set; 9: its
-    // groups' light types.
+    // As a group's (above), but shaders/tiled_lighting_set.comp, constant_id 6: the set's groups
+    // (shadows::group_slot_list); 8: their light types.
     pipelines_by_set_->request(
         keys[s], {for_records(light_resources_.records(), tiled_lighting_set_comp,
                               tiled_lighting_set_storage_records_comp),
-                  light_resources_.specialized(
-                      {0u, static_cast<uint32_t>(view), 0u, types, 0u, ranked, 0u, 0u, set, group_types}),
+                  light_resources_.specialized({0u, static_cast<uint32_t>(view), 0u, types, 0u, ranked,
+                                                shadows::group_slot_list(set), 0u, group_types}),
                   layout_.get(), "tiled lighting " + set_name(set)});
     ++requested;
   }

@@ -10,7 +10,15 @@
 #include "rendergraph/vulkan/pass_recorder.h"
 #include "rendergraph/vulkan/plan_translation.h"
 #include "shaders/scene_fused_transparent.frag.spv.h"
+#include "shaders/scene_fused_transparent_groups_1.frag.spv.h"
+#include "shaders/scene_fused_transparent_groups_2.frag.spv.h"
+#include "shaders/scene_fused_transparent_groups_3.frag.spv.h"
+#include "shaders/scene_fused_transparent_groups_4.frag.spv.h"
 #include "shaders/transparent_tiled.frag.spv.h"
+#include "shaders/transparent_tiled_groups_1.frag.spv.h"
+#include "shaders/transparent_tiled_groups_2.frag.spv.h"
+#include "shaders/transparent_tiled_groups_3.frag.spv.h"
+#include "shaders/transparent_tiled_groups_4.frag.spv.h"
 #include "systems/gpu/gpu_scene.h"
 #include "systems/gpu/gpu_textures.h"
 #include "systems/gpu/shader_bindings.h"
@@ -62,7 +70,12 @@ void TransparentPass::prepare(rg::Format format, bool tiled, const shadows::Grou
   key_ = pipeline_key(format, tiled, groups, view);
   const VkPipelineLayout layout = (tiled ? tiled_layout_ : every_light_layout_).get();
   const std::span<const uint32_t> fragment_shader =
-      tiled ? std::span<const uint32_t>(transparent_tiled_frag) : scene_fused_transparent_frag;
+      tiled ? for_groups(groups.present, transparent_tiled_frag,
+                         {transparent_tiled_groups_1_frag, transparent_tiled_groups_2_frag,
+                          transparent_tiled_groups_3_frag, transparent_tiled_groups_4_frag})
+            : for_groups(groups.present, scene_fused_transparent_frag,
+                         {scene_fused_transparent_groups_1_frag, scene_fused_transparent_groups_2_frag,
+                          scene_fused_transparent_groups_3_frag, scene_fused_transparent_groups_4_frag});
   pipelines_
       .try_emplace(
           key_,

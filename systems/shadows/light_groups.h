@@ -52,6 +52,20 @@ inline uint32_t packed_group_types(uint32_t groups,
   return packed;
 }
 
+// Groups `groups` (bit g for group g) in order, four bits each, the first eight, the slots past
+// the last holding 15: the group slots of shaders/group_slots.glsl.
+inline uint32_t group_slot_list(uint32_t groups) {
+  uint32_t list = 0xFFFFFFFFu;
+  uint32_t slot = 0;
+  for (uint32_t group = 0; group < light_group_count && slot < 8; ++group) {
+    if ((groups >> group & 1u) != 0) {
+      list &= ~(0xFu << 4 * slot);
+      list |= group << 4 * slot++;
+    }
+  }
+  return list;
+}
+
 // From group_begin and group_types as in FrameLights (group g's records are [group_begin[g],
 // group_begin[g + 1]), their types group_types[g]).
 inline GroupsPresent groups_present(const std::array<uint32_t, light_group_count + 1>& group_begin,

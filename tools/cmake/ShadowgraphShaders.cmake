@@ -21,31 +21,28 @@ function(shadowgraph_add_shaders target source_dir prefix)
     get_filename_component(stem ${source} NAME_WE)
     get_filename_component(stage ${source} LAST_EXT)
     # The source itself, then each variant it declares on a line of its own as
-    # `// variant <suffix> <DEFINE>`: the same source compiled with DEFINE set, emitted as
-    # <stem>_<suffix><stage>.spv.h, so a pass's variants live in the one file.
-    set(builds "${file_name}|")
-    file(STRINGS ${source} variant_lines REGEX "^// variant [a-z_]+ [A-Z_]+$")
+    # `// variant <suffix> <DEFINE>...`: the same source compiled with each DEFINE (NAME or
+    # NAME=number) set, emitted as <stem>_<suffix><stage>.spv.h, so a pass's variants live in the
+    # one file.
+    set(builds "${file_name}")
+    file(STRINGS ${source} variant_lines REGEX "^// variant [a-z0-9_]+( [A-Z_]+(=[0-9]+)?)+$")
     # A variant declared later must reach the build: editing a shader configures again.
     set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${source})
     foreach(line ${variant_lines})
-      string(REGEX REPLACE "^// variant ([a-z_]+) ([A-Z_]+)$" "\\1;\\2" variant "${line}")
-      list(GET variant 0 suffix)
-      list(GET variant 1 define)
-      list(APPEND builds "${stem}_${suffix}${stage}|-D${define}")
+      string(REGEX REPLACE "^// variant ([a-z0-9_]+) (.+)$" "\\1" suffix "${line}")
+      string(REGEX REPLACE "^// variant ([a-z0-9_]+) (.+)$" "\\2" defines "${line}")
+      string(REPLACE " " "|-D" defines "${defines}")
+      list(APPEND builds "${stem}_${suffix}${stage}|-D${defines}")
     endforeach()
     foreach(build ${builds})
       string(REPLACE "|" ";" build "${build}")
-      list(GET build 0 output_name)
-      list(LENGTH build parts)
-      set(define_flag)
-      if(parts GREATER 1)
-        list(GET build 1 define_flag)
-      endif()
+      list(POP_FRONT build output_name)
+      set(define_flags ${build})
       string(REPLACE "." "_" array_name ${output_name})
       set(header ${spirv_dir}/${output_name}.spv.h)
       add_custom_command(
         OUTPUT ${header}
-        COMMAND ${GLSLANG_VALIDATOR} --quiet -V --target-env vulkan1.3 -g0 ${define_flag}
+        COMMAND ${GLSLANG_VALIDATOR} --quiet -V --target-env vulkan1.3 -g0 ${define_flags}
                 -I${source_dir} -I${SHADOWGRAPH_SHADER_DIR} --vn ${array_name} -o ${header} ${source}
         DEPENDS ${source} ${includes}
         COMMENT "glslang ${output_name}"

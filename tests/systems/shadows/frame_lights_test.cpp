@@ -824,6 +824,16 @@ TEST(FrameLights, GroupsPresentAreTheGroupsWithLightsAndThoseWithOne) {
   }
 }
 
+// A shader's group slots (shaders/group_slots.glsl): the groups in order, four bits each, the
+// slots past the last holding 15, so that a set of fewer groups than slots shades nothing more.
+TEST(FrameLights, GroupSlotsListTheGroupsInOrder) {
+  EXPECT_EQ(group_slot_list(1u << 3), 0xFFFFFFF3u);
+  EXPECT_EQ(group_slot_list(1u | 1u << 6 | 1u << 10), 0xFFFFFA60u);
+  EXPECT_EQ(group_slot_list(0u), 0xFFFFFFFFu);
+  // The first eight of more groups.
+  EXPECT_EQ(group_slot_list((1u << light_group_count) - 1u), 0x76543210u);
+}
+
 // Sorting on a thread pool moves every record where the serial sort does: 5,000 records of
 // every group, their indices in the position field so that each can be followed.
 TEST(SortByGroup, OnAThreadPoolMovesTheRecordsAsSerially) {
