@@ -215,7 +215,7 @@ std::vector<Setting<S>> make_table() {
           "one of the frame's commonest sets takes one pass for them all, not one a group"),
       choice<S>(
           "pipeline-builds", [](auto& s) -> auto& { return s.renderer.pipeline_builds; },
-          "when the group sets' pipelines are built (seconds each on lavapipe): background, on a "
+          "when the group sets' pipelines are built (about a second each on lavapipe): background, on a "
           "thread of their own while frames go on without them; in-frame, by the frame that first "
           "takes a set, so that a run's pictures are the same every time"),
       choice<S>(
