@@ -22,6 +22,7 @@
 #include "shaders/tiled_lighting_set.comp.spv.h"
 #include "shaders/tiled_lighting_set_storage_records.comp.spv.h"
 #include "shaders/tiled_lighting_storage_records.comp.spv.h"
+#include "shaders/tiled_lighting_warp_lists.comp.spv.h"
 #include "systems/gpu/scene_gpu_types.h"
 #include "systems/gpu/shader_bindings.h"
 
@@ -89,6 +90,18 @@ std::span<const uint32_t> for_records(LightRecordsIn records, std::span<const ui
   return records == LightRecordsIn::storage_buffer ? storage_buffer : texel_buffer;
 }
 
+// Whether the device's subgroups take shaders/tiled_lighting.comp's warp_lists variant: 32 lanes
+// or fewer (a ballot's first word), which ballot, shuffle and reduce in compute shaders.
+bool subgroups_cull_lists(const vk::VulkanContext& context) {
+  VkPhysicalDeviceSubgroupProperties subgroups{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroups};
+  vkGetPhysicalDeviceProperties2(context.physical_device(), &properties);
+  constexpr VkSubgroupFeatureFlags needed =
+      VK_SUBGROUP_FEATURE_BALLOT_BIT | VK_SUBGROUP_FEATURE_SHUFFLE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+  return subgroups.subgroupSize <= 32 && (subgroups.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) != 0 &&
+         (subgroups.supportedOperations & needed) == needed;
+}
+
 bool starts_in_gbuffer(LitSumStart start, const vk::VulkanContext& context) {
   if (start != LitSumStart::automatic) return start == LitSumStart::gbuffer;
   return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
@@ -101,6 +114,11 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
     : context_(context),
       lit_sum_from_gbuffer_(starts_in_gbuffer(start, context)),
       light_resources_(context, records),
+      group_shader_(light_resources_.records() == LightRecordsIn::texel_buffer
+                        ? std::span<const uint32_t>(tiled_lighting_comp)
+                    : subgroups_cull_lists(context)
+                        ? std::span<const uint32_t>(tiled_lighting_warp_lists_comp)
+                        : std::span<const uint32_t>(tiled_lighting_storage_records_comp)),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       ambient_layout_(context.device(),
                       {{gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
@@ -223,10 +241,7 @@ void TiledLightingPass::prepare(const shadows::FrameLights& lights, LightingView
     const std::vector<uint32_t> constants = light_resources_.specialized(
         {group, static_cast<uint32_t>(view), 0u, types, single, ranked, 0u, contact});
     const std::string name = "tiled lighting " + group_name(group);
-    pipeline = vk::create_compute_pipeline(
-        context_,
-        {for_records(light_resources_.records(), tiled_lighting_comp, tiled_lighting_storage_records_comp),
-         constants, layout_.get(), name});
+    pipeline = vk::create_compute_pipeline(context_, {group_shader_, constants, layout_.get(), name});
     current_[group] = pipeline.get();
   }
   group_sets_.fill(0);

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -99,6 +100,9 @@ class TiledLightingPass {
   vk::VulkanContext& context_;
   bool lit_sum_from_gbuffer_;
   LightResources light_resources_;
+  // shaders/tiled_lighting.comp's variant for the light records and, reading them from storage,
+  // the device's subgroups.
+  std::span<const uint32_t> group_shader_;
   vk::UniqueSampler nearest_;  // G-buffer reads
   vk::PipelineLayout ambient_layout_;
   vk::UniquePipeline ambient_pipeline_;  // unless the G-buffer starts the lit sum
