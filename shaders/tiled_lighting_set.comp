@@ -20,9 +20,10 @@ layout(std430, set = 0, binding = group_tiles_binding) readonly buffer GroupTile
 // light types, five bits a group (group_light_types).
 layout(constant_id = 8) const uint SET_GROUP_TYPES = 0u;
 
-// Group `group`'s light at the surface point, the group in slot `slot` of the set
-// (group_slots.glsl): the slot-th of frame.lights. A slot the set leaves empty holds no group.
-vec3 shade_set_group(uint group, uint slot, SurfacePoint p, vec3 position, float filter_floor) {
+// The light of the set's group in slot `slot` (group_slots.glsl) at the surface point: the
+// slot-th of frame.lights. A slot the set leaves empty holds no group.
+vec3 shade_set_slot(uint slot, SurfacePoint p, vec3 position, float filter_floor) {
+  uint group = slot_group(slot);
   if (group >= LIGHT_GROUP_COUNT) return vec3(0.0);
   return shade_light_as(light_at(frame.lights[slot]), p, position, group_shadow_kind(group), group_algorithm(group),
                         filter_floor, group_light_types(SET_GROUP_TYPES, group));
@@ -31,10 +32,10 @@ vec3 shade_set_group(uint group, uint slot, SurfacePoint p, vec3 position, float
 // A group set's lights at the surface point: one pass for the tile's groups, which pays for the
 // G-buffer and the lit sum once. Each group keeps its own algorithm's and light types' code.
 vec3 shade_tile_set(SurfacePoint p, vec3 position, float filter_floor) {
-  vec3 color = shade_set_group(slot_group(0u), 0u, p, position, filter_floor);
-  color += shade_set_group(slot_group(1u), 1u, p, position, filter_floor);
-  color += shade_set_group(slot_group(2u), 2u, p, position, filter_floor);
-  color += shade_set_group(slot_group(3u), 3u, p, position, filter_floor);
+  vec3 color = shade_set_slot(0u, p, position, filter_floor);
+  color += shade_set_slot(1u, p, position, filter_floor);
+  color += shade_set_slot(2u, p, position, filter_floor);
+  color += shade_set_slot(3u, p, position, filter_floor);
   return color;
 }
 

@@ -114,11 +114,11 @@ TiledLightingPass::TiledLightingPass(vk::VulkanContext& context, LitSumStart sta
     : context_(context),
       lit_sum_from_gbuffer_(starts_in_gbuffer(start, context)),
       light_resources_(context, records),
-      group_shader_(light_resources_.records() == LightRecordsIn::texel_buffer
-                        ? std::span<const uint32_t>(tiled_lighting_comp)
-                    : subgroups_cull_lists(context)
-                        ? std::span<const uint32_t>(tiled_lighting_warp_lists_comp)
-                        : std::span<const uint32_t>(tiled_lighting_storage_records_comp)),
+      group_shader_(light_resources_.records() == LightRecordsIn::storage_buffer &&
+                            subgroups_cull_lists(context)
+                        ? tiled_lighting_warp_lists_comp
+                        : for_records(light_resources_.records(), tiled_lighting_comp,
+                                      tiled_lighting_storage_records_comp)),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),
       ambient_layout_(context.device(),
                       {{gbuffer_albedo_binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, compute_stage},
