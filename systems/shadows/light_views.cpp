@@ -12,10 +12,13 @@ namespace sg::shadows {
 namespace {
 
 // World -> view of a camera at `position` looking along `direction`, with the scene library's
-// choice of up vector (scene::look_rotation gives the camera's orientation; the view inverts it).
+// up vector (scene::camera_up, as scene::look_rotation takes it). Straight from lookAt, not
+// through the orientation's quaternion and a 4x4 inverse: gathering 100,000 lights, every one
+// moving, took 10.3-10.9 ms on one thread of the 2-core VM against 14.4-14.6 (2026-12-06).
 glm::mat4 look_along(glm::vec3 position, glm::vec3 direction) {
-  const glm::quat orientation = scene::look_rotation(position, position + direction);
-  return glm::mat4_cast(glm::conjugate(orientation)) * glm::translate(glm::mat4(1.0f), -position);
+  const glm::vec3 target = position + direction;
+  return glm::lookAt(position, target,
+                     scene::camera_up(glm::normalize(target - position), {0.0f, 1.0f, 0.0f}));
 }
 
 // Vulkan's NDC y points down; the camera flips its projection the same way (systems/gpu/camera.cpp).

@@ -55,10 +55,12 @@ TEST(SpotLightView, IsTheCameraOfTheSameLensButForDepth) {
   for (int c = 0; c < 4; ++c) {
     for (const int r : {0, 1, 3}) EXPECT_NEAR(light[c][r], camera[c][r], 1e-5f) << c << "," << r;
   }
+  // The light's view comes from lookAt, the camera's from its orientation's quaternion: they
+  // round apart by about a micrometre, which depth at the near plane (6 cm) magnifies to 1e-5.
   for (const float distance : {spot.near, 5.0f, 12.0f}) {
     const glm::vec4 point(position + distance * glm::normalize(target - position), 1.0f);
     const glm::vec4 in_map = light * point, in_camera = camera * point;
-    EXPECT_NEAR(in_map.z / in_map.w, 1.0f - in_camera.z / in_camera.w, 1e-5f) << distance;
+    EXPECT_NEAR(in_map.z / in_map.w, 1.0f - in_camera.z / in_camera.w, 1e-4f) << distance;
   }
   EXPECT_FALSE(spot.orthographic);
   EXPECT_FLOAT_EQ(spot.far, 12.0f);
