@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // One host-visible buffer per frame in flight, for data the CPU rewrites every frame (instance
-// transforms, indirect draws, light records). The CPU writes slot s while the GPU may still read
-// the other slots, so no frame waits for another.
+// transforms, indirect draws, light records), in stream memory (MemoryUsage): where the device
+// maps device-local memory, the GPU's passes read it from there. Or for data the GPU writes for
+// the CPU to read a few frames later (feedback), in readback memory. The CPU writes slot s while
+// the GPU may still read the other slots, so no frame waits for another.
 //
 // Contract: write slot s only after FrameRing::begin_frame returned slot s (the GPU has finished
 // with it); that also makes growing (recreating) the buffer safe.
@@ -21,8 +23,9 @@ namespace sg::vk {
 class FrameBuffers {
  public:
   // `texel_format`: each slot's buffer also has a texel view in that format (Buffer::texel_view).
+  // `memory`: stream or readback.
   FrameBuffers(VulkanContext& context, VkBufferUsageFlags usage, uint32_t frames_in_flight, std::string name,
-               VkFormat texel_format = VK_FORMAT_UNDEFINED);
+               VkFormat texel_format = VK_FORMAT_UNDEFINED, MemoryUsage memory = MemoryUsage::stream);
 
   // Copies `items` to the start of the slot's buffer, growing it when needed. An empty span
   // leaves a small buffer, so descriptors always have something valid to point at.
@@ -43,6 +46,7 @@ class FrameBuffers {
   VulkanContext& context_;
   VkBufferUsageFlags usage_;
   VkFormat texel_format_;
+  MemoryUsage memory_;
   std::string name_;
   std::vector<Buffer> buffers_;
 };

@@ -2,6 +2,7 @@
 #include "rendergraph/device/gpu_allocator.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -25,6 +26,7 @@ MemoryPreference preference_for(MemoryUsage usage) {
     case MemoryUsage::gpu_only: return {VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0};
     case MemoryUsage::upload: return {host, 0};
     case MemoryUsage::readback: return {host, VK_MEMORY_PROPERTY_HOST_CACHED_BIT};
+    case MemoryUsage::stream: return {host, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT};
   }
   return {0, 0};
 }
@@ -50,6 +52,22 @@ void advise_huge_pages(void* mapped, VkDeviceSize size) {
 
 }  // namespace
 
+uint32_t choose_memory_type(const VkPhysicalDeviceMemoryProperties& properties, uint32_t type_bits,
+                            MemoryUsage usage) {
+  const MemoryPreference pref = preference_for(usage);
+  uint32_t fallback = UINT32_MAX;
+  for (uint32_t i = 0; i < properties.memoryTypeCount; ++i) {
+    const VkMemoryPropertyFlags flags = properties.memoryTypes[i].propertyFlags;
+    if (!(type_bits & (1u << i)) || (flags & pref.required) != pref.required) continue;
+    if ((flags & pref.preferred) == pref.preferred) return i;
+    if (fallback == UINT32_MAX) fallback = i;
+  }
+  if (fallback == UINT32_MAX && usage == MemoryUsage::gpu_only) {
+    return choose_memory_type(properties, type_bits, MemoryUsage::upload);
+  }
+  return fallback;
+}
+
 GpuAllocator::GpuAllocator(VkPhysicalDevice physical_device, VkDevice device, VkDeviceSize block_size)
     : device_(device), block_size_(block_size) {
   vkGetPhysicalDeviceMemoryProperties(physical_device, &memory_properties_);
@@ -62,26 +80,6 @@ GpuAllocator::~GpuAllocator() {
   for (const Block& block : blocks_) {
     if (block.memory != VK_NULL_HANDLE) vkFreeMemory(device_, block.memory, nullptr);
   }
-}
-
-uint32_t GpuAllocator::find_memory_type(uint32_t type_bits, MemoryUsage usage) const {
-  const MemoryPreference pref = preference_for(usage);
-  uint32_t fallback = UINT32_MAX;
-  for (uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i) {
-    const VkMemoryPropertyFlags flags = memory_properties_.memoryTypes[i].propertyFlags;
-    if (!(type_bits & (1u << i)) || (flags & pref.required) != pref.required) continue;
-    if ((flags & pref.preferred) == pref.preferred) return i;
-    if (fallback == UINT32_MAX) fallback = i;
-  }
-  if (fallback == UINT32_MAX && usage == MemoryUsage::gpu_only) {
-    // CPU drivers and some integrated GPUs may lack a device-local type for a resource.
-    return find_memory_type(type_bits, MemoryUsage::upload);
-  }
-  if (fallback == UINT32_MAX) {
-    throw VulkanError("no Vulkan memory type is both allowed for the resource (memory type bits " +
-                      std::to_string(type_bits) + ") and host-visible/coherent as required");
-  }
-  return fallback;
 }
 
 uint32_t GpuAllocator::create_block(uint32_t memory_type, ResourceTiling tiling, VkDeviceSize size) {
@@ -111,7 +109,14 @@ uint32_t GpuAllocator::create_block(uint32_t memory_type, ResourceTiling tiling,
 
 Allocation GpuAllocator::allocate(const VkMemoryRequirements& requirements, MemoryUsage usage,
                                   ResourceTiling tiling) {
-  const uint32_t type = find_memory_type(requirements.memoryTypeBits, usage);
+  const uint32_t type = choose_memory_type(
+      memory_properties_, requirements.memoryTypeBits,
+      usage == MemoryUsage::stream && stream_in_host_memory_ ? MemoryUsage::upload : usage);
+  if (type == UINT32_MAX) {
+    throw VulkanError("no Vulkan memory type is both allowed for the resource (memory type bits " +
+                      std::to_string(requirements.memoryTypeBits) +
+                      ") and host-visible/coherent as required");
+  }
   const bool host = is_host_visible(usage);
   auto place = [&](uint32_t index) -> std::optional<Allocation> {
     Block& block = blocks_[index];
@@ -135,7 +140,17 @@ Allocation GpuAllocator::allocate(const VkMemoryRequirements& requirements, Memo
   }
   // Resources larger than a block get a block of their own size.
   const VkDeviceSize size = std::max(block_size_, requirements.size);
-  return *place(create_block(type, tiling, size));
+  if (usage != MemoryUsage::stream || stream_in_host_memory_) return *place(create_block(type, tiling, size));
+  // The device-local memory a CPU can map may be a window (256 MiB without resizable BAR) that
+  // other processes share: where it runs out, streamed data takes host memory, as upload's.
+  try {
+    return *place(create_block(type, tiling, size));
+  } catch (const VulkanError& error) {
+    stream_in_host_memory_ = true;
+    std::printf("shadowgraph: %s; per-frame data the GPU reads now lies in host memory, read over the bus\n",
+                error.what());
+    return allocate(requirements, usage, tiling);
+  }
 }
 
 void GpuAllocator::free(const Allocation& allocation) {

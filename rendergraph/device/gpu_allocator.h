@@ -20,7 +20,19 @@ enum class MemoryUsage {
   gpu_only,  // device-local, never mapped
   upload,    // host-visible and coherent, written by the CPU (staging, per-frame constants)
   readback,  // host-visible and coherent, preferably cached, read by the CPU
+  // Host-visible and coherent, written by the CPU every frame and read by the GPU's passes (light
+  // records, instances, shadow views): device-local where the device maps such memory (resizable
+  // BAR), so that the passes read it from the card's memory rather than over the bus; host memory
+  // where it has none or none is left. The CPU must only write it.
+  stream,
 };
+
+// The memory type for a resource allowed `type_bits` (VkMemoryRequirements::memoryTypeBits) used
+// as `usage`, among `properties`' types; UINT32_MAX where none is allowed and host-visible as
+// `usage` requires. A gpu_only resource takes a host-visible type where the device has no
+// device-local one for it (CPU drivers, some integrated GPUs).
+uint32_t choose_memory_type(const VkPhysicalDeviceMemoryProperties& properties, uint32_t type_bits,
+                            MemoryUsage usage);
 
 enum class ResourceTiling { linear, optimal };
 
@@ -65,12 +77,12 @@ class GpuAllocator {
     uint32_t allocation_count = 0;
   };
 
-  uint32_t find_memory_type(uint32_t type_bits, MemoryUsage usage) const;
   uint32_t create_block(uint32_t memory_type, ResourceTiling tiling, VkDeviceSize size);
 
   VkDevice device_;
   VkDeviceSize block_size_;
-  bool host_memory_ = false;  // a CPU device: blocks are the process's own pages
+  bool host_memory_ = false;            // a CPU device: blocks are the process's own pages
+  bool stream_in_host_memory_ = false;  // the device-local memory it maps ran out: stream takes upload's
   VkPhysicalDeviceMemoryProperties memory_properties_{};
   std::vector<Block> blocks_;  // a freed block keeps its slot (memory null) so indices stay valid
 };

@@ -169,7 +169,8 @@ LightTilesPass::LightTilesPass(vk::VulkanContext& context, uint32_t frames_in_fl
                                uint64_t most_coarse_entries)
     : shape_(resolve(shape, context)),
       transparent_bounds_(transparent_bounds),
-      feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light tiles feedback"),
+      feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "light tiles feedback",
+                VK_FORMAT_UNDEFINED, vk::MemoryUsage::readback),
       pool_(most_pool_entries > 0 ? most_pool_entries : device_pool_entries(context)),
       coarse_pool_(most_coarse_entries > 0 ? most_coarse_entries : device_pool_entries(context)),
       nearest_(vk::create_sampler(context.device(), VK_FILTER_NEAREST)),

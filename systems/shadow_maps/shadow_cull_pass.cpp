@@ -71,7 +71,8 @@ ShadowCullPass::ShadowCullPass(vk::VulkanContext& context, uint32_t frames_in_fl
       draws_pipeline_(
           vk::create_compute_pipeline(context, {shadow_draws_comp, {}, draws_layout_.get(), "shadow draws"})),
       max_views_per_dispatch_(context.properties().limits.maxComputeWorkGroupCount[1]),
-      feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow feedback") {
+      feedback_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frames_in_flight, "shadow feedback",
+                VK_FORMAT_UNDEFINED, vk::MemoryUsage::readback) {
   for (PairCapacity& capacity : capacity_) capacity.in_slot.assign(frames_in_flight, 0);
 }
 
