@@ -75,10 +75,7 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
                 or_device_default(settings.shadow_budget_ms, context, default_gpu_shadow_budget_ms),
                 settings.shadow_time_policy),
       tone_map_(context, frame_format),
-      light_records_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
-                     frames_in_flight, "light records", light_record_texel_format),
-      max_light_records_(context.properties().limits.maxTexelBufferElements /
-                         (sizeof(shadows::GpuLight) / 16)) {
+      light_records_(context, frames_in_flight) {
   if (!shadow_comparisons_filtered()) {
     std::printf(
         "shadowgraph: %s cannot filter the shadow maps' depth format, so each tap of the 2D pcf, noise and "
@@ -159,19 +156,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
   cpu_steps_.schedule = lap(mark);
 
   gpu_scene_.upload(slot, &workers_);
-  const size_t light_count = lights_.records.size();
-  if (light_count + lights_.cascades.size() > max_light_records_) {
-    throw std::runtime_error(std::to_string(light_count) + " lights and " +
-                             std::to_string(lights_.cascades.size()) +
-                             " cascades, but this device's texel buffers hold " +
-                             std::to_string(max_light_records_) + " light records");
-  }
-  // The records sorted straight into the slot's mapped buffer, the cascades' after them.
-  const vk::Buffer& records =
-      light_records_.reserve(slot, (light_count + lights_.cascades.size()) * sizeof(shadows::GpuLight));
-  auto* mapped = static_cast<shadows::GpuLight*>(records.mapped());
-  shadows::sort_by_group(lights_, std::span(mapped, light_count), &workers_);
-  std::copy(lights_.cascades.begin(), lights_.cascades.end(), mapped + light_count);
+  const vk::Buffer& records = light_records_.upload(lights_, slot, &workers_);
   cpu_steps_.upload = lap(mark);
   const uint32_t page_size = atlas_.shape().page_size;
   if (batch_) {
@@ -209,7 +194,7 @@ void SceneRenderer::prepare(uint32_t slot, const scene::CameraPose& pose, const 
         "shadowgraph: the CPU driver ended the light culling's loops early (llvmpipe ends a shader "
         "invocation's loops after 65,535 iterations in all): some tiles' lists miss lights of the %zu; fewer "
         "lights, or a GPU, list them all (--stats' light_tiles_cut counts the tiles)\n",
-        light_count);
+        lights_.records.size());
     told_of_cut_tiles_ = true;
   }
   switch (lighting_) {

@@ -11,18 +11,17 @@
 // `frame` is any color image of a format given at construction (imported or transient); the
 // returned handles let later passes (overlays, copies, presentation) read the results. The
 // shadow atlas is imported through `imports` as "shadow atlas".
-#include <cstddef>
 #include <cstdint>
 #include <optional>
 
 #include "ecs/jobs/thread_pool.h"
 #include "ecs/world.h"
 #include "rendergraph/core/render_graph.h"
-#include "rendergraph/device/frame_buffers.h"
 #include "rendergraph/device/fwd.h"
 #include "rendergraph/vulkan/graph_imports.h"
 #include "systems/gpu/gpu_scene.h"
 #include "systems/gpu/gpu_textures.h"
+#include "systems/gpu/light_record_upload.h"
 #include "systems/lighting/depth_prepass.h"
 #include "systems/lighting/forward_pass.h"
 #include "systems/lighting/fused_forward_pass.h"
@@ -211,8 +210,7 @@ class SceneRenderer {
   // tiles' passes): returns its dropped (tile, light) pairs and adds its cut tiles to light_tiles_cut_.
   uint64_t read_light_tiles_feedback(uint32_t slot);
   ToneMapPass tone_map_;
-  vk::FrameBuffers light_records_;
-  std::size_t max_light_records_;  // what the device's texel buffers hold (maxTexelBufferElements)
+  LightRecordUpload light_records_;
   shadows::FrameLights lights_;
   uint64_t dropped_light_pairs_ = 0;
   uint64_t light_tiles_cut_ = 0;

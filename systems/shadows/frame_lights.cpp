@@ -5,6 +5,7 @@
 #include <array>
 #include <cassert>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -337,7 +338,8 @@ void place_cascades(FrameLights& lights, const CascadeCamera& camera, const scen
   }
 }
 
-void sort_by_group(FrameLights& out, std::span<GpuLight> sorted, jobs::ThreadPool* pool) {
+void sort_by_group(FrameLights& out, std::span<GpuLight> sorted, jobs::ThreadPool* pool,
+                   SortedChanges changes) {
   FrameLights::Scratch& scratch = out.scratch;
   const auto group_of = [](const GpuLight& record) {
     return light_group(shadow_kind(record), algorithm_of(record));
@@ -348,7 +350,7 @@ void sort_by_group(FrameLights& out, std::span<GpuLight> sorted, jobs::ThreadPoo
   // H200 host, 2026-12-01). Pieces of 128 records (26 KiB) keep a thousand lights on eight threads.
   constexpr size_t piece = 128;
   const size_t count = out.records.size();
-  assert(sorted.size() == count);
+  assert(sorted.size() == count && (changes.changed_at.empty() || changes.changed_at.size() == count));
   const size_t pieces = jobs::piece_count(count, piece);
   out.sorted_place.resize(count);  // each record's group, then its place
   scratch.piece_groups.assign(pieces * light_group_count, 0);
@@ -391,7 +393,12 @@ void sort_by_group(FrameLights& out, std::span<GpuLight> sorted, jobs::ThreadPoo
     for (size_t i = begin; i < end; ++i) {
       const uint32_t place = places[out.sorted_place[i]]++;
       out.sorted_place[i] = place;
-      sorted[place] = out.records[i];
+      if (changes.changed_at.empty()) {
+        sorted[place] = out.records[i];
+      } else if (std::memcmp(&sorted[place], &out.records[i], sizeof(GpuLight)) != 0) {
+        sorted[place] = out.records[i];
+        changes.changed_at[place] = changes.now;
+      }
     }
   });
 }

@@ -230,11 +230,19 @@ void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, con
 // the schedule, which gives the cascades' records their maps.
 void place_cascades(FrameLights& lights, const CascadeCamera& camera, const scene::Aabb& scene_bounds);
 
+// Where sort_by_group marks the places whose record changed: changed_at[place] becomes `now` where
+// the record put there differs from what the place held.
+struct SortedChanges {
+  std::span<uint64_t> changed_at;  // as many as places
+  uint64_t now = 0;
+};
+
 // Copies the records into `sorted` (as many places as records) by light group (stably, so
 // lights keep the world's order within a group), from each record's type, algorithm and whether
-// it has a shadow map, and fills sorted_place. The renderer passes the frame's mapped light
-// buffer, so that each record is copied once a frame. With `pool`, the records are counted and
-// copied on its threads.
-void sort_by_group(FrameLights& lights, std::span<GpuLight> sorted, jobs::ThreadPool* pool = nullptr);
+// it has a shadow map, and fills sorted_place. With `changes`, `sorted` holds the last call's
+// records, and a place whose record is the same is left as it is. With `pool`, the records are
+// counted and copied on its threads.
+void sort_by_group(FrameLights& lights, std::span<GpuLight> sorted, jobs::ThreadPool* pool = nullptr,
+                   SortedChanges changes = {});
 
 }  // namespace sg::shadows

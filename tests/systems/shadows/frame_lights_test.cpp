@@ -862,5 +862,49 @@ TEST(SortByGroup, OnAThreadPoolMovesTheRecordsAsSerially) {
   EXPECT_GT(pooled.group_begin[light_group_count - 1], pooled.group_begin[1]);  // several groups
 }
 
+// With changes asked for, a sort over the last sort's records marks the places whose record
+// changed, and only those (the renderer writes only them into the slots' buffers), on one thread
+// or several; where a record changes group, the records between its places move too.
+TEST(SortByGroup, MarksThePlacesWhoseRecordChanged) {
+  FrameLights lights;
+  for (uint32_t i = 0; i < 3000; ++i) {
+    GpuLight record;
+    record.position_range = glm::vec4(float(i), 0.0f, 0.0f, 1.0f);
+    record.info = {i % 2, 0u, 1u, 0u};
+    lights.records.push_back(record);
+  }
+  jobs::ThreadPool pool(4);
+  for (jobs::ThreadPool* p : {static_cast<jobs::ThreadPool*>(nullptr), &pool}) {
+    std::vector<GpuLight> sorted(lights.records.size());
+    std::vector<uint64_t> changed_at(lights.records.size(), 0);
+    sort_by_group(lights, sorted, p, {changed_at, 1});
+    EXPECT_EQ(std::count(changed_at.begin(), changed_at.end(), 1u), 3000);
+    EXPECT_EQ(std::memcmp(sorted.data(), sorted_by_group(lights).data(), sorted.size() * sizeof(GpuLight)),
+              0);
+
+    sort_by_group(lights, sorted, p, {changed_at, 2});
+    EXPECT_EQ(std::count(changed_at.begin(), changed_at.end(), 2u), 0) << "nothing changed";
+
+    FrameLights moved = lights;
+    moved.records[10].color_intensity.a = 3.0f;
+    sort_by_group(moved, sorted, p, {changed_at, 3});
+    EXPECT_EQ(std::count(changed_at.begin(), changed_at.end(), 3u), 1);
+    EXPECT_EQ(changed_at[moved.sorted_place[10]], 3u);
+    EXPECT_EQ(sorted[moved.sorted_place[10]].color_intensity.a, 3.0f);
+
+    // Record 0, the first point light with pcf, takes pcss with noise, the last group: the
+    // other 1,499 move up a place, and it takes the last.
+    moved.records[0].info.z = 4u;
+    const std::vector<GpuLight> before = sorted;
+    sort_by_group(moved, sorted, p, {changed_at, 4});
+    EXPECT_EQ(std::count(changed_at.begin(), changed_at.end(), 4u), 1500);
+    for (size_t place = 0; place < sorted.size(); ++place) {
+      const bool differs = std::memcmp(&before[place], &sorted[place], sizeof(GpuLight)) != 0;
+      EXPECT_EQ(changed_at[place] == 4u, differs) << place;
+    }
+    EXPECT_EQ(std::memcmp(sorted.data(), sorted_by_group(moved).data(), sorted.size() * sizeof(GpuLight)), 0);
+  }
+}
+
 }  // namespace
 }  // namespace sg::shadows

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+#include "systems/gpu/light_record_upload.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "rendergraph/device/context.h"
+#include "systems/lighting/light_resources.h"
+
+namespace sg {
+
+LightRecordUpload::LightRecordUpload(vk::VulkanContext& context, uint32_t frames_in_flight)
+    : buffers_(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+               frames_in_flight, "light records", light_record_texel_format),
+      max_records_(context.properties().limits.maxTexelBufferElements / (sizeof(shadows::GpuLight) / 16)),
+      uploaded_at_(frames_in_flight, 0) {}
+
+const vk::Buffer& LightRecordUpload::upload(shadows::FrameLights& lights, uint32_t slot,
+                                            jobs::ThreadPool* pool) {
+  const size_t count = lights.records.size();
+  if (count + lights.cascades.size() > max_records_) {
+    throw std::runtime_error(std::to_string(count) + " lights and " + std::to_string(lights.cascades.size()) +
+                             " cascades, but this device's texel buffers hold " +
+                             std::to_string(max_records_) + " light records");
+  }
+  ++uploads_;
+  if (sorted_.size() != count) {
+    sorted_.resize(count);
+    changed_at_.assign(count, uploads_);
+    resized_at_ = uploads_;
+  }
+  shadows::sort_by_group(lights, sorted_, pool, {changed_at_, uploads_});
+
+  const VkDeviceSize bytes = (count + lights.cascades.size()) * sizeof(shadows::GpuLight);
+  const bool grows = buffers_.buffer(slot).size() < bytes;
+  const vk::Buffer& buffer = buffers_.reserve(slot, bytes);
+  auto* mapped = static_cast<shadows::GpuLight*>(buffer.mapped());
+  const uint64_t uploaded_at = std::exchange(uploaded_at_[slot], uploads_);
+  const bool everything = grows || uploaded_at < resized_at_;
+  // Pieces of 512 records (104 KiB): writes into mapped device memory go faster from several cores.
+  jobs::run_in_pieces(pool, count, 512, [&](size_t begin, size_t end) {
+    if (everything) {
+      std::copy(sorted_.begin() + begin, sorted_.begin() + end, mapped + begin);
+      return;
+    }
+    for (size_t place = begin; place < end; ++place) {
+      if (changed_at_[place] > uploaded_at) mapped[place] = sorted_[place];
+    }
+  });
+  std::copy(lights.cascades.begin(), lights.cascades.end(), mapped + count);
+  return buffer;
+}
+
+}  // namespace sg
