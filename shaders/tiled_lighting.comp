@@ -61,10 +61,10 @@ vec3 shade_tile_batched(uint tile, bool surface, SurfacePoint p, vec3 position, 
 // the tile's list, a light a lane, only those whose range reaches the box around the warp's
 // surface points are shaded, in the list's order (the same sum), the warp looping over them
 // together: a tile's list holds every light that reaches its depth slices, and from afar many
-// miss a warp's pixels. With every group culled so, an H100 took 10.02-10.03 ms a frame against
-// 10.39-10.40 from afar and 21.57-21.58 against 21.96-21.97 at eye height (1920x1080, 100,000
-// lights, 2026-12-06), the cube groups' passes gaining and the 2D groups' not: a spot's cone,
-// bounded by a sphere, rejected too few to pay for its test. A short list is looped as it is.
+// miss a warp's pixels. An H100 took 10.80-10.82 ms a frame against 11.21-11.22 from afar and
+// 22.08-22.11 against 22.47 at eye height (1920x1080, 100,000 lights, 2026-12-06). The cube groups
+// alone take it: with every group culled so, the 2D groups' passes gained nothing, a spot's cone,
+// bounded by a sphere, rejecting too few to pay for its test. A short list is looped as it is.
 vec3 shade_tile_group_by_warp(uint tile, SurfacePoint p, vec3 position, float filter_floor) {
   uvec2 range = tile_ranges[tile * LIGHT_GROUP_COUNT + LIGHT_GROUP];
   if (range.y < 32u) return shade_tile_group(tile, p, position, filter_floor);
