@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "systems/gpu/light_record_upload.h"
+#include "systems/lighting/light_record_upload.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "ecs/jobs/thread_pool.h"
-#include "systems/gpu/light_record_upload.h"
+#include "systems/lighting/light_record_upload.h"
 #include "tests/support/gpu_test.h"
 
 namespace sg::test {
