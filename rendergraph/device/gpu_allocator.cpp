@@ -140,9 +140,12 @@ Allocation GpuAllocator::allocate(const VkMemoryRequirements& requirements, Memo
   }
   // Resources larger than a block get a block of their own size.
   const VkDeviceSize size = std::max(block_size_, requirements.size);
-  if (usage != MemoryUsage::stream || stream_in_host_memory_) return *place(create_block(type, tiling, size));
   // The device-local memory a CPU can map may be a window (256 MiB without resizable BAR) that
   // other processes share: where it runs out, streamed data takes host memory, as upload's.
+  if (usage != MemoryUsage::stream || stream_in_host_memory_ ||
+      type == choose_memory_type(memory_properties_, requirements.memoryTypeBits, MemoryUsage::upload)) {
+    return *place(create_block(type, tiling, size));
+  }
   try {
     return *place(create_block(type, tiling, size));
   } catch (const VulkanError& error) {
