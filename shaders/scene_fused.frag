@@ -75,25 +75,8 @@ void main() {
   uint next = 0u;
   // A call a group slot (group_slots.glsl), each with a group that is a constant, so that its shadow
   // code is resolved when the pipeline is built.
-  color += shade_group(slot_group(0u), next, p);
-#if GROUP_SLOTS > 1
-  color += shade_group(slot_group(1u), next, p);
-#endif
-#if GROUP_SLOTS > 2
-  color += shade_group(slot_group(2u), next, p);
-#endif
-#if GROUP_SLOTS > 3
-  color += shade_group(slot_group(3u), next, p);
-#endif
-#if GROUP_SLOTS > 4
-  color += shade_group(slot_group(4u), next, p);
-  color += shade_group(slot_group(5u), next, p);
-  color += shade_group(slot_group(6u), next, p);
-  color += shade_group(slot_group(7u), next, p);
-  color += shade_group(slot_group(8u), next, p);
-  color += shade_group(slot_group(9u), next, p);
-  color += shade_group(slot_group(10u), next, p);
-#endif
+#define SHADE_SLOT(slot) color += shade_group(slot_group(slot), next, p);
+  FOR_EACH_GROUP_SLOT(SHADE_SLOT)
 #ifdef TRANSPARENT
   if (frame.counts.w == 1u) color = tone_map(color, uintBitsToFloat(frame.counts.z));
   out_color = vec4(color, fragment_base_color().a);

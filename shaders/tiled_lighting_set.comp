@@ -32,10 +32,9 @@ vec3 shade_set_slot(uint slot, SurfacePoint p, vec3 position, float filter_floor
 // A group set's lights at the surface point: one pass for the tile's groups, which pays for the
 // G-buffer and the lit sum once. Each group keeps its own algorithm's and light types' code.
 vec3 shade_tile_set(SurfacePoint p, vec3 position, float filter_floor) {
-  vec3 color = shade_set_slot(0u, p, position, filter_floor);
-  color += shade_set_slot(1u, p, position, filter_floor);
-  color += shade_set_slot(2u, p, position, filter_floor);
-  color += shade_set_slot(3u, p, position, filter_floor);
+  vec3 color = vec3(0.0);
+#define SHADE_SLOT(slot) color += shade_set_slot(slot, p, position, filter_floor);
+  FOR_EACH_GROUP_SLOT(SHADE_SLOT)
   return color;
 }
 

@@ -53,25 +53,8 @@ void main() {
   vec3 color = frame.ambient.rgb * p.base_color;
   // A call a group slot (group_slots.glsl), each with a group that is a constant, so that its shadow
   // code is resolved when the pipeline is built.
-  color += shade_group(slot_group(0u), tile, p);
-#if GROUP_SLOTS > 1
-  color += shade_group(slot_group(1u), tile, p);
-#endif
-#if GROUP_SLOTS > 2
-  color += shade_group(slot_group(2u), tile, p);
-#endif
-#if GROUP_SLOTS > 3
-  color += shade_group(slot_group(3u), tile, p);
-#endif
-#if GROUP_SLOTS > 4
-  color += shade_group(slot_group(4u), tile, p);
-  color += shade_group(slot_group(5u), tile, p);
-  color += shade_group(slot_group(6u), tile, p);
-  color += shade_group(slot_group(7u), tile, p);
-  color += shade_group(slot_group(8u), tile, p);
-  color += shade_group(slot_group(9u), tile, p);
-  color += shade_group(slot_group(10u), tile, p);
-#endif
+#define SHADE_SLOT(slot) color += shade_group(slot_group(slot), tile, p);
+  FOR_EACH_GROUP_SLOT(SHADE_SLOT)
   if (frame.counts.w == 1u) color = tone_map(color, uintBitsToFloat(frame.counts.z));
   out_color = vec4(color, fragment_base_color().a);
 }
