@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -12,6 +11,7 @@
 #include "ecs/transform.h"
 #include "rendergraph/device/upload.h"
 #include "rendergraph/vulkan/pass_recorder.h"
+#include "systems/gpu/changed_items_copy.h"
 #include "systems/gpu/shader_bindings.h"
 #include "systems/scene/material.h"
 #include "systems/scene/mesh_instance.h"
@@ -303,16 +303,8 @@ void GpuScene::upload(uint32_t slot, jobs::ThreadPool* pool) {
   const vk::Buffer& buffer = instances_.reserve(slot, instances.size_bytes());
   auto* mapped = static_cast<GpuInstance*>(buffer.mapped());
   const uint64_t uploaded_at = std::exchange(uploaded_at_[slot], gathers_);
-  const bool everything = grows || uploaded_at < laid_out_at_;
-  jobs::run_in_pieces(pool, instances.size(), 1024, [&](size_t begin, size_t end) {
-    if (everything) {
-      std::memcpy(mapped + begin, instances.data() + begin, (end - begin) * sizeof(GpuInstance));
-      return;
-    }
-    for (size_t i = begin; i < end; ++i) {
-      if (written_at_[i] > uploaded_at) mapped[i] = instances[i];
-    }
-  });
+  copy_changed_items(mapped, instances, std::span<const uint64_t>(written_at_), uploaded_at,
+                     grows || uploaded_at < laid_out_at_, 1024, pool);
   draws_.write(slot, std::span<const VkDrawIndexedIndirectCommand>(commands_));
 }
 

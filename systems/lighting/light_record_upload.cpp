@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "rendergraph/device/context.h"
+#include "systems/gpu/changed_items_copy.h"
 #include "systems/lighting/light_resources.h"
 
 namespace sg {
@@ -26,10 +27,9 @@ const vk::Buffer& LightRecordUpload::upload(shadows::FrameLights& lights, uint32
                              std::to_string(max_records_) + " light records");
   }
   ++uploads_;
-  if (sorted_.size() != count) {
+  if (sorted_.size() != count) {  // every place changes, for every slot
     sorted_.resize(count);
     changed_at_.assign(count, uploads_);
-    resized_at_ = uploads_;
   }
   shadows::sort_by_group(lights, sorted_, pool, {changed_at_, uploads_});
 
@@ -37,18 +37,10 @@ const vk::Buffer& LightRecordUpload::upload(shadows::FrameLights& lights, uint32
   const bool grows = buffers_.buffer(slot).size() < bytes;
   const vk::Buffer& buffer = buffers_.reserve(slot, bytes);
   auto* mapped = static_cast<shadows::GpuLight*>(buffer.mapped());
-  const uint64_t uploaded_at = std::exchange(uploaded_at_[slot], uploads_);
-  const bool everything = grows || uploaded_at < resized_at_;
-  // Pieces of 512 records (104 KiB): writes into mapped device memory go faster from several cores.
-  jobs::run_in_pieces(pool, count, 512, [&](size_t begin, size_t end) {
-    if (everything) {
-      std::copy(sorted_.begin() + begin, sorted_.begin() + end, mapped + begin);
-      return;
-    }
-    for (size_t place = begin; place < end; ++place) {
-      if (changed_at_[place] > uploaded_at) mapped[place] = sorted_[place];
-    }
-  });
+  // Pieces of 512 records (104 KiB).
+  copy_changed_items(mapped, std::span<const shadows::GpuLight>(sorted_),
+                     std::span<const uint64_t>(changed_at_), std::exchange(uploaded_at_[slot], uploads_),
+                     grows, 512, pool);
   std::copy(lights.cascades.begin(), lights.cascades.end(), mapped + count);
   return buffer;
 }

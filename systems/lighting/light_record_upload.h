@@ -34,7 +34,6 @@ class LightRecordUpload {
   std::vector<uint64_t> changed_at_;   // by place: the upload that last changed its record
   std::vector<uint64_t> uploaded_at_;  // by slot: the upload whose records it holds
   uint64_t uploads_ = 0;
-  uint64_t resized_at_ = 0;  // the upload that last changed the records' count
 };
 
 }  // namespace sg
