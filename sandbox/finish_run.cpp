@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <optional>
 #include <span>
 #include <string>
@@ -79,17 +80,29 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
                SandboxFrame& sandbox_frame, const RunRecord& record) {
   Frame& frame = sandbox_frame.frame();
   const bool rendered = !record.cpu_frame_ms.empty();
+  // Each output is written whatever became of the ones before it, so that a screenshot the disk
+  // refused does not cost the run's --stats as well; the failures end the program with 1.
+  std::vector<std::string> failures;
+  const auto write = [&failures](const auto& output) {
+    try {
+      output();
+    } catch (const std::exception& error) {
+      failures.emplace_back(error.what());
+    }
+  };
   if (!options.screenshot.empty() && !rendered) {
     std::printf("shadowgraph: no frame was rendered, so no screenshot was written\n");
   } else if (!options.screenshot.empty()) {
-    write_png(options.screenshot, vk::read_rgba8(context, frame.image()));
-    std::printf("shadowgraph: wrote %s\n", options.screenshot.c_str());
+    write([&] {
+      write_png(options.screenshot, vk::read_rgba8(context, frame.image()));
+      std::printf("shadowgraph: wrote %s\n", options.screenshot.c_str());
+    });
   }
 
-  if (!options.export_gltf.empty()) sandbox_frame.export_gltf(options.export_gltf);
+  if (!options.export_gltf.empty()) write([&] { sandbox_frame.export_gltf(options.export_gltf); });
 
   if (!options.dump_shadow_maps.empty() && rendered) {
-    dump_shadow_maps(context, frame.renderer(), options.dump_shadow_maps);
+    write([&] { dump_shadow_maps(context, frame.renderer(), options.dump_shadow_maps); });
   }
 
   RunStats stats;
@@ -290,14 +303,18 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
     stats.settings.push_back({std::string(setting.info.name), setting.info.type, setting.get(options)});
   }
   if (!options.stats_path.empty()) {
-    write_stats_json(options.stats_path, stats);
-    std::printf("shadowgraph: wrote %s\n", options.stats_path.c_str());
+    write([&] {
+      write_stats_json(options.stats_path, stats);
+      std::printf("shadowgraph: wrote %s\n", options.stats_path.c_str());
+    });
   }
+  for (const std::string& failure : failures)
+    std::fprintf(stderr, "shadowgraph: error: %s\n", failure.c_str());
   if (stats.validation_errors) {
     std::printf("shadowgraph: validation errors: %u\n", *stats.validation_errors);
     if (*stats.validation_errors > 0) return 3;
   }
-  return 0;
+  return failures.empty() ? 0 : 1;
 }
 
 }  // namespace sg::sandbox

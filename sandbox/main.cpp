@@ -3,11 +3,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <optional>
+#include <stdexcept>
+#include <string>
 
 #include <GLFW/glfw3.h>
 
 #include "sandbox/options.h"
 #include "sandbox/run.h"
+#include "systems/frame/output_path.h"
 
 namespace {
 
@@ -34,7 +38,13 @@ int main(int argc, char** argv) {
       std::printf("shadowgraph: cannot open the display: rendering headless\n");
       options.headless = true;
     }
-    if (options.headless && options.screenshot.empty()) options.screenshot = "shadowgraph.png";
+    if (options.headless && options.screenshot.empty()) {
+      options.screenshot = "shadowgraph.png";
+      if (const std::optional<std::string> problem = sg::output_path_problem(options.screenshot)) {
+        throw std::runtime_error("cannot write the picture: " + *problem +
+                                 " (--screenshot PATH chooses another)");
+      }
+    }
     const int code =
         options.headless ? sg::sandbox::run_headless(options) : sg::sandbox::run_windowed(options);
     if (!options.headless) glfwTerminate();

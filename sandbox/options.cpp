@@ -47,7 +47,7 @@ std::vector<Setting<O>> make_table() {
       whole<O>(
           "frames", "N", [](auto& o) -> auto& { return o.frames; }, 1, 1'000'000,
           "render N frames, then exit (headless default: 3)"),
-      text<O>(
+      output_file<O>(
           "screenshot", "PNG", [](auto& o) -> auto& { return o.screenshot; },
           "write the last frame as PNG (headless default: shadowgraph.png)"),
       no_vsync,
@@ -56,7 +56,7 @@ std::vector<Setting<O>> make_table() {
           "in a window, start a frame at most N times a second (0: no cap; also in the Frame panel)"),
       ui,
       script,
-      text<O>(
+      output_file<O>(
           "stats", "JSON", [](auto& o) -> auto& { return o.stats_path; },
           "write facts about the run as JSON (keys listed in sandbox/run_stats.h)"),
       flag<O>(
@@ -70,7 +70,7 @@ std::vector<Setting<O>> make_table() {
       text<O>(
           "dump-shadow-maps", "DIR", [](auto& o) -> auto& { return o.dump_shadow_maps; },
           "after the run, write every light's shadow map as grey PNGs into DIR"),
-      text<O>(
+      output_file<O>(
           "export-gltf", "PATH", [](auto& o) -> auto& { return o.export_gltf; },
           "after the run, write the scene with its edited lights, their shadow settings and the view as "
           "glTF (.gltf, or .glb by the extension), which --scene PATH loads back to the same frame"),

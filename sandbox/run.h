@@ -17,8 +17,9 @@ class SandboxFrame;
 int run_headless(const Options& options);
 int run_windowed(const Options& options);
 
-// Shared ending: writes the screenshot and the --stats file if asked for, prints a summary of
-// the run, and returns 0, or 3 when the validation layer reported errors.
+// Shared ending: writes the screenshot, export, shadow maps and --stats file asked for, each
+// whatever became of the others, prints a summary of the run, and returns 0, 3 when the
+// validation layer reported errors, or 1 when an output could not be written.
 int finish_run(const Options& options, vk::VulkanContext& context, const SceneView& scene,
                SandboxFrame& frame, const RunRecord& record);
 

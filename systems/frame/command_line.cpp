@@ -9,6 +9,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "systems/frame/output_path.h"
+
 namespace sg {
 namespace {
 
@@ -86,6 +88,14 @@ void add_setting(CLI::App& app, const SettingInfo& info, const std::optional<std
 void add_exclusions(CLI::App& app, const SettingInfo& info) {
   CLI::Option* option = app.get_option("--" + std::string(info.name));
   for (const std::string_view other : info.excludes) option->excludes("--" + std::string(other));
+}
+
+void check_writable_output(CLI::Option& option) {
+  option.check(CLI::Validator(
+      [](const std::string& path) {
+        return path.empty() ? std::string() : output_path_problem(path).value_or(std::string());
+      },
+      ""));
 }
 
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {

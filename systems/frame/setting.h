@@ -11,12 +11,14 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "systems/frame/output_path.h"
 #include "systems/scene/enum_names.h"
 
 namespace sg {
@@ -154,6 +156,22 @@ Setting<Settings> text(std::string_view name, std::string_view value_name, Field
             return field(s).empty() ? std::nullopt : std::optional(field(s));
           },
           [field](Settings& s, const std::string& value) { field(s) = value; }};
+}
+
+// --NAME PATH sets a string field to a file the run writes (empty: none): a path that cannot be
+// written (output_path_problem) is a usage error.
+template <class Settings, class Field>
+Setting<Settings> output_file(std::string_view name, std::string_view value_name, Field field,
+                              std::string_view help) {
+  Setting<Settings> setting = text<Settings>(name, value_name, field, help);
+  setting.set = [field](Settings& s, const std::string& path) {
+    if (!path.empty()) {
+      if (const std::optional<std::string> problem = output_path_problem(path))
+        throw std::runtime_error(*problem);
+    }
+    field(s) = path;
+  };
+  return setting;
 }
 
 // A table's setting applied to the `Inner` settings that `inner` finds in `Outer` (the frame's

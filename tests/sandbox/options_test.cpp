@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -211,6 +212,19 @@ struct Refusal {
   std::string message;  // a fragment of what the user is told
 };
 
+// Each command line is refused with exit code 2 and its message.
+void expect_refused(const std::vector<Refusal>& refusals) {
+  for (const Refusal& refusal : refusals) {
+    testing::internal::CaptureStderr();
+    const ParseResult result = parse(refusal.args);
+    const std::string printed = testing::internal::GetCapturedStderr();
+    const std::string command_line = refusal.args[0] + (refusal.args.size() > 1 ? " " + refusal.args[1] : "");
+    EXPECT_FALSE(result.options.has_value()) << command_line;
+    EXPECT_EQ(result.exit_code, 2) << command_line;
+    EXPECT_NE(printed.find(refusal.message), std::string::npos) << command_line << " printed: " << printed;
+  }
+}
+
 TEST(SandboxOptions, ImpossibleValuesAreUsageErrors) {
   const std::vector<Refusal> refusals = {
       {{"--scene-triangles", "0"}, "\"0\" is not a whole number in [1, 100000000]"},
@@ -235,15 +249,25 @@ TEST(SandboxOptions, ImpossibleValuesAreUsageErrors) {
       {{"--no-such-option"}, "--no-such-option"},
       {{"--scene"}, "--scene"},
   };
-  for (const Refusal& refusal : refusals) {
-    testing::internal::CaptureStderr();
-    const ParseResult result = parse(refusal.args);
-    const std::string printed = testing::internal::GetCapturedStderr();
-    const std::string command_line = refusal.args[0] + (refusal.args.size() > 1 ? " " + refusal.args[1] : "");
-    EXPECT_FALSE(result.options.has_value()) << command_line;
-    EXPECT_EQ(result.exit_code, 2) << command_line;
-    EXPECT_NE(printed.find(refusal.message), std::string::npos) << command_line << " printed: " << printed;
-  }
+  expect_refused(refusals);
+}
+
+// The files a run writes at its end are checked before its first frame: a mistyped folder costs
+// nothing, where it once cost the run and, for the screenshot, its --stats too.
+TEST(SandboxOptions, OutputsThatCannotBeWrittenAreUsageErrors) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "shadowgraph-options-test";
+  std::filesystem::create_directories(folder);
+  const std::filesystem::path missing = folder / "missing";
+  expect_refused({
+      {{"--stats", (missing / "run.json").string()},
+       std::string("the folder \"").append(missing.string()).append("\" does not exist")},
+      {{"--screenshot", folder.string()},
+       std::string(1, '"').append(folder.string()).append("\" is a folder, not a file")},
+      {{"--export-gltf", (missing / "scene.glb").string()}, "does not exist"},
+  });
+  const std::string stats = (folder / "run.json").string();
+  EXPECT_EQ(parse_ok({"--stats", stats}).stats_path, stats);
+  EXPECT_TRUE(parse_ok({"--screenshot", ""}).screenshot.empty());  // empty: no file
 }
 
 TEST(SandboxOptions, HelpExitsWithZero) {

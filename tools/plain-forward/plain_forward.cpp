@@ -41,6 +41,7 @@
 #include "rendergraph/device/resources.h"
 #include "rendergraph/device/upload.h"
 #include "rendergraph/vulkan/pass_timer.h"
+#include "systems/frame/command_line.h"
 #include "systems/frame/png.h"
 #include "systems/frame/time_summary.h"
 #include "systems/scene/builtin_scenes.h"
@@ -354,7 +355,8 @@ int main(int argc, char** argv) {
   app.add_option("--height", height, "Frame height in pixels")->check(CLI::Range(1u, 16384u));
   app.add_option("--frames", frames, "Frames to draw; the first is left out of the medians")
       ->check(CLI::Range(2u, 100000u));
-  app.add_option("--screenshot", screenshot, "Write the last frame as PNG")->option_text("PNG");
+  sg::check_writable_output(
+      *app.add_option("--screenshot", screenshot, "Write the last frame as PNG")->option_text("PNG"));
   app.add_option("--device", context_options.device_name,
                  "Use the Vulkan device whose name contains NAME (case-insensitive)")
       ->option_text("NAME");

@@ -66,7 +66,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--images", settings.image_folder, "Folder for the PNGs per light (empty: none)")
       ->capture_default_str();
-  app.add_option("--json", json_path, "Where the results go as JSON (empty: nowhere)")->capture_default_str();
+  sg::check_writable_output(
+      *app.add_option("--json", json_path, "Where the results go as JSON (empty: nowhere)")
+           ->capture_default_str());
   app.add_option("--cost-frames", settings.cost_frames,
                  "Frames per algorithm for the GPU cost on the whole scene (0: not measured)")
       ->check(CLI::Range(0u, 100000u))
