@@ -3,8 +3,11 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+
+#include "systems/frame/output_path.h"
 
 namespace sg::sandbox {
 namespace {
@@ -91,6 +94,9 @@ std::vector<ScriptStep> parse_script(const std::string& text, const std::string&
       step.command = ScriptStep::Open{rest};
     } else if (command == "screenshot") {
       if (rest.empty()) fail(path, line, "screenshot takes a PNG path");
+      if (const std::optional<std::string> problem = output_path_problem(rest)) {
+        fail(path, line, "screenshot: " + *problem);
+      }
       step.command = ScriptStep::Screenshot{rest};
     } else {
       fail(path, line, "unknown command \"" + command + "\"");

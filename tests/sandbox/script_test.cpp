@@ -20,7 +20,7 @@ TEST(Script, ParsesEveryCommandAndSkipsCommentsAndBlankLines) {
       "move 1 2.5 -3\n"
       "camera 0,12,0,0,0,0\n"
       "wait 5\n"
-      "screenshot out dir/shot.png\n"
+      "screenshot shot one.png\n"
       "view shadows\n"
       "update on_demand\n"
       "priority -1.5\n"
@@ -35,7 +35,7 @@ TEST(Script, ParsesEveryCommandAndSkipsCommentsAndBlankLines) {
   EXPECT_EQ(std::get<ScriptStep::Move>(steps[3].command).position, glm::vec3(1.0f, 2.5f, -3.0f));
   EXPECT_EQ(std::get<ScriptStep::Camera>(steps[4].command).pose.eye, glm::vec3(0.0f, 12.0f, 0.0f));
   EXPECT_EQ(std::get<ScriptStep::Wait>(steps[5].command).frames, 5u);
-  EXPECT_EQ(std::get<ScriptStep::Screenshot>(steps[6].command).path, "out dir/shot.png");
+  EXPECT_EQ(std::get<ScriptStep::Screenshot>(steps[6].command).path, "shot one.png");
   EXPECT_EQ(steps[6].line, 9);
   EXPECT_EQ(std::get<ScriptStep::View>(steps[7].command).view, LightingView::shadows);
   EXPECT_EQ(std::get<ScriptStep::Update>(steps[8].command).update, scene::ShadowUpdate::on_demand);
@@ -70,6 +70,9 @@ TEST(Script, ErrorsNameTheFileAndLine) {
   EXPECT_EQ(error_of("view depth"), "run.txt:1: view takes lit or shadows, got \"depth\"");
   EXPECT_EQ(error_of("open"), "run.txt:1: open takes a .gltf or .glb path or a built-in scene's name");
   EXPECT_NE(error_of("camera 1,2,3,1,2,3").find("run.txt:1: "), std::string::npos);
+  // Checked with the script, not when the step comes, after the frames before it.
+  EXPECT_EQ(error_of("wait 1\nscreenshot /nonexistent/shot.png"),
+            "run.txt:2: screenshot: the folder \"/nonexistent\" does not exist");
   EXPECT_THROW(load_script("/nonexistent/script.txt"), std::runtime_error);
 }
 
