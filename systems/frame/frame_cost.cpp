@@ -9,6 +9,7 @@
 #include "systems/frame/gpu_time_log.h"
 #include "systems/frame/headless_frames.h"
 #include "systems/frame/scene_view.h"
+#include "systems/shadows/frame_lights.h"
 
 namespace sg {
 
@@ -31,7 +32,7 @@ FrameCost measure_frame_cost(vk::VulkanContext& context, const FrameSettings& se
   }
   if (const auto frame_ms = summarize(log.frame_ms())) cost.frame_ms = frame_ms->median;
   const shadows::FrameLights& lights = frame.renderer().lights();
-  cost.shadowed_lights = static_cast<uint32_t>(lights.maps.size() + lights.cubes.size());
+  cost.shadowed_lights = shadows::shadowed_light_count(lights);
   return cost;
 }
 

@@ -13,7 +13,7 @@ struct FrameCost {
   double lighting_ms = 0.0;      // the median per frame of every pass but the shadow-map passes
   double shadow_maps_ms = 0.0;   // the median per frame of the passes named "shadow ..."
   double frame_ms = 0.0;         // the median GPU frame
-  uint32_t shadowed_lights = 0;  // lights with a shadow map in the last frame
+  uint32_t shadowed_lights = 0;  // lights with a shadow map in the last frame (a sun's cascades: one)
 };
 
 // Loads settings.scene and renders `frames` headless frames of it (render_headless_frames), after

@@ -200,6 +200,12 @@ uint64_t cascade_key(ecs::Entity entity, uint32_t cascade) {
   return ecs::entity_key(entity) | uint64_t{cascade + 1} << cascade_key_shift;
 }
 
+uint32_t shadowed_light_count(const FrameLights& lights) {
+  // Every cascaded light has a first cascade (number 1); views that are no cascade have 0.
+  const auto first_view = [](const ShadowMapView& map) { return view_cascade_number(map.key) <= 1; };
+  return static_cast<uint32_t>(lights.cubes.size() + std::ranges::count_if(lights.maps, first_view));
+}
+
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
                    FrameLights& out, jobs::ThreadPool* pool) {
   const ecs::Tick since = out.gathered_at;

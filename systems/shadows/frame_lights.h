@@ -224,6 +224,9 @@ struct FrameLights {
 void gather_lights(const ecs::World& world, const scene::Aabb& scene_bounds, const LightOverrides& overrides,
                    FrameLights& out, jobs::ThreadPool* pool = nullptr);
 
+// The lights with a shadow view in `lights`: a directional light's cascades count once.
+uint32_t shadowed_light_count(const FrameLights& lights);
+
 // Fits the cascades of every cascaded directional light to `camera` over the scene within
 // `scene_bounds` (fit_cascades): each cascade view's LightView, `needed` and `changed` (its view
 // is not the one it had) and the light's record's count of cascades. Between gather_lights and

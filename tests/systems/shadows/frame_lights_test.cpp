@@ -101,6 +101,23 @@ TEST(FrameLights, EveryLightGetsARecordAndShadowCastersGetViews) {
   for (const GpuLight& record : lights.records) EXPECT_EQ(record.info.w, no_shadow_map);
 }
 
+// A sun's cascades are views of one light: per-light figures (shadowgraph-algorithm-costs) divide
+// by the lights.
+TEST(FrameLights, CountsACascadedSunAsOneShadowedLight) {
+  scene::Scene scene = five_lights();
+  FrameLights lights;
+  gather_lights(scene.world, bounds, {}, lights);
+  EXPECT_EQ(shadowed_light_count(lights), 4u);  // "fill" casts none
+
+  scene::ShadowSettings cascaded = shadow_at(1024);
+  cascaded.cascades = 3;
+  scene::add_light(scene, scene::DirectionalLight{}, above, cascaded, "sun");
+  ecs::update_world_transforms(scene.world, 0);
+  gather_lights(scene.world, bounds, {}, lights);
+  ASSERT_EQ(lights.maps.size(), 5u);  // the key spot, the single-map sun, the sun's three cascades
+  EXPECT_EQ(shadowed_light_count(lights), 5u);
+}
+
 // Gathering on a thread pool splits the lights into chunks; the result must not depend on it.
 TEST(FrameLights, AThreadPoolGathersTheSameLights) {
   scene::Scene scene;
