@@ -9,6 +9,7 @@
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/readback.h"
+#include "sandbox/interrupt.h"
 #include "sandbox/run.h"
 #include "sandbox/run_stats.h"
 #include "sandbox/sandbox_frame.h"
@@ -80,6 +81,12 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
                SandboxFrame& sandbox_frame, const RunRecord& record) {
   Frame& frame = sandbox_frame.frame();
   const bool rendered = !record.cpu_frame_ms.empty();
+  if (interrupted()) {
+    std::printf(
+        "shadowgraph: interrupted after %zu frames: writing what they measured (a second Ctrl-C "
+        "ends at once)\n",
+        record.cpu_frame_ms.size());
+  }
   // Each output is written whatever became of the ones before it, so that a screenshot the disk
   // refused does not cost the run's --stats as well; the failures end the program with 1.
   std::vector<std::string> failures;
@@ -113,6 +120,7 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
   stats.scene_height = frame.scene_extent().height;
   stats.render_scale_changes = sandbox_frame.render_scale_changes();
   stats.frames = record.cpu_frame_ms.size();
+  stats.interrupted = interrupted();
   stats.scene_name = scene.scene.name;
   stats.scene = scene::scene_stats(scene.scene);
   stats.cpu_frame_ms = summarize(record.cpu_frame_ms);
@@ -314,7 +322,8 @@ int finish_run(const Options& options, vk::VulkanContext& context, const SceneVi
     std::printf("shadowgraph: validation errors: %u\n", *stats.validation_errors);
     if (*stats.validation_errors > 0) return 3;
   }
-  return failures.empty() ? 0 : 1;
+  if (!failures.empty()) return 1;
+  return interrupted() ? 130 : 0;  // 128 + SIGINT, as shells report a run Ctrl-C ended
 }
 
 }  // namespace sg::sandbox

@@ -24,6 +24,9 @@ bool display_available() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Line by line into a file or a pipe too, so that a long run's log (its progress) shows as it
+  // goes, not when the buffer fills or the program ends.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   sg::sandbox::ParseResult parsed = sg::sandbox::parse_options(argc, argv);
   if (!parsed.options) return parsed.exit_code;
   sg::sandbox::Options options = *parsed.options;

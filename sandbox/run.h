@@ -19,7 +19,8 @@ int run_windowed(const Options& options);
 
 // Shared ending: writes the screenshot, export, shadow maps and --stats file asked for, each
 // whatever became of the others, prints a summary of the run, and returns 0, 3 when the
-// validation layer reported errors, or 1 when an output could not be written.
+// validation layer reported errors, 1 when an output could not be written, or 130 when a
+// signal ended the run early (interrupt.h).
 int finish_run(const Options& options, vk::VulkanContext& context, const SceneView& scene,
                SandboxFrame& frame, const RunRecord& record);
 

@@ -12,6 +12,7 @@
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/frame_ring.h"
 #include "rendergraph/device/readback.h"
+#include "sandbox/interrupt.h"
 #include "sandbox/run.h"
 #include "sandbox/sandbox_frame.h"
 #include "sandbox/script.h"
@@ -47,6 +48,7 @@ RunRecord run_script(const Options& options, vk::VulkanContext& context, SceneVi
   uint64_t rendered = 0;
   ecs::Entity selected = ecs::null_entity;
   for (const ScriptStep& step : steps) {
+    if (interrupted()) break;
     const std::string where = options.script + ":" + std::to_string(step.line);
     const auto need_light = [&] {
       if (selected == ecs::null_entity)
@@ -73,9 +75,9 @@ RunRecord run_script(const Options& options, vk::VulkanContext& context, SceneVi
           } else if constexpr (std::is_same_v<Command, ScriptStep::Camera>) {
             scene.pose = command.pose;
           } else if constexpr (std::is_same_v<Command, ScriptStep::Wait>) {
-            record.append(
-                render_headless_frames(frame->frame(), frames, command.frames, gpu_times, false, rendered));
-            rendered += command.frames;
+            record.append(render_headless_frames(frame->frame(), frames, command.frames, gpu_times, false,
+                                                 rendered, &interrupted()));
+            rendered = record.cpu_frame_ms.size();
           } else if constexpr (std::is_same_v<Command, ScriptStep::View>) {
             frame->set_view(command.view);
           } else if constexpr (std::is_same_v<Command, ScriptStep::Save>) {
@@ -115,10 +117,11 @@ int run_headless(const Options& options) {
   auto frame = std::make_unique<SandboxFrame>(context, scene, options, frames.frames_in_flight());
   frame->fit({settings.width, settings.height}, false);
   GpuTimeLog gpu_times;
-  const RunRecord record =
-      options.script.empty()
-          ? render_headless_frames(frame->frame(), frames, options.frames.value_or(3), gpu_times, true)
-          : run_script(options, context, scene, frame, frames, gpu_times);
+  catch_interrupts();
+  const RunRecord record = options.script.empty()
+                               ? render_headless_frames(frame->frame(), frames, options.frames.value_or(3),
+                                                        gpu_times, true, 0, &interrupted())
+                               : run_script(options, context, scene, frame, frames, gpu_times);
   return finish_run(options, context, scene, *frame, record);
 }
 

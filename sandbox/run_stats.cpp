@@ -118,6 +118,7 @@ Json stats_json(const RunStats& stats) {
           {"scene_resolution", {{"width", stats.scene_width}, {"height", stats.scene_height}}},
           {"render_scale_changes", stats.render_scale_changes},
           {"frames", stats.frames},
+          {"interrupted", stats.interrupted},
           {"scene",
            {{"name", stats.scene_name},
             {"triangles", scene.triangles},

@@ -17,6 +17,8 @@
 //                                                // render scale to the frame time (the last
 //                                                // one is scene_resolution's)
 //   "frames": 3,                                 // frames rendered
+//   "interrupted": false,                        // a signal (Ctrl-C) ended the run early: the
+//                                                // figures are of the frames before it
 //   "scene": {
 //     "name": "default",                         // built-in name or the file path
 //     "triangles": 1234, "entities": 56, "mesh_instances": 20,
@@ -157,6 +159,7 @@ struct RunStats {
   std::uint32_t scene_height = 0;
   std::uint32_t render_scale_changes = 0;  // SandboxFrame::render_scale_changes
   std::uint64_t frames = 0;
+  bool interrupted = false;  // interrupt.h
   std::string scene_name;
   scene::SceneStats scene;  // scene::scene_stats of the rendered scene
   std::optional<TimeSummary> cpu_frame_ms;

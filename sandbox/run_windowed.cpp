@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "rendergraph/device/context.h"
+#include "sandbox/interrupt.h"
 #include "sandbox/run.h"
 #include "sandbox/window_session.h"
 
@@ -10,8 +11,10 @@ namespace sg::sandbox {
 int run_windowed(const Options& options) {
   WindowSession session(options);
   std::printf("shadowgraph: window on %s (Esc closes)\n", session.context().device_name().c_str());
+  catch_interrupts();
   const size_t frame_limit = options.frames.value_or(UINT32_MAX);
-  while (session.frame_ms().size() < frame_limit && session.frame() != FrameResult::closed) {
+  while (session.frame_ms().size() < frame_limit && !interrupted() &&
+         session.frame() != FrameResult::closed) {
   }
   session.finish();
   return finish_run(options, session.context(), session.scene(), session.sandbox_frame(),

@@ -23,11 +23,13 @@ void RunRecord::append(const RunRecord& later) {
 }
 
 RunRecord render_headless_frames(Frame& frame, vk::FrameRing& ring, uint32_t count, GpuTimeLog& gpu_times,
-                                 bool progress, uint64_t first_frame) {
+                                 bool progress, uint64_t first_frame, const std::atomic<bool>* stop) {
   constexpr double frame_seconds = 1.0 / 60.0;
   RunRecord record{{}, {}, &gpu_times};
   auto previous_start = std::chrono::steady_clock::now();
-  for (uint32_t i = 0; i < count; ++i) {
+  const auto stopped = [stop] { return stop && stop->load(std::memory_order_relaxed); };
+  uint32_t i = 0;
+  for (; i < count && !stopped(); ++i) {
     const auto frame_start = std::chrono::steady_clock::now();  // before the waits
     if (i > 0) record.wall_frame_ms.push_back(milliseconds(frame_start - previous_start));
     previous_start = frame_start;
@@ -41,13 +43,14 @@ RunRecord render_headless_frames(Frame& frame, vk::FrameRing& ring, uint32_t cou
       std::printf("shadowgraph: %u/%u frames\n", i + 1, count);
     }
   }
+  const uint32_t rendered = i;
   ring.wait_idle();
-  if (count > 0)
+  if (rendered > 0)
     record.wall_frame_ms.push_back(milliseconds(std::chrono::steady_clock::now() - previous_start));
   // The last frames' timestamps are readable now that the GPU is idle, oldest first.
   const uint32_t in_flight = ring.frames_in_flight();
-  for (uint32_t i = count > in_flight ? count - in_flight : 0; i < count; ++i) {
-    frame.executor().collect_timings(i % in_flight);
+  for (uint32_t k = rendered > in_flight ? rendered - in_flight : 0; k < rendered; ++k) {
+    frame.executor().collect_timings(k % in_flight);
     gpu_times.add(frame.executor().latest_timings());
   }
   return record;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The offscreen frame loop shared by the headless sandbox and the tools that measure the frame.
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -29,8 +30,10 @@ struct RunRecord {
 // then waits for the GPU and collects the last frames' timings too. CPU times go into the
 // returned record, GPU times into `gpu_times`. With `progress`, long runs print every tenth.
 // `first_frame` numbers the first of them (its time is first_frame / 60 s), for runs rendered in
-// several calls.
+// several calls. Once `stop` is set (a signal handler's flag) no further frame starts: the record
+// then holds fewer than `count`.
 RunRecord render_headless_frames(Frame& frame, vk::FrameRing& ring, uint32_t count, GpuTimeLog& gpu_times,
-                                 bool progress = false, uint64_t first_frame = 0);
+                                 bool progress = false, uint64_t first_frame = 0,
+                                 const std::atomic<bool>* stop = nullptr);
 
 }  // namespace sg
