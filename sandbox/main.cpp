@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // shadowgraph-sandbox: renders the built-in scene in a window, or headless to a PNG.
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -25,8 +26,11 @@ bool display_available() {
 
 int main(int argc, char** argv) {
   // Line by line into a file or a pipe too, so that a long run's log (its progress) shows as it
-  // goes, not when the buffer fills or the program ends.
+  // goes, not when the buffer fills or the program ends. A reader that stops early (| grep -q,
+  // | head) must not cost the run its files: writing to the closed pipe then fails instead of
+  // ending the program.
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  std::signal(SIGPIPE, SIG_IGN);
   sg::sandbox::ParseResult parsed = sg::sandbox::parse_options(argc, argv);
   if (!parsed.options) return parsed.exit_code;
   sg::sandbox::Options options = *parsed.options;
