@@ -67,6 +67,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   stats.scene_height = 180;
   stats.render_scale_changes = 3;
   stats.frames = 12;
+  stats.interrupted = true;
   stats.scene_name = "stress";
   stats.scene.triangles = 250'123;
   stats.scene.entities = 4'321;
@@ -147,7 +148,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   write_stats_json(path, stats);
   const nlohmann::json json = read_json(path);
 
-  EXPECT_EQ(json.size(), 27u) << json.dump(2);  // no unexpected top-level keys
+  EXPECT_EQ(json.size(), 28u) << json.dump(2);  // no unexpected top-level keys
   EXPECT_EQ(json.at("schema_version"), stats_schema_version);
   EXPECT_EQ(json.at("generator"), "Shadowgraph " SHADOWGRAPH_VERSION);
   EXPECT_EQ(json.at("device"), stats.device);
@@ -155,6 +156,7 @@ TEST(StatsJson, EveryFieldRoundTrips) {
   EXPECT_EQ(json.at("scene_resolution"), nlohmann::json({{"width", 320}, {"height", 180}}));
   EXPECT_EQ(json.at("render_scale_changes"), 3);
   EXPECT_EQ(json.at("frames"), 12);
+  EXPECT_EQ(json.at("interrupted"), true);
   const nlohmann::json& scene = json.at("scene");
   EXPECT_EQ(scene.size(), 5u) << scene.dump(2);
   EXPECT_EQ(scene.at("name"), "stress");
