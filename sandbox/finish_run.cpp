@@ -9,12 +9,12 @@
 
 #include "rendergraph/device/context.h"
 #include "rendergraph/device/readback.h"
-#include "sandbox/interrupt.h"
 #include "sandbox/run.h"
 #include "sandbox/run_stats.h"
 #include "sandbox/sandbox_frame.h"
 #include "sandbox/shadow_map_dump.h"
 #include "systems/frame/gpu_time_log.h"
+#include "systems/frame/interrupt.h"
 #include "systems/frame/png.h"
 #include "systems/frame/scene_view.h"
 #include "systems/scene/scene_queries.h"

@@ -2,9 +2,9 @@
 #include <cstdio>
 
 #include "rendergraph/device/context.h"
-#include "sandbox/interrupt.h"
 #include "sandbox/run.h"
 #include "sandbox/window_session.h"
+#include "systems/frame/interrupt.h"
 
 namespace sg::sandbox {
 

@@ -16,6 +16,7 @@
 #include "rendergraph/device/context.h"
 #include "systems/frame/command_line.h"
 #include "systems/frame/frame_settings.h"
+#include "systems/frame/interrupt.h"
 #include "tools/reference/report.h"
 #include "tools/reference/run_reference.h"
 #include "tools/reference/whole_frame_report.h"
@@ -120,8 +121,15 @@ int main(int argc, char** argv) {
       sg::reference::print_whole_frame(stdout, report);
       json = sg::reference::to_json(report);
     } else {
+      // Light by light, Ctrl-C ends the run after the light in hand and the lights compared so far
+      // are still reported (the whole frame is one measurement: Ctrl-C ends it at once).
+      sg::catch_interrupts();
       const sg::reference::ReferenceReport report =
           sg::reference::run_reference(context, frame, settings, print);
+      if (report.interrupted) {
+        print("interrupted after " + std::to_string(report.lights.size()) +
+              " lights: reporting those, without the costs (a second Ctrl-C ends at once)");
+      }
       sg::reference::print_tables(stdout, report);
       json = sg::reference::to_json(report);
     }
@@ -129,7 +137,8 @@ int main(int argc, char** argv) {
       sg::reference::write_json(json_path, json);
       std::printf("\nwrote %s\n", json_path.c_str());
     }
-    return context.validation_enabled() && context.validation_errors() > 0 ? 3 : 0;
+    if (context.validation_enabled() && context.validation_errors() > 0) return 3;
+    return sg::interrupted() ? 130 : 0;  // 128 + SIGINT, as shells report a run Ctrl-C ended
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowgraph-reference: error: %s\n", e.what());
     return 1;

@@ -90,7 +90,8 @@ nlohmann::json to_json(const ReferenceReport& report) {
           {"soft_samples", report.soft_samples},
           {"edge_band", report.edge_band},
           {"lights", std::move(lights)},
-          {"costs", std::move(costs)}};
+          {"costs", std::move(costs)},
+          {"interrupted", report.interrupted}};
 }
 
 void write_json(const std::string& path, const nlohmann::json& json) {

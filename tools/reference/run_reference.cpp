@@ -9,6 +9,7 @@
 
 #include "ecs/jobs/thread_pool.h"
 #include "rendergraph/device/context.h"
+#include "systems/frame/interrupt.h"
 #include "systems/frame/png.h"
 #include "systems/frame/scene_view.h"
 #include "tools/reference/engine_shade.h"
@@ -159,14 +160,17 @@ ReferenceReport run_reference(vk::VulkanContext& context, const FrameSettings& f
   {
     EngineShade engine(context, scene, frame);
     const SurfacePoints points = surface_points(engine.depth(), scene.pose, scene.lens, surfaces, pool);
-    for (size_t l = 0; l < lights.size(); ++l) {
+    for (size_t l = 0; l < lights.size() && !interrupted(); ++l) {
       say(progress, "light " + std::to_string(l + 1) + "/" + std::to_string(lights.size()) + " '" +
                         lights[l].name + "' (" + std::string(to_string(lights[l].type)) + ")");
       report.lights.push_back(compare_light(engine, points, casters.of(lights[l].caster_mask), lights[l],
                                             settings, pool, progress));
     }
   }
-  if (settings.cost_frames > 0) report.costs = measure_costs(context, frame, settings, progress);
+  report.interrupted = interrupted();
+  if (settings.cost_frames > 0 && !report.interrupted) {
+    report.costs = measure_costs(context, frame, settings, progress);
+  }
   return report;
 }
 

@@ -66,6 +66,8 @@ struct ReferenceReport {
   int edge_band = 0;
   std::vector<LightReport> lights;
   std::vector<AlgorithmCost> costs;  // "off" first, when measured
+  // A signal (interrupt.h) ended the run after `lights`, before the rest and the costs.
+  bool interrupted = false;
 };
 
 // Runs the whole comparison; `progress` (may be empty) hears one line per step. Throws

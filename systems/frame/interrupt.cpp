@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "sandbox/interrupt.h"
+#include "systems/frame/interrupt.h"
 
 #include <csignal>
 
-namespace sg::sandbox {
+namespace sg {
 namespace {
 
 // A lock-free atomic is all a signal handler may touch.
@@ -25,4 +25,4 @@ void catch_interrupts() {
 
 const std::atomic<bool>& interrupted() { return interrupt_flag; }
 
-}  // namespace sg::sandbox
+}  // namespace sg
