@@ -12,6 +12,7 @@
 
 #include "sandbox/options.h"
 #include "sandbox/run.h"
+#include "systems/frame/interrupt.h"
 #include "systems/frame/output_path.h"
 
 namespace {
@@ -28,9 +29,10 @@ int main(int argc, char** argv) {
   // Line by line into a file or a pipe too, so that a long run's log (its progress) shows as it
   // goes, not when the buffer fills or the program ends. A reader that stops early (| grep -q,
   // | head) must not cost the run its files: writing to the closed pipe then fails instead of
-  // ending the program.
+  // ending the program. Ctrl-C ends the run after the frame in hand, its files still written.
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   std::signal(SIGPIPE, SIG_IGN);
+  sg::catch_interrupts();
   sg::sandbox::ParseResult parsed = sg::sandbox::parse_options(argc, argv);
   if (!parsed.options) return parsed.exit_code;
   sg::sandbox::Options options = *parsed.options;

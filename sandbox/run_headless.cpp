@@ -117,7 +117,6 @@ int run_headless(const Options& options) {
   auto frame = std::make_unique<SandboxFrame>(context, scene, options, frames.frames_in_flight());
   frame->fit({settings.width, settings.height}, false);
   GpuTimeLog gpu_times;
-  catch_interrupts();
   const RunRecord record = options.script.empty()
                                ? render_headless_frames(frame->frame(), frames, options.frames.value_or(3),
                                                         gpu_times, true, 0, &interrupted())

@@ -11,7 +11,6 @@ namespace sg::sandbox {
 int run_windowed(const Options& options) {
   WindowSession session(options);
   std::printf("shadowgraph: window on %s (Esc closes)\n", session.context().device_name().c_str());
-  catch_interrupts();
   const size_t frame_limit = options.frames.value_or(UINT32_MAX);
   while (session.frame_ms().size() < frame_limit && !interrupted() &&
          session.frame() != FrameResult::closed) {
