@@ -21,7 +21,7 @@ inline constexpr VkFormat light_record_texel_format = VK_FORMAT_R32G32B32A32_UIN
 
 // The comparison sampler's filter for a depth format with `features` (its optimal tiling's):
 // linear, each comparison a bilinear 2x2, where the format can be filtered; nearest, one texel,
-// where not (lavapipe cannot filter d32_sfloat).
+// where not (Debian 12's lavapipe cannot filter d32_sfloat; Mesa 25's can).
 VkFilter comparison_filter(VkFormatFeatureFlags features);
 // Whether `context`'s device filters the shadow atlas's comparisons (ShadowAtlas::depth_format).
 bool shadow_comparisons_filter(const vk::VulkanContext& context);

@@ -53,8 +53,8 @@ ComputeShadowRaster::ComputeShadowRaster(vk::VulkanContext& context, const GpuTe
   if (!with_pipelines) return;
   if (context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
     std::printf(
-        "shadowgraph: compute shadow raster on a CPU device: slow, and llvmpipe stops a shader's loops "
-        "after 65,535 iterations, which can leave tiles over 512 texels incomplete\n");
+        "shadowgraph: compute shadow raster on a CPU device: slow, and Debian 12's llvmpipe stops a "
+        "shader's loops after 65,535 iterations, which can leave tiles over 512 texels incomplete\n");
   }
   pipeline_ = vk::create_compute_pipeline(context, {shadow_raster_comp, {}, layout_.get(), "shadow raster"});
   vk::GraphicsPipelineDesc copy;
