@@ -54,7 +54,8 @@ void* allocate_large_array(std::size_t bytes, std::size_t alignment) {
 void free_large_array(void* memory, std::size_t bytes, std::size_t alignment) noexcept {
   if (memory == nullptr) return;
   if (bytes < huge_page) {
-    ::operator delete (memory, bytes, std::align_val_t{alignment});
+    // Unsized: clang before 19 declares sized deallocation only under -fsized-deallocation.
+    ::operator delete (memory, std::align_val_t{alignment});
     return;
   }
   const auto start = reinterpret_cast<std::uintptr_t>(memory);
@@ -68,8 +69,8 @@ void* allocate_large_array(std::size_t bytes, std::size_t alignment) {
   return ::operator new (bytes, std::align_val_t{alignment});
 }
 
-void free_large_array(void* memory, std::size_t bytes, std::size_t alignment) noexcept {
-  ::operator delete (memory, bytes, std::align_val_t{alignment});
+void free_large_array(void* memory, std::size_t /*bytes*/, std::size_t alignment) noexcept {
+  ::operator delete (memory, std::align_val_t{alignment});
 }
 
 #endif

@@ -92,7 +92,8 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
   switch (lighting_) {
     case LightingPath::every_light: every_light_.emplace(context, frames_in_flight, textures_); break;
     case LightingPath::fused:
-      fused_.emplace(DepthPrepass(context, textures_), FusedForwardPass(context, textures_, frame_format));
+      fused_.emplace(
+          Fused{DepthPrepass(context, textures_), FusedForwardPass(context, textures_, frame_format)});
       break;
     case LightingPath::automatic:  // resolved above
     case LightingPath::deferred: {
@@ -107,13 +108,14 @@ SceneRenderer::SceneRenderer(vk::VulkanContext& context, const scene::Scene& sce
             lighting.filtered_lights());
       }
       const bool lit_sum_from_gbuffer = lighting.lit_sum_from_gbuffer();
-      deferred_.emplace(GBufferPass(context, frames_in_flight, textures_, lit_sum_from_gbuffer),
-                        LightTilesPass(context, frames_in_flight), std::move(lighting));
+      deferred_.emplace(Deferred{GBufferPass(context, frames_in_flight, textures_, lit_sum_from_gbuffer),
+                                 LightTilesPass(context, frames_in_flight), std::move(lighting)});
       break;
     }
   }
   if (lighting_per_frame_)
-    fused_.emplace(DepthPrepass(context, textures_), FusedForwardPass(context, textures_, frame_format));
+    fused_.emplace(
+        Fused{DepthPrepass(context, textures_), FusedForwardPass(context, textures_, frame_format)});
 }
 
 void SceneRenderer::gather(const ecs::World& world) {

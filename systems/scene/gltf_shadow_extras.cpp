@@ -122,9 +122,9 @@ std::array<std::optional<ExtrasReader>, 2> extras_readers(const nlohmann::json& 
                                                           const std::string& object, Scene& scene) {
   std::array<std::optional<ExtrasReader>, 2> readers;
   const nlohmann::json* extras = object_member(&json, "extras");
-  if (extras != nullptr) readers[0].emplace(*extras, object, "extras.", scene);
+  if (extras != nullptr) readers[0].emplace(ExtrasReader{*extras, object, "extras.", scene});
   if (const nlohmann::json* ours = object_member(extras, "shadowgraph")) {
-    readers[1].emplace(*ours, object, "extras.shadowgraph.", scene);
+    readers[1].emplace(ExtrasReader{*ours, object, "extras.shadowgraph.", scene});
   }
   return readers;
 }

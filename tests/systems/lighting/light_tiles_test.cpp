@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <ranges>
+#include <numeric>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -442,11 +442,11 @@ TEST_F(CrowdTest, FifteenThousandLightsStayWithinACpuDriversLoopGuard) {
 TEST_F(CrowdTest, TilesACpuDriversLoopGuardCutShortAreCounted) {
   gather_crowd(20000);
   const Culled culled = cull(lights, LightCullingShape::thread_per_tile, depth, view_projection).front();
-  const auto crowd = std::views::iota(0u, uint32_t(lights.sorted.size()));
+  std::vector<uint32_t> crowd(lights.sorted.size());
+  std::iota(crowd.begin(), crowd.end(), 0u);
   uint64_t whole_tiles = 0;
-  for (const std::vector<uint32_t>& tile : listed_per_tile(culled, grid.count())) {
-    whole_tiles += std::ranges::equal(tile, crowd);
-  }
+  for (const std::vector<uint32_t>& tile : listed_per_tile(culled, grid.count()))
+    whole_tiles += tile == crowd;
   EXPECT_EQ(culled.cut + whole_tiles, tiles_with_surfaces);
 }
 
