@@ -36,6 +36,18 @@ class Random {
   float uniform(float low, float high) {
     return low + (high - low) * static_cast<float>(next() >> 40) * 0x1.0p-24f;
   }
+  // Points drawn last coordinate first, the order GCC gives a constructor's arguments, which the
+  // hall was built in when its figures were measured. Left to the compiler, clang (left to right)
+  // built another hall from the same seed.
+  glm::vec2 uniform(glm::vec2 low, glm::vec2 high) {
+    const float y = uniform(low.y, high.y);
+    return {uniform(low.x, high.x), y};
+  }
+  glm::vec3 uniform(glm::vec3 low, glm::vec3 high) {
+    const float z = uniform(low.z, high.z);
+    const float y = uniform(low.y, high.y);
+    return {uniform(low.x, high.x), y, z};
+  }
 
  private:
   std::uint64_t state_;
@@ -66,7 +78,7 @@ struct Hall {
     const Material stone{{0.55f, 0.55f, 0.6f, 1.0f}};
     const Material wood{{random.uniform(0.4f, 0.6f), 0.35f, 0.2f, 1.0f}, no_texture, 0.3f, 48.0f};
     add(column, {origin.x, 2.5f, origin.y}, {0.6f, 5.0f, 0.6f}, 0.0f, stone);
-    const glm::vec2 table = origin + glm::vec2(random.uniform(1.5f, 2.5f), random.uniform(1.5f, 2.5f));
+    const glm::vec2 table = origin + random.uniform(glm::vec2(1.5f), glm::vec2(2.5f));
     const float yaw = random.uniform(0.0f, glm::pi<float>());
     const glm::vec3 right(std::cos(yaw), 0.0f, -std::sin(yaw));
     const glm::vec3 forward(std::sin(yaw), 0.0f, std::cos(yaw));
@@ -84,8 +96,8 @@ struct Hall {
     const int crate_count = static_cast<int>(random.next() % 4);
     for (int c = 0; c < crate_count; ++c) {
       const float size = random.uniform(0.3f, 0.7f);
-      const glm::vec3 at(origin.x + random.uniform(0.6f, 3.4f), size * 0.5f,
-                         origin.y + random.uniform(0.6f, 1.2f));
+      const glm::vec2 offset = random.uniform(glm::vec2(0.6f), glm::vec2(3.4f, 1.2f));
+      const glm::vec3 at(origin.x + offset.x, size * 0.5f, origin.y + offset.y);
       const ecs::Entity crate = add(box, at, glm::vec3(size), random.uniform(0.0f, 1.5f), wood);
       if (selected(crates++, moving_fraction)) {
         scene.world.add<OrbitMotion>(crate, OrbitMotion{at, 0.4f, random.uniform(0.3f, 1.0f),
@@ -122,16 +134,16 @@ Scene build_stress_scene(const BuiltinSceneParams& params) {
     ShadowSettings shadow;
     shadow.algorithm = all_shadow_algorithms[i % std::size(all_shadow_algorithms)];
     shadow.resolution = 512;
-    const glm::vec3 color(random.uniform(0.7f, 1.0f), random.uniform(0.7f, 1.0f), random.uniform(0.7f, 1.0f));
-    const glm::vec3 position(random.uniform(spread_x, spread_x + spread), random.uniform(2.5f, 4.5f),
-                             random.uniform(0.0f, spread));
+    const glm::vec3 color = random.uniform(glm::vec3(0.7f), glm::vec3(1.0f));
+    const glm::vec3 position =
+        random.uniform(glm::vec3(spread_x, 2.5f, 0.0f), glm::vec3(spread_x + spread, 4.5f, spread));
     ecs::Entity light;
     if (i < params.point_lights) {
       light = add_light(scene, PointLight{color, 1.0f, 2.5f * cell_size}, {position}, shadow,
                         "point " + std::to_string(i));
     } else {
-      const glm::vec3 target =
-          position + glm::vec3(random.uniform(-2, 2), -position.y, random.uniform(-2, 2));
+      const glm::vec2 aim = random.uniform(glm::vec2(-2.0f), glm::vec2(2.0f));
+      const glm::vec3 target = position + glm::vec3(aim.x, -position.y, aim.y);
       const float outer = random.uniform(0.4f, 0.8f);
       light = add_light(scene, SpotLight{color, 1.5f, 3.0f * cell_size, 0.8f * outer, outer},
                         {position, look_rotation(position, target), glm::vec3(1.0f)}, shadow,

@@ -79,7 +79,7 @@ TEST(GltfErrors, UnknownAlphaModeAndNegativeCutoff) {
         std::pair{nlohmann::json{{"alphaMode", "MASK"}, {"alphaCutoff", -0.5}},
                   std::string("alphaCutoff")}}) {
     GltfWriter file;
-    file.document["materials"] = {material};
+    file.document["materials"] = nlohmann::json::array({material});  // {material} alone copies it under clang
     file.add_node({{"mesh", file.add_mesh({{"POSITION", file.add_triangle_positions()}}, -1, 0)}});
     expect_refused(file.write_gltf(dir, "alpha"), {"materials[0]", fragment});
   }
