@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: MIT
 # From a fresh clone to a picture or a green test suite:
 #   bash tools/bootstrap.sh sandbox [sandbox options]   install, build, run the default scene
-#   bash tools/bootstrap.sh test [--sanitize]           install, build, run every test
+#   bash tools/bootstrap.sh test [--sanitize|--clang]   install, build, run every test
+#     --sanitize: in build-sanitize/ with AddressSanitizer and UndefinedBehaviorSanitizer
+#     --clang:    in build-clang/ with Debian's clang (14) instead of GCC
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -11,18 +13,29 @@ mode="${1:-}"
 shift || true
 case "$mode" in
   sandbox|test) ;;
-  *) echo "usage: bash tools/bootstrap.sh sandbox [sandbox options] | test [--sanitize]" >&2; exit 2 ;;
+  *) echo "usage: bash tools/bootstrap.sh sandbox [sandbox options] | test [--sanitize|--clang]" >&2; exit 2 ;;
 esac
+variant=""
+if [[ "$mode" == test ]]; then
+  variant="${1:-}"
+  case "$variant" in
+    ""|--sanitize|--clang) ;;
+    *) echo "unknown test option '$variant' (--sanitize or --clang)" >&2; exit 2 ;;
+  esac
+fi
 
-bash tools/install-deps.sh
+if [[ "$variant" == --clang ]]; then bash tools/install-deps.sh clang; else bash tools/install-deps.sh; fi
 
 build_dir=build
 cmake_args=(-DCMAKE_BUILD_TYPE=Release)
 if [[ "$mode" == test ]]; then
   cmake_args+=(-DSHADOWGRAPH_WERROR=ON)
-  if [[ "${1:-}" == --sanitize ]]; then
+  if [[ "$variant" == --sanitize ]]; then
     build_dir=build-sanitize
     cmake_args+=(-DSHADOWGRAPH_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo)
+  elif [[ "$variant" == --clang ]]; then
+    build_dir=build-clang
+    cmake_args+=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++)
   fi
 fi
 

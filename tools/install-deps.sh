@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Installs the Debian 12 packages Shadowgraph needs to build, run and test. Idempotent:
-# installs only what is missing, and runs `apt-get update` only when something is.
+# Installs the Debian 12 packages Shadowgraph needs to build, run and test, and any packages named
+# as arguments (bootstrap.sh's `test --clang` adds clang). Idempotent: installs only what is
+# missing, and runs `apt-get update` only when something is.
 set -euo pipefail
 
 packages=(
@@ -13,6 +14,7 @@ packages=(
   libembree-dev                              # Intel Embree: ray-traced shadow reference (tools/reference)
   libgtest-dev libbenchmark-dev              # tests and benchmarks
   xvfb xauth                                 # a virtual display for the window tests
+  "$@"
 )
 
 missing=()
