@@ -52,8 +52,9 @@ SortedLights scattered_lights(uint32_t behind = 0, int count = 60) {
     return float(seed >> 8) / float(1u << 24);
   };
   for (int i = 0; i < count; ++i) {
-    const glm::vec3 position(random() * 30.0f - 15.0f, random() * 8.0f - 3.0f, -2.0f - random() * 26.0f);
-    const glm::vec3 target(position.x + random() * 6.0f - 3.0f, -4.0f, position.z + random() * 6.0f - 3.0f);
+    // Braces: their elements are drawn left to right under every compiler.
+    const glm::vec3 position{random() * 30.0f - 15.0f, random() * 8.0f - 3.0f, -2.0f - random() * 26.0f};
+    const glm::vec3 target{position.x + random() * 6.0f - 3.0f, -4.0f, position.z + random() * 6.0f - 3.0f};
     scene::ShadowSettings shadow;
     shadow.algorithm = scene::all_shadow_algorithms[i % 5];
     shadow.casts_shadow = i % 4 != 0;

@@ -63,9 +63,10 @@ TEST(Cascades, EveryVisiblePointOfTheSceneLiesInsideItsSlicesMap) {
   while (tested < 2000) {
     // A point of the frustum, at a depth spread over the splits on a log scale.
     const float depth = fit.splits[0] * std::pow(fit.splits[fit.count] / fit.splits[0], fraction(rng));
+    const float across = unit(rng);  // drawn in turn: a sum's operands have no order
+    const float upward = unit(rng);
     const glm::vec3 p = camera.eye + camera.forward * depth +
-                        right * (unit(rng) * tan_y * camera.aspect * depth) +
-                        up * (unit(rng) * tan_y * depth);
+                        right * (across * tan_y * camera.aspect * depth) + up * (upward * tan_y * depth);
     if (glm::any(glm::lessThan(p, hall.min)) || glm::any(glm::greaterThan(p, hall.max))) continue;
     ++tested;
     uint32_t slice = 0;

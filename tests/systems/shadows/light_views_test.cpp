@@ -27,7 +27,7 @@ bool inside_unit_cube(glm::vec3 p) {
 
 glm::vec3 random_unit(std::mt19937& rng) {
   std::normal_distribution<float> normal;
-  return glm::normalize(glm::vec3(normal(rng), normal(rng), normal(rng)));
+  return glm::normalize(glm::vec3{normal(rng), normal(rng), normal(rng)});  // braces: drawn left to right
 }
 
 // Any unit vector perpendicular to `v`.
@@ -92,7 +92,7 @@ TEST(SpotLightView, EveryPointOfTheConeWithinRangeIsInsideTheMap) {
   std::mt19937 rng(6);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   for (int trial = 0; trial < 20; ++trial) {
-    const glm::vec3 position(unit(rng) * 4.0f, unit(rng) * 4.0f, unit(rng) * 4.0f);
+    const glm::vec3 position{unit(rng) * 4.0f, unit(rng) * 4.0f, unit(rng) * 4.0f};
     const glm::vec3 direction = random_unit(rng);
     const float outer = glm::radians(10.0f + 75.0f * unit(rng));
     const float range = 2.0f + 20.0f * unit(rng);
@@ -101,8 +101,9 @@ TEST(SpotLightView, EveryPointOfTheConeWithinRangeIsInsideTheMap) {
     for (int i = 0; i < 50; ++i) {
       // A point at angle <= outer from the axis, at view depth within [near, far].
       const float angle = outer * unit(rng) * 0.999f;
+      const float along_cross = unit(rng) - 0.5f;  // drawn in turn: a sum's operands have no order
       const glm::vec3 around =
-          glm::normalize(glm::cross(direction, side) * (unit(rng) - 0.5f) + side * (unit(rng) - 0.5f));
+          glm::normalize(glm::cross(direction, side) * along_cross + side * (unit(rng) - 0.5f));
       const glm::vec3 ray = direction * std::cos(angle) + around * std::sin(angle);
       const float depth = spot.near + (range - spot.near) * unit(rng);
       const glm::vec3 point = position + ray * (depth / std::cos(angle));

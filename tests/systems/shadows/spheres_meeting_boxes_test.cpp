@@ -60,15 +60,17 @@ TEST(SpheresMeetingBoxes, FindsExactlyWhatTestingEveryPairFinds) {
   for (int scene = 0; scene < 20; ++scene) {
     std::vector<glm::vec4> spheres;
     for (int i = 0; i < 2'000; ++i) {
-      spheres.emplace_back(coordinate(random), coordinate(random) * 0.1f, coordinate(random), radius(random));
+      // Braces: their elements are drawn left to right under every compiler.
+      spheres.push_back(
+          glm::vec4{coordinate(random), coordinate(random) * 0.1f, coordinate(random), radius(random)});
     }
     spheres[0].w = 500.0f;
     spheres[1].w = 0.0f;
     spheres[2] = {1'000.0f, 0.0f, -1'000.0f, 50.0f};
     std::vector<scene::Aabb> boxes;
     for (int b = 0; b < 100; ++b) {
-      const glm::vec3 min(coordinate(random), coordinate(random) * 0.1f, coordinate(random));
-      boxes.push_back({min, min + glm::vec3(size(random), size(random), size(random))});
+      const glm::vec3 min{coordinate(random), coordinate(random) * 0.1f, coordinate(random)};
+      boxes.push_back({min, min + glm::vec3{size(random), size(random), size(random)}});
     }
     boxes.push_back({glm::vec3(990.0f, -1.0f, -1'010.0f), glm::vec3(995.0f, 1.0f, -1'005.0f)});
     boxes.push_back({glm::vec3(-400.0f, -1.0f, 300.0f), glm::vec3(-399.0f, 1.0f, 301.0f)});
