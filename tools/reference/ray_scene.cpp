@@ -60,21 +60,29 @@ RayScene::~RayScene() {
 }
 
 bool RayScene::occluded(glm::vec3 origin, glm::vec3 direction, float near, float far) const {
+  RTCRay ray = make_ray(origin, direction, near, far);
+#if SHADOWGRAPH_EMBREE_MAJOR >= 4
+  rtcOccluded1(scene_, &ray);
+#else
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay ray = make_ray(origin, direction, near, far);
   rtcOccluded1(scene_, &context, &ray);
+#endif
   // Embree marks a blocked ray by setting tfar to -infinity.
   return ray.tfar < 0.0f;
 }
 
 std::optional<RayHit> RayScene::intersect(glm::vec3 origin, glm::vec3 direction, float near) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
   RTCRayHit query{};
   query.ray = make_ray(origin, direction, near, std::numeric_limits<float>::infinity());
   query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+#if SHADOWGRAPH_EMBREE_MAJOR >= 4
+  rtcIntersect1(scene_, &query);
+#else
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
   rtcIntersect1(scene_, &context, &query);
+#endif
   if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   glm::vec3 normal(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
   const float length = glm::length(normal);

@@ -5,8 +5,12 @@
 #include <optional>
 #include <span>
 
-#include <embree3/rtcore.h>
 #include <glm/glm.hpp>
+#if SHADOWGRAPH_EMBREE_MAJOR >= 4
+#include <embree4/rtcore.h>
+#else
+#include <embree3/rtcore.h>
+#endif
 
 namespace sg::reference {
 
