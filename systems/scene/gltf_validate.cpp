@@ -2,6 +2,7 @@
 #include "systems/scene/gltf_validate.h"
 
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "systems/scene/gltf_json.h"
@@ -10,6 +11,13 @@
 
 namespace sg::scene {
 namespace {
+
+// Sparse byte offsets are int in tinygltf 2.7 (Debian 12) and unsigned in 2.9 (Debian 13).
+template <typename Offset>
+bool negative(Offset offset) {
+  if constexpr (std::is_signed_v<Offset>) return offset < 0;
+  return false;
+}
 
 bool is_unsigned_index_type(int component_type) {
   return component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
@@ -84,7 +92,7 @@ struct Validator {
     if (!is_unsigned_index_type(sparse.indices.componentType)) {
       fail(sparse_object + ".indices", "componentType is not an unsigned integer type");
     }
-    if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0) {
+    if (negative(sparse.indices.byteOffset) || negative(sparse.values.byteOffset)) {
       fail(sparse_object, "negative byteOffset");
     }
     const std::uint64_t index_bytes = static_cast<std::uint64_t>(

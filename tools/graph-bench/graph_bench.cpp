@@ -99,7 +99,7 @@ void build_and_compile(benchmark::State& state) {
   const auto passes = static_cast<std::uint32_t>(state.range(0));
   for (auto _ : state) {
     const RenderGraph graph = build_frame(passes);
-    const CompileResult result = compile(graph);
+    CompileResult result = compile(graph);  // not const: benchmark 1.8 deprecates DoNotOptimize(const&)
     if (!result.ok()) state.SkipWithError(result.errors.front().message.c_str());
     benchmark::DoNotOptimize(result.plan);
   }
