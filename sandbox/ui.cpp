@@ -142,8 +142,12 @@ const ImDrawData* SandboxUi::build(scene::Scene& scene, const scene::CameraPose&
   }
   io.DeltaTime = seconds > 0.0f ? seconds : 1.0f / 60.0f;
   ImGui::NewFrame();
-  // imgui 1.86's GLFW backend indexes io.KeysDown by GLFW key codes.
-  if (glfw_ && ImGui::IsKeyPressed(GLFW_KEY_F1)) help_ = !help_;
+#if IMGUI_VERSION_NUM >= 18700
+  const bool f1 = ImGui::IsKeyPressed(ImGuiKey_F1);  // imgui 1.87 on (Debian 13: 1.90) names its keys
+#else
+  const bool f1 = ImGui::IsKeyPressed(GLFW_KEY_F1);  // 1.86 (Debian 12): io.KeysDown by GLFW key codes
+#endif
+  if (glfw_ && f1) help_ = !help_;
   depth_views_.clear();
   stats_panel(facts);
   light_panel(scene, pose, facts);
