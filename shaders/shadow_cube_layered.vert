@@ -13,7 +13,8 @@
 //
 // Resources: Instances (scene_interface.glsl), the view's casters (shadow_casters.glsl) and the
 // cube's faces (one CubeFaces slice per point light of one buffer, bound with a dynamic offset).
-// Push constants as for shadow_map.vert (camera_position: the light's position and far plane).
+// Push constants as for shadow_map.vert (shadow_pass_constants.glsl).
+#include "shadow_pass_constants.glsl"
 #include "scene_interface.glsl"
 #include "shadow_casters.glsl"
 
@@ -47,7 +48,7 @@ void main() {
   gl_ClipDistance[3] = clip.w - clip.y;
   gl_Position = vec4(clip.xy * tile.xy + tile.zw * clip.w, clip.zw);
   out_world_position = world.xyz;
-  out_light_position_far = frame.camera_position;
+  out_light_position_far = pass.light_position_far;
 #ifdef SHADOW_CUT_OUT
   out_uv = in_uv;
   out_material = instances[view_instances[gl_BaseInstance + copy / 6]].material;

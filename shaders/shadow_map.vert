@@ -5,10 +5,10 @@
 // Shadow-map depth pass of one view, one pass per view (the per-light baseline; shadow_batch.vert
 // draws every view at once): casters' positions into the light view's clip space, the pass's
 // viewport being the view's atlas tile. Instances through the view's caster list
-// (shadow_casters.glsl) into Instances (scene_interface.glsl). Push constants: the
-// FrameConstants block of scene_interface.glsl, view_projection the light view's
-// (LightView::view_projection() or one CubeViews face) and, for cube faces, camera_position the
-// light's position and far plane, handed to shadow_cube.frag. 2D maps need no fragment shader.
+// (shadow_casters.glsl) into Instances (scene_interface.glsl). Push constants:
+// shadow_pass_constants.glsl, light_position_far handed to shadow_cube.frag for cube faces. 2D
+// maps need no fragment shader.
+#include "shadow_pass_constants.glsl"
 #include "scene_interface.glsl"
 #include "shadow_casters.glsl"
 
@@ -26,8 +26,8 @@ layout(location = 3) flat out vec4 out_material;
 void main() {
   vec4 world = instances[view_instances[gl_InstanceIndex]].model * vec4(in_position, 1.0);
   out_world_position = world.xyz;
-  out_light_position_far = frame.camera_position;
-  gl_Position = frame.view_projection * world;
+  out_light_position_far = pass.light_position_far;
+  gl_Position = pass.view_projection * world;
 #ifdef SHADOW_CUT_OUT
   out_uv = in_uv;
   out_material = instances[view_instances[gl_InstanceIndex]].material;

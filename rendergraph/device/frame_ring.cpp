@@ -73,14 +73,15 @@ FrameSlot& FrameRing::begin_frame(const std::function<void()>& nearly_ready, std
 void FrameRing::submit(std::span<const SemaphoreWait> waits, std::span<const VkSemaphore> signals) {
   Slot& slot = *current_;
   check(vkEndCommandBuffer(slot.frame.cmd), "vkEndCommandBuffer");
-  auto semaphore_info = [](VkSemaphore semaphore, VkPipelineStageFlags2 stages) {
+  auto semaphore_info = [](VkSemaphore semaphore, VkPipelineStageFlags2 stages, uint64_t value = 0) {
     VkSemaphoreSubmitInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
     info.semaphore = semaphore;
     info.stageMask = stages;
+    info.value = value;
     return info;
   };
   wait_infos_.clear();
-  for (const SemaphoreWait& w : waits) wait_infos_.push_back(semaphore_info(w.semaphore, w.stages));
+  for (const SemaphoreWait& w : waits) wait_infos_.push_back(semaphore_info(w.semaphore, w.stages, w.value));
   signal_infos_.clear();
   for (VkSemaphore s : signals) {
     signal_infos_.push_back(semaphore_info(s, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT));

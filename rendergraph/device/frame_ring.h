@@ -27,6 +27,7 @@ struct FrameSlot {
 struct SemaphoreWait {
   VkSemaphore semaphore;
   VkPipelineStageFlags2 stages;
+  uint64_t value = 0;  // a timeline semaphore's value to wait for; binary semaphores ignore it
 };
 
 class FrameRing {

@@ -37,7 +37,8 @@ using shadows::ShadowMapView;
 
 constexpr VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
-// shadow_map.vert reads view_projection; cube faces hand light_position_far to shadow_cube.frag.
+// shaders/shadow_pass_constants.glsl: shadow_map.vert reads view_projection; cube faces hand
+// light_position_far to shadow_cube.frag.
 struct PassConstants {
   glm::mat4 view_projection;
   glm::vec4 light_position_far;

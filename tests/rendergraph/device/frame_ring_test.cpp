@@ -3,6 +3,7 @@
 // during the wait for the GPU, not after it.
 #include <atomic>
 #include <chrono>
+#include <mutex>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -30,41 +31,55 @@ TEST_F(FrameRingTest, NearlyReadyIsCalledOncePerFrame) {
   EXPECT_EQ(calls, 6);
 }
 
-// The first frame's commands wait for an event that only nearly_ready sets, so the third frame,
-// which reuses the first one's slot, can only begin if nearly_ready is called while it waits.
+// The first frame waits for a timeline value that only nearly_ready signals, so the third frame,
+// which reuses the first one's slot, can only begin if nearly_ready is called while it waits. (A
+// host-set event that a submitted frame waits on is invalid: VUID-vkSetEvent-event-09543.)
 TEST_F(FrameRingTest, NearlyReadyIsCalledBeforeTheWaitEnds) {
   const VkDevice device = context.device();
-  VkEventCreateInfo info{VK_STRUCTURE_TYPE_EVENT_CREATE_INFO};
-  VkEvent event = VK_NULL_HANDLE;
-  vk::check(vkCreateEvent(device, &info, nullptr, &event), "vkCreateEvent");
-  std::atomic<bool> set_by_nearly_ready{false};
+  VkSemaphoreTypeCreateInfo timeline{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
+  timeline.semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE;
+  VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, &timeline};
+  VkSemaphore semaphore = VK_NULL_HANDLE;
+  vk::check(vkCreateSemaphore(device, &info, nullptr, &semaphore), "vkCreateSemaphore");
+  const auto signal = [&] {
+    VkSemaphoreSignalInfo signal_info{VK_STRUCTURE_TYPE_SEMAPHORE_SIGNAL_INFO};
+    signal_info.semaphore = semaphore;
+    signal_info.value = 1;
+    vkSignalSemaphore(device, &signal_info);
+  };
+  std::atomic<bool> signaled_by_nearly_ready{false};
+  std::mutex signaling;  // a timeline's value only rises: signal it once
+  bool signaled = false;
+  // Should nearly_ready not come, the value is signaled after a while so that the test fails
+  // instead of hanging.
   std::atomic<bool> done{false};
-  // Should nearly_ready not come, the event is set after a while so that the test fails instead
-  // of hanging.
   std::thread watchdog([&] {
     for (int i = 0; i < 200 && !done; ++i) std::this_thread::sleep_for(50ms);
-    if (!done) vkSetEvent(device, event);
+    const std::lock_guard lock(signaling);
+    if (!signaled) signal();
+    signaled = true;
   });
   {
     vk::FrameRing ring(context, 2);
-    vk::FrameSlot& first = ring.begin_frame();
-    vkCmdWaitEvents(first.cmd, 1, &event, VK_PIPELINE_STAGE_HOST_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                    nullptr, 0, nullptr, 0, nullptr);
-    ring.submit();
+    ring.begin_frame();
+    const vk::SemaphoreWait wait{semaphore, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 1};
+    ring.submit({&wait, 1});
     ring.begin_frame();
     ring.submit();
     ring.begin_frame(
         [&] {
-          set_by_nearly_ready = vkGetEventStatus(device, event) == VK_EVENT_RESET;
-          vkSetEvent(device, event);
+          const std::lock_guard lock(signaling);
+          signaled_by_nearly_ready = !signaled;
+          if (!signaled) signal();
+          signaled = true;
         },
         100us);
     ring.submit();
   }  // the ring waits for its frames
   done = true;
   watchdog.join();
-  vkDestroyEvent(device, event, nullptr);
-  EXPECT_TRUE(set_by_nearly_ready) << "nearly_ready was not called before the wait for the GPU ended";
+  vkDestroySemaphore(device, semaphore, nullptr);
+  EXPECT_TRUE(signaled_by_nearly_ready) << "nearly_ready was not called before the wait for the GPU ended";
 }
 
 }  // namespace
