@@ -96,11 +96,13 @@ struct ResourceAccess {
   std::optional<ClearValue> clear;  // attachment writes only; none: keep the earlier contents
 };
 
-// Whether `write`'s resource holds contents before the write: a version an earlier pass wrote, or
-// whatever an imported resource brought. A transient's first write (version 1) starts from
-// nothing, so a write there without a clear need not load anything.
-inline bool has_earlier_contents(const ResourceAccess& write, bool imported) {
-  return imported || write.version > 1;
+// Whether `access`'s resource holds contents before the access: a read reads what an earlier pass
+// wrote; a write replaces a version an earlier pass wrote, or whatever an imported resource
+// brought. A transient's first write (version 1) starts from nothing, so a write there without a
+// clear need not load anything. (A read-only depth attachment must load: Vulkan's DONT_CARE
+// leaves it undefined, which tilers and synchronization validation both take at its word.)
+inline bool has_earlier_contents(const ResourceAccess& access, bool imported) {
+  return imported || access.direction == Direction::read || access.version > 1;
 }
 
 struct PassDeclaration {

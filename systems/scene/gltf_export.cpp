@@ -44,6 +44,15 @@ tinygltf::Value to_value(const nlohmann::json& json) {
   return tinygltf::Value(std::move(object));
 }
 
+// A node's reference to its light. tinygltf 2.9 (Debian 13) writes it from Node::light and drops
+// the extension a node carries without one; 2.7 (Debian 12) has no such field and writes the
+// extension as given.
+template <typename Node>  // tinygltf::Node: a template, so that the member test may fail
+void set_node_light(Node& node, std::size_t light) {
+  if constexpr (requires { node.light; }) node.light = static_cast<int>(light);
+  node.extensions["KHR_lights_punctual"] = to_value({{"light", light}});
+}
+
 nlohmann::json vec3(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
 tinygltf::Camera perspective(const Camera& lens) {
@@ -148,7 +157,7 @@ class Exporter {
         extras["shadowgraph"] = {{"cylinder_light", cylinder}};
         ++cylinders_;
       } else if (const std::optional<nlohmann::json> light = punctual_light(entity, *shadow)) {
-        node.extensions["KHR_lights_punctual"] = to_value({{"light", lights_.size()}});
+        set_node_light(node, lights_.size());
         lights_.push_back(*light);
       }
     }

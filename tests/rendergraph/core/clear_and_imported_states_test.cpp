@@ -45,6 +45,23 @@ TEST(AttachmentClear, OnlyATransientsFirstWriteHasNoEarlierContents) {
   EXPECT_TRUE(has_earlier_contents(graph.passes()[1].accesses[0], false)) << "the transient's second write";
 }
 
+// A pass that tests against a depth buffer without writing it reads the first pass's version:
+// it must load it (VK_ATTACHMENT_LOAD_OP_LOAD), not take it as undefined.
+TEST(AttachmentClear, AReadOnlyAttachmentOfAFirstWriteHasEarlierContents) {
+  RenderGraph graph;
+  ImageHandle depth;
+  graph.add_pass("opaque", QueueType::graphics, [&](PassBuilder& b) {
+    depth = b.write(b.create_image("depth", ImageDesc{1280, 720, Format::d32_sfloat, 1, 1, false}),
+                    Usage::depth_attachment, ClearValue::depth_of(1.0f));
+  });
+  graph.add_pass("transparent", QueueType::graphics,
+                 [&](PassBuilder& b) { b.read(depth, Usage::depth_attachment); });
+  ASSERT_TRUE(graph.errors().empty());
+  const ResourceAccess& test = graph.passes()[1].accesses[0];
+  ASSERT_EQ(test.direction, Direction::read);
+  EXPECT_TRUE(has_earlier_contents(test, false));
+}
+
 TEST(AttachmentClear, IsRefusedForUsagesThatAreNotAttachments) {
   RenderGraph graph;
   graph.add_pass("copy", QueueType::transfer, [&](PassBuilder& b) {
