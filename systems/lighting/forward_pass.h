@@ -21,13 +21,15 @@ class GpuTextures;
 class ShadowAtlas;
 
 struct ForwardTargets {
-  rg::ImageHandle lit_sum;  // linear HDR color (rgba32f), for tone mapping
+  rg::ImageHandle lit_sum;  // linear HDR color, for tone mapping
   rg::ImageHandle depth;    // transient D32, readable by later passes (depth-tested or sampled)
 };
 
 class ForwardPass {
  public:
-  static constexpr rg::Format lit_sum_format = rg::Format::rgba32_sfloat;
+  // As the deferred path's: tone_map.frag reads the lit sum as an rgba16f storage image, and a
+  // view of another format reads undefined values there (Debian 13's validation layer says so).
+  static constexpr rg::Format lit_sum_format = rg::Format::rgba16_sfloat;
 
   // `textures` must outlive the pass: its array is bound once.
   ForwardPass(vk::VulkanContext& context, uint32_t frames_in_flight, const GpuTextures& textures);
