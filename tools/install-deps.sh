@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Installs the Debian 12 packages Shadowgraph needs to build, run and test, and any packages named
-# as arguments (bootstrap.sh's `test --clang` adds clang). Idempotent: installs only what is
-# missing, and runs `apt-get update` only when something is.
+# Installs the Debian 12 (or 13) packages Shadowgraph needs to build, run and test, and any
+# packages named as arguments (bootstrap.sh's `test --clang` adds clang). Idempotent: installs
+# only what is missing, and runs `apt-get update` only when something is.
 set -euo pipefail
 
 packages=(
