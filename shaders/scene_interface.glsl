@@ -5,9 +5,6 @@
 
 #include "scene_instances.glsl"
 
-// Passes with push constants of their own define SG_OWN_PUSH_CONSTANTS first: a block declared
-// larger than the pipeline layout's range is an error (VUID-VkGraphicsPipelineCreateInfo-layout-10069).
-#ifndef SG_OWN_PUSH_CONSTANTS
 layout(push_constant) uniform FrameConstants {
   mat4 view_projection;
   vec4 camera_position;  // xyz; w: unused
@@ -15,6 +12,5 @@ layout(push_constant) uniform FrameConstants {
                          // w: 1 where the transparent pass blends into a tone-mapped frame
   vec4 ambient;          // rgb: the ambient term kA * IA
 } frame;
-#endif
 
 #endif

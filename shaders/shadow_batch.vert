@@ -10,7 +10,7 @@
 // neighbouring tile. 2D views need no fragment shader; cube faces add shadow_cube.frag.
 //
 // Device features: shaderOutputLayer (gl_Layer from a vertex shader), shaderClipDistance.
-#include "scene_interface.glsl"
+#include "scene_instances.glsl"
 #include "shadow_views.glsl"
 
 layout(std430, set = 0, binding = view_instances_binding) readonly buffer Sorted { uvec2 sorted_pairs[]; };

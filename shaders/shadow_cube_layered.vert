@@ -11,11 +11,11 @@
 //
 // Device features: shaderClipDistance, shaderDrawParameters (gl_BaseInstance).
 //
-// Resources: Instances (scene_interface.glsl), the view's casters (shadow_casters.glsl) and the
+// Resources: Instances (scene_instances.glsl), the view's casters (shadow_casters.glsl) and the
 // cube's faces (one CubeFaces slice per point light of one buffer, bound with a dynamic offset).
 // Push constants as for shadow_map.vert (shadow_pass_constants.glsl).
 #include "shadow_pass_constants.glsl"
-#include "scene_interface.glsl"
+#include "scene_instances.glsl"
 #include "shadow_casters.glsl"
 
 layout(std140, set = 0, binding = cube_faces_binding) uniform CubeFaces {

@@ -5,11 +5,11 @@
 // Shadow-map depth pass of one view, one pass per view (the per-light baseline; shadow_batch.vert
 // draws every view at once): casters' positions into the light view's clip space, the pass's
 // viewport being the view's atlas tile. Instances through the view's caster list
-// (shadow_casters.glsl) into Instances (scene_interface.glsl). Push constants:
+// (shadow_casters.glsl) into Instances (scene_instances.glsl). Push constants:
 // shadow_pass_constants.glsl, light_position_far handed to shadow_cube.frag for cube faces. 2D
 // maps need no fragment shader.
 #include "shadow_pass_constants.glsl"
-#include "scene_interface.glsl"
+#include "scene_instances.glsl"
 #include "shadow_casters.glsl"
 
 layout(location = 0) in vec3 in_position;
