@@ -3,7 +3,6 @@
 // during the wait for the GPU, not after it.
 #include <atomic>
 #include <chrono>
-#include <mutex>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -41,23 +40,24 @@ TEST_F(FrameRingTest, NearlyReadyIsCalledBeforeTheWaitEnds) {
   VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, &timeline};
   VkSemaphore semaphore = VK_NULL_HANDLE;
   vk::check(vkCreateSemaphore(device, &info, nullptr, &semaphore), "vkCreateSemaphore");
-  const auto signal = [&] {
+  // Signals the timeline's value 1 unless already done (a timeline's value only rises); true for
+  // the call that did.
+  std::atomic<bool> signaled{false};
+  const auto signal_once = [&] {
+    if (signaled.exchange(true)) return false;
     VkSemaphoreSignalInfo signal_info{VK_STRUCTURE_TYPE_SEMAPHORE_SIGNAL_INFO};
     signal_info.semaphore = semaphore;
     signal_info.value = 1;
     vkSignalSemaphore(device, &signal_info);
+    return true;
   };
   std::atomic<bool> signaled_by_nearly_ready{false};
-  std::mutex signaling;  // a timeline's value only rises: signal it once
-  bool signaled = false;
   // Should nearly_ready not come, the value is signaled after a while so that the test fails
   // instead of hanging.
   std::atomic<bool> done{false};
   std::thread watchdog([&] {
     for (int i = 0; i < 200 && !done; ++i) std::this_thread::sleep_for(50ms);
-    const std::lock_guard lock(signaling);
-    if (!signaled) signal();
-    signaled = true;
+    signal_once();
   });
   {
     vk::FrameRing ring(context, 2);
@@ -66,14 +66,7 @@ TEST_F(FrameRingTest, NearlyReadyIsCalledBeforeTheWaitEnds) {
     ring.submit({&wait, 1});
     ring.begin_frame();
     ring.submit();
-    ring.begin_frame(
-        [&] {
-          const std::lock_guard lock(signaling);
-          signaled_by_nearly_ready = !signaled;
-          if (!signaled) signal();
-          signaled = true;
-        },
-        100us);
+    ring.begin_frame([&] { signaled_by_nearly_ready = signal_once(); }, 100us);
     ring.submit();
   }  // the ring waits for its frames
   done = true;
