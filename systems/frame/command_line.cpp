@@ -92,10 +92,7 @@ void add_exclusions(CLI::App& app, const SettingInfo& info) {
 
 void check_writable_output(CLI::Option& option) {
   option.check(CLI::Validator(
-      [](const std::string& path) {
-        return path.empty() ? std::string() : output_path_problem(path).value_or(std::string());
-      },
-      ""));
+      [](const std::string& path) { return optional_output_problem(path).value_or(std::string()); }, ""));
 }
 
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {

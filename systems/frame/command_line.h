@@ -33,8 +33,8 @@ void add_settings(CLI::App& app, std::span<const Setting<Settings>> table, Setti
   for (const Setting<Settings>& setting : table) add_exclusions(app, setting.info);
 }
 
-// Makes `option` take only a path a file can be written at (output_path_problem) or empty text
-// (no file), for the tools' own outputs, as output_file does for a table's.
+// Makes `option` take only what optional_output_problem accepts, for the tools' own outputs, as
+// output_file does for a table's.
 void check_writable_output(CLI::Option& option);
 
 // Parses argv into what add_settings registered. Returns nullopt to go on, or the exit code to end

@@ -40,4 +40,8 @@ std::optional<std::string> output_path_problem(const std::string& path) {
   return std::nullopt;
 }
 
+std::optional<std::string> optional_output_problem(const std::string& path) {
+  return path.empty() ? std::nullopt : output_path_problem(path);
+}
+
 }  // namespace sg

@@ -11,4 +11,7 @@ namespace sg {
 // mistyped folder ends the program before its first frame rather than costing the run.
 std::optional<std::string> output_path_problem(const std::string& path);
 
+// As output_path_problem, for an output that may be left out: empty text (no file) is fine.
+std::optional<std::string> optional_output_problem(const std::string& path);
+
 }  // namespace sg

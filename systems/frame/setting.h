@@ -159,16 +159,14 @@ Setting<Settings> text(std::string_view name, std::string_view value_name, Field
 }
 
 // --NAME PATH sets a string field to a file the run writes (empty: none): a path that cannot be
-// written (output_path_problem) is a usage error.
+// written (optional_output_problem) is a usage error.
 template <class Settings, class Field>
 Setting<Settings> output_file(std::string_view name, std::string_view value_name, Field field,
                               std::string_view help) {
   Setting<Settings> setting = text<Settings>(name, value_name, field, help);
   setting.set = [field](Settings& s, const std::string& path) {
-    if (!path.empty()) {
-      if (const std::optional<std::string> problem = output_path_problem(path))
-        throw std::runtime_error(*problem);
-    }
+    if (const std::optional<std::string> problem = optional_output_problem(path))
+      throw std::runtime_error(*problem);
     field(s) = path;
   };
   return setting;

@@ -39,6 +39,9 @@ TEST(OutputPath, NamesWhatStandsInTheWay) {
   EXPECT_EQ(output_path_problem(folder.string()), quoted(folder) + " is a folder, not a file");
   EXPECT_EQ(output_path_problem((file / "new.png").string()), quoted(file) + " is not a folder");
   EXPECT_EQ(output_path_problem(""), "the path is empty");
+
+  EXPECT_EQ(optional_output_problem(""), std::nullopt);  // left out
+  EXPECT_EQ(optional_output_problem(folder.string()), quoted(folder) + " is a folder, not a file");
 }
 
 // stbi_write_png does not check its writes: a full disk left a truncated file and no error.
