@@ -147,15 +147,20 @@ class SceneRenderer {
   struct ShadowWork {
     uint32_t views = 0;        // 2D maps and cube faces drawn
     uint64_t budget_step = 0;  // ShadowTimeBudget::step() it was planned at
+    bool steady = true;        // its raster's (ShadowViewBatch::raster_steady)
   };
-  ShadowWork shadow_work() const { return {schedule_.stats().views_rendered, schedule_.time_budget_step()}; }
+  ShadowWork shadow_work() const {
+    return {schedule_.stats().views_rendered, schedule_.time_budget_step(),
+            !batch_ || batch_->raster_steady()};
+  }
   // A timed frame's passes, which drew `work`: what the batch's automatic raster choice
   // (ShadowViewBatch::measured) and the time budget learn from. Returns the frame's shadow passes'
   // milliseconds (shadow_pass_times).
   double measured_shadow_time(const vk::FrameTimings& timings, const ShadowWork& work);
-  // The time budget's part of it: the shadow passes of the frame that drew `work` took `ms`.
+  // The time budget's part of it: the shadow passes of the frame that drew `work` took `ms`. A
+  // frame of a raster probe or change says nothing of the frames to come: the budget skips it.
   void measured_shadow_ms(double ms, const ShadowWork& work) {
-    schedule_.measured(work.budget_step, work.views, ms);
+    if (work.steady) schedule_.measured(work.budget_step, work.views, ms);
   }
   // The shadows' time budget: off (ShadowTimeBudget::on) without one.
   const shadows::ShadowTimeBudget& shadow_time_budget() const { return schedule_.time_budget(); }

@@ -93,6 +93,10 @@ class ShadowViewBatch {
   rg::ImageHandle add_to(rg::RenderGraph& graph, rg::ImageHandle atlas, rg::BufferHandle static_layers,
                          const GpuScene& scene, uint32_t slot) const;
 
+  // Whether the prepared frame's raster costs what the frames to come will: not a probe of the
+  // other raster, nor the first frame after a change (RasterChoice::steady); a raster set by hand
+  // counts as steady.
+  bool raster_steady() const { return setting_ != shadows::ShadowRaster::automatic || choice_.steady(); }
   uint32_t views() const { return records_.frame().views; }
   // Pairs (caster, view) the GPU kept in the last frame read back: instances drawn into views.
   uint64_t kept_pairs() const { return cull_.kept_pairs(); }

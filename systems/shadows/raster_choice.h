@@ -16,6 +16,12 @@
 // moving ones only. Measured, a probe of the compute raster after hardware frames looked like its
 // cold frame: with a sun of three 1024-texel cascades and 64 lights at eye height (H200,
 // 2026-12-02) the hardware raster stayed, 4.48 ms of shadow passes against compute's 1.17.
+//
+// Neither a probe's frames nor a change's first frame tell what the frames to come cost (steady()
+// is false for them): the shadow time budget does not learn from them. At 4,096 lights the
+// hardware raster's probe took 59 and 70 ms of shadow passes where the compute raster takes 1.4
+// to 2.9 (H100, 2026-12-06), and the budget, deciding on them, lowered 670 lights' maps 1.75
+// tiers for the next 100 frames.
 #include <array>
 #include <cstdint>
 
@@ -33,6 +39,8 @@ class RasterChoice {
   ShadowRaster choose(uint32_t views, uint64_t large_tile_texels);
   // A frame drawn with `raster` (hardware or compute) for `views` views took `ms` of shadow passes.
   void measured(ShadowRaster raster, uint32_t views, double ms);
+  // Whether the last choose() kept the frame before's raster and was not a probe of the other.
+  bool steady() const { return steady_; }
 
  private:
   struct Cost {
@@ -48,6 +56,8 @@ class RasterChoice {
   uint64_t last_probe_ = 0;
   ShadowRaster last_ = ShadowRaster::automatic;     // the last frame's raster
   ShadowRaster probing_ = ShadowRaster::automatic;  // a probe's raster, for its second frame
+  bool probe_second_frame_ = false;                 // the last pick() drew a probe's second frame
+  bool steady_ = true;
 };
 
 }  // namespace sg::shadows
