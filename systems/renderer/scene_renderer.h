@@ -147,7 +147,7 @@ class SceneRenderer {
   struct ShadowWork {
     uint32_t views = 0;        // 2D maps and cube faces drawn
     uint64_t budget_step = 0;  // ShadowTimeBudget::step() it was planned at
-    bool steady = true;        // its raster's (ShadowViewBatch::raster_steady)
+    bool steady = true;        // drawn as the frames to come will be (ShadowViewBatch::raster_steady)
   };
   ShadowWork shadow_work() const {
     return {schedule_.stats().views_rendered, schedule_.time_budget_step(),
