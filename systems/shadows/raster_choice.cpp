@@ -8,21 +8,18 @@ namespace sg::shadows {
 ShadowRaster RasterChoice::choose(uint32_t views, uint64_t large_tile_texels) {
   ++frame_;
   steady_ = true;
-  if (views == 0) return raster_for_views(views, large_tile_texels);  // not measured
-  probe_second_frame_ = false;
+  if (views == 0) return raster_for_views(views, large_tile_texels);    // not measured
+  const bool probe_second_frame = probing_ != ShadowRaster::automatic;  // pick() draws it
   const ShadowRaster chosen = pick(views, large_tile_texels);
   // A probe's first frame changes the raster, its second keeps it.
-  steady_ = chosen == last_ && !probe_second_frame_;
+  steady_ = chosen == last_ && !probe_second_frame;
   if (chosen != last_) ++cost(chosen).unsettled;
   last_ = chosen;
   return chosen;
 }
 
 ShadowRaster RasterChoice::pick(uint32_t views, uint64_t large_tile_texels) {
-  if (probing_ != ShadowRaster::automatic) {
-    probe_second_frame_ = true;
-    return std::exchange(probing_, ShadowRaster::automatic);
-  }
+  if (probing_ != ShadowRaster::automatic) return std::exchange(probing_, ShadowRaster::automatic);
   const ShadowRaster model = raster_for_views(views, large_tile_texels);
   for (const ShadowRaster raster :
        {model, model == ShadowRaster::compute ? ShadowRaster::hardware : ShadowRaster::compute}) {

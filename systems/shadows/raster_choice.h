@@ -56,7 +56,6 @@ class RasterChoice {
   uint64_t last_probe_ = 0;
   ShadowRaster last_ = ShadowRaster::automatic;     // the last frame's raster
   ShadowRaster probing_ = ShadowRaster::automatic;  // a probe's raster, for its second frame
-  bool probe_second_frame_ = false;                 // the last pick() drew a probe's second frame
   bool steady_ = true;
 };
 
